@@ -1,0 +1,19 @@
+// The plantsim subcommands: each registers its options on the CLI11 app and runs when chosen.
+// Exit codes are shared: 0 done, 1 the job ran but failed (no path, not docked), 2 bad input.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace plantsim::app {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailed = 1;
+inline constexpr int kExitBadInput = 2;
+
+/// Each returns the action to run when its subcommand was chosen.
+std::function<int()> add_plan_command(CLI::App& app);
+std::function<int()> add_run_command(CLI::App& app);
+
+}  // namespace plantsim::app

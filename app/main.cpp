@@ -1,0 +1,41 @@
+// plantsim command line: parses arguments with CLI11 and dispatches to a subcommand.
+// Bad input of any kind ends with a one-line message on stderr and exit code 2.
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+#include "app/commands.h"
+#include "worlds/world_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"plantsim: drive a wheeled robot through a plant to its charger, in Box2D"};
+  app.require_subcommand(1);
+  std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
+  auto remember = [&](std::function<int()> action) {
+    commands.emplace_back(app.get_subcommands({}).back(), std::move(action));
+  };
+  remember(plantsim::app::add_plan_command(app));
+  remember(plantsim::app::add_run_command(app));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return plantsim::app::kExitBadInput;
+  }
+  try {
+    for (auto& [sub, action] : commands)
+      if (sub->parsed()) return action();
+  } catch (const plantsim::worlds::WorldError& e) {
+    std::cerr << "plantsim: " << e.what() << "\n";
+    return plantsim::app::kExitBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "plantsim: " << e.what() << "\n";
+    return plantsim::app::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "plantsim: error: " << e.what() << "\n";
+    return plantsim::app::kExitFailed;
+  }
+  return plantsim::app::kExitBadInput;
+}

@@ -1,0 +1,63 @@
+// Plain 2-D value types shared by every module: points/vectors, poses and axis-aligned
+// rectangles, in metres and radians (x right, y up, angles counter-clockwise).
+// Predicates that decide geometry questions live in predicates.h, not here.
+#pragma once
+
+#include <cmath>
+
+namespace plantsim::geom {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+
+  friend Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+  friend Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
+  friend bool operator==(Vec2 a, Vec2 b) = default;  // exact; no tolerance (not transitive)
+};
+
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double distance(Vec2 a, Vec2 b) { return norm(b - a); }
+inline Vec2 unit_from_angle(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }
+inline Vec2 rotate(Vec2 v, double angle_rad) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+/// Wraps an angle to (-pi, pi].
+inline double wrap_angle(double angle_rad) {
+  double a = std::remainder(angle_rad, 2.0 * M_PI);
+  if (a <= -M_PI) a += 2.0 * M_PI;
+  return a;
+}
+
+struct Pose2 {
+  double x = 0.0;
+  double y = 0.0;
+  double yaw = 0.0;  ///< heading, radians, counter-clockwise from +x
+
+  Vec2 position() const { return {x, y}; }
+  Vec2 heading() const { return unit_from_angle(yaw); }
+};
+
+/// Closed axis-aligned rectangle [xmin, xmax] x [ymin, ymax].
+struct Rect {
+  double xmin = 0.0;
+  double ymin = 0.0;
+  double xmax = 0.0;
+  double ymax = 0.0;
+
+  double width() const { return xmax - xmin; }
+  double height() const { return ymax - ymin; }
+  Vec2 center() const { return {0.5 * (xmin + xmax), 0.5 * (ymin + ymax)}; }
+  Rect inflated(double margin) const {
+    return {xmin - margin, ymin - margin, xmax + margin, ymax + margin};
+  }
+  friend bool operator==(const Rect&, const Rect&) = default;
+};
+
+}  // namespace plantsim::geom

@@ -1,0 +1,37 @@
+// Planner registry and the World-to-planner adapter.
+#include "planner/planner.h"
+
+#include <stdexcept>
+
+#include "planner/vg_planner.h"
+
+namespace plantsim::planner {
+
+std::string_view to_string(PlanStatus s) {
+  switch (s) {
+    case PlanStatus::kOk: return "ok";
+    case PlanStatus::kNoPath: return "no path";
+    case PlanStatus::kStartBlocked: return "start blocked";
+    case PlanStatus::kGoalBlocked: return "goal blocked";
+  }
+  return "unknown";
+}
+
+PlannerInput planner_input(const worlds::World& world, bool include_charger_body) {
+  PlannerInput in;
+  in.floor = world.floor;
+  in.obstacles = world.obstacles;
+  in.inflation_m = world.planning_inflation_m();
+  if (include_charger_body) in.obstacles.push_back(worlds::charger_body(world).bounding_box());
+  return in;
+}
+
+std::vector<std::string> planner_names() { return {"vg", "vg-traditional"}; }
+
+std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
+  if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
+  if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
+  throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
+}
+
+}  // namespace plantsim::planner

@@ -1,0 +1,62 @@
+// The one interface every path planner of plantsim offers: built once for a set of
+// obstacles, then asked for paths between points. Results carry a status instead of
+// throwing, so a batch can record "no path" as an outcome.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "worlds/world.h"
+
+namespace plantsim::planner {
+
+using geom::Rect;
+using geom::Vec2;
+
+enum class PlanStatus { kOk, kNoPath, kStartBlocked, kGoalBlocked };
+std::string_view to_string(PlanStatus s);
+
+struct PlanStats {
+  double build_ms = 0;         ///< time to build the planner's structures (graph, grid)
+  double query_ms = 0;         ///< time of this query
+  std::int64_t vertices = 0;   ///< graph vertices (or free grid cells)
+  std::int64_t edges = 0;      ///< edges found so far (lazy graphs) or in total
+  std::int64_t expanded = 0;   ///< search nodes expanded by this query
+  std::int64_t segment_tests = 0;  ///< exact visibility tests so far
+};
+
+struct PlanResult {
+  PlanStatus status = PlanStatus::kNoPath;
+  std::vector<Vec2> path;      ///< start .. goal, empty unless status is kOk
+  double length = 0;           ///< metres, sum of segment lengths
+  PlanStats stats;
+};
+
+/// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
+struct PlannerInput {
+  Rect floor;
+  std::vector<Rect> obstacles;  ///< raw (not yet inflated)
+  double inflation_m = 0.3;     ///< applied to obstacles and walls, square corners
+};
+
+/// The world's obstacles, optionally with the charger body as one more obstacle.
+PlannerInput planner_input(const worlds::World& world, bool include_charger_body);
+
+class Planner {
+ public:
+  virtual ~Planner() = default;
+  virtual std::string name() const = 0;
+  virtual PlanResult plan(Vec2 start, Vec2 goal) = 0;
+};
+
+/// Names accepted by make_planner, in the order reports list them.
+std::vector<std::string> planner_names();
+
+/// Builds the named planner; throws std::invalid_argument for an unknown name.
+std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input);
+
+}  // namespace plantsim::planner

@@ -1,0 +1,165 @@
+// Visibility-graph planners: the improved one (reduced graph, lazy edges, A*) and the
+// traditional one (all corners, all pairs, Dijkstra).
+#include "planner/vg_planner.h"
+
+#include <chrono>
+
+#include "planner/astar.h"
+
+namespace plantsim::planner {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Shared pre-checks; returns false and fills `out` when the query cannot proceed.
+bool endpoints_usable(const ObstacleMap& map, Vec2 start, Vec2 goal, PlanResult& out) {
+  if (!map.point_free(start)) {
+    out.status = PlanStatus::kStartBlocked;
+    return false;
+  }
+  if (!map.point_free(goal)) {
+    out.status = PlanStatus::kGoalBlocked;
+    return false;
+  }
+  return true;
+}
+
+void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanResult& out) {
+  if (!found.found) {
+    out.status = PlanStatus::kNoPath;
+    return;
+  }
+  out.status = PlanStatus::kOk;
+  for (std::int32_t n : found.nodes) {
+    const Vec2 p = points[n];
+    if (out.path.empty() || !(out.path.back() == p)) out.path.push_back(p);
+  }
+  out.length = 0;
+  for (std::size_t i = 1; i < out.path.size(); ++i)
+    out.length += geom::distance(out.path[i - 1], out.path[i]);
+}
+
+}  // namespace
+
+std::vector<Rect> inflate_square(const std::vector<Rect>& raw, double margin) {
+  std::vector<Rect> out;
+  out.reserve(raw.size());
+  for (const Rect& r : raw) out.push_back(r.inflated(margin));
+  return out;
+}
+
+VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
+    : build_start_(std::chrono::steady_clock::now()),
+      map_(inflate_square(input.obstacles, input.inflation_m), input.floor, input.inflation_m),
+      graph_(map_) {
+  build_ms_ = ms_since(build_start_);
+}
+
+PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult out;
+  if (endpoints_usable(map_, start, goal, out)) {
+    const auto& vertices = graph_.vertices();
+    const auto n = static_cast<std::int32_t>(vertices.size());
+    const std::int32_t s = n, g = n + 1;
+    std::vector<Vec2> points;
+    points.reserve(n + 2);
+    for (const auto& v : vertices) points.push_back(v.p);
+    points.push_back(start);
+    points.push_back(goal);
+    auto visible = [&](Vec2 a, Vec2 b) {
+      graph_.count_segment_test();
+      return map_.segment_free(a, b);
+    };
+    const SearchResult found = best_first_search(
+        n + 2, s, g, [&](std::int32_t v) { return geom::distance(points[v], goal); },
+        [&](std::int32_t u, auto&& emit) {
+          if (u == s) {
+            for (std::int32_t w = 0; w < n; ++w)
+              if (VisibilityGraph::tangent(vertices[w], vertices[w].p - start) &&
+                  visible(start, vertices[w].p))
+                emit(w, geom::distance(start, vertices[w].p));
+            if (visible(start, goal)) emit(g, geom::distance(start, goal));
+            return;
+          }
+          for (const GraphEdge& e : graph_.neighbours(u)) emit(e.to, e.length);
+          if (VisibilityGraph::tangent(vertices[u], goal - vertices[u].p) &&
+              visible(vertices[u].p, goal))
+            emit(g, geom::distance(vertices[u].p, goal));
+        });
+    fill_path(found, points, out);
+    out.stats.expanded = found.stats.expanded;
+  }
+  out.stats.build_ms = build_ms_;
+  out.stats.query_ms = ms_since(t0);
+  out.stats.vertices = static_cast<std::int64_t>(graph_.vertices().size());
+  out.stats.edges = graph_.edges_found();
+  out.stats.segment_tests = graph_.segment_tests();
+  return out;
+}
+
+TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)
+    : map_(inflate_square(input.obstacles, input.inflation_m), input.floor, input.inflation_m) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < map_.obstacle_count(); ++i) {
+    const Rect& r = map_.rects()[i];
+    for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax},
+                   Vec2{r.xmin, r.ymax}})
+      if (map_.point_free(c)) corners_.push_back(c);
+  }
+  adjacency_.resize(corners_.size());
+  for (std::size_t a = 0; a < corners_.size(); ++a)
+    for (std::size_t b = a + 1; b < corners_.size(); ++b) {
+      ++segment_tests_;
+      if (!map_.segment_free(corners_[a], corners_[b])) continue;
+      const double len = geom::distance(corners_[a], corners_[b]);
+      adjacency_[a].push_back({static_cast<std::int32_t>(b), len});
+      adjacency_[b].push_back({static_cast<std::int32_t>(a), len});
+      edges_ += 1;
+    }
+  build_ms_ = ms_since(t0);
+}
+
+PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult out;
+  if (endpoints_usable(map_, start, goal, out)) {
+    const auto n = static_cast<std::int32_t>(corners_.size());
+    const std::int32_t s = n, g = n + 1;
+    std::vector<Vec2> points = corners_;
+    points.push_back(start);
+    points.push_back(goal);
+    // Start and goal joined to every visible corner, as the traditional method does.
+    std::vector<GraphEdge> from_start, to_goal;
+    for (std::int32_t w = 0; w < n; ++w) {
+      if (map_.segment_free(start, corners_[w])) from_start.push_back({w, geom::distance(start, corners_[w])});
+      if (map_.segment_free(corners_[w], goal)) to_goal.push_back({w, geom::distance(corners_[w], goal)});
+    }
+    std::vector<double> goal_edge(n, -1.0);
+    for (const auto& e : to_goal) goal_edge[e.to] = e.length;
+    const bool direct = map_.segment_free(start, goal);
+    const SearchResult found = best_first_search(
+        n + 2, s, g, [](std::int32_t) { return 0.0; },
+        [&](std::int32_t u, auto&& emit) {
+          if (u == s) {
+            for (const auto& e : from_start) emit(e.to, e.length);
+            if (direct) emit(g, geom::distance(start, goal));
+            return;
+          }
+          for (const GraphEdge& e : adjacency_[u]) emit(e.to, e.length);
+          if (goal_edge[u] >= 0) emit(g, goal_edge[u]);
+        });
+    fill_path(found, points, out);
+    out.stats.expanded = found.stats.expanded;
+  }
+  out.stats.build_ms = build_ms_;
+  out.stats.query_ms = ms_since(t0);
+  out.stats.vertices = static_cast<std::int64_t>(corners_.size());
+  out.stats.edges = edges_;
+  out.stats.segment_tests = segment_tests_;
+  return out;
+}
+
+}  // namespace plantsim::planner

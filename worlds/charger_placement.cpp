@@ -1,0 +1,64 @@
+// Docking-heading choice for point chargers.
+#include "worlds/charger_placement.h"
+
+#include <cmath>
+#include <vector>
+
+#include "geometry/predicates.h"
+
+namespace plantsim::worlds {
+namespace {
+
+bool rects_overlap_open(const Rect& a, const Rect& b) {
+  return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
+}
+
+std::vector<Rect> walls_as_rects(const Rect& floor) {
+  const double t = 1.0;  // wall thickness only matters for containment tests
+  return {{floor.xmin - t, floor.ymin - t, floor.xmin, floor.ymax + t},
+          {floor.xmax, floor.ymin - t, floor.xmax + t, floor.ymax + t},
+          {floor.xmin - t, floor.ymin - t, floor.xmax + t, floor.ymin},
+          {floor.xmin - t, floor.ymax, floor.xmax + t, floor.ymax + t}};
+}
+
+}  // namespace
+
+bool docking_area_clear(const World& world) {
+  std::vector<Rect> blockers = world.obstacles;
+  for (const Rect& w : walls_as_rects(world.floor)) blockers.push_back(w);
+  const Rect body = charger_body(world).bounding_box();
+  const Pose2 staging = staging_pose(world);
+  const double r = world.robot.radius_m;
+  const double clearance = world.planning_inflation_m();
+  for (const Rect& b : blockers) {
+    if (rects_overlap_open(body, b)) return false;
+    if (geom::segment_enters_open_rect(staging.position(), world.charger.position(),
+                                       b.inflated(r)))
+      return false;
+    if (!geom::in_closed_rect(world.floor, staging.position()) ||
+        geom::in_open_rect(b.inflated(clearance), staging.position()))
+      return false;
+  }
+  return true;
+}
+
+std::optional<double> choose_docking_heading(const World& world, Vec2 dock_point) {
+  const Vec2 from_start = dock_point - world.start.position();
+  std::optional<double> best;
+  double best_alignment = -2.0;
+  for (int k = 0; k < 8; ++k) {
+    const double yaw = geom::wrap_angle(k * M_PI / 4.0);
+    World trial = world;
+    trial.charger = {dock_point.x, dock_point.y, yaw};
+    if (!docking_area_clear(trial)) continue;
+    const double alignment = geom::dot(geom::unit_from_angle(yaw), from_start) /
+                             std::max(geom::norm(from_start), 1e-300);
+    if (alignment > best_alignment) {
+      best_alignment = alignment;
+      best = yaw;
+    }
+  }
+  return best;
+}
+
+}  // namespace plantsim::worlds

@@ -1,0 +1,65 @@
+// The plant as plantsim sees it: floor bounds, static obstacles as axis-aligned rectangles,
+// the robot's specification, its start pose and the charger's docked pose. Pure data plus
+// derived geometry (the charger's body and staging pose); loading lives in world_loader.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::worlds {
+
+using geom::Pose2;
+using geom::Rect;
+using geom::Vec2;
+
+/// Differential-drive robot with a disk footprint. Typical values are those of a small
+/// indoor inspection robot.
+struct RobotSpec {
+  double radius_m = 0.2;          ///< footprint disk radius
+  double wheel_base_m = 0.34;     ///< distance between the two wheel contact points
+  double wheel_radius_m = 0.06;   ///< drive wheel radius
+  double max_speed_mps = 0.8;     ///< wheel rim speed limit
+  double max_accel_mps2 = 1.0;    ///< wheel rim acceleration limit
+  double mass_kg = 30.0;          ///< body mass; inertia is that of a uniform disk
+};
+
+/// The charger's physical body: a block the robot's front touches when docked.
+struct ChargerSpec {
+  double width_m = 0.30;          ///< across the approach axis
+  double depth_m = 0.10;          ///< along the approach axis
+  double staging_distance_m = 1.0;  ///< staging pose this far behind the docked pose
+};
+
+struct World {
+  std::string name;               ///< short name for reports
+  std::string source;             ///< file it was loaded from, for messages
+  Rect floor;                     ///< the floor; its boundary is a wall
+  std::vector<Rect> obstacles;    ///< static obstacles, closed rectangles
+  RobotSpec robot;
+  ChargerSpec charger_spec;
+  Pose2 start;                    ///< robot start pose
+  Pose2 charger;                  ///< robot pose when docked (yaw faces the charger)
+  double inflation_margin_m = 0.1;  ///< planning clearance beyond the robot radius
+
+  /// Total inflation the planner applies to obstacles and walls.
+  double planning_inflation_m() const { return robot.radius_m + inflation_margin_m; }
+};
+
+/// The charger block in world coordinates as an oriented box: centre, half extents, yaw.
+struct ChargerBody {
+  Vec2 center;
+  double half_depth_m;
+  double half_width_m;
+  double yaw;
+  Rect bounding_box() const;
+};
+
+/// The block sits just ahead of the docked pose, its face at robot radius from the centre.
+ChargerBody charger_body(const World& world);
+
+/// Where the final approach starts: on the approach axis, staging_distance behind docked.
+Pose2 staging_pose(const World& world);
+
+}  // namespace plantsim::worlds

@@ -1,0 +1,235 @@
+// World JSON reading and validation. Two schemas are recognised by their keys: plantsim's own
+// ("floor", "obstacles", "robot", "charger", "start") and the plain benchmark worlds ("W",
+// "H", "rects", "start", "goal"), whose goal becomes the charger with a chosen heading.
+#include "worlds/world_loader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/predicates.h"
+#include "worlds/charger_placement.h"
+#include "worlds/world_limits.h"
+
+namespace plantsim::worlds {
+namespace {
+
+using nlohmann::json;
+
+// Reads typed fields out of JSON, naming the dotted field path in every error.
+class FieldReader {
+ public:
+  explicit FieldReader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
+    throw WorldError(source_, field, problem);
+  }
+
+  const json& member(const json& obj, const std::string& key, const std::string& path) const {
+    if (!obj.is_object()) fail(path, "expected an object");
+    auto it = obj.find(key);
+    if (it == obj.end()) fail(join(path, key), "missing");
+    return *it;
+  }
+
+  double number(const json& value, const std::string& path) const {
+    if (!value.is_number()) fail(path, std::string("expected a number, got ") + value.type_name());
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) fail(path, "must be finite");
+    return v;
+  }
+
+  double number(const json& obj, const std::string& key, const std::string& path) const {
+    return number(member(obj, key, path), join(path, key));
+  }
+
+  double number_or(const json& obj, const std::string& key, const std::string& path,
+                   double fallback) const {
+    if (!obj.contains(key)) return fallback;
+    return number(obj, key, path);
+  }
+
+  double positive(const json& obj, const std::string& key, const std::string& path) const {
+    const double v = number(obj, key, path);
+    if (v <= 0) fail(join(path, key), "must be positive");
+    return v;
+  }
+
+  Rect rect_array(const json& value, const std::string& path) const {
+    if (!value.is_array() || value.size() != 4)
+      fail(path, "expected [xmin, ymin, xmax, ymax]");
+    Rect r{number(value[0], path + "[0]"), number(value[1], path + "[1]"),
+           number(value[2], path + "[2]"), number(value[3], path + "[3]")};
+    if (r.xmax <= r.xmin || r.ymax <= r.ymin)
+      fail(path, "needs xmax > xmin and ymax > ymin (a negative or zero size)");
+    return r;
+  }
+
+  Vec2 point_array(const json& value, const std::string& path) const {
+    if (!value.is_array() || value.size() != 2) fail(path, "expected [x, y]");
+    return {number(value[0], path + "[0]"), number(value[1], path + "[1]")};
+  }
+
+  Pose2 pose(const json& value, const std::string& path) const {
+    return {number(value, "x", path), number(value, "y", path), number(value, "yaw", path)};
+  }
+
+  std::vector<Rect> rects(const json& value, const std::string& path) const {
+    if (!value.is_array()) fail(path, "expected an array of [xmin, ymin, xmax, ymax]");
+    if (value.size() > kMaxObstacles)
+      fail(path, "has " + std::to_string(value.size()) + " rectangles, more than the limit of " +
+                     std::to_string(kMaxObstacles));
+    std::vector<Rect> out;
+    out.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i)
+      out.push_back(rect_array(value[i], path + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+ private:
+  std::string source_;
+};
+
+std::string stem_of(const std::string& path) {
+  return std::filesystem::path(path).stem().string();
+}
+
+World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
+  World w;
+  w.source = source;
+  w.name = doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>()
+                                                          : stem_of(source);
+  const json& floor = in.member(doc, "floor", "");
+  w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
+             in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
+  if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
+    in.fail("floor", "needs xmax > xmin and ymax > ymin (a negative or zero size)");
+  w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
+
+  const json& robot = in.member(doc, "robot", "");
+  w.robot.radius_m = in.positive(robot, "radius_m", "robot");
+  w.robot.wheel_base_m = in.positive(robot, "wheel_base_m", "robot");
+  w.robot.wheel_radius_m = in.positive(robot, "wheel_radius_m", "robot");
+  w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot");
+  w.robot.max_accel_mps2 = in.positive(robot, "max_accel_mps2", "robot");
+  if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot");
+
+  w.start = in.pose(in.member(doc, "start", ""), "start");
+  w.charger = in.pose(in.member(doc, "charger", ""), "charger");
+  const json& charger = doc["charger"];
+  if (charger.contains("width_m")) w.charger_spec.width_m = in.positive(charger, "width_m", "charger");
+  if (charger.contains("depth_m")) w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger");
+  if (charger.contains("staging_distance_m"))
+    w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger");
+  w.inflation_margin_m = in.number_or(doc, "inflation_margin_m", "", w.inflation_margin_m);
+  if (w.inflation_margin_m < 0) in.fail("inflation_margin_m", "must not be negative");
+  return w;
+}
+
+World read_plain_schema(const json& doc, const FieldReader& in, const std::string& source) {
+  World w;
+  w.source = source;
+  w.name = stem_of(source);
+  const double width = in.number(doc, "W", "");
+  const double height = in.number(doc, "H", "");
+  if (width <= 0) in.fail("W", "must be positive");
+  if (height <= 0) in.fail("H", "must be positive");
+  w.floor = {0.0, 0.0, width, height};
+  w.obstacles = in.rects(in.member(doc, "rects", ""), "rects");
+  const Vec2 start = in.point_array(in.member(doc, "start", ""), "start");
+  const Vec2 goal = in.point_array(in.member(doc, "goal", ""), "goal");
+  // The benchmark's optimal lengths assume 0.3 m square inflation: robot radius plus margin.
+  w.robot = RobotSpec{};
+  w.inflation_margin_m = 0.3 - w.robot.radius_m;
+  const Vec2 d = goal - start;
+  w.start = {start.x, start.y, std::atan2(d.y, d.x)};
+  w.charger = {goal.x, goal.y, 0.0};
+  return w;
+}
+
+void check_pose_free(const World& w, const Pose2& pose, const std::string& field) {
+  const double r = w.robot.radius_m;
+  const Vec2 p = pose.position();
+  if (!geom::in_closed_rect(w.floor, p))
+    throw WorldError(w.source, field, "lies outside the floor");
+  if (!geom::in_closed_rect(w.floor.inflated(-r), p))
+    throw WorldError(w.source, field, "robot footprint crosses the floor boundary");
+  for (std::size_t i = 0; i < w.obstacles.size(); ++i) {
+    const Rect& o = w.obstacles[i];
+    const double dx = std::max({o.xmin - p.x, 0.0, p.x - o.xmax});
+    const double dy = std::max({o.ymin - p.y, 0.0, p.y - o.ymax});
+    if (dx * dx + dy * dy < r * r)
+      throw WorldError(w.source, field,
+                       "robot at (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                           ") is inside or overlaps obstacle " + std::to_string(i));
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw WorldError(path, "", "no such file");
+  if (std::filesystem::is_directory(status))
+    throw WorldError(path, "", "is a directory, expected a world file");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxWorldFileBytes)
+    throw WorldError(path, "", "file too large (" + std::to_string(size) + " bytes)");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw WorldError(path, "", "cannot be opened for reading");
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+void validate_world(const World& w) {
+  if (w.floor.width() > kMaxFloorSide_m || w.floor.height() > kMaxFloorSide_m)
+    throw WorldError(w.source, "floor",
+                     "larger than " + std::to_string(kMaxFloorSide_m) + " m on a side (huge world)");
+  if (w.robot.wheel_base_m > 2.0 * w.robot.radius_m)
+    throw WorldError(w.source, "robot.wheel_base_m", "wheels must fit inside the footprint");
+  check_pose_free(w, w.start, "start");
+  check_pose_free(w, w.charger, "charger");
+  if (!docking_area_clear(w))
+    throw WorldError(w.source, "charger",
+                     "no room to dock: the charger body, staging pose or final approach is "
+                     "blocked by an obstacle or the floor boundary");
+}
+
+World parse_world_json(const std::string& text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw WorldError(source, "", "file is empty");
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw WorldError(source, "", std::string("malformed JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw WorldError(source, "", "expected a JSON object at the top level");
+  FieldReader in(source);
+  World w;
+  if (doc.contains("rects")) {
+    w = read_plain_schema(doc, in, source);
+    check_pose_free(w, w.start, "start");
+    check_pose_free(w, w.charger, "goal");
+    const auto heading = choose_docking_heading(w, w.charger.position());
+    if (!heading) throw WorldError(source, "goal", "no heading leaves room for a charger here");
+    w.charger.yaw = *heading;
+  } else {
+    w = read_plantsim_schema(doc, in, source);
+  }
+  validate_world(w);
+  return w;
+}
+
+World load_world(const std::string& path) { return parse_world_json(read_file(path), path); }
+
+}  // namespace plantsim::worlds
