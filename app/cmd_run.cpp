@@ -1,11 +1,78 @@
-// `plantsim run WORLD`: plan, drive and dock in the simulation; write results.
+// `plantsim run WORLD`: plan, drive and dock in the simulation; write the summary, the
+// trajectory and the figure into the output folder. Exit 1 when the robot did not dock.
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
 #include "app/commands.h"
+#include "app/episode_outputs.h"
+#include "planner/planner.h"
+#include "render/run_figure.h"
+#include "util/atomic_file.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim::app {
+namespace {
+
+geom::Pose2 parse_pose(const std::string& text, const std::string& option) {
+  geom::Pose2 p;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(text);
+  if (!(in >> p.x >> c1 >> p.y >> c2 >> p.yaw) || c1 != ',' || c2 != ',' || !in.eof() ||
+      !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw))
+    throw std::invalid_argument(option + " expects x,y,yaw (metres, metres, radians), got '" + text + "'");
+  return p;
+}
+
+}  // namespace
 
 std::function<int()> add_run_command(CLI::App& app) {
-  app.add_subcommand("run", "Simulate one docking episode");
-  return []() { return kExitFailed; };
+  auto* cmd = app.add_subcommand("run", "Simulate one docking episode and write its results");
+  struct Options {
+    std::string world;
+    std::string planner = "vg";
+    std::string out;
+    std::uint64_t seed = 1;
+    std::string start;
+    std::string charger;
+    std::string command_line;
+  };
+  auto opt = std::make_shared<Options>();
+  cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
+  cmd->add_option("--planner", opt->planner, "Planner name")
+      ->check(CLI::IsMember(planner::planner_names()));
+  cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");
+  cmd->add_option("--seed", opt->seed, "Random seed for noise");
+  cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
+  cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
+  return [opt, cmd]() {
+    worlds::World world = worlds::load_world(opt->world);
+    if (!opt->start.empty()) world.start = parse_pose(opt->start, "--start");
+    if (!opt->charger.empty()) world.charger = parse_pose(opt->charger, "--charger");
+    worlds::validate_world(world);
+    const std::string out_dir = opt->out.empty() ? "results/" + world.name : opt->out;
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec || !std::filesystem::is_directory(out_dir))
+      throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+
+    auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
+    sim::EpisodeConfig config;
+    config.seed = opt->seed;
+    const sim::EpisodeResult r = sim::run_episode(world, *p, config);
+
+    std::string command_line = "plantsim run " + opt->world;
+    for (const auto* o : cmd->get_options())
+      if (o->count() > 0 && o->get_lnames().size() > 0)
+        command_line += " --" + o->get_lnames().front() + " " + o->as<std::string>();
+    util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, command_line));
+    util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
+    render::write_run_figure(world, r, out_dir + "/run.png");
+    std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
+              << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
+              << ", retries " << r.retries << ", time " << r.time_s << " s -> " << out_dir << "\n";
+    return r.docked ? kExitOk : kExitFailed;
+  };
 }
 
 }  // namespace plantsim::app

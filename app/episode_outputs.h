@@ -1,0 +1,15 @@
+// Files a run leaves in its output folder: summary.json (the metrics scripts read) and
+// trajectory.csv (one row per simulation step). Written atomically.
+#pragma once
+
+#include <string>
+
+#include "sim/episode.h"
+
+namespace plantsim::app {
+
+std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
+                         const std::string& command_line);
+std::string trajectory_csv(const sim::EpisodeResult& r);
+
+}  // namespace plantsim::app

@@ -1,0 +1,69 @@
+// The docking manoeuvre as a state machine: travel along the planned path to the staging
+// pose, turn onto the charger's approach axis, approach slowly while steering onto the axis,
+// and on contact either report docked (the charger says it is charging) or back off to the
+// staging pose and retry. The dock target is the map's charger pose until the charger is
+// detected; detections re-anchor it in the odometry frame, which removes odometry drift.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "controller/pure_pursuit.h"
+
+namespace plantsim::controller {
+
+enum class DockPhase { kTravel, kAlign, kApproach, kBackOff, kDocked, kFailed };
+std::string_view to_string(DockPhase p);
+
+struct DockingParams {
+  double staging_distance_m = 1.0;      ///< staging pose this far behind the docked pose
+  double approach_speed_mps = 0.08;     ///< final approach speed
+  double approach_lookahead_m = 0.35;   ///< pure-pursuit carrot distance on the approach axis
+  double align_tolerance_rad = 0.01;    ///< turn at staging until within this of the axis
+  double align_speed_radps = 0.8;
+  double backoff_speed_mps = 0.15;
+  double overshoot_limit_m = 0.05;      ///< passing the dock this far without contact = miss
+  int max_retries = 3;
+  double detection_blend = 0.3;         ///< weight of each new detection in the dock estimate
+};
+
+/// What the robot knows at one control step.
+struct DockingInput {
+  Pose2 pose;                      ///< estimated (odometry) pose
+  double speed_mps = 0;            ///< estimated forward speed
+  bool charger_contact = false;    ///< contacts touch the charger
+  bool charging = false;           ///< the charger reports a good connection
+  std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
+};
+
+struct DockingCommand {
+  Twist twist;
+  DockPhase phase = DockPhase::kTravel;
+  double cross_track_error_m = 0;  ///< while travelling
+};
+
+class DockingController {
+ public:
+  DockingController(PurePursuitParams tracking, DockingParams docking, std::vector<Vec2> path,
+                    Pose2 charger_on_map);
+
+  DockingCommand step(const DockingInput& in);
+
+  DockPhase phase() const { return phase_; }
+  int retries() const { return retries_; }
+  const Pose2& dock_estimate() const { return dock_; }
+
+ private:
+  DockingCommand approach(const DockingInput& in);
+  Vec2 in_dock_frame(Vec2 p) const;
+  void miss();
+
+  PurePursuit tracker_;
+  DockingParams params_;
+  Pose2 dock_;  // docked pose in the odometry frame
+  DockPhase phase_ = DockPhase::kTravel;
+  int retries_ = 0;
+};
+
+}  // namespace plantsim::controller

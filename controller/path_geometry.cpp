@@ -1,0 +1,64 @@
+// Polyline helpers for the path tracker.
+#include "controller/path_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plantsim::controller {
+
+PathPoint closest_point(const std::vector<Vec2>& path, Vec2 p, std::size_t from_segment,
+                        double window_m) {
+  PathPoint best;
+  best.point = path.front();
+  best.distance = geom::distance(p, path.front());
+  if (path.size() < 2) return best;
+  best.distance = INFINITY;
+  // The window counts path beyond the current segment, however long that segment is.
+  const std::size_t first = std::min(from_segment, path.size() - 2);
+  double scanned = 0;
+  for (std::size_t i = first; i + 1 < path.size(); ++i) {
+    const Vec2 a = path[i], b = path[i + 1];
+    const Vec2 ab = b - a;
+    const double len2 = geom::dot(ab, ab);
+    const double t = len2 > 0 ? std::clamp(geom::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    const Vec2 q = a + t * ab;
+    const double d = geom::distance(p, q);
+    if (d < best.distance) best = {i, t, q, d};
+    if (i > first) scanned += std::sqrt(len2);
+    if (scanned > window_m) break;
+  }
+  return best;
+}
+
+Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m) {
+  if (path.size() < 2) return path.front();
+  Vec2 cur = from.point;
+  double left = ahead_m;
+  for (std::size_t i = from.segment; i + 1 < path.size(); ++i) {
+    const double seg = geom::distance(cur, path[i + 1]);
+    if (seg >= left && seg > 0) return cur + (left / seg) * (path[i + 1] - cur);
+    left -= seg;
+    cur = path[i + 1];
+  }
+  return path.back();
+}
+
+double remaining_length(const std::vector<Vec2>& path, const PathPoint& from) {
+  if (path.size() < 2) return 0;
+  double total = geom::distance(from.point, path[from.segment + 1]);
+  for (std::size_t i = from.segment + 1; i + 1 < path.size(); ++i)
+    total += geom::distance(path[i], path[i + 1]);
+  return total;
+}
+
+double polyline_length(const std::vector<Vec2>& path) {
+  double total = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) total += geom::distance(path[i - 1], path[i]);
+  return total;
+}
+
+Vec2 to_robot_frame(const Pose2& pose, Vec2 p) {
+  return geom::rotate(p - pose.position(), -pose.yaw);
+}
+
+}  // namespace plantsim::controller

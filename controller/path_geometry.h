@@ -1,0 +1,39 @@
+// Free functions on polylines used by path tracking: closest point with monotone progress,
+// the point a given arc length ahead, remaining length, and signed cross-track error.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::controller {
+
+using geom::Pose2;
+using geom::Vec2;
+
+struct PathPoint {
+  std::size_t segment = 0;  ///< index i of segment [path[i], path[i+1]]
+  double t = 0;             ///< fraction along that segment, 0..1
+  Vec2 point;
+  double distance = 0;      ///< from the query point
+};
+
+/// Closest point on the path at or after `from_segment` (progress never goes back), looking
+/// at most `window_m` of path ahead so that a path folding back on itself is not skipped.
+PathPoint closest_point(const std::vector<Vec2>& path, Vec2 p, std::size_t from_segment,
+                        double window_m);
+
+/// The point `ahead_m` further along the path from `from` (clamped to the path's end).
+Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m);
+
+/// Path length from `from` to the end.
+double remaining_length(const std::vector<Vec2>& path, const PathPoint& from);
+
+/// Total polyline length.
+double polyline_length(const std::vector<Vec2>& path);
+
+/// Expresses world point p in the frame of pose (x forward, y left).
+Vec2 to_robot_frame(const Pose2& pose, Vec2 p);
+
+}  // namespace plantsim::controller

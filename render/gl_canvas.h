@@ -1,0 +1,66 @@
+// A headless OpenGL canvas on OSMesa (software rendering, no display, no GPU) with a
+// world-to-pixel transform that keeps the aspect ratio. Draws filled rectangles, oriented
+// boxes, disks and thick polylines in world coordinates; reads back an Image. Lines are
+// smoothed by rendering at a multiple of the final size and averaging down.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "render/image.h"
+
+namespace plantsim::render {
+
+using geom::Rect;
+using geom::Vec2;
+
+/// Maps world metres into pixels of an image (row 0 at the top), same scale on both axes.
+struct PixelTransform {
+  double scale = 1;      ///< pixels per metre
+  double x0 = 0, y0 = 0; ///< pixel position (column, row from the bottom) of world (0, 0)
+  int height = 0;        ///< image height, to flip rows
+  /// Fits `view` into the box [left, right] x [bottom, top] pixels (rows counted from the bottom).
+  static PixelTransform fit(const Rect& view, double left, double bottom, double right, double top,
+                            int image_height);
+  /// Column and row (row 0 at the top) of world point p.
+  Vec2 to_pixel(Vec2 p) const { return {x0 + scale * p.x, height - (y0 + scale * p.y)}; }
+};
+
+class GlCanvas {
+ public:
+  GlCanvas(int width, int height, int supersample = 2);
+  ~GlCanvas();
+  GlCanvas(const GlCanvas&) = delete;
+  GlCanvas& operator=(const GlCanvas&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  void clear(Rgb c);
+  void set_transform(const PixelTransform& t) { transform_ = t; }
+  const PixelTransform& transform() const { return transform_; }
+
+  void fill_rect(const Rect& r, Rgb c, float alpha = 1.0f);
+  void fill_box(Vec2 center, double half_x, double half_y, double yaw, Rgb c);
+  void fill_disk(Vec2 center, double radius_m, Rgb c);
+  void ring(Vec2 center, double radius_m, double width_px, Rgb c);
+  /// Thick polyline with round joins; width in final-image pixels.
+  void polyline(const std::vector<Vec2>& pts, double width_px, Rgb c);
+  /// Line segments between pixel coordinates of the final image (row 0 at the top).
+  void pixel_line(Vec2 a, Vec2 b, double width_px, Rgb c);
+
+  Image read() const;
+
+ private:
+  void quad_px(Vec2 a, Vec2 b, double width_px);  // in supersampled pixels, GL rows
+  void disk_px(Vec2 center, double radius_px);
+  Vec2 gl_px(Vec2 world) const;
+
+  int width_, height_, ss_;
+  PixelTransform transform_;
+  struct Context;
+  std::unique_ptr<Context> ctx_;
+};
+
+}  // namespace plantsim::render

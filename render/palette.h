@@ -1,0 +1,20 @@
+// The figure colours, named once so that drawings and pixel tests agree.
+#pragma once
+
+#include "render/image.h"
+
+namespace plantsim::render::palette {
+
+inline constexpr Rgb kBackground{255, 255, 255};
+inline constexpr Rgb kFloor{248, 247, 242};
+inline constexpr Rgb kGrid{222, 222, 218};
+inline constexpr Rgb kInflation{250, 210, 170};
+inline constexpr Rgb kObstacle{70, 76, 92};
+inline constexpr Rgb kGraph{190, 200, 225};
+inline constexpr Rgb kPlan{30, 110, 230};
+inline constexpr Rgb kTrajectory{215, 25, 35};
+inline constexpr Rgb kCharger{20, 150, 60};
+inline constexpr Rgb kStart{245, 160, 0};
+inline constexpr Rgb kRobot{20, 20, 20};
+
+}  // namespace plantsim::render::palette

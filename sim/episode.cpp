@@ -1,0 +1,123 @@
+// The episode loop and its metrics.
+#include "sim/episode.h"
+
+#include <cmath>
+#include <random>
+
+namespace plantsim::sim {
+namespace {
+
+struct DockError {
+  double position_m;
+  double heading_rad;
+};
+
+DockError dock_error(const Pose2& truth, const Pose2& dock) {
+  return {geom::distance(truth.position(), dock.position()),
+          std::fabs(geom::wrap_angle(truth.yaw - dock.yaw))};
+}
+
+// The charger as a marker detector would report it: docked pose in the robot frame.
+class ChargerDetector {
+ public:
+  ChargerDetector(DetectionParams p, std::uint64_t seed) : p_(p), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
+  std::optional<Pose2> observe(const Pose2& truth, const Pose2& dock) {
+    if (!p_.enabled) return std::nullopt;
+    const Vec2 rel = geom::rotate(dock.position() - truth.position(), -truth.yaw);
+    if (geom::norm(rel) > p_.range_m) return std::nullopt;
+    // The marker sits on the charger, ahead of the docked pose: look for it there.
+    const Vec2 marker = rel + geom::rotate(Vec2{1.0, 0.0}, dock.yaw - truth.yaw);
+    if (std::fabs(std::atan2(marker.y, marker.x)) > 0.5 * p_.field_of_view_rad) return std::nullopt;
+    return Pose2{rel.x + p_.position_noise_m * gauss_(rng_), rel.y + p_.position_noise_m * gauss_(rng_),
+                 geom::wrap_angle(dock.yaw - truth.yaw + p_.yaw_noise_rad * gauss_(rng_))};
+  }
+
+ private:
+  DetectionParams p_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> gauss_{0.0, 1.0};
+};
+
+}  // namespace
+
+EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
+                          const EpisodeConfig& config) {
+  EpisodeResult result;
+  result.planner = planner.name();
+  const Pose2 staging = worlds::staging_pose(world);
+  const planner::PlanResult plan = planner.plan(world.start.position(), staging.position());
+  if (plan.status != planner::PlanStatus::kOk) {
+    result.status = std::string(planner::to_string(plan.status));
+    return result;
+  }
+  result.plan = plan.path;
+  result.path_length_m = plan.length;
+
+  PhysicsWorld physics(world);
+  WheelDrive drive(world.robot, config.drive);
+  Odometry odometry(world.start, world.robot.wheel_base_m, config.odometry, config.seed);
+  ChargerDetector detector(config.detection, config.seed);
+  controller::DockingParams docking = config.docking;
+  docking.staging_distance_m = world.charger_spec.staging_distance_m;
+  controller::DockingController control(config.tracking, docking, plan.path, world.charger);
+
+  const double dt = config.step.dt_s;
+  const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
+  bool was_touching_obstacle = false;
+  bool contact_measured = false;
+  Pose2 previous = physics.robot_pose();
+  result.status = "timeout";
+  for (std::int64_t k = 0; k <= max_steps; ++k) {
+    const Pose2 truth = physics.robot_pose();
+    const ContactState contact = physics.contacts();
+    if (contact.obstacle && !was_touching_obstacle) ++result.collisions;
+    was_touching_obstacle = contact.obstacle;
+    const DockError err = dock_error(truth, world.charger);
+    const bool charging = contact.charger && err.position_m <= config.tolerance.position_m &&
+                          err.heading_rad <= config.tolerance.heading_rad;
+    if (contact.charger && !contact_measured) {
+      result.position_error_m = err.position_m;
+      result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
+      contact_measured = true;
+    }
+    if (!contact.charger) contact_measured = false;
+
+    controller::DockingInput in;
+    in.pose = odometry.pose();
+    in.speed_mps = odometry.speed_mps();
+    in.charger_contact = contact.charger;
+    in.charging = charging;
+    in.charger_in_robot = detector.observe(truth, world.charger);
+    const controller::DockingCommand cmd = control.step(in);
+    result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
+    result.trajectory.push_back({k * dt, truth, odometry.pose(),
+                                 geom::dot(physics.robot_velocity(), truth.heading()),
+                                 cmd.cross_track_error_m, cmd.phase});
+    result.time_s = k * dt;
+    if (cmd.phase == controller::DockPhase::kDocked || cmd.phase == controller::DockPhase::kFailed) {
+      result.docked = cmd.phase == controller::DockPhase::kDocked;
+      result.status = result.docked ? "docked" : "failed";
+      if (!result.docked) {
+        result.position_error_m = err.position_m;
+        result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
+      }
+      break;
+    }
+    drive.command(controller::to_wheels(cmd.twist, world.robot.wheel_base_m), dt);
+    drive.apply(physics, dt);
+    physics.step(config.step);
+    odometry.update(drive.motor_speeds(), dt);
+    const Pose2 now = physics.robot_pose();
+    result.driven_length_m += geom::distance(previous.position(), now.position());
+    previous = now;
+  }
+  if (result.status == "timeout") {
+    const DockError err = dock_error(physics.robot_pose(), world.charger);
+    result.position_error_m = err.position_m;
+    result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
+  }
+  result.retries = control.retries();
+  return result;
+}
+
+}  // namespace plantsim::sim

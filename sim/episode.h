@@ -1,0 +1,72 @@
+// One docking episode: plan to the staging pose, then the closed loop of sensing (odometry,
+// charger detection, contacts), the docking controller, the wheel drive and a fixed Box2D
+// step, until docked, failed or timed out. Returns the metrics and the full trajectory log.
+// Deterministic: the same world, planner, config and seed give the same trajectory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "controller/docking.h"
+#include "planner/planner.h"
+#include "sim/odometry.h"
+#include "sim/physics_world.h"
+#include "sim/wheel_drive.h"
+
+namespace plantsim::sim {
+
+struct DetectionParams {
+  bool enabled = true;
+  double range_m = 2.0;               ///< charger visible within this distance
+  double field_of_view_rad = 1.2;     ///< total angle, centred on the robot's heading
+  double position_noise_m = 0.0;      ///< std-dev per axis of each detection
+  double yaw_noise_rad = 0.0;
+};
+
+struct DockTolerance {
+  double position_m = 0.02;
+  double heading_rad = 2.0 * M_PI / 180.0;
+};
+
+struct EpisodeConfig {
+  StepSettings step;
+  DriveParams drive;
+  OdometryNoise odometry;
+  DetectionParams detection;
+  controller::PurePursuitParams tracking;
+  controller::DockingParams docking;
+  DockTolerance tolerance;
+  double timeout_s = 600.0;
+  std::uint64_t seed = 1;
+};
+
+struct TrajectorySample {
+  double t_s;
+  Pose2 truth;
+  Pose2 estimate;
+  double speed_mps;
+  double cross_track_m;
+  controller::DockPhase phase;
+};
+
+struct EpisodeResult {
+  std::string status;            ///< "docked", "failed", "timeout", or a planner status
+  bool docked = false;
+  double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
+  double heading_error_deg = 0;
+  int collisions = 0;            ///< separate contacts with obstacles or walls
+  int retries = 0;
+  double time_s = 0;
+  double path_length_m = 0;      ///< planned, start to staging pose
+  double driven_length_m = 0;    ///< ground truth
+  double max_cross_track_m = 0;
+  std::string planner;
+  std::vector<Vec2> plan;
+  std::vector<TrajectorySample> trajectory;
+};
+
+EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
+                          const EpisodeConfig& config);
+
+}  // namespace plantsim::sim

@@ -1,0 +1,54 @@
+// The Box2D side of a World: every static obstacle rectangle and the four floor walls as
+// fixtures of one static body (about 6x faster than a body each at 1000 boxes), the charger
+// as its own static body, and the robot as a dynamic disk with mass and inertia from its
+// spec. Box2D types never leave sim/; the rest of plantsim sees poses and contact flags.
+#pragma once
+
+#include <memory>
+
+#include "geometry/vec2.h"
+#include "worlds/world.h"
+
+class b2World;
+class b2Body;
+
+namespace plantsim::sim {
+
+using geom::Pose2;
+using geom::Vec2;
+
+struct StepSettings {
+  double dt_s = 1.0 / 60.0;     ///< fixed time step
+  int velocity_iterations = 8;  ///< Box2D solver iterations per step
+  int position_iterations = 3;
+};
+
+struct ContactState {
+  bool charger = false;   ///< robot touches the charger body
+  bool obstacle = false;  ///< robot touches an obstacle or a wall
+};
+
+class PhysicsWorld {
+ public:
+  explicit PhysicsWorld(const worlds::World& world);
+  ~PhysicsWorld();
+  PhysicsWorld(const PhysicsWorld&) = delete;
+  PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+  void step(const StepSettings& s);
+
+  Pose2 robot_pose() const;
+  Vec2 robot_velocity() const;          ///< world frame, m/s
+  double robot_yaw_rate() const;        ///< rad/s
+  ContactState contacts() const;
+
+  b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
+  double robot_mass() const;
+  double robot_inertia() const;
+
+ private:
+  std::unique_ptr<b2World> world_;
+  b2Body* robot_ = nullptr;
+};
+
+}  // namespace plantsim::sim
