@@ -15,5 +15,6 @@ inline constexpr int kExitBadInput = 2;
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
+std::function<int()> add_summarize_command(CLI::App& app);
 
 }  // namespace plantsim::app

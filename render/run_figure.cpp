@@ -1,6 +1,7 @@
 // Layer order matters: margins under obstacles, plan under trajectory, robot on top.
 #include "render/run_figure.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/palette.h"
@@ -30,7 +31,6 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const worlds::ChargerBody cb = worlds::charger_body(world);
   const geom::Pose2 staging = worlds::staging_pose(world);
   canvas.polyline({staging.position(), cb.center}, 1.5, palette::kCharger);
-  canvas.fill_box(cb.center, cb.half_depth_m, cb.half_width_m, cb.yaw, palette::kCharger);
 
   canvas.polyline(run.plan, 2.0, palette::kPlan);
   std::vector<geom::Vec2> driven;
@@ -45,6 +45,10 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
     canvas.polyline({end.position(), end.position() + world.robot.radius_m * end.heading()}, 1.5,
                     palette::kRobot);
   }
+  // The charger last, and never smaller than a few pixels, so that it stays visible.
+  const double min_half_m = 3.0 / t.scale;
+  canvas.fill_box(cb.center, std::max(cb.half_depth_m, min_half_m), std::max(cb.half_width_m, min_half_m),
+                  cb.yaw, palette::kCharger);
   if (transform_out) *transform_out = t;
   return canvas.read();
 }

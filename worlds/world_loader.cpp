@@ -210,7 +210,7 @@ World parse_world_json(const std::string& text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
     throw WorldError(source, "", std::string("malformed JSON: ") + e.what());
   }
   if (!doc.is_object()) throw WorldError(source, "", "expected a JSON object at the top level");

@@ -1,0 +1,61 @@
+// `plantsim summarize DIR...`: gathers the summary.json of several runs into one Markdown
+// table, for a reader who wants every result on one page.
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/commands.h"
+#include "util/atomic_file.h"
+
+namespace plantsim::app {
+
+std::function<int()> add_summarize_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
+  struct Options {
+    std::vector<std::string> dirs;
+    std::string out;
+  };
+  auto opt = std::make_shared<Options>();
+  cmd->add_option("dirs", opt->dirs, "Run output folders")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", opt->out, "Write here instead of stdout");
+  return [opt]() {
+    std::string md =
+        "# plantsim results\n\n| world | planner | status | position error (cm) | heading error (deg) | "
+        "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    bool all_docked = true;
+    for (const auto& d : opt->dirs) {
+      std::ifstream f(d + "/summary.json");
+      if (!f) throw std::invalid_argument(d + "/summary.json: no such file");
+      nlohmann::json j;
+      try {
+        j = nlohmann::json::parse(f);
+      } catch (const nlohmann::json::exception& e) {
+        throw std::invalid_argument(d + "/summary.json: malformed JSON: " + e.what());
+      }
+      // Links relative to where the table is written, so they work when it is opened.
+      const std::string base = opt->out.empty() ? "." : std::filesystem::path(opt->out).parent_path().string();
+      const std::string link = std::filesystem::relative(d, base.empty() ? "." : base).string();
+      char row[512];
+      std::snprintf(row, sizeof row, "| %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | [run.png](%s/run.png) |\n",
+                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
+                    j.value("status", "?").c_str(), 100.0 * j.value("position_error_m", 0.0),
+                    j.value("heading_error_deg", 0.0), j.value("collisions", 0), j.value("retries", 0),
+                    j.value("time_s", 0.0), j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0),
+                    link.c_str());
+      md += row;
+      all_docked = all_docked && j.value("docked", false);
+    }
+    if (opt->out.empty()) {
+      std::cout << md;
+    } else {
+      util::write_file_atomically(opt->out, md);
+    }
+    return all_docked ? kExitOk : kExitFailed;
+  };
+}
+
+}  // namespace plantsim::app

@@ -1,0 +1,116 @@
+// Controller maths without physics: kinematics, and pure pursuit closed around an ideal
+// unicycle so that tracking errors come from the controller alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "controller/diff_drive.h"
+#include "controller/docking.h"
+#include "controller/pure_pursuit.h"
+
+namespace plantsim::controller {
+namespace {
+
+TEST(DiffDrive, EqualWheelsGoStraightOppositeWheelsTurnInPlace) {
+  const Twist straight = to_twist({0.5, 0.5}, 0.4);
+  EXPECT_DOUBLE_EQ(straight.v_mps, 0.5);
+  EXPECT_DOUBLE_EQ(straight.omega_radps, 0.0);
+  const Twist spin = to_twist({-0.2, 0.2}, 0.4);
+  EXPECT_DOUBLE_EQ(spin.v_mps, 0.0);
+  EXPECT_DOUBLE_EQ(spin.omega_radps, 1.0);
+  const WheelSpeeds w = to_wheels({0.3, 0.5}, 0.4);
+  EXPECT_DOUBLE_EQ(w.left_mps, 0.2);
+  EXPECT_DOUBLE_EQ(w.right_mps, 0.4);
+}
+
+TEST(DiffDrive, SaturationKeepsCurvature) {
+  const WheelSpeeds w = saturate({0.5, 2.0}, 1.0);
+  EXPECT_DOUBLE_EQ(w.right_mps, 1.0);
+  EXPECT_DOUBLE_EQ(w.left_mps, 0.25);
+}
+
+struct TrackRun {
+  double max_cross_track = 0;
+  double final_cross_track = 0;
+  bool reached = false;
+  Pose2 end;
+};
+
+// Ideal unicycle at 50 Hz; cross-track error measured after `settle_m` of travel.
+TrackRun track(const std::vector<Vec2>& path, Pose2 pose, double settle_m, PurePursuitParams params = {}) {
+  PurePursuit pp(params, path);
+  TrackRun run;
+  const double dt = 0.02;
+  double travelled = 0, speed = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const TrackingCommand c = pp.step(pose, speed);
+    if (travelled > settle_m) run.max_cross_track = std::max(run.max_cross_track, c.cross_track_error_m);
+    run.final_cross_track = c.cross_track_error_m;
+    if (c.goal_reached) {
+      run.reached = true;
+      break;
+    }
+    speed = c.twist.v_mps;
+    pose.x += c.twist.v_mps * std::cos(pose.yaw) * dt;
+    pose.y += c.twist.v_mps * std::sin(pose.yaw) * dt;
+    pose.yaw += c.twist.omega_radps * dt;
+    travelled += std::fabs(c.twist.v_mps) * dt;
+  }
+  run.end = pose;
+  return run;
+}
+
+TEST(PurePursuit, StraightLineFromAnOffsetConverges) {
+  const TrackRun r = track({{0, 0}, {20, 0}}, {0, 0.3, 0}, 3.0);
+  EXPECT_TRUE(r.reached);
+  EXPECT_LT(r.max_cross_track, 0.01);
+  EXPECT_NEAR(r.end.x, 20.0, 0.03);
+}
+
+TEST(PurePursuit, CircleIsTrackedWithinTwoCentimetres) {
+  std::vector<Vec2> circle;
+  for (int i = 0; i <= 200; ++i) {
+    const double a = -M_PI / 2 + 2 * M_PI * i / 200.0 * 0.9;
+    circle.push_back({3.0 * std::cos(a), 3.0 + 3.0 * std::sin(a)});
+  }
+  const TrackRun r = track(circle, {0, 0, 0}, 1.0);
+  EXPECT_TRUE(r.reached);
+  EXPECT_LT(r.max_cross_track, 0.02);  // radius 3 m, lookahead up to 0.9 m
+}
+
+TEST(PurePursuit, SharpCornerCutIsBounded) {
+  // A right-angle turn: the robot slows on the curvature and turns in place when the carrot
+  // swings far off its heading, so the corner is cut by little.
+  const TrackRun r = track({{0, 0}, {5, 0}, {5, 5}}, {0, 0, 0}, 0.0);
+  EXPECT_TRUE(r.reached);
+  EXPECT_LT(r.max_cross_track, 0.12);
+  EXPECT_NEAR(r.end.y, 5.0, 0.03);
+}
+
+TEST(PurePursuit, DoesNotOvershootTheEnd) {
+  const TrackRun r = track({{0, 0}, {3, 0}}, {0, 0, 0}, 0.0);
+  EXPECT_TRUE(r.reached);
+  EXPECT_LE(r.end.x, 3.0 + 1e-9);
+  EXPECT_GE(r.end.x, 3.0 - 0.03);
+}
+
+TEST(Docking, ContactWhileChargingIsDockedContactWithoutIsAMissAndBacksOff) {
+  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{3, 0, 0});
+  DockingInput at_staging{Pose2{1, 0, 0}, 0, false, false, std::nullopt};
+  EXPECT_EQ(dc.step(at_staging).phase, DockPhase::kAlign);   // path end reached
+  EXPECT_EQ(dc.step(at_staging).phase, DockPhase::kApproach); // already aligned
+  DockingInput bad_contact{Pose2{3, 0.05, 0}, 0.08, true, false, std::nullopt};
+  const DockingCommand miss = dc.step(bad_contact);
+  EXPECT_EQ(miss.phase, DockPhase::kBackOff);
+  EXPECT_EQ(dc.retries(), 1);
+  const DockingCommand back = dc.step({Pose2{2.9, 0.05, 0}, 0, false, false, std::nullopt});
+  EXPECT_LT(back.twist.v_mps, 0);  // reverses away from the charger
+  dc.step({Pose2{2.0, 0.0, 0}, 0, false, false, std::nullopt});  // at staging again: align
+  dc.step({Pose2{2.0, 0.0, 0}, 0, false, false, std::nullopt});  // approach
+  const DockingCommand ok = dc.step({Pose2{3, 0.0, 0}, 0.08, true, true, std::nullopt});
+  EXPECT_EQ(ok.phase, DockPhase::kDocked);
+  EXPECT_EQ(ok.twist.v_mps, 0.0);
+}
+
+}  // namespace
+}  // namespace plantsim::controller

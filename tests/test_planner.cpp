@@ -1,0 +1,99 @@
+// Planner answers against known optima (shared/data/worlds, from an independent brute-force
+// visibility graph with 0.3 m square inflation), and the statuses for bad queries.
+#include <gtest/gtest.h>
+
+#include "planner/planner.h"
+#include "planner/vg_planner.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::planner {
+namespace {
+
+struct KnownOptimum {
+  const char* file;
+  double length;  // ../shared/data/README.md
+};
+
+class KnownWorlds : public ::testing::TestWithParam<KnownOptimum> {};
+
+TEST_P(KnownWorlds, FastPlannerFindsTheOptimalLength) {
+  const auto world = worlds::load_world(test::shared_data(GetParam().file));
+  PlannerInput in = planner_input(world, false);
+  ASSERT_DOUBLE_EQ(in.inflation_m, 0.3);
+  auto p = make_planner("vg", in);
+  const PlanResult r = p->plan(world.start.position(), world.charger.position());
+  ASSERT_EQ(r.status, PlanStatus::kOk);
+  EXPECT_NEAR(r.length, GetParam().length, 1e-6);
+  EXPECT_EQ(r.path.front(), world.start.position());
+  EXPECT_EQ(r.path.back(), world.charger.position());
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedData, KnownWorlds,
+                         ::testing::Values(KnownOptimum{"worlds/world_N10.json", 94.490208432},
+                                           KnownOptimum{"worlds/world_N50.json", 98.808046206},
+                                           KnownOptimum{"worlds/world_N200.json", 95.155793238},
+                                           KnownOptimum{"worlds/world_N1000.json", 97.127599918}));
+
+TEST(TraditionalPlanner, SameLengthAndTheDocumentedVisiblePairs) {
+  // The README lists 259 and 2561 corner-to-corner visible pairs for N10 and N50.
+  const std::pair<const char*, std::int64_t> cases[] = {{"worlds/world_N10.json", 259},
+                                                        {"worlds/world_N50.json", 2561}};
+  for (const auto& [file, pairs] : cases) {
+    const auto world = worlds::load_world(test::shared_data(file));
+    const PlannerInput in = planner_input(world, false);
+    auto fast = make_planner("vg", in);
+    auto traditional = make_planner("vg-traditional", in);
+    const auto a = fast->plan(world.start.position(), world.charger.position());
+    const auto b = traditional->plan(world.start.position(), world.charger.position());
+    ASSERT_EQ(b.status, PlanStatus::kOk);
+    EXPECT_NEAR(a.length, b.length, 1e-9) << file;
+    EXPECT_EQ(b.stats.edges, pairs) << file;
+    EXPECT_LT(a.stats.vertices, b.stats.vertices + 1) << file;
+  }
+}
+
+PlannerInput box_world() {
+  PlannerInput in;
+  in.floor = {0, 0, 10, 10};
+  in.obstacles = {{4, 4, 6, 6}};
+  in.inflation_m = 0.5;
+  return in;
+}
+
+TEST(PlannerStatus, StartOrGoalInsideInflatedObstacleOrOffFloor) {
+  auto p = make_planner("vg", box_world());
+  EXPECT_EQ(p->plan({5, 5}, {1, 1}).status, PlanStatus::kStartBlocked);
+  EXPECT_EQ(p->plan({1, 1}, {3.8, 5}).status, PlanStatus::kGoalBlocked);  // in the margin
+  EXPECT_EQ(p->plan({1, 1}, {0.2, 5}).status, PlanStatus::kGoalBlocked);  // wall margin
+  EXPECT_EQ(p->plan({-3, 1}, {1, 5}).status, PlanStatus::kStartBlocked);  // off the floor
+}
+
+TEST(PlannerStatus, EnclosedGoalHasNoPath) {
+  PlannerInput in;
+  in.floor = {0, 0, 10, 10};
+  in.obstacles = {{3, 3, 7, 3.2}, {3, 6.8, 7, 7}, {3, 3, 3.2, 7}, {6.8, 3, 7, 7}};
+  in.inflation_m = 0.1;
+  for (const char* name : {"vg", "vg-traditional"}) {
+    auto p = make_planner(name, in);
+    const auto r = p->plan({1, 1}, {5, 5});
+    EXPECT_EQ(r.status, PlanStatus::kNoPath) << name;
+    EXPECT_TRUE(r.path.empty());
+  }
+}
+
+TEST(PlannerStatus, GoesAroundABoxWithTheExactLength) {
+  auto p = make_planner("vg", box_world());
+  // Around the inflated box [3.5, 6.5]^2: start (1,5) to goal (9,5) bends at two corners.
+  const auto r = p->plan({1, 5}, {9, 5});
+  ASSERT_EQ(r.status, PlanStatus::kOk);
+  const double leg = std::hypot(2.5, 1.5);
+  EXPECT_NEAR(r.length, 2 * leg + 3.0, 1e-12);
+}
+
+TEST(PlannerRegistry, UnknownNameThrows) {
+  EXPECT_THROW(make_planner("teleport", box_world()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plantsim::planner

@@ -1,0 +1,96 @@
+// Closed-loop episodes in Box2D: docking within tolerance with no collisions on the shared
+// worlds, the wheel model, and bit-for-bit determinism.
+#include <gtest/gtest.h>
+
+#include "planner/planner.h"
+#include "sim/episode.h"
+#include "sim/physics_world.h"
+#include "sim/wheel_drive.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::sim {
+namespace {
+
+EpisodeResult dock(const worlds::World& world, std::uint64_t seed = 1) {
+  auto p = planner::make_planner("vg", planner::planner_input(world, true));
+  EpisodeConfig config;
+  config.seed = seed;
+  return run_episode(world, *p, config);
+}
+
+class DockingOnSharedWorlds : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DockingOnSharedWorlds, DocksWithinTolerance) {
+  const auto world = worlds::load_world(test::shared_data(GetParam()));
+  const EpisodeResult r = dock(world);
+  EXPECT_EQ(r.status, "docked");
+  EXPECT_TRUE(r.docked);
+  EXPECT_LE(r.position_error_m, 0.02);
+  EXPECT_LE(r.heading_error_deg, 2.0);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_GT(r.driven_length_m, r.path_length_m);  // plan ends at staging; docking adds ~1 m
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedData, DockingOnSharedWorlds,
+                         ::testing::Values("worlds/world_N10.json", "worlds/world_N50.json"));
+
+TEST(Docking, ExampleWorldWithChargerAgainstTheWall) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  const EpisodeResult r = dock(world);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Determinism, SameEpisodeTwiceGivesIdenticalTrajectories) {
+  const auto world = worlds::load_world(test::shared_data("worlds/world_N10.json"));
+  const EpisodeResult a = dock(world, 42), b = dock(world, 42);
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  for (std::size_t i = 0; i < a.trajectory.size(); ++i) {
+    ASSERT_EQ(a.trajectory[i].truth.x, b.trajectory[i].truth.x) << i;
+    ASSERT_EQ(a.trajectory[i].truth.y, b.trajectory[i].truth.y) << i;
+    ASSERT_EQ(a.trajectory[i].truth.yaw, b.trajectory[i].truth.yaw) << i;
+  }
+}
+
+worlds::World empty_floor() {
+  worlds::World w;
+  w.floor = {0, 0, 10, 10};
+  w.start = {5, 5, 0};
+  w.charger = {9, 5, 0};
+  return w;
+}
+
+TEST(WheelDrive, OppositeWheelSpeedsTurnInPlace) {
+  const worlds::World w = empty_floor();
+  PhysicsWorld physics(w);
+  WheelDrive drive(w.robot, {});
+  StepSettings s;
+  for (int k = 0; k < 120; ++k) {
+    drive.command({-0.2, 0.2}, s.dt_s);
+    drive.apply(physics, s.dt_s);
+    physics.step(s);
+  }
+  const Pose2 p = physics.robot_pose();
+  EXPECT_NEAR(p.x, 5.0, 1e-3);
+  EXPECT_NEAR(p.y, 5.0, 1e-3);
+  EXPECT_NEAR(physics.robot_yaw_rate(), 0.4 / w.robot.wheel_base_m, 0.02);
+}
+
+TEST(WheelDrive, EqualWheelSpeedsDriveStraightAtThatSpeed) {
+  const worlds::World w = empty_floor();
+  PhysicsWorld physics(w);
+  WheelDrive drive(w.robot, {});
+  StepSettings s;
+  for (int k = 0; k < 120; ++k) {
+    drive.command({0.5, 0.5}, s.dt_s);
+    drive.apply(physics, s.dt_s);
+    physics.step(s);
+  }
+  EXPECT_NEAR(physics.robot_velocity().x, 0.5, 0.01);
+  EXPECT_NEAR(physics.robot_pose().y, 5.0, 1e-4);
+  EXPECT_NEAR(physics.robot_pose().yaw, 0.0, 1e-4);
+}
+
+}  // namespace
+}  // namespace plantsim::sim

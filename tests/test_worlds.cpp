@@ -1,0 +1,144 @@
+// World loading: good files of both schemas, and every kind of bad input named in the
+// issue, each giving a WorldError that names the file and the field.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::worlds {
+namespace {
+
+class WorldFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("plantsim_worlds_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const auto p = (dir_ / name).string();
+    std::ofstream(p) << text;
+    return p;
+  }
+  static nlohmann::json good() {
+    std::ifstream f(test::source_file("worlds/examples/small_plant.json"));
+    return nlohmann::json::parse(f);
+  }
+  // Loads and expects a WorldError mentioning the file and the given text.
+  void expect_error(const std::string& path, const std::string& needle) {
+    try {
+      load_world(path);
+      FAIL() << "no error for " << path << " (expected '" << needle << "')";
+    } catch (const WorldError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path), std::string::npos) << what;
+      EXPECT_NE(what.find(needle), std::string::npos) << what;
+    }
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(WorldFiles, LoadsTheExampleWorld) {
+  const World w = load_world(test::source_file("worlds/examples/small_plant.json"));
+  EXPECT_EQ(w.name, "small_plant");
+  EXPECT_EQ(w.obstacles.size(), 8u);
+  EXPECT_DOUBLE_EQ(w.robot.radius_m, 0.2);
+  EXPECT_DOUBLE_EQ(w.charger.x, 23.5);
+  EXPECT_DOUBLE_EQ(w.planning_inflation_m(), 0.3);
+}
+
+TEST_F(WorldFiles, LoadsPlainWorldWithGoalAsCharger) {
+  const World w = load_world(test::shared_data("worlds/world_N10.json"));
+  EXPECT_EQ(w.obstacles.size(), 10u);
+  EXPECT_DOUBLE_EQ(w.floor.xmax, 100.0);
+  EXPECT_DOUBLE_EQ(w.charger.x, 98.252749);   // the file's goal
+  EXPECT_DOUBLE_EQ(w.charger.y, 51.60456);
+  EXPECT_DOUBLE_EQ(w.planning_inflation_m(), 0.3);  // the benchmark's inflation
+}
+
+TEST_F(WorldFiles, MissingField) {
+  auto j = good();
+  j["robot"].erase("radius_m");
+  expect_error(write("w.json", j.dump()), "field 'robot.radius_m': missing");
+  j = good();
+  j.erase("charger");
+  expect_error(write("w2.json", j.dump()), "field 'charger': missing");
+}
+
+TEST_F(WorldFiles, WrongType) {
+  auto j = good();
+  j["robot"]["max_speed_mps"] = "fast";
+  expect_error(write("w.json", j.dump()), "field 'robot.max_speed_mps': expected a number, got string");
+  j = good();
+  j["obstacles"][2] = {1, 2, 3};
+  expect_error(write("w2.json", j.dump()), "field 'obstacles[2]'");
+}
+
+TEST_F(WorldFiles, NaNAndInfinity) {
+  auto text = good().dump();
+  const auto pos = text.find("\"x\":1.2");
+  ASSERT_NE(pos, std::string::npos);
+  std::string with_nan = text;
+  with_nan.replace(pos, 7, "\"x\":NaN");
+  expect_error(write("nan.json", with_nan), "malformed JSON");
+  std::string with_inf = text;
+  with_inf.replace(pos, 7, "\"x\":1e999");
+  expect_error(write("inf.json", with_inf), "number overflow");
+}
+
+TEST_F(WorldFiles, NegativeSizes) {
+  auto j = good();
+  j["obstacles"][0] = {6, 2, 3, 5};
+  expect_error(write("w.json", j.dump()), "field 'obstacles[0]': needs xmax > xmin");
+  j = good();
+  j["floor"]["xmax"] = -5;
+  expect_error(write("w2.json", j.dump()), "field 'floor'");
+  j = good();
+  j["robot"]["radius_m"] = -0.2;
+  expect_error(write("w3.json", j.dump()), "field 'robot.radius_m': must be positive");
+}
+
+TEST_F(WorldFiles, StartInsideObstacle) {
+  auto j = good();
+  j["start"] = {{"x", 4.0}, {"y", 3.0}, {"yaw", 0.0}};
+  expect_error(write("w.json", j.dump()), "field 'start': robot at");
+  j = good();
+  j["start"] = {{"x", 50.0}, {"y", 3.0}, {"yaw", 0.0}};
+  expect_error(write("w2.json", j.dump()), "field 'start': lies outside the floor");
+}
+
+TEST_F(WorldFiles, ChargerWithoutRoom) {
+  // Facing the obstacle column x = 20..21 from 0.25 m away: the robot fits, but the charger
+  // body (0.1 m deep, in front of the robot) would overlap the column.
+  auto j = good();
+  j["charger"]["x"] = 21.25;
+  j["charger"]["y"] = 7.0;
+  j["charger"]["yaw"] = M_PI;
+  expect_error(write("w.json", j.dump()), "field 'charger': no room to dock");
+}
+
+TEST_F(WorldFiles, EmptyFileAndDirectoryAndMissingFile) {
+  expect_error(write("empty.json", ""), "file is empty");
+  expect_error(write("blank.json", "  \n"), "file is empty");
+  expect_error(dir_.string(), "is a directory");
+  expect_error((dir_ / "nope.json").string(), "no such file");
+  expect_error(write("garbage.json", "{\"floor\": [1,2"), "malformed JSON");
+  expect_error(write("array.json", "[1, 2, 3]"), "expected a JSON object");
+}
+
+TEST_F(WorldFiles, HugeWorldIsRefused) {
+  auto j = good();
+  j["floor"]["xmax"] = 1e6;
+  expect_error(write("w.json", j.dump()), "huge world");
+}
+
+}  // namespace
+}  // namespace plantsim::worlds
