@@ -3,9 +3,11 @@
 # and runs the whole GoogleTest suite through ctest in both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root=$PWD
 ./scripts/install_deps.sh
 ./scripts/build.sh build -DCMAKE_BUILD_TYPE=Release
 (cd build && ctest --output-on-failure --parallel "$(nproc)")
 ./scripts/build.sh build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPLANTSIM_SANITIZE=ON
 (cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   LSAN_OPTIONS="suppressions=$root/tests/lsan.supp" \
    ctest --output-on-failure --parallel "$(nproc)")
