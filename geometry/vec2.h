@@ -20,7 +20,7 @@ struct Vec2 {
 
 inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }  // not hypot: 5x slower
 inline double distance(Vec2 a, Vec2 b) { return norm(b - a); }
 inline Vec2 unit_from_angle(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }
 inline Vec2 rotate(Vec2 v, double angle_rad) {

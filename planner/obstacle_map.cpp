@@ -97,13 +97,16 @@ bool ObstacleMap::sandwiched(Vec2 p, Vec2 q) const {
   const double hi = horizontal ? std::max(p.x, q.x) : std::max(p.y, q.y);
   struct Span { double a, b; };
   std::vector<Span> below, above;  // rectangles whose edge lies on the line, by side
-  for_rects_near_segment(p, q, [&](std::int32_t i) {
-    const Rect& r = rects_[i];
-    const double emin = horizontal ? r.xmin : r.ymin, emax = horizontal ? r.xmax : r.ymax;
-    const double a = std::max(emin, lo), b = std::min(emax, hi);
-    if (!(a < b)) return;
-    if ((horizontal ? r.ymax : r.xmax) == line) below.push_back({a, b});
-    if ((horizontal ? r.ymin : r.xmin) == line) above.push_back({a, b});
+  walk_cells(p, q, [&](const Cell& c) {
+    for (std::int32_t i : c.rects) {
+      const Rect& r = rects_[i];
+      const double emin = horizontal ? r.xmin : r.ymin, emax = horizontal ? r.xmax : r.ymax;
+      const double a = std::max(emin, lo), b = std::min(emax, hi);
+      if (!(a < b)) continue;
+      if ((horizontal ? r.ymax : r.xmax) == line) below.push_back({a, b});
+      if ((horizontal ? r.ymin : r.xmin) == line) above.push_back({a, b});
+    }
+    return true;
   });
   for (const Span& s : below)
     for (const Span& t : above)
@@ -113,18 +116,18 @@ bool ObstacleMap::sandwiched(Vec2 p, Vec2 q) const {
 
 bool ObstacleMap::segment_free(Vec2 p, Vec2 q) const {
   bool blocked = false;
-  for_cells_near_segment(p, q, [&](const Cell& c) {
-    if (blocked) return;
+  walk_cells(p, q, [&](const Cell& c) {
     for (std::int32_t i : c.rects)
       if (geom::segment_enters_open_rect(p, q, rects_[i])) {
         blocked = true;
-        return;
+        return false;
       }
     for (std::int32_t k : c.pinches)
       if (!(p == q) && geom::in_segment_interior(p, q, pinches_[k])) {
         blocked = true;
-        return;
+        return false;
       }
+    return true;
   });
   return !blocked && !sandwiched(p, q);
 }

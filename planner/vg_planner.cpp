@@ -2,7 +2,9 @@
 // traditional one (all corners, all pairs, Dijkstra).
 #include "planner/vg_planner.h"
 
+#include <algorithm>
 #include <chrono>
+#include <queue>
 
 #include "planner/astar.h"
 
@@ -61,34 +63,13 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
   if (endpoints_usable(map_, start, goal, out)) {
+    const SearchResult found = lazy_astar(start, goal);
     const auto& vertices = graph_.vertices();
-    const auto n = static_cast<std::int32_t>(vertices.size());
-    const std::int32_t s = n, g = n + 1;
     std::vector<Vec2> points;
-    points.reserve(n + 2);
+    points.reserve(vertices.size() + 2);
     for (const auto& v : vertices) points.push_back(v.p);
     points.push_back(start);
     points.push_back(goal);
-    auto visible = [&](Vec2 a, Vec2 b) {
-      graph_.count_segment_test();
-      return map_.segment_free(a, b);
-    };
-    const SearchResult found = best_first_search(
-        n + 2, s, g, [&](std::int32_t v) { return geom::distance(points[v], goal); },
-        [&](std::int32_t u, auto&& emit) {
-          if (u == s) {
-            for (std::int32_t w = 0; w < n; ++w)
-              if (VisibilityGraph::tangent(vertices[w], vertices[w].p - start) &&
-                  visible(start, vertices[w].p))
-                emit(w, geom::distance(start, vertices[w].p));
-            if (visible(start, goal)) emit(g, geom::distance(start, goal));
-            return;
-          }
-          for (const GraphEdge& e : graph_.neighbours(u)) emit(e.to, e.length);
-          if (VisibilityGraph::tangent(vertices[u], goal - vertices[u].p) &&
-              visible(vertices[u].p, goal))
-            emit(g, geom::distance(vertices[u].p, goal));
-        });
     fill_path(found, points, out);
     out.stats.expanded = found.stats.expanded;
   }
@@ -98,6 +79,75 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
   out.stats.edges = graph_.edges_found();
   out.stats.segment_tests = graph_.segment_tests();
   return out;
+}
+
+// A* with lazy edge evaluation: every candidate edge out of an expanded node is pushed
+// untested, and its visibility is tested only when it is popped. With a consistent
+// heuristic the first valid pop of a node carries its optimal cost, and candidates whose
+// f exceeds the goal's are never tested at all.
+SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
+  const auto& vertices = graph_.vertices();
+  const auto n = static_cast<std::int32_t>(vertices.size());
+  const std::int32_t s = n, g = n + 1;
+  auto point = [&](std::int32_t v) { return v == s ? start : v == g ? goal : vertices[v].p; };
+  constexpr std::int32_t kUntested = -1;  // candidate index for edges from start or to goal
+
+  struct Entry {
+    double f, g;
+    std::int32_t node, parent, candidate;
+    bool operator>(const Entry& o) const {
+      if (f != o.f) return f > o.f;
+      if (g != o.g) return g < o.g;  // deeper first on ties
+      if (node != o.node) return node > o.node;
+      return parent > o.parent;
+    }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  std::vector<char> closed(n + 2, 0);
+  std::vector<std::int32_t> parent(n + 2, -1);
+  std::vector<double> cost(n + 2, 0.0);
+  SearchResult result;
+  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv) {
+    if (closed[v]) return;
+    open.push({gv + geom::distance(point(v), goal), gv, v, from, candidate});
+    ++result.stats.pushed;
+  };
+  open.push({geom::distance(start, goal), 0.0, s, -1, kUntested});
+  std::vector<GraphEdge> from_start;
+  while (!open.empty()) {
+    const Entry e = open.top();
+    open.pop();
+    if (closed[e.node]) continue;
+    if (e.parent >= 0) {
+      const bool ok = e.candidate == kUntested ? graph_.visible(point(e.parent), point(e.node))
+                                               : graph_.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
+      if (!ok) continue;
+    }
+    closed[e.node] = 1;
+    parent[e.node] = e.parent;
+    cost[e.node] = e.g;
+    ++result.stats.expanded;
+    if (e.node == g) break;
+    const Vec2 u = point(e.node);
+    if (e.node == s) {
+      graph_.candidates_from_point(start, from_start);
+      for (const GraphEdge& c : from_start) push(c.to, s, kUntested, c.length);
+      push(g, s, kUntested, geom::distance(start, goal));
+      continue;
+    }
+    const auto& cands = graph_.candidates(e.node);
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      push(cands[i].to, e.node, static_cast<std::int32_t>(i), e.g + cands[i].length);
+    if (VisibilityGraph::tangent(vertices[e.node], goal - u))
+      push(g, e.node, kUntested, e.g + geom::distance(u, goal));
+  }
+  if (closed[g]) {
+    result.found = true;
+    result.cost = cost[g];
+    for (std::int32_t v = g; v != -1; v = parent[v]) result.nodes.push_back(v);
+    std::reverse(result.nodes.begin(), result.nodes.end());
+  }
+  return result;
 }
 
 TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)

@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "planner/astar.h"
 #include "planner/obstacle_map.h"
 #include "planner/planner.h"
 #include "planner/visibility_graph.h"
@@ -20,6 +21,8 @@ class VisibilityGraphPlanner : public Planner {
   const VisibilityGraph& graph() const { return graph_; }
 
  private:
+  SearchResult lazy_astar(Vec2 start, Vec2 goal) const;
+
   std::chrono::steady_clock::time_point build_start_;  // first member: times the build
   ObstacleMap map_;
   VisibilityGraph graph_;

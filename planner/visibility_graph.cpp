@@ -1,7 +1,9 @@
-// Convex-corner extraction and lazy bitangent edge discovery.
+// Convex-corner extraction and the ring-by-ring search for visible, tangent vertices.
 #include "planner/visibility_graph.h"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <tuple>
 
 #include "geometry/predicates.h"
@@ -29,42 +31,145 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
           map.quadrant_occupied(k.c, -k.sx, k.sy, self) ||
           map.quadrant_occupied(k.c, k.sx, -k.sy, self))
         continue;
-      vertices_.push_back({k.c, static_cast<std::int8_t>(k.sx * k.sy)});
+      vertices_.push_back({k.c, static_cast<std::int8_t>(k.sx), static_cast<std::int8_t>(k.sy)});
     }
   }
   // Nested rectangles sharing a corner give the same vertex twice.
-  std::sort(vertices_.begin(), vertices_.end(), [](const GraphVertex& a, const GraphVertex& b) {
-    return std::tie(a.p.x, a.p.y, a.turn_sign) < std::tie(b.p.x, b.p.y, b.turn_sign);
-  });
+  auto key = [](const GraphVertex& v) { return std::make_tuple(v.p.x, v.p.y, v.sx, v.sy); };
+  std::sort(vertices_.begin(), vertices_.end(),
+            [&](const GraphVertex& a, const GraphVertex& b) { return key(a) < key(b); });
   vertices_.erase(std::unique(vertices_.begin(), vertices_.end(),
-                              [](const GraphVertex& a, const GraphVertex& b) {
-                                return a.p == b.p && a.turn_sign == b.turn_sign;
-                              }),
+                              [&](const GraphVertex& a, const GraphVertex& b) { return key(a) == key(b); }),
                   vertices_.end());
-  adjacency_.resize(vertices_.size());
-  adjacency_ready_.assign(vertices_.size(), 0);
+  vertices_in_cell_.resize(static_cast<std::size_t>(map.grid_width()) * map.grid_height());
+  for (std::size_t i = 0; i < vertices_.size(); ++i)
+    vertices_in_cell_[static_cast<std::size_t>(map.cell_y(vertices_[i].p.y)) * map.grid_width() +
+                      map.cell_x(vertices_[i].p.x)]
+        .push_back(static_cast<std::int32_t>(i));
+  candidates_.resize(vertices_.size());
+  verdict_.resize(vertices_.size());
+  candidates_ready_.assign(vertices_.size(), 0);
+  rect_seen_.assign(map.rects().size(), 0);
 }
 
 bool VisibilityGraph::tangent(const GraphVertex& v, Vec2 d) {
-  return sign(d.x) * sign(d.y) != v.turn_sign;
+  return sign(d.x) * sign(d.y) != v.turn_sign();
 }
 
-const std::vector<GraphEdge>& VisibilityGraph::neighbours(std::int32_t v) const {
-  if (adjacency_ready_[v]) return adjacency_[v];
-  const GraphVertex& a = vertices_[v];
-  auto& out = adjacency_[v];
-  for (std::size_t w = 0; w < vertices_.size(); ++w) {
-    if (static_cast<std::int32_t>(w) == v) continue;
-    const GraphVertex& b = vertices_[w];
-    const Vec2 d = b.p - a.p;
-    if (!tangent(a, d) || !tangent(b, d)) continue;
-    ++segment_tests_;
-    if (map_.segment_free(a.p, b.p))
-      out.push_back({static_cast<std::int32_t>(w), geom::distance(a.p, b.p)});
+const std::vector<GraphEdge>& VisibilityGraph::candidates(std::int32_t v) const {
+  if (!candidates_ready_[v]) {
+    scan(vertices_[v].p, &vertices_[v], v, candidates_[v]);
+    verdict_[v].assign(candidates_[v].size(), -1);
+    candidates_gathered_ += static_cast<std::int64_t>(candidates_[v].size());
+    candidates_ready_[v] = 1;
   }
-  edges_found_ += static_cast<std::int64_t>(out.size());
-  adjacency_ready_[v] = 1;
-  return out;
+  return candidates_[v];
+}
+
+bool VisibilityGraph::candidate_visible(std::int32_t v, std::size_t i) const {
+  std::int8_t& verdict = verdict_[v][i];
+  if (verdict < 0) {
+    verdict = visible(vertices_[v].p, vertices_[candidates_[v][i].to].p) ? 1 : 0;
+    edges_found_ += verdict;
+  }
+  return verdict == 1;
+}
+
+void VisibilityGraph::candidates_from_point(Vec2 p, std::vector<GraphEdge>& out) const {
+  scan(p, nullptr, -1, out);
+}
+
+void VisibilityGraph::add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const {
+  if (!(r.xmin < r.xmax && r.ymin < r.ymax)) return;
+  // The two corners that bound the rectangle's view from u, clockwise one first, chosen by
+  // which of the eight regions around the rectangle u lies in.
+  Vec2 cw, ccw;
+  if (u.x < r.xmin) {
+    if (u.y < r.ymin) cw = {r.xmax, r.ymin}, ccw = {r.xmin, r.ymax};
+    else if (u.y > r.ymax) cw = {r.xmin, r.ymin}, ccw = {r.xmax, r.ymax};
+    else cw = {r.xmin, r.ymin}, ccw = {r.xmin, r.ymax};
+  } else if (u.x > r.xmax) {
+    if (u.y < r.ymin) cw = {r.xmax, r.ymax}, ccw = {r.xmin, r.ymin};
+    else if (u.y > r.ymax) cw = {r.xmin, r.ymax}, ccw = {r.xmax, r.ymin};
+    else cw = {r.xmax, r.ymax}, ccw = {r.xmax, r.ymin};
+  } else if (u.y < r.ymin) {
+    cw = {r.xmax, r.ymin}, ccw = {r.xmin, r.ymin};
+  } else if (u.y > r.ymax) {
+    cw = {r.xmin, r.ymax}, ccw = {r.xmax, r.ymax};
+  } else {
+    return;  // u on or in the rectangle: it blocks no ray for certain
+  }
+  coverage.add(pseudo_angle(cw - u), pseudo_angle(ccw - u));
+}
+
+void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_index,
+                           std::vector<GraphEdge>& out) const {
+  const ObstacleMap& m = map_;
+  const auto& rects = m.rects();
+  if (++scan_stamp_ == 0) {
+    std::fill(rect_seen_.begin(), rect_seen_.end(), 0);
+    scan_stamp_ = 1;
+  }
+  AngleCoverage coverage;
+  if (self) {  // the corner's own rectangle fills one open quadrant
+    const int qx = -self->sx, qy = -self->sy;  // quadrant of the rectangle
+    const double lo = qy > 0 ? (qx > 0 ? 0.0 : 1.0) : (qx < 0 ? 2.0 : 3.0);
+    coverage.add(lo, lo + 1.0);
+  }
+  big_rects_.clear();
+  const int cx0 = m.cell_x(u.x), cy0 = m.cell_y(u.y);
+  const int last_ring = std::max({cx0, cy0, m.grid_width() - 1 - cx0, m.grid_height() - 1 - cy0});
+  int stop_ring = INT_MAX;
+  const double cs = m.cell_size();
+
+  auto visit_cell = [&](int cx, int cy, const Rect& box) {
+    for (std::int32_t w : vertices_in_cell_[static_cast<std::size_t>(cy) * m.grid_width() + cx]) {
+      if (w == self_index) continue;
+      const GraphVertex& b = vertices_[w];
+      const Vec2 d = b.p - u;
+      if ((self && !tangent(*self, d)) || !tangent(b, d)) continue;
+      out.push_back({w, geom::distance(u, b.p)});
+    }
+    if (stop_ring != INT_MAX) return;
+    for (std::int32_t i : m.rects_in_cell(cx, cy)) {
+      if (rect_seen_[i] == scan_stamp_) continue;
+      rect_seen_[i] = scan_stamp_;
+      const Rect& r = rects[i];
+      if (r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax)
+        add_span(coverage, u, r);
+      else
+        big_rects_.push_back(i);
+    }
+  };
+
+  for (int k = 0; k <= last_ring && k <= stop_ring; ++k) {
+    // World bounds of the (unclipped) square of cells within ring k.
+    const Rect box{m.cell_bounds(cx0 - k, 0).xmin, m.cell_bounds(0, cy0 - k).ymin,
+                   m.cell_bounds(cx0 + k, 0).xmax, m.cell_bounds(0, cy0 + k).ymax};
+    for (int cy = cy0 - k; cy <= cy0 + k; ++cy) {
+      if (cy < 0 || cy >= m.grid_height()) continue;
+      const bool edge_row = cy == cy0 - k || cy == cy0 + k;
+      for (int cx = cx0 - k; cx <= cx0 + k; cx += (edge_row || k == 0) ? 1 : 2 * k) {
+        if (cx >= 0 && cx < m.grid_width()) visit_cell(cx, cy, box);
+      }
+    }
+    if (stop_ring != INT_MAX) continue;
+    // Rectangles reaching past the square count with their part inside it.
+    for (std::int32_t i : big_rects_) {
+      const Rect& r = rects[i];
+      add_span(coverage, u, {std::max(r.xmin, box.xmin), std::max(r.ymin, box.ymin),
+                             std::min(r.xmax, box.xmax), std::min(r.ymax, box.ymax)});
+    }
+    if (coverage.full()) {
+      // Every ray is blocked within the square, so no vertex farther than its farthest
+      // corner is visible; finish the rings that can still hold nearer vertices.
+      double reach = 0;
+      for (Vec2 k2 : {Vec2{box.xmin, box.ymin}, Vec2{box.xmax, box.ymin}, Vec2{box.xmax, box.ymax},
+                      Vec2{box.xmin, box.ymax}})
+        reach = std::max(reach, geom::distance(u, k2));
+      stop_ring = static_cast<int>(std::floor(reach / cs)) + 1;
+    }
+  }
 }
 
 }  // namespace plantsim::planner

@@ -1,21 +1,27 @@
 // The reduced visibility graph of an ObstacleMap: vertices are the convex corners of the
 // obstacle union (a corner is kept only when the three quadrants around it other than its
 // own rectangle's are free), edges join mutually visible vertices whose segment is tangent to
-// the obstacle at both ends (bitangent), the only edges a shortest path can use. Edges are
-// found lazily, per vertex, the first time a search expands it, and kept for later queries.
+// the obstacle at both ends (bitangent), the only edges a shortest path can use.
+// Work is done lazily and kept for later queries: a vertex's candidate edges (tangent at both
+// ends, not yet known to be visible) are gathered the first time a search expands it, and an
+// edge's visibility is tested only when a search pops it. Candidates are gathered outward
+// ring by ring over the obstacle grid, stopping once every direction is known to be blocked
+// nearer than the ring reached, so the cost follows local clutter, not the world's size.
 // Not safe for concurrent queries: give each thread its own graph.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "planner/angle_coverage.h"
 #include "planner/obstacle_map.h"
 
 namespace plantsim::planner {
 
 struct GraphVertex {
   Vec2 p;
-  std::int8_t turn_sign;  ///< sx*sy of the free diagonal at this corner (+1 or -1)
+  std::int8_t sx, sy;  ///< the free diagonal at this corner; its rectangle lies towards (-sx, -sy)
+  int turn_sign() const { return sx * sy; }
 };
 
 struct GraphEdge {
@@ -34,18 +40,40 @@ class VisibilityGraph {
   /// one side of the line). Both d and -d give the same answer.
   static bool tangent(const GraphVertex& v, Vec2 d);
 
-  /// Bitangent visible neighbours of vertex v, computed on first use.
-  const std::vector<GraphEdge>& neighbours(std::int32_t v) const;
+  /// Candidate edges of vertex v: tangent at both ends and not ruled out by the ring
+  /// search; visibility is not yet tested. Gathered on first use.
+  const std::vector<GraphEdge>& candidates(std::int32_t v) const;
+
+  /// Whether candidate edge i of vertex v is visible, tested once and remembered.
+  bool candidate_visible(std::int32_t v, std::size_t i) const;
+
+  /// Candidate edges from an arbitrary point p (tangent at the vertex end only).
+  void candidates_from_point(Vec2 p, std::vector<GraphEdge>& out) const;
+
+  /// Exact visibility test, counted in the statistics.
+  bool visible(Vec2 a, Vec2 b) const {
+    ++segment_tests_;
+    return map_.segment_free(a, b);
+  }
 
   std::int64_t edges_found() const { return edges_found_; }
+  std::int64_t candidates_gathered() const { return candidates_gathered_; }
   std::int64_t segment_tests() const { return segment_tests_; }
-  void count_segment_test() const { ++segment_tests_; }
 
  private:
+  void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index, std::vector<GraphEdge>& out) const;
+  void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
+
   const ObstacleMap& map_;
   std::vector<GraphVertex> vertices_;
-  mutable std::vector<std::vector<GraphEdge>> adjacency_;
-  mutable std::vector<char> adjacency_ready_;
+  std::vector<std::vector<std::int32_t>> vertices_in_cell_;
+  mutable std::vector<std::vector<GraphEdge>> candidates_;
+  mutable std::vector<std::vector<std::int8_t>> verdict_;  // per candidate: -1 unknown, 0, 1
+  mutable std::vector<char> candidates_ready_;
+  mutable std::int64_t candidates_gathered_ = 0;
+  mutable std::vector<std::uint32_t> rect_seen_;  // stamp per rectangle, for one scan
+  mutable std::uint32_t scan_stamp_ = 0;
+  mutable std::vector<std::int32_t> big_rects_;   // scratch: rectangles reaching past a ring
   mutable std::int64_t edges_found_ = 0;
   mutable std::int64_t segment_tests_ = 0;
 };
