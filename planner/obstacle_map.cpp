@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "geometry/predicates.h"
+#include "planner/inflation.h"
 
 namespace plantsim::planner {
 namespace {
@@ -23,7 +24,11 @@ ObstacleMap::ObstacleMap(std::vector<Rect> inflated, const Rect& floor, double w
   rects_.erase(std::unique(rects_.begin(), rects_.end()), rects_.end());
   obstacle_count_ = rects_.size();
 
-  free_floor_ = floor.inflated(-wall_inflation);
+  // Walls grow inward like obstacles (rounded outward from the walls' side).
+  const Rect inner = floor.inflated(-wall_inflation);
+  const double k = 1.0 / kInflationLattice_m;
+  free_floor_ = {std::ceil(inner.xmin * k) / k, std::ceil(inner.ymin * k) / k,
+                 std::floor(inner.xmax * k) / k, std::floor(inner.ymax * k) / k};
   const double t = std::max(1.0, wall_inflation);  // thickness beyond the free floor
   const Rect& f = free_floor_;
   rects_.push_back({f.xmin - t, f.ymin - t, f.xmin, f.ymax + t});  // left

@@ -40,7 +40,8 @@ struct PlanResult {
 struct PlannerInput {
   Rect floor;
   std::vector<Rect> obstacles;  ///< raw (not yet inflated)
-  double inflation_m = 0.3;     ///< applied to obstacles and walls, square corners
+  double inflation_m = 0.3;     ///< applied to obstacles and walls
+  int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

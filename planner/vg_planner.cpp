@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <queue>
+#include <tuple>
 
 #include "planner/astar.h"
+#include "planner/inflation.h"
 
 namespace plantsim::planner {
 namespace {
@@ -45,16 +47,9 @@ void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanR
 
 }  // namespace
 
-std::vector<Rect> inflate_square(const std::vector<Rect>& raw, double margin) {
-  std::vector<Rect> out;
-  out.reserve(raw.size());
-  for (const Rect& r : raw) out.push_back(r.inflated(margin));
-  return out;
-}
-
 VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
     : build_start_(std::chrono::steady_clock::now()),
-      map_(inflate_square(input.obstacles, input.inflation_m), input.floor, input.inflation_m),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       graph_(map_) {
   build_ms_ = ms_since(build_start_);
 }
@@ -104,6 +99,8 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
   std::vector<char> closed(n + 2, 0);
+  std::vector<std::uint16_t>& expansions = expansions_;  // per vertex, across queries
+  expansions.resize(n, 0);
   std::vector<std::int32_t> parent(n + 2, -1);
   std::vector<double> cost(n + 2, 0.0);
   SearchResult result;
@@ -135,10 +132,15 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
       push(g, s, kUntested, geom::distance(start, goal));
       continue;
     }
+    // A vertex met again in a later search is worth resolving to its exact edges.
+    if (expansions[e.node] < 2 && ++expansions[e.node] == 2) graph_.resolve(e.node);
     const auto& cands = graph_.candidates(e.node);
-    for (std::size_t i = 0; i < cands.size(); ++i)
+    const Vec2 prev = point(e.parent);
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      if (closed[cands[i].to] || !graph_.taut(prev, e.node, vertices[cands[i].to].p)) continue;
       push(cands[i].to, e.node, static_cast<std::int32_t>(i), e.g + cands[i].length);
-    if (VisibilityGraph::tangent(vertices[e.node], goal - u))
+    }
+    if (VisibilityGraph::tangent(vertices[e.node], goal - u) && graph_.taut(prev, e.node, goal))
       push(g, e.node, kUntested, e.g + geom::distance(u, goal));
   }
   if (closed[g]) {
@@ -151,13 +153,17 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
 }
 
 TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)
-    : map_(inflate_square(input.obstacles, input.inflation_m), input.floor, input.inflation_m) {
+    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m) {
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < map_.obstacle_count(); ++i) {
     const Rect& r = map_.rects()[i];
     for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax},
                    Vec2{r.xmin, r.ymax}})
-      if (map_.point_free(c)) corners_.push_back(c);
+      // A pinch point is never a bend of a valid path: both its edges would have to lie in
+      // one free quadrant (no shortcut needed), or cross between the two (not allowed).
+      if (map_.point_free(c) && !std::binary_search(map_.pinch_points().begin(), map_.pinch_points().end(), c,
+                                                    [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); }))
+        corners_.push_back(c);
   }
   adjacency_.resize(corners_.size());
   for (std::size_t a = 0; a < corners_.size(); ++a)

@@ -26,6 +26,7 @@ class VisibilityGraphPlanner : public Planner {
   std::chrono::steady_clock::time_point build_start_;  // first member: times the build
   ObstacleMap map_;
   VisibilityGraph graph_;
+  mutable std::vector<std::uint16_t> expansions_;  // how often each vertex was expanded (max 2)
   double build_ms_ = 0;
 };
 
@@ -45,8 +46,5 @@ class TraditionalVisibilityPlanner : public Planner {
   std::int64_t segment_tests_ = 0;
   double build_ms_ = 0;
 };
-
-/// Obstacles inflated with square corners, as the source document does.
-std::vector<Rect> inflate_square(const std::vector<Rect>& raw, double margin);
 
 }  // namespace plantsim::planner

@@ -31,7 +31,7 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
           map.quadrant_occupied(k.c, -k.sx, k.sy, self) ||
           map.quadrant_occupied(k.c, k.sx, -k.sy, self))
         continue;
-      vertices_.push_back({k.c, static_cast<std::int8_t>(k.sx), static_cast<std::int8_t>(k.sy)});
+      vertices_.push_back({k.c, r.center(), static_cast<std::int8_t>(k.sx), static_cast<std::int8_t>(k.sy)});
     }
   }
   // Nested rectangles sharing a corner give the same vertex twice.
@@ -73,6 +73,23 @@ bool VisibilityGraph::candidate_visible(std::int32_t v, std::size_t i) const {
     edges_found_ += verdict;
   }
   return verdict == 1;
+}
+
+void VisibilityGraph::resolve(std::int32_t v) const {
+  candidates(v);
+  std::vector<GraphEdge> kept;
+  for (std::size_t i = 0; i < candidates_[v].size(); ++i)
+    if (candidate_visible(v, i)) kept.push_back(candidates_[v][i]);
+  candidates_[v] = std::move(kept);
+  verdict_[v].assign(candidates_[v].size(), 1);
+  candidates_ready_[v] = 2;
+}
+
+bool VisibilityGraph::taut(Vec2 prev, std::int32_t v, Vec2 next) const {
+  const GraphVertex& c = vertices_[v];
+  const geom::Orientation turn = geom::orient(prev, c.p, next);
+  // The incoming edge is tangent at c, so the whole rectangle lies on one side of its line.
+  return turn == geom::Orientation::kCollinear || turn == geom::orient(prev, c.p, c.inside);
 }
 
 void VisibilityGraph::candidates_from_point(Vec2 p, std::vector<GraphEdge>& out) const {

@@ -20,6 +20,7 @@ namespace plantsim::planner {
 
 struct GraphVertex {
   Vec2 p;
+  Vec2 inside;         ///< a point inside this corner's rectangle (the side a path bends around)
   std::int8_t sx, sy;  ///< the free diagonal at this corner; its rectangle lies towards (-sx, -sy)
   int turn_sign() const { return sx * sy; }
 };
@@ -46,6 +47,16 @@ class VisibilityGraph {
 
   /// Whether candidate edge i of vertex v is visible, tested once and remembered.
   bool candidate_visible(std::int32_t v, std::size_t i) const;
+
+  /// Tests every remaining candidate of v and keeps only the visible ones, so that later
+  /// searches through v push exact edges only. Candidate indices change: call between searches
+  /// or right after candidates(v), before pushing.
+  void resolve(std::int32_t v) const;
+  bool resolved(std::int32_t v) const { return candidates_ready_[v] == 2; }
+
+  /// True when a shortest path may go prev -> v -> next: it bends around v's own rectangle,
+  /// or goes straight on. Exact.
+  bool taut(Vec2 prev, std::int32_t v, Vec2 next) const;
 
   /// Candidate edges from an arbitrary point p (tangent at the vertex end only).
   void candidates_from_point(Vec2 p, std::vector<GraphEdge>& out) const;

@@ -1,0 +1,135 @@
+// Planner benchmark. Times are wall-clock medians over fresh planners; the traditional graph
+// is the baseline of every fast-planner figure on the same world, measured in the same run.
+#include "bench/planner_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "bench/bench_report.h"
+#include "planner/planner.h"
+#include "worlds/random_plant.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct FirstQuery {
+  double build_ms = 0, total_ms = 0;
+  planner::PlanResult result;
+};
+
+FirstQuery build_and_query(const std::string& name, const worlds::World& w, int reps) {
+  std::vector<double> build, total;
+  FirstQuery out;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = Clock::now();
+    auto p = planner::make_planner(name, planner::planner_input(w, false));
+    build.push_back(ms_since(t0));
+    out.result = p->plan(w.start.position(), w.charger.position());
+    total.push_back(ms_since(t0));
+  }
+  out.build_ms = median(build);
+  out.total_ms = median(total);
+  return out;
+}
+
+}  // namespace
+
+int run_planner_bench(const std::string& shared_data, bool quick) {
+  struct Named {
+    std::string name;
+    worlds::World world;
+    bool traditional;
+  };
+  std::vector<Named> worlds;
+  for (int n : {10, 50, 200, 1000}) {
+    std::string count = std::to_string(n);  // (built stepwise: GCC 12 warns falsely on "N" + ...)
+    worlds.push_back({std::string("N").append(count),
+                      worlds::load_world(shared_data + "/worlds/world_N" + count + ".json"),
+                      !quick || n <= 200});
+  }
+  worlds::RandomPlantOptions big;
+  big.rect_count = 5000;
+  big.seed = 6000;
+  // Five times N1000's floor, so that rectangles keep N1000's size and density.
+  big.width_m = 100.0 * std::sqrt(5.0);
+  big.height_m = 60.0 * std::sqrt(5.0);
+  worlds.push_back({"N5000", worlds::random_plant(big), false});
+
+  const int reps = quick ? 3 : 7;
+  std::optional<Measure> previous_first;
+  for (const Named& nw : worlds) {
+    const FirstQuery fast = build_and_query("vg", nw.world, reps);
+    std::optional<FirstQuery> trad;
+    if (nw.traditional) trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
+    auto base = [&](const std::string& metric, double v) -> std::optional<Measure> {
+      if (!trad) return std::nullopt;
+      return Measure{nw.name + "/vg-traditional/" + metric, v, "ms"};
+    };
+    report("planner", {nw.name + "/vg/build", fast.build_ms, "ms"}, base("build", trad ? trad->build_ms : 0));
+    const Measure first{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"};
+    // Without a traditional run (N5000), growth against the previous world size.
+    report("planner", first, trad ? base("build_plus_first_query", trad->total_ms) : previous_first);
+    previous_first = first;
+    report("planner", {nw.name + "/vg/vertices", static_cast<double>(fast.result.stats.vertices), "count"},
+           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/vertices",
+                                                 static_cast<double>(trad->result.stats.vertices), "count"})
+                : std::nullopt);
+    report("planner", {nw.name + "/vg/edges_tested_visible", static_cast<double>(fast.result.stats.edges), "count"},
+           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/edges",
+                                                 static_cast<double>(trad->result.stats.edges), "count"})
+                : std::nullopt);
+    report("planner", {nw.name + "/vg/segment_tests", static_cast<double>(fast.result.stats.segment_tests), "count"},
+           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/segment_tests",
+                                                 static_cast<double>(trad->result.stats.segment_tests), "count"})
+                : std::nullopt);
+    if (trad && std::abs(trad->result.length - fast.result.length) > 1e-9) {
+      std::cerr << "bench: length mismatch on " << nw.name << "\n";
+      return 1;
+    }
+
+    // Later queries on one planner: the same query again, then random pairs of free points.
+    auto p = planner::make_planner("vg", planner::planner_input(nw.world, false));
+    p->plan(nw.world.start.position(), nw.world.charger.position());
+    std::vector<double> again;
+    for (int r = 0; r < 20; ++r) {
+      const auto t0 = Clock::now();
+      p->plan(nw.world.start.position(), nw.world.charger.position());
+      again.push_back(ms_since(t0));
+    }
+    report("planner", {nw.name + "/vg/repeat_query", median(again), "ms"},
+           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
+    std::mt19937_64 rng(99);
+    std::uniform_real_distribution<double> ux(nw.world.floor.xmin, nw.world.floor.xmax),
+        uy(nw.world.floor.ymin, nw.world.floor.ymax);
+    std::vector<double> random_ms;
+    const int queries = quick ? 50 : 200;
+    while (static_cast<int>(random_ms.size()) < queries) {
+      const auto t0 = Clock::now();
+      const auto r = p->plan({ux(rng), uy(rng)}, {ux(rng), uy(rng)});
+      if (r.status == planner::PlanStatus::kOk) random_ms.push_back(ms_since(t0));
+    }
+    double mean = 0;
+    for (double v : random_ms) mean += v;
+    mean /= static_cast<double>(random_ms.size());
+    report("planner", {nw.name + "/vg/random_query_mean", mean, "ms"},
+           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
+  }
+  return 0;
+}
+
+}  // namespace plantsim::bench

@@ -1,0 +1,232 @@
+// The fast planner against a brute force, and on named degenerate scenes.
+// - Hundreds of random worlds, overlapping and touching rectangles included (half of them on a
+//   coarse lattice, where collinear corners, shared edges and corner contacts are common): the
+//   fast planner's length equals the traditional graph's (every corner, every visible pair,
+//   Dijkstra), and no returned segment enters an inflated interior.
+// - Fixture scenes of tests/fixtures with lengths worked out by hand, each also rotated by
+//   90, 180 and 270 degrees.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/predicates.h"
+#include "planner/inflation.h"
+#include "planner/planner.h"
+#include "test_paths.h"
+
+namespace plantsim::planner {
+namespace {
+
+using geom::Rect;
+using geom::Vec2;
+
+// Rotation by k quarter turns about the origin: exact in floating point.
+Vec2 rotate_quarter(Vec2 p, int k) {
+  for (int i = 0; i < k; ++i) p = {-p.y, p.x};
+  return p;
+}
+Rect rotate_quarter(const Rect& r, int k) {
+  const Vec2 a = rotate_quarter(Vec2{r.xmin, r.ymin}, k), b = rotate_quarter(Vec2{r.xmax, r.ymax}, k);
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
+// No segment of the path may enter the open interior of an inflated rectangle or leave the
+// floor's free part; checked directly against every rectangle, without the planner's grid.
+void expect_path_clear(const PlanResult& r, const PlannerInput& in, const std::string& what) {
+  const std::vector<Rect> inflated = inflate(in.obstacles, in.inflation_m, in.corner_steps);
+  const Rect free_floor = in.floor.inflated(-in.inflation_m);
+  for (std::size_t i = 1; i < r.path.size(); ++i) {
+    for (const Rect& o : inflated)
+      ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o)) << what << " segment " << i;
+    ASSERT_TRUE(geom::in_closed_rect(free_floor.inflated(1e-9), r.path[i])) << what;
+  }
+}
+
+struct Fixture {
+  std::string name;
+  PlannerInput input;
+  struct Query {
+    Vec2 start, goal;
+    double length;
+  };
+  std::vector<Query> queries;
+};
+
+std::vector<Fixture> load_fixtures() {
+  std::vector<Fixture> out;
+  for (const char* name : {"collinear_corners", "corner_touching", "start_goal_on_boundary", "zero_width_gap"}) {
+    std::ifstream f(test::source_file(std::string("tests/fixtures/") + name + ".json"));
+    const auto j = nlohmann::json::parse(f);
+    auto rect = [](const nlohmann::json& a) { return Rect{a[0], a[1], a[2], a[3]}; };
+    auto point = [](const nlohmann::json& a) { return Vec2{a[0], a[1]}; };
+    Fixture fx{name, {}, {}};
+    fx.input.floor = rect(j["floor"]);
+    fx.input.inflation_m = j["inflation"];
+    for (const auto& r : j["rects"]) fx.input.obstacles.push_back(rect(r));
+    for (const auto& q : j["queries"]) fx.queries.push_back({point(q["start"]), point(q["goal"]), q["length"]});
+    out.push_back(fx);
+    if (j.contains("inflated_case")) {
+      const auto& c = j["inflated_case"];
+      Fixture inf{std::string(name) + "_inflated", {}, {}};
+      inf.input.floor = fx.input.floor;
+      inf.input.inflation_m = c["inflation"];
+      for (const auto& r : c["rects"]) inf.input.obstacles.push_back(rect(r));
+      inf.queries.push_back({point(c["start"]), point(c["goal"]), c["length"]});
+      out.push_back(inf);
+    }
+  }
+  return out;
+}
+
+TEST(Fixtures, HandWorkedLengthsInFourRotations) {
+  for (const Fixture& fx : load_fixtures()) {
+    for (int k = 0; k < 4; ++k) {
+      PlannerInput in = fx.input;
+      in.floor = rotate_quarter(fx.input.floor, k);
+      for (Rect& r : in.obstacles) r = rotate_quarter(r, k);
+      for (const char* planner : {"vg", "vg-traditional"}) {
+        auto p = make_planner(planner, in);
+        for (const auto& q : fx.queries) {
+          const std::string what = fx.name + " rotated " + std::to_string(90 * k) + " by " + planner;
+          const PlanResult r = p->plan(rotate_quarter(q.start, k), rotate_quarter(q.goal, k));
+          ASSERT_EQ(r.status, PlanStatus::kOk) << what;
+          EXPECT_NEAR(r.length, q.length, 1e-8) << what;
+          expect_path_clear(r, in, what);
+        }
+      }
+    }
+  }
+}
+
+TEST(Fixtures, CornerTouchingPathNeverPassesThroughTheContactPoint) {
+  PlannerInput in;
+  in.floor = {0, 0, 8, 8};
+  in.inflation_m = 0;
+  in.obstacles = {{2, 2, 4, 4}, {4, 4, 6, 6}};
+  auto p = make_planner("vg", in);
+  const PlanResult r = p->plan({3, 5}, {5, 3});
+  for (std::size_t i = 1; i < r.path.size(); ++i) {
+    EXPECT_FALSE(geom::in_segment_interior(r.path[i - 1], r.path[i], {4, 4}));
+    EXPECT_FALSE(r.path[i] == (Vec2{4, 4}));
+  }
+}
+
+PlannerInput random_world(std::mt19937_64& rng, bool lattice) {
+  std::uniform_int_distribution<int> count(1, 30);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  PlannerInput in;
+  in.floor = {0, 0, 20, 14};
+  in.inflation_m = lattice ? 0.5 * std::uniform_int_distribution<int>(0, 1)(rng) : 0.4 * unit(rng);
+  const int n = count(rng);
+  for (int i = 0; i < n; ++i) {
+    double x0, y0, w, h;
+    if (lattice) {  // half-metre lattice: shared edges, collinear and touching corners
+      x0 = 0.5 * std::uniform_int_distribution<int>(0, 36)(rng);
+      y0 = 0.5 * std::uniform_int_distribution<int>(0, 24)(rng);
+      w = 0.5 * std::uniform_int_distribution<int>(1, 8)(rng);
+      h = 0.5 * std::uniform_int_distribution<int>(1, 8)(rng);
+    } else {
+      x0 = 18 * unit(rng);
+      y0 = 12 * unit(rng);
+      w = 0.2 + 4 * unit(rng);
+      h = 0.2 + 4 * unit(rng);
+    }
+    in.obstacles.push_back({x0, y0, x0 + w, y0 + h});
+  }
+  return in;
+}
+
+TEST(RandomWorlds, FastPlannerMatchesBruteForceAndStaysClear) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0);
+  int compared = 0, with_path = 0, no_path = 0;
+  for (int world = 0; world < 400; ++world) {
+    const bool lattice = world % 2 == 0;
+    const PlannerInput in = random_world(rng, lattice);
+    auto fast = make_planner("vg", in);
+    auto brute = make_planner("vg-traditional", in);
+    for (int q = 0; q < 5; ++q) {
+      Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
+      if (lattice && q % 2 == 0) {  // lattice endpoints land on edges and corners too
+        s = {0.5 * std::round(2 * s.x), 0.5 * std::round(2 * s.y)};
+        g = {0.5 * std::round(2 * g.x), 0.5 * std::round(2 * g.y)};
+      }
+      const PlanResult a = fast->plan(s, g), b = brute->plan(s, g);
+      const std::string what = "world " + std::to_string(world) + " query " + std::to_string(q);
+      ASSERT_EQ(a.status, b.status) << what;
+      ++compared;
+      if (a.status != PlanStatus::kOk) {
+        no_path += a.status == PlanStatus::kNoPath;
+        continue;
+      }
+      ++with_path;
+      ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << what;
+      expect_path_clear(a, in, what);
+    }
+  }
+  // The sample must exercise both outcomes to mean anything.
+  EXPECT_GT(with_path, 800);
+  EXPECT_GT(no_path, 5);
+  EXPECT_EQ(compared, 2000);
+}
+
+TEST(RandomWorlds, LaterQueriesOnAWarmGraphGiveTheSameAnswers) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0);
+  for (int world = 0; world < 40; ++world) {
+    const PlannerInput in = random_world(rng, world % 2 == 0);
+    auto warm = make_planner("vg", in);
+    std::vector<std::pair<Vec2, Vec2>> queries;
+    for (int q = 0; q < 20; ++q) queries.push_back({{ux(rng), uy(rng)}, {ux(rng), uy(rng)}});
+    for (int round = 0; round < 3; ++round) {  // resolved vertices appear from the second round
+      for (const auto& [s, g] : queries) {
+        auto fresh = make_planner("vg", in);
+        const PlanResult a = warm->plan(s, g), b = fresh->plan(s, g);
+        ASSERT_EQ(a.status, b.status);
+        if (a.status == PlanStatus::kOk) {
+          ASSERT_NEAR(a.length, b.length, 1e-12);
+        }
+      }
+    }
+  }
+}
+
+TEST(Inflation, SteppedCornersAreTighterThanSquareAndContainTheRoundedInflation) {
+  const std::vector<Rect> raw = {{0, 0, 2, 1}};
+  for (int steps : {2, 3, 6}) {
+    const auto rects = inflate(raw, 0.5, steps);
+    ASSERT_EQ(rects.size(), static_cast<std::size_t>(steps));
+    // Points at distance 0.5 from the corner (2, 1) in every direction of its quarter circle
+    // are covered (closed), and the square corner's tip (2.5, 1.5) is not.
+    for (int i = 0; i <= 90; ++i) {
+      const double a = M_PI / 180 * i;
+      const Vec2 p{2 + 0.5 * std::cos(a), 1 + 0.5 * std::sin(a)};
+      bool covered = false;
+      for (const Rect& r : rects) covered |= geom::in_closed_rect(r, p);
+      EXPECT_TRUE(covered) << steps << " steps, angle " << i;
+    }
+    bool tip = false;
+    for (const Rect& r : rects) tip |= geom::in_open_rect(r, {2.49, 1.49});
+    EXPECT_FALSE(tip) << steps;
+  }
+}
+
+TEST(Inflation, SteppedPathIsNoLongerThanSquare) {
+  PlannerInput in;
+  in.floor = {0, 0, 20, 10};
+  in.inflation_m = 0.5;
+  in.obstacles = {{5, 2, 7, 8}, {11, 0, 12, 6}, {14, 5, 16, 10}};
+  auto square = make_planner("vg", in);
+  in.corner_steps = 4;
+  auto stepped = make_planner("vg", in);
+  const auto a = square->plan({1, 5}, {19, 5}), b = stepped->plan({1, 5}, {19, 5});
+  ASSERT_EQ(b.status, PlanStatus::kOk);
+  EXPECT_LT(b.length, a.length);
+  expect_path_clear(b, in, "stepped");
+}
+
+}  // namespace
+}  // namespace plantsim::planner

@@ -1,0 +1,71 @@
+// Rejection sampling of rectangles, start and charger.
+#include "worlds/random_plant.h"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "worlds/charger_placement.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::worlds {
+
+World random_plant(const RandomPlantOptions& o) {
+  if (o.rect_count < 0 || !(o.width_m > 2 * o.min_gap_m + 2) || !(o.height_m > 2 * o.min_gap_m + 2) ||
+      !(o.coverage > 0 && o.coverage < 0.6) || !(o.min_gap_m >= 0))
+    throw std::invalid_argument("random plant: options out of range");
+  std::mt19937_64 rng(o.seed);
+  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  World w;
+  w.name = "random_n" + std::to_string(o.rect_count) + "_s" + std::to_string(o.seed);
+  w.source = w.name;
+  w.floor = {0, 0, o.width_m, o.height_m};
+  w.inflation_margin_m = 0.3 - w.robot.radius_m;
+  const double side = o.rect_count > 0 ? std::sqrt(o.width_m * o.height_m * o.coverage / o.rect_count) : 1.0;
+  const double g = o.min_gap_m;
+  long tries = 0;
+  while (static_cast<int>(w.obstacles.size()) < o.rect_count) {
+    if (++tries > 2000L * o.rect_count + 100000)
+      throw std::invalid_argument("random plant: could only place " + std::to_string(w.obstacles.size()) +
+                                  " of " + std::to_string(o.rect_count) + " rectangles");
+    const double rw = uniform(0.5 * side, 1.5 * side), rh = uniform(0.5 * side, 1.5 * side);
+    if (rw > o.width_m - 2 * g - 1 || rh > o.height_m - 2 * g - 1) continue;
+    const double x0 = uniform(g, o.width_m - g - rw), y0 = uniform(g, o.height_m - g - rh);
+    const Rect r{x0, y0, x0 + rw, y0 + rh};
+    bool ok = true;
+    if (!o.allow_overlap)
+      for (const Rect& q : w.obstacles)
+        if (!(r.xmin >= q.xmax + g || q.xmin >= r.xmax + g || r.ymin >= q.ymax + g || q.ymin >= r.ymax + g)) {
+          ok = false;
+          break;
+        }
+    if (ok) w.obstacles.push_back(r);
+  }
+  auto free_point = [&](double xlo, double xhi) {
+    for (int k = 0; k < 100000; ++k) {
+      const Vec2 p{uniform(xlo, xhi), uniform(1.0, o.height_m - 1.0)};
+      bool clear = true;
+      for (const Rect& q : w.obstacles)
+        if (q.xmin - 0.5 < p.x && p.x < q.xmax + 0.5 && q.ymin - 0.5 < p.y && p.y < q.ymax + 0.5) {
+          clear = false;
+          break;
+        }
+      if (clear) return p;
+    }
+    throw std::invalid_argument("random plant: no free point for the start or the charger");
+  };
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const Vec2 s = free_point(1.0, std::min(6.0, o.width_m / 4));
+    const Vec2 c = free_point(std::max(o.width_m - 6.0, 3 * o.width_m / 4), o.width_m - 1.0);
+    w.start = {s.x, s.y, std::atan2(c.y - s.y, c.x - s.x)};
+    const auto yaw = choose_docking_heading(w, c);
+    if (!yaw) continue;
+    w.charger = {c.x, c.y, *yaw};
+    validate_world(w);
+    return w;
+  }
+  throw std::invalid_argument("random plant: no charger position leaves room to dock");
+}
+
+}  // namespace plantsim::worlds

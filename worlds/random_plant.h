@@ -1,0 +1,28 @@
+// Random plant worlds in the manner of shared/data/worlds/gen_world.py: n axis-aligned
+// rectangles covering about `coverage` of the floor, any two at least `min_gap` apart (or,
+// with overlap allowed, placed freely so that they merge), start near the left wall and the
+// charger near the right one, both in free space. Deterministic for a given seed (its own
+// generator: the same rules as the Python script, not the same bytes).
+#pragma once
+
+#include <cstdint>
+
+#include "worlds/world.h"
+
+namespace plantsim::worlds {
+
+struct RandomPlantOptions {
+  int rect_count = 50;
+  std::uint64_t seed = 1;
+  double width_m = 100.0;
+  double height_m = 60.0;
+  double coverage = 0.12;     ///< fraction of the floor the rectangles cover (before overlap)
+  double min_gap_m = 0.7;     ///< between rectangles and to the walls, when not overlapping
+  bool allow_overlap = false; ///< place rectangles freely, so they may overlap and touch
+};
+
+/// Throws std::invalid_argument when the options are out of range or the rectangles cannot
+/// be placed.
+World random_plant(const RandomPlantOptions& options);
+
+}  // namespace plantsim::worlds
