@@ -1,14 +1,50 @@
 // `plantsim plan WORLD`: plan from the world's start to its charger and print JSON.
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 
 #include "app/commands.h"
 #include "planner/planner.h"
+#include "planner/grid_astar.h"
+#include "worlds/grid_map.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::app {
+namespace {
+
+// One line per scenario: "sx sy gx gy length" (-1 when there is no path). The visibility
+// graph answers any-angle queries between lattice points (cell corners, the Polyanya
+// convention); the grid planner answers octile queries between cell centres (MovingAI's).
+int plan_scenarios(const std::string& map_path, const std::string& scen_path, const std::string& planner_name) {
+  const worlds::GridMap map = worlds::load_movingai_map(map_path);
+  const auto scenarios = worlds::load_movingai_scenarios(scen_path);
+  std::unique_ptr<planner::Planner> vg;
+  if (planner_name != "grid") {
+    planner::PlannerInput in;
+    in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
+    in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
+    in.inflation_m = 0;
+    vg = planner::make_planner(planner_name, in);
+  }
+  for (const auto& s : scenarios) {
+    double length = -1;
+    if (vg) {
+      const auto r = vg->plan(worlds::lattice_point(map, s.sx, s.sy), worlds::lattice_point(map, s.gx, s.gy));
+      if (r.status == planner::PlanStatus::kOk) length = r.length;
+    } else {
+      const auto r = planner::grid_astar(
+          map.width, map.height, [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx,
+          s.sy, s.gx, s.gy);
+      if (r.found) length = r.length;
+    }
+    std::printf("%d %d %d %d %.9g\n", s.sx, s.sy, s.gx, s.gy, length);
+  }
+  return kExitOk;
+}
+
+}  // namespace
 
 std::function<int()> add_plan_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("plan", "Plan a path from the start to the charger; JSON on stdout");
@@ -16,17 +52,30 @@ std::function<int()> add_plan_command(CLI::App& app) {
     std::string world;
     std::string planner = "vg";
     double inflate = -1;
+    int corner_steps = 1;
+    std::string map, scen;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
+  auto* world_opt = cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)");
+  auto* map_opt = cmd->add_option("--map", opt->map, "MovingAI .map file (with --scen)");
+  auto* scen_opt = cmd->add_option("--scen", opt->scen, "MovingAI .scen file: one output line per query");
+  map_opt->needs(scen_opt);
+  scen_opt->needs(map_opt);
+  world_opt->excludes(map_opt);
+  cmd->add_option("--corner-steps", opt->corner_steps,
+                  "Corner inflation: 1 square (the document), more for a tighter staircase")
+      ->check(CLI::Range(1, 16));
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--inflate", opt->inflate,
                   "Inflation in metres (default: robot radius + the world's margin)")
       ->check(CLI::NonNegativeNumber);
   return [opt]() {
+    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner);
+    if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);
+    input.corner_steps = opt->corner_steps;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     auto p = planner::make_planner(opt->planner, input);
     const planner::PlanResult r = p->plan(world.start.position(), world.charger.position());

@@ -42,6 +42,7 @@ struct PlannerInput {
   std::vector<Rect> obstacles;  ///< raw (not yet inflated)
   double inflation_m = 0.3;     ///< applied to obstacles and walls
   int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
+  double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

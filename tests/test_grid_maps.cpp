@@ -1,0 +1,123 @@
+// Grid maps: the any-angle arena against Polyanya's reference lengths, the grid A* baseline
+// against MovingAI's optimal octile lengths, merging of blocked cells, and bad map files.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "planner/grid_astar.h"
+#include "planner/planner.h"
+#include "test_paths.h"
+#include "worlds/grid_map.h"
+#include "worlds/world_error.h"
+
+namespace plantsim {
+namespace {
+
+std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map) {
+  planner::PlannerInput in;
+  in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
+  in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
+  in.inflation_m = 0;
+  return planner::make_planner("vg", in);
+}
+
+TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
+  const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
+  auto vg = anyangle_planner(map);
+  std::ifstream ref(test::shared_data("anyangle/arena_anyangle_ref.tsv"));
+  std::string header;
+  std::getline(ref, header);
+  int sx, sy, gx, gy, checked = 0;
+  double expected, octile;
+  while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
+    const auto r = vg->plan(worlds::lattice_point(map, sx, sy), worlds::lattice_point(map, gx, gy));
+    ASSERT_EQ(r.status, planner::PlanStatus::kOk) << sx << " " << sy << " " << gx << " " << gy;
+    EXPECT_LE(std::fabs(r.length - expected), 5e-6 * expected + 1e-5)
+        << sx << " " << sy << " -> " << gx << " " << gy << ": " << r.length << " vs " << expected;
+    EXPECT_LE(r.length, octile + 5e-6 * octile + 1e-5);  // never longer than octile (printed rounded)
+    ++checked;
+  }
+  EXPECT_EQ(checked, 160);
+}
+
+TEST(GridBaseline, ReproducesMovingAIOctileLengthsOnEveryTenthScenario) {
+  int checked = 0;
+  for (const char* name : {"arena", "den009d", "den101d", "den201d", "den204d"}) {
+    const auto map = worlds::load_movingai_map(test::shared_data(std::string("movingai/maps/") + name + ".map"));
+    const auto scen = worlds::load_movingai_scenarios(test::shared_data(std::string("movingai/scen/") + name + ".map.scen"));
+    ASSERT_FALSE(scen.empty()) << name;
+    for (std::size_t i = 0; i < scen.size(); i += 10) {
+      const auto& s = scen[i];
+      ASSERT_EQ(s.map_width, map.width);
+      const auto r = planner::grid_astar(
+          map.width, map.height, [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx,
+          s.sy, s.gx, s.gy);
+      ASSERT_TRUE(r.found) << name << " line " << i;
+      // The scenario files print lengths rounded to 5 or 6 significant digits.
+      EXPECT_NEAR(r.length, s.optimal, 1e-4 * std::max(1.0, s.optimal / 100)) << name << " line " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 80);
+}
+
+TEST(GridBaseline, NoCornerCutting) {
+  // . #      From (0,0) to (1,1) the diagonal squeezes past the blocked corner: refused,
+  // # .      and with both orthogonal cells blocked there is no path at all.
+  const std::vector<char> cells = {'.', '@', '@', '.'};
+  auto free = [&](int x, int y) { return cells[y * 2 + x] == '.'; };
+  EXPECT_FALSE(planner::grid_astar(2, 2, free, 0, 0, 1, 1).found);
+  const std::vector<char> open = {'.', '.', '@', '.'};
+  auto free2 = [&](int x, int y) { return open[y * 2 + x] == '.'; };
+  const auto r = planner::grid_astar(2, 2, free2, 0, 0, 1, 1);
+  ASSERT_TRUE(r.found);
+  EXPECT_DOUBLE_EQ(r.length, 2.0);
+}
+
+TEST(GridMaps, MergedRectanglesCoverExactlyTheBlockedCells) {
+  const auto map = worlds::load_movingai_map(test::shared_data("movingai/maps/den101d.map"));
+  const auto rects = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
+  int blocked = 0;
+  for (char c : map.cells) blocked += worlds::blocked_for_anyangle(c);
+  double area = 0;
+  for (const auto& r : rects) area += r.width() * r.height();
+  EXPECT_DOUBLE_EQ(area, blocked);  // disjoint by construction, so areas add up
+  EXPECT_LT(rects.size() * 3, static_cast<std::size_t>(blocked));  // real merging happened
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      const geom::Vec2 centre{x + 0.5, map.height - y - 0.5};
+      bool covered = false;
+      for (const auto& r : rects) covered |= r.xmin < centre.x && centre.x < r.xmax && r.ymin < centre.y && centre.y < r.ymax;
+      ASSERT_EQ(covered, worlds::blocked_for_anyangle(map.at(x, y))) << x << "," << y;
+    }
+}
+
+TEST(GridMaps, BadFilesNameTheFileAndTheField) {
+  const auto dir = std::filesystem::temp_directory_path() / ("plantsim_maps_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& text) {
+    const auto p = (dir / name).string();
+    std::ofstream(p) << text;
+    return p;
+  };
+  auto expect = [](const std::string& path, const std::string& needle) {
+    try {
+      worlds::load_movingai_map(path);
+      FAIL() << path;
+    } catch (const worlds::WorldError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+  };
+  expect(write("short.map", "type octile\nheight 3\nwidth 2\nmap\n..\n..\n"), "row 2");
+  expect(write("wide.map", "type octile\nheight 1\nwidth 2\nmap\n...\n"), "has 3 cells");
+  expect(write("nohead.map", "height 1\n"), "type");
+  expect(dir.string(), "cannot be opened");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace plantsim
