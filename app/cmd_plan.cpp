@@ -53,6 +53,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     std::string planner = "vg";
     double inflate = -1;
     int corner_steps = 1;
+    bool snap = false;
     std::string map, scen;
   };
   auto opt = std::make_shared<Options>();
@@ -65,6 +66,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
   cmd->add_option("--corner-steps", opt->corner_steps,
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
       ->check(CLI::Range(1, 16));
+  cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--inflate", opt->inflate,
@@ -76,6 +78,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);
     input.corner_steps = opt->corner_steps;
+    input.snap_to_free = opt->snap;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     auto p = planner::make_planner(opt->planner, input);
     const planner::PlanResult r = p->plan(world.start.position(), world.charger.position());
@@ -83,6 +86,8 @@ std::function<int()> add_plan_command(CLI::App& app) {
     out["status"] = std::string(planner::to_string(r.status));
     out["planner"] = p->name();
     out["length"] = r.length;
+    out["start_snapped"] = r.start_snapped;
+    out["goal_snapped"] = r.goal_snapped;
     auto path = nlohmann::json::array();
     for (const auto& v : r.path) path.push_back({v.x, v.y});
     out["path"] = path;

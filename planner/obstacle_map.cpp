@@ -93,6 +93,11 @@ void ObstacleMap::find_pinch_points() {
         .pinches.push_back(static_cast<std::int32_t>(k));
 }
 
+bool ObstacleMap::is_pinch_point(Vec2 c) const {
+  return std::binary_search(pinches_.begin(), pinches_.end(), c,
+                            [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
+}
+
 bool ObstacleMap::sandwiched(Vec2 p, Vec2 q) const {
   // Only an axis-parallel segment can run between two rectangles along a shared edge.
   const bool horizontal = p.y == q.y, vertical = p.x == q.x;

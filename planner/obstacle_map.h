@@ -30,7 +30,8 @@ class ObstacleMap {
 
   const std::vector<Rect>& rects() const { return rects_; }  ///< obstacles then walls
   std::size_t obstacle_count() const { return obstacle_count_; }
-  const std::vector<Vec2>& pinch_points() const { return pinches_; }
+  const std::vector<Vec2>& pinch_points() const { return pinches_; }  ///< sorted by (x, y)
+  bool is_pinch_point(Vec2 c) const;
   const Rect& free_floor() const { return free_floor_; }
 
   /// True when rectangles other than `self` fill the open quadrant (sx, sy) at c.

@@ -34,6 +34,8 @@ struct PlanResult {
   std::vector<Vec2> path;      ///< start .. goal, empty unless status is kOk
   double length = 0;           ///< metres, sum of segment lengths
   PlanStats stats;
+  bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start
+  bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
@@ -43,6 +45,7 @@ struct PlannerInput {
   double inflation_m = 0.3;     ///< applied to obstacles and walls
   int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
+  bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "planner/astar.h"
+#include "planner/free_point.h"
 #include "planner/inflation.h"
 
 namespace plantsim::planner {
@@ -17,15 +18,26 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Shared pre-checks; returns false and fills `out` when the query cannot proceed.
-bool endpoints_usable(const ObstacleMap& map, Vec2 start, Vec2 goal, PlanResult& out) {
+// Shared pre-checks; returns false and fills `out` when the query cannot proceed. With
+// snapping on, a blocked end moves to the nearest free point and the result says so.
+bool endpoints_usable(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal, PlanResult& out) {
   if (!map.point_free(start)) {
-    out.status = PlanStatus::kStartBlocked;
-    return false;
+    const auto moved = snap ? nearest_free_point(map, start) : std::nullopt;
+    if (!moved) {
+      out.status = PlanStatus::kStartBlocked;
+      return false;
+    }
+    start = *moved;
+    out.start_snapped = true;
   }
   if (!map.point_free(goal)) {
-    out.status = PlanStatus::kGoalBlocked;
-    return false;
+    const auto moved = snap ? nearest_free_point(map, goal) : std::nullopt;
+    if (!moved) {
+      out.status = PlanStatus::kGoalBlocked;
+      return false;
+    }
+    goal = *moved;
+    out.goal_snapped = true;
   }
   return true;
 }
@@ -50,14 +62,15 @@ void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanR
 VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
     : build_start_(std::chrono::steady_clock::now()),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
-      graph_(map_) {
+      graph_(map_),
+      snap_(input.snap_to_free) {
   build_ms_ = ms_since(build_start_);
 }
 
 PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
-  if (endpoints_usable(map_, start, goal, out)) {
+  if (endpoints_usable(map_, snap_, start, goal, out)) {
     const SearchResult found = lazy_astar(start, goal);
     const auto& vertices = graph_.vertices();
     std::vector<Vec2> points;
@@ -153,7 +166,8 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
 }
 
 TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)
-    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m) {
+    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      snap_(input.snap_to_free) {
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < map_.obstacle_count(); ++i) {
     const Rect& r = map_.rects()[i];
@@ -161,9 +175,7 @@ TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& i
                    Vec2{r.xmin, r.ymax}})
       // A pinch point is never a bend of a valid path: both its edges would have to lie in
       // one free quadrant (no shortcut needed), or cross between the two (not allowed).
-      if (map_.point_free(c) && !std::binary_search(map_.pinch_points().begin(), map_.pinch_points().end(), c,
-                                                    [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); }))
-        corners_.push_back(c);
+      if (map_.point_free(c) && !map_.is_pinch_point(c)) corners_.push_back(c);
   }
   adjacency_.resize(corners_.size());
   for (std::size_t a = 0; a < corners_.size(); ++a)
@@ -181,7 +193,7 @@ TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& i
 PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
-  if (endpoints_usable(map_, start, goal, out)) {
+  if (endpoints_usable(map_, snap_, start, goal, out)) {
     const auto n = static_cast<std::int32_t>(corners_.size());
     const std::int32_t s = n, g = n + 1;
     std::vector<Vec2> points = corners_;

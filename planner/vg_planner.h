@@ -27,6 +27,7 @@ class VisibilityGraphPlanner : public Planner {
   ObstacleMap map_;
   VisibilityGraph graph_;
   mutable std::vector<std::uint16_t> expansions_;  // how often each vertex was expanded (max 2)
+  bool snap_ = false;
   double build_ms_ = 0;
 };
 
@@ -44,6 +45,7 @@ class TraditionalVisibilityPlanner : public Planner {
   std::vector<std::vector<GraphEdge>> adjacency_;
   std::int64_t edges_ = 0;
   std::int64_t segment_tests_ = 0;
+  bool snap_ = false;
   double build_ms_ = 0;
 };
 

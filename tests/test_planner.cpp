@@ -97,3 +97,40 @@ TEST(PlannerRegistry, UnknownNameThrows) {
 
 }  // namespace
 }  // namespace plantsim::planner
+
+namespace plantsim::planner {
+namespace {
+
+TEST(PlannerSnap, BlockedEndsMoveToTheNearestFreePointAndSaySo) {
+  PlannerInput in = box_world();  // inflated box [3.5, 6.5]^2 in a 10 x 10 floor, walls at 0.5
+  in.snap_to_free = true;
+  for (const char* name : {"vg", "vg-traditional"}) {
+    auto p = make_planner(name, in);
+    const auto r = p->plan({5.0, 6.0}, {9, 9});  // start inside: nearest free point (5, 6.5)
+    ASSERT_EQ(r.status, PlanStatus::kOk) << name;
+    EXPECT_TRUE(r.start_snapped);
+    EXPECT_FALSE(r.goal_snapped);  // (9, 9) is free: walls inflated to 9.5
+    EXPECT_EQ(r.path.front(), (Vec2{5.0, 6.5}));
+    const auto off = p->plan({1, 1}, {12, 5});  // goal off the floor: clamped to (9.5, 5)
+    ASSERT_EQ(off.status, PlanStatus::kOk);
+    EXPECT_TRUE(off.goal_snapped);
+    EXPECT_EQ(off.path.back(), (Vec2{9.5, 5}));
+  }
+  in.snap_to_free = false;
+  EXPECT_EQ(make_planner("vg", in)->plan({5.0, 6.0}, {9, 9}).status, PlanStatus::kStartBlocked);
+}
+
+TEST(PlannerSnap, DeepInsideMergedObstaclesFindsTheConcaveCornerSide) {
+  PlannerInput in;
+  in.floor = {0, 0, 20, 20};
+  in.inflation_m = 0;
+  in.obstacles = {{5, 5, 15, 8}, {5, 8, 8, 15}};  // an L; (7.5, 9) lies inside its upright arm
+  in.snap_to_free = true;
+  auto p = make_planner("vg", in);
+  const auto r = p->plan({7.5, 9}, {1, 1});  // nearest boundary: x = 8 at distance 0.5
+  ASSERT_EQ(r.status, PlanStatus::kOk);
+  EXPECT_EQ(r.path.front(), (Vec2{8, 9}));
+}
+
+}  // namespace
+}  // namespace plantsim::planner
