@@ -20,25 +20,33 @@ std::string_view to_string(DockPhase p) {
 
 DockingController::DockingController(PurePursuitParams tracking, DockingParams docking,
                                      std::vector<Vec2> path, Pose2 charger_on_map)
-    : tracker_(tracking, std::move(path)), params_(docking), dock_(charger_on_map) {}
+    : tracker_(tracking, std::move(path)), params_(docking), dock_map_(charger_on_map), dock_odom_(charger_on_map) {}
 
-Vec2 DockingController::in_dock_frame(Vec2 p) const { return to_robot_frame(dock_, p); }
+Vec2 DockingController::in_dock_frame(Vec2 p) const { return to_robot_frame(dock_odom_, p); }
+
+void DockingController::replace_path(std::vector<Vec2> path) {
+  if (phase_ == DockPhase::kTravel) tracker_ = PurePursuit(tracker_.params(), std::move(path));
+}
 
 void DockingController::miss() {
-  ++retries_;
-  phase_ = retries_ > params_.max_retries ? DockPhase::kFailed : DockPhase::kBackOff;
+  // Always back away from the charger first; after the last allowed retry, fail there.
+  if (retries_ >= params_.max_retries) giving_up_ = true;
+  else ++retries_;
+  phase_ = DockPhase::kBackOff;
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {
-  if (in.charger_in_robot) {
+  if (!dock_placed_) {
+    // Until the staging pose, keep the map's charger expressed in the current odometry frame.
+    dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
+  }
+  if (in.charger_in_robot && dock_placed_) {
     // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
-    const Vec2 offset = geom::rotate(in.charger_in_robot->position(), in.pose.yaw);
-    const Pose2 seen{in.pose.x + offset.x, in.pose.y + offset.y,
-                     geom::wrap_angle(in.pose.yaw + in.charger_in_robot->yaw)};
+    const Pose2 seen = geom::compose(in.odom_pose, *in.charger_in_robot);
     const double a = params_.detection_blend;
-    dock_.x += a * (seen.x - dock_.x);
-    dock_.y += a * (seen.y - dock_.y);
-    dock_.yaw = geom::wrap_angle(dock_.yaw + a * geom::wrap_angle(seen.yaw - dock_.yaw));
+    dock_odom_.x += a * (seen.x - dock_odom_.x);
+    dock_odom_.y += a * (seen.y - dock_odom_.y);
+    dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
   }
   DockingCommand out;
   switch (phase_) {
@@ -48,14 +56,16 @@ DockingCommand DockingController::step(const DockingInput& in) {
       out.twist = t.twist;
       if (t.goal_reached) {
         phase_ = DockPhase::kAlign;
+        dock_placed_ = true;
         out.twist = {};
       }
       break;
     }
     case DockPhase::kAlign: {
-      const double err = geom::wrap_angle(dock_.yaw - in.pose.yaw);
+      const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
       if (std::fabs(err) <= params_.align_tolerance_rad) {
         phase_ = DockPhase::kApproach;
+        approach_time_s_ = 0;
       } else {
         out.twist = {0.0, std::clamp(2.0 * err, -params_.align_speed_radps, params_.align_speed_radps)};
       }
@@ -65,12 +75,12 @@ DockingCommand DockingController::step(const DockingInput& in) {
       out = approach(in);
       break;
     case DockPhase::kBackOff: {
-      const Vec2 rel = in_dock_frame(in.pose.position());
+      const Vec2 rel = in_dock_frame(in.odom_pose.position());
       if (rel.x <= -params_.staging_distance_m) {
-        phase_ = DockPhase::kAlign;
+        phase_ = giving_up_ ? DockPhase::kFailed : DockPhase::kAlign;
       } else {
         // Reverse straight out, holding the axis heading; the next approach corrects offsets.
-        const double heading_err = geom::wrap_angle(dock_.yaw - in.pose.yaw);
+        const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
         out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
       }
       break;
@@ -93,16 +103,17 @@ DockingCommand DockingController::approach(const DockingInput& in) {
     }
     return out;
   }
-  const Vec2 rel = in_dock_frame(in.pose.position());
-  if (rel.x > params_.overshoot_limit_m) {
+  const Vec2 rel = in_dock_frame(in.odom_pose.position());
+  approach_time_s_ += in.dt_s;
+  if (rel.x > params_.overshoot_limit_m || approach_time_s_ > params_.approach_timeout_s) {
     miss();
     return out;
   }
   // Pure pursuit onto the approach axis; the carrot may lie beyond the dock point (inside
   // the charger), which keeps the steering gentle right up to contact.
   const Vec2 carrot_dock{rel.x + params_.approach_lookahead_m, 0.0};
-  const Vec2 carrot = dock_.position() + geom::rotate(carrot_dock, dock_.yaw);
-  const Vec2 c = to_robot_frame(in.pose, carrot);
+  const Vec2 carrot = dock_odom_.position() + geom::rotate(carrot_dock, dock_odom_.yaw);
+  const Vec2 c = to_robot_frame(in.odom_pose, carrot);
   const double d2 = geom::dot(c, c);
   const double curvature = 2.0 * c.y / d2;
   const double v = params_.approach_speed_mps;

@@ -1,8 +1,10 @@
 // The docking manoeuvre as a state machine: travel along the planned path to the staging
 // pose, turn onto the charger's approach axis, approach slowly while steering onto the axis,
 // and on contact either report docked (the charger says it is charging) or back off to the
-// staging pose and retry. The dock target is the map's charger pose until the charger is
-// detected; detections re-anchor it in the odometry frame, which removes odometry drift.
+// staging pose and retry. Travel follows the plan in the map frame (localised pose); from the
+// staging pose on, everything happens in the odometry frame, which never jumps: the dock is
+// placed there from the map once, then re-anchored by every charger detection, which removes
+// localisation error and odometry drift from the final approach.
 #pragma once
 
 #include <optional>
@@ -26,12 +28,15 @@ struct DockingParams {
   double overshoot_limit_m = 0.05;      ///< passing the dock this far without contact = miss
   int max_retries = 3;
   double detection_blend = 0.3;         ///< weight of each new detection in the dock estimate
+  double approach_timeout_s = 40.0;     ///< an approach lasting longer counts as a miss
 };
 
 /// What the robot knows at one control step.
 struct DockingInput {
-  Pose2 pose;                      ///< estimated (odometry) pose
+  Pose2 pose;                      ///< estimated pose in the map frame (localisation)
+  Pose2 odom_pose;                 ///< pose in the continuous odometry frame
   double speed_mps = 0;            ///< estimated forward speed
+  double dt_s = 0;                 ///< control period
   bool charger_contact = false;    ///< contacts touch the charger
   bool charging = false;           ///< the charger reports a good connection
   std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
@@ -52,7 +57,10 @@ class DockingController {
 
   DockPhase phase() const { return phase_; }
   int retries() const { return retries_; }
-  const Pose2& dock_estimate() const { return dock_; }
+  /// The docked pose as the controller currently believes it, in the odometry frame.
+  const Pose2& dock_estimate() const { return dock_odom_; }
+  /// Replaces the path still to travel (after a replan); only while travelling.
+  void replace_path(std::vector<Vec2> path);
 
  private:
   DockingCommand approach(const DockingInput& in);
@@ -61,9 +69,13 @@ class DockingController {
 
   PurePursuit tracker_;
   DockingParams params_;
-  Pose2 dock_;  // docked pose in the odometry frame
+  Pose2 dock_map_;   // the charger on the map
+  Pose2 dock_odom_;  // the same in the odometry frame, refined by detections
+  bool dock_placed_ = false;
   DockPhase phase_ = DockPhase::kTravel;
   int retries_ = 0;
+  bool giving_up_ = false;  // the last back-off before failing
+  double approach_time_s_ = 0;
 };
 
 }  // namespace plantsim::controller

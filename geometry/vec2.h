@@ -44,6 +44,16 @@ struct Pose2 {
   Vec2 heading() const { return unit_from_angle(yaw); }
 };
 
+/// Rigid transforms as poses (the pose of a child frame in its parent): a then b.
+inline Pose2 compose(const Pose2& a, const Pose2& b) {
+  const Vec2 p = a.position() + rotate(b.position(), a.yaw);
+  return {p.x, p.y, wrap_angle(a.yaw + b.yaw)};
+}
+inline Pose2 inverse(const Pose2& a) {
+  const Vec2 p = rotate(Vec2{-a.x, -a.y}, -a.yaw);
+  return {p.x, p.y, wrap_angle(-a.yaw)};
+}
+
 /// Closed axis-aligned rectangle [xmin, xmax] x [ymin, ymax].
 struct Rect {
   double xmin = 0.0;

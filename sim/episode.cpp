@@ -56,6 +56,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   PhysicsWorld physics(world);
   WheelDrive drive(world.robot, config.drive);
   Odometry odometry(world.start, world.robot.wheel_base_m, config.odometry, config.seed);
+  Localization localization(config.localization, config.seed);
   ChargerDetector detector(config.detection, config.seed);
   controller::DockingParams docking = config.docking;
   docking.staging_distance_m = world.charger_spec.staging_distance_m;
@@ -82,15 +83,19 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     }
     if (!contact.charger) contact_measured = false;
 
+    localization.update(k * dt, odometry.pose(), truth);
+    const Pose2 estimate = localization.map_pose(odometry.pose());
     controller::DockingInput in;
-    in.pose = odometry.pose();
+    in.pose = estimate;
+    in.odom_pose = odometry.pose();
     in.speed_mps = odometry.speed_mps();
+    in.dt_s = dt;
     in.charger_contact = contact.charger;
     in.charging = charging;
     in.charger_in_robot = detector.observe(truth, world.charger);
     const controller::DockingCommand cmd = control.step(in);
     result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
-    result.trajectory.push_back({k * dt, truth, odometry.pose(),
+    result.trajectory.push_back({k * dt, truth, estimate,
                                  geom::dot(physics.robot_velocity(), truth.heading()),
                                  cmd.cross_track_error_m, cmd.phase});
     result.time_s = k * dt;

@@ -10,6 +10,7 @@
 
 #include "controller/docking.h"
 #include "planner/planner.h"
+#include "sim/localization.h"
 #include "sim/odometry.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"
@@ -33,6 +34,7 @@ struct EpisodeConfig {
   StepSettings step;
   DriveParams drive;
   OdometryNoise odometry;
+  LocalizationParams localization;
   DetectionParams detection;
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
@@ -44,7 +46,7 @@ struct EpisodeConfig {
 struct TrajectorySample {
   double t_s;
   Pose2 truth;
-  Pose2 estimate;
+  Pose2 estimate;  ///< map frame (localised)
   double speed_mps;
   double cross_track_m;
   controller::DockPhase phase;

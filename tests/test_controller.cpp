@@ -94,22 +94,55 @@ TEST(PurePursuit, DoesNotOvershootTheEnd) {
   EXPECT_GE(r.end.x, 3.0 - 0.03);
 }
 
+DockingInput at(Pose2 p, bool contact = false, bool charging = false) {
+  DockingInput in;
+  in.pose = p;  // map and odometry frames agree here
+  in.odom_pose = p;
+  in.charger_contact = contact;
+  in.charging = charging;
+  in.dt_s = 0.02;
+  return in;
+}
+
 TEST(Docking, ContactWhileChargingIsDockedContactWithoutIsAMissAndBacksOff) {
-  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{3, 0, 0});
-  DockingInput at_staging{Pose2{1, 0, 0}, 0, false, false, std::nullopt};
-  EXPECT_EQ(dc.step(at_staging).phase, DockPhase::kAlign);   // path end reached
-  EXPECT_EQ(dc.step(at_staging).phase, DockPhase::kApproach); // already aligned
-  DockingInput bad_contact{Pose2{3, 0.05, 0}, 0.08, true, false, std::nullopt};
-  const DockingCommand miss = dc.step(bad_contact);
+  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);     // path end reached
+  EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kApproach);  // already aligned
+  const DockingCommand miss = dc.step(at({2, 0.05, 0}, true, false));
   EXPECT_EQ(miss.phase, DockPhase::kBackOff);
   EXPECT_EQ(dc.retries(), 1);
-  const DockingCommand back = dc.step({Pose2{2.9, 0.05, 0}, 0, false, false, std::nullopt});
-  EXPECT_LT(back.twist.v_mps, 0);  // reverses away from the charger
-  dc.step({Pose2{2.0, 0.0, 0}, 0, false, false, std::nullopt});  // at staging again: align
-  dc.step({Pose2{2.0, 0.0, 0}, 0, false, false, std::nullopt});  // approach
-  const DockingCommand ok = dc.step({Pose2{3, 0.0, 0}, 0.08, true, true, std::nullopt});
+  EXPECT_LT(dc.step(at({1.9, 0.05, 0})).twist.v_mps, 0);  // reverses away from the charger
+  EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kAlign);  // back at staging
+  dc.step(at({1.0, 0.0, 0}));                                        // approach
+  const DockingCommand ok = dc.step(at({2, 0.0, 0}, true, true));
   EXPECT_EQ(ok.phase, DockPhase::kDocked);
   EXPECT_EQ(ok.twist.v_mps, 0.0);
+}
+
+TEST(Docking, AfterTheLastRetryItBacksOffBeforeFailing) {
+  DockingParams p;
+  p.max_retries = 1;
+  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  dc.step(at({1, 0, 0}));
+  dc.step(at({1, 0, 0}));
+  EXPECT_EQ(dc.step(at({2, 0.05, 0}, true, false)).phase, DockPhase::kBackOff);  // retry 1
+  EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kAlign);
+  dc.step(at({1.0, 0.0, 0}));
+  EXPECT_EQ(dc.step(at({2, 0.05, 0}, true, false)).phase, DockPhase::kBackOff);  // no retries left
+  EXPECT_LT(dc.step(at({1.95, 0.05, 0})).twist.v_mps, 0);  // still backs away, not pressed on
+  EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kFailed);
+  EXPECT_EQ(dc.retries(), 1);
+}
+
+TEST(Docking, DetectionsReanchorTheDockInTheOdometryFrame) {
+  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  dc.step(at({1, 0, 0}));  // staging reached: dock placed from the map
+  // The charger is really 3 cm to the left of where the map says: detections show it.
+  DockingInput in = at({1, 0, 0});
+  in.charger_in_robot = Pose2{1.0, 0.03, 0.0};
+  for (int i = 0; i < 60; ++i) dc.step(in);
+  EXPECT_NEAR(dc.dock_estimate().y, 0.03, 1e-6);
+  EXPECT_NEAR(dc.dock_estimate().x, 2.0, 1e-6);
 }
 
 }  // namespace

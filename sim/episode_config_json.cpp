@@ -1,0 +1,175 @@
+// A table of every parameter, read and written by the same entries.
+#include "sim/episode_config_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "worlds/world_error.h"
+
+namespace plantsim::sim {
+namespace {
+
+using nlohmann::json;
+
+struct Field {
+  const char* section;
+  const char* name;
+  std::function<double&(EpisodeConfig&)> ref;
+  bool integer = false;
+  bool boolean = false;
+};
+
+#define PS_FIELD(section, member, name) Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }}
+
+const std::vector<Field>& fields() {
+  static const std::vector<Field> table = {
+      PS_FIELD("step", step.dt_s, "dt_s"),
+      PS_FIELD("drive", drive.tyre_friction, "tyre_friction"),
+      PS_FIELD("odometry", odometry.wheel_speed_noise, "wheel_speed_noise"),
+      PS_FIELD("odometry", odometry.left_scale_error, "left_scale_error"),
+      PS_FIELD("odometry", odometry.right_scale_error, "right_scale_error"),
+      PS_FIELD("localization", localization.period_s, "period_s"),
+      PS_FIELD("localization", localization.position_noise_m, "position_noise_m"),
+      PS_FIELD("localization", localization.yaw_noise_rad, "yaw_noise_rad"),
+      PS_FIELD("detection", detection.range_m, "range_m"),
+      PS_FIELD("detection", detection.field_of_view_rad, "field_of_view_rad"),
+      PS_FIELD("detection", detection.position_noise_m, "position_noise_m"),
+      PS_FIELD("detection", detection.yaw_noise_rad, "yaw_noise_rad"),
+      PS_FIELD("tracking", tracking.lookahead_min_m, "lookahead_min_m"),
+      PS_FIELD("tracking", tracking.lookahead_max_m, "lookahead_max_m"),
+      PS_FIELD("tracking", tracking.lookahead_time_s, "lookahead_time_s"),
+      PS_FIELD("tracking", tracking.max_linear_speed_mps, "max_linear_speed_mps"),
+      PS_FIELD("tracking", tracking.max_angular_speed_radps, "max_angular_speed_radps"),
+      PS_FIELD("tracking", tracking.min_approach_speed_mps, "min_approach_speed_mps"),
+      PS_FIELD("tracking", tracking.approach_slowdown_distance_m, "approach_slowdown_distance_m"),
+      PS_FIELD("tracking", tracking.regulated_min_radius_m, "regulated_min_radius_m"),
+      PS_FIELD("tracking", tracking.rotate_in_place_threshold_rad, "rotate_in_place_threshold_rad"),
+      PS_FIELD("tracking", tracking.rotate_in_place_speed_radps, "rotate_in_place_speed_radps"),
+      PS_FIELD("tracking", tracking.goal_tolerance_m, "goal_tolerance_m"),
+      PS_FIELD("tracking", tracking.progress_window_m, "progress_window_m"),
+      PS_FIELD("docking", docking.approach_speed_mps, "approach_speed_mps"),
+      PS_FIELD("docking", docking.approach_lookahead_m, "approach_lookahead_m"),
+      PS_FIELD("docking", docking.align_tolerance_rad, "align_tolerance_rad"),
+      PS_FIELD("docking", docking.align_speed_radps, "align_speed_radps"),
+      PS_FIELD("docking", docking.backoff_speed_mps, "backoff_speed_mps"),
+      PS_FIELD("docking", docking.overshoot_limit_m, "overshoot_limit_m"),
+      PS_FIELD("docking", docking.detection_blend, "detection_blend"),
+      PS_FIELD("docking", docking.approach_timeout_s, "approach_timeout_s"),
+      PS_FIELD("tolerance", tolerance.position_m, "position_m"),
+      PS_FIELD("tolerance", tolerance.heading_rad, "heading_rad"),
+      PS_FIELD("", timeout_s, "timeout_s"),
+  };
+  return table;
+}
+#undef PS_FIELD
+
+// Integer and boolean parameters, kept apart from the double table.
+struct IntField {
+  const char* section;
+  const char* name;
+  std::function<int&(EpisodeConfig&)> ref;
+};
+const std::vector<IntField>& int_fields() {
+  static const std::vector<IntField> table = {
+      {"step", "velocity_iterations", [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
+      {"step", "position_iterations", [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
+      {"drive", "solver_iterations", [](EpisodeConfig& c) -> int& { return c.drive.solver_iterations; }},
+      {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
+  };
+  return table;
+}
+
+std::string path_of(const char* section, const std::string& name) {
+  return std::string(section).empty() ? name : std::string(section) + "." + name;
+}
+
+}  // namespace
+
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source, EpisodeConfig c) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    throw worlds::WorldError(source, "", std::string("malformed JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
+  std::set<std::string> known;
+  auto lookup = [&](const char* section, const char* name) -> const json* {
+    known.insert(path_of(section, name));
+    const json* obj = &doc;
+    if (std::string(section).size()) {
+      auto it = doc.find(section);
+      if (it == doc.end()) return nullptr;
+      if (!it->is_object()) throw worlds::WorldError(source, section, "expected an object");
+      obj = &*it;
+    }
+    auto it = obj->find(name);
+    return it == obj->end() ? nullptr : &*it;
+  };
+  for (const Field& f : fields()) {
+    const json* v = lookup(f.section, f.name);
+    if (!v) continue;
+    if (!v->is_number()) throw worlds::WorldError(source, path_of(f.section, f.name), "expected a number");
+    const double d = v->get<double>();
+    const bool may_be_negative = std::string(f.name).find("scale_error") != std::string::npos;
+    if (!std::isfinite(d) || (d < 0 && !may_be_negative))
+      throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite and not negative");
+    f.ref(c) = d;
+  }
+  for (const IntField& f : int_fields()) {
+    const json* v = lookup(f.section, f.name);
+    if (!v) continue;
+    if (!v->is_number_integer() || v->get<long>() < 0 || v->get<long>() > 1000)
+      throw worlds::WorldError(source, path_of(f.section, f.name), "expected a whole number from 0 to 1000");
+    f.ref(c) = v->get<int>();
+  }
+  if (const json* v = lookup("detection", "enabled")) {
+    if (!v->is_boolean()) throw worlds::WorldError(source, "detection.enabled", "expected true or false");
+    c.detection.enabled = v->get<bool>();
+  }
+  if (const json* v = lookup("", "seed")) {
+    if (!v->is_number_unsigned()) throw worlds::WorldError(source, "seed", "expected a whole number");
+    c.seed = v->get<std::uint64_t>();
+  }
+  for (const auto& [key, value] : doc.items()) {
+    if (value.is_object()) {
+      for (const auto& [sub, _] : value.items())
+        if (!known.count(key + "." + sub)) throw worlds::WorldError(source, key + "." + sub, "unknown parameter");
+    } else if (!known.count(key) && key != "comment") {
+      throw worlds::WorldError(source, key, "unknown parameter");
+    }
+  }
+  if (c.step.dt_s <= 0 || c.step.dt_s > 0.1) throw worlds::WorldError(source, "step.dt_s", "must be in (0, 0.1]");
+  if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
+    throw worlds::WorldError(source, "tracking.lookahead_min_m", "must not exceed lookahead_max_m");
+  return c;
+}
+
+EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
+  std::ifstream f(path);
+  if (!f || std::filesystem::is_directory(path)) throw worlds::WorldError(path, "", "cannot be opened for reading");
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return parse_episode_config(ss.str(), path, base);
+}
+
+std::string default_config_json() {
+  EpisodeConfig c;
+  nlohmann::ordered_json j;
+  for (const Field& f : fields()) {
+    if (std::string(f.section).empty()) j[f.name] = f.ref(c);
+    else j[f.section][f.name] = f.ref(c);
+  }
+  for (const IntField& f : int_fields()) j[f.section][f.name] = f.ref(c);
+  j["detection"]["enabled"] = c.detection.enabled;
+  j["seed"] = c.seed;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace plantsim::sim

@@ -1,0 +1,35 @@
+// Where the robot believes it is on the map: continuous wheel odometry (which drifts) and,
+// optionally, periodic absolute fixes with noise, as a scan-matching or AMCL-like localiser
+// would give. The fixes move the map-from-odometry transform, as in ROS (map -> odom ->
+// base_link), so the odometry frame itself never jumps: docking works in it.
+#pragma once
+
+#include <random>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::sim {
+
+struct LocalizationParams {
+  double period_s = 0.0;          ///< seconds between fixes; 0 = no fixes (odometry only)
+  double position_noise_m = 0.0;  ///< std-dev per axis of each fix
+  double yaw_noise_rad = 0.0;     ///< std-dev of each fix's heading
+};
+
+class Localization {
+ public:
+  Localization(LocalizationParams params, std::uint64_t seed);
+  /// Called every step with the time, the odometry pose and the ground truth (for the fix).
+  void update(double t_s, const geom::Pose2& odom, const geom::Pose2& truth);
+  geom::Pose2 map_pose(const geom::Pose2& odom) const { return geom::compose(map_from_odom_, odom); }
+  const geom::Pose2& map_from_odom() const { return map_from_odom_; }
+
+ private:
+  LocalizationParams params_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> gauss_{0.0, 1.0};
+  geom::Pose2 map_from_odom_;
+  double next_fix_s_ = 0.0;
+};
+
+}  // namespace plantsim::sim
