@@ -8,6 +8,7 @@
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
 #include "render/run_figure.h"
+#include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/world_loader.h"
 
@@ -35,7 +36,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::uint64_t seed = 1;
     std::string start;
     std::string charger;
-    std::string command_line;
+    std::string config;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
@@ -45,6 +46,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--seed", opt->seed, "Random seed for noise");
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
   cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
+  cmd->add_option("--config", opt->config, "Controller, drive and sensing parameters (JSON, see docs/config.md)");
   return [opt, cmd]() {
     worlds::World world = worlds::load_world(opt->world);
     if (!opt->start.empty()) world.start = parse_pose(opt->start, "--start");
@@ -57,7 +59,7 @@ std::function<int()> add_run_command(CLI::App& app) {
       throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
 
     auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
-    sim::EpisodeConfig config;
+    sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     config.seed = opt->seed;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
@@ -70,7 +72,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     render::write_run_figure(world, r, out_dir + "/run.png");
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
-              << ", retries " << r.retries << ", time " << r.time_s << " s -> " << out_dir << "\n";
+              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << out_dir << "\n";
     return r.docked ? kExitOk : kExitFailed;
   };
 }

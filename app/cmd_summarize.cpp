@@ -59,3 +59,17 @@ std::function<int()> add_summarize_command(CLI::App& app) {
 }
 
 }  // namespace plantsim::app
+
+#include "sim/episode_config_json.h"
+
+namespace plantsim::app {
+
+std::function<int()> add_config_command(CLI::App& app) {
+  app.add_subcommand("config", "Print every episode parameter with its default, as a --config file");
+  return []() {
+    std::cout << sim::default_config_json();
+    return kExitOk;
+  };
+}
+
+}  // namespace plantsim::app

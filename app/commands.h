@@ -17,5 +17,6 @@ std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
 std::function<int()> add_summarize_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
+std::function<int()> add_config_command(CLI::App& app);
 
 }  // namespace plantsim::app

@@ -19,6 +19,8 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   j["heading_error_deg"] = r.heading_error_deg;
   j["collisions"] = r.collisions;
   j["retries"] = r.retries;
+  j["stops"] = r.stops;
+  j["replans"] = r.replans;
   j["time_s"] = r.time_s;
   j["path_length_m"] = r.path_length_m;
   j["driven_length_m"] = r.driven_length_m;

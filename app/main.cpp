@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_run_command(app));
   remember(plantsim::app::add_summarize_command(app));
   remember(plantsim::app::add_bench_command(app));
+  remember(plantsim::app::add_config_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "controller/collision_check.h"
+
 namespace plantsim::controller {
 
 std::string_view to_string(DockPhase p) {
@@ -54,6 +56,27 @@ DockingCommand DockingController::step(const DockingInput& in) {
       const TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
       out.cross_track_error_m = t.cross_track_error_m;
       out.twist = t.twist;
+      // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
+      const double v = std::max(std::fabs(t.twist.v_mps), std::fabs(in.speed_mps));
+      const double ahead = v * v / (2.0 * params_.max_decel_mps2) + params_.check_extra_m;
+      // Slow (starting or slowing) robots take longer to get there: never assume less than
+      // a walking pace's worth of time for the obstacles to move.
+      const double travel_speed = std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
+      if (!arc_clear(in.pose, t.twist, travel_speed, ahead, params_.footprint_radius_m + params_.safety_margin_m,
+                     in.nearby_obstacles)) {
+        if (!was_blocked_) ++stops_;
+        was_blocked_ = true;
+        out.twist = {};
+        out.blocked = true;
+        blocked_time_s_ += in.dt_s;
+        if (blocked_time_s_ >= params_.replan_after_s) {
+          out.replan_requested = true;
+          blocked_time_s_ = 0;
+        }
+        break;
+      }
+      blocked_time_s_ = 0;
+      was_blocked_ = false;
       if (t.goal_reached) {
         phase_ = DockPhase::kAlign;
         dock_placed_ = true;

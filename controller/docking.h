@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "controller/collision_check.h"
 #include "controller/pure_pursuit.h"
 
 namespace plantsim::controller {
@@ -29,6 +30,12 @@ struct DockingParams {
   int max_retries = 3;
   double detection_blend = 0.3;         ///< weight of each new detection in the dock estimate
   double approach_timeout_s = 40.0;     ///< an approach lasting longer counts as a miss
+  // Moving obstacles met while travelling.
+  double footprint_radius_m = 0.2;      ///< robot disk, for the arc check (set from the world)
+  double safety_margin_m = 0.15;        ///< extra clearance the arc must keep
+  double max_decel_mps2 = 1.0;          ///< braking, to size the arc checked ahead
+  double check_extra_m = 0.4;           ///< checked beyond the braking distance
+  double replan_after_s = 3.0;          ///< blocked this long: ask for a new plan
 };
 
 /// What the robot knows at one control step.
@@ -40,12 +47,15 @@ struct DockingInput {
   bool charger_contact = false;    ///< contacts touch the charger
   bool charging = false;           ///< the charger reports a good connection
   std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
+  std::vector<MovingBox> nearby_obstacles;  ///< sensed moving obstacles, map frame
 };
 
 struct DockingCommand {
   Twist twist;
   DockPhase phase = DockPhase::kTravel;
   double cross_track_error_m = 0;  ///< while travelling
+  bool blocked = false;            ///< stopped because the arc ahead is not clear
+  bool replan_requested = false;   ///< blocked long enough: plan again around what is seen
 };
 
 class DockingController {
@@ -57,6 +67,7 @@ class DockingController {
 
   DockPhase phase() const { return phase_; }
   int retries() const { return retries_; }
+  int stops() const { return stops_; }
   /// The docked pose as the controller currently believes it, in the odometry frame.
   const Pose2& dock_estimate() const { return dock_odom_; }
   /// Replaces the path still to travel (after a replan); only while travelling.
@@ -76,6 +87,9 @@ class DockingController {
   int retries_ = 0;
   bool giving_up_ = false;  // the last back-off before failing
   double approach_time_s_ = 0;
+  double blocked_time_s_ = 0;
+  bool was_blocked_ = false;
+  int stops_ = 0;
 };
 
 }  // namespace plantsim::controller

@@ -16,5 +16,6 @@ inline constexpr Rgb kTrajectory{215, 25, 35};
 inline constexpr Rgb kCharger{20, 150, 60};
 inline constexpr Rgb kStart{245, 160, 0};
 inline constexpr Rgb kRobot{20, 20, 20};
+inline constexpr Rgb kMoving{150, 60, 170};
 
 }  // namespace plantsim::render::palette

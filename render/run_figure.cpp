@@ -32,6 +32,13 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const geom::Pose2 staging = worlds::staging_pose(world);
   canvas.polyline({staging.position(), cb.center}, 1.5, palette::kCharger);
 
+  // Moving obstacles: their scripted route, and where they were at the end.
+  const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
+  for (const auto& m : world.moving) {
+    if (m.waypoints.size() > 1) canvas.polyline(m.waypoints, 1.0, palette::kMoving);
+    canvas.fill_rect(m.box_at(t_end), palette::kMoving);
+  }
+
   canvas.polyline(run.plan, 2.0, palette::kPlan);
   std::vector<geom::Vec2> driven;
   driven.reserve(run.trajectory.size());

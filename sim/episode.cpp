@@ -4,6 +4,8 @@
 #include <cmath>
 #include <random>
 
+#include "controller/collision_check.h"
+
 namespace plantsim::sim {
 namespace {
 
@@ -38,6 +40,27 @@ class ChargerDetector {
   std::normal_distribution<double> gauss_{0.0, 1.0};
 };
 
+// Moving obstacles within range, as boxes in the map frame: what a lidar sees relative to the
+// robot, placed with the robot's own (possibly wrong) pose estimate.
+// Velocities come from the change over the last step, as a tracker would estimate them.
+std::vector<controller::MovingBox> sense_moving(const worlds::World& w, double t, double dt, const Pose2& truth,
+                                                const Pose2& estimate, double range_m) {
+  std::vector<controller::MovingBox> out;
+  const Pose2 estimate_from_truth = geom::compose(estimate, geom::inverse(truth));
+  for (const auto& m : w.moving) {
+    const geom::Rect b = m.box_at(t);
+    if (controller::distance_to_box(truth.position(), b) > range_m) continue;
+    geom::Rect seen{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (Vec2 c : {Vec2{b.xmin, b.ymin}, Vec2{b.xmax, b.ymin}, Vec2{b.xmax, b.ymax}, Vec2{b.xmin, b.ymax}}) {
+      const Vec2 q = geom::compose(estimate_from_truth, Pose2{c.x, c.y, 0}).position();
+      seen = {std::min(seen.xmin, q.x), std::min(seen.ymin, q.y), std::max(seen.xmax, q.x), std::max(seen.ymax, q.y)};
+    }
+    const Vec2 velocity = geom::rotate((1.0 / dt) * (m.position_at(t) - m.position_at(t - dt)), estimate_from_truth.yaw);
+    out.push_back({seen, velocity});
+  }
+  return out;
+}
+
 }  // namespace
 
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
@@ -60,6 +83,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   ChargerDetector detector(config.detection, config.seed);
   controller::DockingParams docking = config.docking;
   docking.staging_distance_m = world.charger_spec.staging_distance_m;
+  docking.footprint_radius_m = world.robot.radius_m;
   controller::DockingController control(config.tracking, docking, plan.path, world.charger);
 
   const double dt = config.step.dt_s;
@@ -93,7 +117,23 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     in.charger_contact = contact.charger;
     in.charging = charging;
     in.charger_in_robot = detector.observe(truth, world.charger);
+    if (!world.moving.empty()) in.nearby_obstacles = sense_moving(world, k * dt, dt, truth, estimate, config.perception.range_m);
     const controller::DockingCommand cmd = control.step(in);
+    if (cmd.replan_requested) {
+      // Plan again with what blocks the way as extra obstacles; start from the nearest free
+      // point if the robot stands inside their margin.
+      planner::PlannerInput again = planner::planner_input(world, true);
+      for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box);
+      again.snap_to_free = true;
+      const planner::PlanResult re = planner::make_planner(planner.name(), again)->plan(estimate.position(), staging.position());
+      if (re.status == planner::PlanStatus::kOk) {
+        std::vector<Vec2> path = re.path;
+        if (re.start_snapped) path.insert(path.begin(), estimate.position());
+        control.replace_path(path);
+        result.plan = path;  // the figure shows the plan finally followed
+        ++result.replans;
+      }
+    }
     result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
     result.trajectory.push_back({k * dt, truth, estimate,
                                  geom::dot(physics.robot_velocity(), truth.heading()),
@@ -110,7 +150,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     }
     drive.command(controller::to_wheels(cmd.twist, world.robot.wheel_base_m), dt);
     drive.apply(physics, dt);
-    physics.step(config.step);
+    physics.step(config.step, k * dt);
     odometry.update(drive.motor_speeds(), dt);
     const Pose2 now = physics.robot_pose();
     result.driven_length_m += geom::distance(previous.position(), now.position());
@@ -122,6 +162,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
   }
   result.retries = control.retries();
+  result.stops = control.stops();
   return result;
 }
 

@@ -25,6 +25,10 @@ struct DetectionParams {
   double yaw_noise_rad = 0.0;
 };
 
+struct PerceptionParams {
+  double range_m = 4.0;  ///< moving obstacles closer than this (box to robot centre) are seen
+};
+
 struct DockTolerance {
   double position_m = 0.02;
   double heading_rad = 2.0 * M_PI / 180.0;
@@ -36,6 +40,7 @@ struct EpisodeConfig {
   OdometryNoise odometry;
   LocalizationParams localization;
   DetectionParams detection;
+  PerceptionParams perception;
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
   DockTolerance tolerance;
@@ -59,6 +64,8 @@ struct EpisodeResult {
   double heading_error_deg = 0;
   int collisions = 0;            ///< separate contacts with obstacles or walls
   int retries = 0;
+  int stops = 0;                 ///< times the robot stopped for a moving obstacle
+  int replans = 0;               ///< new plans made around what blocked the way
   double time_s = 0;
   double path_length_m = 0;      ///< planned, start to staging pose
   double driven_length_m = 0;    ///< ground truth
@@ -68,6 +75,8 @@ struct EpisodeResult {
   std::vector<TrajectorySample> trajectory;
 };
 
+/// `planner` plans the initial path; replans build fresh planners of the same name with the
+/// sensed obstacles added.
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                           const EpisodeConfig& config);
 

@@ -8,7 +8,7 @@
 namespace plantsim::sim {
 namespace {
 
-enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4 };
+enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4, kMoving = 5 };
 
 void add_box(b2Body* body, const geom::Rect& r, FixtureTag tag) {
   b2PolygonShape box;
@@ -53,6 +53,21 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
   plate_fd.userData.pointer = kCharger;
   charger->CreateFixture(&plate_fd);
 
+  for (const worlds::MovingObstacle& m : w.moving) {
+    b2BodyDef def;
+    def.type = b2_kinematicBody;
+    const geom::Vec2 p = m.position_at(0.0);
+    def.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
+    b2Body* body = world_->CreateBody(&def);
+    b2PolygonShape box;
+    box.SetAsBox(static_cast<float>(0.5 * m.width_m), static_cast<float>(0.5 * m.height_m));
+    b2FixtureDef fd;
+    fd.shape = &box;
+    fd.userData.pointer = kMoving;
+    body->CreateFixture(&fd);
+    moving_.emplace_back(body, m);
+  }
+
   b2BodyDef robot_def;
   robot_def.type = b2_dynamicBody;
   robot_def.position.Set(static_cast<float>(w.start.x), static_cast<float>(w.start.y));
@@ -71,7 +86,13 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
 
 PhysicsWorld::~PhysicsWorld() = default;
 
-void PhysicsWorld::step(const StepSettings& s) {
+void PhysicsWorld::step(const StepSettings& s, double t_s) {
+  for (auto& [body, m] : moving_) {
+    const geom::Vec2 next = m.position_at(t_s + s.dt_s);
+    const b2Vec2 now = body->GetPosition();
+    body->SetLinearVelocity(b2Vec2(static_cast<float>((next.x - now.x) / s.dt_s),
+                                   static_cast<float>((next.y - now.y) / s.dt_s)));
+  }
   world_->Step(static_cast<float>(s.dt_s), s.velocity_iterations, s.position_iterations);
 }
 
@@ -97,7 +118,7 @@ ContactState PhysicsWorld::contacts() const {
     b2Fixture* b = e->contact->GetFixtureB();
     const FixtureTag other = tag_of(a) == kRobot ? tag_of(b) : tag_of(a);
     if (other == kCharger) s.charger = true;
-    if (other == kObstacle || other == kWall) s.obstacle = true;
+    if (other == kObstacle || other == kWall || other == kMoving) s.obstacle = true;
   }
   return s;
 }

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "geometry/vec2.h"
 #include "worlds/world.h"
@@ -25,7 +27,7 @@ struct StepSettings {
 
 struct ContactState {
   bool charger = false;   ///< robot touches the charger body
-  bool obstacle = false;  ///< robot touches an obstacle or a wall
+  bool obstacle = false;  ///< robot touches an obstacle, a wall or a moving obstacle
 };
 
 class PhysicsWorld {
@@ -35,7 +37,9 @@ class PhysicsWorld {
   PhysicsWorld(const PhysicsWorld&) = delete;
   PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-  void step(const StepSettings& s);
+  /// Moves the scripted obstacles to their positions at t + dt (through their velocity, so
+  /// that Box2D sees them move) and advances the world by one fixed step.
+  void step(const StepSettings& s, double t_s);
 
   Pose2 robot_pose() const;
   Vec2 robot_velocity() const;          ///< world frame, m/s
@@ -49,6 +53,7 @@ class PhysicsWorld {
  private:
   std::unique_ptr<b2World> world_;
   b2Body* robot_ = nullptr;
+  std::vector<std::pair<b2Body*, worlds::MovingObstacle>> moving_;
 };
 
 }  // namespace plantsim::sim

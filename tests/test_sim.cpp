@@ -69,7 +69,7 @@ TEST(WheelDrive, OppositeWheelSpeedsTurnInPlace) {
   for (int k = 0; k < 120; ++k) {
     drive.command({-0.2, 0.2}, s.dt_s);
     drive.apply(physics, s.dt_s);
-    physics.step(s);
+    physics.step(s, k * s.dt_s);
   }
   const Pose2 p = physics.robot_pose();
   EXPECT_NEAR(p.x, 5.0, 1e-3);
@@ -85,11 +85,58 @@ TEST(WheelDrive, EqualWheelSpeedsDriveStraightAtThatSpeed) {
   for (int k = 0; k < 120; ++k) {
     drive.command({0.5, 0.5}, s.dt_s);
     drive.apply(physics, s.dt_s);
-    physics.step(s);
+    physics.step(s, k * s.dt_s);
   }
   EXPECT_NEAR(physics.robot_velocity().x, 0.5, 0.01);
   EXPECT_NEAR(physics.robot_pose().y, 5.0, 1e-4);
   EXPECT_NEAR(physics.robot_pose().yaw, 0.0, 1e-4);
+}
+
+}  // namespace
+}  // namespace plantsim::sim
+
+namespace plantsim::sim {
+namespace {
+
+TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json"));
+  ASSERT_EQ(world.moving.size(), 1u);
+  const EpisodeResult r = dock(world);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_GE(r.stops, 1);
+  EXPECT_EQ(r.collisions, 0);
+  // Without the arc check the same robot drives into the person.
+  worlds::World blind = world;
+  auto p = planner::make_planner("vg", planner::planner_input(blind, true));
+  EpisodeConfig config;
+  config.perception.range_m = 0;  // senses nothing
+  const EpisodeResult hit = run_episode(blind, *p, config);
+  EXPECT_GT(hit.collisions, 0);
+}
+
+TEST(MovingObstacles, AParkedCartForcesAReplanAndTheRobotStillDocks) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/parked_cart.json"));
+  const EpisodeResult r = dock(world);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_GE(r.stops, 1);
+  EXPECT_GE(r.replans, 1);
+  EXPECT_EQ(r.collisions, 0);
+  // The route finally followed goes over the block (y > 8), not under it.
+  double highest = 0;
+  for (const auto& s : r.trajectory) highest = std::max(highest, s.truth.y);
+  EXPECT_GT(highest, 8.0);
+}
+
+TEST(MovingObstacles, ScriptedMotionIsAFunctionOfTime) {
+  worlds::MovingObstacle m;
+  m.waypoints = {{0, 0}, {2, 0}};
+  m.speed_mps = 1.0;
+  m.start_time_s = 1.0;
+  EXPECT_EQ(m.position_at(0.5).x, 0.0);   // waiting
+  EXPECT_DOUBLE_EQ(m.position_at(2.0).x, 1.0);
+  EXPECT_DOUBLE_EQ(m.position_at(9.0).x, 2.0);  // parked at the end
+  m.loop = true;
+  EXPECT_DOUBLE_EQ(m.position_at(4.0).x, 1.0);  // on the way back
 }
 
 }  // namespace

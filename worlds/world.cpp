@@ -6,6 +6,31 @@
 
 namespace plantsim::worlds {
 
+Vec2 MovingObstacle::position_at(double t_s) const {
+  if (waypoints.size() < 2 || speed_mps <= 0 || t_s <= start_time_s) return waypoints.front();
+  double total = 0;
+  for (std::size_t i = 1; i < waypoints.size(); ++i) total += geom::distance(waypoints[i - 1], waypoints[i]);
+  if (total <= 0) return waypoints.front();
+  double s = (t_s - start_time_s) * speed_mps;
+  if (loop) {
+    s = std::fmod(s, 2 * total);
+    if (s > total) s = 2 * total - s;  // on the way back
+  } else if (s >= total) {
+    return waypoints.back();
+  }
+  for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    const double seg = geom::distance(waypoints[i - 1], waypoints[i]);
+    if (s <= seg && seg > 0) return waypoints[i - 1] + (s / seg) * (waypoints[i] - waypoints[i - 1]);
+    s -= seg;
+  }
+  return waypoints.back();
+}
+
+Rect MovingObstacle::box_at(double t_s) const {
+  const Vec2 c = position_at(t_s);
+  return {c.x - 0.5 * width_m, c.y - 0.5 * height_m, c.x + 0.5 * width_m, c.y + 0.5 * height_m};
+}
+
 Rect ChargerBody::bounding_box() const {
   const double c = std::fabs(std::cos(yaw)), s = std::fabs(std::sin(yaw));
   const double ex = c * half_depth_m + s * half_width_m;

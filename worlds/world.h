@@ -32,6 +32,22 @@ struct ChargerSpec {
   double staging_distance_m = 1.0;  ///< staging pose this far behind the docked pose
 };
 
+/// A box moving on a scripted path at constant speed (a person, a cart, a vehicle): it waits
+/// at its first waypoint until start_time_s, then follows the waypoints; with `loop` it goes
+/// back and forth forever, otherwise it stays (parks) at the last one.
+struct MovingObstacle {
+  std::string name;
+  double width_m = 0.5;
+  double height_m = 0.5;
+  std::vector<Vec2> waypoints;  ///< positions of the box centre
+  double speed_mps = 0.0;
+  double start_time_s = 0.0;
+  bool loop = false;
+
+  Vec2 position_at(double t_s) const;
+  Rect box_at(double t_s) const;
+};
+
 struct World {
   std::string name;               ///< short name for reports
   std::string source;             ///< file it was loaded from, for messages
@@ -42,6 +58,7 @@ struct World {
   Pose2 start;                    ///< robot start pose
   Pose2 charger;                  ///< robot pose when docked (yaw faces the charger)
   double inflation_margin_m = 0.1;  ///< planning clearance beyond the robot radius
+  std::vector<MovingObstacle> moving;  ///< not known to the planner; met on the way
 
   /// Total inflation the planner applies to obstacles and walls.
   double planning_inflation_m() const { return robot.radius_m + inflation_margin_m; }

@@ -130,6 +130,33 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
     w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger");
   w.inflation_margin_m = in.number_or(doc, "inflation_margin_m", "", w.inflation_margin_m);
   if (w.inflation_margin_m < 0) in.fail("inflation_margin_m", "must not be negative");
+  if (doc.contains("moving_obstacles")) {
+    const json& list = doc["moving_obstacles"];
+    if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = "moving_obstacles[" + std::to_string(i) + "]";
+      const json& m = list[i];
+      MovingObstacle mo;
+      mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
+      const json& size = in.member(m, "size_m", path);
+      const Vec2 wh = in.point_array(size, path + ".size_m");
+      if (wh.x <= 0 || wh.y <= 0) in.fail(path + ".size_m", "must be positive");
+      mo.width_m = wh.x;
+      mo.height_m = wh.y;
+      const json& wps = in.member(m, "waypoints", path);
+      if (!wps.is_array() || wps.empty()) in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
+      for (std::size_t k = 0; k < wps.size(); ++k)
+        mo.waypoints.push_back(in.point_array(wps[k], path + ".waypoints[" + std::to_string(k) + "]"));
+      mo.speed_mps = in.number_or(m, "speed_mps", path, 0.0);
+      if (mo.speed_mps < 0) in.fail(path + ".speed_mps", "must not be negative");
+      mo.start_time_s = in.number_or(m, "start_time_s", path, 0.0);
+      if (m.contains("loop")) {
+        if (!m["loop"].is_boolean()) in.fail(path + ".loop", "expected true or false");
+        mo.loop = m["loop"].get<bool>();
+      }
+      w.moving.push_back(mo);
+    }
+  }
   return w;
 }
 

@@ -1,0 +1,41 @@
+// Arc sampling against boxes.
+#include "controller/collision_check.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plantsim::controller {
+
+double distance_to_box(geom::Vec2 p, const geom::Rect& r) {
+  const double dx = std::max({r.xmin - p.x, 0.0, p.x - r.xmax});
+  const double dy = std::max({r.ymin - p.y, 0.0, p.y - r.ymax});
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
+               const std::vector<MovingBox>& boxes, double horizon_s, double step_m) {
+  if (boxes.empty()) return true;
+  const double direction = twist.v_mps >= 0 ? 1.0 : -1.0;
+  const double curvature = std::fabs(twist.v_mps) > 1e-9 ? twist.omega_radps / twist.v_mps : 0.0;
+  const int samples = std::fabs(twist.v_mps) > 1e-9 ? static_cast<int>(std::ceil(distance_m / step_m)) : 0;
+  for (int i = 0; i <= samples; ++i) {
+    const double s = direction * i * step_m;  // signed arc length
+    geom::Vec2 p;
+    if (std::fabs(curvature) < 1e-9) {
+      p = pose.position() + s * pose.heading();
+    } else {
+      const double dtheta = s * curvature;
+      p = pose.position() + (1.0 / curvature) * geom::Vec2{std::sin(pose.yaw + dtheta) - std::sin(pose.yaw),
+                                                          -std::cos(pose.yaw + dtheta) + std::cos(pose.yaw)};
+    }
+    const double t = std::min(horizon_s, travel_speed_mps > 0 ? std::fabs(s) / travel_speed_mps : 0.0);
+    for (const MovingBox& b : boxes) {
+      const geom::Vec2 d = t * b.velocity;
+      const geom::Rect moved{b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x, b.box.ymax + d.y};
+      if (distance_to_box(p, moved) < radius_m) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace plantsim::controller

@@ -1,0 +1,30 @@
+// Will the commanded motion hit something? The arc the robot would drive under a constant
+// twist is sampled ahead over a given distance, and at each sample the disk footprint (plus a
+// margin) is tested against every sensed box moved on by its velocity to the time the robot
+// would be there. Pure geometry, no physics.
+#pragma once
+
+#include <vector>
+
+#include "controller/diff_drive.h"
+#include "geometry/vec2.h"
+
+namespace plantsim::controller {
+
+/// Distance from point p to the closed box r (0 inside).
+double distance_to_box(geom::Vec2 p, const geom::Rect& r);
+
+/// A sensed obstacle: its box now and its velocity (map frame).
+struct MovingBox {
+  geom::Rect box;
+  geom::Vec2 velocity;
+};
+
+/// True when the disk of `radius_m` stays clear of every box along the arc of `twist` from
+/// `pose` over `distance_m` of travel (sampled every `step_m`), the robot reaching each sample
+/// at `travel_speed_mps` and each box moving on at its velocity (for at most `horizon_s`).
+/// A twist with no forward motion checks the current position only.
+bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
+               const std::vector<MovingBox>& boxes, double horizon_s = 3.0, double step_m = 0.05);
+
+}  // namespace plantsim::controller
