@@ -38,10 +38,6 @@ void DockingController::miss() {
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {
-  if (!dock_placed_) {
-    // Until the staging pose, keep the map's charger expressed in the current odometry frame.
-    dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
-  }
   if (in.charger_in_robot && dock_placed_) {
     // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
     const Pose2 seen = geom::compose(in.odom_pose, *in.charger_in_robot);
@@ -78,6 +74,8 @@ DockingCommand DockingController::step(const DockingInput& in) {
       blocked_time_s_ = 0;
       was_blocked_ = false;
       if (t.goal_reached) {
+        // At the staging pose the map's charger is placed in the odometry frame, once.
+        dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
         phase_ = DockPhase::kAlign;
         dock_placed_ = true;
         out.twist = {};

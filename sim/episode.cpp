@@ -25,8 +25,9 @@ class ChargerDetector {
   ChargerDetector(DetectionParams p, std::uint64_t seed) : p_(p), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
   std::optional<Pose2> observe(const Pose2& truth, const Pose2& dock) {
     if (!p_.enabled) return std::nullopt;
-    const Vec2 rel = geom::rotate(dock.position() - truth.position(), -truth.yaw);
-    if (geom::norm(rel) > p_.range_m) return std::nullopt;
+    const Vec2 d = dock.position() - truth.position();
+    if (geom::dot(d, d) > p_.range_m * p_.range_m) return std::nullopt;
+    const Vec2 rel = geom::rotate(d, -truth.yaw);
     // The marker sits on the charger, ahead of the docked pose: look for it there.
     const Vec2 marker = rel + geom::rotate(Vec2{1.0, 0.0}, dock.yaw - truth.yaw);
     if (std::fabs(std::atan2(marker.y, marker.x)) > 0.5 * p_.field_of_view_rad) return std::nullopt;
@@ -90,70 +91,88 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
   bool was_touching_obstacle = false;
   bool contact_measured = false;
-  Pose2 previous = physics.robot_pose();
+  Vec2 previous = physics.robot_position();
   result.status = "timeout";
+  // Physics, tyres, odometry and contacts run every step; sensing, control and logging run
+  // every control period, seeing the contacts latched since the last one.
+  const int period = std::max(1, config.control_period_steps);
+  const double control_dt = period * dt;
+  controller::DockingCommand cmd;
+  bool charger_contact = false, charging = false;
+  result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   for (std::int64_t k = 0; k <= max_steps; ++k) {
-    const Pose2 truth = physics.robot_pose();
     const ContactState contact = physics.contacts();
     if (contact.obstacle && !was_touching_obstacle) ++result.collisions;
     was_touching_obstacle = contact.obstacle;
-    const DockError err = dock_error(truth, world.charger);
-    const bool charging = contact.charger && err.position_m <= config.tolerance.position_m &&
-                          err.heading_rad <= config.tolerance.heading_rad;
-    if (contact.charger && !contact_measured) {
-      result.position_error_m = err.position_m;
-      result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
-      contact_measured = true;
-    }
-    if (!contact.charger) contact_measured = false;
-
-    localization.update(k * dt, odometry.pose(), truth);
-    const Pose2 estimate = localization.map_pose(odometry.pose());
-    controller::DockingInput in;
-    in.pose = estimate;
-    in.odom_pose = odometry.pose();
-    in.speed_mps = odometry.speed_mps();
-    in.dt_s = dt;
-    in.charger_contact = contact.charger;
-    in.charging = charging;
-    in.charger_in_robot = detector.observe(truth, world.charger);
-    if (!world.moving.empty()) in.nearby_obstacles = sense_moving(world, k * dt, dt, truth, estimate, config.perception.range_m);
-    const controller::DockingCommand cmd = control.step(in);
-    if (cmd.replan_requested) {
-      // Plan again with what blocks the way as extra obstacles; start from the nearest free
-      // point if the robot stands inside their margin.
-      planner::PlannerInput again = planner::planner_input(world, true);
-      for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box);
-      again.snap_to_free = true;
-      const planner::PlanResult re = planner::make_planner(planner.name(), again)->plan(estimate.position(), staging.position());
-      if (re.status == planner::PlanStatus::kOk) {
-        std::vector<Vec2> path = re.path;
-        if (re.start_snapped) path.insert(path.begin(), estimate.position());
-        control.replace_path(path);
-        result.plan = path;  // the figure shows the plan finally followed
-        ++result.replans;
-      }
-    }
-    result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
-    result.trajectory.push_back({k * dt, truth, estimate,
-                                 geom::dot(physics.robot_velocity(), truth.heading()),
-                                 cmd.cross_track_error_m, cmd.phase});
-    result.time_s = k * dt;
-    if (cmd.phase == controller::DockPhase::kDocked || cmd.phase == controller::DockPhase::kFailed) {
-      result.docked = cmd.phase == controller::DockPhase::kDocked;
-      result.status = result.docked ? "docked" : "failed";
-      if (!result.docked) {
+    if (contact.charger) {
+      const DockError err = dock_error(physics.robot_pose(), world.charger);
+      charger_contact = true;
+      charging = charging || (err.position_m <= config.tolerance.position_m &&
+                              err.heading_rad <= config.tolerance.heading_rad);
+      if (!contact_measured) {
         result.position_error_m = err.position_m;
         result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
+        contact_measured = true;
       }
-      break;
+    } else {
+      contact_measured = false;
     }
-    drive.command(controller::to_wheels(cmd.twist, world.robot.wheel_base_m), dt);
+
+    if (k % period == 0) {
+      odometry.read();
+      const Pose2 truth = physics.robot_pose();
+      localization.update(k * dt, odometry.pose(), truth);
+      const Pose2 estimate = localization.map_pose(odometry.pose());
+      controller::DockingInput in;
+      in.pose = estimate;
+      in.odom_pose = odometry.pose();
+      in.speed_mps = odometry.speed_mps();
+      in.dt_s = control_dt;
+      in.charger_contact = charger_contact;
+      in.charging = charging;
+      charger_contact = charging = false;
+      in.charger_in_robot = detector.observe(truth, world.charger);
+      if (!world.moving.empty())
+        in.nearby_obstacles = sense_moving(world, k * dt, dt, truth, estimate, config.perception.range_m);
+      cmd = control.step(in);
+      if (cmd.replan_requested) {
+        // Plan again with what blocks the way as extra obstacles; start from the nearest free
+        // point if the robot stands inside their margin.
+        planner::PlannerInput again = planner::planner_input(world, true);
+        for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box);
+        again.snap_to_free = true;
+        const planner::PlanResult re =
+            planner::make_planner(planner.name(), again)->plan(estimate.position(), staging.position());
+        if (re.status == planner::PlanStatus::kOk) {
+          std::vector<Vec2> path = re.path;
+          if (re.start_snapped) path.insert(path.begin(), estimate.position());
+          control.replace_path(path);
+          result.plan = path;  // the figure shows the plan finally followed
+          ++result.replans;
+        }
+      }
+      result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
+      result.trajectory.push_back({k * dt, truth, estimate, geom::dot(physics.robot_velocity(), truth.heading()),
+                                   cmd.cross_track_error_m, cmd.phase});
+      result.time_s = k * dt;
+      if (cmd.phase == controller::DockPhase::kDocked || cmd.phase == controller::DockPhase::kFailed) {
+        result.docked = cmd.phase == controller::DockPhase::kDocked;
+        result.status = result.docked ? "docked" : "failed";
+        if (!result.docked) {
+          const DockError err = dock_error(truth, world.charger);
+          result.position_error_m = err.position_m;
+          result.heading_error_deg = err.heading_rad * 180.0 / M_PI;
+        }
+        break;
+      }
+      drive.command(controller::to_wheels(cmd.twist, world.robot.wheel_base_m), control_dt);
+    }
     drive.apply(physics, dt);
     physics.step(config.step, k * dt);
-    odometry.update(drive.motor_speeds(), dt);
-    const Pose2 now = physics.robot_pose();
-    result.driven_length_m += geom::distance(previous.position(), now.position());
+    ++result.physics_steps;
+    odometry.count(drive.motor_speeds(), dt);
+    const Vec2 now = physics.robot_position();
+    result.driven_length_m += geom::distance(previous, now);
     previous = now;
   }
   if (result.status == "timeout") {

@@ -45,6 +45,7 @@ struct EpisodeConfig {
   controller::DockingParams docking;
   DockTolerance tolerance;
   double timeout_s = 600.0;
+  int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
   std::uint64_t seed = 1;
 };
 
@@ -67,6 +68,7 @@ struct EpisodeResult {
   int stops = 0;                 ///< times the robot stopped for a moving obstacle
   int replans = 0;               ///< new plans made around what blocked the way
   double time_s = 0;
+  std::int64_t physics_steps = 0;  ///< fixed steps simulated
   double path_length_m = 0;      ///< planned, start to staging pose
   double driven_length_m = 0;    ///< ground truth
   double max_cross_track_m = 0;

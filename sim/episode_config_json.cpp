@@ -79,8 +79,8 @@ const std::vector<IntField>& int_fields() {
   static const std::vector<IntField> table = {
       {"step", "velocity_iterations", [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
       {"step", "position_iterations", [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
-      {"drive", "solver_iterations", [](EpisodeConfig& c) -> int& { return c.drive.solver_iterations; }},
       {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
+      {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }},
   };
   return table;
 }

@@ -13,6 +13,7 @@ void Localization::update(double t_s, const geom::Pose2& odom, const geom::Pose2
                         truth.y + params_.position_noise_m * gauss_(rng_),
                         geom::wrap_angle(truth.yaw + params_.yaw_noise_rad * gauss_(rng_))};
   map_from_odom_ = geom::compose(fix, geom::inverse(odom));
+  fixed_ = true;
 }
 
 }  // namespace plantsim::sim

@@ -21,7 +21,9 @@ class Localization {
   Localization(LocalizationParams params, std::uint64_t seed);
   /// Called every step with the time, the odometry pose and the ground truth (for the fix).
   void update(double t_s, const geom::Pose2& odom, const geom::Pose2& truth);
-  geom::Pose2 map_pose(const geom::Pose2& odom) const { return geom::compose(map_from_odom_, odom); }
+  geom::Pose2 map_pose(const geom::Pose2& odom) const {
+    return fixed_ ? geom::compose(map_from_odom_, odom) : odom;  // identity until the first fix
+  }
   const geom::Pose2& map_from_odom() const { return map_from_odom_; }
 
  private:
@@ -30,6 +32,7 @@ class Localization {
   std::normal_distribution<double> gauss_{0.0, 1.0};
   geom::Pose2 map_from_odom_;
   double next_fix_s_ = 0.0;
+  bool fixed_ = false;
 };
 
 }  // namespace plantsim::sim

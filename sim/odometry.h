@@ -1,6 +1,8 @@
-// Wheel odometry: dead reckoning from the encoders' rim speeds, with configurable noise
-// (random per step, proportional to speed) and slip (a constant scale error of each wheel,
-// as from a worn tyre). The estimate drifts; the ground truth is kept elsewhere, for metrics.
+// Wheel odometry: dead reckoning from the encoders, with configurable noise (random per
+// reading, proportional to speed) and slip (a constant scale error of each wheel, as from a
+// worn tyre). Like real encoders, wheel travel is counted every physics step and the pose is
+// integrated when the controller reads it. The estimate drifts; the ground truth is kept
+// elsewhere, for metrics.
 #pragma once
 
 #include <random>
@@ -19,7 +21,14 @@ struct OdometryNoise {
 class Odometry {
  public:
   Odometry(geom::Pose2 start, double wheel_base_m, OdometryNoise noise, std::uint64_t seed);
-  void update(controller::WheelSpeeds encoders, double dt_s);
+  /// Counts one physics step of wheel travel at the encoders' rim speeds.
+  void count(controller::WheelSpeeds encoders, double dt_s) {
+    left_m_ += encoders.left_mps * dt_s;
+    right_m_ += encoders.right_mps * dt_s;
+    counted_s_ += dt_s;
+  }
+  /// Integrates the travel counted since the last read into the pose.
+  void read();
   const geom::Pose2& pose() const { return pose_; }
   double speed_mps() const { return speed_; }
 
@@ -30,6 +39,7 @@ class Odometry {
   std::mt19937_64 rng_;
   std::normal_distribution<double> gauss_{0.0, 1.0};
   double speed_ = 0;
+  double left_m_ = 0, right_m_ = 0, counted_s_ = 0;
 };
 
 }  // namespace plantsim::sim

@@ -101,9 +101,19 @@ Pose2 PhysicsWorld::robot_pose() const {
   return {p.x, p.y, geom::wrap_angle(robot_->GetAngle())};
 }
 
+Vec2 PhysicsWorld::robot_position() const {
+  const b2Vec2 p = robot_->GetPosition();
+  return {p.x, p.y};
+}
+
 Vec2 PhysicsWorld::robot_velocity() const {
   const b2Vec2 v = robot_->GetLinearVelocity();
   return {v.x, v.y};
+}
+
+void PhysicsWorld::set_robot_velocity(Vec2 v, double w) {
+  robot_->SetLinearVelocity(b2Vec2(static_cast<float>(v.x), static_cast<float>(v.y)));
+  robot_->SetAngularVelocity(static_cast<float>(w));
 }
 
 double PhysicsWorld::robot_yaw_rate() const { return robot_->GetAngularVelocity(); }

@@ -42,11 +42,14 @@ class PhysicsWorld {
   void step(const StepSettings& s, double t_s);
 
   Pose2 robot_pose() const;
+  Vec2 robot_position() const;
   Vec2 robot_velocity() const;          ///< world frame, m/s
   double robot_yaw_rate() const;        ///< rad/s
   ContactState contacts() const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
+  /// Sets the robot's velocity directly (no tyre model): for baselines and tests.
+  void set_robot_velocity(Vec2 linear_mps, double angular_radps);
   double robot_mass() const;
   double robot_inertia() const;
 

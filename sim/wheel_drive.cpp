@@ -1,6 +1,5 @@
-// Tyre impulses by sequential impulses on the body's velocity, the way Box2D's own contact
-// solver works: each pass drives one wheel's longitudinal slip and lateral velocity to zero
-// through its effective mass, with the accumulated impulse clamped to the friction circle.
+// Tyre impulses: the exact impulse to the commanded rigid motion, shared between the tyres
+// and limited by each tyre's friction circle.
 #include "sim/wheel_drive.h"
 
 #include <box2d/box2d.h>
@@ -23,47 +22,40 @@ void WheelDrive::command(controller::WheelSpeeds target, double dt_s) {
 void WheelDrive::apply(PhysicsWorld& world, double dt_s) {
   b2Body* body = world.robot_body();
   const double m = world.robot_mass(), inertia = world.robot_inertia();
-  const double yaw = body->GetAngle();
-  const Vec2 fwd{std::cos(yaw), std::sin(yaw)}, left{-fwd.y, fwd.x};
+  const b2Rot& q = body->GetTransform().q;  // cos and sin of the yaw, already computed
+  const Vec2 fwd{q.c, q.s}, left{-fwd.y, fwd.x};
   const b2Vec2 com = body->GetWorldCenter();
   const b2Vec2 v0 = body->GetLinearVelocity();
-  Vec2 v{v0.x, v0.y};
-  double w = body->GetAngularVelocity();
+  const Vec2 v{v0.x, v0.y};
+  const double w = body->GetAngularVelocity();
 
-  struct Tyre {
-    Vec2 r;          // from the centre of mass to the contact point
-    double target;   // motor rim speed
-    Vec2 impulse;    // accumulated this step
-  };
+  // The two wheel speeds fix the whole rigid motion the tyres ask for: forward speed, no
+  // sideways speed, and yaw rate. The impulse reaching it exactly, split between the tyres
+  // (the lateral part equally: it passes through the axle), then each tyre's share clamped
+  // to its friction circle, where the tyre slips.
   const double half = 0.5 * spec_.wheel_base_m;
-  Tyre tyres[2] = {{half * left, motors_.left_mps, {}}, {-half * left, motors_.right_mps, {}}};
+  const double v_target = 0.5 * (motors_.left_mps + motors_.right_mps);
+  const double w_target = (motors_.right_mps - motors_.left_mps) / spec_.wheel_base_m;
+  const double j_fwd = m * (v_target - geom::dot(v, fwd));
+  const double j_lat = m * (0.0 - geom::dot(v, left));
+  const double j_turn = inertia * (w_target - w) / half;  // forward impulse pair giving the torque
   const double max_impulse = params_.tyre_friction * 0.5 * m * params_.gravity_mps2 * dt_s;
-  auto effective_mass = [&](Vec2 r, Vec2 dir) {
-    const double rn = geom::cross(r, dir);
-    return 1.0 / (1.0 / m + rn * rn / inertia);
-  };
   slipping_ = false;
-  for (int it = 0; it < params_.solver_iterations; ++it) {
-    for (Tyre& t : tyres) {
-      const Vec2 vp = v + Vec2{-w * t.r.y, w * t.r.x};
-      const double dl = effective_mass(t.r, fwd) * (t.target - geom::dot(vp, fwd));
-      const double dn = effective_mass(t.r, left) * (-geom::dot(vp, left));
-      Vec2 total = t.impulse + dl * fwd + dn * left;
-      const double mag = geom::norm(total);
-      if (mag > max_impulse) {
-        total = (max_impulse / mag) * total;
-        slipping_ = true;
-      }
-      const Vec2 delta = total - t.impulse;
-      t.impulse = total;
-      v = v + (1.0 / m) * delta;
-      w += geom::cross(t.r, delta) / inertia;
+  struct Share {
+    double fwd, lat;
+    Vec2 r;
+  } tyres[2] = {{0.5 * (j_fwd - j_turn), 0.5 * j_lat, half * left}, {0.5 * (j_fwd + j_turn), 0.5 * j_lat, -half * left}};
+  for (Share& t : tyres) {
+    const double mag = std::sqrt(t.fwd * t.fwd + t.lat * t.lat);
+    if (mag > max_impulse) {
+      t.fwd *= max_impulse / mag;
+      t.lat *= max_impulse / mag;
+      slipping_ = true;
     }
+    const Vec2 j = t.fwd * fwd + t.lat * left;
+    body->ApplyLinearImpulse(b2Vec2(static_cast<float>(j.x), static_cast<float>(j.y)),
+                             b2Vec2(static_cast<float>(com.x + t.r.x), static_cast<float>(com.y + t.r.y)), true);
   }
-  for (const Tyre& t : tyres)
-    body->ApplyLinearImpulse(b2Vec2(static_cast<float>(t.impulse.x), static_cast<float>(t.impulse.y)),
-                             b2Vec2(static_cast<float>(com.x + t.r.x), static_cast<float>(com.y + t.r.y)),
-                             true);
 }
 
 }  // namespace plantsim::sim

@@ -12,7 +12,6 @@ namespace plantsim::sim {
 struct DriveParams {
   double tyre_friction = 0.8;        ///< mu between tyre and floor
   double gravity_mps2 = 9.81;
-  int solver_iterations = 4;         ///< Gauss-Seidel passes over the tyre constraints
 };
 
 class WheelDrive {

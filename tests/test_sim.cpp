@@ -141,3 +141,47 @@ TEST(MovingObstacles, ScriptedMotionIsAFunctionOfTime) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+namespace plantsim::sim {
+namespace {
+
+TEST(WheelDrive, AHardTurnAtSpeedSkidsOnASlipperyFloor) {
+  // Full speed straight, then straight into a spin. With strong motors (5 m/s^2) a dry floor
+  // (mu 0.8, 7.8 m/s^2 of grip) stops it as the motors ramp (about 0.13 m); on a wet one (mu 0.1,
+  // 0.98 m/s^2) the tyres saturate and the robot slides on, about v^2 / (2 mu g) = 0.33 m.
+  double slide[2] = {0, 0};
+  bool slipped[2] = {false, false};
+  const double mus[2] = {0.8, 0.1};
+  for (int i = 0; i < 2; ++i) {
+    worlds::World w = empty_floor();
+    w.start = {1, 5, 0};
+    w.robot.max_accel_mps2 = 5.0;
+    PhysicsWorld physics(w);
+    DriveParams params;
+    params.tyre_friction = mus[i];
+    WheelDrive drive(w.robot, params);
+    StepSettings s;
+    for (int k = 0; k < 120; ++k) {
+      drive.command({0.8, 0.8}, s.dt_s);
+      drive.apply(physics, s.dt_s);
+      physics.step(s, k * s.dt_s);
+    }
+    ASSERT_NEAR(physics.robot_velocity().x, 0.8, 0.02);
+    const geom::Vec2 before = physics.robot_position();
+    for (int k = 120; k < 240; ++k) {
+      drive.command({-0.8, 0.8}, s.dt_s);
+      drive.apply(physics, s.dt_s);
+      slipped[i] |= drive.slipping();
+      physics.step(s, k * s.dt_s);
+    }
+    slide[i] = geom::distance(before, physics.robot_position());
+  }
+  EXPECT_FALSE(slipped[0]);
+  EXPECT_LT(slide[0], 0.15);  // the motors ramp the left wheel through 0 in 0.16 s: ~0.13 m
+  EXPECT_TRUE(slipped[1]);
+  EXPECT_GT(slide[1], 0.25);
+  EXPECT_LT(slide[1], 0.45);
+}
+
+}  // namespace
+}  // namespace plantsim::sim
