@@ -9,6 +9,19 @@
 
 namespace plantsim::render {
 
+void draw_footprint(GlCanvas& canvas, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour) {
+  if (robot.rectangular()) {
+    const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;
+    std::vector<geom::Vec2> outline;
+    for (geom::Vec2 k : {geom::Vec2{hl, hw}, geom::Vec2{-hl, hw}, geom::Vec2{-hl, -hw}, geom::Vec2{hl, -hw}, geom::Vec2{hl, hw}})
+      outline.push_back(pose.position() + geom::rotate(k, pose.yaw));
+    canvas.polyline(outline, 1.5, colour);
+  } else {
+    canvas.ring(pose.position(), robot.radius_m, 1.5, colour);
+  }
+  canvas.polyline({pose.position(), pose.position() + robot.front_extent_m() * pose.heading()}, 1.5, colour);
+}
+
 Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                       const RunFigureOptions& o, PixelTransform* transform_out) {
   GlCanvas canvas(o.width_px, o.height_px);
@@ -48,9 +61,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   canvas.fill_disk(world.start.position(), 0.35 * world.robot.radius_m + 0.1, palette::kStart);
   if (!run.trajectory.empty()) {
     const geom::Pose2 end = run.trajectory.back().truth;
-    canvas.ring(end.position(), world.robot.radius_m, 1.5, palette::kRobot);
-    canvas.polyline({end.position(), end.position() + world.robot.radius_m * end.heading()}, 1.5,
-                    palette::kRobot);
+    draw_footprint(canvas, world.robot, end, palette::kRobot);
   }
   // The charger last, and never smaller than a few pixels, so that it stays visible.
   const double min_half_m = 3.0 / t.scale;

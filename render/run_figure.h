@@ -15,6 +15,9 @@ struct RunFigureOptions {
   int margin_px = 20;
 };
 
+/// The robot's outline and heading at a pose.
+void draw_footprint(GlCanvas& canvas, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour);
+
 /// Draws the run into a new image; `transform` receives the world-to-pixel mapping used.
 Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                       const RunFigureOptions& options = {}, PixelTransform* transform = nullptr);

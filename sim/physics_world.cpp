@@ -76,9 +76,14 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
   robot_ = world_->CreateBody(&robot_def);
   b2CircleShape disk;
   disk.m_radius = static_cast<float>(w.robot.radius_m);
+  b2PolygonShape box;
+  // The box is shrunk by Box2D's polygon skin so that its contact surface is the footprint.
+  box.SetAsBox(static_cast<float>(0.5 * w.robot.length_m - b2_polygonRadius),
+               static_cast<float>(0.5 * w.robot.width_m - b2_polygonRadius));
   b2FixtureDef robot_fd;
-  robot_fd.shape = &disk;
-  robot_fd.density = static_cast<float>(w.robot.mass_kg / (M_PI * w.robot.radius_m * w.robot.radius_m));
+  robot_fd.shape = w.robot.rectangular() ? static_cast<b2Shape*>(&box) : &disk;
+  const double area = w.robot.rectangular() ? w.robot.length_m * w.robot.width_m : M_PI * w.robot.radius_m * w.robot.radius_m;
+  robot_fd.density = static_cast<float>(w.robot.mass_kg / area);
   robot_fd.friction = 0.3f;
   robot_fd.userData.pointer = kRobot;
   robot_->CreateFixture(&robot_fd);

@@ -185,3 +185,20 @@ TEST(WheelDrive, AHardTurnAtSpeedSkidsOnASlipperyFloor) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+namespace plantsim::sim {
+namespace {
+
+TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant_rect_robot.json"));
+  ASSERT_TRUE(world.robot.rectangular());
+  EXPECT_NEAR(world.robot.radius_m, 0.5 * std::hypot(0.5, 0.36), 1e-12);  // planning radius
+  EXPECT_DOUBLE_EQ(world.robot.front_extent_m(), 0.25);
+  const EpisodeResult r = dock(world);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_LE(r.position_error_m, 0.02);
+}
+
+}  // namespace
+}  // namespace plantsim::sim

@@ -41,7 +41,7 @@ Rect ChargerBody::bounding_box() const {
 ChargerBody charger_body(const World& world) {
   const Vec2 ahead = world.charger.heading();
   const double half_depth = 0.5 * world.charger_spec.depth_m;
-  const Vec2 center = world.charger.position() + (world.robot.radius_m + half_depth) * ahead;
+  const Vec2 center = world.charger.position() + (world.robot.front_extent_m() + half_depth) * ahead;
   return {center, half_depth, 0.5 * world.charger_spec.width_m, world.charger.yaw};
 }
 

@@ -14,15 +14,21 @@ using geom::Pose2;
 using geom::Rect;
 using geom::Vec2;
 
-/// Differential-drive robot with a disk footprint. Typical values are those of a small
-/// indoor inspection robot.
+/// Differential-drive robot with a disk or a rectangular footprint. Typical values are those
+/// of a small indoor inspection robot.
 struct RobotSpec {
-  double radius_m = 0.2;          ///< footprint disk radius
+  double radius_m = 0.2;          ///< disk radius; for a rectangle, its circumscribed radius
   double wheel_base_m = 0.34;     ///< distance between the two wheel contact points
   double wheel_radius_m = 0.06;   ///< drive wheel radius
   double max_speed_mps = 0.8;     ///< wheel rim speed limit
   double max_accel_mps2 = 1.0;    ///< wheel rim acceleration limit
-  double mass_kg = 30.0;          ///< body mass; inertia is that of a uniform disk
+  double mass_kg = 30.0;          ///< body mass; inertia that of the uniform footprint
+  double length_m = 0.0;          ///< rectangular footprint along the heading (0: a disk)
+  double width_m = 0.0;           ///< rectangular footprint across the heading
+
+  bool rectangular() const { return length_m > 0 && width_m > 0; }
+  /// Distance from the centre to the front, where the charging contacts are.
+  double front_extent_m() const { return rectangular() ? 0.5 * length_m : radius_m; }
 };
 
 /// The charger's physical body: a block the robot's front touches when docked.

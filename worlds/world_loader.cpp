@@ -114,7 +114,16 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
 
   const json& robot = in.member(doc, "robot", "");
-  w.robot.radius_m = in.positive(robot, "radius_m", "robot");
+  if (robot.contains("footprint")) {
+    // A rectangle: the planner and the safety checks use its circumscribed radius.
+    const json& fp = robot["footprint"];
+    w.robot.length_m = in.positive(fp, "length_m", "robot.footprint");
+    w.robot.width_m = in.positive(fp, "width_m", "robot.footprint");
+    w.robot.radius_m = 0.5 * std::hypot(w.robot.length_m, w.robot.width_m);
+    if (robot.contains("radius_m")) in.fail("robot.radius_m", "give either radius_m (a disk) or footprint (a rectangle)");
+  } else {
+    w.robot.radius_m = in.positive(robot, "radius_m", "robot");
+  }
   w.robot.wheel_base_m = in.positive(robot, "wheel_base_m", "robot");
   w.robot.wheel_radius_m = in.positive(robot, "wheel_radius_m", "robot");
   w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot");
@@ -221,7 +230,7 @@ void validate_world(const World& w) {
   if (w.floor.width() > kMaxFloorSide_m || w.floor.height() > kMaxFloorSide_m)
     throw WorldError(w.source, "floor",
                      "larger than " + std::to_string(kMaxFloorSide_m) + " m on a side (huge world)");
-  if (w.robot.wheel_base_m > 2.0 * w.robot.radius_m)
+  if (w.robot.wheel_base_m > (w.robot.rectangular() ? w.robot.width_m : 2.0 * w.robot.radius_m))
     throw WorldError(w.source, "robot.wheel_base_m", "wheels must fit inside the footprint");
   check_pose_free(w, w.start, "start");
   check_pose_free(w, w.charger, "charger");
