@@ -202,3 +202,37 @@ TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+#include "sim/episode_config_json.h"
+
+namespace plantsim::sim {
+namespace {
+
+TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
+  const EpisodeConfig c = parse_episode_config(
+      R"({"tracking": {"max_linear_speed_mps": 0.4}, "docking": {"max_retries": 5}, "detection": {"enabled": false}})", "c.json");
+  EXPECT_DOUBLE_EQ(c.tracking.max_linear_speed_mps, 0.4);
+  EXPECT_EQ(c.docking.max_retries, 5);
+  EXPECT_FALSE(c.detection.enabled);
+  EXPECT_DOUBLE_EQ(c.tracking.lookahead_max_m, EpisodeConfig{}.tracking.lookahead_max_m);  // untouched
+  auto fails_with = [](const std::string& text, const std::string& needle) {
+    try {
+      parse_episode_config(text, "c.json");
+      ADD_FAILURE() << text;
+    } catch (const worlds::WorldError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  fails_with(R"({"tracking": {"max_linear_sped_mps": 0.4}})", "tracking.max_linear_sped_mps': unknown");
+  fails_with(R"({"tracking": {"max_linear_speed_mps": "fast"}})", "expected a number");
+  fails_with(R"({"step": {"dt_s": 0}})", "step.dt_s");
+  fails_with(R"({"docking": {"max_retries": -1}})", "docking.max_retries");
+  fails_with("{oops", "malformed JSON");
+  // The printed defaults read back to the defaults.
+  const EpisodeConfig round = parse_episode_config(default_config_json(), "defaults");
+  EXPECT_DOUBLE_EQ(round.step.dt_s, EpisodeConfig{}.step.dt_s);
+  EXPECT_EQ(round.control_period_steps, EpisodeConfig{}.control_period_steps);
+}
+
+}  // namespace
+}  // namespace plantsim::sim
