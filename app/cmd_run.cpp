@@ -7,6 +7,8 @@
 #include "app/commands.h"
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
+#include "render/animation.h"
+#include "render/report.h"
 #include "render/run_figure.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
@@ -37,6 +39,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::string start;
     std::string charger;
     std::string config;
+    bool animate = false;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
@@ -47,6 +50,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
   cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
   cmd->add_option("--config", opt->config, "Controller, drive and sensing parameters (JSON, see docs/config.md)");
+  cmd->add_flag("--animate", opt->animate, "Also write animation frames (and an MP4 when ffmpeg is installed)");
   return [opt, cmd]() {
     worlds::World world = worlds::load_world(opt->world);
     if (!opt->start.empty()) world.start = parse_pose(opt->start, "--start");
@@ -63,13 +67,21 @@ std::function<int()> add_run_command(CLI::App& app) {
     config.seed = opt->seed;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
-    std::string command_line = "plantsim run " + opt->world;
-    for (const auto* o : cmd->get_options())
-      if (o->count() > 0 && o->get_lnames().size() > 0)
-        command_line += " --" + o->get_lnames().front() + " " + o->as<std::string>();
-    util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, command_line));
+    const std::string line = command_line(cmd);
+    util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, line));
     util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
     render::write_run_figure(world, r, out_dir + "/run.png");
+    render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
+    std::vector<render::ReportFigure> figures = {{"run.png", "The run: plan, driven path coloured by speed, footprints"},
+                                                 {"timeplots.png", "Cross-track error, speed and distance to the charger"}};
+    if (opt->animate) {
+      const std::string movie = render::write_animation(world, r, out_dir);
+      figures.push_back({"frames/frame_0000.png", "First animation frame (all frames in frames/)"});
+      if (!movie.empty()) figures.push_back({movie, "Animation"});
+    }
+    render::write_report({"plantsim run: " + world.name, line, metric_headers(), {metric_row(r, world.name)}, figures,
+                          {"summary.json", "trajectory.csv"}, ""},
+                         out_dir + "/report.html");
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
               << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << out_dir << "\n";

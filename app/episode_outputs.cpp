@@ -32,6 +32,23 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   return j.dump(2) + "\n";
 }
 
+std::vector<std::string> metric_headers() {
+  return {"world", "planner", "status", "position error (cm)", "heading error (deg)", "collisions", "retries",
+          "stops", "replans", "time (s)", "plan (ms)", "planned (m)", "driven (m)", "max cross-track (cm)"};
+}
+
+std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name) {
+  auto f = [](double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return std::string(buf);
+  };
+  return {world_name, r.planner, r.status, f(100 * r.position_error_m, 2), f(r.heading_error_deg, 2),
+          std::to_string(r.collisions), std::to_string(r.retries), std::to_string(r.stops), std::to_string(r.replans),
+          f(r.time_s, 1), f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2), f(r.path_length_m, 2),
+          f(r.driven_length_m, 2), f(100 * r.max_cross_track_m, 1)};
+}
+
 std::string trajectory_csv(const sim::EpisodeResult& r) {
   std::string out = "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,speed_mps,cross_track_m,phase\n";
   char line[256];

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sim/episode.h"
 
@@ -11,5 +12,9 @@ namespace plantsim::app {
 std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
                          const std::string& command_line);
 std::string trajectory_csv(const sim::EpisodeResult& r);
+
+/// The metrics table of reports: headers, and one row per episode.
+std::vector<std::string> metric_headers();
+std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name);
 
 }  // namespace plantsim::app

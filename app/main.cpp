@@ -7,6 +7,21 @@
 #include "app/commands.h"
 #include "worlds/world_error.h"
 
+namespace plantsim::app {
+
+std::string command_line(const CLI::App* sub) {
+  std::string line = "plantsim " + sub->get_name();
+  for (const CLI::Option* o : sub->get_options()) {
+    if (o->count() == 0 || o->get_name() == "--help") continue;
+    const bool positional = o->get_lnames().empty();
+    for (const std::string& v : o->results()) line += positional ? " " + v : " --" + o->get_lnames().front() + " " + v;
+    if (o->get_expected_max() == 0 && !positional) line += " --" + o->get_lnames().front();
+  }
+  return line;
+}
+
+}  // namespace plantsim::app
+
 int main(int argc, char** argv) {
   CLI::App app{"plantsim: drive a wheeled robot through a plant to its charger, in Box2D"};
   app.require_subcommand(1);
@@ -19,6 +34,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_summarize_command(app));
   remember(plantsim::app::add_bench_command(app));
   remember(plantsim::app::add_config_command(app));
+  remember(plantsim::app::add_compare_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/vec2.h"
@@ -56,6 +57,8 @@ class Planner {
   virtual ~Planner() = default;
   virtual std::string name() const = 0;
   virtual PlanResult plan(Vec2 start, Vec2 goal) = 0;
+  /// The graph the planner has built so far, as segments, for figures (may be empty).
+  virtual std::vector<std::pair<Vec2, Vec2>> graph_edges() const { return {}; }
 };
 
 /// Names accepted by make_planner, in the order reports list them.

@@ -165,6 +165,23 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   return result;
 }
 
+std::vector<std::pair<Vec2, Vec2>> VisibilityGraphPlanner::graph_edges() const {
+  // The whole reduced graph (every vertex resolved), not just what searches have touched.
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(graph_.vertices().size()); ++v)
+    if (!graph_.resolved(v)) graph_.resolve(v);
+  std::vector<std::pair<Vec2, Vec2>> out;
+  for (const auto& [a, b] : graph_.visible_edges()) out.emplace_back(graph_.vertices()[a].p, graph_.vertices()[b].p);
+  return out;
+}
+
+std::vector<std::pair<Vec2, Vec2>> TraditionalVisibilityPlanner::graph_edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  for (std::size_t a = 0; a < adjacency_.size(); ++a)
+    for (const GraphEdge& e : adjacency_[a])
+      if (static_cast<std::size_t>(e.to) > a) out.emplace_back(corners_[a], corners_[e.to]);
+  return out;
+}
+
 TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)
     : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       snap_(input.snap_to_free) {

@@ -17,6 +17,7 @@ class VisibilityGraphPlanner : public Planner {
   explicit VisibilityGraphPlanner(const PlannerInput& input);
   std::string name() const override { return "vg"; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
+  std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;  ///< the whole reduced graph
   const ObstacleMap& map() const { return map_; }
   const VisibilityGraph& graph() const { return graph_; }
 
@@ -38,6 +39,7 @@ class TraditionalVisibilityPlanner : public Planner {
   explicit TraditionalVisibilityPlanner(const PlannerInput& input);
   std::string name() const override { return "vg-traditional"; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
+  std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;  ///< every visible pair
 
  private:
   ObstacleMap map_;

@@ -85,6 +85,19 @@ void VisibilityGraph::resolve(std::int32_t v) const {
   candidates_ready_[v] = 2;
 }
 
+std::vector<std::pair<std::int32_t, std::int32_t>> VisibilityGraph::visible_edges() const {
+  std::vector<std::pair<std::int32_t, std::int32_t>> out;
+  for (std::size_t v = 0; v < candidates_.size(); ++v)
+    for (std::size_t i = 0; i < verdict_[v].size(); ++i)
+      if (verdict_[v][i] == 1) {
+        const auto a = static_cast<std::int32_t>(v), b = candidates_[v][i].to;
+        out.emplace_back(std::min(a, b), std::max(a, b));
+      }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 bool VisibilityGraph::taut(Vec2 prev, std::int32_t v, Vec2 next) const {
   const GraphVertex& c = vertices_[v];
   const geom::Orientation turn = geom::orient(prev, c.p, next);

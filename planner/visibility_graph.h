@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "planner/angle_coverage.h"
@@ -66,6 +67,9 @@ class VisibilityGraph {
     ++segment_tests_;
     return map_.segment_free(a, b);
   }
+
+  /// Edges tested and found visible so far (each once).
+  std::vector<std::pair<std::int32_t, std::int32_t>> visible_edges() const;
 
   std::int64_t edges_found() const { return edges_found_; }
   std::int64_t candidates_gathered() const { return candidates_gathered_; }

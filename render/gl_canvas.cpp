@@ -5,6 +5,7 @@
 #include <GL/osmesa.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 
@@ -54,6 +55,7 @@ GlCanvas::~GlCanvas() {
 }
 
 void GlCanvas::clear(Rgb c) {
+  batch_.clear();
   glClearColor(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
 }
@@ -62,38 +64,63 @@ Vec2 GlCanvas::gl_px(Vec2 p) const {
   return {ss_ * (transform_.x0 + transform_.scale * p.x), ss_ * (transform_.y0 + transform_.scale * p.y)};
 }
 
-static void color(Rgb c, float alpha = 1.0f) { glColor4f(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha); }
+void GlCanvas::color(Rgb c, float alpha) {
+  current_ = {c.r, c.g, c.b, static_cast<std::uint8_t>(std::lround(std::clamp(alpha, 0.0f, 1.0f) * 255))};
+}
+
+void GlCanvas::vertex(double x, double y) {
+  batch_.push_back({static_cast<float>(x), static_cast<float>(y), current_[0], current_[1], current_[2], current_[3]});
+}
+
+void GlCanvas::triangle(Vec2 a, Vec2 b, Vec2 c) {
+  vertex(a.x, a.y);
+  vertex(b.x, b.y);
+  vertex(c.x, c.y);
+}
+
+void GlCanvas::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  triangle(a, b, c);
+  triangle(a, c, d);
+}
+
+// All geometry goes to GL as one array of coloured triangles: primitives are drawn in
+// submission order, so the layer order holds, at the cost of one call instead of thousands.
+void GlCanvas::flush() const {
+  if (batch_.empty()) return;
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
+  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(BatchVertex), &batch_[0].r);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch_.size()));
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  batch_.clear();
+}
 
 void GlCanvas::fill_rect(const Rect& r, Rgb c, float alpha) {
   const Vec2 a = gl_px({r.xmin, r.ymin}), b = gl_px({r.xmax, r.ymax});
   color(c, alpha);
-  glBegin(GL_QUADS);
-  glVertex2d(a.x, a.y);
-  glVertex2d(b.x, a.y);
-  glVertex2d(b.x, b.y);
-  glVertex2d(a.x, b.y);
-  glEnd();
+  quad(a, {b.x, a.y}, b, {a.x, b.y});
 }
 
 void GlCanvas::fill_box(Vec2 center, double half_x, double half_y, double yaw, Rgb c) {
   color(c);
-  glBegin(GL_QUADS);
-  for (Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}}) {
-    const Vec2 p = gl_px(center + geom::rotate({k.x * half_x, k.y * half_y}, yaw));
-    glVertex2d(p.x, p.y);
-  }
-  glEnd();
+  Vec2 p[4];
+  int i = 0;
+  for (Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}})
+    p[i++] = gl_px(center + geom::rotate({k.x * half_x, k.y * half_y}, yaw));
+  quad(p[0], p[1], p[2], p[3]);
 }
 
 void GlCanvas::disk_px(Vec2 c, double r) {
-  const int n = std::clamp(static_cast<int>(r * 1.5), 12, 96);
-  glBegin(GL_TRIANGLE_FAN);
-  glVertex2d(c.x, c.y);
-  for (int i = 0; i <= n; ++i) {
+  const int n = std::clamp(static_cast<int>(r * 1.5), r < 3.0 ? 6 : 12, 96);  // a few-pixel disk needs few sides
+  Vec2 prev{c.x + r, c.y};
+  for (int i = 1; i <= n; ++i) {
     const double a = 2.0 * M_PI * i / n;
-    glVertex2d(c.x + r * std::cos(a), c.y + r * std::sin(a));
+    const Vec2 next{c.x + r * std::cos(a), c.y + r * std::sin(a)};
+    triangle(c, prev, next);
+    prev = next;
   }
-  glEnd();
 }
 
 void GlCanvas::fill_disk(Vec2 center, double radius_m, Rgb c) {
@@ -113,12 +140,7 @@ void GlCanvas::quad_px(Vec2 a, Vec2 b, double w) {
   const double len = geom::norm(d);
   if (len == 0) return;
   const Vec2 n = (0.5 * w / len) * Vec2{-d.y, d.x};
-  glBegin(GL_QUADS);
-  glVertex2d(a.x + n.x, a.y + n.y);
-  glVertex2d(b.x + n.x, b.y + n.y);
-  glVertex2d(b.x - n.x, b.y - n.y);
-  glVertex2d(a.x - n.x, a.y - n.y);
-  glEnd();
+  quad(a + n, b + n, b - n, a - n);
 }
 
 void GlCanvas::polyline(const std::vector<Vec2>& pts, double width_px, Rgb c) {
@@ -137,14 +159,50 @@ void GlCanvas::pixel_line(Vec2 a, Vec2 b, double width_px, Rgb c) {
   quad_px(to_gl(a), to_gl(b), ss_ * width_px);
 }
 
-Image GlCanvas::read() const {
+void GlCanvas::pixel_polyline(const std::vector<Vec2>& pts, double width_px, Rgb c) {
+  color(c);
+  auto to_gl = [&](Vec2 p) { return Vec2{ss_ * p.x, ss_ * (height_ - p.y)}; };
+  const double w = ss_ * width_px;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (i > 0) quad_px(to_gl(pts[i - 1]), to_gl(pts[i]), w);
+    if (w > 2.0) disk_px(to_gl(pts[i]), 0.5 * w);
+  }
+}
+
+void GlCanvas::coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours, double width_px) {
+  const double w = ss_ * width_px;
+  for (std::size_t i = 1; i < pts.size() && i - 1 < colours.size(); ++i) {
+    color(colours[i - 1]);
+    const Vec2 a = gl_px(pts[i - 1]), b = gl_px(pts[i]);
+    quad_px(a, b, w);
+    // A round join only where the line turns enough to open a visible notch.
+    if (w > 2.0 && i + 1 < pts.size()) {
+      const Vec2 d1 = b - a, d2 = gl_px(pts[i + 1]) - b;
+      const double turn = std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
+      if (turn * w > 0.5) disk_px(b, 0.5 * w);
+    }
+  }
+}
+
+void GlCanvas::finish() const {
+  flush();
   glFinish();
+}
+
+Image GlCanvas::read() const {
+  finish();
   Image img;
   img.width = width_;
   img.height = height_;
   img.rgba.assign(static_cast<std::size_t>(width_) * height_ * 4, 255);
   const int w = width_ * ss_;
   const std::uint8_t* src = ctx_->buffer.data();
+  if (ss_ == 1) {  // rows flipped, nothing to average
+    const std::size_t row_bytes = static_cast<std::size_t>(width_) * 4;
+    for (int row = 0; row < height_; ++row)
+      std::memcpy(img.rgba.data() + row * row_bytes, src + static_cast<std::size_t>(height_ - 1 - row) * row_bytes, row_bytes);
+    return img;
+  }
   const int n = ss_ * ss_;
   for (int row = 0; row < height_; ++row) {
     const int gl_row0 = (height_ - 1 - row) * ss_;  // OSMesa rows start at the bottom

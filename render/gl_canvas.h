@@ -4,6 +4,8 @@
 // smoothed by rendering at a multiple of the final size and averaging down.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -49,10 +51,24 @@ class GlCanvas {
   void polyline(const std::vector<Vec2>& pts, double width_px, Rgb c);
   /// Line segments between pixel coordinates of the final image (row 0 at the top).
   void pixel_line(Vec2 a, Vec2 b, double width_px, Rgb c);
+  void pixel_polyline(const std::vector<Vec2>& pts, double width_px, Rgb c);
+  /// Segment i of `pts` drawn in colours[i] (one fewer colour than points), round joins.
+  void coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours, double width_px);
 
+  /// Waits until the drawing is done (for timing); read() does this too.
+  void finish() const;
   Image read() const;
 
  private:
+  struct BatchVertex {
+    float x, y;
+    std::uint8_t r, g, b, a;
+  };
+  void color(Rgb c, float alpha = 1.0f);
+  void vertex(double x, double y);
+  void triangle(Vec2 a, Vec2 b, Vec2 c);
+  void quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+  void flush() const;
   void quad_px(Vec2 a, Vec2 b, double width_px);  // in supersampled pixels, GL rows
   void disk_px(Vec2 center, double radius_px);
   Vec2 gl_px(Vec2 world) const;
@@ -61,6 +77,8 @@ class GlCanvas {
   PixelTransform transform_;
   struct Context;
   std::unique_ptr<Context> ctx_;
+  std::array<std::uint8_t, 4> current_{0, 0, 0, 255};
+  mutable std::vector<BatchVertex> batch_;
 };
 
 }  // namespace plantsim::render

@@ -17,5 +17,7 @@ inline constexpr Rgb kCharger{20, 150, 60};
 inline constexpr Rgb kStart{245, 160, 0};
 inline constexpr Rgb kRobot{20, 20, 20};
 inline constexpr Rgb kMoving{150, 60, 170};
+inline constexpr Rgb kAxis{40, 40, 48};
+inline constexpr Rgb kFootprint{120, 120, 130};
 
 }  // namespace plantsim::render::palette

@@ -2,6 +2,7 @@
 #include "render/png_io.h"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <stdexcept>
 
@@ -33,11 +34,14 @@ std::string encode_png(const Image& image, const PngSettings& settings) {
     throw std::runtime_error("libpng: encoding failed");
   }
   png_set_write_fn(png, &out, append_bytes, flush_nothing);
-  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+  // Figures are opaque: RGB, a quarter less data to compress than RGBA.
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, settings.compression_level);
+  if (settings.run_length) png_set_compression_strategy(png, Z_RLE);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, settings.adaptive_filters ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
   png_write_info(png, info);
+  png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are given as RGBA; the filler byte is dropped
   for (int row = 0; row < image.height; ++row)
     png_write_row(png, image.rgba.data() + static_cast<std::size_t>(row) * image.width * 4);
   png_write_end(png, nullptr);

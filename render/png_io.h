@@ -9,9 +9,10 @@
 namespace plantsim::render {
 
 struct PngSettings {
-  int compression_level = 6;   ///< zlib level 0..9; 1 is fast, 9 smallest
+  int compression_level = 6;     ///< zlib level 0..9; 1 is fast, 9 smallest
   bool adaptive_filters = true;  ///< libpng's per-row filter choice; off = no filtering (fast)
-  static PngSettings fast() { return {1, false}; }
+  bool run_length = false;       ///< zlib RLE strategy (measured slower than level 1 here)
+  static PngSettings fast() { return {1, false, false}; }
 };
 
 std::string encode_png(const Image& image, const PngSettings& settings = {});

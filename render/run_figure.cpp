@@ -1,79 +1,84 @@
-// Layer order matters: margins under obstacles, plan under trajectory, robot on top.
+// Layout of the run figure and the time plots.
 #include "render/run_figure.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "render/layers.h"
 #include "render/palette.h"
-#include "render/png_io.h"
 
 namespace plantsim::render {
 
-void draw_footprint(GlCanvas& canvas, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour) {
-  if (robot.rectangular()) {
-    const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;
-    std::vector<geom::Vec2> outline;
-    for (geom::Vec2 k : {geom::Vec2{hl, hw}, geom::Vec2{-hl, hw}, geom::Vec2{-hl, -hw}, geom::Vec2{hl, -hw}, geom::Vec2{hl, hw}})
-      outline.push_back(pose.position() + geom::rotate(k, pose.yaw));
-    canvas.polyline(outline, 1.5, colour);
-  } else {
-    canvas.ring(pose.position(), robot.radius_m, 1.5, colour);
-  }
-  canvas.polyline({pose.position(), pose.position() + robot.front_extent_m() * pose.heading()}, 1.5, colour);
+std::string result_line(const sim::EpisodeResult& run) {
+  char buf[200];
+  if (run.trajectory.empty()) return run.status;
+  std::snprintf(buf, sizeof buf, "%s, error %.1f cm / %.1f deg, %d collisions, %d retries, %.1f s", run.status.c_str(),
+                100 * run.position_error_m, run.heading_error_deg, run.collisions, run.retries, run.time_s);
+  return buf;
 }
 
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
-                      const RunFigureOptions& o, PixelTransform* transform_out) {
-  GlCanvas canvas(o.width_px, o.height_px);
-  canvas.clear(palette::kBackground);
-  const PixelTransform t = PixelTransform::fit(world.floor, o.margin_px, o.margin_px,
-                                               o.width_px - o.margin_px, o.height_px - o.margin_px,
-                                               o.height_px);
-  canvas.set_transform(t);
-  canvas.fill_rect(world.floor, palette::kFloor);
-  const double grid_px = 1.0;
-  for (double x = std::ceil(world.floor.xmin); x <= world.floor.xmax; x += 1.0)
-    canvas.polyline({{x, world.floor.ymin}, {x, world.floor.ymax}}, grid_px, palette::kGrid);
-  for (double y = std::ceil(world.floor.ymin); y <= world.floor.ymax; y += 1.0)
-    canvas.polyline({{world.floor.xmin, y}, {world.floor.xmax, y}}, grid_px, palette::kGrid);
-
-  const double inflation = world.planning_inflation_m();
-  for (const auto& r : world.obstacles) canvas.fill_rect(r.inflated(inflation), palette::kInflation);
-  for (const auto& r : world.obstacles) canvas.fill_rect(r, palette::kObstacle);
-
-  const worlds::ChargerBody cb = worlds::charger_body(world);
-  const geom::Pose2 staging = worlds::staging_pose(world);
-  canvas.polyline({staging.position(), cb.center}, 1.5, palette::kCharger);
-
-  // Moving obstacles: their scripted route, and where they were at the end.
+Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& o,
+                      PixelTransform* transform_out) {
+  Figure fig(o.width_px, o.height_px);
+  const PixelBox panel{70, 56, o.width_px - 150.0, o.height_px - 50.0};
+  const PixelTransform t = fig.world_panel(world.floor, panel);
+  GlCanvas& c = fig.canvas();
+  draw_floor(c, world);
+  draw_obstacles(c, world);
+  if (!o.graph_edges.empty()) draw_graph(c, o.graph_edges);
   const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
-  for (const auto& m : world.moving) {
-    if (m.waypoints.size() > 1) canvas.polyline(m.waypoints, 1.0, palette::kMoving);
-    canvas.fill_rect(m.box_at(t_end), palette::kMoving);
-  }
+  draw_moving(c, world, t_end);
+  draw_plan(c, run.plan);
+  draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s);
+  draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
+  draw_start(c, world);
+  if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot);
+  draw_charger(c, world);
+  fig.world_axes(world.floor, t);
 
-  canvas.polyline(run.plan, 2.0, palette::kPlan);
-  std::vector<geom::Vec2> driven;
-  driven.reserve(run.trajectory.size());
-  for (const auto& s : run.trajectory) driven.push_back(s.truth.position());
-  canvas.polyline(driven, 3.0, palette::kTrajectory);
-
-  canvas.fill_disk(world.start.position(), 0.35 * world.robot.radius_m + 0.1, palette::kStart);
-  if (!run.trajectory.empty()) {
-    const geom::Pose2 end = run.trajectory.back().truth;
-    draw_footprint(canvas, world.robot, end, palette::kRobot);
-  }
-  // The charger last, and never smaller than a few pixels, so that it stays visible.
-  const double min_half_m = 3.0 / t.scale;
-  canvas.fill_box(cb.center, std::max(cb.half_depth_m, min_half_m), std::max(cb.half_width_m, min_half_m),
-                  cb.yaw, palette::kCharger);
+  const std::string title = o.title.empty() ? world.name + "  |  planner " + run.planner : o.title;
+  fig.text(title, 70, 26, 18, palette::kAxis, Anchor::kLeft, true);
+  char sub[300];
+  std::snprintf(sub, sizeof sub, "%s  |  planned %.2f m, driven %.2f m", result_line(run).c_str(), run.path_length_m,
+                run.driven_length_m);
+  fig.text(sub, 70, 46, 13, palette::kAxis);
+  const double bar_x = o.width_px - 115.0;
+  fig.colour_bar({bar_x, 90, bar_x + 16, 330}, 0.0, world.robot.max_speed_mps, "speed (m/s)");
+  std::vector<LegendEntry> legend = {{palette::kObstacle, "obstacle"}, {palette::kInflation, "margin"},
+                                     {palette::kPlan, "plan"},         {palette::kFootprint, "robot"},
+                                     {palette::kStart, "start"},       {palette::kCharger, "charger"}};
+  if (!world.moving.empty()) legend.push_back({palette::kMoving, "moving"});
+  if (!o.graph_edges.empty()) legend.push_back({palette::kGraph, "graph"});
+  fig.legend(bar_x - 10, 380, legend);
   if (transform_out) *transform_out = t;
-  return canvas.read();
+  return fig.finish();
 }
 
-void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
-                      const std::string& path, const RunFigureOptions& options) {
-  write_png(draw_run_figure(world, run, options), path);
+void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const std::string& path,
+                      const RunFigureOptions& options, const PngSettings& png) {
+  write_png(draw_run_figure(world, run, options), path, png);
+}
+
+Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px, int height_px) {
+  Figure fig(width_px, height_px);
+  std::vector<double> t, cross, speed, distance;
+  for (const auto& s : run.trajectory) {
+    t.push_back(s.t_s);
+    cross.push_back(s.phase == controller::DockPhase::kTravel ? 100.0 * s.cross_track_m : NAN);
+    speed.push_back(s.speed_mps);
+    distance.push_back(geom::distance(s.truth.position(), world.charger.position()));
+  }
+  fig.text(world.name + "  |  planner " + run.planner + "  |  " + result_line(run), 70, 26, 16, palette::kAxis,
+           Anchor::kLeft, true);
+  const double left = 80, right = width_px - 40.0, h = (height_px - 60.0) / 3.0;
+  fig.plot({left, 60 + 25, right, 60 + h - 25}, {{t, cross, palette::kPlan, "cross-track"}},
+           "Cross-track error while travelling", "time (s)", "cm");
+  fig.plot({left, 60 + h + 25, right, 60 + 2 * h - 25}, {{t, speed, palette::kTrajectory, "speed"}}, "Speed",
+           "time (s)", "m/s");
+  fig.plot({left, 60 + 2 * h + 25, right, 60 + 3 * h - 25}, {{t, distance, palette::kCharger, "distance"}},
+           "Distance to the charger", "time (s)", "m");
+  return fig.finish();
 }
 
 }  // namespace plantsim::render

@@ -70,6 +70,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.planner = planner.name();
   const Pose2 staging = worlds::staging_pose(world);
   const planner::PlanResult plan = planner.plan(world.start.position(), staging.position());
+  result.plan_stats = plan.stats;
   if (plan.status != planner::PlanStatus::kOk) {
     result.status = std::string(planner::to_string(plan.status));
     return result;

@@ -73,6 +73,7 @@ struct EpisodeResult {
   double driven_length_m = 0;    ///< ground truth
   double max_cross_track_m = 0;
   std::string planner;
+  planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
   std::vector<Vec2> plan;
   std::vector<TrajectorySample> trajectory;
 };

@@ -6,7 +6,12 @@
 #include <fstream>
 
 #include "planner/planner.h"
+#include "render/colormap.h"
+#include "render/comparison_figure.h"
+#include "render/figure.h"
 #include "render/palette.h"
+#include "render/report.h"
+#include "render/text.h"
 #include "render/png_io.h"
 #include "render/run_figure.h"
 #include "sim/episode.h"
@@ -61,6 +66,15 @@ TEST_F(RenderedRun, ObstacleColourAtRectangleCentres) {
   for (const auto& r : world_->obstacles) EXPECT_EQ(pixel_at(img, transform_, r.center()), palette::kObstacle);
 }
 
+// The driven path is coloured by speed: its pixels lie on the viridis colour map.
+bool on_viridis(Rgb c) {
+  for (int k = 0; k <= 1000; ++k) {
+    const Rgb v = viridis(k / 1000.0);
+    if (std::abs(v.r - c.r) <= 3 && std::abs(v.g - c.g) <= 3 && std::abs(v.b - c.b) <= 3) return true;
+  }
+  return false;
+}
+
 TEST_F(RenderedRun, TrajectoryColourAlongTheDrivenPath) {
   ASSERT_TRUE(run_->docked);
   const Image img = read_png(path_);
@@ -76,7 +90,7 @@ TEST_F(RenderedRun, TrajectoryColourAlongTheDrivenPath) {
         geom::distance(p, world_->charger.position()) < 1.5)
       continue;
     ++checked;
-    hits += pixel_at(img, transform_, p) == palette::kTrajectory;
+    hits += on_viridis(pixel_at(img, transform_, p));
   }
   EXPECT_GT(checked, 50);
   EXPECT_EQ(hits, checked);
@@ -85,6 +99,67 @@ TEST_F(RenderedRun, TrajectoryColourAlongTheDrivenPath) {
 TEST_F(RenderedRun, ChargerWhereItBelongs) {
   const Image img = read_png(path_);
   EXPECT_EQ(pixel_at(img, transform_, worlds::charger_body(*world_).center), palette::kCharger);
+}
+
+TEST(Text, ProducesInkInsideItsBoxAndNoneOutside) {
+  Image img;
+  img.width = 300;
+  img.height = 80;
+  img.rgba.assign(300 * 80 * 4, 255);
+  TextRenderer& tr = shared_text_renderer();
+  const TextBox box = tr.draw(img, "Docked 0.4 cm", 20, 50, 24, {0, 0, 0});
+  EXPECT_EQ(box.x0, tr.measure("Docked 0.4 cm", 20, 50, 24).x0);
+  int inside = 0, outside = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const bool ink = img.at(x, y).r < 128;
+      const bool in_box = x >= box.x0 && x < box.x1 && y >= box.y0 && y < box.y1;
+      (in_box ? inside : outside) += ink;
+    }
+  EXPECT_GT(inside, 200);
+  EXPECT_EQ(outside, 0);
+  EXPECT_LT(box.y1, 50 + 8);   // descenders only just below the baseline
+  EXPECT_GT(box.y0, 50 - 24);  // no taller than the size
+  const TextBox centred = tr.measure("abc", 150, 50, 24, Anchor::kCenter);
+  EXPECT_NEAR(0.5 * (centred.x0 + centred.x1), 150, 3);
+}
+
+TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
+  const auto dir = std::filesystem::temp_directory_path() / ("plantsim_report_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  write_png(draw_run_figure(*world_, *run_), (dir / "run.png").string());
+  write_png(draw_time_plots(*world_, *run_), (dir / "timeplots.png").string());
+  { std::ofstream((dir / "summary.json").string()) << "{}"; }
+  Report r{"test <report>", "plantsim run x", {"a"}, {{"1"}}, {{"run.png", "run"}, {"timeplots.png", "plots"}},
+           {"summary.json"}, "notes & more"};
+  write_report(r, (dir / "report.html").string());
+  std::ifstream f((dir / "report.html").string());
+  const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("test &lt;report&gt;"), std::string::npos);  // escaped
+  const auto refs = referenced_files(html);
+  EXPECT_EQ(refs.size(), 3u);
+  for (const auto& ref : refs) {
+    EXPECT_TRUE(std::filesystem::exists(dir / ref)) << ref;
+    EXPECT_EQ(ref.find("://"), std::string::npos) << "offline: no remote links";
+  }
+  const Image plots = read_png((dir / "timeplots.png").string());
+  EXPECT_EQ(plots.width, 1280);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_F(RenderedRun, ComparisonPanelsShareTheScale) {
+  ComparisonPanel a{"vg", *run_, {}, true}, b{"vg-traditional", *run_, {}, true};
+  const Image img = draw_comparison(*world_, {a, b}, "test", 1600, 500);
+  EXPECT_EQ(img.width, 1600);
+  EXPECT_EQ(img.height, 550);
+  // Panel 0's box as draw_comparison lays it out (title row 50 px, margins 60/62/20/45);
+  // panel 1 is the same box 800 pixels to the right, so every obstacle centre repeats there.
+  const PixelTransform t = PixelTransform::fit(world_->floor, 60, 550 - (50 + 500 - 45), 800 - 20, 550 - (50 + 62), 550);
+  for (const auto& r : world_->obstacles) {
+    const geom::Vec2 p = t.to_pixel(r.center());
+    EXPECT_EQ(img.at(static_cast<int>(p.x), static_cast<int>(p.y)), palette::kObstacle);
+    EXPECT_EQ(img.at(static_cast<int>(p.x) + 800, static_cast<int>(p.y)), palette::kObstacle);
+  }
 }
 
 TEST(Png, ReadingGarbageThrows) {

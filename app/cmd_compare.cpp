@@ -1,0 +1,90 @@
+// `plantsim compare WORLD --planners a,b,...`: every planner on the same world, driven and
+// docked, drawn side by side at the same scale; with --graph each panel shows its graph (the
+// source document's Fig. 5 / Fig. 6 when the planners are vg and vg-traditional).
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.h"
+#include "app/episode_outputs.h"
+#include "planner/planner.h"
+#include "render/comparison_figure.h"
+#include "render/png_io.h"
+#include "render/report.h"
+#include "sim/episode_config_json.h"
+#include "util/atomic_file.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::app {
+
+std::function<int()> add_compare_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
+  struct Options {
+    std::string world;
+    std::vector<std::string> planners = {"vg", "vg-traditional", "grid"};
+    std::string out;
+    std::string title;
+    std::string config;
+    bool graph = false;
+    bool plan_only = false;
+  };
+  auto opt = std::make_shared<Options>();
+  cmd->add_option("world", opt->world, "World file")->required();
+  cmd->add_option("--planners", opt->planners, "Planners to compare (comma separated)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(planner::planner_names()));
+  cmd->add_option("--out", opt->out, "Output folder (default results/<world name>_compare)");
+  cmd->add_option("--title", opt->title, "Figure title");
+  cmd->add_option("--config", opt->config, "Episode parameters (JSON)");
+  cmd->add_flag("--graph", opt->graph, "Draw each planner's graph");
+  cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
+  return [opt, cmd]() {
+    const worlds::World world = worlds::load_world(opt->world);
+    const std::string out_dir = opt->out.empty() ? "results/" + world.name + "_compare" : opt->out;
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec || !std::filesystem::is_directory(out_dir))
+      throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+    const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    std::vector<render::ComparisonPanel> panels;
+    render::Report report;
+    report.headers = metric_headers();
+    bool all_ok = true;
+    for (const std::string& name : opt->planners) {
+      render::ComparisonPanel panel;
+      panel.label = name;
+      panel.drove = !opt->plan_only;
+      if (opt->plan_only) {
+        auto p = planner::make_planner(name, planner::planner_input(world, false));
+        const planner::PlanResult r = p->plan(world.start.position(), world.charger.position());
+        panel.run.planner = name;
+        panel.run.status = std::string(planner::to_string(r.status));
+        panel.run.plan = r.path;
+        panel.run.path_length_m = r.length;
+        panel.run.plan_stats = r.stats;
+        all_ok = all_ok && r.status == planner::PlanStatus::kOk;
+        if (opt->graph) panel.graph_edges = p->graph_edges();
+      } else {
+        auto p = planner::make_planner(name, planner::planner_input(world, true));
+        panel.run = sim::run_episode(world, *p, config);
+        all_ok = all_ok && panel.run.docked;
+        if (opt->graph) panel.graph_edges = p->graph_edges();
+      }
+      report.rows.push_back(metric_row(panel.run, world.name));
+      std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m << " m, plan "
+                << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms << " ms\n";
+      panels.push_back(std::move(panel));
+    }
+    const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;
+    render::write_png(render::draw_comparison(world, panels, title), out_dir + "/comparison.png");
+    report.title = title;
+    report.command = command_line(cmd);
+    report.figures = {{"comparison.png", title}};
+    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position; nothing driven."
+                                  : "Each planner plans to the staging pose; the robot drives and docks in the simulation.";
+    render::write_report(report, out_dir + "/report.html");
+    return all_ok ? kExitOk : kExitFailed;
+  };
+}
+
+}  // namespace plantsim::app

@@ -1,0 +1,92 @@
+// Render timings; the baseline of every case is "render only" at the same supersampling.
+#include "bench/render_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "bench/bench_report.h"
+#include "render/gl_canvas.h"
+#include "render/layers.h"
+#include "render/palette.h"
+#include "render/png_io.h"
+#include "render/png_pipeline.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+int run_render_bench(const std::string& shared_data, bool quick) {
+  const worlds::World w = worlds::load_world(shared_data + "/worlds/world_N1000.json");
+  // A 2000-point trajectory across the floor: a slow wave from the start to the charger.
+  std::vector<sim::TrajectorySample> traj;
+  std::vector<geom::Vec2> plan;
+  for (int i = 0; i < 2000; ++i) {
+    const double f = i / 1999.0;
+    const geom::Vec2 p = w.start.position() + f * (w.charger.position() - w.start.position()) +
+                         geom::Vec2{0, 3.0 * std::sin(12 * f)};
+    traj.push_back({0.1 * i, {p.x, p.y, 0}, {p.x, p.y, 0}, 0.6 * std::fabs(std::sin(5 * f)), 0, controller::DockPhase::kTravel});
+    if (i % 100 == 0) plan.push_back(p);
+  }
+  const int frames = quick ? 10 : 40;
+  for (int ss : {1, 2}) {
+    render::GlCanvas canvas(1280, 720, ss);
+    canvas.set_transform(render::PixelTransform::fit(w.floor, 10, 10, 1270, 710, 720));
+    auto draw = [&]() {
+      canvas.clear(render::palette::kBackground);
+      render::draw_floor(canvas, w);
+      render::draw_obstacles(canvas, w);
+      render::draw_plan(canvas, plan);
+      render::draw_trajectory_by_speed(canvas, traj, w.robot.max_speed_mps);
+      render::draw_start(canvas, w);
+      render::draw_charger(canvas, w);
+      render::draw_footprint(canvas, w.robot, traj.back().truth, render::palette::kRobot);
+    };
+    auto fps = [&](auto&& body) {
+      body();  // warm-up (shader compilation in llvmpipe)
+      double best = 1e9;
+      for (int r = 0; r < 3; ++r) {
+        const auto t0 = Clock::now();
+        for (int i = 0; i < frames; ++i) body();
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count() / frames);
+      }
+      return 1.0 / best;
+    };
+    const std::string tag = "1280x720_N1000_2000pts_ss" + std::to_string(ss);
+    const Measure render_only{tag + "/render_only_fps", fps([&] { draw(); canvas.finish(); }), "frames/s"};
+    report("render", render_only);
+    report("render", {tag + "/render_readback_fps", fps([&] { draw(); (void)canvas.read(); }), "frames/s"}, render_only);
+    report("render", {tag + "/render_png_default_fps", fps([&] { draw(); (void)render::encode_png(canvas.read()); }), "frames/s"},
+           render_only);
+    report("render",
+           {tag + "/render_png_fast_fps", fps([&] { draw(); (void)render::encode_png(canvas.read(), render::PngSettings::fast()); }),
+            "frames/s"},
+           render_only);
+    // Frame sequences (animations): the next frame is drawn while the last is encoded.
+    {
+      auto pipelined = [&] {
+        render::PngPipeline pipe(render::PngSettings::fast(), 2, [](const std::string&, const std::string&) {});
+        for (int i = 0; i < frames; ++i) {
+          draw();
+          pipe.push(canvas.read(), "");
+        }
+        pipe.close();
+      };
+      pipelined();
+      double best = 1e9;
+      for (int r = 0; r < 3; ++r) {
+        const auto t0 = Clock::now();
+        pipelined();
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count() / frames);
+      }
+      report("render", {tag + "/render_png_fast_pipelined_fps", 1.0 / best, "frames/s"}, render_only);
+    }
+  }
+  return 0;
+}
+
+}  // namespace plantsim::bench

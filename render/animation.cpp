@@ -1,0 +1,56 @@
+// Frames by the same layers as the run figure, at one canvas size, then ffmpeg if present.
+#include "render/animation.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "render/figure.h"
+#include "render/layers.h"
+#include "render/palette.h"
+#include "render/png_io.h"
+#include "render/png_pipeline.h"
+
+namespace plantsim::render {
+
+std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run, const std::string& out_dir,
+                            const AnimationOptions& o) {
+  const std::string frames = out_dir + "/frames";
+  std::filesystem::create_directories(frames);
+  int index = 0;
+  double next = 0;
+  PngPipeline writer(PngSettings::fast());  // encodes on the second core while frames are drawn
+  for (std::size_t i = 0; i < run.trajectory.size(); ++i) {
+    const bool last = i + 1 == run.trajectory.size();
+    if (run.trajectory[i].t_s < next && !last) continue;
+    next = run.trajectory[i].t_s + o.frame_every_s;
+    Figure fig(o.width_px, o.height_px, 1);
+    const PixelTransform t = fig.world_panel(world.floor, {50, 40, o.width_px - 20.0, o.height_px - 40.0});
+    GlCanvas& c = fig.canvas();
+    draw_floor(c, world);
+    draw_obstacles(c, world);
+    draw_moving(c, world, run.trajectory[i].t_s);
+    draw_plan(c, run.plan);
+    draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1);
+    draw_start(c, world);
+    draw_charger(c, world);
+    draw_footprint(c, world.robot, run.trajectory[i].truth, palette::kRobot);
+    fig.world_axes(world.floor, t);
+    char title[160];
+    std::snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(), run.trajectory[i].t_s,
+                  std::string(controller::to_string(run.trajectory[i].phase)).c_str());
+    fig.text(title, 50, 26, 16, palette::kAxis, Anchor::kLeft, true);
+    char name[64];
+    std::snprintf(name, sizeof name, "/frame_%04d.png", index++);
+    writer.push(fig.finish(), frames + name);
+  }
+  writer.close();
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) return "";
+  const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(o.frames_per_second) + " -i '" +
+                          frames + "/frame_%04d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" +
+                          out_dir + "/animation.mp4.tmp.mp4' && mv '" + out_dir + "/animation.mp4.tmp.mp4' '" + out_dir +
+                          "/animation.mp4'";
+  return std::system(cmd.c_str()) == 0 ? "animation.mp4" : "";
+}
+
+}  // namespace plantsim::render

@@ -1,0 +1,52 @@
+// Grid of panels, at most three a row.
+#include "render/comparison_figure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/layers.h"
+#include "render/palette.h"
+#include "render/run_figure.h"
+
+namespace plantsim::render {
+
+Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
+                      int width_px, int panel_height_px) {
+  const int columns = std::max(1, std::min<int>(3, static_cast<int>(panels.size())));
+  const int rows = std::max(1, static_cast<int>((panels.size() + columns - 1) / columns));
+  const int top = 50;
+  Figure fig(width_px, top + rows * panel_height_px);
+  fig.text(title, 20, 32, 20, palette::kAxis, Anchor::kLeft, true);
+  const double cell_w = static_cast<double>(width_px) / columns;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const ComparisonPanel& p = panels[i];
+    const double x0 = cell_w * (i % columns), y0 = top + panel_height_px * static_cast<double>(i / columns);
+    const PixelBox box{x0 + 60, y0 + 62, x0 + cell_w - 20, y0 + panel_height_px - 45};
+    const PixelTransform t = fig.world_panel(world.floor, box);
+    GlCanvas& c = fig.canvas();
+    draw_floor(c, world);
+    draw_obstacles(c, world);
+    if (!p.graph_edges.empty()) draw_graph(c, p.graph_edges);
+    draw_plan(c, p.run.plan);
+    if (p.drove) {
+      draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);
+      if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot);
+    }
+    draw_start(c, world);
+    draw_charger(c, world);
+    fig.world_axes(world.floor, t);
+    char line1[256], line2[256];
+    std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms (build %.2f + query %.2f)", p.label.c_str(),
+                  p.run.path_length_m, p.run.plan_stats.build_ms + p.run.plan_stats.query_ms, p.run.plan_stats.build_ms,
+                  p.run.plan_stats.query_ms);
+    std::snprintf(line2, sizeof line2, "graph %lld vertices, %lld edges  |  %s", static_cast<long long>(p.run.plan_stats.vertices),
+                  static_cast<long long>(p.run.plan_stats.edges),
+                  p.drove ? result_line(p.run).c_str() : p.run.status.c_str());
+    fig.text(line1, x0 + 60, y0 + 22, 15, palette::kAxis, Anchor::kLeft, true);
+    fig.text(line2, x0 + 60, y0 + 42, 13, palette::kAxis);
+  }
+  return fig.finish();
+}
+
+}  // namespace plantsim::render

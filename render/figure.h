@@ -1,0 +1,76 @@
+// A figure: one GL canvas for the drawing and text composited over it when finished, plus the
+// pieces every plantsim figure shares: panels that map a world or a plot into a pixel box,
+// axes with ticks and numbers, titles, legends and colour bars.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render/gl_canvas.h"
+#include "render/text.h"
+
+namespace plantsim::render {
+
+/// A box of pixels, row 0 at the top.
+struct PixelBox {
+  double left = 0, top = 0, right = 0, bottom = 0;
+  double width() const { return right - left; }
+  double height() const { return bottom - top; }
+};
+
+struct LegendEntry {
+  Rgb colour;
+  std::string label;
+};
+
+class Figure {
+ public:
+  Figure(int width, int height, int supersample = 2);
+  GlCanvas& canvas() { return canvas_; }
+  int width() const { return canvas_.width(); }
+  int height() const { return canvas_.height(); }
+
+  /// Text is queued and drawn over the picture by finish().
+  void text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor = Anchor::kLeft,
+            bool bold = false);
+
+  /// Fits `view` (world metres) into `box` keeping the aspect ratio; sets the canvas transform.
+  PixelTransform world_panel(const geom::Rect& view, const PixelBox& box);
+  /// Ticks and numbers along the bottom and left of a world panel, with axis labels.
+  void world_axes(const geom::Rect& view, const PixelTransform& t);
+
+  /// A colour bar of viridis from lo to hi, vertical, in `box`, with ticks and a label.
+  void colour_bar(const PixelBox& box, double lo, double hi, const std::string& label);
+  /// A legend of coloured swatches, one row each, starting at (x, y).
+  void legend(double x, double y, const std::vector<LegendEntry>& entries);
+
+  /// A line plot of (x, y) series in `box` with its own axes; series share the scales.
+  struct Series {
+    std::vector<double> x, y;
+    Rgb colour;
+    std::string label;
+  };
+  void plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
+            const std::string& x_label, const std::string& y_label);
+
+  /// Reads back the drawing and composites the queued text.
+  Image finish();
+
+ private:
+  struct QueuedText {
+    std::string s;
+    double x, y;
+    int size;
+    Rgb colour;
+    Anchor anchor;
+    bool bold;
+  };
+  GlCanvas canvas_;
+  std::vector<QueuedText> texts_;
+};
+
+/// The shared text renderer (fonts are loaded once per process).
+TextRenderer& shared_text_renderer();
+
+}  // namespace plantsim::render

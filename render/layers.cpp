@@ -1,0 +1,103 @@
+// Layer drawing.
+#include "render/layers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/colormap.h"
+#include "render/palette.h"
+
+namespace plantsim::render {
+
+void draw_floor(GlCanvas& c, const worlds::World& w) {
+  c.fill_rect(w.floor, palette::kFloor);
+  // Grid every 1, 2, 5, 10 ... metres, whichever keeps lines at least 8 pixels apart.
+  double step = 1.0;
+  for (double s : {1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0})
+    if (s * c.transform().scale >= 8.0) {
+      step = s;
+      break;
+    }
+  for (double x = std::ceil(w.floor.xmin / step) * step; x <= w.floor.xmax; x += step)
+    c.polyline({{x, w.floor.ymin}, {x, w.floor.ymax}}, 1.0, palette::kGrid);
+  for (double y = std::ceil(w.floor.ymin / step) * step; y <= w.floor.ymax; y += step)
+    c.polyline({{w.floor.xmin, y}, {w.floor.xmax, y}}, 1.0, palette::kGrid);
+}
+
+void draw_obstacles(GlCanvas& c, const worlds::World& w) {
+  const double inflation = w.planning_inflation_m();
+  for (const auto& r : w.obstacles) {
+    const geom::Rect m = r.inflated(inflation);
+    c.fill_rect({std::max(m.xmin, w.floor.xmin), std::max(m.ymin, w.floor.ymin), std::min(m.xmax, w.floor.xmax),
+                 std::min(m.ymax, w.floor.ymax)},
+                palette::kInflation);
+  }
+  for (const auto& r : w.obstacles) c.fill_rect(r, palette::kObstacle);
+}
+
+void draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges) {
+  for (const auto& [a, b] : edges) c.polyline({a, b}, 0.7, palette::kGraph);
+}
+
+void draw_charger(GlCanvas& c, const worlds::World& w) {
+  const worlds::ChargerBody cb = worlds::charger_body(w);
+  c.polyline({worlds::staging_pose(w).position(), cb.center}, 1.5, palette::kCharger);
+  // Never smaller than a few pixels, so that it stays visible on large floors.
+  const double min_half_m = 3.0 / c.transform().scale;
+  c.fill_box(cb.center, std::max(cb.half_depth_m, min_half_m), std::max(cb.half_width_m, min_half_m), cb.yaw,
+             palette::kCharger);
+}
+
+void draw_start(GlCanvas& c, const worlds::World& w) {
+  c.fill_disk(w.start.position(), std::max(0.35 * w.robot.radius_m, 4.0 / c.transform().scale), palette::kStart);
+}
+
+void draw_moving(GlCanvas& c, const worlds::World& w, double t_s) {
+  for (const auto& m : w.moving) {
+    if (m.waypoints.size() > 1) c.polyline(m.waypoints, 1.0, palette::kMoving);
+    c.fill_rect(m.box_at(t_s), palette::kMoving);
+  }
+}
+
+void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan) { c.polyline(plan, 2.0, palette::kPlan); }
+
+void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
+                              std::size_t upto) {
+  const std::size_t n = std::min(upto, t.size());
+  std::vector<Vec2> pts;
+  std::vector<Rgb> colours;
+  pts.reserve(n);
+  colours.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Successive samples closer than half a pixel add nothing but draw calls.
+    if (!pts.empty() && i + 1 < n && geom::distance(pts.back(), t[i].truth.position()) * c.transform().scale < 0.5) continue;
+    if (!pts.empty()) colours.push_back(viridis(std::fabs(t[i].speed_mps) / max_speed_mps));
+    pts.push_back(t[i].truth.position());
+  }
+  c.coloured_polyline(pts, colours, 3.0);
+}
+
+void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour) {
+  if (robot.rectangular()) {
+    const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;
+    std::vector<Vec2> outline;
+    for (Vec2 k : {Vec2{hl, hw}, Vec2{-hl, hw}, Vec2{-hl, -hw}, Vec2{hl, -hw}, Vec2{hl, hw}})
+      outline.push_back(pose.position() + geom::rotate(k, pose.yaw));
+    c.polyline(outline, 1.2, colour);
+  } else {
+    c.ring(pose.position(), robot.radius_m, 1.2, colour);
+  }
+  c.polyline({pose.position(), pose.position() + robot.front_extent_m() * pose.heading()}, 1.2, colour);
+}
+
+void draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot, const std::vector<sim::TrajectorySample>& t,
+                     double every_s) {
+  double next = 0;
+  for (const auto& s : t)
+    if (s.t_s >= next) {
+      draw_footprint(c, robot, s.truth, palette::kFootprint);
+      next = s.t_s + every_s;
+    }
+}
+
+}  // namespace plantsim::render

@@ -1,0 +1,28 @@
+// The drawable layers of a world figure, each a free function on a canvas whose transform is
+// already set for the panel. Order of calls is the stacking order.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "render/gl_canvas.h"
+#include "sim/episode.h"
+
+namespace plantsim::render {
+
+void draw_floor(GlCanvas& c, const worlds::World& w);                  ///< floor and metre grid
+void draw_obstacles(GlCanvas& c, const worlds::World& w);              ///< margins, then obstacles
+void draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges);
+void draw_charger(GlCanvas& c, const worlds::World& w);                ///< block and approach axis
+void draw_start(GlCanvas& c, const worlds::World& w);
+void draw_moving(GlCanvas& c, const worlds::World& w, double t_s);     ///< routes and boxes at t
+void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan);
+/// The driven path, each segment coloured by speed on viridis from 0 to `max_speed_mps`.
+void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
+                              std::size_t upto = static_cast<std::size_t>(-1));
+/// Footprint outlines every `every_s` seconds of the trajectory.
+void draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot, const std::vector<sim::TrajectorySample>& t,
+                     double every_s);
+void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour);
+
+}  // namespace plantsim::render
