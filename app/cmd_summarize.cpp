@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "render/report.h"
 #include "util/atomic_file.h"
 
 namespace plantsim::app {
@@ -17,16 +18,25 @@ std::function<int()> add_summarize_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
+    std::string html;
+    std::vector<std::string> links;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("dirs", opt->dirs, "Run output folders")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Write here instead of stdout");
+  cmd->add_option("--html", opt->html, "Also write an HTML index with the metrics and every run's figure");
+  cmd->add_option("--link", opt->links, "Further reports to link from the index");
   return [opt]() {
     std::string md =
         "# plantsim results\n\n| world | planner | status | position error (cm) | heading error (deg) | "
         "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
     bool all_docked = true;
+    render::Report index;
+    index.title = "plantsim results";
+    index.headers = {"world", "planner", "status", "position error (cm)", "heading error (deg)", "collisions",
+                     "retries", "time (s)", "planned (m)", "driven (m)"};
+    const std::string html_base = opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
     for (const auto& d : opt->dirs) {
       std::ifstream f(d + "/summary.json");
       if (!f) throw std::invalid_argument(d + "/summary.json: no such file");
@@ -47,7 +57,25 @@ std::function<int()> add_summarize_command(CLI::App& app) {
                     j.value("time_s", 0.0), j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0),
                     link.c_str());
       md += row;
+      auto fmt = [](double v, int d) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%.*f", d, v);
+        return std::string(b);
+      };
+      index.rows.push_back({j.value("world", "?"), j.value("planner", "?"), j.value("status", "?"),
+                            fmt(100.0 * j.value("position_error_m", 0.0), 2), fmt(j.value("heading_error_deg", 0.0), 2),
+                            std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
+                            fmt(j.value("time_s", 0.0), 1), fmt(j.value("path_length_m", 0.0), 2),
+                            fmt(j.value("driven_length_m", 0.0), 2)});
+      const std::string rel = std::filesystem::relative(d, html_base.empty() ? "." : html_base).string();
+      index.figures.push_back({rel + "/run.png", j.value("world", "?") + ": " + j.value("status", "?")});
+      index.files.push_back(rel + "/report.html");
       all_docked = all_docked && j.value("docked", false);
+    }
+    if (!opt->html.empty()) {
+      for (const auto& l : opt->links)
+        index.files.push_back(std::filesystem::relative(l, html_base.empty() ? "." : html_base).string());
+      render::write_report(index, opt->html);
     }
     if (opt->out.empty()) {
       std::cout << md;
@@ -60,9 +88,20 @@ std::function<int()> add_summarize_command(CLI::App& app) {
 
 }  // namespace plantsim::app
 
+#include "planner/planner.h"
 #include "sim/episode_config_json.h"
 
 namespace plantsim::app {
+
+std::function<int()> add_planners_command(CLI::App& app) {
+  app.add_subcommand("planners", "Print the planner names, comma separated");
+  return []() {
+    std::string line;
+    for (const auto& n : planner::planner_names()) line += (line.empty() ? "" : ",") + n;
+    std::cout << line << "\n";
+    return kExitOk;
+  };
+}
 
 std::function<int()> add_config_command(CLI::App& app) {
   app.add_subcommand("config", "Print every episode parameter with its default, as a --config file");

@@ -22,5 +22,6 @@ std::function<int()> add_summarize_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_config_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
+std::function<int()> add_planners_command(CLI::App& app);
 
 }  // namespace plantsim::app

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_bench_command(app));
   remember(plantsim::app::add_config_command(app));
   remember(plantsim::app::add_compare_command(app));
+  remember(plantsim::app::add_planners_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

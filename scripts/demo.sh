@@ -1,19 +1,36 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds, and runs the demo episodes. Each run
-# writes results/<world>/{summary.json,trajectory.csv,run.png}; results/summary.md gathers them.
+# The main job: installs what is missing, builds, and runs the demo. Every run writes
+# results/<world>/{summary.json,trajectory.csv,run.png,timeplots.png,report.html}; the
+# comparisons write results/<name>/{comparison.png,report.html}; results/summary.md and
+# results/index.html gather them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install_deps.sh
 ./scripts/build.sh build -DCMAKE_BUILD_TYPE=Release
 mkdir -p results
-worlds=(worlds/examples/small_plant.json ../shared/data/worlds/world_N10.json ../shared/data/worlds/world_N50.json ../shared/data/worlds/world_N200.json)
 status=0
 dirs=()
-for w in "${worlds[@]}"; do
-  name=$(basename "$w" .json)
-  ./build/plantsim run "$w" --out "results/$name" || status=1
+run() {  # run NAME WORLD [options...]: results/NAME
+  local name=$1 w=$2; shift 2
+  ./build/plantsim run "$w" --out "results/$name" "$@" || status=1
   dirs+=("results/$name")
-done
-./build/plantsim summarize "${dirs[@]}" --out results/summary.md
-echo "demo: figures and summaries in results/ (overview: results/summary.md)"
+}
+run small_plant worlds/examples/small_plant.json --animate
+run small_plant_rect_robot worlds/examples/small_plant_rect_robot.json
+run corridor_crossing worlds/examples/corridor_crossing.json
+run parked_cart worlds/examples/parked_cart.json
+run world_N10 ../shared/data/worlds/world_N10.json
+run world_N50 ../shared/data/worlds/world_N50.json
+run world_N200 ../shared/data/worlds/world_N200.json
+run world_N50_noisy ../shared/data/worlds/world_N50.json --config configs/noisy_sensing.json
+
+# The source document's comparison (its Fig. 5 and Fig. 6), then every planner driven.
+./build/plantsim compare worlds/examples/small_plant.json --planners vg,vg-traditional --graph --plan-only \
+  --title "Fig. 5 vs Fig. 6: improved vs traditional visibility graph" --out results/fig5_vs_fig6 || status=1
+./build/plantsim compare ../shared/data/worlds/world_N50.json --planners "$(./build/plantsim planners)" \
+  --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
+
+./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
+  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html
+echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status
