@@ -52,10 +52,10 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--config", opt->config, "Controller, drive and sensing parameters (JSON, see docs/config.md)");
   cmd->add_flag("--animate", opt->animate, "Also write animation frames (and an MP4 when ffmpeg is installed)");
   return [opt, cmd]() {
-    worlds::World world = worlds::load_world(opt->world);
-    if (!opt->start.empty()) world.start = parse_pose(opt->start, "--start");
-    if (!opt->charger.empty()) world.charger = parse_pose(opt->charger, "--charger");
-    worlds::validate_world(world);
+    worlds::PoseOverrides overrides;
+    if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
+    if (!opt->charger.empty()) overrides.charger = parse_pose(opt->charger, "--charger");
+    const worlds::World world = worlds::load_world(opt->world, overrides);
     const std::string out_dir = opt->out.empty() ? "results/" + world.name : opt->out;
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);

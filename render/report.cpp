@@ -1,7 +1,6 @@
 // HTML generation with escaping.
 #include "render/report.h"
 
-#include <regex>
 
 #include "util/atomic_file.h"
 
@@ -62,9 +61,12 @@ void write_report(const Report& r, const std::string& path) { util::write_file_a
 
 std::vector<std::string> referenced_files(const std::string& html) {
   std::vector<std::string> out;
-  static const std::regex link(R"re((?:src|href)="([^"]+)")re");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), link); it != std::sregex_iterator(); ++it)
-    out.push_back((*it)[1].str());
+  for (const std::string attribute : {"src=\"", "href=\""}) {
+    for (std::size_t at = html.find(attribute); at != std::string::npos; at = html.find(attribute, at + 1)) {
+      const std::size_t begin = at + attribute.size(), end = html.find('"', begin);
+      if (end != std::string::npos) out.push_back(html.substr(begin, end - begin));
+    }
+  }
   return out;
 }
 

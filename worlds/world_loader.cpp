@@ -12,6 +12,7 @@
 
 #include "geometry/predicates.h"
 #include "worlds/charger_placement.h"
+#include "worlds/ros_map.h"
 #include "worlds/world_limits.h"
 
 namespace plantsim::worlds {
@@ -190,6 +191,8 @@ World read_plain_schema(const json& doc, const FieldReader& in, const std::strin
   return w;
 }
 
+}  // namespace
+
 void check_pose_free(const World& w, const Pose2& pose, const std::string& field) {
   const double r = w.robot.radius_m;
   const Vec2 p = pose.position();
@@ -207,6 +210,8 @@ void check_pose_free(const World& w, const Pose2& pose, const std::string& field
                            ") is inside or overlaps obstacle " + std::to_string(i));
   }
 }
+
+namespace {
 
 std::string read_file(const std::string& path) {
   std::error_code ec;
@@ -266,6 +271,18 @@ World parse_world_json(const std::string& text, const std::string& source) {
   return w;
 }
 
-World load_world(const std::string& path) { return parse_world_json(read_file(path), path); }
+World load_world(const std::string& path, const PoseOverrides& overrides) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  World w;
+  if (ext == ".yaml" || ext == ".yml") {
+    w = world_from_ros_map(load_ros_map(path), stem_of(path), overrides.start, overrides.charger);
+  } else {
+    w = parse_world_json(read_file(path), path);
+    if (overrides.start) w.start = *overrides.start;
+    if (overrides.charger) w.charger = *overrides.charger;
+    if (overrides.start || overrides.charger) validate_world(w);
+  }
+  return w;
+}
 
 }  // namespace plantsim::worlds

@@ -3,6 +3,7 @@
 // charger). Every problem is reported as a WorldError naming the file and the field.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "worlds/world.h"
@@ -10,11 +11,22 @@
 
 namespace plantsim::worlds {
 
-/// Loads and validates a world file. Throws WorldError on any problem.
-World load_world(const std::string& path);
+/// Poses the user gives on the command line; for a ROS map they replace automatic placement.
+struct PoseOverrides {
+  std::optional<Pose2> start;
+  std::optional<Pose2> charger;
+};
+
+/// Loads and validates a world file: plantsim JSON, a plain benchmark world, or a ROS
+/// map_server YAML (.yaml/.yml). Throws WorldError on any problem.
+World load_world(const std::string& path, const PoseOverrides& overrides = {});
 
 /// Parses and validates world JSON text; `source` names it in messages.
 World parse_world_json(const std::string& text, const std::string& source);
+
+/// Throws WorldError (naming `field`) unless the robot's footprint at `pose` lies inside the
+/// floor and clear of every obstacle.
+void check_pose_free(const World& world, const Pose2& pose, const std::string& field);
 
 /// Checks a world for consistency (finite numbers, positive sizes, robot fits, start and
 /// charger free of obstacles and inside the floor). Throws WorldError.

@@ -1,0 +1,97 @@
+// ROS map_server maps: thresholds and modes, merging into rectangles, automatic charger and
+// start placement, bad files, and docking on both shared maps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "planner/planner.h"
+#include "sim/episode.h"
+#include "test_paths.h"
+#include "worlds/ros_map.h"
+#include "worlds/world_error.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::worlds {
+namespace {
+
+class TinyMaps : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("plantsim_ros_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const auto p = (dir_ / name).string();
+    std::ofstream(p) << text;
+    return p;
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(TinyMaps, TrinaryNegateAndRawModes) {
+  // One row: black (occupied), white (free), mid grey (unknown), near-white (free at 0.196).
+  write("row.pgm", "P2\n# a comment\n4 1\n255\n0 255 128 210\n");
+  const std::string yaml = "image: row.pgm\nresolution: 0.5\norigin: [1.0, 2.0, 0.0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  const RosMap m = load_ros_map(write("row.yaml", yaml + "negate: 0\n"));
+  EXPECT_EQ(std::string(m.grid.cells.begin(), m.grid.cells.end()), "@.@.");
+  EXPECT_EQ(m.occupied, 1u);
+  EXPECT_EQ(m.unknown, 1u);
+  EXPECT_EQ(m.free, 2u);
+  const RosMap n = load_ros_map(write("neg.yaml", yaml + "negate: 1\n"));
+  EXPECT_EQ(std::string(n.grid.cells.begin(), n.grid.cells.end()), ".@@@");  // white is occupied when negated
+  write("raw.pgm", "P2\n4 1\n255\n0 100 50 10\n");
+  const RosMap r = load_ros_map(write("raw.yaml", "image: raw.pgm\nresolution: 0.5\norigin: [0, 0, 0]\noccupied_thresh: 0.65\n"
+                                                  "free_thresh: 0.196\nmode: raw\n"));
+  EXPECT_EQ(std::string(r.grid.cells.begin(), r.grid.cells.end()), ".@@.");
+}
+
+TEST_F(TinyMaps, BadFilesNameFileAndField) {
+  auto expect = [](const std::string& path, const std::string& needle) {
+    try {
+      load_ros_map(path);
+      ADD_FAILURE() << path;
+    } catch (const WorldError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  expect(write("a.yaml", "image: none.pgm\nresolution: 0.05\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "none.pgm: cannot be opened");
+  expect(write("b.yaml", "image: x.pgm\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"), "field 'resolution': missing");
+  expect(write("c.yaml", "image: x.pgm\nresolution: -1\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "field 'resolution': must be positive");
+  expect(write("d.yaml", "image: x.pgm\nresolution: 1\norigin: [0,0,0.5]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "rotated map");
+  write("short.pgm", "P5\n10 10\n255\nabc");
+  expect(write("e.yaml", "image: short.pgm\nresolution: 1\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "file ends before the last pixel");
+  expect(write("f.yaml", "[1, 2"), "malformed YAML");
+}
+
+TEST(SharedRosMaps, MergedIntoFewRectanglesCoveringTheBlockedArea) {
+  for (const char* name : {"depot", "tb3_sandbox"}) {
+    const RosMap m = load_ros_map(test::shared_data(std::string("ros_maps/") + name + ".yaml"));
+    const World w = load_world(test::shared_data(std::string("ros_maps/") + name + ".yaml"));
+    const std::size_t blocked = m.occupied + m.unknown;
+    double area = 0;
+    for (const auto& r : w.obstacles) area += r.width() * r.height();
+    EXPECT_NEAR(area, blocked * m.resolution_m * m.resolution_m, 1e-6 * blocked) << name;
+    EXPECT_LT(w.obstacles.size() * 4, blocked) << name << ": merging must reduce the count well below the pixels";
+    std::printf("%s: %zu occupied + %zu unknown pixels merged into %zu rectangles\n", name, m.occupied, m.unknown,
+                w.obstacles.size());
+  }
+}
+
+TEST(SharedRosMaps, AutomaticPlacementDocksOnBothMaps) {
+  for (const char* name : {"depot", "tb3_sandbox"}) {
+    const World w = load_world(test::shared_data(std::string("ros_maps/") + name + ".yaml"));
+    auto p = planner::make_planner("vg", planner::planner_input(w, true));
+    const sim::EpisodeResult r = sim::run_episode(w, *p, {});
+    EXPECT_TRUE(r.docked) << name << ": " << r.status;
+    EXPECT_EQ(r.collisions, 0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace plantsim::worlds

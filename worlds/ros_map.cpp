@@ -1,0 +1,324 @@
+// PGM (P5 binary, P2 text) and map_server YAML reading; charger placement.
+#include "worlds/ros_map.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/predicates.h"
+#include "worlds/charger_placement.h"
+#include "worlds/world_error.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::worlds {
+namespace {
+
+struct Pgm {
+  int width = 0, height = 0, max_value = 255;
+  std::vector<int> values;  // row-major, row 0 at the top
+};
+
+// Skips white space and '#' comments between PGM header fields.
+void skip_space(std::istream& in) {
+  for (;;) {
+    const int c = in.peek();
+    if (c == '#') {
+      std::string line;
+      std::getline(in, line);
+    } else if (std::isspace(c)) {
+      in.get();
+    } else {
+      return;
+    }
+  }
+}
+
+Pgm read_pgm(const std::string& path) {
+  if (std::filesystem::is_directory(path)) throw WorldError(path, "", "is a directory, expected a PGM image");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw WorldError(path, "", "cannot be opened (the YAML's 'image' must name a readable PGM file)");
+  std::string magic;
+  in >> magic;
+  if (magic != "P5" && magic != "P2") throw WorldError(path, "magic", "not a PGM image (expected P5 or P2)");
+  Pgm p;
+  skip_space(in);
+  in >> p.width;
+  skip_space(in);
+  in >> p.height;
+  skip_space(in);
+  in >> p.max_value;
+  if (!in || p.width <= 0 || p.height <= 0 || p.max_value <= 0 || p.max_value > 65535)
+    throw WorldError(path, "header", "bad width, height or maximum value");
+  if (static_cast<double>(p.width) * p.height > 64.0e6) throw WorldError(path, "header", "image too large (over 64 Mpixel)");
+  p.values.resize(static_cast<std::size_t>(p.width) * p.height);
+  if (magic == "P5") {
+    in.get();  // the single white-space byte after the header
+    const int bytes = p.max_value > 255 ? 2 : 1;
+    std::vector<unsigned char> raw(p.values.size() * bytes);
+    in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
+    if (in.gcount() != static_cast<std::streamsize>(raw.size())) throw WorldError(path, "pixels", "file ends before the last pixel");
+    for (std::size_t i = 0; i < p.values.size(); ++i)
+      p.values[i] = bytes == 1 ? raw[i] : (raw[2 * i] << 8) | raw[2 * i + 1];
+  } else {
+    for (int& v : p.values)
+      if (!(in >> v)) throw WorldError(path, "pixels", "file ends before the last pixel");
+  }
+  return p;
+}
+
+template <typename T>
+T yaml_value(const YAML::Node& doc, const std::string& key, const std::string& path) {
+  if (!doc[key]) throw WorldError(path, key, "missing");
+  try {
+    return doc[key].as<T>();
+  } catch (const YAML::Exception&) {
+    throw WorldError(path, key, "has the wrong type");
+  }
+}
+
+}  // namespace
+
+RosMap load_ros_map(const std::string& yaml_path) {
+  if (std::filesystem::is_directory(yaml_path)) throw WorldError(yaml_path, "", "is a directory, expected a map YAML");
+  YAML::Node doc;
+  try {
+    doc = YAML::LoadFile(yaml_path);
+  } catch (const YAML::BadFile&) {
+    throw WorldError(yaml_path, "", "cannot be opened for reading");
+  } catch (const YAML::Exception& e) {
+    throw WorldError(yaml_path, "", std::string("malformed YAML: ") + e.what());
+  }
+  if (!doc.IsMap()) throw WorldError(yaml_path, "", "expected a map_server YAML mapping");
+  RosMap m;
+  const std::string image = yaml_value<std::string>(doc, "image", yaml_path);
+  m.resolution_m = yaml_value<double>(doc, "resolution", yaml_path);
+  const auto origin = yaml_value<std::vector<double>>(doc, "origin", yaml_path);
+  const int negate = doc["negate"] ? yaml_value<int>(doc, "negate", yaml_path) : 0;
+  const double occupied_thresh = yaml_value<double>(doc, "occupied_thresh", yaml_path);
+  const double free_thresh = yaml_value<double>(doc, "free_thresh", yaml_path);
+  const std::string mode = doc["mode"] ? yaml_value<std::string>(doc, "mode", yaml_path) : "trinary";
+  if (!(m.resolution_m > 0) || !std::isfinite(m.resolution_m)) throw WorldError(yaml_path, "resolution", "must be positive");
+  if (origin.size() != 3 || !std::all_of(origin.begin(), origin.end(), [](double v) { return std::isfinite(v); }))
+    throw WorldError(yaml_path, "origin", "expected [x, y, yaw]");
+  if (origin[2] != 0.0) throw WorldError(yaml_path, "origin", "a rotated map (yaw != 0) is not supported");
+  if (!(free_thresh >= 0 && free_thresh <= occupied_thresh && occupied_thresh <= 1))
+    throw WorldError(yaml_path, "free_thresh", "needs 0 <= free_thresh <= occupied_thresh <= 1");
+  if (mode != "trinary" && mode != "scale" && mode != "raw") throw WorldError(yaml_path, "mode", "must be trinary, scale or raw");
+  m.origin = {origin[0], origin[1]};
+
+  const std::filesystem::path image_path = std::filesystem::path(image).is_absolute()
+                                               ? std::filesystem::path(image)
+                                               : std::filesystem::path(yaml_path).parent_path() / image;
+  const Pgm pgm = read_pgm(image_path.string());
+  m.grid.source = yaml_path;
+  m.grid.width = pgm.width;
+  m.grid.height = pgm.height;
+  m.grid.cells.resize(pgm.values.size());
+  for (std::size_t i = 0; i < pgm.values.size(); ++i) {
+    const double v = pgm.values[i];
+    bool occupied, free;
+    if (mode == "raw") {
+      occupied = v >= 100.0 * occupied_thresh && v <= 100;
+      free = v <= 100.0 * free_thresh;
+    } else {
+      const double p = negate ? v / pgm.max_value : (pgm.max_value - v) / pgm.max_value;
+      occupied = p > occupied_thresh;
+      free = p < free_thresh;
+    }
+    m.occupied += occupied;
+    m.free += free;
+    m.unknown += !occupied && !free;
+    m.grid.cells[i] = free ? '.' : '@';
+  }
+  return m;
+}
+
+std::optional<Pose2> place_charger_against_wall(const World& world, const std::function<bool(Vec2)>& staging_ok) {
+  // Candidates: positions a gap away from an obstacle's face or the floor's wall, facing it,
+  // spaced along each face; the valid one with the most room behind its staging pose wins.
+  const double gap = world.robot.front_extent_m() + world.charger_spec.depth_m + 0.02;
+  std::vector<Rect> faces = world.obstacles;
+  const Rect& f = world.floor;
+  faces.push_back({f.xmin - 1, f.ymin, f.xmin, f.ymax});
+  faces.push_back({f.xmax, f.ymin, f.xmax + 1, f.ymax});
+  faces.push_back({f.xmin, f.ymin - 1, f.xmax, f.ymin});
+  faces.push_back({f.xmin, f.ymax, f.xmax, f.ymax + 1});
+  std::optional<Pose2> best;
+  double best_room = -1;
+  World trial = world;
+  auto consider = [&](Vec2 p, double yaw) {
+    trial.charger = {p.x, p.y, yaw};
+    if (!docking_area_clear(trial)) return;
+    if (staging_ok && !staging_ok(staging_pose(trial).position())) return;
+    try {
+      check_pose_free(trial, trial.charger, "charger");
+    } catch (const WorldError&) {
+      return;
+    }
+    // Room: distance from the staging pose to the nearest obstacle, a proxy for easy access.
+    const Vec2 s = staging_pose(trial).position();
+    double room = std::min({s.x - f.xmin, f.xmax - s.x, s.y - f.ymin, f.ymax - s.y});
+    for (const Rect& o : world.obstacles) {
+      const double dx = std::max({o.xmin - s.x, 0.0, s.x - o.xmax}), dy = std::max({o.ymin - s.y, 0.0, s.y - o.ymax});
+      room = std::min(room, std::hypot(dx, dy));
+    }
+    if (room > best_room + 1e-9) {
+      best_room = room;
+      best = trial.charger;
+    }
+  };
+  // Along each face every 0.1 m, keeping clear of its ends by half the charger's width.
+  const double spacing = 0.1, inset = 0.5 * world.charger_spec.width_m;
+  for (const Rect& r : faces) {
+    for (double x = r.xmin + inset; x <= r.xmax - inset; x += spacing) {
+      consider({x, r.ymin - gap}, M_PI / 2);   // below the face, facing up
+      consider({x, r.ymax + gap}, -M_PI / 2);  // above, facing down
+    }
+    for (double y = r.ymin + inset; y <= r.ymax - inset; y += spacing) {
+      consider({r.xmin - gap, y}, 0.0);        // left of it, facing right
+      consider({r.xmax + gap, y}, M_PI);       // right of it, facing left
+    }
+  }
+  return best;
+}
+
+namespace {
+
+// Free pixels once blocked ones are grown by the planning inflation, labelled by connected
+// region (4-neighbours): the planner finds paths exactly within one region.
+struct Regions {
+  std::vector<int> label;  // -1 blocked
+  int largest = -1;
+};
+
+Regions free_regions(const RosMap& map, double inflation_m) {
+  const GridMap& g = map.grid;
+  // A square neighbourhood, as the planner's square-cornered inflation of each pixel reaches.
+  const int grow = static_cast<int>(std::ceil(inflation_m / map.resolution_m)) + 1;
+  Regions r;
+  r.label.assign(g.cells.size(), 0);
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      if (g.at(x, y) == '.') continue;
+      for (int dy = -grow; dy <= grow; ++dy)
+        for (int dx = -grow; dx <= grow; ++dx)
+          if (g.inside(x + dx, y + dy)) r.label[static_cast<std::size_t>(y + dy) * g.width + x + dx] = -1;
+    }
+  int next = 1;
+  std::size_t largest_size = 0;
+  std::vector<std::size_t> queue;
+  for (std::size_t start = 0; start < r.label.size(); ++start) {
+    if (r.label[start] != 0) continue;
+    queue.assign(1, start);
+    r.label[start] = next;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int x = static_cast<int>(queue[head] % g.width), y = static_cast<int>(queue[head] / g.width);
+      for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+        if (!g.inside(x + dx, y + dy)) continue;
+        const std::size_t k = static_cast<std::size_t>(y + dy) * g.width + x + dx;
+        if (r.label[k] != 0) continue;
+        r.label[k] = next;
+        queue.push_back(k);
+      }
+    }
+    if (queue.size() > largest_size) {
+      largest_size = queue.size();
+      r.largest = next;
+    }
+    ++next;
+  }
+  return r;
+}
+
+int label_at(const RosMap& map, const Regions& r, Vec2 p) {
+  const int x = static_cast<int>(std::floor((p.x - map.origin.x) / map.resolution_m));
+  const int y = map.grid.height - 1 - static_cast<int>(std::floor((p.y - map.origin.y) / map.resolution_m));
+  return map.grid.inside(x, y) ? r.label[static_cast<std::size_t>(y) * map.grid.width + x] : -1;
+}
+
+// The free pixel farthest from the charger in the region of its staging pose.
+Pose2 farthest_start(const RosMap& map, const Regions& r, const World& w) {
+  const int region = label_at(map, r, staging_pose(w).position());
+  if (region <= 0) throw WorldError(map.grid.source, "start", "the charger's staging pose is not in free space; give --start");
+  const GridMap& g = map.grid;
+  Vec2 best;
+  double best_d = -1;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      if (r.label[static_cast<std::size_t>(y) * g.width + x] != region) continue;
+      const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5), map.origin.y + map.resolution_m * (g.height - y - 0.5)};
+      const double d = geom::distance(c, w.charger.position());
+      if (d > best_d) best_d = d, best = c;
+    }
+  const Vec2 to_charger = w.charger.position() - best;
+  return {best.x, best.y, std::atan2(to_charger.y, to_charger.x)};
+}
+
+// Without a wall to dock against (round or diagonal walls give none), the charger stands
+// free where the largest region is most open, facing whichever way leaves room to dock.
+std::optional<Pose2> place_charger_in_the_open(const RosMap& map, const Regions& r, const World& w) {
+  const GridMap& g = map.grid;
+  // Multi-source breadth-first distance (in pixels) from everything outside the region.
+  std::vector<int> dist(g.cells.size(), -1);
+  std::vector<std::size_t> queue;
+  for (std::size_t k = 0; k < dist.size(); ++k)
+    if (r.label[k] != r.largest) dist[k] = 0, queue.push_back(k);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int x = static_cast<int>(queue[head] % g.width), y = static_cast<int>(queue[head] / g.width);
+    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      if (!g.inside(x + dx, y + dy)) continue;
+      const std::size_t k = static_cast<std::size_t>(y + dy) * g.width + x + dx;
+      if (dist[k] >= 0) continue;
+      dist[k] = dist[queue[head]] + 1;
+      queue.push_back(k);
+    }
+  }
+  // The most open pixels first (the queue ends with them).
+  for (std::size_t i = queue.size(); i-- > 0 && i + 50 > queue.size();) {
+    const int x = static_cast<int>(queue[i] % g.width), y = static_cast<int>(queue[i] / g.width);
+    const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5), map.origin.y + map.resolution_m * (g.height - y - 0.5)};
+    World trial = w;
+    for (int k = 0; k < 8; ++k) {
+      trial.charger = {c.x, c.y, geom::wrap_angle(k * M_PI / 4)};
+      if (docking_area_clear(trial) && label_at(map, r, staging_pose(trial).position()) == r.largest) return trial.charger;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+World world_from_ros_map(const RosMap& map, const std::string& name, std::optional<Pose2> start,
+                         std::optional<Pose2> charger) {
+  World w;
+  w.name = name;
+  w.source = map.grid.source;
+  const double res = map.resolution_m;
+  w.floor = {map.origin.x, map.origin.y, map.origin.x + res * map.grid.width, map.origin.y + res * map.grid.height};
+  for (const Rect& r : merge_blocked_cells(map.grid, [](char c) { return c == '@'; }))
+    w.obstacles.push_back({map.origin.x + res * r.xmin, map.origin.y + res * r.ymin, map.origin.x + res * r.xmax,
+                           map.origin.y + res * r.ymax});
+  const Regions regions = free_regions(map, w.planning_inflation_m());
+  if (charger) {
+    w.charger = *charger;
+  } else {
+    // In the largest free region, so that most of the map can reach it.
+    auto placed = place_charger_against_wall(w, [&](Vec2 s) { return label_at(map, regions, s) == regions.largest; });
+    if (!placed) placed = place_charger_in_the_open(map, regions, w);
+    if (!placed) throw WorldError(map.grid.source, "charger", "no place leaves room to dock; give --charger");
+    w.charger = *placed;
+  }
+  if (start) {
+    w.start = *start;
+  } else {
+    w.start = farthest_start(map, regions, w);
+  }
+  validate_world(w);
+  return w;
+}
+
+}  // namespace plantsim::worlds
