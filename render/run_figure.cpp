@@ -21,7 +21,7 @@ std::string result_line(const sim::EpisodeResult& run) {
 Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& o,
                       PixelTransform* transform_out) {
   Figure fig(o.width_px, o.height_px);
-  const PixelBox panel{70, 56, o.width_px - 150.0, o.height_px - 50.0};
+  const PixelBox panel{70, 76, o.width_px - 150.0, o.height_px - 50.0};
   const PixelTransform t = fig.world_panel(world.floor, panel);
   GlCanvas& c = fig.canvas();
   draw_floor(c, world);
