@@ -23,5 +23,7 @@ std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_config_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
 std::function<int()> add_planners_command(CLI::App& app);
+std::function<int()> add_batch_command(CLI::App& app);
+std::function<int()> add_merge_command(CLI::App& app);
 
 }  // namespace plantsim::app

@@ -38,4 +38,15 @@ bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, do
   return true;
 }
 
+bool position_threatened(geom::Vec2 position, double radius_m, const std::vector<MovingBox>& boxes,
+                         double horizon_s, double step_s) {
+  for (const MovingBox& b : boxes)
+    for (double t = 0; t <= horizon_s; t += step_s) {
+      const geom::Vec2 d = t * b.velocity;
+      if (distance_to_box(position, {b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x, b.box.ymax + d.y}) < radius_m)
+        return true;
+    }
+  return false;
+}
+
 }  // namespace plantsim::controller

@@ -27,4 +27,9 @@ struct MovingBox {
 bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
                const std::vector<MovingBox>& boxes, double horizon_s = 3.0, double step_m = 0.05);
 
+/// True when some box, moving on at its velocity, comes within `radius_m` of `position` in
+/// the next `horizon_s` seconds (sampled every `step_s`).
+bool position_threatened(geom::Vec2 position, double radius_m, const std::vector<MovingBox>& boxes,
+                         double horizon_s, double step_s = 0.1);
+
 }  // namespace plantsim::controller

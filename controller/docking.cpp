@@ -64,6 +64,13 @@ DockingCommand DockingController::step(const DockingInput& in) {
         was_blocked_ = true;
         out.twist = {};
         out.blocked = true;
+        // Stopped in something's way (it does not yield): back out along the stretch just driven.
+        if (straight_run_m_ > 0.05 &&
+            position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
+                                in.nearby_obstacles, params_.yield_horizon_s)) {
+          out.twist = {-params_.yield_speed_mps, 0.0};
+          straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
+        }
         blocked_time_s_ += in.dt_s;
         if (blocked_time_s_ >= params_.replan_after_s) {
           out.replan_requested = true;
@@ -73,6 +80,8 @@ DockingCommand DockingController::step(const DockingInput& in) {
       }
       blocked_time_s_ = 0;
       was_blocked_ = false;
+      if (std::fabs(t.twist.omega_radps) < 0.05) straight_run_m_ += t.twist.v_mps * in.dt_s;
+      else straight_run_m_ = 0;
       if (t.goal_reached) {
         // At the staging pose the map's charger is placed in the odometry frame, once.
         dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);

@@ -36,6 +36,8 @@ struct DockingParams {
   double max_decel_mps2 = 1.0;          ///< braking, to size the arc checked ahead
   double check_extra_m = 0.4;           ///< checked beyond the braking distance
   double replan_after_s = 3.0;          ///< blocked this long: ask for a new plan
+  double yield_horizon_s = 3.0;         ///< something reaching the robot this soon: back away
+  double yield_speed_mps = 0.6;         ///< reversing speed when backing away
 };
 
 /// What the robot knows at one control step.
@@ -89,6 +91,7 @@ class DockingController {
   double approach_time_s_ = 0;
   double blocked_time_s_ = 0;
   bool was_blocked_ = false;
+  double straight_run_m_ = 0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
 };
 

@@ -30,17 +30,42 @@ PathPoint closest_point(const std::vector<Vec2>& path, Vec2 p, std::size_t from_
   return best;
 }
 
-Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m) {
+namespace {
+
+double turn_at(const std::vector<Vec2>& path, std::size_t vertex) {
+  const Vec2 a = path[vertex] - path[vertex - 1], b = path[vertex + 1] - path[vertex];
+  return std::fabs(std::atan2(geom::cross(a, b), geom::dot(a, b)));
+}
+
+}  // namespace
+
+Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m, double sharp_turn_rad,
+                 double corner_release_m) {
   if (path.size() < 2) return path.front();
   Vec2 cur = from.point;
-  double left = ahead_m;
+  double left = ahead_m, walked = 0;
   for (std::size_t i = from.segment; i + 1 < path.size(); ++i) {
     const double seg = geom::distance(cur, path[i + 1]);
     if (seg >= left && seg > 0) return cur + (left / seg) * (path[i + 1] - cur);
     left -= seg;
+    walked += seg;
     cur = path[i + 1];
+    if (i + 2 < path.size() && turn_at(path, i + 1) > sharp_turn_rad && walked > corner_release_m) return cur;
   }
   return path.back();
+}
+
+double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from, double sharp_turn_rad,
+                                double horizon_m) {
+  if (path.size() < 2) return 0;
+  Vec2 cur = from.point;
+  double walked = 0;
+  for (std::size_t i = from.segment; i + 1 < path.size() && walked < horizon_m; ++i) {
+    walked += geom::distance(cur, path[i + 1]);
+    cur = path[i + 1];
+    if (i + 2 < path.size() && turn_at(path, i + 1) > sharp_turn_rad) return walked;
+  }
+  return walked;
 }
 
 double remaining_length(const std::vector<Vec2>& path, const PathPoint& from) {

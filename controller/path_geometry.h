@@ -24,8 +24,17 @@ struct PathPoint {
 PathPoint closest_point(const std::vector<Vec2>& path, Vec2 p, std::size_t from_segment,
                         double window_m);
 
-/// The point `ahead_m` further along the path from `from` (clamped to the path's end).
-Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m);
+/// The point `ahead_m` further along the path from `from` (clamped to the path's end). The walk
+/// stops at the first vertex where the path turns by more than `sharp_turn_rad` when that vertex
+/// is more than `corner_release_m` ahead: a carrot beyond a corner pulls the robot across it
+/// (and visibility-graph paths bend exactly at obstacle corners).
+Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m,
+                 double sharp_turn_rad = M_PI, double corner_release_m = 0.0);
+
+/// Path length from `from` to the next vertex turning by more than `sharp_turn_rad` (or to the
+/// end), looking at most `horizon_m` ahead.
+double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from, double sharp_turn_rad,
+                                double horizon_m);
 
 /// Path length from `from` to the end.
 double remaining_length(const std::vector<Vec2>& path, const PathPoint& from);

@@ -28,10 +28,12 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
 
   const double lookahead = std::clamp(std::fabs(current_speed_mps) * p.lookahead_time_s,
                                       p.lookahead_min_m, p.lookahead_max_m);
-  const Vec2 carrot = point_ahead(path_, near, lookahead);
+  const Vec2 carrot = point_ahead(path_, near, lookahead, p.sharp_turn_rad, p.corner_release_m);
   const Vec2 c = to_robot_frame(pose, carrot);
   const double heading_error = std::atan2(c.y, c.x);
-  if (std::fabs(heading_error) > p.rotate_in_place_threshold_rad) {
+  if (std::fabs(heading_error) > p.rotate_in_place_threshold_rad) rotating_ = true;
+  if (std::fabs(heading_error) < p.rotate_in_place_exit_rad) rotating_ = false;
+  if (rotating_) {
     const double w = std::min(p.rotate_in_place_speed_radps, 2.0 * std::fabs(heading_error));
     out.twist = {0.0, std::copysign(w, heading_error)};
     return out;
@@ -42,8 +44,11 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   double v = p.max_linear_speed_mps;
   const double radius = std::fabs(curvature) > 0 ? 1.0 / std::fabs(curvature) : INFINITY;
   if (radius < p.regulated_min_radius_m) v *= radius / p.regulated_min_radius_m;
-  if (remaining < p.approach_slowdown_distance_m)
-    v = std::min(v, p.max_linear_speed_mps * remaining / p.approach_slowdown_distance_m);
+  // Slow down for the path's end and for sharp corners, where the robot turns in place.
+  const double to_stop = std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad,
+                                                                      p.approach_slowdown_distance_m));
+  if (to_stop < p.approach_slowdown_distance_m)
+    v = std::min(v, p.max_linear_speed_mps * to_stop / p.approach_slowdown_distance_m);
   v = std::max(v, p.min_approach_speed_mps);
   double omega = v * curvature;
   if (std::fabs(omega) > p.max_angular_speed_radps) {

@@ -1,0 +1,377 @@
+// The batch engine.
+#include "batch/batch_runner.h"
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <random>
+#include <set>
+#include <thread>
+
+#include "planner/planner.h"
+#include "render/comparison_figure.h"
+#include "render/png_io.h"
+#include "render/report.h"
+#include "sim/episode_config_json.h"
+#include "util/atomic_file.h"
+#include "worlds/world_error.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::batch {
+namespace {
+
+using nlohmann::json;
+
+// Reads the complete lines of a JSONL file; a torn last line (a killed run) is cut off.
+std::vector<std::string> read_complete_lines(const std::string& path, bool repair) {
+  std::vector<std::string> lines;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return lines;
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::size_t keep = 0;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) break;
+    const std::string line = text.substr(start, end - start);
+    if (json::accept(line)) lines.push_back(line);
+    start = end + 1;
+    keep = start;
+  }
+  if (repair && keep < text.size()) std::filesystem::resize_file(path, keep);
+  return lines;
+}
+
+// A free start for this world and seed: uniform over the floor, outside inflated obstacles,
+// with a path to the staging pose, not right at the charger.
+std::optional<geom::Pose2> random_start(const worlds::World& w, planner::Planner& vg, std::uint64_t seed,
+                                        std::size_t world_index) {
+  std::mt19937_64 rng(seed * 1000003ULL + world_index * 7919ULL + 17);
+  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax),
+      yaw(-M_PI, M_PI);
+  const geom::Vec2 staging = worlds::staging_pose(w).position();
+  for (int attempt = 0; attempt < 2000; ++attempt) {
+    const geom::Pose2 p{ux(rng), uy(rng), yaw(rng)};
+    if (geom::distance(p.position(), w.charger.position()) < 2.0) continue;
+    bool near_moving = false;
+    for (const auto& m : w.moving)
+      for (const auto& wp : m.waypoints) near_moving |= geom::distance(wp, p.position()) < 1.5;
+    if (near_moving) continue;
+    if (vg.plan(p.position(), staging).status == planner::PlanStatus::kOk) return p;
+  }
+  return std::nullopt;
+}
+
+// A person crossing the planned path at its middle, timed to meet the robot there.
+worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector<geom::Vec2>& plan) {
+  double total = 0;
+  for (std::size_t i = 1; i < plan.size(); ++i) total += geom::distance(plan[i - 1], plan[i]);
+  double left = 0.5 * total;
+  geom::Vec2 at = plan.front(), dir{1, 0};
+  for (std::size_t i = 1; i < plan.size(); ++i) {
+    const double seg = geom::distance(plan[i - 1], plan[i]);
+    if (seg >= left && seg > 0) {
+      dir = (1.0 / seg) * (plan[i] - plan[i - 1]);
+      at = plan[i - 1] + left * dir;
+      break;
+    }
+    left -= seg;
+  }
+  const geom::Vec2 across{-dir.y, dir.x};
+  auto clamp = [&](geom::Vec2 p) {
+    return geom::Vec2{std::clamp(p.x, w.floor.xmin + 0.3, w.floor.xmax - 0.3), std::clamp(p.y, w.floor.ymin + 0.3, w.floor.ymax - 0.3)};
+  };
+  worlds::MovingObstacle m;
+  m.name = "crossing person";
+  m.width_m = m.height_m = 0.6;
+  m.waypoints = {clamp(at - 3.0 * across), clamp(at + 3.0 * across)};
+  m.speed_mps = 0.8;
+  m.start_time_s = std::max(0.0, 0.5 * total / 0.6 - 3.0 / 0.8);  // arrives as the robot does
+  return m;
+}
+
+std::string record_line(const Episode& e, const BatchSpec& spec, const std::string& world_name,
+                        const sim::EpisodeResult& r, double optimal_m, const geom::Pose2& start) {
+  nlohmann::ordered_json j;
+  j["index"] = e.index;
+  j["id"] = e.id;
+  j["world"] = world_name;
+  j["planner"] = spec.planners[e.planner];
+  j["controller"] = spec.controllers[e.controller].name;
+  j["fault"] = spec.faults[e.fault].name;
+  j["seed"] = e.seed;
+  j["start"] = {start.x, start.y, start.yaw};
+  j["status"] = r.status;
+  j["docked"] = r.docked;
+  j["position_error_m"] = r.position_error_m;
+  j["heading_error_deg"] = r.heading_error_deg;
+  j["collisions"] = r.collisions;
+  j["retries"] = r.retries;
+  j["stops"] = r.stops;
+  j["replans"] = r.replans;
+  j["time_s"] = r.time_s;
+  j["path_length_m"] = r.path_length_m;
+  j["optimal_length_m"] = optimal_m;
+  j["driven_length_m"] = r.driven_length_m;
+  j["max_cross_track_m"] = r.max_cross_track_m;
+  return j.dump();
+}
+
+class Progress {
+ public:
+  Progress(std::int64_t total, bool enabled) : total_(total), enabled_(enabled), tty_(::isatty(2)), t0_(Clock::now()) {}
+  void tick() {
+    const std::int64_t done = ++done_;
+    if (!enabled_) return;
+    std::lock_guard lock(mutex_);
+    const double elapsed = std::chrono::duration<double>(Clock::now() - t0_).count();
+    const bool last = done == total_;
+    if (tty_ ? (elapsed - last_print_ < 0.2 && !last) : (done * 10 / std::max<std::int64_t>(total_, 1) == printed_decile_ && !last))
+      return;
+    last_print_ = elapsed;
+    printed_decile_ = done * 10 / std::max<std::int64_t>(total_, 1);
+    const double rate = done / std::max(elapsed, 1e-9);
+    const double eta = (total_ - done) / std::max(rate, 1e-9);
+    const int width = 30, filled = static_cast<int>(width * done / std::max<std::int64_t>(total_, 1));
+    std::fprintf(stderr, "%s[%s%s] %lld/%lld  %.1f episodes/s  ETA %.0f s%s", tty_ ? "\r" : "",
+                 std::string(filled, '=').c_str(), std::string(width - filled, ' ').c_str(), static_cast<long long>(done),
+                 static_cast<long long>(total_), rate, eta, tty_ && !last ? "" : "\n");
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::int64_t total_;
+  bool enabled_, tty_;
+  Clock::time_point t0_;
+  std::atomic<std::int64_t> done_{0};
+  std::mutex mutex_;
+  double last_print_ = -1;
+  std::int64_t printed_decile_ = -1;
+};
+
+void write_outputs(const std::vector<std::string>& lines, const std::string& out_dir, const std::string& title,
+                   const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
+                   const std::vector<std::string>& planners) {
+  const std::string csv = summary_csv(lines);
+  util::write_file_atomically(out_dir + "/summary.csv", csv);
+  render::Report report;
+  report.title = title;
+  report.command = command;
+  bool header = true;
+  for (std::size_t start = 0; start < csv.size();) {
+    const std::size_t end = csv.find('\n', start);
+    std::vector<std::string> cells;
+    std::string cell;
+    for (char c : csv.substr(start, end - start)) {
+      if (c == ',') cells.push_back(cell), cell.clear();
+      else cell += c;
+    }
+    cells.push_back(cell);
+    if (header) report.headers = cells;
+    else report.rows.push_back(cells);
+    header = false;
+    start = end == std::string::npos ? csv.size() : end + 1;
+  }
+  report.files = {"episodes.jsonl", "summary.csv"};
+  if (worlds_for_figures) {
+    for (const worlds::World& w : *worlds_for_figures) {
+      std::vector<render::ComparisonPanel> panels;
+      for (const std::string& name : planners) {
+        auto p = planner::make_planner(name, planner::planner_input(w, true));
+        const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+        render::ComparisonPanel panel{name, {}, {}, false};
+        panel.run.planner = name;
+        panel.run.status = std::string(planner::to_string(r.status));
+        panel.run.plan = r.path;
+        panel.run.path_length_m = r.length;
+        panel.run.plan_stats = r.stats;
+        panels.push_back(panel);
+      }
+      const std::string file = "plans_" + w.name + ".png";
+      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world's start"), out_dir + "/" + file,
+                        render::PngSettings::fast());
+      report.figures.push_back({file, w.name + ": each planner's plan from the world's start to the staging pose"});
+    }
+  }
+  report.notes = "Success rate with its 95 % Wilson interval; path over optimum compares the planned length with "
+                 "the exact visibility-graph optimum from the same start; errors are over docked episodes.";
+  render::write_report(report, out_dir + "/report.html");
+}
+
+}  // namespace
+
+std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double z) {
+  if (n <= 0) return {0.0, 1.0};
+  const double p = static_cast<double>(k) / n, z2 = z * z;
+  const double centre = (p + z2 / (2.0 * n)) / (1 + z2 / n);
+  const double half = z * std::sqrt(p * (1 - p) / n + z2 / (4.0 * n * n)) / (1 + z2 / n);
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
+std::string summary_csv(const std::vector<std::string>& lines) {
+  struct Acc {
+    std::int64_t n = 0, docked = 0, collisions = 0, retries = 0;
+    double time = 0, ratio = 0, pos = 0, heading = 0;
+    std::int64_t ratio_n = 0;
+  };
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, Acc> acc;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    Acc& a = acc[{j["world"], j["planner"], j["controller"], j["fault"]}];
+    ++a.n;
+    const bool docked = j["docked"].get<bool>();
+    a.docked += docked;
+    a.collisions += j["collisions"].get<int>();
+    a.retries += j["retries"].get<int>();
+    a.time += j["time_s"].get<double>();
+    const double opt = j["optimal_length_m"].get<double>(), len = j["path_length_m"].get<double>();
+    if (opt > 0 && len > 0) a.ratio += len / opt, ++a.ratio_n;
+    if (docked) a.pos += j["position_error_m"].get<double>(), a.heading += j["heading_error_deg"].get<double>();
+  }
+  std::string out =
+      "world,planner,controller,fault,episodes,docked,success_rate,ci95_low,ci95_high,mean_time_s,"
+      "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries\n";
+  for (const auto& [key, a] : acc) {
+    const auto [lo, hi] = wilson_interval(a.docked, a.n);
+    char row[512];
+    std::snprintf(row, sizeof row, "%s,%s,%s,%s,%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f\n",
+                  std::get<0>(key).c_str(), std::get<1>(key).c_str(), std::get<2>(key).c_str(), std::get<3>(key).c_str(),
+                  static_cast<long long>(a.n), static_cast<long long>(a.docked), static_cast<double>(a.docked) / a.n, lo, hi,
+                  a.time / a.n, a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
+                  a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
+                  static_cast<double>(a.retries) / a.n);
+    out += row;
+  }
+  return out;
+}
+
+BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
+  // Everything that can be wrong is found before the first episode.
+  const BatchSpec spec = load_batch_spec(scenario_path);
+  if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
+    throw std::invalid_argument("--shard i/n needs 0 <= i < n");
+  std::vector<worlds::World> worlds;
+  std::vector<std::string> names;
+  for (const std::string& f : spec.world_files) {
+    worlds.push_back(worlds::load_world(f));
+    names.push_back(worlds.back().name);
+  }
+  std::vector<sim::EpisodeConfig> configs;  // controller x fault
+  for (const auto& c : spec.controllers)
+    for (const auto& f : spec.faults)
+      configs.push_back(sim::parse_episode_config(f.json, spec.source,
+                                                  sim::parse_episode_config(c.json, spec.source)));
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  const std::string jsonl = o.out_dir + "/episodes.jsonl";
+  {
+    std::ofstream probe(jsonl, std::ios::app);
+    if (ec || !probe) throw std::invalid_argument("output folder '" + o.out_dir + "' is not writable");
+  }
+
+  const std::vector<Episode> mine = shard(all_episodes(spec, names), o.shard_index, o.shard_count);
+  std::set<std::string> done;
+  for (const std::string& line : read_complete_lines(jsonl, true)) done.insert(json::parse(line)["id"].get<std::string>());
+  std::vector<Episode> todo;
+  for (const Episode& e : mine)
+    if (!done.count(e.id)) todo.push_back(e);
+
+  BatchOutcome outcome;
+  outcome.episodes = static_cast<std::int64_t>(mine.size());
+  outcome.skipped = outcome.episodes - static_cast<std::int64_t>(todo.size());
+  std::FILE* out = std::fopen(jsonl.c_str(), "ab");
+  if (!out) throw std::invalid_argument("cannot append to " + jsonl);
+  std::mutex write_mutex;
+  std::atomic<std::size_t> next{0};
+  Progress progress(static_cast<std::int64_t>(todo.size()), o.progress);
+  std::exception_ptr failure;
+  const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  auto worker = [&]() {
+    // Planners are built per thread (their caches are not shared) and kept for the batch.
+    std::map<std::pair<std::size_t, std::string>, std::unique_ptr<planner::Planner>> planners;
+    auto planner_for = [&](std::size_t w, const std::string& name) -> planner::Planner& {
+      auto& p = planners[{w, name}];
+      if (!p) p = planner::make_planner(name, planner::planner_input(worlds[w], true));
+      return *p;
+    };
+    try {
+      for (std::size_t k = next++; k < todo.size(); k = next++) {
+        const Episode& e = todo[k];
+        worlds::World w = worlds[e.world];
+        planner::Planner& exact = planner_for(e.world, "vg");
+        if (spec.random_starts) {
+          const auto s = random_start(w, exact, e.seed, e.world);
+          if (!s) throw std::runtime_error(w.name + ": no free start with a path to the charger");
+          w.start = *s;
+        }
+        const planner::PlanResult optimal = exact.plan(w.start.position(), worlds::staging_pose(w).position());
+        sim::EpisodeConfig config = configs[e.controller * spec.faults.size() + e.fault];
+        config.seed = e.seed;
+        if (spec.faults[e.fault].crossing_obstacle && optimal.status == planner::PlanStatus::kOk)
+          w.moving.push_back(crossing_person(w, optimal.path));
+        const sim::EpisodeResult r = sim::run_episode(w, planner_for(e.world, spec.planners[e.planner]), config);
+        const std::string line = record_line(e, spec, w.name, r, optimal.length, w.start) + "\n";
+        {
+          std::lock_guard lock(write_mutex);
+          std::fwrite(line.data(), 1, line.size(), out);
+          std::fflush(out);  // a killed batch loses at most the episode being written
+          ++outcome.ran;
+          outcome.docked += r.docked;
+          outcome.collisions += r.collisions;
+        }
+        progress.tick();
+      }
+    } catch (...) {
+      std::lock_guard lock(write_mutex);
+      if (!failure) failure = std::current_exception();
+      next = todo.size();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  std::fclose(out);
+  if (failure) std::rethrow_exception(failure);
+
+  write_outputs(read_complete_lines(jsonl, false), o.out_dir, "plantsim batch: " + spec.name,
+                "plantsim batch " + scenario_path + " --out " + o.out_dir +
+                    (o.shard_count > 1 ? " --shard " + std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count) : ""),
+                o.figures ? &worlds : nullptr, spec.planners);
+  return outcome;
+}
+
+std::int64_t merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir) {
+  std::map<std::int64_t, std::string> by_index;
+  std::set<std::string> ids;
+  for (const std::string& d : dirs) {
+    if (!std::filesystem::exists(d + "/episodes.jsonl")) throw std::invalid_argument(d + ": no episodes.jsonl to merge");
+    for (const std::string& line : read_complete_lines(d + "/episodes.jsonl", false)) {
+      const json j = json::parse(line);
+      if (ids.insert(j["id"].get<std::string>()).second) by_index[j["index"].get<std::int64_t>()] = line;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+  std::string text;
+  std::vector<std::string> lines;
+  for (const auto& [index, line] : by_index) {
+    text += line + "\n";
+    lines.push_back(line);
+  }
+  util::write_file_atomically(out_dir + "/episodes.jsonl", text);
+  std::string command = "plantsim merge";
+  for (const auto& d : dirs) command += " " + d;
+  write_outputs(lines, out_dir, "plantsim merge", command + " --out " + out_dir, nullptr, {});
+  return static_cast<std::int64_t>(lines.size());
+}
+
+}  // namespace plantsim::batch

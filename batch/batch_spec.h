@@ -1,0 +1,51 @@
+// A batch scenario (YAML): worlds x planners x controller settings x fault settings x seeds.
+// Each combination is one episode with a stable id, so that shards, resumes and merges agree
+// on what has been done. Everything is checked before any episode runs.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sim/episode.h"
+#include "worlds/world.h"
+
+namespace plantsim::batch {
+
+struct NamedConfig {
+  std::string name;
+  std::string json;  ///< episode-config overrides (docs/config.md), "{}" for none
+};
+
+struct FaultSetting {
+  std::string name;
+  std::string json;              ///< episode-config overrides (noise, slip, detection noise)
+  bool crossing_obstacle = false;  ///< a person crosses the planned path as the robot arrives
+};
+
+struct BatchSpec {
+  std::string name;
+  std::string source;                 ///< the YAML file
+  std::vector<std::string> world_files;
+  std::vector<std::string> planners;
+  std::vector<NamedConfig> controllers;
+  std::vector<FaultSetting> faults;
+  std::vector<std::uint64_t> seeds;
+  bool random_starts = true;          ///< each seed draws a free start; else the world's start
+};
+
+struct Episode {
+  std::int64_t index = 0;             ///< position in the full cross product
+  std::string id;                     ///< "world|planner|controller|fault|seed"
+  std::size_t world = 0, planner = 0, controller = 0, fault = 0;
+  std::uint64_t seed = 0;
+};
+
+/// Throws worlds::WorldError naming the file and field.
+BatchSpec load_batch_spec(const std::string& path);
+std::vector<Episode> all_episodes(const BatchSpec& spec, const std::vector<std::string>& world_names);
+
+/// Episodes of shard i of n (index modulo n), deterministic.
+std::vector<Episode> shard(const std::vector<Episode>& all, int i, int n);
+
+}  // namespace plantsim::batch

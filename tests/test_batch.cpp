@@ -1,0 +1,165 @@
+// Batches: shards merged equal one run, a killed run resumes without redoing or losing
+// episodes, bad input is refused before any episode, the Wilson interval, and the docking
+// suite over the plant scenarios and the ROS maps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "batch/batch_runner.h"
+#include "test_paths.h"
+#include "worlds/world_error.h"
+
+namespace plantsim::batch {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BatchFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("plantsim_batch_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { if (!getenv("PLANTSIM_KEEP")) fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const auto p = (dir_ / name).string();
+    std::ofstream(p) << text;
+    return p;
+  }
+  std::string small_scenario() {
+    return write("s.yaml", "name: small\nworlds: [" + test::shared_data("worlds/world_N10.json") + ", " +
+                               test::source_file("worlds/examples/small_plant.json") +
+                               "]\nplanners: [vg, vg-traditional]\nfaults:\n  none: {}\n  slip: {odometry: {left_scale_error: 0.002}}\nseeds: 3\n");
+  }
+  static std::vector<std::string> sorted_lines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    std::sort(lines.begin(), lines.end());
+    return lines;
+  }
+  static std::string read(const std::string& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  RunOptions options(const std::string& out, int i = 0, int n = 1) {
+    RunOptions o;
+    o.out_dir = (dir_ / out).string();
+    o.shard_index = i;
+    o.shard_count = n;
+    o.progress = false;
+    o.figures = false;
+    return o;
+  }
+  fs::path dir_;
+};
+
+TEST_F(BatchFiles, FourShardsMergedEqualOneRun) {
+  const std::string scenario = small_scenario();
+  const BatchOutcome whole = run_batch(scenario, options("whole"));
+  EXPECT_EQ(whole.episodes, 2 * 2 * 2 * 3);
+  std::vector<std::string> shard_dirs;
+  std::int64_t sum = 0;
+  for (int i = 0; i < 4; ++i) {
+    sum += run_batch(scenario, options("shard" + std::to_string(i), i, 4)).episodes;
+    shard_dirs.push_back((dir_ / ("shard" + std::to_string(i))).string());
+  }
+  EXPECT_EQ(sum, whole.episodes);
+  EXPECT_EQ(merge_batches(shard_dirs, (dir_ / "merged").string()), whole.episodes);
+  EXPECT_EQ(sorted_lines((dir_ / "merged/episodes.jsonl").string()), sorted_lines((dir_ / "whole/episodes.jsonl").string()));
+  EXPECT_EQ(read((dir_ / "merged/summary.csv").string()), read((dir_ / "whole/summary.csv").string()));
+}
+
+TEST_F(BatchFiles, AKilledRunResumesWithoutRedoingOrLosingEpisodes) {
+  const std::string scenario = small_scenario();
+  run_batch(scenario, options("full"));
+  const auto full = sorted_lines((dir_ / "full/episodes.jsonl").string());
+  // A run killed mid-way: the first 7 episodes written, the 8th torn half-way.
+  fs::create_directories(dir_ / "killed");
+  {
+    std::ifstream in((dir_ / "full/episodes.jsonl").string());
+    std::ofstream out((dir_ / "killed/episodes.jsonl").string());
+    std::string line;
+    for (int k = 0; k < 7 && std::getline(in, line); ++k) out << line << "\n";
+    std::getline(in, line);
+    out << line.substr(0, line.size() / 2);
+  }
+  const BatchOutcome resumed = run_batch(scenario, options("killed"));
+  EXPECT_EQ(resumed.skipped, 7);
+  EXPECT_EQ(resumed.ran, resumed.episodes - 7);
+  EXPECT_EQ(sorted_lines((dir_ / "killed/episodes.jsonl").string()), full);  // nothing twice, nothing lost
+  EXPECT_EQ(run_batch(scenario, options("killed")).ran, 0);                  // a finished batch runs nothing
+}
+
+TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
+  auto refused = [&](const std::string& scenario, const std::string& needle, const std::string& out = "out") {
+    try {
+      run_batch(scenario, options(out));
+      ADD_FAILURE() << "accepted " << scenario;
+    } catch (const std::exception& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir_ / out / "episodes.jsonl") && fs::file_size(dir_ / out / "episodes.jsonl") > 0);
+  };
+  refused(write("a.yaml", "worlds: [1, 2"), "malformed YAML");
+  refused(write("b.yaml", "worlds: []\nseeds: 1\n"), "field 'worlds'");
+  refused(write("c.yaml", "worlds: [" + (dir_ / "missing.json").string() + "]\nseeds: 1\n"), "no such file");
+  refused(write("d.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nplanners: [teleport]\nseeds: 1\n"),
+          "unknown planner");
+  refused(write("e.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\nfaults:\n  x: {odometry: {wheel_nois: 1}}\n"),
+          "unknown parameter");
+  refused(write("f.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\n"), "field 'seeds'");
+  write("file_in_the_way", "x");
+  refused(write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"), "not writable",
+          "file_in_the_way/sub");
+}
+
+TEST(Wilson, KnownValues) {
+  const auto [lo, hi] = wilson_interval(10, 10);
+  EXPECT_NEAR(lo, 0.7225, 1e-4);  // the interval for 10 of 10
+  EXPECT_DOUBLE_EQ(hi, 1.0);
+  const auto [lo2, hi2] = wilson_interval(50, 100);
+  EXPECT_NEAR(lo2, 0.4038, 1e-4);
+  EXPECT_NEAR(hi2, 0.5962, 1e-4);
+}
+
+// The docking suite: 504 episodes over the plant scenarios without scripted actors and both
+// ROS maps, from random starts, with ideal and with noisy sensing.
+TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
+  std::string worlds;
+  for (const char* w : {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/coal_mine_roadways.json",
+                        "worlds/scenarios/cable_tunnel_maze.json", "worlds/scenarios/rail_maintenance_pit.json"})
+    worlds += test::source_file(w) + ", ";
+  worlds += test::shared_data("ros_maps/depot.yaml") + ", " + test::shared_data("ros_maps/tb3_sandbox.yaml");
+  const std::string scenario = write(
+      "suite.yaml", "name: docking_suite\nworlds: [" + worlds +
+                        "]\nfaults:\n  none: {}\n  noisy:\n    odometry: {wheel_speed_noise: 0.02, left_scale_error: 0.003, "
+                        "right_scale_error: -0.003}\n    localization: {period_s: 1.0, position_noise_m: 0.03, yaw_noise_rad: 0.01}\n"
+                        "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: 42\n");
+  const BatchOutcome r = run_batch(scenario, options("suite"));
+  std::printf("docking suite: %lld episodes, %lld docked, %lld collisions\n", static_cast<long long>(r.episodes),
+              static_cast<long long>(r.docked), static_cast<long long>(r.collisions));
+  EXPECT_GE(r.episodes, 500);
+  EXPECT_GE(r.docked, static_cast<std::int64_t>(std::ceil(0.99 * r.episodes)));
+  EXPECT_EQ(r.collisions, 0);
+}
+
+// The substation's people and van follow scripts and never give way; robot contacts with them
+// are measured and reported, not yet held to zero (see the closing note of the batch issue).
+TEST_F(BatchFiles, SubstationWithScriptedActorsIsMeasured) {
+  const std::string scenario =
+      write("sub.yaml", "worlds: [" + test::source_file("worlds/scenarios/substation_yard.json") + "]\nseeds: 20\n");
+  const BatchOutcome r = run_batch(scenario, options("sub"));
+  std::printf("substation yard: %lld of %lld docked, %lld contacts with moving actors or obstacles\n",
+              static_cast<long long>(r.docked), static_cast<long long>(r.episodes), static_cast<long long>(r.collisions));
+  EXPECT_GE(r.docked, 15);  // most dock even so
+}
+
+}  // namespace
+}  // namespace plantsim::batch
