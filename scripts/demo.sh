@@ -24,6 +24,14 @@ run world_N50 ../shared/data/worlds/world_N50.json
 run world_N200 ../shared/data/worlds/world_N200.json
 run world_N50_noisy ../shared/data/worlds/world_N50.json --config configs/noisy_sensing.json
 
+run depot ../shared/data/ros_maps/depot.yaml
+run desulfurization_plant worlds/scenarios/desulfurization_plant.json
+run substation_yard worlds/scenarios/substation_yard.json
+run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
+
+# A batch over every plant and both ROS maps, ideal and noisy sensing.
+./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
+
 # The source document's comparison (its Fig. 5 and Fig. 6), then every planner driven.
 ./build/plantsim compare worlds/examples/small_plant.json --planners vg,vg-traditional --graph --plan-only \
   --title "Fig. 5 vs Fig. 6: improved vs traditional visibility graph" --out results/fig5_vs_fig6 || status=1
@@ -31,6 +39,6 @@ run world_N50_noisy ../shared/data/worlds/world_N50.json --config configs/noisy_
   --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
-  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html
+  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status

@@ -1,0 +1,56 @@
+// Batch throughput: the baseline of each "all cores" figure is one thread on the same episodes.
+#include "bench/batch_bench.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "batch/batch_runner.h"
+#include "bench/bench_report.h"
+
+namespace plantsim::bench {
+namespace {
+
+double run_seconds(const std::string& scenario, const std::string& out, int threads) {
+  std::filesystem::remove_all(out);
+  batch::RunOptions o;
+  o.out_dir = out;
+  o.threads = threads;
+  o.progress = false;
+  o.figures = false;
+  const auto t0 = std::chrono::steady_clock::now();
+  batch::run_batch(scenario, o);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+int run_batch_bench(const std::string& shared_data, bool quick) {
+  const auto dir = std::filesystem::temp_directory_path() / ("plantsim_bench_batch_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const int cores = std::max(1u, std::thread::hardware_concurrency());
+  const int seeds = quick ? 20 : 100;
+  std::vector<std::pair<std::string, std::string>> worlds = {{"world_N200", shared_data + "/worlds/world_N200.json"}};
+  for (const char* w : {"desulfurization_plant", "substation_yard", "coal_mine_roadways", "cable_tunnel_maze",
+                        "rail_maintenance_pit"})
+    worlds.push_back({w, std::string("worlds/scenarios/") + w + ".json"});
+  for (const auto& [name, file] : worlds) {
+    const std::string scenario = (dir / (name + ".yaml")).string();
+    std::ofstream(scenario) << "worlds: [" << std::filesystem::absolute(file).string() << "]\nseeds: " << seeds << "\n";
+    const double one = run_seconds(scenario, (dir / "one").string(), 1);
+    const double all = run_seconds(scenario, (dir / "all").string(), cores);
+    const Measure base{name + "/episodes_per_s_1_thread", seeds / one, "episodes/s"};
+    report("batch", base);
+    report("batch", {name + "/episodes_per_s_" + std::to_string(cores) + "_threads", seeds / all, "episodes/s"}, base);
+  }
+  const std::string thousand = (dir / "thousand.yaml").string();
+  std::ofstream(thousand) << "worlds: [" << shared_data + "/worlds/world_N200.json" << "]\nseeds: " << (quick ? 200 : 1000) << "\n";
+  const double t = run_seconds(thousand, (dir / "thousand").string(), cores);
+  report("batch", {std::string("world_N200/") + (quick ? "200" : "1000") + "_episodes_seconds", t, "s"},
+         Measure{"target_seconds", quick ? 12.0 : 60.0, "s"});
+  std::filesystem::remove_all(dir);
+  return 0;
+}
+
+}  // namespace plantsim::bench
