@@ -61,9 +61,12 @@ std::optional<geom::Pose2> random_start(const worlds::World& w, planner::Planner
   for (int attempt = 0; attempt < 2000; ++attempt) {
     const geom::Pose2 p{ux(rng), uy(rng), yaw(rng)};
     if (geom::distance(p.position(), w.charger.position()) < 2.0) continue;
-    bool near_moving = false;
-    for (const auto& m : w.moving)
-      for (const auto& wp : m.waypoints) near_moving |= geom::distance(wp, p.position()) < 1.5;
+    bool near_moving = false;  // not starting against an actor's box
+    for (const auto& m : w.moving) {
+      const geom::Rect b = m.box_at(0.0);
+      const double dx = std::max({b.xmin - p.x, 0.0, p.x - b.xmax}), dy = std::max({b.ymin - p.y, 0.0, p.y - b.ymax});
+      near_moving |= std::hypot(dx, dy) < w.robot.radius_m + 1.0;
+    }
     if (near_moving) continue;
     if (vg.plan(p.position(), staging).status == planner::PlanStatus::kOk) return p;
   }

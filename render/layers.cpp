@@ -52,10 +52,11 @@ void draw_start(GlCanvas& c, const worlds::World& w) {
   c.fill_disk(w.start.position(), std::max(0.35 * w.robot.radius_m, 4.0 / c.transform().scale), palette::kStart);
 }
 
-void draw_moving(GlCanvas& c, const worlds::World& w, double t_s) {
-  for (const auto& m : w.moving) {
+void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes) {
+  for (std::size_t i = 0; i < w.moving.size(); ++i) {
+    const auto& m = w.moving[i];
     if (m.waypoints.size() > 1) c.polyline(m.waypoints, 1.0, palette::kMoving);
-    c.fill_rect(m.box_at(t_s), palette::kMoving);
+    c.fill_rect(i < boxes.size() ? boxes[i] : m.box_at(t_s), palette::kMoving);
   }
 }
 

@@ -15,7 +15,8 @@ void draw_obstacles(GlCanvas& c, const worlds::World& w);              ///< marg
 void draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges);
 void draw_charger(GlCanvas& c, const worlds::World& w);                ///< block and approach axis
 void draw_start(GlCanvas& c, const worlds::World& w);
-void draw_moving(GlCanvas& c, const worlds::World& w, double t_s);     ///< routes and boxes at t
+/// Routes, and the boxes where given (else where their scripts put them at t).
+void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes = {});
 void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan);
 /// The driven path, each segment coloured by speed on viridis from 0 to `max_speed_mps`.
 void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,

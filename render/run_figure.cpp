@@ -28,7 +28,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_obstacles(c, world);
   if (!o.graph_edges.empty()) draw_graph(c, o.graph_edges);
   const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
-  draw_moving(c, world, t_end);
+  draw_moving(c, world, t_end, run.moving_final);
   draw_plan(c, run.plan);
   draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s);
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);

@@ -41,23 +41,21 @@ class ChargerDetector {
   std::normal_distribution<double> gauss_{0.0, 1.0};
 };
 
-// Moving obstacles within range, as boxes in the map frame: what a lidar sees relative to the
-// robot, placed with the robot's own (possibly wrong) pose estimate.
-// Velocities come from the change over the last step, as a tracker would estimate them.
-std::vector<controller::MovingBox> sense_moving(const worlds::World& w, double t, double dt, const Pose2& truth,
+// Moving obstacles within range, as boxes in the map frame: what a lidar and a tracker see
+// relative to the robot, placed with the robot's own (possibly wrong) pose estimate.
+std::vector<controller::MovingBox> sense_moving(const std::vector<ActorState>& actors, const Pose2& truth,
                                                 const Pose2& estimate, double range_m) {
   std::vector<controller::MovingBox> out;
   const Pose2 estimate_from_truth = geom::compose(estimate, geom::inverse(truth));
-  for (const auto& m : w.moving) {
-    const geom::Rect b = m.box_at(t);
+  for (const ActorState& a : actors) {
+    const geom::Rect& b = a.box;
     if (controller::distance_to_box(truth.position(), b) > range_m) continue;
     geom::Rect seen{INFINITY, INFINITY, -INFINITY, -INFINITY};
     for (Vec2 c : {Vec2{b.xmin, b.ymin}, Vec2{b.xmax, b.ymin}, Vec2{b.xmax, b.ymax}, Vec2{b.xmin, b.ymax}}) {
       const Vec2 q = geom::compose(estimate_from_truth, Pose2{c.x, c.y, 0}).position();
       seen = {std::min(seen.xmin, q.x), std::min(seen.ymin, q.y), std::max(seen.xmax, q.x), std::max(seen.ymax, q.y)};
     }
-    const Vec2 velocity = geom::rotate((1.0 / dt) * (m.position_at(t) - m.position_at(t - dt)), estimate_from_truth.yaw);
-    out.push_back({seen, velocity});
+    out.push_back({seen, geom::rotate(a.velocity, estimate_from_truth.yaw)});
   }
   return out;
 }
@@ -134,13 +132,15 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       charger_contact = charging = false;
       in.charger_in_robot = detector.observe(truth, world.charger);
       if (!world.moving.empty())
-        in.nearby_obstacles = sense_moving(world, k * dt, dt, truth, estimate, config.perception.range_m);
+        in.nearby_obstacles = sense_moving(physics.actors(), truth, estimate, config.perception.range_m);
       cmd = control.step(in);
       if (cmd.replan_requested) {
         // Plan again with what blocks the way as extra obstacles; start from the nearest free
         // point if the robot stands inside their margin.
         planner::PlannerInput again = planner::planner_input(world, true);
-        for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box);
+        // Grown by the arc check's extra clearance, so that the new path is one it will accept.
+        const double extra = std::max(0.0, config.docking.safety_margin_m - world.inflation_margin_m) + 0.05;
+        for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box.inflated(extra));
         again.snap_to_free = true;
         const planner::PlanResult re =
             planner::make_planner(planner.name(), again)->plan(estimate.position(), staging.position());
@@ -176,6 +176,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     result.driven_length_m += geom::distance(previous, now);
     previous = now;
   }
+  for (const ActorState& a : physics.actors()) result.moving_final.push_back(a.box);
   if (result.status == "timeout") {
     const DockError err = dock_error(physics.robot_pose(), world.charger);
     result.position_error_m = err.position_m;

@@ -76,6 +76,7 @@ struct EpisodeResult {
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
   std::vector<Vec2> plan;
   std::vector<TrajectorySample> trajectory;
+  std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the

@@ -65,7 +65,7 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
     fd.shape = &box;
     fd.userData.pointer = kMoving;
     body->CreateFixture(&fd);
-    moving_.emplace_back(body, m);
+    moving_.push_back({body, m, 0.0, {}});
   }
 
   b2BodyDef robot_def;
@@ -91,14 +91,48 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
 
 PhysicsWorld::~PhysicsWorld() = default;
 
-void PhysicsWorld::step(const StepSettings& s, double t_s) {
-  for (auto& [body, m] : moving_) {
-    const geom::Vec2 next = m.position_at(t_s + s.dt_s);
-    const b2Vec2 now = body->GetPosition();
-    body->SetLinearVelocity(b2Vec2(static_cast<float>((next.x - now.x) / s.dt_s),
-                                   static_cast<float>((next.y - now.y) / s.dt_s)));
+void PhysicsWorld::step(const StepSettings& s, double /*t_s*/) {
+  const Vec2 robot = robot_position();
+  const double robot_r = robot_->GetFixtureList()->GetShape()->m_radius > 0
+                             ? static_cast<double>(robot_->GetFixtureList()->GetShape()->m_radius)
+                             : 0.5;
+  for (Actor& a : moving_) {
+    const b2Vec2 now = a.body->GetPosition();
+    const Vec2 here{now.x, now.y};
+    double next_time = a.script_time_s + s.dt_s;
+    Vec2 next = a.script.position_at(next_time);
+    if (a.script.yields_to_robot) {
+      // In its way: ahead along its motion, within its width plus the robot and a margin.
+      const Vec2 motion = next - here;
+      const double len = geom::norm(motion);
+      if (len > 0) {
+        const Vec2 dir = (1.0 / len) * motion, rel = robot - here;
+        // The box's half extents along and across its motion.
+        const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
+        const double half_along = std::fabs(dir.x) * hw + std::fabs(dir.y) * hh;
+        const double half_across = std::fabs(dir.y) * hw + std::fabs(dir.x) * hh;
+        const double along = geom::dot(rel, dir), lateral = std::fabs(geom::cross(dir, rel));
+        if (along > 0 && along < half_along + robot_r + a.script.yield_distance_m && lateral < half_across + robot_r + 0.1) {
+          next_time = a.script_time_s;  // wait
+          next = here;
+        }
+      }
+    }
+    a.script_time_s = next_time;
+    a.velocity = (1.0 / s.dt_s) * (next - here);
+    a.body->SetLinearVelocity(b2Vec2(static_cast<float>(a.velocity.x), static_cast<float>(a.velocity.y)));
   }
   world_->Step(static_cast<float>(s.dt_s), s.velocity_iterations, s.position_iterations);
+}
+
+std::vector<ActorState> PhysicsWorld::actors() const {
+  std::vector<ActorState> out;
+  for (const Actor& a : moving_) {
+    const b2Vec2 p = a.body->GetPosition();
+    const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
+    out.push_back({{p.x - hw, p.y - hh, p.x + hw, p.y + hh}, a.velocity});
+  }
+  return out;
 }
 
 Pose2 PhysicsWorld::robot_pose() const {

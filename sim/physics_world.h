@@ -25,6 +25,12 @@ struct StepSettings {
   int position_iterations = 3;
 };
 
+/// A scripted obstacle as it is now: its box and velocity (world frame).
+struct ActorState {
+  geom::Rect box;
+  Vec2 velocity;
+};
+
 struct ContactState {
   bool charger = false;   ///< robot touches the charger body
   bool obstacle = false;  ///< robot touches an obstacle, a wall or a moving obstacle
@@ -41,6 +47,9 @@ class PhysicsWorld {
   /// that Box2D sees them move) and advances the world by one fixed step.
   void step(const StepSettings& s, double t_s);
 
+  /// The scripted obstacles now (yielding ones may lag behind their script).
+  std::vector<ActorState> actors() const;
+
   Pose2 robot_pose() const;
   Vec2 robot_position() const;
   Vec2 robot_velocity() const;          ///< world frame, m/s
@@ -56,7 +65,13 @@ class PhysicsWorld {
  private:
   std::unique_ptr<b2World> world_;
   b2Body* robot_ = nullptr;
-  std::vector<std::pair<b2Body*, worlds::MovingObstacle>> moving_;
+  struct Actor {
+    b2Body* body;
+    worlds::MovingObstacle script;
+    double script_time_s = 0;  // advances with the clock unless the actor yields
+    Vec2 velocity;
+  };
+  std::vector<Actor> moving_;
 };
 
 }  // namespace plantsim::sim

@@ -129,11 +129,12 @@ TEST(Wilson, KnownValues) {
   EXPECT_NEAR(hi2, 0.5962, 1e-4);
 }
 
-// The docking suite: 504 episodes over the plant scenarios without scripted actors and both
-// ROS maps, from random starts, with ideal and with noisy sensing.
+// The docking suite: 504 episodes over the five plant scenarios (the substation with its people
+// and van moving) and both ROS maps, from random starts, with ideal and with noisy sensing.
 TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
   std::string worlds;
-  for (const char* w : {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/coal_mine_roadways.json",
+  for (const char* w : {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/substation_yard.json",
+                        "worlds/scenarios/coal_mine_roadways.json",
                         "worlds/scenarios/cable_tunnel_maze.json", "worlds/scenarios/rail_maintenance_pit.json"})
     worlds += test::source_file(w) + ", ";
   worlds += test::shared_data("ros_maps/depot.yaml") + ", " + test::shared_data("ros_maps/tb3_sandbox.yaml");
@@ -141,24 +142,13 @@ TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
       "suite.yaml", "name: docking_suite\nworlds: [" + worlds +
                         "]\nfaults:\n  none: {}\n  noisy:\n    odometry: {wheel_speed_noise: 0.02, left_scale_error: 0.003, "
                         "right_scale_error: -0.003}\n    localization: {period_s: 1.0, position_noise_m: 0.03, yaw_noise_rad: 0.01}\n"
-                        "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: 42\n");
+                        "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: 36\n");
   const BatchOutcome r = run_batch(scenario, options("suite"));
   std::printf("docking suite: %lld episodes, %lld docked, %lld collisions\n", static_cast<long long>(r.episodes),
               static_cast<long long>(r.docked), static_cast<long long>(r.collisions));
   EXPECT_GE(r.episodes, 500);
   EXPECT_GE(r.docked, static_cast<std::int64_t>(std::ceil(0.99 * r.episodes)));
   EXPECT_EQ(r.collisions, 0);
-}
-
-// The substation's people and van follow scripts and never give way; robot contacts with them
-// are measured and reported, not yet held to zero (see the closing note of the batch issue).
-TEST_F(BatchFiles, SubstationWithScriptedActorsIsMeasured) {
-  const std::string scenario =
-      write("sub.yaml", "worlds: [" + test::source_file("worlds/scenarios/substation_yard.json") + "]\nseeds: 20\n");
-  const BatchOutcome r = run_batch(scenario, options("sub"));
-  std::printf("substation yard: %lld of %lld docked, %lld contacts with moving actors or obstacles\n",
-              static_cast<long long>(r.docked), static_cast<long long>(r.episodes), static_cast<long long>(r.collisions));
-  EXPECT_GE(r.docked, 15);  // most dock even so
 }
 
 }  // namespace

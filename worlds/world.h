@@ -40,7 +40,9 @@ struct ChargerSpec {
 
 /// A box moving on a scripted path at constant speed (a person, a cart, a vehicle): it waits
 /// at its first waypoint until start_time_s, then follows the waypoints; with `loop` it goes
-/// back and forth forever, otherwise it stays (parks) at the last one.
+/// back and forth forever, otherwise it stays (parks) at the last one. A blind actor (the
+/// default) never gives way; one that `yields_to_robot` pauses its script while the robot is
+/// in its way, as people and drivers do. Positions are given for the script's own time.
 struct MovingObstacle {
   std::string name;
   double width_m = 0.5;
@@ -49,6 +51,8 @@ struct MovingObstacle {
   double speed_mps = 0.0;
   double start_time_s = 0.0;
   bool loop = false;
+  bool yields_to_robot = false;
+  double yield_distance_m = 1.5;  ///< gap ahead it keeps to the robot when yielding
 
   Vec2 position_at(double t_s) const;
   Rect box_at(double t_s) const;

@@ -164,6 +164,12 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
         if (!m["loop"].is_boolean()) in.fail(path + ".loop", "expected true or false");
         mo.loop = m["loop"].get<bool>();
       }
+      if (m.contains("yields_to_robot")) {
+        if (!m["yields_to_robot"].is_boolean()) in.fail(path + ".yields_to_robot", "expected true or false");
+        mo.yields_to_robot = m["yields_to_robot"].get<bool>();
+      }
+      mo.yield_distance_m = in.number_or(m, "yield_distance_m", path, mo.yield_distance_m);
+      if (mo.yield_distance_m < 0) in.fail(path + ".yield_distance_m", "must not be negative");
       w.moving.push_back(mo);
     }
   }
