@@ -88,6 +88,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     out["length"] = r.length;
     out["start_snapped"] = r.start_snapped;
     out["goal_snapped"] = r.goal_snapped;
+    if (!r.note.empty()) out["note"] = r.note;
     auto path = nlohmann::json::array();
     for (const auto& v : r.path) path.push_back({v.x, v.y});
     out["path"] = path;

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "planner/gcr_planner.h"
 #include "planner/grid_astar.h"
 #include "planner/vg_planner.h"
 
@@ -27,12 +28,13 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   return in;
 }
 
-std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid"}; }
+std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr"}; }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
   if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
   if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
   if (name == "grid") return std::make_unique<GridPlanner>(input, input.grid_resolution_m);
+  if (name == "gcr") return std::make_unique<GcrPlanner>(input);
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }
 

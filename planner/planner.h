@@ -37,6 +37,7 @@ struct PlanResult {
   PlanStats stats;
   bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start
   bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
+  std::string note;            ///< why a baseline failed (trapped, oscillating...) or what it met
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
@@ -47,6 +48,7 @@ struct PlannerInput {
   int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
+  double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.
