@@ -37,14 +37,14 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     draw_charger(c, world);
     fig.world_axes(world.floor, t);
     char line1[256], line2[256];
-    std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms (build %.2f + query %.2f)", p.label.c_str(),
-                  p.run.path_length_m, p.run.plan_stats.build_ms + p.run.plan_stats.query_ms, p.run.plan_stats.build_ms,
-                  p.run.plan_stats.query_ms);
-    std::snprintf(line2, sizeof line2, "graph %lld vertices, %lld edges  |  %s", static_cast<long long>(p.run.plan_stats.vertices),
-                  static_cast<long long>(p.run.plan_stats.edges),
-                  p.drove ? result_line(p.run).c_str() : p.run.status.c_str());
-    fig.text(line1, x0 + 60, y0 + 22, 15, palette::kAxis, Anchor::kLeft, true);
-    fig.text(line2, x0 + 60, y0 + 42, 13, palette::kAxis);
+    std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(), p.run.path_length_m,
+                  p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
+    std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, graph %lld vertices, %lld edges", p.run.plan_stats.build_ms,
+                  p.run.plan_stats.query_ms, static_cast<long long>(p.run.plan_stats.vertices),
+                  static_cast<long long>(p.run.plan_stats.edges));
+    fig.text(line1, x0 + 60, y0 + 20, 15, palette::kAxis, Anchor::kLeft, true);
+    fig.text(line2, x0 + 60, y0 + 38, 12, palette::kAxis);
+    fig.text(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12, palette::kAxis);
   }
   return fig.finish();
 }
