@@ -1,6 +1,8 @@
 // Serialising an episode's metrics and trajectory.
 #include "app/episode_outputs.h"
 
+#include "sim/episode_json.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -13,18 +15,7 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   nlohmann::ordered_json j;
   j["world"] = world_name;
   j["planner"] = r.planner;
-  j["status"] = r.status;
-  j["docked"] = r.docked;
-  j["position_error_m"] = r.position_error_m;
-  j["heading_error_deg"] = r.heading_error_deg;
-  j["collisions"] = r.collisions;
-  j["retries"] = r.retries;
-  j["stops"] = r.stops;
-  j["replans"] = r.replans;
-  j["time_s"] = r.time_s;
-  j["path_length_m"] = r.path_length_m;
-  j["driven_length_m"] = r.driven_length_m;
-  j["max_cross_track_m"] = r.max_cross_track_m;
+  sim::add_episode_metrics(j, r);
   j["command"] = command_line;
   auto plan = nlohmann::ordered_json::array();
   for (const auto& v : r.plan) plan.push_back({v.x, v.y});

@@ -22,6 +22,7 @@
 #include "render/png_io.h"
 #include "render/report.h"
 #include "sim/episode_config_json.h"
+#include "sim/episode_json.h"
 #include "util/atomic_file.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -112,19 +113,8 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const std::stri
   j["fault"] = spec.faults[e.fault].name;
   j["seed"] = e.seed;
   j["start"] = {start.x, start.y, start.yaw};
-  j["status"] = r.status;
-  j["docked"] = r.docked;
-  j["position_error_m"] = r.position_error_m;
-  j["heading_error_deg"] = r.heading_error_deg;
-  j["collisions"] = r.collisions;
-  j["retries"] = r.retries;
-  j["stops"] = r.stops;
-  j["replans"] = r.replans;
-  j["time_s"] = r.time_s;
-  j["path_length_m"] = r.path_length_m;
+  sim::add_episode_metrics(j, r);
   j["optimal_length_m"] = optimal_m;
-  j["driven_length_m"] = r.driven_length_m;
-  j["max_cross_track_m"] = r.max_cross_track_m;
   return j.dump();
 }
 

@@ -76,12 +76,6 @@ double remaining_length(const std::vector<Vec2>& path, const PathPoint& from) {
   return total;
 }
 
-double polyline_length(const std::vector<Vec2>& path) {
-  double total = 0;
-  for (std::size_t i = 1; i < path.size(); ++i) total += geom::distance(path[i - 1], path[i]);
-  return total;
-}
-
 Vec2 to_robot_frame(const Pose2& pose, Vec2 p) {
   return geom::rotate(p - pose.position(), -pose.yaw);
 }

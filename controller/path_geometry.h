@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/polyline.h"
 #include "geometry/vec2.h"
 
 namespace plantsim::controller {
@@ -39,8 +40,6 @@ double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& 
 /// Path length from `from` to the end.
 double remaining_length(const std::vector<Vec2>& path, const PathPoint& from);
 
-/// Total polyline length.
-double polyline_length(const std::vector<Vec2>& path);
 
 /// Expresses world point p in the frame of pose (x forward, y left).
 Vec2 to_robot_frame(const Pose2& pose, Vec2 p);

@@ -5,18 +5,11 @@
 #include <cmath>
 #include <set>
 
+#include "geometry/polyline.h"
 #include "planner/inflation.h"
 
 namespace plantsim::planner {
-namespace {
-
-double length_of(const std::vector<Vec2>& p) {
-  double total = 0;
-  for (std::size_t i = 1; i < p.size(); ++i) total += geom::distance(p[i - 1], p[i]);
-  return total;
-}
-
-}  // namespace
+using geom::polyline_length;
 
 GcrPlanner::GcrPlanner(const PlannerInput& input)
     : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
@@ -150,11 +143,11 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
       out.note = raw.failure;
     } else {
       std::vector<Vec2> best = optimise(raw, 3);
-      const double raw_length = length_of(raw.points);
-      if (length_of(best) > raw_length) best = raw.points;  // never longer than the walk
+      const double raw_length = polyline_length(raw.points);
+      if (polyline_length(best) > raw_length) best = raw.points;  // never longer than the walk
       out.status = PlanStatus::kOk;
       out.path = best;
-      out.length = length_of(best);
+      out.length = polyline_length(best);
       out.note = "raw walk " + std::to_string(raw_length) + " m, " + std::to_string(raw.rotations) + " coordinate rotations";
     }
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/polyline.h"
 #include "planner/astar.h"
 #include "planner/inflation.h"
 
@@ -101,7 +102,7 @@ PlanResult GridPlanner::plan(Vec2 start, Vec2 goal) {
         out.path.push_back({origin_.x + (r.cells[i].first + 0.5) * resolution_,
                             origin_.y + (r.cells[i].second + 0.5) * resolution_});
       out.path.push_back(goal);
-      for (std::size_t i = 1; i < out.path.size(); ++i) out.length += geom::distance(out.path[i - 1], out.path[i]);
+      out.length = geom::polyline_length(out.path);
     }
   }
   out.stats.build_ms = build_ms_;

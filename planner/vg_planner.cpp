@@ -7,6 +7,7 @@
 #include <queue>
 #include <tuple>
 
+#include "geometry/polyline.h"
 #include "planner/astar.h"
 #include "planner/free_point.h"
 #include "planner/inflation.h"
@@ -52,9 +53,7 @@ void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanR
     const Vec2 p = points[n];
     if (out.path.empty() || !(out.path.back() == p)) out.path.push_back(p);
   }
-  out.length = 0;
-  for (std::size_t i = 1; i < out.path.size(); ++i)
-    out.length += geom::distance(out.path[i - 1], out.path[i]);
+  out.length = geom::polyline_length(out.path);
 }
 
 }  // namespace

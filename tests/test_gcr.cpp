@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "geometry/polyline.h"
 #include "geometry/predicates.h"
 #include "planner/gcr_planner.h"
 #include "planner/inflation.h"
@@ -12,11 +13,7 @@
 namespace plantsim::planner {
 namespace {
 
-double length_of(const std::vector<Vec2>& p) {
-  double total = 0;
-  for (std::size_t i = 1; i < p.size(); ++i) total += geom::distance(p[i - 1], p[i]);
-  return total;
-}
+using geom::polyline_length;
 
 PlannerInput floor_with(std::vector<Rect> obstacles) {
   PlannerInput in;
@@ -43,7 +40,7 @@ TEST(Gcr, ABlockOnTheLineIsPassedByCoordinateRotationThenShortcut) {
   EXPECT_EQ(raw.rotation_ends.size(), 1u);
   const auto r = p.plan({5, 5}, {95, 95});
   ASSERT_EQ(r.status, PlanStatus::kOk);
-  EXPECT_LT(r.length, length_of(raw.points));
+  EXPECT_LT(r.length, polyline_length(raw.points));
   EXPECT_LE(r.length, std::hypot(90.0, 90.0) * 1.2);
 }
 
@@ -72,7 +69,7 @@ TEST(Gcr, RandomWorldsNeverCrossAnObstacleNorExceedTheWalk) {
     for (std::size_t i = 1; i < r.path.size(); ++i)
       for (const Rect& o : inflated) ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o)) << world;
     const auto raw = p.walk(s, g);
-    EXPECT_LE(r.length, length_of(raw.points) + 1e-9) << world;
+    EXPECT_LE(r.length, polyline_length(raw.points) + 1e-9) << world;
     EXPECT_GE(r.length, geom::distance(s, g) - 1e-9);
   }
   std::printf("gcr on 150 random worlds: %d reached, %d failed (trapped / oscillating / timed out)\n", reached, failed);

@@ -1,0 +1,21 @@
+// Episode metrics as JSON.
+#include "sim/episode_json.h"
+
+namespace plantsim::sim {
+
+void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
+  j["status"] = r.status;
+  j["docked"] = r.docked;
+  j["position_error_m"] = r.position_error_m;
+  j["heading_error_deg"] = r.heading_error_deg;
+  j["collisions"] = r.collisions;
+  j["retries"] = r.retries;
+  j["stops"] = r.stops;
+  j["replans"] = r.replans;
+  j["time_s"] = r.time_s;
+  j["path_length_m"] = r.path_length_m;
+  j["driven_length_m"] = r.driven_length_m;
+  j["max_cross_track_m"] = r.max_cross_track_m;
+}
+
+}  // namespace plantsim::sim

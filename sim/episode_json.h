@@ -1,0 +1,14 @@
+// The metrics of an episode as JSON fields, written the same way into a run's summary.json
+// and a batch's episode lines.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "sim/episode.h"
+
+namespace plantsim::sim {
+
+/// Adds status, docked, errors, collisions, retries, stops, replans, time and lengths to j.
+void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r);
+
+}  // namespace plantsim::sim
