@@ -60,7 +60,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
       for (std::size_t k = 0; k < steps; ++k) {
         const double yaw = w.start.yaw + 0.2 * k * config.step.dt_s;
         bare.set_robot_velocity({0.1 * std::cos(yaw), 0.1 * std::sin(yaw)}, 0.2);
-        bare.step(config.step, k * config.step.dt_s);
+        bare.step(config.step);
       }
       best_bare = std::max(best_bare, steps / seconds_since(t0));
       sim::PhysicsWorld driven(w);
@@ -69,7 +69,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
       for (std::size_t k = 0; k < steps; ++k) {
         drive.command({0.1 - 0.1 * w.robot.wheel_base_m, 0.1 + 0.1 * w.robot.wheel_base_m}, config.step.dt_s);  // same circle
         drive.apply(driven, config.step.dt_s);
-        driven.step(config.step, k * config.step.dt_s);
+        driven.step(config.step);
       }
       best_drive = std::max(best_drive, steps / seconds_since(t1));
     }

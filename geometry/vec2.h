@@ -3,6 +3,7 @@
 // Predicates that decide geometry questions live in predicates.h, not here.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 namespace plantsim::geom {
@@ -69,5 +70,14 @@ struct Rect {
   }
   friend bool operator==(const Rect&, const Rect&) = default;
 };
+
+/// Four rectangles of the given thickness surrounding `inner` (left, right, bottom, top),
+/// overlapping at the corners: a floor's boundary as solid walls.
+inline std::array<Rect, 4> surrounding_walls(const Rect& inner, double thickness) {
+  const Rect& f = inner;
+  const double t = thickness;
+  return {Rect{f.xmin - t, f.ymin - t, f.xmin, f.ymax + t}, Rect{f.xmax, f.ymin - t, f.xmax + t, f.ymax + t},
+          Rect{f.xmin - t, f.ymin - t, f.xmax + t, f.ymin}, Rect{f.xmin - t, f.ymax, f.xmax + t, f.ymax + t}};
+}
 
 }  // namespace plantsim::geom

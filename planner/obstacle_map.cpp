@@ -31,10 +31,7 @@ ObstacleMap::ObstacleMap(std::vector<Rect> inflated, const Rect& floor, double w
                  std::floor(inner.xmax * k) / k, std::floor(inner.ymax * k) / k};
   const double t = std::max(1.0, wall_inflation);  // thickness beyond the free floor
   const Rect& f = free_floor_;
-  rects_.push_back({f.xmin - t, f.ymin - t, f.xmin, f.ymax + t});  // left
-  rects_.push_back({f.xmax, f.ymin - t, f.xmax + t, f.ymax + t});  // right
-  rects_.push_back({f.xmin - t, f.ymin - t, f.xmax + t, f.ymin});  // bottom
-  rects_.push_back({f.xmin - t, f.ymax, f.xmax + t, f.ymax + t});  // top
+  for (const Rect& wall : geom::surrounding_walls(f, t)) rects_.push_back(wall);
 
   const double w = std::max(f.width(), 1e-3), h = std::max(f.height(), 1e-3);
   const double n = static_cast<double>(std::max<std::size_t>(obstacle_count_, 1));

@@ -169,7 +169,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       drive.command(controller::to_wheels(cmd.twist, world.robot.wheel_base_m), control_dt);
     }
     drive.apply(physics, dt);
-    physics.step(config.step, k * dt);
+    physics.step(config.step);
     ++result.physics_steps;
     odometry.count(drive.motor_speeds(), dt);
     const Vec2 now = physics.robot_position();

@@ -26,16 +26,12 @@ FixtureTag tag_of(b2Fixture* f) { return static_cast<FixtureTag>(f->GetUserData(
 
 }  // namespace
 
-PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2World>(b2Vec2(0, 0))) {
+PhysicsWorld::PhysicsWorld(const worlds::World& w)
+    : world_(std::make_unique<b2World>(b2Vec2(0, 0))), robot_radius_m_(w.robot.radius_m) {
   b2BodyDef static_def;
   b2Body* statics = world_->CreateBody(&static_def);
   for (const geom::Rect& r : w.obstacles) add_box(statics, r, kObstacle);
-  const geom::Rect& f = w.floor;
-  const double t = 1.0;
-  add_box(statics, {f.xmin - t, f.ymin - t, f.xmin, f.ymax + t}, kWall);
-  add_box(statics, {f.xmax, f.ymin - t, f.xmax + t, f.ymax + t}, kWall);
-  add_box(statics, {f.xmin, f.ymin - t, f.xmax, f.ymin}, kWall);
-  add_box(statics, {f.xmin, f.ymax, f.xmax, f.ymax + t}, kWall);
+  for (const geom::Rect& wall : geom::surrounding_walls(w.floor, 1.0)) add_box(statics, wall, kWall);
 
   // The charger's face is set back by Box2D's polygon skin so that contact begins exactly
   // when the robot's centre reaches the docked pose.
@@ -91,11 +87,9 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w) : world_(std::make_unique<b2W
 
 PhysicsWorld::~PhysicsWorld() = default;
 
-void PhysicsWorld::step(const StepSettings& s, double /*t_s*/) {
+void PhysicsWorld::step(const StepSettings& s) {
   const Vec2 robot = robot_position();
-  const double robot_r = robot_->GetFixtureList()->GetShape()->m_radius > 0
-                             ? static_cast<double>(robot_->GetFixtureList()->GetShape()->m_radius)
-                             : 0.5;
+  const double robot_r = robot_radius_m_;
   for (Actor& a : moving_) {
     const b2Vec2 now = a.body->GetPosition();
     const Vec2 here{now.x, now.y};

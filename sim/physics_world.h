@@ -43,9 +43,9 @@ class PhysicsWorld {
   PhysicsWorld(const PhysicsWorld&) = delete;
   PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-  /// Moves the scripted obstacles to their positions at t + dt (through their velocity, so
+  /// Moves the scripted obstacles one step along their scripts (through their velocity, so
   /// that Box2D sees them move) and advances the world by one fixed step.
-  void step(const StepSettings& s, double t_s);
+  void step(const StepSettings& s);
 
   /// The scripted obstacles now (yielding ones may lag behind their script).
   std::vector<ActorState> actors() const;
@@ -65,6 +65,7 @@ class PhysicsWorld {
  private:
   std::unique_ptr<b2World> world_;
   b2Body* robot_ = nullptr;
+  double robot_radius_m_;  // circumscribed, for actors deciding whether the robot is in their way
   struct Actor {
     b2Body* body;
     worlds::MovingObstacle script;

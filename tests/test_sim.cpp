@@ -69,7 +69,7 @@ TEST(WheelDrive, OppositeWheelSpeedsTurnInPlace) {
   for (int k = 0; k < 120; ++k) {
     drive.command({-0.2, 0.2}, s.dt_s);
     drive.apply(physics, s.dt_s);
-    physics.step(s, k * s.dt_s);
+    physics.step(s);
   }
   const Pose2 p = physics.robot_pose();
   EXPECT_NEAR(p.x, 5.0, 1e-3);
@@ -85,7 +85,7 @@ TEST(WheelDrive, EqualWheelSpeedsDriveStraightAtThatSpeed) {
   for (int k = 0; k < 120; ++k) {
     drive.command({0.5, 0.5}, s.dt_s);
     drive.apply(physics, s.dt_s);
-    physics.step(s, k * s.dt_s);
+    physics.step(s);
   }
   EXPECT_NEAR(physics.robot_velocity().x, 0.5, 0.01);
   EXPECT_NEAR(physics.robot_pose().y, 5.0, 1e-4);
@@ -164,7 +164,7 @@ TEST(WheelDrive, AHardTurnAtSpeedSkidsOnASlipperyFloor) {
     for (int k = 0; k < 120; ++k) {
       drive.command({0.8, 0.8}, s.dt_s);
       drive.apply(physics, s.dt_s);
-      physics.step(s, k * s.dt_s);
+      physics.step(s);
     }
     ASSERT_NEAR(physics.robot_velocity().x, 0.8, 0.02);
     const geom::Vec2 before = physics.robot_position();
@@ -172,7 +172,7 @@ TEST(WheelDrive, AHardTurnAtSpeedSkidsOnASlipperyFloor) {
       drive.command({-0.8, 0.8}, s.dt_s);
       drive.apply(physics, s.dt_s);
       slipped[i] |= drive.slipping();
-      physics.step(s, k * s.dt_s);
+      physics.step(s);
     }
     slide[i] = geom::distance(before, physics.robot_position());
   }

@@ -13,19 +13,11 @@ bool rects_overlap_open(const Rect& a, const Rect& b) {
   return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
 }
 
-std::vector<Rect> walls_as_rects(const Rect& floor) {
-  const double t = 1.0;  // wall thickness only matters for containment tests
-  return {{floor.xmin - t, floor.ymin - t, floor.xmin, floor.ymax + t},
-          {floor.xmax, floor.ymin - t, floor.xmax + t, floor.ymax + t},
-          {floor.xmin - t, floor.ymin - t, floor.xmax + t, floor.ymin},
-          {floor.xmin - t, floor.ymax, floor.xmax + t, floor.ymax + t}};
-}
-
 }  // namespace
 
 bool docking_area_clear(const World& world) {
   std::vector<Rect> blockers = world.obstacles;
-  for (const Rect& w : walls_as_rects(world.floor)) blockers.push_back(w);
+  for (const Rect& w : geom::surrounding_walls(world.floor, 1.0)) blockers.push_back(w);
   const Rect body = charger_body(world).bounding_box();
   const Pose2 staging = staging_pose(world);
   const double r = world.robot.radius_m;
@@ -51,8 +43,8 @@ std::optional<double> choose_docking_heading(const World& world, Vec2 dock_point
     World trial = world;
     trial.charger = {dock_point.x, dock_point.y, yaw};
     if (!docking_area_clear(trial)) continue;
-    const double alignment = geom::dot(geom::unit_from_angle(yaw), from_start) /
-                             std::max(geom::norm(from_start), 1e-300);
+    const double length = geom::norm(from_start);  // 0 when the start is at the dock point
+    const double alignment = length > 0 ? geom::dot(geom::unit_from_angle(yaw), from_start) / length : 0.0;
     if (alignment > best_alignment) {
       best_alignment = alignment;
       best = yaw;

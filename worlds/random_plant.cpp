@@ -21,7 +21,7 @@ World random_plant(const RandomPlantOptions& o) {
   w.name = "random_n" + std::to_string(o.rect_count) + "_s" + std::to_string(o.seed);
   w.source = w.name;
   w.floor = {0, 0, o.width_m, o.height_m};
-  w.inflation_margin_m = 0.3 - w.robot.radius_m;
+  w.inflation_margin_m = kBenchmarkInflation_m - w.robot.radius_m;
   const double side = o.rect_count > 0 ? std::sqrt(o.width_m * o.height_m * o.coverage / o.rect_count) : 1.0;
   const double g = o.min_gap_m;
   long tries = 0;

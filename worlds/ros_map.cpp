@@ -143,10 +143,7 @@ std::optional<Pose2> place_charger_against_wall(const World& world, const std::f
   const double gap = world.robot.front_extent_m() + world.charger_spec.depth_m + 0.02;
   std::vector<Rect> faces = world.obstacles;
   const Rect& f = world.floor;
-  faces.push_back({f.xmin - 1, f.ymin, f.xmin, f.ymax});
-  faces.push_back({f.xmax, f.ymin, f.xmax + 1, f.ymax});
-  faces.push_back({f.xmin, f.ymin - 1, f.xmax, f.ymin});
-  faces.push_back({f.xmin, f.ymax, f.xmax, f.ymax + 1});
+  for (const Rect& wall : geom::surrounding_walls(f, 1.0)) faces.push_back(wall);
   std::optional<Pose2> best;
   double best_room = -1;
   World trial = world;

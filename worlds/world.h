@@ -14,6 +14,10 @@ using geom::Pose2;
 using geom::Rect;
 using geom::Vec2;
 
+/// The inflation of the plain benchmark worlds' optimal lengths (shared/data/README.md): worlds
+/// made in that style give robot radius + margin this total.
+inline constexpr double kBenchmarkInflation_m = 0.3;
+
 /// Differential-drive robot with a disk or a rectangular footprint. Typical values are those
 /// of a small indoor inspection robot.
 struct RobotSpec {

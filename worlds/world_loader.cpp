@@ -190,7 +190,7 @@ World read_plain_schema(const json& doc, const FieldReader& in, const std::strin
   const Vec2 goal = in.point_array(in.member(doc, "goal", ""), "goal");
   // The benchmark's optimal lengths assume 0.3 m square inflation: robot radius plus margin.
   w.robot = RobotSpec{};
-  w.inflation_margin_m = 0.3 - w.robot.radius_m;
+  w.inflation_margin_m = kBenchmarkInflation_m - w.robot.radius_m;
   const Vec2 d = goal - start;
   w.start = {start.x, start.y, std::atan2(d.y, d.x)};
   w.charger = {goal.x, goal.y, 0.0};
