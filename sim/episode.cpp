@@ -23,13 +23,14 @@ DockError dock_error(const Pose2& truth, const Pose2& dock) {
 class ChargerDetector {
  public:
   ChargerDetector(DetectionParams p, std::uint64_t seed) : p_(p), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
-  std::optional<Pose2> observe(const Pose2& truth, const Pose2& dock) {
+  /// `marker` is where the detected feature is (the charger body's centre), in the world.
+  std::optional<Pose2> observe(const Pose2& truth, const Pose2& dock, Vec2 marker_world) {
     if (!p_.enabled) return std::nullopt;
     const Vec2 d = dock.position() - truth.position();
     if (geom::dot(d, d) > p_.range_m * p_.range_m) return std::nullopt;
     const Vec2 rel = geom::rotate(d, -truth.yaw);
-    // The marker sits on the charger, ahead of the docked pose: look for it there.
-    const Vec2 marker = rel + geom::rotate(Vec2{1.0, 0.0}, dock.yaw - truth.yaw);
+    // The marker is on the charger: it must be within the sensor's field of view.
+    const Vec2 marker = geom::rotate(marker_world - truth.position(), -truth.yaw);
     if (std::fabs(std::atan2(marker.y, marker.x)) > 0.5 * p_.field_of_view_rad) return std::nullopt;
     return Pose2{rel.x + p_.position_noise_m * gauss_(rng_), rel.y + p_.position_noise_m * gauss_(rng_),
                  geom::wrap_angle(dock.yaw - truth.yaw + p_.yaw_noise_rad * gauss_(rng_))};
@@ -85,6 +86,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   docking.staging_distance_m = world.charger_spec.staging_distance_m;
   docking.footprint_radius_m = world.robot.radius_m;
   controller::DockingController control(config.tracking, docking, plan.path, world.charger);
+  const Vec2 charger_marker = worlds::charger_body(world).center;
 
   const double dt = config.step.dt_s;
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
@@ -130,7 +132,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       in.charger_contact = charger_contact;
       in.charging = charging;
       charger_contact = charging = false;
-      in.charger_in_robot = detector.observe(truth, world.charger);
+      in.charger_in_robot = detector.observe(truth, world.charger, charger_marker);
       if (!world.moving.empty())
         in.nearby_obstacles = sense_moving(physics.actors(), truth, estimate, config.perception.range_m);
       cmd = control.step(in);
