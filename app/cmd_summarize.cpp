@@ -88,27 +88,3 @@ std::function<int()> add_summarize_command(CLI::App& app) {
 
 }  // namespace plantsim::app
 
-#include "planner/planner.h"
-#include "sim/episode_config_json.h"
-
-namespace plantsim::app {
-
-std::function<int()> add_planners_command(CLI::App& app) {
-  app.add_subcommand("planners", "Print the planner names, comma separated");
-  return []() {
-    std::string line;
-    for (const auto& n : planner::planner_names()) line += (line.empty() ? "" : ",") + n;
-    std::cout << line << "\n";
-    return kExitOk;
-  };
-}
-
-std::function<int()> add_config_command(CLI::App& app) {
-  app.add_subcommand("config", "Print every episode parameter with its default, as a --config file");
-  return []() {
-    std::cout << sim::default_config_json();
-    return kExitOk;
-  };
-}
-
-}  // namespace plantsim::app

@@ -68,12 +68,15 @@ double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& 
   return walked;
 }
 
-double remaining_length(const std::vector<Vec2>& path, const PathPoint& from) {
+std::vector<double> lengths_to_end(const std::vector<Vec2>& path) {
+  std::vector<double> out(path.size(), 0.0);
+  for (std::size_t i = path.size(); i-- > 1;) out[i - 1] = out[i] + geom::distance(path[i - 1], path[i]);
+  return out;
+}
+
+double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end, const PathPoint& from) {
   if (path.size() < 2) return 0;
-  double total = geom::distance(from.point, path[from.segment + 1]);
-  for (std::size_t i = from.segment + 1; i + 1 < path.size(); ++i)
-    total += geom::distance(path[i], path[i + 1]);
-  return total;
+  return geom::distance(from.point, path[from.segment + 1]) + to_end[from.segment + 1];
 }
 
 Vec2 to_robot_frame(const Pose2& pose, Vec2 p) {

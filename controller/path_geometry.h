@@ -37,8 +37,11 @@ Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ah
 double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from, double sharp_turn_rad,
                                 double horizon_m);
 
-/// Path length from `from` to the end.
-double remaining_length(const std::vector<Vec2>& path, const PathPoint& from);
+/// For each vertex i, the path length from it to the end (computed once per path).
+std::vector<double> lengths_to_end(const std::vector<Vec2>& path);
+
+/// Path length from `from` to the end, given lengths_to_end(path).
+double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end, const PathPoint& from);
 
 
 /// Expresses world point p in the frame of pose (x forward, y left).

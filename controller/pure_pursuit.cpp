@@ -7,7 +7,7 @@
 namespace plantsim::controller {
 
 PurePursuit::PurePursuit(PurePursuitParams params, std::vector<Vec2> path)
-    : params_(params), path_(std::move(path)) {}
+    : params_(params), path_(std::move(path)), to_end_(lengths_to_end(path_)) {}
 
 TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   TrackingCommand out;
@@ -15,7 +15,7 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   const PathPoint near = closest_point(path_, pose.position(), segment_, p.progress_window_m);
   segment_ = near.segment;
   out.cross_track_error_m = near.distance;
-  const double remaining = remaining_length(path_, near);
+  const double remaining = remaining_length(path_, to_end_, near);
   const double to_end = geom::distance(pose.position(), path_.back());
   // Done when at the end, or when the end lies behind the robot within the tolerance band
   // (never turn around for the last centimetres).

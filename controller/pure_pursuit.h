@@ -48,6 +48,7 @@ class PurePursuit {
  private:
   PurePursuitParams params_;
   std::vector<Vec2> path_;
+  std::vector<double> to_end_;  // path length from each vertex to the end
   std::size_t segment_ = 0;  // progress: never moves back
   bool rotating_ = false;    // turning in place, until aligned
 };
