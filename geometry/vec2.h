@@ -71,6 +71,11 @@ struct Rect {
   friend bool operator==(const Rect&, const Rect&) = default;
 };
 
+/// The point of the closed rectangle nearest to p (p itself when inside).
+inline Vec2 closest_point(const Rect& r, Vec2 p) {
+  return {p.x < r.xmin ? r.xmin : (p.x > r.xmax ? r.xmax : p.x), p.y < r.ymin ? r.ymin : (p.y > r.ymax ? r.ymax : p.y)};
+}
+
 /// Four rectangles of the given thickness surrounding `inner` (left, right, bottom, top),
 /// overlapping at the corners: a floor's boundary as solid walls.
 inline std::array<Rect, 4> surrounding_walls(const Rect& inner, double thickness) {
