@@ -17,6 +17,8 @@
 
 namespace plantsim::app {
 
+constexpr const char* kFieldEntry = "potential-field";
+
 std::function<int()> add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
   struct Options {
@@ -30,9 +32,12 @@ std::function<int()> add_compare_command(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("world", opt->world, "World file")->required();
-  cmd->add_option("--planners", opt->planners, "Planners to compare (comma separated)")
+  std::vector<std::string> choices = planner::planner_names();
+  choices.push_back(kFieldEntry);
+  cmd->add_option("--planners", opt->planners,
+                  "Planners to compare (comma separated); potential-field drives by seed 001's field instead")
       ->delimiter(',')
-      ->check(CLI::IsMember(planner::planner_names()));
+      ->check(CLI::IsMember(choices));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>_compare)");
   cmd->add_option("--title", opt->title, "Figure title");
   cmd->add_option("--config", opt->config, "Episode parameters (JSON)");
@@ -65,9 +70,13 @@ std::function<int()> add_compare_command(CLI::App& app) {
         all_ok = all_ok && r.status == planner::PlanStatus::kOk;
         if (opt->graph) panel.graph_edges = p->graph_edges();
       } else {
-        auto p = planner::make_planner(name, planner::planner_input(world, true));
-        panel.run = sim::run_episode(world, *p, config);
-        all_ok = all_ok && panel.run.docked;
+        // The potential field has no plan of its own: the visibility graph's is its reference.
+        const bool field = name == kFieldEntry;
+        auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
+        sim::EpisodeConfig c = config;
+        if (field) c.travel = sim::TravelMode::kPotentialField;
+        panel.run = sim::run_episode(world, *p, c);
+        all_ok = all_ok && panel.run.succeeded();
         if (opt->graph) panel.graph_edges = p->graph_edges();
       }
       report.rows.push_back(metric_row(panel.run, world.name));

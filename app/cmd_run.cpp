@@ -39,6 +39,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::string start;
     std::string charger;
     std::string config;
+    std::string travel;
     bool animate = false;
   };
   auto opt = std::make_shared<Options>();
@@ -50,6 +51,9 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
   cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
   cmd->add_option("--config", opt->config, "Controller, drive and sensing parameters (JSON, see docs/config.md)");
+  cmd->add_option("--travel", opt->travel,
+                  "path (follow the planner's path) or potential-field (seed 001; the plan is the reference)")
+      ->check(CLI::IsMember({"path", "potential-field"}));
   cmd->add_flag("--animate", opt->animate, "Also write animation frames (and an MP4 when ffmpeg is installed)");
   return [opt, cmd]() {
     worlds::PoseOverrides overrides;
@@ -65,6 +69,8 @@ std::function<int()> add_run_command(CLI::App& app) {
     auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     config.seed = opt->seed;
+    if (!opt->travel.empty())
+      config.travel = opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
     const std::string line = command_line(cmd);
@@ -85,7 +91,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
               << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << out_dir << "\n";
-    return r.docked ? kExitOk : kExitFailed;
+    return r.succeeded() ? kExitOk : kExitFailed;
   };
 }
 

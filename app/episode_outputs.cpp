@@ -24,8 +24,8 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
 }
 
 std::vector<std::string> metric_headers() {
-  return {"world", "planner", "status", "position error (cm)", "heading error (deg)", "collisions", "retries",
-          "stops", "replans", "time (s)", "plan (ms)", "planned (m)", "driven (m)", "max cross-track (cm)"};
+  return {"world", "planner", "travel", "status", "position error (cm)", "heading error (deg)", "collisions", "retries",
+          "stops", "replans", "local minima", "wall follows", "time (s)", "plan (ms)", "planned (m)", "driven (m)", "max cross-track (cm)"};
 }
 
 std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name) {
@@ -34,19 +34,20 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
     return std::string(buf);
   };
-  return {world_name, r.planner, r.status, f(100 * r.position_error_m, 2), f(r.heading_error_deg, 2),
+  return {world_name, r.planner, r.travel, r.status, f(100 * r.position_error_m, 2), f(r.heading_error_deg, 2),
           std::to_string(r.collisions), std::to_string(r.retries), std::to_string(r.stops), std::to_string(r.replans),
-          f(r.time_s, 1), f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2), f(r.path_length_m, 2),
+          std::to_string(r.local_minima), std::to_string(r.wall_follows), f(r.time_s, 1), f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2), f(r.path_length_m, 2),
           f(r.driven_length_m, 2), f(100 * r.max_cross_track_m, 1)};
 }
 
 std::string trajectory_csv(const sim::EpisodeResult& r) {
-  std::string out = "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,speed_mps,cross_track_m,phase\n";
+  std::string out = "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,speed_mps,cross_track_m,phase,wall_following,target_x_m,target_y_m\n";
   char line[256];
   for (const auto& s : r.trajectory) {
-    std::snprintf(line, sizeof line, "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s\n", s.t_s,
+    std::snprintf(line, sizeof line, "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f\n", s.t_s,
                   s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw,
-                  s.speed_mps, s.cross_track_m, std::string(controller::to_string(s.phase)).c_str());
+                  s.speed_mps, s.cross_track_m, std::string(controller::to_string(s.phase)).c_str(),
+                  s.wall_following ? 1 : 0, s.target.x, s.target.y);
     out += line;
   }
   return out;

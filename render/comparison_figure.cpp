@@ -30,6 +30,8 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     if (!p.graph_edges.empty()) draw_graph(c, p.graph_edges);
     draw_plan(c, p.run.plan);
     if (p.drove) {
+      draw_target(c, world, p.run.trajectory);
+      draw_wall_following(c, p.run.trajectory);
       draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);
       if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot);
     }
@@ -37,8 +39,12 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     draw_charger(c, world);
     fig.world_axes(world.floor, t);
     char line1[256], line2[256];
-    std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(), p.run.path_length_m,
-                  p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
+    if (p.run.travel == "path")
+      std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(), p.run.path_length_m,
+                    p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
+    else  // no plan of its own: the drawn plan is the reference
+      std::snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)", p.label.c_str(),
+                    p.run.driven_length_m, p.run.path_length_m);
     std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, graph %lld vertices, %lld edges", p.run.plan_stats.build_ms,
                   p.run.plan_stats.query_ms, static_cast<long long>(p.run.plan_stats.vertices),
                   static_cast<long long>(p.run.plan_stats.edges));

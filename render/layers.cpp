@@ -62,6 +62,27 @@ void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vec
 
 void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan) { c.polyline(plan, 2.0, palette::kPlan); }
 
+void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t) {
+  if (!w.target) return;
+  const auto& m = *w.target;
+  if (m.waypoints.size() > 1) c.polyline(m.waypoints, 1.5, palette::kTarget);
+  const Vec2 at = t.empty() ? m.position_at(0) : t.back().target;
+  c.fill_box(at, 0.5 * m.width_m, 0.5 * m.height_m, 0.0, palette::kTarget);
+}
+
+void draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
+  std::vector<Vec2> run;
+  for (const auto& s : t) {
+    if (s.wall_following) {
+      run.push_back(s.truth.position());
+    } else if (!run.empty()) {
+      c.polyline(run, 11.0, palette::kWallFollow);
+      run.clear();
+    }
+  }
+  if (!run.empty()) c.polyline(run, 11.0, palette::kWallFollow);
+}
+
 void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
                               std::size_t upto) {
   const std::size_t n = std::min(upto, t.size());

@@ -18,6 +18,10 @@ void draw_start(GlCanvas& c, const worlds::World& w);
 /// Routes, and the boxes where given (else where their scripts put them at t).
 void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes = {});
 void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan);
+/// The moving target's scripted track and where it was at the last sample.
+void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t);
+/// A wide band under the stretches driven in the wall-following state.
+void draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
 /// The driven path, each segment coloured by speed on viridis from 0 to `max_speed_mps`.
 void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
                               std::size_t upto = static_cast<std::size_t>(-1));

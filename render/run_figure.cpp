@@ -15,7 +15,17 @@ std::string result_line(const sim::EpisodeResult& run) {
   if (run.trajectory.empty()) return run.status;
   std::snprintf(buf, sizeof buf, "%s, error %.1f cm / %.1f deg, %d collisions, %d retries, %.1f s", run.status.c_str(),
                 100 * run.position_error_m, run.heading_error_deg, run.collisions, run.retries, run.time_s);
-  return buf;
+  std::string line = buf;
+  if (run.travel != "path") {
+    std::snprintf(buf, sizeof buf, ", %d local minima, %d wall follows", run.local_minima, run.wall_follows);
+    line += buf;
+  }
+  return line;
+}
+
+std::string method_label(const sim::EpisodeResult& run) {
+  if (run.travel == "path") return "planner " + run.planner;
+  return run.travel + " (reference plan: " + run.planner + ")";
 }
 
 Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& o,
@@ -30,6 +40,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
   draw_moving(c, world, t_end, run.moving_final);
   draw_plan(c, run.plan);
+  draw_target(c, world, run.trajectory);
+  draw_wall_following(c, run.trajectory);
   draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s);
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
   draw_start(c, world);
@@ -37,7 +49,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_charger(c, world);
   fig.world_axes(world.floor, t);
 
-  const std::string title = o.title.empty() ? world.name + "  |  planner " + run.planner : o.title;
+  const std::string title = o.title.empty() ? world.name + "  |  " + method_label(run) : o.title;
   fig.text(title, 70, 26, 18, palette::kAxis, Anchor::kLeft, true);
   char sub[300];
   std::snprintf(sub, sizeof sub, "%s  |  planned %.2f m, driven %.2f m", result_line(run).c_str(), run.path_length_m,
@@ -49,6 +61,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                                      {palette::kPlan, "plan"},         {palette::kFootprint, "robot"},
                                      {palette::kStart, "start"},       {palette::kCharger, "charger"}};
   if (!world.moving.empty()) legend.push_back({palette::kMoving, "moving"});
+  if (world.target) legend.push_back({palette::kTarget, "target"});
+  if (run.travel != "path") legend.push_back({palette::kWallFollow, "wall following"});
   if (!o.graph_edges.empty()) legend.push_back({palette::kGraph, "graph"});
   fig.legend(bar_x - 10, 380, legend);
   if (transform_out) *transform_out = t;
@@ -69,7 +83,7 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
     speed.push_back(s.speed_mps);
     distance.push_back(geom::distance(s.truth.position(), world.charger.position()));
   }
-  fig.text(world.name + "  |  planner " + run.planner + "  |  " + result_line(run), 70, 26, 16, palette::kAxis,
+  fig.text(world.name + "  |  " + method_label(run) + "  |  " + result_line(run), 70, 26, 16, palette::kAxis,
            Anchor::kLeft, true);
   const double left = 80, right = width_px - 40.0, h = (height_px - 60.0) / 3.0;
   fig.plot({left, 60 + 25, right, 60 + h - 25}, {{t, cross, palette::kPlan, "cross-track"}},

@@ -22,6 +22,9 @@ struct RunFigureOptions {
   std::string title;                               ///< default: world, planner and result
 };
 
+/// "planner vg", or "potential-field (reference plan: vg)".
+std::string method_label(const sim::EpisodeResult& run);
+
 /// Draws the run; `transform` receives the world-to-pixel mapping of the map panel.
 Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& options = {},
                       PixelTransform* transform = nullptr);

@@ -61,14 +61,36 @@ std::vector<controller::MovingBox> sense_moving(const std::vector<ActorState>& a
   return out;
 }
 
+// What the potential field feels: the map's rectangles and walls within sensor range, the
+// charger block, and the moving obstacles as sensed (with their velocities).
+std::vector<controller::FieldObstacle> field_obstacles(const worlds::World& world, const Pose2& estimate, double range_m,
+                                                       const std::vector<controller::MovingBox>& moving) {
+  std::vector<controller::FieldObstacle> out;
+  const Vec2 x = estimate.position();
+  auto add_if_near = [&](const geom::Rect& r) {
+    if (geom::distance(x, geom::closest_point(r, x)) <= range_m) out.push_back({r, {0, 0}});
+  };
+  for (const geom::Rect& r : world.obstacles) add_if_near(r);
+  for (const geom::Rect& r : geom::surrounding_walls(world.floor, 1.0)) add_if_near(r);
+  add_if_near(worlds::charger_body(world).bounding_box());
+  for (const auto& m : moving) out.push_back({m.box, m.velocity});
+  return out;
+}
+
 }  // namespace
+
+std::string_view to_string(TravelMode m) { return m == TravelMode::kPath ? "path" : "potential-field"; }
 
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                           const EpisodeConfig& config) {
   EpisodeResult result;
   result.planner = planner.name();
+  result.travel = std::string(to_string(config.travel));
   const Pose2 staging = worlds::staging_pose(world);
-  const planner::PlanResult plan = planner.plan(world.start.position(), staging.position());
+  // A pursuit plans to where the target parks: the reference for a potential-field run, the
+  // first path for a path-following one (replanned to the target as it moves).
+  const Vec2 goal = world.target ? world.target->waypoints.back() : staging.position();
+  const planner::PlanResult plan = planner.plan(world.start.position(), goal);
   result.plan_stats = plan.stats;
   if (plan.status != planner::PlanStatus::kOk) {
     result.status = std::string(planner::to_string(plan.status));
@@ -87,6 +109,23 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   docking.footprint_radius_m = world.robot.radius_m;
   controller::DockingController control(config.tracking, docking, plan.path, world.charger);
   const Vec2 charger_marker = worlds::charger_body(world).center;
+  std::optional<controller::PotentialFieldController> field;
+  if (config.travel == TravelMode::kPotentialField) field.emplace(config.field, world.robot.radius_m);
+  double next_chase_plan_s = config.pursuit_replan_period_s;  // path travel after a moving target
+  // A plan from where the robot believes it is, around the moving obstacles it sees (grown by
+  // the arc check's extra clearance, so that the new path is one it will accept).
+  auto plan_around = [&](const Pose2& estimate, Vec2 to, const std::vector<controller::MovingBox>& seen)
+      -> std::optional<std::vector<Vec2>> {
+    planner::PlannerInput again = planner::planner_input(world, true);
+    const double extra = std::max(0.0, config.docking.safety_margin_m - world.inflation_margin_m) + 0.05;
+    for (const auto& b : seen) again.obstacles.push_back(b.box.inflated(extra));
+    again.snap_to_free = true;
+    const planner::PlanResult re = planner::make_planner(planner.name(), again)->plan(estimate.position(), to);
+    if (re.status != planner::PlanStatus::kOk) return std::nullopt;
+    std::vector<Vec2> path = re.path;
+    if (re.start_snapped) path.insert(path.begin(), estimate.position());
+    return path;
+  };
 
   const double dt = config.step.dt_s;
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
@@ -135,28 +174,67 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       in.charger_in_robot = detector.observe(truth, world.charger, charger_marker);
       if (!world.moving.empty())
         in.nearby_obstacles = sense_moving(physics.actors(), truth, estimate, config.perception.range_m);
-      cmd = control.step(in);
-      if (cmd.replan_requested) {
-        // Plan again with what blocks the way as extra obstacles; start from the nearest free
-        // point if the robot stands inside their margin.
-        planner::PlannerInput again = planner::planner_input(world, true);
-        // Grown by the arc check's extra clearance, so that the new path is one it will accept.
-        const double extra = std::max(0.0, config.docking.safety_margin_m - world.inflation_margin_m) + 0.05;
-        for (const auto& b : in.nearby_obstacles) again.obstacles.push_back(b.box.inflated(extra));
-        again.snap_to_free = true;
-        const planner::PlanResult re =
-            planner::make_planner(planner.name(), again)->plan(estimate.position(), staging.position());
-        if (re.status == planner::PlanStatus::kOk) {
-          std::vector<Vec2> path = re.path;
-          if (re.start_snapped) path.insert(path.begin(), estimate.position());
-          control.replace_path(path);
-          result.plan = path;  // the figure shows the plan finally followed
-          ++result.replans;
+      const std::optional<ActorState> target = physics.target();
+      if (target && controller::distance_to_box(truth.position(), target->box) - world.robot.radius_m <=
+                        config.catch_distance_m) {
+        result.caught = true;
+        result.status = "caught";
+        result.time_s = k * dt;
+        result.trajectory.push_back({k * dt, truth, estimate, geom::dot(physics.robot_velocity(), truth.heading()), 0,
+                                     controller::DockPhase::kTravel, false, target->box.center()});
+        break;
+      }
+      bool wall_following = false;
+      if (field) {
+        const Vec2 velocity = in.speed_mps * estimate.heading();
+        const controller::FieldCommand fc = field->step(
+            {estimate, velocity, target ? target->box.center() : staging.position(), target ? target->velocity : Vec2{0, 0},
+             control_dt, field_obstacles(world, estimate, config.field.sensor_range_m, in.nearby_obstacles)});
+        result.local_minima = field->local_minima();
+        result.wall_follows = field->wall_follow_episodes();
+        wall_following = fc.state == controller::FieldState::kWallFollowing;
+        if (fc.trapped) {
+          result.status = "trapped";
+          result.time_s = k * dt;
+          break;
+        }
+        if (fc.arrived && !target) {
+          // At the staging area: the docking manoeuvre takes over from here.
+          field.reset();
+          control.replace_path({estimate.position(), staging.position()});
+          cmd = control.step(in);
+        } else {
+          cmd = {};
+          cmd.twist = fc.twist;
+        }
+      } else if (target) {
+        // Travel as to a charger, but the path's end follows the target; never dock.
+        if (k * dt >= next_chase_plan_s || control.phase() != controller::DockPhase::kTravel) {
+          next_chase_plan_s = k * dt + config.pursuit_replan_period_s;
+          if (auto path = plan_around(estimate, target->box.center(), in.nearby_obstacles)) {
+            if (control.phase() == controller::DockPhase::kTravel) control.replace_path(*path);
+            else control = controller::DockingController(config.tracking, docking, *path, world.charger);
+            ++result.replans;
+          }
+        }
+        cmd = control.step(in);
+        if (cmd.phase != controller::DockPhase::kTravel) cmd.twist = {};
+      } else {
+        cmd = control.step(in);
+        if (cmd.replan_requested) {
+          // Plan again with what blocks the way as extra obstacles, from the nearest free
+          // point if the robot stands inside their margin.
+          if (auto path = plan_around(estimate, staging.position(), in.nearby_obstacles)) {
+            control.replace_path(*path);
+            result.plan = *path;  // the figure shows the plan finally followed
+            ++result.replans;
+          }
         }
       }
       result.max_cross_track_m = std::max(result.max_cross_track_m, cmd.cross_track_error_m);
       result.trajectory.push_back({k * dt, truth, estimate, geom::dot(physics.robot_velocity(), truth.heading()),
-                                   cmd.cross_track_error_m, cmd.phase});
+                                   cmd.cross_track_error_m, cmd.phase, wall_following,
+                                   target ? target->box.center() : Vec2{}});
       result.time_s = k * dt;
       if (cmd.phase == controller::DockPhase::kDocked || cmd.phase == controller::DockPhase::kFailed) {
         result.docked = cmd.phase == controller::DockPhase::kDocked;
@@ -179,7 +257,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     previous = now;
   }
   for (const ActorState& a : physics.actors()) result.moving_final.push_back(a.box);
-  if (result.status == "timeout") {
+  if (result.status == "timeout" || result.status == "trapped") {
     const DockError err = dock_error(physics.robot_pose(), world.charger);
     result.position_error_m = err.position_m;
     result.heading_error_deg = err.heading_rad * 180.0 / M_PI;

@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "controller/docking.h"
+#include "controller/potential_field.h"
 #include "planner/planner.h"
 #include "sim/localization.h"
 #include "sim/odometry.h"
@@ -34,6 +36,12 @@ struct DockTolerance {
   double heading_rad = 2.0 * M_PI / 180.0;
 };
 
+/// How the robot travels to the staging pose (or to a moving target): along the planner's
+/// path by pure pursuit, or by seed 001's potential field with wall following (the planner's
+/// path is then only the reference the result is measured against).
+enum class TravelMode { kPath, kPotentialField };
+std::string_view to_string(TravelMode m);
+
 struct EpisodeConfig {
   StepSettings step;
   DriveParams drive;
@@ -43,6 +51,10 @@ struct EpisodeConfig {
   PerceptionParams perception;
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
+  TravelMode travel = TravelMode::kPath;
+  controller::PotentialFieldParams field;
+  double catch_distance_m = 0.1;        ///< a moving target is caught this close (edge to edge)
+  double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
   DockTolerance tolerance;
   double timeout_s = 600.0;
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
@@ -56,11 +68,15 @@ struct TrajectorySample {
   double speed_mps;
   double cross_track_m;
   controller::DockPhase phase;
+  bool wall_following = false;  ///< potential-field travel in its wall-following state
+  Vec2 target;                  ///< where the moving target was (worlds with one)
 };
 
 struct EpisodeResult {
-  std::string status;            ///< "docked", "failed", "timeout", or a planner status
+  std::string status;            ///< "docked", "caught", "failed", "trapped", "timeout", or a planner status
   bool docked = false;
+  bool caught = false;           ///< a moving target was reached
+  bool succeeded() const { return docked || caught; }
   double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
   double heading_error_deg = 0;
   int collisions = 0;            ///< separate contacts with obstacles or walls
@@ -73,6 +89,9 @@ struct EpisodeResult {
   double driven_length_m = 0;    ///< ground truth
   double max_cross_track_m = 0;
   std::string planner;
+  std::string travel = "path";   ///< to_string(TravelMode)
+  int local_minima = 0;          ///< potential-field travel: local minima met
+  int wall_follows = 0;          ///< ... and wall-following episodes begun
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
   std::vector<Vec2> plan;
   std::vector<TrajectorySample> trajectory;
@@ -80,7 +99,8 @@ struct EpisodeResult {
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the
-/// sensed obstacles added.
+/// sensed obstacles added. In a world with a moving target the episode is a pursuit: the plan
+/// goes to where the target will park, and success is reaching the target.
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                           const EpisodeConfig& config);
 

@@ -70,6 +70,32 @@ const std::vector<Field>& fields() {
       PS_FIELD("docking", docking.replan_after_s, "replan_after_s"),
       PS_FIELD("docking", docking.yield_horizon_s, "yield_horizon_s"),
       PS_FIELD("docking", docking.yield_speed_mps, "yield_speed_mps"),
+      PS_FIELD("potential_field", field.k_att, "k_att"),
+      PS_FIELD("potential_field", field.m, "m"),
+      PS_FIELD("potential_field", field.k_att_v, "k_att_v"),
+      PS_FIELD("potential_field", field.m_v, "m_v"),
+      PS_FIELD("potential_field", field.k_rep, "k_rep"),
+      PS_FIELD("potential_field", field.n, "n"),
+      PS_FIELD("potential_field", field.rho0_m, "rho0_m"),
+      PS_FIELD("potential_field", field.k_rep_v, "k_rep_v"),
+      PS_FIELD("potential_field", field.n_v, "n_v"),
+      PS_FIELD("potential_field", field.rho_min_m, "rho_min_m"),
+      PS_FIELD("potential_field", field.max_speed_mps, "max_speed_mps"),
+      PS_FIELD("potential_field", field.turn_gain, "turn_gain"),
+      PS_FIELD("potential_field", field.max_angular_speed_radps, "max_angular_speed_radps"),
+      PS_FIELD("potential_field", field.max_decel_mps2, "max_decel_mps2"),
+      PS_FIELD("potential_field", field.arrive_radius_m, "arrive_radius_m"),
+      PS_FIELD("potential_field", field.slow_force_ratio, "slow_force_ratio"),
+      PS_FIELD("potential_field", field.balance_ratio, "balance_ratio"),
+      PS_FIELD("potential_field", field.stall_window_s, "stall_window_s"),
+      PS_FIELD("potential_field", field.stall_distance_m, "stall_distance_m"),
+      PS_FIELD("potential_field", field.wall_distance_m, "wall_distance_m"),
+      PS_FIELD("potential_field", field.wall_gain, "wall_gain"),
+      PS_FIELD("potential_field", field.follow_angle_rad, "follow_angle_rad"),
+      PS_FIELD("potential_field", field.leave_margin_m, "leave_margin_m"),
+      PS_FIELD("potential_field", field.sensor_range_m, "sensor_range_m"),
+      PS_FIELD("pursuit", catch_distance_m, "catch_distance_m"),
+      PS_FIELD("pursuit", pursuit_replan_period_s, "replan_period_s"),
       PS_FIELD("perception", perception.range_m, "range_m"),
       PS_FIELD("tolerance", tolerance.position_m, "position_m"),
       PS_FIELD("tolerance", tolerance.heading_rad, "heading_rad"),
@@ -91,6 +117,7 @@ const std::vector<IntField>& int_fields() {
       {"step", "position_iterations", [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
       {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
       {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }},
+      {"potential_field", "max_wall_follows", [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
   };
   return table;
 }
@@ -143,6 +170,12 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     if (!v->is_boolean()) throw worlds::WorldError(source, "detection.enabled", "expected true or false");
     c.detection.enabled = v->get<bool>();
   }
+  if (const json* v = lookup("", "travel")) {
+    const std::string t = v->is_string() ? v->get<std::string>() : "";
+    if (t == "path") c.travel = TravelMode::kPath;
+    else if (t == "potential-field") c.travel = TravelMode::kPotentialField;
+    else throw worlds::WorldError(source, "travel", "expected \"path\" or \"potential-field\"");
+  }
   if (const json* v = lookup("", "seed")) {
     if (!v->is_number_unsigned()) throw worlds::WorldError(source, "seed", "expected a whole number");
     c.seed = v->get<std::uint64_t>();
@@ -156,6 +189,11 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     }
   }
   if (c.step.dt_s <= 0 || c.step.dt_s > 0.1) throw worlds::WorldError(source, "step.dt_s", "must be in (0, 0.1]");
+  if (c.field.k_att <= 0) throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
+  if (c.field.rho0_m <= c.field.rho_min_m)
+    throw worlds::WorldError(source, "potential_field.rho0_m", "must exceed rho_min_m");
+  if (c.field.slow_force_ratio <= 0) throw worlds::WorldError(source, "potential_field.slow_force_ratio", "must be positive");
+  if (c.pursuit_replan_period_s <= 0) throw worlds::WorldError(source, "pursuit.replan_period_s", "must be positive");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
     throw worlds::WorldError(source, "tracking.lookahead_min_m", "must not exceed lookahead_max_m");
   return c;
@@ -178,6 +216,7 @@ std::string default_config_json() {
   }
   for (const IntField& f : int_fields()) j[f.section][f.name] = f.ref(c);
   j["detection"]["enabled"] = c.detection.enabled;
+  j["travel"] = std::string(to_string(c.travel));
   j["seed"] = c.seed;
   return j.dump(2) + "\n";
 }

@@ -6,6 +6,10 @@ namespace plantsim::sim {
 void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["status"] = r.status;
   j["docked"] = r.docked;
+  j["caught"] = r.caught;
+  j["travel"] = r.travel;
+  j["local_minima"] = r.local_minima;
+  j["wall_follows"] = r.wall_follows;
   j["position_error_m"] = r.position_error_m;
   j["heading_error_deg"] = r.heading_error_deg;
   j["collisions"] = r.collisions;

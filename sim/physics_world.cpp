@@ -8,7 +8,7 @@
 namespace plantsim::sim {
 namespace {
 
-enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4, kMoving = 5 };
+enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4, kMoving = 5, kTarget = 6 };
 
 void add_box(b2Body* body, const geom::Rect& r, FixtureTag tag) {
   b2PolygonShape box;
@@ -49,20 +49,8 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w)
   plate_fd.userData.pointer = kCharger;
   charger->CreateFixture(&plate_fd);
 
-  for (const worlds::MovingObstacle& m : w.moving) {
-    b2BodyDef def;
-    def.type = b2_kinematicBody;
-    const geom::Vec2 p = m.position_at(0.0);
-    def.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
-    b2Body* body = world_->CreateBody(&def);
-    b2PolygonShape box;
-    box.SetAsBox(static_cast<float>(0.5 * m.width_m), static_cast<float>(0.5 * m.height_m));
-    b2FixtureDef fd;
-    fd.shape = &box;
-    fd.userData.pointer = kMoving;
-    body->CreateFixture(&fd);
-    moving_.push_back({body, m, 0.0, {}});
-  }
+  for (const worlds::MovingObstacle& m : w.moving) moving_.push_back(make_actor(m, false));
+  if (w.target) target_ = make_actor(*w.target, true);
 
   b2BodyDef robot_def;
   robot_def.type = b2_dynamicBody;
@@ -87,45 +75,71 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w)
 
 PhysicsWorld::~PhysicsWorld() = default;
 
-void PhysicsWorld::step(const StepSettings& s) {
-  const Vec2 robot = robot_position();
-  const double robot_r = robot_radius_m_;
-  for (Actor& a : moving_) {
-    const b2Vec2 now = a.body->GetPosition();
-    const Vec2 here{now.x, now.y};
-    double next_time = a.script_time_s + s.dt_s;
-    Vec2 next = a.script.position_at(next_time);
-    if (a.script.yields_to_robot) {
-      // In its way: ahead along its motion, within its width plus the robot and a margin.
-      const Vec2 motion = next - here;
-      const double len = geom::norm(motion);
-      if (len > 0) {
-        const Vec2 dir = (1.0 / len) * motion, rel = robot - here;
-        // The box's half extents along and across its motion.
-        const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
-        const double half_along = std::fabs(dir.x) * hw + std::fabs(dir.y) * hh;
-        const double half_across = std::fabs(dir.y) * hw + std::fabs(dir.x) * hh;
-        const double along = geom::dot(rel, dir), lateral = std::fabs(geom::cross(dir, rel));
-        if (along > 0 && along < half_along + robot_r + a.script.yield_distance_m && lateral < half_across + robot_r + 0.1) {
-          next_time = a.script_time_s;  // wait
-          next = here;
-        }
+PhysicsWorld::Actor PhysicsWorld::make_actor(const worlds::MovingObstacle& m, bool sensor) {
+  b2BodyDef def;
+  def.type = b2_kinematicBody;
+  const geom::Vec2 p = m.position_at(0.0);
+  def.position.Set(static_cast<float>(p.x), static_cast<float>(p.y));
+  b2Body* body = world_->CreateBody(&def);
+  b2PolygonShape box;
+  box.SetAsBox(static_cast<float>(0.5 * m.width_m), static_cast<float>(0.5 * m.height_m));
+  b2FixtureDef fd;
+  fd.shape = &box;
+  fd.isSensor = sensor;  // the target is reached, not bumped into
+  fd.userData.pointer = sensor ? kTarget : kMoving;
+  body->CreateFixture(&fd);
+  return {body, m, 0.0, {}};
+}
+
+void PhysicsWorld::advance(Actor& a, double dt_s) const {
+  const b2Vec2 now = a.body->GetPosition();
+  const Vec2 here{now.x, now.y};
+  double next_time = a.script_time_s + dt_s;
+  Vec2 next = a.script.position_at(next_time);
+  if (a.script.yields_to_robot) {
+    // In its way: ahead along its motion, within its width plus the robot and a margin.
+    const Vec2 robot = robot_position();
+    const Vec2 motion = next - here;
+    const double len = geom::norm(motion);
+    if (len > 0) {
+      const Vec2 dir = (1.0 / len) * motion, rel = robot - here;
+      // The box's half extents along and across its motion.
+      const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
+      const double half_along = std::fabs(dir.x) * hw + std::fabs(dir.y) * hh;
+      const double half_across = std::fabs(dir.y) * hw + std::fabs(dir.x) * hh;
+      const double along = geom::dot(rel, dir), lateral = std::fabs(geom::cross(dir, rel));
+      if (along > 0 && along < half_along + robot_radius_m_ + a.script.yield_distance_m &&
+          lateral < half_across + robot_radius_m_ + 0.1) {
+        next_time = a.script_time_s;  // wait
+        next = here;
       }
     }
-    a.script_time_s = next_time;
-    a.velocity = (1.0 / s.dt_s) * (next - here);
-    a.body->SetLinearVelocity(b2Vec2(static_cast<float>(a.velocity.x), static_cast<float>(a.velocity.y)));
   }
+  a.script_time_s = next_time;
+  a.velocity = (1.0 / dt_s) * (next - here);
+  a.body->SetLinearVelocity(b2Vec2(static_cast<float>(a.velocity.x), static_cast<float>(a.velocity.y)));
+}
+
+ActorState PhysicsWorld::state_of(const Actor& a) {
+  const b2Vec2 p = a.body->GetPosition();
+  const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
+  return {{p.x - hw, p.y - hh, p.x + hw, p.y + hh}, a.velocity};
+}
+
+std::optional<ActorState> PhysicsWorld::target() const {
+  if (!target_) return std::nullopt;
+  return state_of(*target_);
+}
+
+void PhysicsWorld::step(const StepSettings& s) {
+  for (Actor& a : moving_) advance(a, s.dt_s);
+  if (target_) advance(*target_, s.dt_s);
   world_->Step(static_cast<float>(s.dt_s), s.velocity_iterations, s.position_iterations);
 }
 
 std::vector<ActorState> PhysicsWorld::actors() const {
   std::vector<ActorState> out;
-  for (const Actor& a : moving_) {
-    const b2Vec2 p = a.body->GetPosition();
-    const double hw = 0.5 * a.script.width_m, hh = 0.5 * a.script.height_m;
-    out.push_back({{p.x - hw, p.y - hh, p.x + hw, p.y + hh}, a.velocity});
-  }
+  for (const Actor& a : moving_) out.push_back(state_of(a));
   return out;
 }
 

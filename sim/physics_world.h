@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,8 @@ class PhysicsWorld {
 
   /// The scripted obstacles now (yielding ones may lag behind their script).
   std::vector<ActorState> actors() const;
+  /// The moving target (a sensor body: it collides with nothing), if the world has one.
+  std::optional<ActorState> target() const;
 
   Pose2 robot_pose() const;
   Vec2 robot_position() const;
@@ -73,6 +76,11 @@ class PhysicsWorld {
     Vec2 velocity;
   };
   std::vector<Actor> moving_;
+  std::optional<Actor> target_;
+
+  Actor make_actor(const worlds::MovingObstacle& m, bool sensor);
+  void advance(Actor& a, double dt_s) const;  // one step along its script
+  static ActorState state_of(const Actor& a);
 };
 
 }  // namespace plantsim::sim

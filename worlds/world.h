@@ -3,6 +3,7 @@
 // derived geometry (the charger's body and staging pose); loading lives in world_loader.h.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,9 @@ struct World {
   Pose2 charger;                  ///< robot pose when docked (yaw faces the charger)
   double inflation_margin_m = 0.1;  ///< planning clearance beyond the robot radius
   std::vector<MovingObstacle> moving;  ///< not known to the planner; met on the way
+  /// A moving target to catch (seed 001's pursuit): with one, an episode succeeds when the
+  /// robot reaches it, and the charger is not used. It does not collide with anything.
+  std::optional<MovingObstacle> target;
 
   /// Total inflation the planner applies to obstacles and walls.
   double planning_inflation_m() const { return robot.radius_m + inflation_margin_m; }

@@ -102,6 +102,36 @@ std::string stem_of(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
+// A box on a scripted path: a moving obstacle or the moving target.
+MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std::string& path) {
+  if (!m.is_object()) in.fail(path, "expected an object");
+  MovingObstacle mo;
+  mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
+  const json& size = in.member(m, "size_m", path);
+  const Vec2 wh = in.point_array(size, path + ".size_m");
+  if (wh.x <= 0 || wh.y <= 0) in.fail(path + ".size_m", "must be positive");
+  mo.width_m = wh.x;
+  mo.height_m = wh.y;
+  const json& wps = in.member(m, "waypoints", path);
+  if (!wps.is_array() || wps.empty()) in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
+  for (std::size_t k = 0; k < wps.size(); ++k)
+    mo.waypoints.push_back(in.point_array(wps[k], path + ".waypoints[" + std::to_string(k) + "]"));
+  mo.speed_mps = in.number_or(m, "speed_mps", path, 0.0);
+  if (mo.speed_mps < 0) in.fail(path + ".speed_mps", "must not be negative");
+  mo.start_time_s = in.number_or(m, "start_time_s", path, 0.0);
+  if (m.contains("loop")) {
+    if (!m["loop"].is_boolean()) in.fail(path + ".loop", "expected true or false");
+    mo.loop = m["loop"].get<bool>();
+  }
+  if (m.contains("yields_to_robot")) {
+    if (!m["yields_to_robot"].is_boolean()) in.fail(path + ".yields_to_robot", "expected true or false");
+    mo.yields_to_robot = m["yields_to_robot"].get<bool>();
+  }
+  mo.yield_distance_m = in.number_or(m, "yield_distance_m", path, mo.yield_distance_m);
+  if (mo.yield_distance_m < 0) in.fail(path + ".yield_distance_m", "must not be negative");
+  return mo;
+}
+
 World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
   World w;
   w.source = source;
@@ -143,34 +173,15 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::string path = "moving_obstacles[" + std::to_string(i) + "]";
-      const json& m = list[i];
-      MovingObstacle mo;
-      mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
-      const json& size = in.member(m, "size_m", path);
-      const Vec2 wh = in.point_array(size, path + ".size_m");
-      if (wh.x <= 0 || wh.y <= 0) in.fail(path + ".size_m", "must be positive");
-      mo.width_m = wh.x;
-      mo.height_m = wh.y;
-      const json& wps = in.member(m, "waypoints", path);
-      if (!wps.is_array() || wps.empty()) in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
-      for (std::size_t k = 0; k < wps.size(); ++k)
-        mo.waypoints.push_back(in.point_array(wps[k], path + ".waypoints[" + std::to_string(k) + "]"));
-      mo.speed_mps = in.number_or(m, "speed_mps", path, 0.0);
-      if (mo.speed_mps < 0) in.fail(path + ".speed_mps", "must not be negative");
-      mo.start_time_s = in.number_or(m, "start_time_s", path, 0.0);
-      if (m.contains("loop")) {
-        if (!m["loop"].is_boolean()) in.fail(path + ".loop", "expected true or false");
-        mo.loop = m["loop"].get<bool>();
-      }
-      if (m.contains("yields_to_robot")) {
-        if (!m["yields_to_robot"].is_boolean()) in.fail(path + ".yields_to_robot", "expected true or false");
-        mo.yields_to_robot = m["yields_to_robot"].get<bool>();
-      }
-      mo.yield_distance_m = in.number_or(m, "yield_distance_m", path, mo.yield_distance_m);
-      if (mo.yield_distance_m < 0) in.fail(path + ".yield_distance_m", "must not be negative");
-      w.moving.push_back(mo);
+    for (std::size_t i = 0; i < list.size(); ++i)
+      w.moving.push_back(read_scripted_box(in, list[i], "moving_obstacles[" + std::to_string(i) + "]"));
+  }
+  if (doc.contains("target")) {
+    w.target = read_scripted_box(in, doc["target"], "target");
+    for (std::size_t k = 0; k < w.target->waypoints.size(); ++k) {
+      const Vec2 p = w.target->waypoints[k];
+      if (p.x < w.floor.xmin || p.x > w.floor.xmax || p.y < w.floor.ymin || p.y > w.floor.ymax)
+        in.fail("target.waypoints[" + std::to_string(k) + "]", "lies outside the floor");
     }
   }
   return w;
