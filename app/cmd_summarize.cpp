@@ -28,13 +28,13 @@ std::function<int()> add_summarize_command(CLI::App& app) {
   cmd->add_option("--link", opt->links, "Further reports to link from the index");
   return [opt]() {
     std::string md =
-        "# plantsim results\n\n| world | planner | status | position error (cm) | heading error (deg) | "
+        "# plantsim results\n\n| world | planner | travel | status | position error (cm) | heading error (deg) | "
         "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     bool all_docked = true;
     render::Report index;
     index.title = "plantsim results";
-    index.headers = {"world", "planner", "status", "position error (cm)", "heading error (deg)", "collisions",
+    index.headers = {"world", "planner", "travel", "status", "position error (cm)", "heading error (deg)", "collisions",
                      "retries", "time (s)", "planned (m)", "driven (m)"};
     const std::string html_base = opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
     for (const auto& d : opt->dirs) {
@@ -50,8 +50,8 @@ std::function<int()> add_summarize_command(CLI::App& app) {
       const std::string base = opt->out.empty() ? "." : std::filesystem::path(opt->out).parent_path().string();
       const std::string link = std::filesystem::relative(d, base.empty() ? "." : base).string();
       char row[512];
-      std::snprintf(row, sizeof row, "| %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | [run.png](%s/run.png) |\n",
-                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
+      std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | [run.png](%s/run.png) |\n",
+                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(), j.value("travel", "path").c_str(),
                     j.value("status", "?").c_str(), 100.0 * j.value("position_error_m", 0.0),
                     j.value("heading_error_deg", 0.0), j.value("collisions", 0), j.value("retries", 0),
                     j.value("time_s", 0.0), j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0),
@@ -62,7 +62,7 @@ std::function<int()> add_summarize_command(CLI::App& app) {
         std::snprintf(b, sizeof b, "%.*f", d, v);
         return std::string(b);
       };
-      index.rows.push_back({j.value("world", "?"), j.value("planner", "?"), j.value("status", "?"),
+      index.rows.push_back({j.value("world", "?"), j.value("planner", "?"), j.value("travel", "path"), j.value("status", "?"),
                             fmt(100.0 * j.value("position_error_m", 0.0), 2), fmt(j.value("heading_error_deg", 0.0), 2),
                             std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
                             fmt(j.value("time_s", 0.0), 1), fmt(j.value("path_length_m", 0.0), 2),
@@ -70,7 +70,7 @@ std::function<int()> add_summarize_command(CLI::App& app) {
       const std::string rel = std::filesystem::relative(d, html_base.empty() ? "." : html_base).string();
       index.figures.push_back({rel + "/run.png", j.value("world", "?") + ": " + j.value("status", "?")});
       index.files.push_back(rel + "/report.html");
-      all_docked = all_docked && j.value("docked", false);
+      all_docked = all_docked && (j.value("docked", false) || j.value("caught", false));
     }
     if (!opt->html.empty()) {
       for (const auto& l : opt->links)

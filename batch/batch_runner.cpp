@@ -211,9 +211,9 @@ std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double
 
 std::string summary_csv(const std::vector<std::string>& lines) {
   struct Acc {
-    std::int64_t n = 0, docked = 0, collisions = 0, retries = 0;
-    double time = 0, ratio = 0, pos = 0, heading = 0;
-    std::int64_t ratio_n = 0;
+    std::int64_t n = 0, docked = 0, collisions = 0, retries = 0, trapped = 0, timeouts = 0;
+    double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0, wall_follows = 0;
+    std::int64_t ratio_n = 0, driven_n = 0;
   };
   std::map<std::tuple<std::string, std::string, std::string, std::string>, Acc> acc;
   for (const std::string& line : lines) {
@@ -228,19 +228,29 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     const double opt = j["optimal_length_m"].get<double>(), len = j["path_length_m"].get<double>();
     if (opt > 0 && len > 0) a.ratio += len / opt, ++a.ratio_n;
     if (docked) a.pos += j["position_error_m"].get<double>(), a.heading += j["heading_error_deg"].get<double>();
+    // Driven length over the optimum on success: how far a reactive method wanders.
+    if (docked && opt > 0) a.driven_ratio += j["driven_length_m"].get<double>() / opt, ++a.driven_n;
+    a.local_minima += j.value("local_minima", 0);
+    a.wall_follows += j.value("wall_follows", 0);
+    const std::string status = j["status"].get<std::string>();
+    a.trapped += status == "trapped";
+    a.timeouts += status == "timeout";
   }
   std::string out =
       "world,planner,controller,fault,episodes,docked,success_rate,ci95_low,ci95_high,mean_time_s,"
-      "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries\n";
+      "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
+      "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts\n";
   for (const auto& [key, a] : acc) {
     const auto [lo, hi] = wilson_interval(a.docked, a.n);
-    char row[512];
-    std::snprintf(row, sizeof row, "%s,%s,%s,%s,%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f\n",
+    char row[640];
+    std::snprintf(row, sizeof row, "%s,%s,%s,%s,%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld\n",
                   std::get<0>(key).c_str(), std::get<1>(key).c_str(), std::get<2>(key).c_str(), std::get<3>(key).c_str(),
                   static_cast<long long>(a.n), static_cast<long long>(a.docked), static_cast<double>(a.docked) / a.n, lo, hi,
                   a.time / a.n, a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
                   a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
-                  static_cast<double>(a.retries) / a.n);
+                  static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
+                  a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
+                  static_cast<long long>(a.timeouts));
     out += row;
   }
   return out;

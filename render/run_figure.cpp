@@ -17,7 +17,7 @@ std::string result_line(const sim::EpisodeResult& run) {
                 100 * run.position_error_m, run.heading_error_deg, run.collisions, run.retries, run.time_s);
   std::string line = buf;
   if (run.travel != "path") {
-    std::snprintf(buf, sizeof buf, ", %d local minima, %d wall follows", run.local_minima, run.wall_follows);
+    std::snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima, run.wall_follows);
     line += buf;
   }
   return line;

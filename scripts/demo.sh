@@ -28,6 +28,9 @@ run depot ../shared/data/ros_maps/depot.yaml
 run desulfurization_plant worlds/scenarios/desulfurization_plant.json
 run substation_yard worlds/scenarios/substation_yard.json
 run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
+# Seed 001's two examples: a target slower than the robot among people, a faster one behind a wall.
+run seed001_slow_target worlds/scenarios/seed001_slow_target.json --travel potential-field
+run seed001_target_behind_wall worlds/scenarios/seed001_target_behind_wall.json --travel potential-field
 
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
 ./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
@@ -38,7 +41,15 @@ run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
 ./build/plantsim compare ../shared/data/worlds/world_N50.json --planners "$(./build/plantsim planners)" \
   --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
 
+# The seed baselines (002's gradient and coordinate rotation, 001's potential field) beside the
+# visibility graph: one plant side by side, then random plants of 10-200 rectangles and the
+# scenario worlds (their failures are results, not errors).
+./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,potential-field \
+  --title "desulfurization_plant: visibility graph, seed 002, seed 001" --out results/baselines_desulfurization || status=1
+./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet || status=1
+
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
-  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html
+  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
+  --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status
