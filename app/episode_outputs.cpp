@@ -20,6 +20,7 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   auto plan = nlohmann::ordered_json::array();
   for (const auto& v : r.plan) plan.push_back({v.x, v.y});
   j["plan"] = plan;
+  if (!r.plan_note.empty()) j["plan_note"] = r.plan_note;
   return j.dump(2) + "\n";
 }
 

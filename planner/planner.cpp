@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "planner/gcr_planner.h"
+#include "planner/maze_planner.h"
 #include "planner/grid_astar.h"
 #include "planner/vg_planner.h"
 
@@ -25,16 +26,19 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   in.obstacles = world.obstacles;
   in.inflation_m = world.planning_inflation_m();
   if (include_charger_body) in.obstacles.push_back(worlds::charger_body(world).bounding_box());
+  in.maze = world.maze;
   return in;
 }
 
-std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr"}; }
+std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right"}; }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
   if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
   if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
   if (name == "grid") return std::make_unique<GridPlanner>(input, input.grid_resolution_m);
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
+  if (name == "maze-left") return std::make_unique<MazePlanner>(input, Hand::kLeft);
+  if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,6 +39,7 @@ struct PlanResult {
   bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start
   bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
   std::string note;            ///< why a baseline failed (trapped, oscillating...) or what it met
+  std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's exploration)
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
@@ -49,6 +51,7 @@ struct PlannerInput {
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
+  std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

@@ -28,6 +28,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     draw_floor(c, world);
     draw_obstacles(c, world);
     if (!p.graph_edges.empty()) draw_graph(c, p.graph_edges);
+    if (!p.run.explored.empty()) c.polyline(p.run.explored, 5.0, palette::kExplored);
     draw_plan(c, p.run.plan);
     if (p.drove) {
       draw_target(c, world, p.run.trajectory);

@@ -20,6 +20,7 @@ inline constexpr Rgb kMoving{150, 60, 170};
 inline constexpr Rgb kAxis{40, 40, 48};
 inline constexpr Rgb kFootprint{120, 120, 130};
 inline constexpr Rgb kTarget{225, 50, 150};      ///< a moving target and its track
+inline constexpr Rgb kExplored{140, 170, 200};   ///< a hand-rule exploration walk
 inline constexpr Rgb kWallFollow{255, 200, 60};  ///< potential-field travel while following a wall
 
 }  // namespace plantsim::render::palette

@@ -39,6 +39,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!o.graph_edges.empty()) draw_graph(c, o.graph_edges);
   const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
   draw_moving(c, world, t_end, run.moving_final);
+  if (!run.explored.empty()) c.polyline(run.explored, 5.0, palette::kExplored);
   draw_plan(c, run.plan);
   draw_target(c, world, run.trajectory);
   draw_wall_following(c, run.trajectory);
@@ -62,6 +63,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                                      {palette::kStart, "start"},       {palette::kCharger, "charger"}};
   if (!world.moving.empty()) legend.push_back({palette::kMoving, "moving"});
   if (world.target) legend.push_back({palette::kTarget, "target"});
+  if (!run.explored.empty()) legend.push_back({palette::kExplored, "explored"});
   if (run.travel != "path") legend.push_back({palette::kWallFollow, "wall following"});
   if (!o.graph_edges.empty()) legend.push_back({palette::kGraph, "graph"});
   fig.legend(bar_x - 10, 380, legend);

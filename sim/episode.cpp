@@ -92,6 +92,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const Vec2 goal = world.target ? world.target->waypoints.back() : staging.position();
   const planner::PlanResult plan = planner.plan(world.start.position(), goal);
   result.plan_stats = plan.stats;
+  result.explored = plan.explored;
+  result.plan_note = plan.note;
   if (plan.status != planner::PlanStatus::kOk) {
     result.status = std::string(planner::to_string(plan.status));
     return result;

@@ -94,6 +94,8 @@ struct EpisodeResult {
   int wall_follows = 0;          ///< ... and wall-following episodes begun
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
   std::vector<Vec2> plan;
+  std::vector<Vec2> explored;     ///< the planner's exploration walk, if it made one (seed 003)
+  std::string plan_note;          ///< what the planner said about its plan
   std::vector<TrajectorySample> trajectory;
   std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
 };

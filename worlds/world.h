@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "worlds/tunnel_maze.h"
 
 namespace plantsim::worlds {
 
@@ -77,6 +78,9 @@ struct World {
   /// A moving target to catch (seed 001's pursuit): with one, an episode succeeds when the
   /// robot reaches it, and the charger is not used. It does not collide with anything.
   std::optional<MovingObstacle> target;
+  /// Seed 003's tunnel lattice, when the world is a cable-tunnel maze (floor and obstacles
+  /// are then derived from it).
+  std::optional<TunnelMaze> maze;
 
   /// Total inflation the planner applies to obstacles and walls.
   double planning_inflation_m() const { return robot.radius_m + inflation_margin_m; }

@@ -132,17 +132,66 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
   return mo;
 }
 
+// Seed 003's tunnel lattice: {"origin": [x, y], "pitch_m", "corridor_m", "columns", "rows",
+// "corridors": [[[c, r], [c, r]], ...]} with each corridor a straight run between two nodes.
+TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
+  const std::string path = "tunnel_maze";
+  if (!m.is_object()) in.fail(path, "expected an object");
+  const Vec2 origin = in.point_array(in.member(m, "origin", path), path + ".origin");
+  const double pitch = in.positive(m, "pitch_m", path), corridor = in.positive(m, "corridor_m", path);
+  if (corridor >= pitch) in.fail(path + ".corridor_m", "must be less than pitch_m");
+  auto count = [&](const char* key) {
+    const json& v = in.member(m, key, path);
+    if (!v.is_number_integer() || v.get<long>() < 1 || v.get<long>() > 1000)
+      in.fail(path + "." + key, "expected a whole number from 1 to 1000");
+    return v.get<int>();
+  };
+  TunnelMaze maze(origin, pitch, corridor, count("columns"), count("rows"));
+  const json& runs = in.member(m, "corridors", path);
+  if (!runs.is_array() || runs.empty()) in.fail(path + ".corridors", "expected a non-empty array of [[c, r], [c, r]]");
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string where = path + ".corridors[" + std::to_string(i) + "]";
+    const json& run = runs[i];
+    if (!run.is_array() || run.size() != 2) in.fail(where, "expected [[c, r], [c, r]]");
+    LatticeNode ends[2];
+    for (int k = 0; k < 2; ++k) {
+      const json& e = run[k];
+      if (!e.is_array() || e.size() != 2 || !e[0].is_number_integer() || !e[1].is_number_integer())
+        in.fail(where, "expected [[c, r], [c, r]] with whole numbers");
+      ends[k] = {e[0].get<int>(), e[1].get<int>()};
+    }
+    try {
+      maze.open_run(ends[0], ends[1]);
+    } catch (const std::invalid_argument& ex) {
+      in.fail(where, ex.what());
+    }
+  }
+  return maze;
+}
+
 World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
   World w;
   w.source = source;
   w.name = doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>()
                                                           : stem_of(source);
-  const json& floor = in.member(doc, "floor", "");
-  w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
-             in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
-  if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
-    in.fail("floor", "needs xmax > xmin and ymax > ymin (a negative or zero size)");
-  w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
+  if (doc.contains("tunnel_maze")) {
+    // The floor and the rock come from the lattice; further obstacles may be added.
+    if (doc.contains("floor")) in.fail("floor", "a tunnel_maze world takes its floor from the lattice");
+    w.maze = read_tunnel_maze(in, doc["tunnel_maze"]);
+    w.floor = w.maze->floor();
+    w.obstacles = w.maze->rock();
+    if (doc.contains("obstacles")) {
+      const std::vector<Rect> extra = in.rects(doc["obstacles"], "obstacles");
+      w.obstacles.insert(w.obstacles.end(), extra.begin(), extra.end());
+    }
+  } else {
+    const json& floor = in.member(doc, "floor", "");
+    w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
+               in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
+    if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
+      in.fail("floor", "needs xmax > xmin and ymax > ymin (a negative or zero size)");
+    w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
+  }
 
   const json& robot = in.member(doc, "robot", "");
   if (robot.contains("footprint")) {

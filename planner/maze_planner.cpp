@@ -1,0 +1,67 @@
+// From points to lattice nodes and back, with the strings in the result's note.
+#include "planner/maze_planner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/polyline.h"
+
+namespace plantsim::planner {
+
+MazePlanner::MazePlanner(const PlannerInput& input, Hand hand) : maze_(input.maze), hand_(hand) {}
+
+PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult r;
+  if (!maze_) {
+    r.note = name() + " needs a world with a tunnel_maze lattice";
+    return r;
+  }
+  const auto entrance = maze_->nearest_node(start), exit = maze_->nearest_node(goal);
+  if (!entrance || !exit) {
+    r.note = "the lattice has no corridor";
+    return r;
+  }
+  const MazeSolution s = solve_maze(*maze_, *entrance, Heading::kEast, *exit, hand_);
+  const std::vector<LatticeNode> best = shortest_route(*maze_, *entrance, *exit);
+  // Start and goal lie in corridors near their nodes; a point already on the first (last)
+  // corridor of the route joins it there instead of doubling back from the node.
+  auto on_edge = [&](Vec2 p, LatticeNode a, LatticeNode b) {
+    const Vec2 pa = maze_->position(a), pb = maze_->position(b), d = pb - pa;
+    const double t = geom::dot(p - pa, d) / geom::dot(d, d);
+    return t > 0 && t < 1 && std::fabs(geom::cross(d, p - pa)) / std::sqrt(geom::dot(d, d)) < 0.5 * maze_->corridor_m();
+  };
+  auto to_path = [&](const std::vector<LatticeNode>& nodes, bool to_goal) {
+    std::vector<Vec2> p{start};
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (i == 0 && nodes.size() > 1 && on_edge(start, nodes[0], nodes[1])) continue;
+      if (to_goal && i + 1 == nodes.size() && nodes.size() > 1 && on_edge(goal, nodes[i - 1], nodes[i])) continue;
+      p.push_back(maze_->position(nodes[i]));
+    }
+    if (to_goal) p.push_back(goal);
+    return p;
+  };
+  r.explored = to_path(s.exploration.nodes, false);
+  char line[512];
+  std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
+                hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
+                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_), s.simplified.c_str());
+  r.note = line;
+  if (s.ring_search) r.note += "ring search: " + s.search_log + "third string " + s.third + "; ";
+  std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
+                s.route.turns.c_str(), s.route.length_m(*maze_), std::string(to_string(s.route.end)).c_str(),
+                best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
+  r.note += line;
+  if (s.solved()) {
+    r.status = PlanStatus::kOk;
+    r.path = to_path(s.route.nodes, true);
+    r.length = geom::polyline_length(r.path);
+  }
+  r.stats.vertices = static_cast<std::int64_t>(maze_->columns()) * maze_->rows();
+  r.stats.edges = maze_->open_edges();
+  r.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace plantsim::planner
