@@ -32,13 +32,20 @@ run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
 run seed001_slow_target worlds/scenarios/seed001_slow_target.json --travel potential-field
 run seed001_target_behind_wall worlds/scenarios/seed001_target_behind_wall.json --travel potential-field
 
+# Seed 003: the cable-tunnel maze whose exit lies inside a ring; both hand rules, then the
+# visibility graph's shortest route beside them.
+run cable_tunnel_ring_left worlds/scenarios/cable_tunnel_ring.json --planner maze-left
+run cable_tunnel_ring_right worlds/scenarios/cable_tunnel_ring.json --planner maze-right
+./build/plantsim compare worlds/scenarios/cable_tunnel_ring.json --planners vg,maze-left,maze-right \
+  --title "cable_tunnel_ring: shortest route vs the hand rules with the ring search" --out results/maze_ring || status=1
+
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
 ./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
 
 # The source document's comparison (its Fig. 5 and Fig. 6), then every planner driven.
 ./build/plantsim compare worlds/examples/small_plant.json --planners vg,vg-traditional --graph --plan-only \
   --title "Fig. 5 vs Fig. 6: improved vs traditional visibility graph" --out results/fig5_vs_fig6 || status=1
-./build/plantsim compare ../shared/data/worlds/world_N50.json --planners "$(./build/plantsim planners)" \
+./build/plantsim compare ../shared/data/worlds/world_N50.json --planners vg,vg-traditional,grid,gcr \
   --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
 
 # The seed baselines (002's gradient and coordinate rotation, 001's potential field) beside the
@@ -50,6 +57,6 @@ run seed001_target_behind_wall worlds/scenarios/seed001_target_behind_wall.json 
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
   --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
-  --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
+  --link results/maze_ring/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status

@@ -1,0 +1,118 @@
+// Seed 003 on tunnel lattices: the exit inside a ring (both hand rules come back to the
+// entrance) is solved by the marker search; on a maze without loops the simplified string is
+// the shortest route; the solution is driven and docked in the simulation.
+#include <gtest/gtest.h>
+
+#include "planner/hand_rule.h"
+#include "planner/planner.h"
+#include "sim/episode.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::planner {
+namespace {
+
+worlds::World ring_world() { return worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")); }
+
+// True when every point along the path (every 5 cm) is off the rock.
+bool stays_in_corridors(const std::vector<Vec2>& path, const std::vector<geom::Rect>& rock) {
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const double len = geom::distance(path[i - 1], path[i]);
+    for (double s = 0; s <= len; s += 0.05) {
+      const Vec2 p = path[i - 1] + (len > 0 ? s / len : 0.0) * (path[i] - path[i - 1]);
+      for (const auto& r : rock)
+        if (p.x > r.xmin && p.x < r.xmax && p.y > r.ymin && p.y < r.ymax) return false;
+    }
+  }
+  return true;
+}
+
+class RingMaze : public ::testing::TestWithParam<Hand> {};
+
+TEST_P(RingMaze, TheHandRuleComesBackAndTheMarkerSearchReachesTheExit) {
+  const worlds::World w = ring_world();
+  ASSERT_TRUE(w.maze.has_value());
+  const auto entrance = w.maze->nearest_node(w.start.position());
+  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
+  ASSERT_TRUE(entrance && exit);
+  const MazeSolution s = solve_maze(*w.maze, *entrance, Heading::kEast, *exit, GetParam());
+  EXPECT_EQ(s.exploration.end, WalkEnd::kBackAtEntrance);  // the case the document solves
+  EXPECT_TRUE(s.ring_search);
+  ASSERT_TRUE(s.solved()) << s.search_log;
+  EXPECT_TRUE(s.route.nodes.front() == *entrance);
+  EXPECT_TRUE(s.route.nodes.back() == *exit);
+  // Its route is a real corridor walk, never shorter than the shortest one.
+  for (std::size_t i = 1; i < s.route.nodes.size(); ++i) {
+    const auto a = s.route.nodes[i - 1], b = s.route.nodes[i];
+    bool joined = false;
+    for (int h = 0; h < 4; ++h)
+      joined = joined || (w.maze->open(a, static_cast<Heading>(h)) && worlds::TunnelMaze::step(a, static_cast<Heading>(h)) == b);
+    ASSERT_TRUE(joined) << i;
+  }
+  const auto best = shortest_route(*w.maze, *entrance, *exit);
+  ASSERT_FALSE(best.empty());
+  EXPECT_GE(s.route.nodes.size(), best.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(BothHands, RingMaze, ::testing::Values(Hand::kLeft, Hand::kRight));
+
+TEST(TreeMaze, TheSimplifiedStringIsTheShortestRoute) {
+  // No loops: a spine with side branches and dead ends; the exit at the far end.
+  worlds::TunnelMaze m({0, 0}, 2.0, 1.0, 6, 4);
+  m.open_run({0, 1}, {5, 1});
+  m.open_run({1, 1}, {1, 3});
+  m.open_run({1, 3}, {3, 3});
+  m.open_run({2, 1}, {2, 0});
+  m.open_run({3, 1}, {3, 2});
+  m.open_run({4, 1}, {4, 3});
+  m.open_run({4, 0}, {4, 1});
+  for (Hand hand : {Hand::kLeft, Hand::kRight}) {
+    const MazeSolution s = solve_maze(m, {0, 1}, Heading::kEast, {5, 1}, hand);
+    EXPECT_EQ(s.exploration.end, WalkEnd::kExit);
+    EXPECT_FALSE(s.ring_search);
+    EXPECT_NE(s.exploration.turns.find('U'), std::string::npos);  // it met dead ends
+    EXPECT_EQ(s.simplified.find('U'), std::string::npos) << s.simplified;
+    ASSERT_TRUE(s.solved());
+    EXPECT_EQ(s.route.nodes.size(), shortest_route(m, {0, 1}, {5, 1}).size());
+    EXPECT_LT(s.route.nodes.size(), s.exploration.nodes.size());
+  }
+}
+
+TEST(MazePlanner, PlansInsideTheCorridorsAndTheRobotDocks) {
+  const worlds::World w = ring_world();
+  for (const char* name : {"maze-left", "maze-right"}) {
+    auto p = make_planner(name, planner_input(w, true));
+    const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+    ASSERT_EQ(r.status, PlanStatus::kOk) << r.note;
+    EXPECT_TRUE(stays_in_corridors(r.path, w.obstacles)) << name;
+    EXPECT_FALSE(r.explored.empty());
+    EXPECT_NE(r.note.find("ring search"), std::string::npos) << r.note;
+    const sim::EpisodeResult e = sim::run_episode(w, *p, sim::EpisodeConfig{});
+    EXPECT_TRUE(e.docked) << name << ": " << e.status;
+    EXPECT_EQ(e.collisions, 0) << name;
+  }
+}
+
+TEST(MazePlanner, AWorldWithoutALatticeGetsNoPathAndTheReason) {
+  const auto w = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  auto p = make_planner("maze-left", planner_input(w, true));
+  const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+  EXPECT_EQ(r.status, PlanStatus::kNoPath);
+  EXPECT_NE(r.note.find("tunnel_maze"), std::string::npos);
+}
+
+TEST(TunnelMazeFile, ADiagonalCorridorIsRejectedNamingIt) {
+  const std::string text = R"({"tunnel_maze": {"origin": [0, 0], "pitch_m": 2, "corridor_m": 1, "columns": 3, "rows": 3,
+      "corridors": [[[0, 0], [2, 0]], [[0, 0], [1, 1]]]},
+    "robot": {"radius_m": 0.2, "wheel_base_m": 0.34, "wheel_radius_m": 0.06, "max_speed_mps": 0.8, "max_accel_mps2": 1},
+    "start": {"x": 0, "y": 0, "yaw": 0}, "charger": {"x": 4.0, "y": 0, "yaw": 0}})";
+  try {
+    worlds::parse_world_json(text, "m.json");
+    FAIL() << "accepted";
+  } catch (const worlds::WorldError& e) {
+    EXPECT_NE(std::string(e.what()).find("tunnel_maze.corridors[1]"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace plantsim::planner
