@@ -39,6 +39,10 @@ double turn_at(const std::vector<Vec2>& path, std::size_t vertex) {
 
 }  // namespace
 
+bool sharp_vertex(const std::vector<Vec2>& path, std::size_t vertex, double sharp_turn_rad) {
+  return vertex > 0 && vertex + 1 < path.size() && turn_at(path, vertex) > sharp_turn_rad;
+}
+
 Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m, double sharp_turn_rad,
                  double corner_release_m) {
   if (path.size() < 2) return path.front();

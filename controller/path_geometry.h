@@ -25,6 +25,9 @@ struct PathPoint {
 PathPoint closest_point(const std::vector<Vec2>& path, Vec2 p, std::size_t from_segment,
                         double window_m);
 
+/// Whether the path turns by more than `sharp_turn_rad` at interior vertex `vertex`.
+bool sharp_vertex(const std::vector<Vec2>& path, std::size_t vertex, double sharp_turn_rad);
+
 /// The point `ahead_m` further along the path from `from` (clamped to the path's end). The walk
 /// stops at the first vertex where the path turns by more than `sharp_turn_rad` when that vertex
 /// is more than `corner_release_m` ahead: a carrot beyond a corner pulls the robot across it

@@ -12,7 +12,15 @@ PurePursuit::PurePursuit(PurePursuitParams params, std::vector<Vec2> path)
 TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   TrackingCommand out;
   const PurePursuitParams& p = params_;
-  const PathPoint near = closest_point(path_, pose.position(), segment_, p.progress_window_m);
+  PathPoint near = closest_point(path_, pose.position(), segment_, p.progress_window_m);
+  // Within the release distance of a sharp vertex the corner counts as reached: progress moves
+  // on to the next leg. Otherwise, where the path doubles back on itself (a dead end, a lane
+  // swept twice), the closest point would stay on the leg behind and the robot would turn to
+  // and fro at the vertex.
+  const std::size_t vertex = near.segment + 1;
+  if (sharp_vertex(path_, vertex, p.sharp_turn_rad) &&
+      geom::distance(pose.position(), path_[vertex]) <= p.corner_release_m)
+    near = closest_point(path_, pose.position(), vertex, p.progress_window_m);
   segment_ = near.segment;
   out.cross_track_error_m = near.distance;
   const double remaining = remaining_length(path_, to_end_, near);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "planner/gcr_planner.h"
+#include "planner/coverage_planner.h"
 #include "planner/maze_planner.h"
 #include "planner/grid_astar.h"
 #include "planner/vg_planner.h"
@@ -30,7 +31,8 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   return in;
 }
 
-std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right"}; }
+std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right",
+          "coverage", "coverage-exact", "coverage-greedy", "coverage-cells"}; }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
   if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
@@ -39,6 +41,7 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
   if (name == "maze-left") return std::make_unique<MazePlanner>(input, Hand::kLeft);
   if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
+  if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, coverage_method(name));
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }
 

@@ -51,7 +51,8 @@ struct PlannerInput {
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
-  std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
+  std::optional<worlds::TunnelMaze> maze;
+  double coverage_cell_m = 2.0;  ///< cell size of the coverage planners (seed 004: 2 x 2 m)  ///< the tunnel lattice of a maze world (seed 003)
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

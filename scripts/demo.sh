@@ -39,6 +39,11 @@ run cable_tunnel_ring_right worlds/scenarios/cable_tunnel_ring.json --planner ma
 ./build/plantsim compare worlds/scenarios/cable_tunnel_ring.json --planners vg,maze-left,maze-right \
   --title "cable_tunnel_ring: shortest route vs the hand rules with the ring search" --out results/maze_ring || status=1
 
+# Seed 004: full coverage of a depot pit, every method side by side, swept and docked in the simulation.
+./build/plantsim coverage worlds/scenarios/depot_pit_coverage.json --drive --config configs/coverage.json \
+  --out results/coverage_depot_pit || status=1
+run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner coverage --config configs/coverage.json
+
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
 ./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
 
@@ -57,6 +62,6 @@ run cable_tunnel_ring_right worlds/scenarios/cable_tunnel_ring.json --planner ma
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
   --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
-  --link results/maze_ring/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
+  --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status

@@ -1,0 +1,26 @@
+// Seed 004's figure: one panel per coverage method on the same work area, cells filled by how
+// often the path visits them (once: green; more: orange to red), blocked cells dark, the
+// sub-regions outlined with their visiting order numbered, the path, and the document's metrics.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "planner/coverage_plan.h"
+#include "render/figure.h"
+#include "worlds/world.h"
+
+namespace plantsim::render {
+
+struct CoveragePanel {
+  std::string label;
+  const planner::CoverageGrid* grid = nullptr;
+  planner::CoveragePlan plan;
+  std::vector<Vec2> driven;   ///< the robot's trajectory, when the plan was driven
+  std::string extra;          ///< one more line of text (e.g. driven coverage)
+};
+
+Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
+                    int width_px = 1600, int panel_height_px = 560);
+
+}  // namespace plantsim::render
