@@ -9,7 +9,8 @@
 
 namespace plantsim::planner {
 
-MazePlanner::MazePlanner(const PlannerInput& input, Hand hand) : maze_(input.maze), hand_(hand) {}
+MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration)
+    : maze_(input.maze), hand_(hand), drive_exploration_(drive_exploration) {}
 
 PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -55,7 +56,12 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   r.note += line;
   if (s.solved()) {
     r.status = PlanStatus::kOk;
-    r.path = to_path(s.route.nodes, true);
+    std::vector<LatticeNode> nodes = s.route.nodes;
+    if (drive_exploration_) {
+      nodes = s.exploration.nodes;
+      if (s.exploration.end != WalkEnd::kExit) nodes.insert(nodes.end(), s.route.nodes.begin() + 1, s.route.nodes.end());
+    }
+    r.path = to_path(nodes, true);
     r.length = geom::polyline_length(r.path);
   }
   r.stats.vertices = static_cast<std::int64_t>(maze_->columns()) * maze_->rows();

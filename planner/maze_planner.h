@@ -1,6 +1,7 @@
 // Seed 003 behind the planner interface: "maze-left" and "maze-right" solve a tunnel-lattice
 // world by the document's procedure (hand-rule exploration, string simplification, the ring
-// search) and return the route to drive; the exploration walk comes along for figures. On a
+// search) and return the route to drive; the exploration walk comes along for figures.
+// "maze-left-explore" and "maze-right-explore" drive the first inspection instead. On a
 // world without a lattice they answer "no path" and say why.
 #pragma once
 
@@ -11,13 +12,19 @@ namespace plantsim::planner {
 
 class MazePlanner : public Planner {
  public:
-  MazePlanner(const PlannerInput& input, Hand hand);
-  std::string name() const override { return hand_ == Hand::kLeft ? "maze-left" : "maze-right"; }
+  /// With `drive_exploration` the path is the first inspection itself: the hand-rule
+  /// exploration (dead ends and all) and, when it came back to the entrance, the search walk
+  /// that found the exit; otherwise the route found for the next inspections.
+  MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration = false);
+  std::string name() const override {
+    return std::string(hand_ == Hand::kLeft ? "maze-left" : "maze-right") + (drive_exploration_ ? "-explore" : "");
+  }
   PlanResult plan(Vec2 start, Vec2 goal) override;
 
  private:
   std::optional<TunnelMaze> maze_;
   Hand hand_;
+  bool drive_exploration_;
 };
 
 }  // namespace plantsim::planner

@@ -31,7 +31,7 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   return in;
 }
 
-std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right",
+std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right", "maze-left-explore", "maze-right-explore",
           "coverage", "coverage-exact", "coverage-greedy", "coverage-cells"}; }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
@@ -41,6 +41,8 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
   if (name == "maze-left") return std::make_unique<MazePlanner>(input, Hand::kLeft);
   if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
+  if (name == "maze-left-explore") return std::make_unique<MazePlanner>(input, Hand::kLeft, true);
+  if (name == "maze-right-explore") return std::make_unique<MazePlanner>(input, Hand::kRight, true);
   if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, coverage_method(name));
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }

@@ -32,8 +32,10 @@ run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
 run seed001_slow_target worlds/scenarios/seed001_slow_target.json --travel potential-field
 run seed001_target_behind_wall worlds/scenarios/seed001_target_behind_wall.json --travel potential-field
 
-# Seed 003: the cable-tunnel maze whose exit lies inside a ring; both hand rules, then the
-# visibility graph's shortest route beside them.
+# Seed 003: the cable-tunnel maze whose exit lies inside a ring: the first inspection (the
+# left-hand exploration, dead ends and all, then the search that finds the exit), the routes
+# both hand rules give for later inspections, and the visibility graph's shortest route.
+run cable_tunnel_ring_first_inspection worlds/scenarios/cable_tunnel_ring.json --planner maze-left-explore
 run cable_tunnel_ring_left worlds/scenarios/cable_tunnel_ring.json --planner maze-left
 run cable_tunnel_ring_right worlds/scenarios/cable_tunnel_ring.json --planner maze-right
 ./build/plantsim compare worlds/scenarios/cable_tunnel_ring.json --planners vg,maze-left,maze-right \
@@ -59,9 +61,12 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 ./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,potential-field \
   --title "desulfurization_plant: visibility graph, seed 002, seed 001" --out results/baselines_desulfurization || status=1
 ./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet || status=1
+./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet || status=1
+./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet || status=1
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
   --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
-  --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html
+  --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
+  --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status

@@ -93,6 +93,21 @@ TEST(MazePlanner, PlansInsideTheCorridorsAndTheRobotDocks) {
   }
 }
 
+TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
+  const worlds::World w = ring_world();
+  auto explore = make_planner("maze-left-explore", planner_input(w, true));
+  auto route = make_planner("maze-left", planner_input(w, true));
+  const Vec2 goal = worlds::staging_pose(w).position();
+  const PlanResult first = explore->plan(w.start.position(), goal), next = route->plan(w.start.position(), goal);
+  ASSERT_EQ(first.status, PlanStatus::kOk);
+  EXPECT_GT(first.length, 2.0 * next.length);  // the exploration and the search before the route is known
+  EXPECT_TRUE(stays_in_corridors(first.path, w.obstacles));
+  const sim::EpisodeResult e = sim::run_episode(w, *explore, sim::EpisodeConfig{});
+  EXPECT_TRUE(e.docked) << e.status;
+  EXPECT_EQ(e.collisions, 0);
+  EXPECT_GT(e.driven_length_m, 0.95 * first.length);  // it really went into the dead ends
+}
+
 TEST(MazePlanner, AWorldWithoutALatticeGetsNoPathAndTheReason) {
   const auto w = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
   auto p = make_planner("maze-left", planner_input(w, true));
