@@ -45,11 +45,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
   cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    const std::string out_dir = opt->out.empty() ? "results/" + world.name + "_compare" : opt->out;
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec || !std::filesystem::is_directory(out_dir))
-      throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name + "_compare" : opt->out);
     const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     std::vector<render::ComparisonPanel> panels;
     render::Report report;

@@ -47,11 +47,7 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   cmd->add_flag("--drive", opt->drive, "Also sweep and dock in the simulation");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    const std::string out_dir = opt->out.empty() ? "results/" + world.name + "_coverage" : opt->out;
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec || !std::filesystem::is_directory(out_dir))
-      throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name + "_coverage" : opt->out);
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     planner::PlannerInput input = planner::planner_input(world, true);
     input.coverage_cell_m = opt->cell_m;

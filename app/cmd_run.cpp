@@ -60,11 +60,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
     if (!opt->charger.empty()) overrides.charger = parse_pose(opt->charger, "--charger");
     const worlds::World world = worlds::load_world(opt->world, overrides);
-    const std::string out_dir = opt->out.empty() ? "results/" + world.name : opt->out;
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec || !std::filesystem::is_directory(out_dir))
-      throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name : opt->out);
 
     auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);

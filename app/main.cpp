@@ -1,5 +1,6 @@
 // plantsim command line: parses arguments with CLI11 and dispatches to a subcommand.
 // Bad input of any kind ends with a one-line message on stderr and exit code 2.
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -18,6 +19,13 @@ std::string command_line(const CLI::App* sub) {
     if (o->get_expected_max() == 0 && !positional) line += " --" + o->get_lnames().front();
   }
   return line;
+}
+
+std::string output_folder(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) throw std::invalid_argument("cannot create output folder '" + dir + "'");
+  return dir;
 }
 
 }  // namespace plantsim::app

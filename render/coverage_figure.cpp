@@ -19,16 +19,14 @@ constexpr Rgb kRegionOutline{40, 70, 160};
 
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
                     int width_px, int panel_height_px) {
-  const int columns = std::max(1, std::min<int>(2, static_cast<int>(panels.size())));
-  const int rows = std::max(1, static_cast<int>((panels.size() + columns - 1) / columns));
-  const int top = 50;
-  Figure fig(width_px, top + rows * panel_height_px);
+  const PanelGrid grid = panel_grid(panels.size(), 2, width_px, panel_height_px);
+  Figure fig(width_px, grid.height_px());
   fig.text(title, 20, 32, 20, palette::kAxis, Anchor::kLeft, true);
-  const double cell_w = static_cast<double>(width_px) / columns;
+  const double cell_w = grid.panel_width_px;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const CoveragePanel& p = panels[i];
     const planner::CoverageGrid& g = *p.grid;
-    const double x0 = cell_w * (i % columns), y0 = top + panel_height_px * static_cast<double>(i / columns);
+    const double x0 = grid.corner(i).x, y0 = grid.corner(i).y;
     const PixelBox box{x0 + 60, y0 + 80, x0 + cell_w - 20, y0 + panel_height_px - 45};
     const PixelTransform t = fig.world_panel(world.floor, box);
     GlCanvas& c = fig.canvas();

@@ -11,6 +11,16 @@
 
 namespace plantsim::render {
 
+PanelGrid panel_grid(std::size_t panels, int max_columns, int width_px, int panel_height_px) {
+  PanelGrid g;
+  g.columns = std::max(1, std::min(max_columns, static_cast<int>(panels)));
+  g.rows = std::max(1, static_cast<int>((panels + g.columns - 1) / g.columns));
+  g.panel_width_px = static_cast<double>(width_px) / g.columns;
+  g.panel_height_px = panel_height_px;
+  return g;
+}
+
+
 TextRenderer& shared_text_renderer() {
   static TextRenderer renderer;
   return renderer;

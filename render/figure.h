@@ -24,6 +24,21 @@ struct LegendEntry {
   std::string label;
 };
 
+/// Panels in a grid under a title line: at most `max_columns` a row, each `panel_height_px`
+/// high and an equal share of the width.
+struct PanelGrid {
+  int columns = 1, rows = 1;
+  double panel_width_px = 0;
+  int panel_height_px = 0;
+  int top_px = 50;
+  int height_px() const { return top_px + rows * panel_height_px; }
+  /// Top-left corner of panel i, in pixels.
+  Vec2 corner(std::size_t i) const {
+    return {panel_width_px * static_cast<double>(i % columns), top_px + panel_height_px * static_cast<double>(i / columns)};
+  }
+};
+PanelGrid panel_grid(std::size_t panels, int max_columns, int width_px, int panel_height_px);
+
 class Figure {
  public:
   Figure(int width, int height, int supersample = 2);
