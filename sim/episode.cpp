@@ -94,12 +94,19 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.plan_stats = plan.stats;
   result.explored = plan.explored;
   result.plan_note = plan.note;
-  if (plan.status != planner::PlanStatus::kOk) {
-    result.status = std::string(planner::to_string(plan.status));
-    return result;
+  const bool planned = plan.status == planner::PlanStatus::kOk;
+  if (!planned) {
+    // The potential field needs no plan: without its reference it still drives.
+    if (config.travel != TravelMode::kPotentialField) {
+      result.status = std::string(planner::to_string(plan.status));
+      return result;
+    }
+    result.plan_note = "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
   }
   result.plan = plan.path;
   result.path_length_m = plan.length;
+  // Until the field hands over, the docking controller's path is only a placeholder.
+  const std::vector<Vec2> first_path = planned ? plan.path : std::vector<Vec2>{world.start.position(), goal};
 
   PhysicsWorld physics(world);
   WheelDrive drive(world.robot, config.drive);
@@ -109,7 +116,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   controller::DockingParams docking = config.docking;
   docking.staging_distance_m = world.charger_spec.staging_distance_m;
   docking.footprint_radius_m = world.robot.radius_m;
-  controller::DockingController control(config.tracking, docking, plan.path, world.charger);
+  controller::DockingController control(config.tracking, docking, first_path, world.charger);
   const Vec2 charger_marker = worlds::charger_body(world).center;
   std::optional<controller::PotentialFieldController> field;
   if (config.travel == TravelMode::kPotentialField) field.emplace(config.field, world.robot.radius_m);

@@ -60,6 +60,17 @@ TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
   EXPECT_GE(r.driven_length_m, r.path_length_m);  // the plan is the optimum it is measured against
 }
 
+TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  auto p = planner::make_planner("maze-left", planner::planner_input(world, true));  // no lattice: no path
+  EpisodeConfig config;
+  config.travel = TravelMode::kPotentialField;
+  const EpisodeResult r = run_episode(world, *p, config);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.plan.empty());
+  EXPECT_NE(r.plan_note.find("no reference plan"), std::string::npos);
+}
+
 TEST(Seed001, TheTargetMovesOnItsScriptAndCollidesWithNothing) {
   auto world = worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
   world.start = {11.0, 5.0, 0.0};  // right in the target's way
