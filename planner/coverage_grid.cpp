@@ -9,8 +9,6 @@
 namespace plantsim::planner {
 namespace {
 
-constexpr int kDc[4] = {1, 0, -1, 0}, kDr[4] = {0, 1, 0, -1};
-
 bool interiors_overlap(const geom::Rect& a, const geom::Rect& b) {
   return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
 }
@@ -92,7 +90,7 @@ std::vector<int> CoverageGrid::distances_from(const std::vector<Cell>& sources) 
     const Cell c = queue.front();
     queue.pop_front();
     for (int h = 0; h < 4; ++h) {
-      const Cell n{c.column + kDc[h], c.row + kDr[h]};
+      const Cell n = neighbour(c, h);
       if (free(n) && dist[index(n)] < 0) dist[index(n)] = dist[index(c)] + 1, queue.push_back(n);
     }
   }
@@ -106,28 +104,34 @@ std::vector<bool> CoverageGrid::reachable(Cell from) const {
   return out;
 }
 
-std::vector<Cell> CoverageGrid::travel(Cell from, Cell to) const {
-  // Distances from the goal, then walk downhill from the start, preferring to keep the heading
-  // (fewer turns for the same length).
-  const std::vector<int> d = distances_from({to});
-  if (!free(from) || d[index(from)] < 0) return {};
+std::vector<Cell> CoverageGrid::travel(Cell from, Cell to) const { return descend(distances_from({to}), from); }
+
+std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from) const {
+  if (!free(from) || dist[index(from)] < 0) return {};
   std::vector<Cell> path{from};
   int heading = -1;
-  while (!(path.back() == to)) {
+  while (dist[index(path.back())] > 0) {
     const Cell c = path.back();
-    int best = -1;
     for (int k = 0; k < 4; ++k) {
       const int h = heading < 0 ? k : (heading + k) % 4;  // current heading first
-      const Cell n{c.column + kDc[h], c.row + kDr[h]};
-      if (free(n) && d[index(n)] == d[index(c)] - 1) {
-        best = h;
+      const Cell n = neighbour(c, h);
+      if (free(n) && dist[index(n)] == dist[index(c)] - 1) {
+        heading = h;
+        path.push_back(n);
         break;
       }
     }
-    heading = best;
-    path.push_back({c.column + kDc[best], c.row + kDr[best]});
   }
   return path;
+}
+
+int turns_along(const std::vector<Cell>& path) {
+  int turns = 0;
+  for (std::size_t i = 2; i < path.size(); ++i) {
+    const int turn = (heading_between(path[i - 1], path[i]) - heading_between(path[i - 2], path[i - 1]) + 4) % 4;
+    turns += turn == 2 ? 2 : turn != 0;
+  }
+  return turns;
 }
 
 std::vector<CellRect> CoverageGrid::decompose(const std::vector<bool>& within) const {

@@ -20,6 +20,18 @@ struct Cell {
   friend bool operator==(Cell, Cell) = default;
 };
 
+/// The 4-neighbour of c in heading h (0 east, 1 north, 2 west, 3 south).
+inline Cell neighbour(Cell c, int h) {
+  static constexpr int dc[4] = {1, 0, -1, 0}, dr[4] = {0, 1, 0, -1};
+  return {c.column + dc[h], c.row + dr[h]};
+}
+/// The heading from c to its 4-neighbour n.
+inline int heading_between(Cell c, Cell n) {
+  return n.column > c.column ? 0 : n.row > c.row ? 1 : n.column < c.column ? 2 : 3;
+}
+/// Changes of heading along a 4-connected cell path (turning back counts two).
+int turns_along(const std::vector<Cell>& path);
+
 /// A sub-region: cells [column, column + width) x [row, row + height).
 struct CellRect {
   int column = 0, row = 0, width = 0, height = 0;
@@ -52,6 +64,9 @@ class CoverageGrid {
   std::vector<Cell> travel(Cell from, Cell to) const;
   /// Breadth-first distances (in cells) from every cell of `sources`; -1 where unreachable.
   std::vector<int> distances_from(const std::vector<Cell>& sources) const;
+  /// Downhill in `dist` from `from` to a cell at distance 0, keeping the heading where it can
+  /// (fewer turns for the same length); empty if `from` is unreachable.
+  std::vector<Cell> descend(const std::vector<int>& dist, Cell from) const;
 
   /// The rectangular decomposition: scanning rows bottom to top and cells left to right, each
   /// free cell not yet assigned starts a sub-region that grows right as far as it can, then up

@@ -8,13 +8,6 @@
 namespace plantsim::planner {
 namespace {
 
-int heading_between(Cell a, Cell b) {
-  if (b.column > a.column) return 0;
-  if (b.row > a.row) return 1;
-  if (b.column < a.column) return 2;
-  return 3;
-}
-
 // Appends `more` to `path`, skipping its first cell when it repeats the path's last.
 void append(std::vector<Cell>& path, const std::vector<Cell>& more) {
   for (std::size_t i = 0; i < more.size(); ++i)
@@ -36,10 +29,7 @@ CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cel
   }
   m.coverage = m.reachable_cells ? static_cast<double>(m.covered_cells) / m.reachable_cells : 0.0;
   m.repetition = m.reachable_cells ? static_cast<double>(m.repeated_visits) / m.reachable_cells : 0.0;
-  for (std::size_t i = 2; i < path.size(); ++i) {
-    const int turn = (heading_between(path[i - 1], path[i]) - heading_between(path[i - 2], path[i - 1]) + 4) % 4;
-    m.turns += turn == 2 ? 2 : turn != 0;
-  }
+  m.turns = turns_along(path);
   m.length_m = path.empty() ? 0.0 : grid.cell_m() * (path.size() - 1.0);
   return m;
 }
@@ -102,21 +92,20 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start) {
   ++visits[grid.index(start)];
   --left;
   int heading = 0, dead_ends = 0;
-  static constexpr int dc[4] = {1, 0, -1, 0}, dr[4] = {0, 1, 0, -1};
   static constexpr int turn_order[4] = {0, 1, 3, 2};  // straight, left, right, back
   while (left > 0) {
     const Cell at = plan.cells.back();
     int best = -1;
     for (int t : turn_order) {
       const int h = (heading + t) % 4;
-      const Cell n{at.column + dc[h], at.row + dr[h]};
+      const Cell n = neighbour(at, h);
       if (grid.free(n) && visits[grid.index(n)] == 0) {
         best = h;
         break;
       }
     }
     if (best >= 0) {
-      const Cell n{at.column + dc[best], at.row + dr[best]};
+      const Cell n = neighbour(at, best);
       plan.cells.push_back(n);
       ++visits[grid.index(n)];
       --left;

@@ -19,7 +19,7 @@ DistanceMatrix region_distances(const CoverageGrid& grid, const std::vector<Cell
     const std::vector<int> dist = grid.distances_from(cells);
     for (std::size_t j = 0; j < n; ++j) {
       if (i == j) continue;
-      // The nearest cell of region j, and the turns on the way back down to region i.
+      // The nearest cell of region j, and the turns on the way down to region i.
       Cell best{-1, -1};
       int best_d = std::numeric_limits<int>::max();
       for (int r = regions[j].row; r < regions[j].row + regions[j].height; ++r)
@@ -31,21 +31,7 @@ DistanceMatrix region_distances(const CoverageGrid& grid, const std::vector<Cell
         d[i][j] = 1e9;  // unreachable: never chosen while anything else is possible
         continue;
       }
-      int turns = 0, heading = -1;
-      Cell at = best;
-      static constexpr int dc[4] = {1, 0, -1, 0}, dr[4] = {0, 1, 0, -1};
-      while (dist[grid.index(at)] > 0) {
-        for (int k = 0; k < 4; ++k) {
-          const int h = heading < 0 ? k : (heading + k) % 4;
-          const Cell nb{at.column + dc[h], at.row + dr[h]};
-          if (grid.free(nb) && dist[grid.index(nb)] == dist[grid.index(at)] - 1) {
-            if (heading >= 0 && h != heading) ++turns;
-            heading = h;
-            at = nb;
-            break;
-          }
-        }
-      }
+      const int turns = turns_along(grid.descend(dist, best));
       d[i][j] = w_cells * best_d + w_turns * turns;
     }
   }
