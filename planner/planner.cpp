@@ -31,8 +31,11 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   return in;
 }
 
-std::vector<std::string> planner_names() { return {"vg", "vg-traditional", "grid", "gcr", "maze-left", "maze-right", "maze-left-explore", "maze-right-explore",
-          "coverage", "coverage-exact", "coverage-greedy", "coverage-cells"}; }
+std::vector<std::string> planner_names() {
+  return {"vg",        "vg-traditional",    "grid",               "gcr",
+          "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
+          "coverage",  "coverage-exact",    "coverage-greedy",    "coverage-cells"};
+}
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
   if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
