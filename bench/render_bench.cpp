@@ -29,7 +29,7 @@ int run_render_bench(const std::string& shared_data, bool quick) {
     const double f = i / 1999.0;
     const geom::Vec2 p = w.start.position() + f * (w.charger.position() - w.start.position()) +
                          geom::Vec2{0, 3.0 * std::sin(12 * f)};
-    traj.push_back({0.1 * i, {p.x, p.y, 0}, {p.x, p.y, 0}, 0.6 * std::fabs(std::sin(5 * f)), 0, controller::DockPhase::kTravel, false, {}});
+    traj.push_back({0.1 * i, {p.x, p.y, 0}, {p.x, p.y, 0}, 0, 0.6 * std::fabs(std::sin(5 * f)), 0, controller::DockPhase::kTravel, false, {}});
     if (i % 100 == 0) plan.push_back(p);
   }
   const int frames = quick ? 10 : 40;

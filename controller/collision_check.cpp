@@ -14,6 +14,11 @@ bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, do
   const double direction = twist.v_mps >= 0 ? 1.0 : -1.0;
   const double curvature = std::fabs(twist.v_mps) > 1e-9 ? twist.omega_radps / twist.v_mps : 0.0;
   const int samples = std::fabs(twist.v_mps) > 1e-9 ? static_cast<int>(std::ceil(distance_m / step_m)) : 0;
+  // A box already inside the margin does not forbid every motion: one that moves away from it
+  // (never closer than now) is how the robot gets out.
+  std::vector<double> allowed(boxes.size());
+  for (std::size_t j = 0; j < boxes.size(); ++j)
+    allowed[j] = std::min(radius_m, distance_to_box(pose.position(), boxes[j].box));
   for (int i = 0; i <= samples; ++i) {
     const double s = direction * i * step_m;  // signed arc length
     geom::Vec2 p;
@@ -25,10 +30,11 @@ bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, do
                                                           -std::cos(pose.yaw + dtheta) + std::cos(pose.yaw)};
     }
     const double t = std::min(horizon_s, travel_speed_mps > 0 ? std::fabs(s) / travel_speed_mps : 0.0);
-    for (const MovingBox& b : boxes) {
+    for (std::size_t j = 0; j < boxes.size(); ++j) {
+      const MovingBox& b = boxes[j];
       const geom::Vec2 d = t * b.velocity;
       const geom::Rect moved{b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x, b.box.ymax + d.y};
-      if (distance_to_box(p, moved) < radius_m) return false;
+      if (distance_to_box(p, moved) < allowed[j]) return false;
     }
   }
   return true;

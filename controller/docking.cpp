@@ -37,15 +37,37 @@ void DockingController::miss() {
   phase_ = DockPhase::kBackOff;
 }
 
-DockingCommand DockingController::step(const DockingInput& in) {
-  if (in.charger_in_robot && dock_placed_) {
-    // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
-    const Pose2 seen = geom::compose(in.odom_pose, *in.charger_in_robot);
+void DockingController::use_detection(const Pose2& seen) {
+  // A detection far from the estimate is an outlier unless the next one confirms it (a map
+  // placement that was off is corrected by two agreeing detections).
+  auto near = [&](const Pose2& a, const Pose2& b) {
+    return geom::distance(a.position(), b.position()) <= params_.detection_gate_m &&
+           std::fabs(geom::wrap_angle(a.yaw - b.yaw)) <= params_.detection_gate_m / params_.staging_distance_m;
+  };
+  if (!near(seen, dock_odom_)) {
+    const bool confirmed = rejected_detection_ && near(seen, *rejected_detection_);
+    rejected_detection_ = seen;
+    if (!confirmed) return;
+  }
+  rejected_detection_.reset();
+  {
     const double a = params_.detection_blend;
     dock_odom_.x += a * (seen.x - dock_odom_.x);
     dock_odom_.y += a * (seen.y - dock_odom_.y);
     dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
   }
+}
+
+DockingCommand DockingController::step(const DockingInput& in) {
+  // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
+  if (in.charger_in_robot && dock_placed_) use_detection(geom::compose(in.odom_pose, *in.charger_in_robot));
+  DockingCommand out = decide(in);
+  // The bumper overrides every phase: never push on into what it touches.
+  if ((in.bumper_front && out.twist.v_mps > 0) || (in.bumper_rear && out.twist.v_mps < 0)) out.twist.v_mps = 0;
+  return out;
+}
+
+DockingCommand DockingController::decide(const DockingInput& in) {
   DockingCommand out;
   switch (phase_) {
     case DockPhase::kTravel: {

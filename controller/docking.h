@@ -29,6 +29,8 @@ struct DockingParams {
   double overshoot_limit_m = 0.05;      ///< passing the dock this far without contact = miss
   int max_retries = 3;
   double detection_blend = 0.3;         ///< weight of each new detection in the dock estimate
+  double detection_gate_m = 0.1;        ///< a detection further than this from the dock estimate is
+                                        ///< used only when the one before it agrees (outliers are single)
   double approach_timeout_s = 40.0;     ///< an approach lasting longer counts as a miss
   // Moving obstacles met while travelling.
   double footprint_radius_m = 0.2;      ///< robot disk, for the arc check (set from the world)
@@ -50,6 +52,8 @@ struct DockingInput {
   bool charging = false;           ///< the charger reports a good connection
   std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
   std::vector<MovingBox> nearby_obstacles;  ///< sensed moving obstacles, map frame
+  bool bumper_front = false;       ///< the bumper is pressed ahead of the axle ...
+  bool bumper_rear = false;        ///< ... or behind it
 };
 
 struct DockingCommand {
@@ -76,9 +80,11 @@ class DockingController {
   void replace_path(std::vector<Vec2> path);
 
  private:
+  DockingCommand decide(const DockingInput& in);
   DockingCommand approach(const DockingInput& in);
   Vec2 in_dock_frame(Vec2 p) const;
   void miss();
+  void use_detection(const Pose2& seen_in_odom);
 
   PurePursuit tracker_;
   DockingParams params_;
@@ -93,6 +99,7 @@ class DockingController {
   bool was_blocked_ = false;
   double straight_run_m_ = 0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
+  std::optional<Pose2> rejected_detection_;  // the last detection the gate held back
 };
 
 }  // namespace plantsim::controller

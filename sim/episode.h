@@ -12,24 +12,12 @@
 #include "controller/docking.h"
 #include "controller/potential_field.h"
 #include "planner/planner.h"
-#include "sim/localization.h"
-#include "sim/odometry.h"
+#include "sim/perception.h"
 #include "sim/physics_world.h"
+#include "sim/sensor_suite.h"
 #include "sim/wheel_drive.h"
 
 namespace plantsim::sim {
-
-struct DetectionParams {
-  bool enabled = true;
-  double range_m = 2.0;               ///< charger visible within this distance
-  double field_of_view_rad = 1.2;     ///< total angle, centred on the robot's heading
-  double position_noise_m = 0.0;      ///< std-dev per axis of each detection
-  double yaw_noise_rad = 0.0;
-};
-
-struct PerceptionParams {
-  double range_m = 4.0;  ///< moving obstacles closer than this (box to robot centre) are seen
-};
 
 struct DockTolerance {
   double position_m = 0.02;
@@ -46,9 +34,12 @@ struct EpisodeConfig {
   StepSettings step;
   DriveParams drive;
   OdometryNoise odometry;
-  LocalizationParams localization;
+  LocalizationParams localization;  ///< oracle mode's fixes (true pose plus noise)
   DetectionParams detection;
-  PerceptionParams perception;
+  LidarParams lidar;
+  ImuParams imu;
+  BeaconParams beacon;
+  PerceptionParams perception;      ///< mode, EKF and tracker
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
   TravelMode travel = TravelMode::kPath;
@@ -65,6 +56,7 @@ struct TrajectorySample {
   double t_s;
   Pose2 truth;
   Pose2 estimate;  ///< map frame (localised)
+  double position_sigma_m = 0;  ///< the estimate's 1-sigma (largest direction; 0 in oracle mode)
   double speed_mps;
   double cross_track_m;
   controller::DockPhase phase;
@@ -98,10 +90,16 @@ struct EpisodeResult {
   std::string plan_note;          ///< what the planner said about its plan
   std::vector<TrajectorySample> trajectory;
   std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
+  std::string perception_mode = "sensors";
+  double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
+  std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
+  ScanView last_scan;                      ///< the last scan as perception placed it
+  std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the
-/// sensed obstacles added. In a world with a moving target the episode is a pursuit: the plan
+/// sensed obstacles added. The loop: sense (sensor readings from the physics), estimate
+/// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world with a moving target the episode is a pursuit: the plan
 /// goes to where the target will park, and success is reaching the target.
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                           const EpisodeConfig& config);

@@ -21,19 +21,24 @@ struct Field {
   const char* section;
   const char* name;
   std::function<double&(EpisodeConfig&)> ref;
-  bool integer = false;
-  bool boolean = false;
+  double lo = 0;  // closed range of valid values
+  double hi = INFINITY;
+  bool positive = false;  // lo excluded
 };
 
 #define PS_FIELD(section, member, name) Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }}
+#define PS_RANGE(section, member, name, lo, hi, positive) \
+  Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }, lo, hi, positive}
+#define PS_PROBABILITY(section, member, name) PS_RANGE(section, member, name, 0.0, 1.0, false)
+#define PS_POSITIVE(section, member, name) PS_RANGE(section, member, name, 0.0, INFINITY, true)
 
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
       PS_FIELD("step", step.dt_s, "dt_s"),
       PS_FIELD("drive", drive.tyre_friction, "tyre_friction"),
       PS_FIELD("odometry", odometry.wheel_speed_noise, "wheel_speed_noise"),
-      PS_FIELD("odometry", odometry.left_scale_error, "left_scale_error"),
-      PS_FIELD("odometry", odometry.right_scale_error, "right_scale_error"),
+      PS_RANGE("odometry", odometry.left_scale_error, "left_scale_error", -0.5, 0.5, false),
+      PS_RANGE("odometry", odometry.right_scale_error, "right_scale_error", -0.5, 0.5, false),
       PS_FIELD("localization", localization.period_s, "period_s"),
       PS_FIELD("localization", localization.position_noise_m, "position_noise_m"),
       PS_FIELD("localization", localization.yaw_noise_rad, "yaw_noise_rad"),
@@ -41,6 +46,49 @@ const std::vector<Field>& fields() {
       PS_FIELD("detection", detection.field_of_view_rad, "field_of_view_rad"),
       PS_FIELD("detection", detection.position_noise_m, "position_noise_m"),
       PS_FIELD("detection", detection.yaw_noise_rad, "yaw_noise_rad"),
+      PS_RANGE("detection", detection.rate_hz, "rate_hz", 0.0, 1000.0, true),
+      PS_RANGE("detection", detection.mount_x_m, "mount_x_m", -10.0, 10.0, false),
+      PS_PROBABILITY("detection", detection.false_negative_probability, "false_negative_probability"),
+      PS_PROBABILITY("detection", detection.outlier_probability, "outlier_probability"),
+      PS_FIELD("detection", detection.outlier_position_m, "outlier_position_m"),
+      PS_FIELD("detection", detection.outlier_yaw_rad, "outlier_yaw_rad"),
+      PS_RANGE("detection", detection.latency_s, "latency_s", 0.0, 1.5, false),
+      PS_RANGE("lidar", lidar.field_of_view_rad, "field_of_view_rad", 0.0, 2.0 * M_PI, true),
+      PS_FIELD("lidar", lidar.min_range_m, "min_range_m"),
+      PS_RANGE("lidar", lidar.max_range_m, "max_range_m", 0.0, 1000.0, true),
+      PS_RANGE("lidar", lidar.rate_hz, "rate_hz", 0.0, 1000.0, true),
+      PS_RANGE("lidar", lidar.mount_x_m, "mount_x_m", -10.0, 10.0, false),
+      PS_RANGE("lidar", lidar.mount_y_m, "mount_y_m", -10.0, 10.0, false),
+      PS_RANGE("lidar", lidar.mount_yaw_rad, "mount_yaw_rad", -M_PI, M_PI, false),
+      PS_RANGE("lidar", lidar.range_noise_m, "range_noise_m", 0.0, 10.0, false),
+      PS_PROBABILITY("lidar", lidar.dropout_probability, "dropout_probability"),
+      PS_RANGE("imu", imu.yaw_rate_noise_radps, "yaw_rate_noise_radps", 0.0, 10.0, false),
+      PS_RANGE("imu", imu.bias_radps, "bias_radps", 0.0, 10.0, false),
+      PS_RANGE("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0, 10.0, false),
+      PS_RANGE("beacon", beacon.position_noise_m, "position_noise_m", 0.0, 100.0, false),
+      PS_POSITIVE("ekf", perception.ekf.initial_position_sigma_m, "initial_position_sigma_m"),
+      PS_POSITIVE("ekf", perception.ekf.initial_yaw_sigma_rad, "initial_yaw_sigma_rad"),
+      PS_POSITIVE("ekf", perception.ekf.initial_bias_sigma_radps, "initial_bias_sigma_radps"),
+      PS_FIELD("ekf", perception.ekf.distance_noise, "distance_noise"),
+      PS_FIELD("ekf", perception.ekf.lateral_noise, "lateral_noise"),
+      PS_FIELD("ekf", perception.ekf.gyro_noise_radps, "gyro_noise_radps"),
+      PS_FIELD("ekf", perception.ekf.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s"),
+      PS_POSITIVE("ekf", perception.ekf.range_sigma_m, "range_sigma_m"),
+      PS_POSITIVE("ekf", perception.ekf.gate_chi2, "gate_chi2"),
+      PS_PROBABILITY("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos"),
+      PS_PROBABILITY("ekf", perception.ekf.degraded_inlier_fraction, "degraded_inlier_fraction"),
+      PS_POSITIVE("ekf", perception.ekf.lost_position_sigma_m, "lost_position_sigma_m"),
+      PS_FIELD("tracker", perception.tracker.unexplained_margin_m, "unexplained_margin_m"),
+      PS_POSITIVE("tracker", perception.tracker.range_m, "range_m"),
+      PS_POSITIVE("tracker", perception.tracker.cluster_gap_m, "cluster_gap_m"),
+      PS_POSITIVE("tracker", perception.tracker.association_gate_m, "association_gate_m"),
+      PS_PROBABILITY("tracker", perception.tracker.alpha, "alpha"),
+      PS_PROBABILITY("tracker", perception.tracker.beta, "beta"),
+      PS_POSITIVE("tracker", perception.tracker.max_speed_mps, "max_speed_mps"),
+      PS_FIELD("tracker", perception.tracker.still_speed_mps, "still_speed_mps"),
+      PS_POSITIVE("tracker", perception.tracker.forget_after_s, "forget_after_s"),
+      PS_FIELD("tracker", perception.tracker.min_size_m, "min_size_m"),
+      PS_FIELD("perception", perception.target_exclusion_m, "target_exclusion_m"),
       PS_FIELD("tracking", tracking.lookahead_min_m, "lookahead_min_m"),
       PS_FIELD("tracking", tracking.lookahead_max_m, "lookahead_max_m"),
       PS_FIELD("tracking", tracking.lookahead_time_s, "lookahead_time_s"),
@@ -62,7 +110,8 @@ const std::vector<Field>& fields() {
       PS_FIELD("docking", docking.align_speed_radps, "align_speed_radps"),
       PS_FIELD("docking", docking.backoff_speed_mps, "backoff_speed_mps"),
       PS_FIELD("docking", docking.overshoot_limit_m, "overshoot_limit_m"),
-      PS_FIELD("docking", docking.detection_blend, "detection_blend"),
+      PS_PROBABILITY("docking", docking.detection_blend, "detection_blend"),
+      PS_POSITIVE("docking", docking.detection_gate_m, "detection_gate_m"),
       PS_FIELD("docking", docking.approach_timeout_s, "approach_timeout_s"),
       PS_FIELD("docking", docking.safety_margin_m, "safety_margin_m"),
       PS_FIELD("docking", docking.max_decel_mps2, "max_decel_mps2"),
@@ -104,12 +153,16 @@ const std::vector<Field>& fields() {
   return table;
 }
 #undef PS_FIELD
+#undef PS_RANGE
+#undef PS_PROBABILITY
+#undef PS_POSITIVE
 
 // Integer and boolean parameters, kept apart from the double table.
 struct IntField {
   const char* section;
   const char* name;
   std::function<int&(EpisodeConfig&)> ref;
+  int lo = 0, hi = 1000;
 };
 const std::vector<IntField>& int_fields() {
   static const std::vector<IntField> table = {
@@ -118,6 +171,25 @@ const std::vector<IntField>& int_fields() {
       {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
       {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }},
       {"potential_field", "max_wall_follows", [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
+      {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1, 10000},
+      {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1, 10000},
+      {"ekf", "iterations", [](EpisodeConfig& c) -> int& { return c.perception.ekf.iterations; }, 1, 20},
+  };
+  return table;
+}
+
+// Boolean parameters.
+struct BoolField {
+  const char* section;
+  const char* name;
+  std::function<bool&(EpisodeConfig&)> ref;
+};
+const std::vector<BoolField>& bool_fields() {
+  static const std::vector<BoolField> table = {
+      {"detection", "enabled", [](EpisodeConfig& c) -> bool& { return c.detection.enabled; }},
+      {"detection", "occlusion", [](EpisodeConfig& c) -> bool& { return c.detection.occlusion; }},
+      {"lidar", "enabled", [](EpisodeConfig& c) -> bool& { return c.lidar.enabled; }},
+      {"lidar", "max_range_returns", [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
   };
   return table;
 }
@@ -154,21 +226,34 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     if (!v) continue;
     if (!v->is_number()) throw worlds::WorldError(source, path_of(f.section, f.name), "expected a number");
     const double d = v->get<double>();
-    const bool may_be_negative = std::string(f.name).find("scale_error") != std::string::npos;
-    if (!std::isfinite(d) || (d < 0 && !may_be_negative))
-      throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite and not negative");
+    if (!std::isfinite(d)) throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
+    if (d < f.lo || d > f.hi || (f.positive && d <= f.lo)) {
+      std::ostringstream range;
+      range << "must be " << (f.positive ? "above " : "at least ") << f.lo;
+      if (std::isfinite(f.hi)) range << " and at most " << f.hi;
+      throw worlds::WorldError(source, path_of(f.section, f.name), range.str());
+    }
     f.ref(c) = d;
   }
   for (const IntField& f : int_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
-    if (!v->is_number_integer() || v->get<long>() < 0 || v->get<long>() > 1000)
-      throw worlds::WorldError(source, path_of(f.section, f.name), "expected a whole number from 0 to 1000");
+    if (!v->is_number_integer() || v->get<long>() < f.lo || v->get<long>() > f.hi)
+      throw worlds::WorldError(source, path_of(f.section, f.name),
+                               "expected a whole number from " + std::to_string(f.lo) + " to " + std::to_string(f.hi));
     f.ref(c) = v->get<int>();
   }
-  if (const json* v = lookup("detection", "enabled")) {
-    if (!v->is_boolean()) throw worlds::WorldError(source, "detection.enabled", "expected true or false");
-    c.detection.enabled = v->get<bool>();
+  for (const BoolField& f : bool_fields()) {
+    const json* v = lookup(f.section, f.name);
+    if (!v) continue;
+    if (!v->is_boolean()) throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
+    f.ref(c) = v->get<bool>();
+  }
+  if (const json* v = lookup("perception", "mode")) {
+    const std::string m = v->is_string() ? v->get<std::string>() : "";
+    if (m == "sensors") c.perception.mode = PerceptionMode::kSensors;
+    else if (m == "oracle") c.perception.mode = PerceptionMode::kOracle;
+    else throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
   }
   if (const json* v = lookup("", "travel")) {
     const std::string t = v->is_string() ? v->get<std::string>() : "";
@@ -194,6 +279,8 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     throw worlds::WorldError(source, "potential_field.rho0_m", "must exceed rho_min_m");
   if (c.field.slow_force_ratio <= 0) throw worlds::WorldError(source, "potential_field.slow_force_ratio", "must be positive");
   if (c.pursuit_replan_period_s <= 0) throw worlds::WorldError(source, "pursuit.replan_period_s", "must be positive");
+  if (c.lidar.min_range_m >= c.lidar.max_range_m)
+    throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
     throw worlds::WorldError(source, "tracking.lookahead_min_m", "must not exceed lookahead_max_m");
   return c;
@@ -215,7 +302,8 @@ std::string default_config_json() {
     else j[f.section][f.name] = f.ref(c);
   }
   for (const IntField& f : int_fields()) j[f.section][f.name] = f.ref(c);
-  j["detection"]["enabled"] = c.detection.enabled;
+  for (const BoolField& f : bool_fields()) j[f.section][f.name] = f.ref(c);
+  j["perception"]["mode"] = std::string(to_string(c.perception.mode));
   j["travel"] = std::string(to_string(c.travel));
   j["seed"] = c.seed;
   return j.dump(2) + "\n";

@@ -20,6 +20,9 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["path_length_m"] = r.path_length_m;
   j["driven_length_m"] = r.driven_length_m;
   j["max_cross_track_m"] = r.max_cross_track_m;
+  j["perception_mode"] = r.perception_mode;
+  j["localization_error_max_m"] = r.localization_error_max_m;
+  j["localization_status"] = r.localization_status;
 }
 
 }  // namespace plantsim::sim

@@ -3,51 +3,23 @@
 
 #include <box2d/box2d.h>
 
+#include "sim/box2d_scene.h"
+
 #include <cmath>
 
 namespace plantsim::sim {
-namespace {
-
-enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4, kMoving = 5, kTarget = 6 };
-
-void add_box(b2Body* body, const geom::Rect& r, FixtureTag tag) {
-  b2PolygonShape box;
-  const geom::Vec2 c = r.center();
-  box.SetAsBox(static_cast<float>(0.5 * r.width()), static_cast<float>(0.5 * r.height()),
-               b2Vec2(static_cast<float>(c.x), static_cast<float>(c.y)), 0.0f);
-  b2FixtureDef fd;
-  fd.shape = &box;
-  fd.friction = 0.3f;
-  fd.userData.pointer = tag;
-  body->CreateFixture(&fd);
-}
-
-FixtureTag tag_of(b2Fixture* f) { return static_cast<FixtureTag>(f->GetUserData().pointer); }
-
-}  // namespace
+using detail::FixtureTag;
+using detail::kCharger;
+using detail::kMoving;
+using detail::kObstacle;
+using detail::kRobot;
+using detail::kTarget;
+using detail::kWall;
+using detail::tag_of;
 
 PhysicsWorld::PhysicsWorld(const worlds::World& w)
     : world_(std::make_unique<b2World>(b2Vec2(0, 0))), robot_radius_m_(w.robot.radius_m) {
-  b2BodyDef static_def;
-  b2Body* statics = world_->CreateBody(&static_def);
-  for (const geom::Rect& r : w.obstacles) add_box(statics, r, kObstacle);
-  for (const geom::Rect& wall : geom::surrounding_walls(w.floor, 1.0)) add_box(statics, wall, kWall);
-
-  // The charger's face is set back by Box2D's polygon skin so that contact begins exactly
-  // when the robot's centre reaches the docked pose.
-  const worlds::ChargerBody cb = worlds::charger_body(w);
-  const geom::Vec2 center = cb.center + b2_polygonRadius * w.charger.heading();
-  b2BodyDef charger_def;
-  charger_def.position.Set(static_cast<float>(center.x), static_cast<float>(center.y));
-  charger_def.angle = static_cast<float>(cb.yaw);
-  b2Body* charger = world_->CreateBody(&charger_def);
-  b2PolygonShape plate;
-  plate.SetAsBox(static_cast<float>(cb.half_depth_m), static_cast<float>(cb.half_width_m));
-  b2FixtureDef plate_fd;
-  plate_fd.shape = &plate;
-  plate_fd.friction = 0.3f;
-  plate_fd.userData.pointer = kCharger;
-  charger->CreateFixture(&plate_fd);
+  detail::add_static_scene(*world_, w, w.charger);
 
   for (const worlds::MovingObstacle& m : w.moving) moving_.push_back(make_actor(m, false));
   if (w.target) target_ = make_actor(*w.target, true);
@@ -175,9 +147,21 @@ ContactState PhysicsWorld::contacts() const {
     b2Fixture* b = e->contact->GetFixtureB();
     const FixtureTag other = tag_of(a) == kRobot ? tag_of(b) : tag_of(a);
     if (other == kCharger) s.charger = true;
-    if (other == kObstacle || other == kWall || other == kMoving) s.obstacle = true;
+    if (other == kObstacle || other == kWall || other == kMoving) {
+      s.obstacle = true;
+      b2WorldManifold m;
+      e->contact->GetWorldManifold(&m);
+      const int points = e->contact->GetManifold()->pointCount;
+      for (int i = 0; i < points; ++i) s.obstacle_points.push_back({m.points[i].x, m.points[i].y});
+    }
   }
   return s;
 }
+
+}  // namespace plantsim::sim
+
+namespace plantsim::sim {
+
+std::optional<RayHit> PhysicsWorld::ray_cast(Vec2 from, Vec2 to) const { return detail::cast_ray(*world_, from, to); }
 
 }  // namespace plantsim::sim

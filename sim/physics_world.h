@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "sim/ray_hit.h"
 #include "worlds/world.h"
 
 class b2World;
@@ -35,6 +36,7 @@ struct ActorState {
 struct ContactState {
   bool charger = false;   ///< robot touches the charger body
   bool obstacle = false;  ///< robot touches an obstacle, a wall or a moving obstacle
+  std::vector<Vec2> obstacle_points;  ///< where it touches them (world frame)
 };
 
 class PhysicsWorld {
@@ -58,6 +60,9 @@ class PhysicsWorld {
   Vec2 robot_velocity() const;          ///< world frame, m/s
   double robot_yaw_rate() const;        ///< rad/s
   ContactState contacts() const;
+  /// Nearest surface along the segment (obstacles, walls, charger, moving obstacles and the
+  /// target; never the robot itself), through Box2D's broad phase. For the sensors.
+  std::optional<RayHit> ray_cast(Vec2 from, Vec2 to) const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
   /// Sets the robot's velocity directly (no tyre model): for baselines and tests.

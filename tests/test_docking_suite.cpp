@@ -88,15 +88,16 @@ TEST(DockingSuite, RandomStartsInN50AndN200) {
 namespace plantsim::sim {
 namespace {
 
-TEST(DockingSuite, NoisySensingDocksThanksToDetectionAndFailsWithout) {
-  const EpisodeConfig noisy = load_episode_config(test::source_file("configs/noisy_sensing.json"));
+TEST(DockingSuite, NoisyOracleSensingDocksThanksToDetectionAndFailsWithout) {
+  const EpisodeConfig noisy = load_episode_config(test::source_file("configs/oracle_noisy.json"));
+  ASSERT_EQ(noisy.perception.mode, PerceptionMode::kOracle);
   ASSERT_GT(noisy.localization.period_s, 0);
   const SuiteResult with = run_suite("worlds/world_N50.json", 100, noisy, 7);
-  report("world_N50, noisy sensing, detection on", with);
+  report("world_N50, noisy oracle sensing, detection on", with);
   EpisodeConfig blind = noisy;
   blind.detection.enabled = false;
   const SuiteResult without = run_suite("worlds/world_N50.json", 100, blind, 7);
-  report("world_N50, noisy sensing, detection off", without);
+  report("world_N50, noisy oracle sensing, detection off", without);
   EXPECT_GE(with.success_rate(), 0.98);
   EXPECT_EQ(with.collisions, 0);
   // Without the detection the final approach inherits the localiser's centimetres of error:

@@ -109,7 +109,7 @@ TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
   worlds::World blind = world;
   auto p = planner::make_planner("vg", planner::planner_input(blind, true));
   EpisodeConfig config;
-  config.perception.range_m = 0;  // senses nothing
+  config.perception.tracker.range_m = 1e-3;  // tracks nothing
   const EpisodeResult hit = run_episode(blind, *p, config);
   EXPECT_GT(hit.collisions, 0);
 }

@@ -1,0 +1,47 @@
+// Truth into metrics.
+#include "sim/episode_metrics.h"
+
+#include <cmath>
+
+namespace plantsim::sim {
+
+EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m)
+    : plant_(plant), r_(result), catch_distance_m_(catch_distance_m), previous_(plant.start.position()) {}
+
+void EpisodeMetrics::before_step(const PhysicsWorld& physics) {
+  const ContactState contact = physics.contacts();
+  if (contact.obstacle && !was_touching_obstacle_) ++r_.collisions;
+  was_touching_obstacle_ = contact.obstacle;
+  if (contact.charger) {
+    if (!contact_measured_) measure_final_error(physics);
+    contact_measured_ = true;
+  } else {
+    contact_measured_ = false;
+  }
+}
+
+void EpisodeMetrics::after_step(const PhysicsWorld& physics) {
+  ++r_.physics_steps;
+  const Vec2 now = physics.robot_position();
+  r_.driven_length_m += geom::distance(previous_, now);
+  previous_ = now;
+}
+
+void EpisodeMetrics::compare_estimate(const PhysicsWorld& physics, const Pose2& estimate) {
+  r_.localization_error_max_m =
+      std::max(r_.localization_error_max_m, geom::distance(physics.robot_position(), estimate.position()));
+}
+
+bool EpisodeMetrics::target_caught(const PhysicsWorld& physics) const {
+  const std::optional<ActorState> target = physics.target();
+  return target && controller::distance_to_box(physics.robot_position(), target->box) - plant_.robot.radius_m <=
+                       catch_distance_m_;
+}
+
+void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {
+  const Pose2 truth = physics.robot_pose();
+  r_.position_error_m = geom::distance(truth.position(), plant_.charger.position());
+  r_.heading_error_deg = std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) * 180.0 / M_PI;
+}
+
+}  // namespace plantsim::sim

@@ -1,0 +1,33 @@
+// The referee: the simulator's truth turned into the episode's metrics (collisions, pose
+// error at contact, driven length, localisation error, a caught target). Nothing here feeds
+// back into sensing or control.
+#pragma once
+
+#include "sim/episode.h"
+
+namespace plantsim::sim {
+
+class EpisodeMetrics {
+ public:
+  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m);
+  /// Every physics step, before it: contacts and the pose error at first charger contact.
+  void before_step(const PhysicsWorld& physics);
+  /// Every physics step, after it: driven length.
+  void after_step(const PhysicsWorld& physics);
+  /// At each control step: how far the estimate is from the truth.
+  void compare_estimate(const PhysicsWorld& physics, const Pose2& estimate);
+  /// True when the moving target is within catch distance of the robot.
+  bool target_caught(const PhysicsWorld& physics) const;
+  /// The pose error now (for episodes ending without contact).
+  void measure_final_error(const PhysicsWorld& physics);
+
+ private:
+  const worlds::World& plant_;
+  EpisodeResult& r_;
+  double catch_distance_m_;
+  bool was_touching_obstacle_ = false;
+  bool contact_measured_ = false;
+  Vec2 previous_;
+};
+
+}  // namespace plantsim::sim

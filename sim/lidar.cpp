@@ -1,0 +1,45 @@
+// Beams, noise, dropouts.
+#include "sim/lidar.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sim/physics_world.h"
+
+namespace plantsim::sim {
+
+Lidar::Lidar(LidarParams params, std::uint64_t seed) : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
+
+LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s) {
+  next_scan_s_ = t_s + 1.0 / params_.rate_hz;
+  LidarScan s;
+  s.t_s = t_s;
+  s.mount = {params_.mount_x_m, params_.mount_y_m, params_.mount_yaw_rad};
+  const int n = params_.beam_count;
+  s.angle_increment_rad = n > 1 ? params_.field_of_view_rad / (n - 1) : 0.0;
+  s.angle_min_rad = n > 1 ? -0.5 * params_.field_of_view_rad : 0.0;  // sensor frame
+  s.min_range_m = params_.min_range_m;
+  s.max_range_m = params_.max_range_m;
+  s.ranges.resize(static_cast<std::size_t>(n));
+  const geom::Pose2 sensor = geom::compose(robot_truth, s.mount);
+  const double no_return = params_.max_range_returns ? params_.max_range_m : std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double a = sensor.yaw + s.angle(static_cast<std::size_t>(i));
+    const geom::Vec2 dir = geom::unit_from_angle(a);
+    // Noise and dropout are drawn for every beam, hit or not, so that one beam's outcome
+    // never shifts the random stream of the others (scans stay comparable across worlds).
+    const double noise = params_.range_noise_m * gauss_(rng_);
+    const bool dropped = uniform_(rng_) < params_.dropout_probability;
+    double r = no_return;
+    if (const auto hit = physics.ray_cast(sensor.position(), sensor.position() + params_.max_range_m * dir)) {
+      if (hit->range_m >= params_.min_range_m)
+        r = std::clamp(hit->range_m + noise, params_.min_range_m, params_.max_range_m);
+    }
+    if (dropped) r = std::numeric_limits<double>::quiet_NaN();
+    s.ranges[static_cast<std::size_t>(i)] = r;
+  }
+  return s;
+}
+
+}  // namespace plantsim::sim

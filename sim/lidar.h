@@ -1,0 +1,65 @@
+// A 2D scanning lidar built from the physics: one Box2D ray cast per beam (through the broad
+// phase) against obstacles, walls, the charger, moving obstacles and the target, with
+// Gaussian range noise, random dropouts and no-return beams. All beams of a scan are cast at
+// one instant (no motion distortion: at 0.6 m/s and 15 Hz a scan spans 4 cm of travel).
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::sim {
+
+class PhysicsWorld;
+
+/// Defaults: a typical 2D safety lidar (270 degrees, 0.05-20 m, 15 Hz, 1 cm noise).
+struct LidarParams {
+  bool enabled = true;
+  int beam_count = 360;                  ///< beams spread evenly over the field of view
+  double field_of_view_rad = 1.5 * M_PI;  ///< total angle, centred on the mounting yaw
+  double min_range_m = 0.05;             ///< closer surfaces give no return
+  double max_range_m = 20.0;             ///< beyond: no return
+  double rate_hz = 15.0;                 ///< scans per second
+  double mount_x_m = 0.0;                ///< mounting pose in the robot frame
+  double mount_y_m = 0.0;
+  double mount_yaw_rad = 0.0;
+  double range_noise_m = 0.01;           ///< std-dev of each range
+  double dropout_probability = 0.01;     ///< a beam returns nothing (dark or shiny surface)
+  bool max_range_returns = true;         ///< no-return beams read max_range_m (else +inf)
+};
+
+/// One scan in the sensor frame. ranges[i] is along angle_min + i * angle_increment (sensor
+/// frame); a dropout is NaN; a beam with no surface within range reads max_range_m (or +inf).
+struct LidarScan {
+  double t_s = 0;
+  geom::Pose2 mount;  ///< sensor in the robot frame
+  double angle_min_rad = 0;
+  double angle_increment_rad = 0;
+  double min_range_m = 0, max_range_m = 0;
+  std::vector<double> ranges;
+
+  double angle(std::size_t i) const { return angle_min_rad + static_cast<double>(i) * angle_increment_rad; }
+  /// A real return: finite, within [min, max) (a max-range reading is no surface).
+  bool valid(std::size_t i) const { return std::isfinite(ranges[i]) && ranges[i] >= min_range_m && ranges[i] < max_range_m; }
+};
+
+class Lidar {
+ public:
+  Lidar(LidarParams params, std::uint64_t seed);
+  /// True when a scan is due at time t (the first at t = 0).
+  bool due(double t_s) const { return params_.enabled && t_s + 1e-9 >= next_scan_s_; }
+  /// Scans from the robot's true pose (sensors see the real plant).
+  LidarScan scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s);
+  const LidarParams& params() const { return params_; }
+
+ private:
+  LidarParams params_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> gauss_{0.0, 1.0};
+  std::uniform_real_distribution<double> uniform_{0.0, 1.0};
+  double next_scan_s_ = 0;
+};
+
+}  // namespace plantsim::sim

@@ -1,0 +1,145 @@
+// Building the perception from readings: the EKF and the tracker (sensors), or the simulator's
+// knowledge as the readings hand it over (oracle).
+#include "sim/perception.h"
+
+#include <cmath>
+
+namespace plantsim::sim {
+namespace {
+
+// Oracle mode: moving obstacles within range, as boxes in the map frame, placed with the
+// robot's own (possibly wrong) pose estimate, with their scripted velocity.
+std::vector<controller::MovingBox> known_actors(const OracleReadings& o, const geom::Pose2& estimate, double range_m) {
+  std::vector<controller::MovingBox> out;
+  const geom::Pose2 estimate_from_truth = geom::compose(estimate, geom::inverse(o.truth));
+  for (const ActorState& a : o.actors) {
+    const geom::Rect& b = a.box;
+    if (controller::distance_to_box(o.truth.position(), b) > range_m) continue;
+    geom::Rect seen{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (geom::Vec2 c : {geom::Vec2{b.xmin, b.ymin}, geom::Vec2{b.xmax, b.ymin}, geom::Vec2{b.xmax, b.ymax},
+                         geom::Vec2{b.xmin, b.ymax}}) {
+      const geom::Vec2 q = geom::compose(estimate_from_truth, geom::Pose2{c.x, c.y, 0}).position();
+      seen = {std::min(seen.xmin, q.x), std::min(seen.ymin, q.y), std::max(seen.xmax, q.x), std::max(seen.ymax, q.y)};
+    }
+    out.push_back({seen, geom::rotate(a.velocity, estimate_from_truth.yaw)});
+  }
+  return out;
+}
+
+// Oracle mode: the map's rectangles and walls within range, and the charger block.
+std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::Vec2 x, double range_m) {
+  std::vector<controller::FieldObstacle> out;
+  auto add_if_near = [&](const geom::Rect& r) {
+    if (geom::distance(x, geom::closest_point(r, x)) <= range_m) out.push_back({r, {0, 0}});
+  };
+  for (const geom::Rect& r : map.obstacles) add_if_near(r);
+  for (const geom::Rect& r : geom::surrounding_walls(map.floor, 1.0)) add_if_near(r);
+  add_if_near(worlds::charger_body(map).bounding_box());
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(PerceptionMode m) { return m == PerceptionMode::kSensors ? "sensors" : "oracle"; }
+
+Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
+    : map_(map), p_(params), raycaster_(map), ekf_(params.ekf, map.start, raycaster_), tracker_(params.tracker) {
+  now_.pose = map.start;
+  now_.odom_pose = map.start;
+}
+
+std::optional<geom::Pose2> Perceiver::carry_to_now(const ChargerDetection& d) const {
+  // The odometry pose when the image was taken: the newest recorded at or before it.
+  const geom::Pose2* then = nullptr;
+  for (const auto& [t, pose] : odom_history_)
+    if (t <= d.captured_s + 1e-9) then = &pose;
+  if (!then) return std::nullopt;  // older than the history: too late to use
+  return geom::compose(geom::compose(geom::inverse(now_.odom_pose), *then), d.dock_in_robot);
+}
+
+void Perceiver::interpret_scan(const LidarScan& scan) {
+  const geom::Pose2 sensor = geom::compose(now_.pose, scan.mount);
+  scan_view_ = {now_.pose, {}, {}};
+  std::vector<geom::Vec2> unexplained, near_static;
+  const double reach = std::max(p_.tracker.range_m, p_.field_range_m);
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.valid(i)) continue;
+    const double r = scan.ranges[i], phi = sensor.yaw + scan.angle(i);
+    const geom::Vec2 point = sensor.position() + r * geom::unit_from_angle(phi);
+    if (now_.target && geom::distance(point, *now_.target) < p_.target_exclusion_m) continue;
+    bool explained = true;
+    if (r <= reach) {
+      const auto expected = raycaster_.cast(sensor.position(), phi, scan.max_range_m);
+      // A return short of the map's surface is still the map when a mapped surface is that
+      // close to it (beams grazing a corner reach past it from a pose a hair away).
+      explained = (expected && r >= expected->range_m - p_.tracker.unexplained_margin_m) ||
+                  raycaster_.surface_near(point, p_.tracker.unexplained_margin_m);
+    }
+    (explained ? scan_view_.explained : scan_view_.unexplained).push_back(point);
+    if (!explained && r <= p_.tracker.range_m) unexplained.push_back(point);
+    if (explained && r <= p_.field_range_m) near_static.push_back(point);
+  }
+  tracker_.update(unexplained, scan.t_s);
+  // The field feels each connected stretch of the map's surfaces at its nearest point, as it
+  // felt each rectangle at its nearest point in oracle mode.
+  static_field_.clear();
+  for (const auto& cluster : cluster_in_order(near_static, p_.field_cluster_gap_m)) {
+    const geom::Vec2* nearest = &cluster[0];
+    for (const geom::Vec2& q : cluster)
+      if (geom::distance(q, now_.pose.position()) < geom::distance(*nearest, now_.pose.position())) nearest = &q;
+    static_field_.push_back({{nearest->x, nearest->y, nearest->x, nearest->y}, {0, 0}});
+  }
+}
+
+const Perception& Perceiver::update(const SensorReadings& r) {
+  now_.t_s = r.t_s;
+  now_.dt_s = r.dt_s;
+  now_.odom_pose = r.odom_pose;
+  now_.speed_mps = r.odom_speed_mps;
+  now_.charger_contact = r.charger_contact;
+  now_.charging = r.charging;
+  now_.bumper = r.bumper;
+  odom_history_.emplace_back(r.t_s, r.odom_pose);
+  while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0) odom_history_.pop_front();
+
+  if (r.oracle) {
+    now_.pose = r.oracle->pose_fix.value_or(r.odom_pose);
+    now_.obstacles = known_actors(*r.oracle, now_.pose, p_.range_m);
+    now_.field = map_near(map_, now_.pose.position(), p_.field_range_m);
+    for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
+    now_.charger_in_robot = r.charger ? std::optional(r.charger->dock_in_robot) : std::nullopt;
+    if (r.oracle->target) {
+      now_.target = r.oracle->target->box.center();
+      now_.target_velocity = r.oracle->target->velocity;
+    }
+    return now_;
+  }
+
+  ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
+  if (r.scan) ekf_.correct(*r.scan);
+  now_.pose = ekf_.pose();
+  now_.position_sigma_m = ekf_.position_sigma_m();
+  now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();
+  now_.health = ekf_.health();
+  if (r.target_in_robot) {
+    // The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
+    const geom::Vec2 seen = geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0}).position();
+    if (!now_.target || r.dt_s <= 0) {
+      now_.target = seen;
+    } else {
+      const geom::Vec2 predicted = *now_.target + r.dt_s * now_.target_velocity;
+      const geom::Vec2 innovation = seen - predicted;
+      now_.target = predicted + 0.5 * innovation;
+      now_.target_velocity = now_.target_velocity + (0.1 / r.dt_s) * innovation;
+    }
+  }
+  if (r.scan) interpret_scan(*r.scan);
+  now_.obstacles = tracker_.boxes(r.t_s);
+  // The static returns of the last scan, and the tracked obstacles with their velocities.
+  now_.field = static_field_;
+  for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
+  now_.charger_in_robot = r.charger ? carry_to_now(*r.charger) : std::nullopt;
+  return now_;
+}
+
+}  // namespace plantsim::sim

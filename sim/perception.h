@@ -1,0 +1,87 @@
+// What the controllers, planners and seed methods are allowed to know: a perception built
+// only from sensor readings and the robot's map. In mode "sensors" (the default) the pose is
+// the EKF's (encoders + gyro, corrected by scans matched to the map), moving and unmapped
+// obstacles are the tracker's (scan returns the map does not explain), the potential field
+// feels the scan's returns, and the charger detection is carried to the present through the
+// odometry. Mode "oracle" keeps the old idealised sensing for comparison.
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "controller/collision_check.h"
+#include "controller/potential_field.h"
+#include "sim/ekf_localizer.h"
+#include "sim/map_raycaster.h"
+#include "sim/obstacle_tracker.h"
+#include "sim/sensor_suite.h"
+
+namespace plantsim::sim {
+
+enum class PerceptionMode { kSensors, kOracle };
+std::string_view to_string(PerceptionMode m);
+
+struct PerceptionParams {
+  PerceptionMode mode = PerceptionMode::kSensors;
+  double range_m = 4.0;              ///< oracle mode: moving obstacles closer than this are known exactly
+  double field_range_m = 3.0;        ///< scan returns closer than this reach the potential field
+  double field_cluster_gap_m = 0.3;  ///< returns closer than this form one obstacle for the field
+  double target_exclusion_m = 0.6;   ///< returns this close to the beacon's target are the target
+  EkfParams ekf;
+  TrackerParams tracker;
+};
+
+struct Perception {
+  double t_s = 0;
+  double dt_s = 0;
+  geom::Pose2 pose;                 ///< estimated, map frame
+  double position_sigma_m = 0;      ///< 1-sigma of the estimate (largest direction); 0 in oracle mode
+  double yaw_sigma_rad = 0;
+  LocalizationHealth health = LocalizationHealth::kOk;
+  geom::Pose2 odom_pose;            ///< continuous odometry frame
+  double speed_mps = 0;
+  bool charger_contact = false;
+  bool charging = false;
+  BumperReading bumper;
+  std::optional<geom::Pose2> charger_in_robot;     ///< docked pose seen, carried to now (robot frame)
+  std::vector<controller::MovingBox> obstacles;    ///< tracked (or, oracle, known) obstacles off the map
+  std::vector<controller::FieldObstacle> field;    ///< what the potential field feels
+  std::optional<geom::Vec2> target;                ///< a moving target's centre (map frame)
+  geom::Vec2 target_velocity;
+};
+
+/// The last scan as perception interpreted it, for figures.
+struct ScanView {
+  geom::Pose2 pose;  ///< estimated pose it was placed with
+  std::vector<geom::Vec2> explained, unexplained;  ///< returns, map frame
+};
+
+class Perceiver {
+ public:
+  /// `map` is the plant as the robot knows it.
+  Perceiver(const worlds::World& map, const PerceptionParams& params);
+  const Perception& update(const SensorReadings& readings);
+  const Perception& current() const { return now_; }
+  const ScanView& last_scan() const { return scan_view_; }
+  const ObstacleTracker& tracker() const { return tracker_; }
+
+ private:
+  void interpret_scan(const LidarScan& scan);
+  std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
+
+  const worlds::World& map_;
+  PerceptionParams p_;
+  MapRaycaster raycaster_;
+  EkfLocalizer ekf_;
+  ObstacleTracker tracker_;
+  Perception now_;
+  ScanView scan_view_;
+  std::vector<controller::FieldObstacle> static_field_;  // from the last scan
+  std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
+  std::optional<geom::Vec2> last_target_;
+};
+
+}  // namespace plantsim::sim

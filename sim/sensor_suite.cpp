@@ -1,0 +1,82 @@
+// Reading the sensors from the physics.
+#include "sim/sensor_suite.h"
+
+#include <cmath>
+
+namespace plantsim::sim {
+
+SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params, std::uint64_t seed)
+    : plant_(plant),
+      p_(params),
+      odometry_(plant.start, plant.robot.wheel_base_m, params.odometry, seed),
+      imu_(params.imu, seed),
+      lidar_(params.lidar, seed),
+      detector_(params.detection, seed),
+      oracle_fix_(params.oracle_fix, seed),
+      rng_(seed ^ 0x2545f4914f6cdd1dULL),
+      last_odom_(plant.start),
+      charger_marker_(worlds::charger_body(plant).center) {
+  if (p_.oracle) {
+    // The comparison mode of old: no lidar, a detector that sees through everything and never errs.
+    p_.lidar.enabled = false;
+    p_.detection.occlusion = false;
+    p_.detection.false_negative_probability = 0;
+    p_.detection.outlier_probability = 0;
+    p_.detection.latency_s = 0;
+    p_.detection.rate_hz = 1e9;
+    detector_ = ChargerDetector(p_.detection, seed);
+  }
+}
+
+void SensorSuite::count(const PhysicsWorld& physics, const WheelDrive& drive, double dt_s) {
+  odometry_.count(drive.motor_speeds(), dt_s);
+  const ContactState c = physics.contacts();
+  contact_points_.insert(contact_points_.end(), c.obstacle_points.begin(), c.obstacle_points.end());
+  if (c.charger) {
+    contact_ = true;
+    // The charger's own signal: its pads engage when the robot sits within tolerance.
+    const geom::Pose2 truth = physics.robot_pose();
+    charging_ = charging_ || (geom::distance(truth.position(), plant_.charger.position()) <= p_.charge_position_tolerance_m &&
+                              std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) <= p_.charge_heading_tolerance_rad);
+  }
+}
+
+SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {
+  const geom::Pose2 truth = physics.robot_pose();
+  SensorReadings r;
+  r.t_s = t_s;
+  r.dt_s = t_s - last_read_s_;
+  last_read_s_ = t_s;
+  odometry_.read();
+  r.odom_pose = odometry_.pose();
+  r.odom_speed_mps = odometry_.speed_mps();
+  // Travel along the heading since the last reading, from the dead-reckoned poses.
+  const geom::Pose2 step = geom::compose(geom::inverse(last_odom_), r.odom_pose);
+  r.encoder_distance_m = step.x;
+  last_odom_ = r.odom_pose;
+  r.gyro_yaw_rate_radps = imu_.read_yaw_rate(physics.robot_yaw_rate(), r.dt_s);
+  if (lidar_.due(t_s)) r.scan = lidar_.scan(physics, truth, t_s);
+  r.charger = detector_.update(physics, truth, plant_.charger, charger_marker_, t_s);
+  r.bumper = read_bumper(contact_points_, truth);
+  contact_points_.clear();
+  r.charger_contact = contact_;
+  r.charging = charging_;
+  contact_ = charging_ = false;
+  if (const auto target = physics.target()) {
+    const geom::Vec2 rel = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
+    r.target_in_robot = rel + geom::Vec2{p_.beacon.position_noise_m * gauss_(rng_), p_.beacon.position_noise_m * gauss_(rng_)};
+  }
+  if (p_.oracle) {
+    OracleReadings o;
+    oracle_fix_.update(t_s, r.odom_pose, truth);
+    o.pose_fix = oracle_fix_.map_pose(r.odom_pose);
+    o.truth = truth;
+    o.actors = physics.actors();
+    o.target = physics.target();
+    if (const auto target = physics.target()) r.target_in_robot = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
+    r.oracle = std::move(o);
+  }
+  return r;
+}
+
+}  // namespace plantsim::sim

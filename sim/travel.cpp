@@ -1,0 +1,38 @@
+// The helpers every travel mode shares: replanning around what is sensed, and the docking
+// controller's input.
+#include "sim/travel.h"
+
+#include <algorithm>
+
+namespace plantsim::sim {
+
+std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
+                                                   const controller::DockingParams& docking, const geom::Pose2& from,
+                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen) {
+  planner::PlannerInput again = planner::planner_input(map, true);
+  const double extra = std::max(0.0, docking.safety_margin_m - map.inflation_margin_m) + 0.05;
+  for (const auto& b : seen) again.obstacles.push_back(b.box.inflated(extra));
+  again.snap_to_free = true;
+  const planner::PlanResult re = planner::make_planner(planner_name, again)->plan(from.position(), to);
+  if (re.status != planner::PlanStatus::kOk) return std::nullopt;
+  std::vector<geom::Vec2> path = re.path;
+  if (re.start_snapped) path.insert(path.begin(), from.position());
+  return path;
+}
+
+controller::DockingInput docking_input(const Perception& p) {
+  controller::DockingInput in;
+  in.pose = p.pose;
+  in.odom_pose = p.odom_pose;
+  in.speed_mps = p.speed_mps;
+  in.dt_s = p.dt_s;
+  in.charger_contact = p.charger_contact;
+  in.charging = p.charging;
+  in.charger_in_robot = p.charger_in_robot;
+  in.nearby_obstacles = p.obstacles;
+  in.bumper_front = p.bumper.front;
+  in.bumper_rear = p.bumper.rear;
+  return in;
+}
+
+}  // namespace plantsim::sim

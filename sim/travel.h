@@ -1,0 +1,66 @@
+// How the robot gets to the charger (or to a moving target), behind one small interface: each
+// control step it receives the perception, never the simulator's truth, and returns the twist
+// to drive with its phase. Path travel follows the plan by pure pursuit and docks; field
+// travel is seed 001's potential field, then docks; pursuit chases a moving target along
+// plans made again every period.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "controller/docking.h"
+#include "controller/potential_field.h"
+#include "planner/planner.h"
+#include "sim/perception.h"
+#include "worlds/world.h"
+
+namespace plantsim::sim {
+
+struct TravelSettings {
+  controller::PurePursuitParams tracking;
+  controller::DockingParams docking;        ///< staging distance and footprint already set from the map
+  controller::PotentialFieldParams field;
+  double pursuit_replan_period_s = 1.0;
+};
+
+struct Decision {
+  controller::Twist twist;
+  controller::DockPhase phase = controller::DockPhase::kTravel;
+  double cross_track_m = 0;
+  bool wall_following = false;
+  std::string finished;  ///< "docked", "failed" or "trapped" when the travel has ended
+};
+
+/// What a travel mode has counted.
+struct TravelCounts {
+  int retries = 0, stops = 0, replans = 0, local_minima = 0, wall_follows = 0;
+};
+
+class Travel {
+ public:
+  virtual ~Travel() = default;
+  virtual Decision decide(const Perception& p) = 0;
+  virtual TravelCounts counts() const = 0;
+  /// The plan finally followed (after replans), if it changed.
+  virtual std::optional<std::vector<geom::Vec2>> final_plan() const { return std::nullopt; }
+};
+
+/// Plans from the estimated pose to `to` on the robot's map with the sensed obstacles added
+/// (grown by the arc check's extra clearance, so that the new path is one it will accept).
+std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
+                                                   const controller::DockingParams& docking, const geom::Pose2& from,
+                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen);
+
+/// The docking controller's input from a perception.
+controller::DockingInput docking_input(const Perception& p);
+
+std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
+                                         const TravelSettings& s, std::vector<geom::Vec2> path);
+std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::string& planner_name,
+                                          const TravelSettings& s, bool pursuit, double robot_radius_m);
+std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map, const std::string& planner_name,
+                                            const TravelSettings& s, std::vector<geom::Vec2> path);
+
+}  // namespace plantsim::sim

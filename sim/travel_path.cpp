@@ -1,0 +1,52 @@
+// Path travel: the docking controller along the plan; a blocked way asks for a plan around
+// what the robot senses.
+#include "sim/travel.h"
+
+namespace plantsim::sim {
+namespace {
+
+class PathTravel : public Travel {
+ public:
+  PathTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s, std::vector<geom::Vec2> path)
+      : map_(map), planner_(std::move(planner_name)), s_(s), control_(s.tracking, s.docking, std::move(path), map.charger),
+        staging_(worlds::staging_pose(map).position()) {}
+
+  Decision decide(const Perception& p) override {
+    const controller::DockingCommand cmd = control_.step(docking_input(p));
+    if (cmd.replan_requested) {
+      // Plan again with what blocks the way as extra obstacles, from the nearest free point
+      // if the robot stands inside their margin.
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles)) {
+        control_.replace_path(*path);
+        plan_ = std::move(*path);
+        ++replans_;
+      }
+    }
+    Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, ""};
+    if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
+    if (cmd.phase == controller::DockPhase::kFailed) d.finished = "failed";
+    return d;
+  }
+  TravelCounts counts() const override { return {control_.retries(), control_.stops(), replans_, 0, 0}; }
+  std::optional<std::vector<geom::Vec2>> final_plan() const override {
+    return plan_.empty() ? std::nullopt : std::optional(plan_);
+  }
+
+ private:
+  const worlds::World& map_;
+  std::string planner_;
+  TravelSettings s_;
+  controller::DockingController control_;
+  geom::Vec2 staging_;
+  std::vector<geom::Vec2> plan_;
+  int replans_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
+                                         const TravelSettings& s, std::vector<geom::Vec2> path) {
+  return std::make_unique<PathTravel>(map, planner_name, s, std::move(path));
+}
+
+}  // namespace plantsim::sim
