@@ -56,7 +56,9 @@ void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double
   G(2, 2) = 1.0;
   const double d = std::fabs(distance_m);
   Eigen::Vector3d q;
-  q << std::pow(p_.distance_noise * d + 1e-4, 2), std::pow(p_.lateral_noise * d + 1e-4, 2),
+  // Tyres skid sideways when the robot turns while it moves (centripetal load), not otherwise.
+  const double skid = p_.lateral_noise * std::min(std::fabs(turn), d / 0.1);
+  q << std::pow(p_.distance_noise * d + 1e-4, 2), std::pow(skid + 1e-4, 2),
       std::pow(p_.gyro_noise_radps * dt_s, 2);
   P_ = F * P_ * F.transpose() + G * q.asDiagonal() * G.transpose();
   P_(3, 3) += p_.bias_walk_radps_per_sqrt_s * p_.bias_walk_radps_per_sqrt_s * dt_s;

@@ -23,7 +23,7 @@ struct EkfParams {
   double initial_yaw_sigma_rad = 0.02;
   double initial_bias_sigma_radps = 0.005;  ///< gyro bias, before any correction
   double distance_noise = 0.02;             ///< std-dev of travel per metre travelled (encoders, slip)
-  double lateral_noise = 0.01;              ///< sideways skid per metre travelled
+  double lateral_noise = 0.007;             ///< sideways skid per radian turned while moving (m/rad)
   double gyro_noise_radps = 0.003;          ///< the gyro's white noise, as the filter assumes it
   double bias_walk_radps_per_sqrt_s = 0.0002;
   double range_sigma_m = 0.015;             ///< per beam (lidar noise plus map error)

@@ -14,7 +14,7 @@
 #include "planner/planner.h"
 #include "sim/perception.h"
 #include "sim/physics_world.h"
-#include "sim/sensor_suite.h"
+#include "sim/sensor_suite.h"  // the parameter structs of every sensor
 #include "sim/wheel_drive.h"
 
 namespace plantsim::sim {

@@ -17,7 +17,7 @@
 #include "sim/ekf_localizer.h"
 #include "sim/map_raycaster.h"
 #include "sim/obstacle_tracker.h"
-#include "sim/sensor_suite.h"
+#include "sim/sensor_readings.h"
 
 namespace plantsim::sim {
 

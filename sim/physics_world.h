@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "sim/actor_state.h"
 #include "sim/ray_hit.h"
 #include "worlds/world.h"
 
@@ -27,11 +28,6 @@ struct StepSettings {
   int position_iterations = 3;
 };
 
-/// A scripted obstacle as it is now: its box and velocity (world frame).
-struct ActorState {
-  geom::Rect box;
-  Vec2 velocity;
-};
 
 struct ContactState {
   bool charger = false;   ///< robot touches the charger body

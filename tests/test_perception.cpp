@@ -1,0 +1,371 @@
+// Perception in the loop: the lidar against analytic distances, the EKF's consistency (NEES
+// within chi-square bounds), the boundary between the simulator's truth and everything that
+// decides, determinism with the lidar on, and bad sensor parameters refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "planner/planner.h"
+#include "sim/ekf_localizer.h"
+#include "sim/episode.h"
+#include "sim/episode_config_json.h"
+#include "sim/physics_world.h"
+#include "sim/sensor_suite.h"
+#include "sim/wheel_drive.h"
+#include "test_paths.h"
+#include "worlds/world_error.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::sim {
+namespace {
+
+// A 10 x 10 m room with one box; the robot at (1, 5) facing +x.
+worlds::World room() {
+  worlds::World w;
+  w.name = "room";
+  w.floor = {0, 0, 10, 10};
+  w.obstacles = {{4, 4, 6, 6}};
+  w.start = {1, 5, 0};
+  w.charger = {9.5, 1.0, 0};
+  return w;
+}
+
+LidarParams exact_lidar() {
+  LidarParams p;
+  p.range_noise_m = 0;
+  p.dropout_probability = 0;
+  p.beam_count = 361;
+  p.field_of_view_rad = 1.5 * M_PI;
+  return p;
+}
+
+std::size_t beam_at(const LidarScan& s, double angle) {
+  return static_cast<std::size_t>(std::lround((angle - s.angle_min_rad) / s.angle_increment_rad));
+}
+
+TEST(Lidar, RangesMatchAnalyticDistancesWithOcclusion) {
+  const worlds::World w = room();
+  PhysicsWorld physics(w);
+  Lidar lidar(exact_lidar(), 1);
+  const LidarScan s = lidar.scan(physics, w.start, 0.0);
+  ASSERT_EQ(s.ranges.size(), 361u);
+  EXPECT_NEAR(s.ranges[beam_at(s, 0.0)], 3.0, 1e-4);         // the box's face at x = 4
+  EXPECT_NEAR(s.ranges[beam_at(s, M_PI / 2)], 5.0, 1e-4);    // the wall at y = 10
+  EXPECT_NEAR(s.ranges[beam_at(s, -M_PI / 2)], 5.0, 1e-4);   // the wall at y = 0
+  // About 20 degrees up: the box (x = 4 at y = 5 + 3 tan a > 6) is missed; the far wall is hit.
+  const std::size_t i = beam_at(s, 20.0 * M_PI / 180.0);
+  ASSERT_GT(5 + 3 * std::tan(s.angle(i)), 6.0);
+  EXPECT_NEAR(s.ranges[i], 9.0 / std::cos(s.angle(i)), 1e-3);
+  // About 15 degrees: inside the box's face at x = 4: it hides the wall behind.
+  const std::size_t j = beam_at(s, 15.0 * M_PI / 180.0);
+  ASSERT_LT(5 + 3 * std::tan(s.angle(j)), 6.0);
+  EXPECT_NEAR(s.ranges[j], 3.0 / std::cos(s.angle(j)), 1e-3);
+}
+
+TEST(Lidar, MaxRangeAndDropoutRate) {
+  const worlds::World w = room();
+  PhysicsWorld physics(w);
+  LidarParams p = exact_lidar();
+  p.max_range_m = 2.5;
+  Lidar short_lidar(p, 1);
+  const LidarScan s = short_lidar.scan(physics, w.start, 0.0);
+  EXPECT_EQ(s.ranges[beam_at(s, 0.0)], 2.5);  // the box at 3 m is out of range: max-range reading
+  EXPECT_FALSE(s.valid(beam_at(s, 0.0)));
+  p.max_range_returns = false;
+  Lidar silent(p, 1);
+  EXPECT_TRUE(std::isinf(silent.scan(physics, w.start, 0.0).ranges[beam_at(s, 0.0)]));
+
+  LidarParams lossy = exact_lidar();
+  lossy.dropout_probability = 0.3;
+  Lidar l(lossy, 7);
+  int dropped = 0, beams = 0;
+  for (int k = 0; k < 30; ++k)
+    for (double r : l.scan(physics, w.start, k).ranges) dropped += std::isnan(r), ++beams;
+  EXPECT_NEAR(static_cast<double>(dropped) / beams, 0.3, 0.015);  // 10830 beams: sigma 0.0044
+}
+
+TEST(Lidar, NoiseHasTheConfiguredSpread) {
+  const worlds::World w = room();
+  PhysicsWorld physics(w);
+  LidarParams p = exact_lidar();
+  p.range_noise_m = 0.02;
+  Lidar l(p, 3);
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (int k = 0; k < 400; ++k) {
+    const LidarScan s = l.scan(physics, w.start, k);
+    const double e = s.ranges[beam_at(s, 0.0)] - 3.0;
+    sum += e, sum2 += e * e, ++n;
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.004);
+  EXPECT_NEAR(std::sqrt(sum2 / n), 0.02, 0.003);
+}
+
+TEST(ChargerDetection, BlockedWhenSomethingStandsInTheLineOfSight) {
+  worlds::World w = room();
+  w.obstacles.clear();
+  w.charger = {5.0, 5.0, 0};  // the robot docks facing +x at (5, 5): the block is just ahead
+  w.start = {4.0, 5.0, 0};
+  DetectionParams p;
+  p.false_negative_probability = 0;
+  p.outlier_probability = 0;
+  p.latency_s = 0;
+  p.position_noise_m = p.yaw_noise_rad = 0;
+  {
+    PhysicsWorld physics(w);
+    ChargerDetector d(p, 1);
+    const auto seen = d.update(physics, w.start, w.charger, worlds::charger_body(w).center, 0.0);
+    ASSERT_TRUE(seen.has_value());
+    EXPECT_NEAR(seen->dock_in_robot.x, 1.0, 1e-9);
+  }
+  w.obstacles = {{4.5, 4.9, 4.6, 5.1}};  // a post between robot and charger
+  PhysicsWorld physics(w);
+  ChargerDetector d(p, 1);
+  EXPECT_FALSE(d.update(physics, w.start, w.charger, worlds::charger_body(w).center, 0.0).has_value());
+}
+
+TEST(ChargerDetection, LatencyDeliversTheImageLaterWithItsCaptureTime) {
+  worlds::World w = room();
+  w.obstacles.clear();
+  w.charger = {5.0, 5.0, 0};
+  w.start = {4.0, 5.0, 0};
+  DetectionParams p;
+  p.false_negative_probability = 0;
+  p.outlier_probability = 0;
+  p.latency_s = 0.2;
+  p.rate_hz = 10;
+  PhysicsWorld physics(w);
+  ChargerDetector d(p, 1);
+  const geom::Vec2 marker = worlds::charger_body(w).center;
+  EXPECT_FALSE(d.update(physics, w.start, w.charger, marker, 0.0).has_value());
+  EXPECT_FALSE(d.update(physics, w.start, w.charger, marker, 0.1).has_value());
+  const auto late = d.update(physics, w.start, w.charger, marker, 0.2);
+  ASSERT_TRUE(late.has_value());
+  EXPECT_DOUBLE_EQ(late->captured_s, 0.0);
+}
+
+// Chi-square quantile (Wilson-Hilferty), good to a fraction of a percent for 60+ degrees.
+double chi2_quantile(double dof, double z) {
+  const double h = 2.0 / (9.0 * dof);
+  return dof * std::pow(1.0 - h + z * std::sqrt(h), 3);
+}
+
+// Monte Carlo runs of one open-loop drive; the average NEES of the pose at each scan.
+std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
+  worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
+  w.obstacles.clear();  // an empty floor (walls only): the drives below stay on it
+  w.floor = {0, 0, 30, 30};
+  w.start = {8, 15, 0};
+  w.charger = {29.5, 1, 0};
+  std::vector<double> sum;
+  for (int run = 0; run < runs; ++run) {
+    const std::uint64_t seed = 100 + static_cast<std::uint64_t>(run);
+    SensorParams sp;
+    sp.odometry.wheel_speed_noise = 0.02;
+    sp.imu.yaw_rate_noise_radps = 0.003;
+    sp.imu.bias_radps = 0.003;
+    sp.imu.bias_walk_radps_per_sqrt_s = 0.0002;
+    EkfParams ep;
+    // The filter's model matched to the simulated sensors: per-read wheel noise sigma on each
+    // wheel is sigma / sqrt(2) on the travel; the gyro's figures as they are.
+    ep.distance_noise = 0.02 / std::sqrt(2.0);
+    
+    ep.gyro_noise_radps = 0.003;
+    ep.initial_bias_sigma_radps = 0.003;
+    ep.bias_walk_radps_per_sqrt_s = 0.0002;
+    ep.range_sigma_m = 0.01;  // the lidar's
+    // The robot is told its start with an error drawn from the filter's own prior.
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g(0, 1);
+    const geom::Pose2 told{w.start.x + ep.initial_position_sigma_m * g(rng), w.start.y + ep.initial_position_sigma_m * g(rng),
+                           w.start.yaw + ep.initial_yaw_sigma_rad * g(rng)};
+    PhysicsWorld physics(w);
+    WheelDrive drive(w.robot, {});
+    SensorSuite sensors(w, sp, seed);
+    MapRaycaster map(w);
+    EkfLocalizer ekf(ep, told, map);
+    const double dt = 1.0 / 60;
+    std::size_t sample = 0;
+    for (int k = 0; k <= 60 * 20; ++k) {
+      if (k % 2 == 0) {
+        const SensorReadings r = sensors.read(physics, k * dt);
+        ekf.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
+        if (r.scan) {
+          ekf.correct(*r.scan);
+          const geom::Pose2 truth = physics.robot_pose();
+          Eigen::Vector3d e(ekf.pose().x - truth.x, ekf.pose().y - truth.y, geom::wrap_angle(ekf.pose().yaw - truth.yaw));
+          const double nees = e.dot(ekf.pose_covariance().inverse() * e);
+          if (sum.size() <= sample) sum.push_back(0);
+          sum[sample++] += nees / runs;
+        }
+        drive.command({left_mps, right_mps}, 2 * dt);
+      }
+      drive.apply(physics, dt);
+      physics.step({});
+      sensors.count(physics, drive, dt);
+    }
+  }
+  return sum;
+}
+
+void expect_consistent(const std::vector<double>& nees, int runs, const char* what) {
+  // Two-sided 95 % bounds of the average of `runs` chi-square(3) draws.
+  const double lo = chi2_quantile(3.0 * runs, -1.96) / runs, hi = chi2_quantile(3.0 * runs, 1.96) / runs;
+  int inside = 0;
+  double mean = 0;
+  for (double v : nees) inside += v >= lo && v <= hi, mean += v / static_cast<double>(nees.size());
+  const double share = static_cast<double>(inside) / static_cast<double>(nees.size());
+  std::printf("%s: average NEES %.2f (3 is ideal), %.0f %% of %zu scans inside [%.2f, %.2f]\n", what, mean, 100 * share,
+              nees.size(), lo, hi);
+  // Measured when written: straight 2.35 average, 73 % inside (a little conservative: the
+  // filter's process-noise floors); circle 3.11, 95 %.
+  EXPECT_GE(share, 2.0 / 3.0) << what;
+  EXPECT_GT(mean, lo) << what;
+  EXPECT_LT(mean, hi) << what;
+}
+
+TEST(Ekf, ConsistentOnAStraightAndACircularDrive) {
+  const int runs = 20;
+  expect_consistent(average_nees(0.5, 0.5, runs), runs, "straight");
+  expect_consistent(average_nees(0.3, 0.5, runs), runs, "circle");
+}
+
+// Every file that decides (controllers, planners, perception, estimation, travel) must not
+// reach the simulator's truth: no include path leads to the physics, the sensor suite or the
+// metrics, and none names them.
+TEST(Boundary, NothingThatDecidesReadsTheTruth) {
+  namespace fs = std::filesystem;
+  const fs::path root = PLANTSIM_SOURCE_DIR;
+  const std::set<std::string> truth = {"sim/physics_world.h", "sim/sensor_suite.h", "sim/episode_metrics.h",
+                                       "sim/episode.h", "sim/wheel_drive.h"};
+  std::vector<std::string> deciding;
+  for (const char* dir : {"controller", "planner", "geometry"})
+    for (const auto& e : fs::recursive_directory_iterator(root / dir))
+      if (e.path().extension() == ".h" || e.path().extension() == ".cpp") deciding.push_back(fs::relative(e.path(), root).string());
+  for (const char* f : {"perception", "ekf_localizer", "obstacle_tracker", "map_raycaster", "travel", "travel_path",
+                        "travel_pursuit", "travel_field", "sensor_readings"})
+    for (const char* ext : {".h", ".cpp"})
+      if (fs::exists(root / "sim" / (std::string(f) + ext))) deciding.push_back("sim/" + std::string(f) + ext);
+  ASSERT_GT(deciding.size(), 20u);
+  const std::regex include_re("#include \"([^\"]+)\"");
+  auto includes_of = [&](const std::string& rel) {
+    std::ifstream in(root / rel);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    std::vector<std::string> out;
+    for (std::sregex_iterator it(text.begin(), text.end(), include_re), end; it != end; ++it) out.push_back((*it)[1]);
+    return std::make_pair(text, out);
+  };
+  for (const std::string& file : deciding) {
+    // Transitive closure of the project's includes.
+    std::set<std::string> seen{file};
+    std::vector<std::string> todo{file};
+    while (!todo.empty()) {
+      const std::string f = todo.back();
+      todo.pop_back();
+      for (const std::string& inc : includes_of(f).second) {
+        EXPECT_FALSE(truth.count(inc)) << file << " reaches " << inc << " through " << f;
+        if (fs::exists(root / inc) && seen.insert(inc).second) todo.push_back(inc);
+      }
+    }
+    const std::string text = includes_of(file).first;
+    for (const char* name : {"PhysicsWorld", "robot_pose(", "actors()", "SensorSuite", "EpisodeMetrics"})
+      EXPECT_EQ(text.find(name), std::string::npos) << file << " names " << name;
+  }
+}
+
+EpisodeResult run_with(const std::string& world_file, EpisodeConfig c) {
+  const worlds::World w = worlds::load_world(world_file);
+  auto p = planner::make_planner("vg", planner::planner_input(w, true));
+  return run_episode(w, *p, c);
+}
+
+TEST(Determinism, TheSameSeedGivesTheSameTrajectoryWithTheLidarOn) {
+  EpisodeConfig c;
+  c.seed = 5;
+  c.lidar.dropout_probability = 0.05;
+  const std::string world = test::source_file("worlds/examples/corridor_crossing.json");
+  const EpisodeResult a = run_with(world, c), b = run_with(world, c);
+  ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
+  EXPECT_EQ(a.perception_mode, "sensors");
+  for (std::size_t i = 0; i < a.trajectory.size(); ++i) {
+    ASSERT_EQ(a.trajectory[i].truth.x, b.trajectory[i].truth.x) << i;
+    ASSERT_EQ(a.trajectory[i].estimate.y, b.trajectory[i].estimate.y) << i;
+  }
+  c.seed = 6;
+  const EpisodeResult other = run_with(world, c);
+  EXPECT_NE(other.trajectory.back().truth.x, a.trajectory.back().truth.x);  // the seed matters
+}
+
+TEST(Perception, SensorsModeDocksAndReportsItsLocalisation) {
+  const EpisodeResult r = run_with(test::shared_data("worlds/world_N50.json"), {});
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_EQ(r.localization_status, "ok");
+  EXPECT_GT(r.localization_error_max_m, 0.0);  // an estimate, not the truth
+  EXPECT_LT(r.localization_error_max_m, 0.05);
+  EXPECT_FALSE(r.last_scan.explained.empty());
+  EpisodeConfig oracle;
+  oracle.perception.mode = PerceptionMode::kOracle;
+  const EpisodeResult o = run_with(test::shared_data("worlds/world_N50.json"), oracle);
+  EXPECT_TRUE(o.docked);
+  EXPECT_EQ(o.perception_mode, "oracle");
+  // Oracle mode without fixes (the default) dead-reckons on noise-free encoders: tyre slip only.
+  EXPECT_LT(o.localization_error_max_m, 0.05);
+}
+
+TEST(Perception, ACrossingPersonIsTrackedFromTheScanAndStopsTheRobot) {
+  const EpisodeResult r = run_with(test::source_file("worlds/examples/corridor_crossing.json"), {});
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_GE(r.stops, 1);
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Perception, LostLocalisationIsReported) {
+  // The lidar is blind and the encoders lie: the covariance grows past the lost threshold.
+  EpisodeConfig c;
+  c.lidar.enabled = false;
+  c.perception.ekf.lost_position_sigma_m = 0.1;
+  const EpisodeResult r = run_with(test::shared_data("worlds/world_N50.json"), c);
+  EXPECT_EQ(r.localization_status, "lost");
+}
+
+struct BadConfig {
+  const char* json;
+  const char* field;
+};
+
+class BadSensorConfig : public ::testing::TestWithParam<BadConfig> {};
+
+TEST_P(BadSensorConfig, IsRefusedNamingTheField) {
+  try {
+    parse_episode_config(GetParam().json, "bad.json");
+    FAIL() << "accepted " << GetParam().json;
+  } catch (const worlds::WorldError& e) {
+    EXPECT_NE(std::string(e.what()).find(GetParam().field), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, BadSensorConfig,
+    ::testing::Values(BadConfig{R"({"lidar": {"beam_count": -1}})", "lidar.beam_count"},
+                      BadConfig{R"({"lidar": {"rate_hz": 0}})", "lidar.rate_hz"},
+                      BadConfig{R"({"lidar": {"min_range_m": 5, "max_range_m": 4}})", "lidar.min_range_m"},
+                      BadConfig{R"({"lidar": {"range_noise_m": -0.01}})", "lidar.range_noise_m"},
+                      BadConfig{R"({"lidar": {"range_noise_m": NaN}})", "bad.json"},
+                      BadConfig{R"({"detection": {"false_negative_probability": 1.5}})", "detection.false_negative_probability"},
+                      BadConfig{R"({"detection": {"rate_hz": 0}})", "detection.rate_hz"},
+                      BadConfig{R"({"imu": {"bias_radps": -1}})", "imu.bias_radps"},
+                      BadConfig{R"({"perception": {"mode": "psychic"}})", "perception.mode"},
+                      BadConfig{R"({"lidar": {"beems": 3}})", "lidar.beems"}));
+
+}  // namespace
+}  // namespace plantsim::sim
