@@ -75,7 +75,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     render::write_run_figure(world, r, out_dir + "/run.png");
     render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
     std::vector<render::ReportFigure> figures = {{"run.png", "The run: plan, driven path coloured by speed, footprints"},
-                                                 {"timeplots.png", "Cross-track error, speed and distance to the charger"}};
+                                                 {"timeplots.png", "Cross-track error, speed, distance to the charger, localisation error"}};
     if (opt->animate) {
       const std::string movie = render::write_animation(world, r, out_dir);
       figures.push_back({"frames/frame_0000.png", "First animation frame (all frames in frames/)"});

@@ -82,8 +82,11 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       const double travel_speed = std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
       if (!arc_clear(in.pose, t.twist, travel_speed, ahead, params_.footprint_radius_m + params_.safety_margin_m,
                      in.nearby_obstacles)) {
-        if (!was_blocked_) ++stops_;
+        // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
+        // check with it; a go of less than a second between two blocks is the same stop.
+        if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
         was_blocked_ = true;
+        clear_time_s_ = 0;
         out.twist = {};
         out.blocked = true;
         // Stopped in something's way (it does not yield): back out along the stretch just driven.
@@ -102,6 +105,7 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       }
       blocked_time_s_ = 0;
       was_blocked_ = false;
+      clear_time_s_ += in.dt_s;
       if (std::fabs(t.twist.omega_radps) < 0.05) straight_run_m_ += t.twist.v_mps * in.dt_s;
       else straight_run_m_ = 0;
       if (t.goal_reached) {

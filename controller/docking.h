@@ -97,6 +97,7 @@ class DockingController {
   double approach_time_s_ = 0;
   double blocked_time_s_ = 0;
   bool was_blocked_ = false;
+  double clear_time_s_ = 1e9;  // driven unblocked since the last block
   double straight_run_m_ = 0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
   std::optional<Pose2> rejected_detection_;  // the last detection the gate held back

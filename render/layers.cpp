@@ -62,6 +62,35 @@ void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vec
 
 void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan) { c.polyline(plan, 2.0, palette::kPlan); }
 
+void draw_scan(GlCanvas& c, const sim::ScanView& scan) {
+  // Dots of a few pixels whatever the scale.
+  const Vec2 half_px{0.75, 0};
+  for (const Vec2& p : scan.explained) {
+    const Vec2 q = c.transform().to_pixel(p);
+    c.pixel_line(q - half_px, q + half_px, 3.0, palette::kScan);
+  }
+  for (const Vec2& p : scan.unexplained) {
+    const Vec2 q = c.transform().to_pixel(p);
+    c.pixel_line(q - half_px, q + half_px, 4.0, palette::kScanOffMap);
+  }
+}
+
+void draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes) {
+  for (const auto& b : boxes) {
+    const geom::Rect& r = b.box;
+    c.polyline({{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}, {r.xmin, r.ymin}}, 1.5,
+               palette::kTracked);
+    if (geom::norm(b.velocity) > 0) c.polyline({r.center(), r.center() + b.velocity}, 1.5, palette::kTracked);
+  }
+}
+
+void draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
+  std::vector<Vec2> path;
+  path.reserve(t.size());
+  for (const auto& s : t) path.push_back(s.estimate.position());
+  if (path.size() > 1) c.polyline(path, 1.2, palette::kEstimate);
+}
+
 void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t) {
   if (!w.target) return;
   const auto& m = *w.target;

@@ -18,6 +18,12 @@ void draw_start(GlCanvas& c, const worlds::World& w);
 /// Routes, and the boxes where given (else where their scripts put them at t).
 void draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes = {});
 void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan);
+/// The last lidar scan as perception placed it: returns the map explains and those it does not.
+void draw_scan(GlCanvas& c, const sim::ScanView& scan);
+/// Outlines of the obstacles perception tracked, and their velocity (1 s ahead).
+void draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes);
+/// The estimated path, thin, over the true one.
+void draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
 /// The moving target's scripted track and where it was at the last sample.
 void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t);
 /// A wide band under the stretches driven in the wall-following state.

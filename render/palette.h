@@ -22,5 +22,9 @@ inline constexpr Rgb kFootprint{120, 120, 130};
 inline constexpr Rgb kTarget{225, 50, 150};      ///< a moving target and its track
 inline constexpr Rgb kExplored{140, 170, 200};   ///< a hand-rule exploration walk
 inline constexpr Rgb kWallFollow{255, 200, 60};  ///< potential-field travel while following a wall
+inline constexpr Rgb kScan{86, 180, 233};         ///< lidar returns the map explains
+inline constexpr Rgb kScanOffMap{213, 94, 0};     ///< lidar returns it does not (tracked obstacles)
+inline constexpr Rgb kTracked{0, 0, 0};           ///< boxes of the tracked obstacles (outlines)
+inline constexpr Rgb kEstimate{120, 60, 0};       ///< the path as the robot estimated it
 
 }  // namespace plantsim::render::palette

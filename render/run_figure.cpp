@@ -45,6 +45,9 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_wall_following(c, run.trajectory);
   draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s);
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
+  draw_estimate(c, run.trajectory);
+  draw_scan(c, run.last_scan);
+  draw_tracked(c, run.tracked_final);
   draw_start(c, world);
   if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot);
   draw_charger(c, world);
@@ -66,6 +69,10 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!run.explored.empty()) legend.push_back({palette::kExplored, "explored"});
   if (run.travel != "path") legend.push_back({palette::kWallFollow, "wall following"});
   if (!o.graph_edges.empty()) legend.push_back({palette::kGraph, "graph"});
+  if (!run.trajectory.empty()) legend.push_back({palette::kEstimate, "estimated path"});
+  if (!run.last_scan.explained.empty()) legend.push_back({palette::kScan, "last scan"});
+  if (!run.last_scan.unexplained.empty()) legend.push_back({palette::kScanOffMap, "scan off map"});
+  if (!run.tracked_final.empty()) legend.push_back({palette::kTracked, "tracked"});
   fig.legend(bar_x - 10, 380, legend);
   if (transform_out) *transform_out = t;
   return fig.finish();
@@ -78,22 +85,30 @@ void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
 
 Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px, int height_px) {
   Figure fig(width_px, height_px);
-  std::vector<double> t, cross, speed, distance;
+  std::vector<double> t, cross, speed, distance, loc_error, loc_bound;
   for (const auto& s : run.trajectory) {
     t.push_back(s.t_s);
+    loc_error.push_back(100.0 * geom::distance(s.truth.position(), s.estimate.position()));
+    loc_bound.push_back(200.0 * s.position_sigma_m);
     cross.push_back(s.phase == controller::DockPhase::kTravel ? 100.0 * s.cross_track_m : NAN);
     speed.push_back(s.speed_mps);
     distance.push_back(geom::distance(s.truth.position(), world.charger.position()));
   }
   fig.text(world.name + "  |  " + method_label(run) + "  |  " + result_line(run), 70, 26, 16, palette::kAxis,
            Anchor::kLeft, true);
-  const double left = 80, right = width_px - 40.0, h = (height_px - 60.0) / 3.0;
+  const double left = 80, right = width_px - 40.0, h = (height_px - 60.0) / 4.0;
   fig.plot({left, 60 + 25, right, 60 + h - 25}, {{t, cross, palette::kPlan, "cross-track"}},
            "Cross-track error while travelling", "time (s)", "cm");
   fig.plot({left, 60 + h + 25, right, 60 + 2 * h - 25}, {{t, speed, palette::kTrajectory, "speed"}}, "Speed",
            "time (s)", "m/s");
   fig.plot({left, 60 + 2 * h + 25, right, 60 + 3 * h - 25}, {{t, distance, palette::kCharger, "distance"}},
            "Distance to the charger", "time (s)", "m");
+  std::vector<Figure::Series> loc = {{t, loc_error, palette::kEstimate, "error"}};
+  if (run.perception_mode == "sensors") loc.push_back({t, loc_bound, palette::kPlan, "2-sigma bound"});
+  fig.plot({left, 60 + 3 * h + 25, right, 60 + 4 * h - 25}, loc,
+           "Localisation error (true vs estimated position)" +
+               std::string(run.perception_mode == "sensors" ? " and its 2-sigma bound" : ", oracle mode"),
+           "time (s)", "cm");
   return fig.finish();
 }
 

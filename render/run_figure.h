@@ -33,7 +33,7 @@ void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
 
 /// Cross-track error, speed and distance to the charger against time, stacked.
 Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px = 1280,
-                      int height_px = 800);
+                      int height_px = 1000);
 
 /// One-line result for titles: "docked, 0.4 cm / 0.1 deg, 0 collisions, 172.8 s".
 std::string result_line(const sim::EpisodeResult& run);
