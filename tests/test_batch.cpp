@@ -165,3 +165,26 @@ TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
 
 }  // namespace
 }  // namespace plantsim::batch
+
+namespace plantsim::batch {
+namespace {
+
+// With the lidar, the EKF and the tracker on (the defaults), one thread or two give the same
+// episode records, to the last digit.
+TEST_F(BatchFiles, ThreadsDoNotChangeResultsWithPerceptionOn) {
+  const std::string scenario =
+      write("t.yaml", "name: threads\nworlds: [" + test::source_file("worlds/examples/corridor_crossing.json") +
+                          "]\nplanners: [vg]\nfaults:\n  none: {}\n  lossy: {lidar: {dropout_probability: 0.1}}\nseeds: 2\n");
+  RunOptions one = options("one"), two = options("two");
+  one.threads = 1;
+  two.threads = 2;
+  run_batch(scenario, one);
+  run_batch(scenario, two);
+  const auto a = sorted_lines(one.out_dir + "/episodes.jsonl"), b = sorted_lines(two.out_dir + "/episodes.jsonl");
+  ASSERT_EQ(a.size(), 4u);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a[0].find("\"perception_mode\":\"sensors\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plantsim::batch
