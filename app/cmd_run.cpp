@@ -67,6 +67,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     config.seed = opt->seed;
     if (!opt->travel.empty())
       config.travel = opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
+    if (opt->animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
     const std::string line = command_line(cmd);

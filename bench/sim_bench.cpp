@@ -19,6 +19,50 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// Bare Box2D, the ceiling an episode is measured against: the same bodies (obstacles, walls,
+// charger, moving obstacles, robot) stepped over the same number of steps, the robot moved
+// along the episode's own true trajectory by setting its velocity, with no sensing, no
+// estimation and no control.
+double replay_steps_per_s(const worlds::World& w, const sim::EpisodeResult& e, const sim::StepSettings& step) {
+  sim::PhysicsWorld bare(w);
+  const auto& t = e.trajectory;
+  const auto t0 = Clock::now();
+  std::size_t i = 0;
+  for (std::int64_t k = 0; k < e.physics_steps; ++k) {
+    const double now = k * step.dt_s;
+    while (i + 2 < t.size() && t[i + 1].t_s <= now) ++i;
+    if (i + 1 < t.size()) {
+      const double span = std::max(t[i + 1].t_s - t[i].t_s, 1e-9);
+      const geom::Vec2 v = (1.0 / span) * (t[i + 1].truth.position() - t[i].truth.position());
+      bare.set_robot_velocity(v, geom::wrap_angle(t[i + 1].truth.yaw - t[i].truth.yaw) / span);
+    }
+    bare.step(step);
+  }
+  return static_cast<double>(e.physics_steps) / seconds_since(t0);
+}
+
+struct EpisodeTiming {
+  double steps_per_s = 0;  // planning time (measured alone) taken out
+  double steps_per_s_with_plan = 0;
+  sim::EpisodeResult result;
+};
+
+EpisodeTiming time_episode(const worlds::World& w, const sim::EpisodeConfig& config) {
+  auto fresh = planner::make_planner("vg", planner::planner_input(w, true));
+  const auto tp = Clock::now();
+  fresh->plan(w.start.position(), worlds::staging_pose(w).position());
+  const double plan_s = seconds_since(tp);
+  auto for_episode = planner::make_planner("vg", planner::planner_input(w, true));
+  const auto t0 = Clock::now();
+  EpisodeTiming out;
+  out.result = sim::run_episode(w, *for_episode, config);
+  const double total = seconds_since(t0);
+  const double steps = static_cast<double>(out.result.physics_steps);
+  out.steps_per_s = steps / std::max(total - plan_s, 1e-9);
+  out.steps_per_s_with_plan = steps / total;
+  return out;
+}
+
 }  // namespace
 
 int run_sim_bench(const std::string& shared_data, bool quick) {
@@ -27,57 +71,46 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     std::string count = std::to_string(n);
     const std::string name = std::string("N").append(count);
     const worlds::World w = worlds::load_world(shared_data + "/worlds/world_N" + count + ".json");
-    auto planner = planner::make_planner("vg", planner::planner_input(w, true));
-    sim::EpisodeConfig config;
+    sim::EpisodeConfig config;  // the defaults: lidar, gyro, EKF, tracker
+    sim::EpisodeConfig no_lidar = config;
+    no_lidar.lidar.enabled = false;
+    sim::EpisodeConfig oracle = config;
+    oracle.perception.mode = sim::PerceptionMode::kOracle;
 
-    // Whole episodes; the planning time (measured alone) is taken out to count steps only.
-    double best_full = 0, best_with_plan = 0;
-    std::size_t steps = 0;
+    // Best of the repetitions for each (the least disturbed by the machine).
+    double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0, best_drive = 0;
     for (int r = 0; r < reps; ++r) {
-      auto fresh = planner::make_planner("vg", planner::planner_input(w, true));
-      const auto tp = Clock::now();
-      fresh->plan(w.start.position(), worlds::staging_pose(w).position());
-      const double plan_s = seconds_since(tp);
-      auto for_episode = planner::make_planner("vg", planner::planner_input(w, true));
-      const auto t0 = Clock::now();
-      const sim::EpisodeResult e = sim::run_episode(w, *for_episode, config);
-      const double total = seconds_since(t0);
-      steps = static_cast<std::size_t>(e.physics_steps);
-      best_full = std::max(best_full, steps / std::max(total - plan_s, 1e-9));
-      best_with_plan = std::max(best_with_plan, steps / total);
-      if (!e.docked) {
+      const EpisodeTiming e = time_episode(w, config);
+      if (!e.result.docked) {
         std::cerr << "bench sim: episode on " << name << " did not dock\n";
         return 1;
       }
-    }
-
-    // Bare Box2D: the same world and robot body, awake and driven round a slow circle by
-    // setting its velocity directly each step; then the same with the tyre model instead.
-    double best_bare = 0, best_drive = 0;
-    for (int r = 0; r < reps; ++r) {
-      sim::PhysicsWorld bare(w);
-      const auto t0 = Clock::now();
-      for (std::size_t k = 0; k < steps; ++k) {
-        const double yaw = w.start.yaw + 0.2 * k * config.step.dt_s;
-        bare.set_robot_velocity({0.1 * std::cos(yaw), 0.1 * std::sin(yaw)}, 0.2);
-        bare.step(config.step);
-      }
-      best_bare = std::max(best_bare, steps / seconds_since(t0));
+      best_full = std::max(best_full, e.steps_per_s);
+      best_with_plan = std::max(best_with_plan, e.steps_per_s_with_plan);
+      best_no_lidar = std::max(best_no_lidar, time_episode(w, no_lidar).steps_per_s);
+      best_oracle = std::max(best_oracle, time_episode(w, oracle).steps_per_s);
+      best_bare = std::max(best_bare, replay_steps_per_s(w, e.result, config.step));
+      // The same replay length with the tyre model driving a slow circle instead.
       sim::PhysicsWorld driven(w);
       sim::WheelDrive drive(w.robot, config.drive);
       const auto t1 = Clock::now();
-      for (std::size_t k = 0; k < steps; ++k) {
-        drive.command({0.1 - 0.1 * w.robot.wheel_base_m, 0.1 + 0.1 * w.robot.wheel_base_m}, config.step.dt_s);  // same circle
+      for (std::int64_t k = 0; k < e.result.physics_steps; ++k) {
+        drive.command({0.1 - 0.1 * w.robot.wheel_base_m, 0.1 + 0.1 * w.robot.wheel_base_m}, config.step.dt_s);
         drive.apply(driven, config.step.dt_s);
         driven.step(config.step);
       }
-      best_drive = std::max(best_drive, steps / seconds_since(t1));
+      best_drive = std::max(best_drive, static_cast<double>(e.result.physics_steps) / seconds_since(t1));
     }
-    const Measure bare{name + "/bare_box2d_steps_per_s", best_bare, "steps/s"};
+    const Measure bare{name + "/bare_box2d_replay_steps_per_s", best_bare, "steps/s"};
     report("sim", bare);
     report("sim", {name + "/box2d_with_wheel_model_steps_per_s", best_drive, "steps/s"}, bare);
     report("sim", {name + "/episode_steps_per_s", best_full, "steps/s"}, bare);
+    report("sim", {name + "/episode_oracle_perception_steps_per_s", best_oracle, "steps/s"}, bare);
     report("sim", {name + "/episode_steps_per_s_including_planning", best_with_plan, "steps/s"}, bare);
+    // What the lidar pipeline (360 beams at 15 Hz, the scan update and the tracker) costs:
+    // the episode with it against the same episode without it.
+    report("sim", {name + "/episode_steps_per_s_with_lidar", best_full, "steps/s"},
+           Measure{name + "/episode_steps_per_s_lidar_off", best_no_lidar, "steps/s"});
   }
   return 0;
 }

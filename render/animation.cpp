@@ -32,6 +32,14 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     draw_moving(c, world, run.trajectory[i].t_s);
     draw_plan(c, run.plan);
     draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1);
+    // What perception saw last before this instant.
+    const sim::EpisodeResult::PerceptionSnapshot* seen = nullptr;
+    for (const auto& snap : run.perception_log)
+      if (snap.t_s <= run.trajectory[i].t_s) seen = &snap;
+    if (seen) {
+      draw_scan(c, seen->scan);
+      draw_tracked(c, seen->tracked);
+    }
     draw_start(c, world);
     draw_charger(c, world);
     draw_footprint(c, world.robot, run.trajectory[i].truth, palette::kRobot);

@@ -22,7 +22,7 @@ void draw_plan(GlCanvas& c, const std::vector<Vec2>& plan);
 void draw_scan(GlCanvas& c, const sim::ScanView& scan);
 /// Outlines of the obstacles perception tracked, and their velocity (1 s ahead).
 void draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes);
-/// The estimated path, thin, over the true one.
+/// The estimated path as a band wider than the true path, drawn under it.
 void draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
 /// The moving target's scripted track and where it was at the last sample.
 void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t);

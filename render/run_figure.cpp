@@ -44,8 +44,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_target(c, world, run.trajectory);
   draw_wall_following(c, run.trajectory);
   draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s);
+  draw_estimate(c, run.trajectory);  // a band under the true path: its edges show where they agree
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
-  draw_estimate(c, run.trajectory);
   draw_scan(c, run.last_scan);
   draw_tracked(c, run.tracked_final);
   draw_start(c, world);

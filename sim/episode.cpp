@@ -79,6 +79,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
   const int period = std::max(1, config.control_period_steps);
   result.status = "timeout";
+  double next_snapshot_s = 0;
   result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
   // logging every control period, seeing the contacts latched since the last one.
@@ -101,6 +102,10 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         result.status = "caught";
         result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, 0, controller::DockPhase::kTravel, false, target_at});
         break;
+      }
+      if (config.scan_log_period_s > 0 && t >= next_snapshot_s) {
+        next_snapshot_s = t + config.scan_log_period_s;
+        result.perception_log.push_back({t, perceiver.last_scan(), p.obstacles});
       }
       const Decision d = travel->decide(p);  // decide
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);

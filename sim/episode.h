@@ -49,6 +49,7 @@ struct EpisodeConfig {
   DockTolerance tolerance;
   double timeout_s = 600.0;
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
+  double scan_log_period_s = 0;  ///< keep the scan and the tracks this often, for animations (0: only the last)
   std::uint64_t seed = 1;
 };
 
@@ -72,6 +73,7 @@ struct EpisodeResult {
   double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
   double heading_error_deg = 0;
   int collisions = 0;            ///< separate contacts with obstacles or walls
+  int collisions_robot_moving = 0;  ///< ... of which the robot began by moving towards what it touched
   int retries = 0;
   int stops = 0;                 ///< times the robot stopped for a moving obstacle
   int replans = 0;               ///< new plans made around what blocked the way
@@ -94,6 +96,13 @@ struct EpisodeResult {
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
   std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
   ScanView last_scan;                      ///< the last scan as perception placed it
+  /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.
+  struct PerceptionSnapshot {
+    double t_s;
+    ScanView scan;
+    std::vector<controller::MovingBox> tracked;
+  };
+  std::vector<PerceptionSnapshot> perception_log;
   std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
 };
 

@@ -279,6 +279,9 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     throw worlds::WorldError(source, "potential_field.rho0_m", "must exceed rho_min_m");
   if (c.field.slow_force_ratio <= 0) throw worlds::WorldError(source, "potential_field.slow_force_ratio", "must be positive");
   if (c.pursuit_replan_period_s <= 0) throw worlds::WorldError(source, "pursuit.replan_period_s", "must be positive");
+  if (c.perception.mode == PerceptionMode::kSensors && c.localization.period_s > 0)
+    throw worlds::WorldError(source, "localization.period_s",
+                             "true-pose fixes exist only in perception.mode \"oracle\" (sensors mode localises with the EKF)");
   if (c.lidar.min_range_m >= c.lidar.max_range_m)
     throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)

@@ -13,6 +13,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["position_error_m"] = r.position_error_m;
   j["heading_error_deg"] = r.heading_error_deg;
   j["collisions"] = r.collisions;
+  j["collisions_robot_moving"] = r.collisions_robot_moving;
   j["retries"] = r.retries;
   j["stops"] = r.stops;
   j["replans"] = r.replans;

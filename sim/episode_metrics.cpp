@@ -10,7 +10,19 @@ EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result
 
 void EpisodeMetrics::before_step(const PhysicsWorld& physics) {
   const ContactState contact = physics.contacts();
-  if (contact.obstacle && !was_touching_obstacle_) ++r_.collisions;
+  if (contact.obstacle && !was_touching_obstacle_) {
+    ++r_.collisions;
+    // Whose doing: the robot's when it was moving towards what it touched (faster than a
+    // creep), not when something walked into a standing or retreating robot.
+    const Vec2 at = physics.robot_position(), v = physics.robot_velocity();
+    bool driving_into = false;
+    for (const Vec2& p : contact.obstacle_points) {
+      const Vec2 d = p - at;
+      const double len = geom::norm(d);
+      if (len > 0 && geom::dot(v, d) / len > 0.02) driving_into = true;
+    }
+    r_.collisions_robot_moving += driving_into;
+  }
   was_touching_obstacle_ = contact.obstacle;
   if (contact.charger) {
     if (!contact_measured_) measure_final_error(physics);

@@ -61,20 +61,16 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   const geom::Pose2 sensor = geom::compose(now_.pose, scan.mount);
   scan_view_ = {now_.pose, {}, {}};
   std::vector<geom::Vec2> unexplained, near_static;
-  const double reach = std::max(p_.tracker.range_m, p_.field_range_m);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i], phi = sensor.yaw + scan.angle(i);
     const geom::Vec2 point = sensor.position() + r * geom::unit_from_angle(phi);
     if (now_.target && geom::distance(point, *now_.target) < p_.target_exclusion_m) continue;
-    bool explained = true;
-    if (r <= reach) {
-      const auto expected = raycaster_.cast(sensor.position(), phi, scan.max_range_m);
-      // A return short of the map's surface is still the map when a mapped surface is that
-      // close to it (beams grazing a corner reach past it from a pose a hair away).
-      explained = (expected && r >= expected->range_m - p_.tracker.unexplained_margin_m) ||
-                  raycaster_.surface_near(point, p_.tracker.unexplained_margin_m);
-    }
+    // The map explains a return when one of its surfaces lies that close to it. A return short
+    // of the map's surface, or one that passes a mapped surface and meets something beyond it,
+    // is a thing the map does not have, and is tracked. (No ray cast needed: the nearness test
+    // is a broad-phase box query.)
+    const bool explained = raycaster_.surface_near(point, p_.tracker.unexplained_margin_m);
     (explained ? scan_view_.explained : scan_view_.unexplained).push_back(point);
     if (!explained && r <= p_.tracker.range_m) unexplained.push_back(point);
     if (explained && r <= p_.field_range_m) near_static.push_back(point);

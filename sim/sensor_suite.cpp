@@ -4,29 +4,34 @@
 #include <cmath>
 
 namespace plantsim::sim {
+namespace {
+
+SensorParams effective(SensorParams p) {
+  if (p.oracle) {
+    // The comparison mode of old: no lidar, a detector that sees through everything and never errs.
+    p.lidar.enabled = false;
+    p.detection.occlusion = false;
+    p.detection.false_negative_probability = 0;
+    p.detection.outlier_probability = 0;
+    p.detection.latency_s = 0;
+    p.detection.rate_hz = 1e9;
+  }
+  return p;
+}
+
+}  // namespace
 
 SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params, std::uint64_t seed)
     : plant_(plant),
-      p_(params),
+      p_(effective(params)),
       odometry_(plant.start, plant.robot.wheel_base_m, params.odometry, seed),
-      imu_(params.imu, seed),
-      lidar_(params.lidar, seed),
-      detector_(params.detection, seed),
-      oracle_fix_(params.oracle_fix, seed),
+      imu_(p_.imu, seed),
+      lidar_(p_.lidar, seed),
+      detector_(p_.detection, seed),
+      oracle_fix_(p_.oracle_fix, seed),
       rng_(seed ^ 0x2545f4914f6cdd1dULL),
       last_odom_(plant.start),
-      charger_marker_(worlds::charger_body(plant).center) {
-  if (p_.oracle) {
-    // The comparison mode of old: no lidar, a detector that sees through everything and never errs.
-    p_.lidar.enabled = false;
-    p_.detection.occlusion = false;
-    p_.detection.false_negative_probability = 0;
-    p_.detection.outlier_probability = 0;
-    p_.detection.latency_s = 0;
-    p_.detection.rate_hz = 1e9;
-    detector_ = ChargerDetector(p_.detection, seed);
-  }
-}
+      charger_marker_(worlds::charger_body(plant).center) {}
 
 void SensorSuite::count(const PhysicsWorld& physics, const WheelDrive& drive, double dt_s) {
   odometry_.count(drive.motor_speeds(), dt_s);

@@ -153,7 +153,7 @@ TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
   const std::string scenario = write(
       "suite.yaml", "name: docking_suite\nworlds: [" + worlds +
                         "]\nfaults:\n  none: {}\n  noisy:\n    odometry: {wheel_speed_noise: 0.02, left_scale_error: 0.003, "
-                        "right_scale_error: -0.003}\n    localization: {period_s: 1.0, position_noise_m: 0.03, yaw_noise_rad: 0.01}\n"
+                        "right_scale_error: -0.003}\n    lidar: {range_noise_m: 0.03, dropout_probability: 0.05}\n    imu: {yaw_rate_noise_radps: 0.006, bias_radps: 0.006}\n"
                         "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: 36\n");
   const BatchOutcome r = run_batch(scenario, options("suite"));
   std::printf("docking suite: %lld episodes, %lld docked, %lld collisions\n", static_cast<long long>(r.episodes),

@@ -365,7 +365,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadConfig{R"({"detection": {"rate_hz": 0}})", "detection.rate_hz"},
                       BadConfig{R"({"imu": {"bias_radps": -1}})", "imu.bias_radps"},
                       BadConfig{R"({"perception": {"mode": "psychic"}})", "perception.mode"},
-                      BadConfig{R"({"lidar": {"beems": 3}})", "lidar.beems"}));
+                      BadConfig{R"({"lidar": {"beems": 3}})", "lidar.beems"},
+                      BadConfig{R"({"localization": {"period_s": 1}})", "localization.period_s"}));
 
 }  // namespace
 }  // namespace plantsim::sim
