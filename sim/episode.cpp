@@ -73,7 +73,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   PerceptionParams perception_params = config.perception;
   perception_params.field_range_m = config.field.sensor_range_m;
   Perceiver perceiver(map, perception_params);
-  EpisodeMetrics metrics(world, result, config.catch_distance_m);
+  EpisodeMetrics metrics(world, result, config.catch_distance_m, config.step.dt_s);
 
   const double dt = config.step.dt_s;
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));

@@ -5,8 +5,8 @@
 
 namespace plantsim::sim {
 
-EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m)
-    : plant_(plant), r_(result), catch_distance_m_(catch_distance_m), previous_(plant.start.position()) {}
+EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s)
+    : plant_(plant), r_(result), catch_distance_m_(catch_distance_m), dt_s_(dt_s), previous_(plant.start.position()) {}
 
 void EpisodeMetrics::before_step(const PhysicsWorld& physics) {
   const ContactState contact = physics.contacts();
@@ -14,7 +14,10 @@ void EpisodeMetrics::before_step(const PhysicsWorld& physics) {
     ++r_.collisions;
     // Whose doing: the robot's when it was moving towards what it touched (faster than a
     // creep), not when something walked into a standing or retreating robot.
-    const Vec2 at = physics.robot_position(), v = physics.robot_velocity();
+    // The motion over the last steps before contact (the solver has already stopped the
+    // robot's approach velocity by the time the contact is seen).
+    const Vec2 at = physics.robot_position();
+    const Vec2 v = recent_.empty() ? Vec2{0, 0} : (1.0 / (recent_.size() * dt_s_)) * (at - recent_.front());
     bool driving_into = false;
     for (const Vec2& p : contact.obstacle_points) {
       const Vec2 d = p - at;
@@ -37,6 +40,8 @@ void EpisodeMetrics::after_step(const PhysicsWorld& physics) {
   const Vec2 now = physics.robot_position();
   r_.driven_length_m += geom::distance(previous_, now);
   previous_ = now;
+  recent_.push_back(now);
+  if (recent_.size() > 6) recent_.pop_front();
 }
 
 void EpisodeMetrics::compare_estimate(const PhysicsWorld& physics, const Pose2& estimate) {

@@ -3,13 +3,15 @@
 // back into sensing or control.
 #pragma once
 
+#include <deque>
+
 #include "sim/episode.h"
 
 namespace plantsim::sim {
 
 class EpisodeMetrics {
  public:
-  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m);
+  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s);
   /// Every physics step, before it: contacts and the pose error at first charger contact.
   void before_step(const PhysicsWorld& physics);
   /// Every physics step, after it: driven length.
@@ -27,7 +29,9 @@ class EpisodeMetrics {
   double catch_distance_m_;
   bool was_touching_obstacle_ = false;
   bool contact_measured_ = false;
+  double dt_s_;
   Vec2 previous_;
+  std::deque<Vec2> recent_;  // positions after the last few steps
 };
 
 }  // namespace plantsim::sim

@@ -15,6 +15,7 @@
 #include "sim/ekf_localizer.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"
+#include "sim/episode_metrics.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"
 #include "sim/wheel_drive.h"
@@ -326,6 +327,39 @@ TEST(Perception, ACrossingPersonIsTrackedFromTheScanAndStopsTheRobot) {
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_GE(r.stops, 1);
   EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(CollisionBlame, SomethingWalkingIntoAStandingRobotIsNotTheRobotsDoing) {
+  worlds::World w = room();
+  w.obstacles.clear();
+  worlds::MovingObstacle person;
+  person.waypoints = {{3, 5}, {1, 5}};  // walks straight into the robot standing at (1, 5)
+  person.speed_mps = 0.5;
+  w.moving = {person};
+  PhysicsWorld physics(w);
+  EpisodeResult result;
+  EpisodeMetrics metrics(w, result, 0.1, 1.0 / 60);
+  for (int k = 0; k < 600; ++k) {
+    metrics.before_step(physics);
+    physics.set_robot_velocity({0, 0}, 0);
+    physics.step({});
+    metrics.after_step(physics);
+  }
+  EXPECT_EQ(result.collisions, 1);
+  EXPECT_EQ(result.collisions_robot_moving, 0);
+
+  const worlds::World empty_room = room();
+  PhysicsWorld again(empty_room);
+  EpisodeResult driven;
+  EpisodeMetrics blame(empty_room, driven, 0.1, 1.0 / 60);
+  for (int k = 0; k < 600; ++k) {
+    blame.before_step(again);
+    again.set_robot_velocity({0.5, 0}, 0);  // into the box at x = 4
+    again.step({});
+    blame.after_step(again);
+  }
+  EXPECT_EQ(driven.collisions, 1);
+  EXPECT_EQ(driven.collisions_robot_moving, 1);
 }
 
 TEST(Perception, LostLocalisationIsReported) {
