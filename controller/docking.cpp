@@ -50,12 +50,10 @@ void DockingController::use_detection(const Pose2& seen) {
     if (!confirmed) return;
   }
   rejected_detection_.reset();
-  {
-    const double a = params_.detection_blend;
-    dock_odom_.x += a * (seen.x - dock_odom_.x);
-    dock_odom_.y += a * (seen.y - dock_odom_.y);
-    dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
-  }
+  const double a = params_.detection_blend;
+  dock_odom_.x += a * (seen.x - dock_odom_.x);
+  dock_odom_.y += a * (seen.y - dock_odom_.y);
+  dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {

@@ -23,6 +23,8 @@ run world_N10 ../shared/data/worlds/world_N10.json
 run world_N50 ../shared/data/worlds/world_N50.json
 run world_N200 ../shared/data/worlds/world_N200.json
 run world_N50_noisy ../shared/data/worlds/world_N50.json --config configs/noisy_sensing.json
+# The same world with the old idealised sensing (perception mode oracle) at its noisy level, for comparison.
+run world_N50_oracle_noisy ../shared/data/worlds/world_N50.json --config configs/oracle_noisy.json
 
 run depot ../shared/data/ros_maps/depot.yaml
 run desulfurization_plant worlds/scenarios/desulfurization_plant.json

@@ -35,7 +35,7 @@ struct EkfParams {
   double lost_position_sigma_m = 0.5;       ///< beyond this 1-sigma the localisation is lost
 };
 
-enum class LocalizationHealth { kOk, kDegraded, kLost };
+enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
 std::string_view to_string(LocalizationHealth h);
 
 class EkfLocalizer {

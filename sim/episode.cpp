@@ -1,6 +1,7 @@
 // The episode loop: sense, estimate, decide, actuate, step, log.
 #include "sim/episode.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/episode_metrics.h"
@@ -22,8 +23,6 @@ SensorParams sensor_params(const EpisodeConfig& c) {
   s.charge_heading_tolerance_rad = c.tolerance.heading_rad;
   return s;
 }
-
-int severity(const std::string& health) { return health == "lost" ? 2 : health == "degraded" ? 1 : 0; }
 
 }  // namespace
 
@@ -80,6 +79,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const int period = std::max(1, config.control_period_steps);
   result.status = "timeout";
   double next_snapshot_s = 0;
+  LocalizationHealth worst_health = LocalizationHealth::kOk;
   result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
   // logging every control period, seeing the contacts latched since the last one.
@@ -90,8 +90,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       const SensorReadings readings = sensors.read(physics, t);  // sense
       const Perception& p = perceiver.update(readings);        // estimate
       metrics.compare_estimate(physics, p.pose);
-      if (severity(std::string(to_string(p.health))) > severity(result.localization_status))
-        result.localization_status = std::string(to_string(p.health));
+      worst_health = std::max(worst_health, p.health);  // ok < degraded < lost
       const Pose2 truth = physics.robot_pose();
       const double speed = geom::dot(physics.robot_velocity(), truth.heading());
       const std::optional<ActorState> target = physics.target();
@@ -125,6 +124,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   }
   for (const ActorState& a : physics.actors()) result.moving_final.push_back(a.box);
   if (result.status == "timeout") metrics.measure_final_error(physics);
+  result.localization_status = std::string(to_string(worst_health));
   const TravelCounts counts = travel->counts();
   result.retries = counts.retries;
   result.stops = counts.stops;
