@@ -88,7 +88,7 @@ void draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
   std::vector<Vec2> path;
   path.reserve(t.size());
   for (const auto& s : t) path.push_back(s.estimate.position());
-  if (path.size() > 1) c.polyline(path, 8.0, palette::kEstimate);
+  if (path.size() > 1) c.polyline(path, 6.5, palette::kEstimate);
 }
 
 void draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t) {

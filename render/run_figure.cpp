@@ -69,7 +69,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!run.explored.empty()) legend.push_back({palette::kExplored, "explored"});
   if (run.travel != "path") legend.push_back({palette::kWallFollow, "wall following"});
   if (!o.graph_edges.empty()) legend.push_back({palette::kGraph, "graph"});
-  if (!run.trajectory.empty()) legend.push_back({palette::kEstimate, "estimated path"});
+  if (!run.trajectory.empty()) legend.push_back({palette::kEstimate, "estimate"});
   if (!run.last_scan.explained.empty()) legend.push_back({palette::kScan, "last scan"});
   if (!run.last_scan.unexplained.empty()) legend.push_back({palette::kScanOffMap, "scan off map"});
   if (!run.tracked_final.empty()) legend.push_back({palette::kTracked, "tracked"});
