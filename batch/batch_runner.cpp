@@ -1,6 +1,8 @@
 // The batch engine.
 #include "batch/batch_runner.h"
 
+#include "geometry/predicates.h"
+
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -96,9 +98,24 @@ worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector
   worlds::MovingObstacle m;
   m.name = "crossing person";
   m.width_m = m.height_m = 0.6;
-  m.waypoints = {clamp(at - 3.0 * across), clamp(at + 3.0 * across)};
+  // Up to 3 m each side of the path, but never through an obstacle: people walk round walls
+  // (a person stepping out of a solid block would be a sensing test no robot can pass).
+  auto free_at = [&](geom::Vec2 c) {
+    for (const geom::Rect& r : w.obstacles)
+      if (geom::in_open_rect(r.inflated(0.5 * m.width_m), c)) return false;
+    return true;
+  };
+  auto reach = [&](double side) {
+    double s = 0;
+    while (s < 3.0 && free_at(clamp(at + (side * (s + 0.05)) * across))) s += 0.05;
+    return clamp(at + (side * s) * across);
+  };
+  const geom::Vec2 from = reach(-1.0), to = reach(1.0);
+  m.waypoints = {from, to};
   m.speed_mps = 0.8;
-  m.start_time_s = std::max(0.0, 0.5 * total / 0.6 - 3.0 / 0.8);  // arrives as the robot does
+  // Timed to reach the path as the robot does.
+  const double to_path = geom::distance(from, at) / m.speed_mps;
+  m.start_time_s = std::max(0.0, 0.5 * total / 0.6 - to_path);
   return m;
 }
 
