@@ -88,6 +88,7 @@ const std::vector<Field>& fields() {
       PS_FIELD("tracker", perception.tracker.still_speed_mps, "still_speed_mps"),
       PS_POSITIVE("tracker", perception.tracker.forget_after_s, "forget_after_s"),
       PS_FIELD("tracker", perception.tracker.min_size_m, "min_size_m"),
+      PS_FIELD("tracker", perception.tracker.assumed_depth_m, "assumed_depth_m"),
       PS_FIELD("perception", perception.target_exclusion_m, "target_exclusion_m"),
       PS_FIELD("tracking", tracking.lookahead_min_m, "lookahead_min_m"),
       PS_FIELD("tracking", tracking.lookahead_max_m, "lookahead_max_m"),

@@ -17,7 +17,7 @@ std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Ve
   return out;
 }
 
-void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, double t_s) {
+void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, geom::Vec2 sensor, double t_s) {
   const double dt = std::max(t_s - last_t_s_, 0.0);
   last_t_s_ = t_s;
   for (Track& tr : tracks_) tr.position = tr.position + dt * tr.velocity;
@@ -29,6 +29,14 @@ void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, double 
   for (const auto& c : cluster_in_order(unexplained, p_.cluster_gap_m)) {
     geom::Rect b{c[0].x, c[0].y, c[0].x, c[0].y};
     for (const geom::Vec2& q : c) b = {std::min(b.xmin, q.x), std::min(b.ymin, q.y), std::max(b.xmax, q.x), std::max(b.ymax, q.y)};
+    // The thing goes on behind the face the lidar sees: grow the box away from the sensor.
+    const geom::Vec2 away = b.center() - sensor;
+    const double len = geom::norm(away);
+    if (len > 0) {
+      const geom::Vec2 back = (p_.assumed_depth_m / len) * away;
+      b = {std::min(b.xmin, b.xmin + back.x), std::min(b.ymin, b.ymin + back.y), std::max(b.xmax, b.xmax + back.x),
+           std::max(b.ymax, b.ymax + back.y)};
+    }
     const double h = 0.5 * p_.min_size_m;
     clusters.push_back({b.center(), {std::max(0.5 * b.width(), h), std::max(0.5 * b.height(), h)}});
   }

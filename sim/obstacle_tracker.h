@@ -22,7 +22,8 @@ struct TrackerParams {
   double max_speed_mps = 3.0;          ///< velocities are clamped here
   double still_speed_mps = 0.1;        ///< slower tracks are reported standing (face-centroid jitter)
   double forget_after_s = 1.0;         ///< unseen this long: dropped (kept and predicted until then)
-  double min_size_m = 0.2;             ///< boxes are grown to at least this (the lidar sees one face)
+  double min_size_m = 0.2;             ///< boxes are grown to at least this across
+  double assumed_depth_m = 0.5;        ///< ... and this far behind the face seen (the lidar sees one face of a thing)
 };
 
 struct Track {
@@ -37,8 +38,8 @@ struct Track {
 class ObstacleTracker {
  public:
   explicit ObstacleTracker(TrackerParams params) : p_(params) {}
-  /// One scan's unexplained returns, in beam order (map frame), at time t.
-  void update(const std::vector<geom::Vec2>& unexplained, double t_s);
+  /// One scan's unexplained returns, in beam order (map frame), seen from `sensor` at time t.
+  void update(const std::vector<geom::Vec2>& unexplained, geom::Vec2 sensor, double t_s);
   /// Tracks as boxes with velocities, moved on to time t.
   std::vector<controller::MovingBox> boxes(double t_s) const;
   const std::vector<Track>& tracks() const { return tracks_; }

@@ -75,7 +75,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
     if (!explained && r <= p_.tracker.range_m) unexplained.push_back(point);
     if (explained && r <= p_.field_range_m) near_static.push_back(point);
   }
-  tracker_.update(unexplained, scan.t_s);
+  tracker_.update(unexplained, sensor.position(), scan.t_s);
   // The field feels each connected stretch of the map's surfaces at its nearest point, as it
   // felt each rectangle at its nearest point in oracle mode.
   static_field_.clear();
