@@ -1,6 +1,7 @@
-// One docking episode: plan to the staging pose, then the closed loop of sensing (odometry,
-// charger detection, contacts), the docking controller, the wheel drive and a fixed Box2D
-// step, until docked, failed or timed out. Returns the metrics and the full trajectory log.
+// One docking episode: plan to the staging pose, then the closed loop of sensing (the sensor
+// suite), perception (EKF and tracker, or the oracle), the travel mode, the wheel drive and a
+// fixed Box2D step, until docked, failed or timed out. Returns the metrics (from the truth,
+// kept apart in episode_metrics) and the full trajectory log.
 // Deterministic: the same world, planner, config and seed give the same trajectory.
 #pragma once
 
