@@ -48,7 +48,7 @@ class NearestHit : public b2RayCastCallback {
 
 }  // namespace
 
-void add_static_scene(b2World& world, const worlds::World& plant, const geom::Pose2& charger) {
+void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);
   for (const geom::Rect& r : plant.obstacles) add_box(statics, r, kObstacle);
@@ -56,10 +56,8 @@ void add_static_scene(b2World& world, const worlds::World& plant, const geom::Po
 
   // The charger's face is set back by Box2D's polygon skin so that contact begins exactly
   // when the robot's centre reaches the docked pose.
-  worlds::World placed = plant;
-  placed.charger = charger;
-  const worlds::ChargerBody cb = worlds::charger_body(placed);
-  const geom::Vec2 center = cb.center + b2_polygonRadius * charger.heading();
+  const worlds::ChargerBody cb = worlds::charger_body(plant);
+  const geom::Vec2 center = cb.center + b2_polygonRadius * plant.charger.heading();
   b2BodyDef charger_def;
   charger_def.position.Set(static_cast<float>(center.x), static_cast<float>(center.y));
   charger_def.angle = static_cast<float>(cb.yaw);

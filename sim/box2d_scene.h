@@ -17,8 +17,8 @@ enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobo
 inline FixtureTag tag_of(b2Fixture* f) { return static_cast<FixtureTag>(f->GetUserData().pointer); }
 
 /// Adds every obstacle rectangle and the four floor walls as fixtures of one static body, and
-/// the charger block (docked pose `charger`) as its own static body.
-void add_static_scene(b2World& world, const worlds::World& plant, const geom::Pose2& charger);
+/// the charger block as its own static body.
+void add_static_scene(b2World& world, const worlds::World& plant);
 
 /// Nearest hit along the segment from `from` to `to`, ignoring the robot's own fixture.
 std::optional<RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2 to);

@@ -83,8 +83,9 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
   // logging every control period, seeing the contacts latched since the last one.
+  ContactState contact = physics.contacts();  // read once per step, by sensors and metrics alike
   for (std::int64_t k = 0; k <= max_steps; ++k) {
-    metrics.before_step(physics);
+    metrics.before_step(physics, contact);
     if (k % period == 0) {
       const double t = k * dt;
       const SensorReadings readings = sensors.read(physics, t);  // sense
@@ -119,7 +120,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     }
     drive.apply(physics, dt);
     physics.step(config.step);  // step
-    sensors.count(physics, drive, dt);
+    contact = physics.contacts();
+    sensors.count(physics, contact, drive, dt);
     metrics.after_step(physics);
   }
   for (const ActorState& a : physics.actors()) result.moving_final.push_back(a.box);

@@ -8,8 +8,7 @@ namespace plantsim::sim {
 EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s)
     : plant_(plant), r_(result), catch_distance_m_(catch_distance_m), dt_s_(dt_s), previous_(plant.start.position()) {}
 
-void EpisodeMetrics::before_step(const PhysicsWorld& physics) {
-  const ContactState contact = physics.contacts();
+void EpisodeMetrics::before_step(const PhysicsWorld& physics, const ContactState& contact) {
   if (contact.obstacle && !was_touching_obstacle_) {
     ++r_.collisions;
     // Whose doing: the robot's when it was moving towards what it touched (faster than a

@@ -12,8 +12,9 @@ namespace plantsim::sim {
 class EpisodeMetrics {
  public:
   EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s);
-  /// Every physics step, before it: contacts and the pose error at first charger contact.
-  void before_step(const PhysicsWorld& physics);
+  /// Every physics step, before it, with the contacts the last step left: collisions and the
+  /// pose error at first charger contact.
+  void before_step(const PhysicsWorld& physics, const ContactState& contact);
   /// Every physics step, after it: driven length.
   void after_step(const PhysicsWorld& physics);
   /// At each control step: how far the estimate is from the truth.

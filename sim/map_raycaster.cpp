@@ -6,7 +6,7 @@
 namespace plantsim::sim {
 
 MapRaycaster::MapRaycaster(const worlds::World& map) : world_(std::make_unique<b2World>(b2Vec2(0, 0))) {
-  detail::add_static_scene(*world_, map, map.charger);
+  detail::add_static_scene(*world_, map);
 }
 
 MapRaycaster::~MapRaycaster() = default;

@@ -19,7 +19,7 @@ using detail::tag_of;
 
 PhysicsWorld::PhysicsWorld(const worlds::World& w)
     : world_(std::make_unique<b2World>(b2Vec2(0, 0))), robot_radius_m_(w.robot.radius_m) {
-  detail::add_static_scene(*world_, w, w.charger);
+  detail::add_static_scene(*world_, w);
 
   for (const worlds::MovingObstacle& m : w.moving) moving_.push_back(make_actor(m, false));
   if (w.target) target_ = make_actor(*w.target, true);

@@ -33,9 +33,8 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
       last_odom_(plant.start),
       charger_marker_(worlds::charger_body(plant).center) {}
 
-void SensorSuite::count(const PhysicsWorld& physics, const WheelDrive& drive, double dt_s) {
+void SensorSuite::count(const PhysicsWorld& physics, const ContactState& c, const WheelDrive& drive, double dt_s) {
   odometry_.count(drive.motor_speeds(), dt_s);
-  const ContactState c = physics.contacts();
   contact_points_.insert(contact_points_.end(), c.obstacle_points.begin(), c.obstacle_points.end());
   if (c.charger) {
     contact_ = true;

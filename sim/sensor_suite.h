@@ -33,8 +33,8 @@ struct SensorParams {
 class SensorSuite {
  public:
   SensorSuite(const worlds::World& plant, const SensorParams& params, std::uint64_t seed);
-  /// Counts one physics step of encoder travel and latches contacts (every step).
-  void count(const PhysicsWorld& physics, const WheelDrive& drive, double dt_s);
+  /// Counts one physics step of encoder travel and latches the contacts it left (every step).
+  void count(const PhysicsWorld& physics, const ContactState& contact, const WheelDrive& drive, double dt_s);
   /// Reads every sensor at the control step at time t.
   SensorReadings read(const PhysicsWorld& physics, double t_s);
 

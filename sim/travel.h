@@ -56,6 +56,9 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
 /// The docking controller's input from a perception.
 controller::DockingInput docking_input(const Perception& p);
 
+/// A docking command as a decision; `finished` when it reports docked or failed.
+Decision decision_of(const controller::DockingCommand& cmd);
+
 std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
                                          const TravelSettings& s, std::vector<geom::Vec2> path);
 std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::string& planner_name,

@@ -22,10 +22,7 @@ class PathTravel : public Travel {
         ++replans_;
       }
     }
-    Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, ""};
-    if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
-    if (cmd.phase == controller::DockPhase::kFailed) d.finished = "failed";
-    return d;
+    return decision_of(cmd);
   }
   TravelCounts counts() const override { return {control_.retries(), control_.stops(), replans_, 0, 0}; }
   std::optional<std::vector<geom::Vec2>> final_plan() const override {

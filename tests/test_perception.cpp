@@ -107,15 +107,26 @@ TEST(Lidar, NoiseHasTheConfiguredSpread) {
   EXPECT_NEAR(std::sqrt(sum2 / n), 0.02, 0.003);
 }
 
-TEST(ChargerDetection, BlockedWhenSomethingStandsInTheLineOfSight) {
+// An empty room; the robot 1 m behind the docked pose (5, 5) facing the charger.
+worlds::World facing_the_charger() {
   worlds::World w = room();
   w.obstacles.clear();
-  w.charger = {5.0, 5.0, 0};  // the robot docks facing +x at (5, 5): the block is just ahead
+  w.charger = {5.0, 5.0, 0};
   w.start = {4.0, 5.0, 0};
+  return w;
+}
+
+DetectionParams certain_detection() {
   DetectionParams p;
   p.false_negative_probability = 0;
   p.outlier_probability = 0;
   p.latency_s = 0;
+  return p;
+}
+
+TEST(ChargerDetection, BlockedWhenSomethingStandsInTheLineOfSight) {
+  worlds::World w = facing_the_charger();
+  DetectionParams p = certain_detection();
   p.position_noise_m = p.yaw_noise_rad = 0;
   {
     PhysicsWorld physics(w);
@@ -131,13 +142,8 @@ TEST(ChargerDetection, BlockedWhenSomethingStandsInTheLineOfSight) {
 }
 
 TEST(ChargerDetection, LatencyDeliversTheImageLaterWithItsCaptureTime) {
-  worlds::World w = room();
-  w.obstacles.clear();
-  w.charger = {5.0, 5.0, 0};
-  w.start = {4.0, 5.0, 0};
-  DetectionParams p;
-  p.false_negative_probability = 0;
-  p.outlier_probability = 0;
+  const worlds::World w = facing_the_charger();
+  DetectionParams p = certain_detection();
   p.latency_s = 0.2;
   p.rate_hz = 10;
   PhysicsWorld physics(w);
@@ -208,7 +214,7 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
       }
       drive.apply(physics, dt);
       physics.step({});
-      sensors.count(physics, drive, dt);
+      sensors.count(physics, physics.contacts(), drive, dt);
     }
   }
   return sum;
@@ -343,7 +349,7 @@ TEST(CollisionBlame, SomethingWalkingIntoAStandingRobotIsNotTheRobotsDoing) {
   EpisodeResult result;
   EpisodeMetrics metrics(w, result, 0.1, 1.0 / 60);
   for (int k = 0; k < 600; ++k) {
-    metrics.before_step(physics);
+    metrics.before_step(physics, physics.contacts());
     physics.set_robot_velocity({0, 0}, 0);
     physics.step({});
     metrics.after_step(physics);
@@ -356,7 +362,7 @@ TEST(CollisionBlame, SomethingWalkingIntoAStandingRobotIsNotTheRobotsDoing) {
   EpisodeResult driven;
   EpisodeMetrics blame(empty_room, driven, 0.1, 1.0 / 60);
   for (int k = 0; k < 600; ++k) {
-    blame.before_step(again);
+    blame.before_step(again, again.contacts());
     again.set_robot_velocity({0.5, 0}, 0);  // into the box at x = 4
     again.step({});
     blame.after_step(again);
