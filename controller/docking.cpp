@@ -88,11 +88,15 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         out.twist = {};
         out.blocked = true;
         // Stopped in something's way (it does not yield): back out along the stretch just driven.
-        if (straight_run_m_ > 0.05 &&
-            position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
-                                in.nearby_obstacles, params_.yield_horizon_s)) {
+        const bool threatened = position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
+                                                    in.nearby_obstacles, params_.yield_horizon_s);
+        if (straight_run_m_ > 0.05 && threatened) {
           out.twist = {-params_.yield_speed_mps, 0.0};
           straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
+        } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
+          // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
+          // so that the next arc is straight, not one that bulges into what blocked the curve.
+          out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps, params_.align_speed_radps)};
         }
         blocked_time_s_ += in.dt_s;
         if (blocked_time_s_ >= params_.replan_after_s) {

@@ -39,6 +39,7 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   const Vec2 carrot = point_ahead(path_, near, lookahead, p.sharp_turn_rad, p.corner_release_m);
   const Vec2 c = to_robot_frame(pose, carrot);
   const double heading_error = std::atan2(c.y, c.x);
+  out.carrot_bearing_rad = heading_error;
   if (std::fabs(heading_error) > p.rotate_in_place_threshold_rad) rotating_ = true;
   if (std::fabs(heading_error) < p.rotate_in_place_exit_rad) rotating_ = false;
   if (rotating_) {

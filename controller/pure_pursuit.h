@@ -33,6 +33,7 @@ struct TrackingCommand {
   Twist twist;
   bool goal_reached = false;
   double cross_track_error_m = 0;  ///< distance from the path (estimated pose)
+  double carrot_bearing_rad = 0;   ///< where the carrot lies, robot frame (0: dead ahead)
 };
 
 class PurePursuit {

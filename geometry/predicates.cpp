@@ -103,6 +103,10 @@ bool in_open_rect(const Rect& r, Vec2 p) {
   return r.xmin < p.x && p.x < r.xmax && r.ymin < p.y && p.y < r.ymax;
 }
 
+bool rects_overlap_open(const Rect& a, const Rect& b) {
+  return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
+}
+
 bool in_closed_rect(const Rect& r, Vec2 p) {
   return r.xmin <= p.x && p.x <= r.xmax && r.ymin <= p.y && p.y <= r.ymax;
 }

@@ -20,6 +20,9 @@ bool in_segment_interior(Vec2 p, Vec2 q, Vec2 x);
 bool in_open_rect(const Rect& r, Vec2 p);
 bool in_closed_rect(const Rect& r, Vec2 p);
 
+/// True when the open interiors of a and b meet (touching edges do not count).
+bool rects_overlap_open(const Rect& a, const Rect& b);
+
 /// True when the closed segment [p, q] meets the open interior of r. Touching or sliding
 /// along the boundary does not count. Exact (separating axes with strict comparisons).
 bool segment_enters_open_rect(Vec2 p, Vec2 q, const Rect& r);

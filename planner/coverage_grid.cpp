@@ -6,15 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/predicates.h"
+
 namespace plantsim::planner {
-namespace {
-
-bool interiors_overlap(const geom::Rect& a, const geom::Rect& b) {
-  return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
-}
-
-}  // namespace
-
 CoverageGrid::CoverageGrid(geom::Rect floor, double cell_m, const std::vector<geom::Rect>& obstacles, double clearance_m)
     : origin_{floor.xmin, floor.ymin}, cell_m_(cell_m) {
   if (!(cell_m > 0)) throw std::invalid_argument("coverage cell size must be positive");
@@ -34,7 +28,7 @@ CoverageGrid::CoverageGrid(geom::Rect floor, double cell_m, const std::vector<ge
     const int r1 = std::min(rows_ - 1, static_cast<int>(std::floor((g.ymax - origin_.y) / cell_m)));
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c)
-        if (interiors_overlap(g, cell_rect({c, r}))) blocked_[index({c, r})] = 1;
+        if (geom::rects_overlap_open(g, cell_rect({c, r}))) blocked_[index({c, r})] = 1;
   }
   // The floor's own walls: a clearance larger than half a cell blocks the outer ring.
   if (grow > 0)

@@ -29,6 +29,7 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     GlCanvas& c = fig.canvas();
     draw_floor(c, world);
     draw_obstacles(c, world);
+    draw_unmapped(c, world);
     draw_moving(c, world, run.trajectory[i].t_s);
     draw_plan(c, run.plan);
     draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1);
@@ -38,10 +39,12 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
       if (snap.t_s <= run.trajectory[i].t_s) seen = &snap;
     if (seen) {
       draw_scan(c, seen->scan);
+      draw_layer(c, seen->layer);
       draw_tracked(c, seen->tracked);
     }
     draw_start(c, world);
     draw_charger(c, world);
+    draw_mapped_charger(c, world);
     draw_footprint(c, world.robot, run.trajectory[i].truth, palette::kRobot);
     fig.world_axes(world.floor, t);
     char title[160];

@@ -35,6 +35,44 @@ void draw_obstacles(GlCanvas& c, const worlds::World& w) {
   for (const auto& r : w.obstacles) c.fill_rect(r, palette::kObstacle);
 }
 
+namespace {
+
+void outline(GlCanvas& c, const geom::Rect& r, double width_px, Rgb colour) {
+  c.polyline({{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}, {r.xmin, r.ymin}}, width_px, colour);
+}
+
+}  // namespace
+
+void draw_unmapped(GlCanvas& c, const worlds::World& w) {
+  // Diagonals x - y = k every 8 pixels, clipped to the rectangle.
+  const double pitch = 8.0 / c.transform().scale;
+  for (const geom::Rect& r : w.unmapped) {
+    for (double k = std::ceil((r.xmin - r.ymax) / pitch) * pitch; k <= r.xmax - r.ymin; k += pitch) {
+      // On x = y + k: y from max(ymin, xmin - k) to min(ymax, xmax - k).
+      const double y0 = std::max(r.ymin, r.xmin - k), y1 = std::min(r.ymax, r.xmax - k);
+      if (y1 > y0) c.polyline({{y0 + k, y0}, {y1 + k, y1}}, 1.2, palette::kUnmapped);
+    }
+    outline(c, r, 2.0, palette::kUnmapped);
+  }
+}
+
+void draw_mapped_charger(GlCanvas& c, const worlds::World& w) {
+  if (!worlds::differs_from_map(w)) return;
+  worlds::World on_map;
+  on_map.robot = w.robot;
+  on_map.charger_spec = w.charger_spec;
+  on_map.charger = worlds::robot_map_charger(w);
+  const worlds::ChargerBody cb = worlds::charger_body(on_map);
+  const Vec2 along = geom::rotate({cb.half_depth_m, 0}, cb.yaw), across = geom::rotate({0, cb.half_width_m}, cb.yaw);
+  const Vec2 k = cb.center;
+  c.polyline({k - along - across, k + along - across, k + along + across, k - along + across, k - along - across}, 1.5,
+             palette::kCharger);
+}
+
+void draw_layer(GlCanvas& c, const std::vector<geom::Rect>& cells) {
+  for (const geom::Rect& r : cells) outline(c, r, 2.5, palette::kLayer);
+}
+
 void draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges) {
   for (const auto& [a, b] : edges) c.polyline({a, b}, 0.7, palette::kGraph);
 }
@@ -78,8 +116,7 @@ void draw_scan(GlCanvas& c, const sim::ScanView& scan) {
 void draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes) {
   for (const auto& b : boxes) {
     const geom::Rect& r = b.box;
-    c.polyline({{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}, {r.xmin, r.ymin}}, 1.5,
-               palette::kTracked);
+    outline(c, r, 1.5, palette::kTracked);
     if (geom::norm(b.velocity) > 0) c.polyline({r.center(), r.center() + b.velocity}, 1.5, palette::kTracked);
   }
 }

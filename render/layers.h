@@ -12,6 +12,12 @@ namespace plantsim::render {
 
 void draw_floor(GlCanvas& c, const worlds::World& w);                  ///< floor and metre grid
 void draw_obstacles(GlCanvas& c, const worlds::World& w);              ///< margins, then obstacles
+/// Obstacles the plant has and the map lacks: outlined and hatched, never filled like the map's.
+void draw_unmapped(GlCanvas& c, const worlds::World& w);
+/// Where the map puts the charger, as an outline, when that is not where it stands.
+void draw_mapped_charger(GlCanvas& c, const worlds::World& w);
+/// The local obstacle layer's occupied cells (merged), as perception remembered them.
+void draw_layer(GlCanvas& c, const std::vector<geom::Rect>& cells);
 void draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges);
 void draw_charger(GlCanvas& c, const worlds::World& w);                ///< block and approach axis
 void draw_start(GlCanvas& c, const worlds::World& w);

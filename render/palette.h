@@ -26,5 +26,7 @@ inline constexpr Rgb kScan{86, 180, 233};         ///< lidar returns the map exp
 inline constexpr Rgb kScanOffMap{213, 94, 0};     ///< lidar returns it does not (tracked obstacles)
 inline constexpr Rgb kTracked{0, 0, 0};           ///< boxes of the tracked obstacles (outlines)
 inline constexpr Rgb kEstimate{120, 60, 0};       ///< the path as the robot estimated it
+inline constexpr Rgb kUnmapped{150, 30, 30};      ///< obstacles in the plant but not on the map (hatched)
+inline constexpr Rgb kLayer{204, 121, 167};       ///< the local obstacle layer's occupied cells
 
 }  // namespace plantsim::render::palette

@@ -36,6 +36,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   GlCanvas& c = fig.canvas();
   draw_floor(c, world);
   draw_obstacles(c, world);
+  draw_unmapped(c, world);
   if (!o.graph_edges.empty()) draw_graph(c, o.graph_edges);
   const double t_end = run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s;
   draw_moving(c, world, t_end, run.moving_final);
@@ -47,10 +48,12 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_estimate(c, run.trajectory);  // a band under the true path: its edges show where they agree
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
   draw_scan(c, run.last_scan);
+  draw_layer(c, run.layer_final);
   draw_tracked(c, run.tracked_final);
   draw_start(c, world);
   if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot);
   draw_charger(c, world);
+  draw_mapped_charger(c, world);
   fig.world_axes(world.floor, t);
 
   const std::string title = o.title.empty() ? world.name + "  |  " + method_label(run) : o.title;
@@ -64,6 +67,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   std::vector<LegendEntry> legend = {{palette::kObstacle, "obstacle"}, {palette::kInflation, "margin"},
                                      {palette::kPlan, "plan"},         {palette::kFootprint, "robot"},
                                      {palette::kStart, "start"},       {palette::kCharger, "charger"}};
+  if (!world.unmapped.empty()) legend.push_back({palette::kUnmapped, "not on map"});
+  if (worlds::differs_from_map(world)) legend.push_back({palette::kCharger, "mapped charger"});
   if (!world.moving.empty()) legend.push_back({palette::kMoving, "moving"});
   if (world.target) legend.push_back({palette::kTarget, "target"});
   if (!run.explored.empty()) legend.push_back({palette::kExplored, "explored"});
@@ -73,6 +78,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!run.last_scan.explained.empty()) legend.push_back({palette::kScan, "last scan"});
   if (!run.last_scan.unexplained.empty()) legend.push_back({palette::kScanOffMap, "scan off map"});
   if (!run.tracked_final.empty()) legend.push_back({palette::kTracked, "tracked"});
+  if (!run.layer_final.empty()) legend.push_back({palette::kLayer, "sensed layer"});
   fig.legend(bar_x - 10, 380, legend);
   if (transform_out) *transform_out = t;
   return fig.finish();

@@ -52,6 +52,7 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);
   for (const geom::Rect& r : plant.obstacles) add_box(statics, r, kObstacle);
+  for (const geom::Rect& r : plant.unmapped) add_box(statics, r, kObstacle);  // absent from a map's World
   for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) add_box(statics, wall, kWall);
 
   // The charger's face is set back by Box2D's polygon skin so that contact begins exactly

@@ -33,9 +33,13 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.planner = planner.name();
   result.travel = std::string(to_string(config.travel));
   result.perception_mode = std::string(to_string(config.perception.mode));
-  // The robot's map is the world file; the plant it drives through is the same world (until
-  // plants that differ from their maps arrive).
-  const worlds::World& map = world;
+  // `world` is the plant the physics and the sensors hold; the robot's map leaves out the
+  // unmapped obstacles and puts the charger where the map says. Only perception, the travel
+  // modes and the planner see the map.
+  const worlds::World& plant = world;
+  const bool mismatch = worlds::differs_from_map(plant);
+  const worlds::World map_copy = mismatch ? worlds::robot_map(plant) : worlds::World{};
+  const worlds::World& map = mismatch ? map_copy : plant;
   const Pose2 staging = worlds::staging_pose(map);
   // A pursuit plans to where the target parks (the world file says where): the reference for
   // a potential-field run, the first path for a path-following one.
@@ -66,13 +70,13 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
                 : make_path_travel(map, planner.name(), settings, first_path);
 
-  PhysicsWorld physics(world);
-  WheelDrive drive(world.robot, config.drive);
-  SensorSuite sensors(world, sensor_params(config), config.seed);
+  PhysicsWorld physics(plant);
+  WheelDrive drive(plant.robot, config.drive);
+  SensorSuite sensors(plant, sensor_params(config), config.seed);
   PerceptionParams perception_params = config.perception;
   perception_params.field_range_m = config.field.sensor_range_m;
   Perceiver perceiver(map, perception_params);
-  EpisodeMetrics metrics(world, result, config.catch_distance_m, config.step.dt_s);
+  EpisodeMetrics metrics(plant, result, config.catch_distance_m, config.step.dt_s);
 
   const double dt = config.step.dt_s;
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
@@ -91,6 +95,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       const SensorReadings readings = sensors.read(physics, t);  // sense
       const Perception& p = perceiver.update(readings);        // estimate
       metrics.compare_estimate(physics, p.pose);
+      metrics.compare_obstacles(p.obstacles);
       worst_health = std::max(worst_health, p.health);  // ok < degraded < lost
       const Pose2 truth = physics.robot_pose();
       const double speed = geom::dot(physics.robot_velocity(), truth.heading());
@@ -105,7 +110,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       }
       if (config.scan_log_period_s > 0 && t >= next_snapshot_s) {
         next_snapshot_s = t + config.scan_log_period_s;
-        result.perception_log.push_back({t, perceiver.last_scan(), p.obstacles});
+        result.perception_log.push_back({t, perceiver.last_scan(), perceiver.tracker().boxes(t), p.layer});
       }
       const Decision d = travel->decide(p);  // decide
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
@@ -116,7 +121,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         if (!result.docked) metrics.measure_final_error(physics);
         break;
       }
-      drive.command(controller::to_wheels(d.twist, world.robot.wheel_base_m), period * dt);  // actuate
+      drive.command(controller::to_wheels(d.twist, plant.robot.wheel_base_m), period * dt);  // actuate
     }
     drive.apply(physics, dt);
     physics.step(config.step);  // step
@@ -135,7 +140,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.wall_follows = counts.wall_follows;
   if (auto final_plan = travel->final_plan()) result.plan = *final_plan;
   result.last_scan = perceiver.last_scan();
-  result.tracked_final = perceiver.current().obstacles;
+  result.tracked_final = perceiver.tracker().boxes(result.time_s);
+  result.layer_final = perceiver.current().layer;
   return result;
 }
 

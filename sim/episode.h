@@ -96,15 +96,18 @@ struct EpisodeResult {
   std::string perception_mode = "sensors";
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
   std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
+  int unmapped_seen = 0;                   ///< unmapped obstacles perception marked at some time (of the plant's)
   ScanView last_scan;                      ///< the last scan as perception placed it
   /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.
   struct PerceptionSnapshot {
     double t_s;
     ScanView scan;
     std::vector<controller::MovingBox> tracked;
+    std::vector<geom::Rect> layer;
   };
   std::vector<PerceptionSnapshot> perception_log;
   std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
+  std::vector<geom::Rect> layer_final;               ///< the local obstacle layer at the end
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the

@@ -3,10 +3,17 @@
 
 #include <cmath>
 
+#include "geometry/predicates.h"
+
 namespace plantsim::sim {
 
 EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s)
-    : plant_(plant), r_(result), catch_distance_m_(catch_distance_m), dt_s_(dt_s), previous_(plant.start.position()) {}
+    : plant_(plant),
+      r_(result),
+      catch_distance_m_(catch_distance_m),
+      dt_s_(dt_s),
+      previous_(plant.start.position()),
+      unmapped_seen_(plant.unmapped.size(), 0) {}
 
 void EpisodeMetrics::before_step(const PhysicsWorld& physics, const ContactState& contact) {
   if (contact.obstacle && !was_touching_obstacle_) {
@@ -46,6 +53,20 @@ void EpisodeMetrics::after_step(const PhysicsWorld& physics) {
 void EpisodeMetrics::compare_estimate(const PhysicsWorld& physics, const Pose2& estimate) {
   r_.localization_error_max_m =
       std::max(r_.localization_error_max_m, geom::distance(physics.robot_position(), estimate.position()));
+}
+
+void EpisodeMetrics::compare_obstacles(const std::vector<controller::MovingBox>& perceived) {
+  for (std::size_t i = 0; i < plant_.unmapped.size(); ++i) {
+    if (unmapped_seen_[i]) continue;
+    // Sensed: some perceived box overlaps it (a face seen is enough; the boxes carry the
+    // tracker's assumed depth and the layer's cell size, so a small tolerance is not needed).
+    for (const auto& b : perceived)
+      if (geom::rects_overlap_open(b.box, plant_.unmapped[i])) {
+        unmapped_seen_[i] = 1;
+        ++r_.unmapped_seen;
+        break;
+      }
+  }
 }
 
 bool EpisodeMetrics::target_caught(const PhysicsWorld& physics) const {

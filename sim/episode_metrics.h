@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <vector>
 
 #include "sim/episode.h"
 
@@ -19,6 +20,8 @@ class EpisodeMetrics {
   void after_step(const PhysicsWorld& physics);
   /// At each control step: how far the estimate is from the truth.
   void compare_estimate(const PhysicsWorld& physics, const Pose2& estimate);
+  /// At each control step: which unmapped obstacles perception's obstacles cover (sensed).
+  void compare_obstacles(const std::vector<controller::MovingBox>& perceived);
   /// True when the moving target is within catch distance of the robot.
   bool target_caught(const PhysicsWorld& physics) const;
   /// The pose error now (for episodes ending without contact).
@@ -33,6 +36,7 @@ class EpisodeMetrics {
   double dt_s_;
   Vec2 previous_;
   std::deque<Vec2> recent_;  // positions after the last few steps
+  std::vector<char> unmapped_seen_;  // per unmapped obstacle of the plant
 };
 
 }  // namespace plantsim::sim

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "geometry/predicates.h"
+
 namespace plantsim::sim {
 namespace {
 
@@ -43,7 +45,7 @@ std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::
 std::string_view to_string(PerceptionMode m) { return m == PerceptionMode::kSensors ? "sensors" : "oracle"; }
 
 Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
-    : map_(map), p_(params), raycaster_(map), ekf_(params.ekf, map.start, raycaster_), tracker_(params.tracker) {
+    : map_(map), p_(params), raycaster_(map), ekf_(params.ekf, map.start, raycaster_), tracker_(params.tracker), layer_(params.layer) {
   now_.pose = map.start;
   now_.odom_pose = map.start;
 }
@@ -76,6 +78,17 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
     if (explained && r <= p_.field_range_m) near_static.push_back(point);
   }
   tracker_.update(unexplained, sensor.position(), scan.t_s);
+  // The layer remembers what stands: returns on a track that moves are left out of it.
+  std::vector<geom::Vec2> marks;
+  const std::vector<controller::MovingBox> tracked = tracker_.boxes(scan.t_s);
+  for (const geom::Vec2& q : unexplained) {
+    bool on_mover = false;
+    for (const auto& b : tracked)
+      on_mover |= geom::norm(b.velocity) > p_.moving_speed_mps && geom::in_closed_rect(b.box.inflated(p_.layer.cell_m), q);
+    if (!on_mover) marks.push_back(q);
+  }
+  layer_.update(scan, sensor, marks);
+  layer_rects_ = layer_.occupied();
   // The field feels each connected stretch of the map's surfaces at its nearest point, as it
   // felt each rectangle at its nearest point in oracle mode.
   static_field_.clear();
@@ -131,6 +144,8 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   }
   if (r.scan) interpret_scan(*r.scan);
   now_.obstacles = tracker_.boxes(r.t_s);
+  now_.layer = layer_rects_;
+  for (const geom::Rect& c : layer_rects_) now_.obstacles.push_back({c, {0, 0}});
   // The static returns of the last scan, and the tracked obstacles with their velocities.
   now_.field = static_field_;
   for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});

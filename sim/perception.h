@@ -15,6 +15,7 @@
 #include "controller/collision_check.h"
 #include "controller/potential_field.h"
 #include "sim/ekf_localizer.h"
+#include "sim/local_obstacle_layer.h"
 #include "sim/map_raycaster.h"
 #include "sim/obstacle_tracker.h"
 #include "sim/sensor_readings.h"
@@ -32,6 +33,8 @@ struct PerceptionParams {
   double target_exclusion_m = 0.6;   ///< returns this close to the beacon's target are the target
   EkfParams ekf;
   TrackerParams tracker;
+  ObstacleLayerParams layer;
+  double moving_speed_mps = 0.3;     ///< tracks faster than this do not mark the layer (they move on)
 };
 
 struct Perception {
@@ -47,7 +50,9 @@ struct Perception {
   bool charging = false;
   BumperReading bumper;
   std::optional<geom::Pose2> charger_in_robot;     ///< docked pose seen, carried to now (robot frame)
-  std::vector<controller::MovingBox> obstacles;    ///< tracked (or, oracle, known) obstacles off the map
+  std::vector<controller::MovingBox> obstacles;    ///< tracked (or, oracle, known) obstacles off the map,
+                                                   ///< and the layer's cells (standing)
+  std::vector<geom::Rect> layer;                   ///< the local obstacle layer's occupied cells, merged
   std::vector<controller::FieldObstacle> field;    ///< what the potential field feels
   std::optional<geom::Vec2> target;                ///< a moving target's centre (map frame)
   geom::Vec2 target_velocity;
@@ -77,9 +82,11 @@ class Perceiver {
   MapRaycaster raycaster_;
   EkfLocalizer ekf_;
   ObstacleTracker tracker_;
+  LocalObstacleLayer layer_;
   Perception now_;
   ScanView scan_view_;
   std::vector<controller::FieldObstacle> static_field_;  // from the last scan
+  std::vector<geom::Rect> layer_rects_;                  // the layer after the last scan
   std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
   std::optional<geom::Vec2> last_target_;
 };

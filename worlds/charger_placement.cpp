@@ -7,14 +7,6 @@
 #include "geometry/predicates.h"
 
 namespace plantsim::worlds {
-namespace {
-
-bool rects_overlap_open(const Rect& a, const Rect& b) {
-  return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
-}
-
-}  // namespace
-
 bool docking_area_clear(const World& world) {
   std::vector<Rect> blockers = world.obstacles;
   for (const Rect& w : geom::surrounding_walls(world.floor, 1.0)) blockers.push_back(w);
@@ -23,7 +15,7 @@ bool docking_area_clear(const World& world) {
   const double r = world.robot.radius_m;
   const double clearance = world.planning_inflation_m();
   for (const Rect& b : blockers) {
-    if (rects_overlap_open(body, b)) return false;
+    if (geom::rects_overlap_open(body, b)) return false;
     if (geom::segment_enters_open_rect(staging.position(), world.charger.position(),
                                        b.inflated(r)))
       return false;

@@ -51,4 +51,22 @@ Pose2 staging_pose(const World& world) {
   return {p.x, p.y, world.charger.yaw};
 }
 
+bool differs_from_map(const World& plant) {
+  const Pose2& o = plant.charger_map_offset;
+  return !plant.unmapped.empty() || o.x != 0 || o.y != 0 || o.yaw != 0;
+}
+
+Pose2 robot_map_charger(const World& plant) {
+  const Pose2& o = plant.charger_map_offset;
+  return {plant.charger.x + o.x, plant.charger.y + o.y, geom::wrap_angle(plant.charger.yaw + o.yaw)};
+}
+
+World robot_map(const World& plant) {
+  World map = plant;
+  map.unmapped.clear();
+  map.charger = robot_map_charger(plant);
+  map.charger_map_offset = {0.0, 0.0, 0.0};
+  return map;
+}
+
 }  // namespace plantsim::worlds

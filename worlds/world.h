@@ -75,6 +75,13 @@ struct World {
   Pose2 charger;                  ///< robot pose when docked (yaw faces the charger)
   double inflation_margin_m = 0.1;  ///< planning clearance beyond the robot radius
   std::vector<MovingObstacle> moving;  ///< not known to the planner; met on the way
+  /// Static obstacles in the plant but not on the robot's map (a pallet left in an aisle): the
+  /// physics and the sensors have them; the planner, the localiser and the controllers only
+  /// know them if perception senses them.
+  std::vector<Rect> unmapped;
+  /// The charger's pose on the robot's map minus its real pose (`charger` is where it really
+  /// stands; a charger re-bolted off its drawing has a non-zero offset). World frame, m and rad.
+  Pose2 charger_map_offset{0.0, 0.0, 0.0};
   /// A moving target to catch (seed 001's pursuit): with one, an episode succeeds when the
   /// robot reaches it, and the charger is not used. It does not collide with anything.
   std::optional<MovingObstacle> target;
@@ -85,6 +92,15 @@ struct World {
   /// Total inflation the planner applies to obstacles and walls.
   double planning_inflation_m() const { return robot.radius_m + inflation_margin_m; }
 };
+
+/// True when the robot's map differs from the plant (unmapped obstacles, a shifted charger).
+bool differs_from_map(const World& plant);
+
+/// The docked pose as the robot's map has it (the charger plus its map offset).
+Pose2 robot_map_charger(const World& plant);
+
+/// The plant as the robot's map has it: no unmapped obstacles, the charger where the map says.
+World robot_map(const World& plant);
 
 /// The charger block in world coordinates as an oriented box: centre, half extents, yaw.
 struct ChargerBody {

@@ -219,6 +219,13 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
     w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger");
   w.inflation_margin_m = in.number_or(doc, "inflation_margin_m", "", w.inflation_margin_m);
   if (w.inflation_margin_m < 0) in.fail("inflation_margin_m", "must not be negative");
+  if (doc.contains("unmapped")) w.unmapped = in.rects(doc["unmapped"], "unmapped");
+  if (doc.contains("charger_map_offset")) {
+    const json& o = doc["charger_map_offset"];
+    if (!o.is_array() || o.size() != 3) in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
+    w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"), in.number(o[1], "charger_map_offset[1]"),
+                            in.number(o[2], "charger_map_offset[2]")};
+  }
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
@@ -297,6 +304,29 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// Unmapped obstacles lie on the floor and leave the start, the docked pose and the charger
+// body free (a pallet dropped on the charger is a different test from a map that is wrong).
+void validate_unmapped(const World& w) {
+  const double r = w.robot.radius_m;
+  const Rect charger_box = charger_body(w).bounding_box();
+  for (std::size_t i = 0; i < w.unmapped.size(); ++i) {
+    const Rect& o = w.unmapped[i];
+    const std::string field = "unmapped[" + std::to_string(i) + "]";
+    if (o.xmin < w.floor.xmin || o.ymin < w.floor.ymin || o.xmax > w.floor.xmax || o.ymax > w.floor.ymax)
+      throw WorldError(w.source, field, "lies outside the floor");
+    for (const auto& [pose, what] : {std::pair{w.start, "the start"}, std::pair{w.charger, "the charger's docked pose"}}) {
+      const double dx = std::max({o.xmin - pose.x, 0.0, pose.x - o.xmax});
+      const double dy = std::max({o.ymin - pose.y, 0.0, pose.y - o.ymax});
+      if (dx * dx + dy * dy < r * r) throw WorldError(w.source, field, std::string("covers ") + what);
+    }
+    if (geom::rects_overlap_open(o, charger_box)) throw WorldError(w.source, field, "covers the charger");
+  }
+}
+
+}  // namespace
+
 void validate_world(const World& w) {
   if (w.floor.width() > kMaxFloorSide_m || w.floor.height() > kMaxFloorSide_m)
     throw WorldError(w.source, "floor",
@@ -309,6 +339,18 @@ void validate_world(const World& w) {
     throw WorldError(w.source, "charger",
                      "no room to dock: the charger body, staging pose or final approach is "
                      "blocked by an obstacle or the floor boundary");
+  validate_unmapped(w);
+  if (differs_from_map(w)) {
+    // The map's charger must itself be a place the robot could dock at, or nothing plans.
+    const World map = robot_map(w);
+    try {
+      check_pose_free(map, map.charger, "charger");
+    } catch (const WorldError& e) {
+      throw WorldError(w.source, "charger_map_offset", std::string("puts the mapped charger where no robot fits: ") + e.what());
+    }
+    if (!docking_area_clear(map))
+      throw WorldError(w.source, "charger_map_offset", "puts the mapped charger where there is no room to dock");
+  }
 }
 
 World parse_world_json(const std::string& text, const std::string& source) {

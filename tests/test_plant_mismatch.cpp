@@ -1,0 +1,151 @@
+// A plant that is not its map: unmapped obstacles and a charger off its mapped pose loaded
+// and refused as the world format says, the robot's map built without them, the local
+// obstacle layer marking and clearing, and an episode through all of it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "planner/planner.h"
+#include "sim/episode.h"
+#include "sim/local_obstacle_layer.h"
+#include "test_paths.h"
+#include "worlds/world_error.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim {
+namespace {
+
+const std::string kMismatch = "worlds/examples/small_plant_mismatch.json";
+
+TEST(PlantMismatch, TheMapLeavesOutUnmappedObstaclesAndMovesTheCharger) {
+  const worlds::World plant = worlds::load_world(test::source_file(kMismatch));
+  ASSERT_EQ(plant.unmapped.size(), 3u);
+  EXPECT_TRUE(worlds::differs_from_map(plant));
+  const worlds::World map = worlds::robot_map(plant);
+  EXPECT_TRUE(map.unmapped.empty());
+  EXPECT_FALSE(worlds::differs_from_map(map));
+  EXPECT_DOUBLE_EQ(map.charger.x, plant.charger.x + 0.03);
+  EXPECT_DOUBLE_EQ(map.charger.y, plant.charger.y - 0.04);
+  EXPECT_DOUBLE_EQ(map.charger.yaw, plant.charger.yaw + 0.05);
+  // The planner is given the map: its obstacles are the mapped ones and the charger's body
+  // where the map puts it.
+  const planner::PlannerInput in = planner::planner_input(plant, true);
+  EXPECT_EQ(in.obstacles.size(), plant.obstacles.size() + 1);
+  const planner::PlannerInput from_map = planner::planner_input(map, true);
+  EXPECT_DOUBLE_EQ(in.obstacles.back().xmin, from_map.obstacles.back().xmin);
+  EXPECT_DOUBLE_EQ(in.obstacles.back().ymin, from_map.obstacles.back().ymin);
+}
+
+class MismatchFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    path_ = (std::filesystem::temp_directory_path() /
+             ("plantsim_mismatch_" + std::to_string(::getpid()) + "_" +
+              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json"))
+                .string();
+  }
+  void TearDown() override { std::filesystem::remove(path_); }
+  void expect_error(const nlohmann::json& j, const std::string& needle) {
+    std::ofstream(path_) << j.dump();
+    try {
+      worlds::load_world(path_);
+      FAIL() << "no error (expected '" << needle << "')";
+    } catch (const worlds::WorldError& e) {
+      EXPECT_NE(std::string(e.what()).find(path_), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  }
+  static nlohmann::json good() { return nlohmann::json::parse(std::ifstream(test::source_file(kMismatch))); }
+  std::string path_;
+};
+
+TEST_F(MismatchFiles, BadUnmappedObstaclesAndOffsetsAreRefusedNamingTheField) {
+  auto j = good();
+  j["unmapped"][1] = {23, 1, 25, 2};
+  expect_error(j, "field 'unmapped[1]': lies outside the floor");
+  j = good();
+  j["unmapped"][0] = {1.0, 6.8, 1.5, 7.2};  // on the start (1.2, 7.0)
+  expect_error(j, "field 'unmapped[0]': covers the start");
+  j = good();
+  j["unmapped"][2] = {23.2, 11.8, 23.4, 12.2};  // on the docked pose (23.5, 12.0)
+  expect_error(j, "field 'unmapped[2]': covers the charger's docked pose");
+  j = good();
+  j["unmapped"][2] = {23.75, 11.9, 23.8, 12.1};  // on the charger block (23.7 .. 23.8)
+  expect_error(j, "field 'unmapped[2]': covers the charger");
+  j = good();
+  j["unmapped"][0] = {3, 2, 1, 5};
+  expect_error(j, "field 'unmapped[0]': needs xmax > xmin");
+  j = good();
+  j["charger_map_offset"] = {0.1, 0.2};
+  expect_error(j, "field 'charger_map_offset': expected [dx, dy, dyaw]");
+  j = good();
+  j["charger_map_offset"] = {0.1, "up", 0};
+  expect_error(j, "field 'charger_map_offset[1]': expected a number");
+  j = good();
+  j["charger_map_offset"] = {3.0, 0.0, 0.0};  // the mapped charger beyond the floor
+  expect_error(j, "field 'charger_map_offset'");
+}
+
+TEST(LocalObstacleLayer, MarksWhatTwoScansSeeAndClearsWhatIsSeenThroughLater) {
+  sim::ObstacleLayerParams p;
+  sim::LocalObstacleLayer layer(p);
+  // A lidar at the origin facing +x, 181 beams over 180 degrees.
+  sim::LidarScan scan;
+  scan.angle_min_rad = -M_PI / 2;
+  scan.angle_increment_rad = M_PI / 180;
+  scan.min_range_m = 0.05;
+  scan.max_range_m = 20;
+  scan.ranges.assign(181, 20.0);
+  const geom::Pose2 sensor{0, 0, 0};
+  // A face at x = 2.03 from y = -0.2 to 0.2 (the beams within +-5.7 degrees).
+  std::vector<geom::Vec2> face;
+  for (int i = 85; i <= 95; ++i) {
+    const double a = scan.angle(static_cast<std::size_t>(i));
+    scan.ranges[static_cast<std::size_t>(i)] = 2.03 / std::cos(a);
+    face.push_back({2.03, 2.03 * std::tan(a)});
+  }
+  layer.update(scan, sensor, face);
+  EXPECT_TRUE(layer.occupied().empty());  // one scan is not enough
+  layer.update(scan, sensor, face);
+  const std::vector<geom::Rect> cells = layer.occupied();
+  ASSERT_EQ(cells.size(), 1u);  // one column of cells, merged
+  // Tight to the returns, not grown to whole cells.
+  EXPECT_NEAR(cells[0].xmin, 2.03, 1e-9);
+  EXPECT_NEAR(cells[0].xmax, 2.03, 1e-9);
+  EXPECT_NEAR(cells[0].ymin, 2.03 * std::tan(-5 * M_PI / 180), 1e-9);
+  // The thing is gone: beams pass where it stood. Evidence 4 is cleared by 4 free views.
+  for (int i = 85; i <= 95; ++i) scan.ranges[static_cast<std::size_t>(i)] = 20.0;
+  layer.update(scan, sensor, {});
+  EXPECT_FALSE(layer.occupied().empty());  // one free view does not erase two sightings
+  for (int k = 0; k < 3; ++k) layer.update(scan, sensor, {});
+  EXPECT_TRUE(layer.occupied().empty());
+  EXPECT_EQ(layer.cells(), 0u);
+  // Dropouts (NaN) and beams stopping short of a cell never clear it.
+  layer.update(scan, sensor, face);
+  layer.update(scan, sensor, face);
+  for (int i = 85; i <= 95; ++i) scan.ranges[static_cast<std::size_t>(i)] = (i % 2) ? NAN : 1.0;
+  for (int k = 0; k < 5; ++k) layer.update(scan, sensor, {});
+  EXPECT_EQ(layer.occupied().size(), 1u);
+}
+
+TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
+  const worlds::World plant = worlds::load_world(test::source_file(kMismatch));
+  auto planner = planner::make_planner("vg", planner::planner_input(plant, true));
+  sim::EpisodeConfig c;
+  c.timeout_s = 300;
+  const sim::EpisodeResult r = sim::run_episode(plant, *planner, c);
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_EQ(r.unmapped_seen, 3);
+  EXPECT_GE(r.replans, 1);
+  // Errors against the real charger, 5 cm and 3 degrees from where the map has it.
+  EXPECT_LT(r.position_error_m, 0.02);
+  EXPECT_LT(r.heading_error_deg, 2.0);
+  EXPECT_FALSE(r.layer_final.empty());
+}
+
+}  // namespace
+}  // namespace plantsim
