@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_batch_command(app));
   remember(plantsim::app::add_merge_command(app));
   remember(plantsim::app::add_generate_command(app));
+  remember(plantsim::app::add_vary_command(app));
   remember(plantsim::app::add_coverage_command(app));
   try {
     app.parse(argc, argv);

@@ -19,6 +19,7 @@
 #include <set>
 #include <thread>
 
+#include "batch/plant_faults.h"
 #include "planner/planner.h"
 #include "render/comparison_figure.h"
 #include "render/png_io.h"
@@ -33,6 +34,14 @@ namespace plantsim::batch {
 namespace {
 
 using nlohmann::json;
+
+// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
 
 // Reads the complete lines of a JSONL file; a torn last line (a killed run) is cut off.
 std::vector<std::string> read_complete_lines(const std::string& path, bool repair) {
@@ -64,63 +73,26 @@ std::optional<geom::Pose2> random_start(const worlds::World& w, planner::Planner
   for (int attempt = 0; attempt < 2000; ++attempt) {
     const geom::Pose2 p{ux(rng), uy(rng), yaw(rng)};
     if (geom::distance(p.position(), w.charger.position()) < 2.0) continue;
-    bool near_moving = false;  // not starting against an actor's box
+    bool too_close = false;  // not starting against an actor's box
     for (const auto& m : w.moving) {
       const geom::Rect b = m.box_at(0.0);
       const double dx = std::max({b.xmin - p.x, 0.0, p.x - b.xmax}), dy = std::max({b.ymin - p.y, 0.0, p.y - b.ymax});
-      near_moving |= std::hypot(dx, dy) < w.robot.radius_m + 1.0;
+      too_close |= std::hypot(dx, dy) < w.robot.radius_m + 1.0;
     }
-    if (near_moving) continue;
+    for (const geom::Rect& u : w.unmapped) {  // not inside (or against) a box the map lacks
+      const double dx = std::max({u.xmin - p.x, 0.0, p.x - u.xmax}), dy = std::max({u.ymin - p.y, 0.0, p.y - u.ymax});
+      too_close |= std::hypot(dx, dy) < w.robot.radius_m + 0.3;
+    }
+    if (too_close) continue;
     if (vg.plan(p.position(), staging).status == planner::PlanStatus::kOk) return p;
   }
   return std::nullopt;
 }
 
-// A person crossing the planned path at its middle, timed to meet the robot there.
-worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector<geom::Vec2>& plan) {
-  double total = 0;
-  for (std::size_t i = 1; i < plan.size(); ++i) total += geom::distance(plan[i - 1], plan[i]);
-  double left = 0.5 * total;
-  geom::Vec2 at = plan.front(), dir{1, 0};
-  for (std::size_t i = 1; i < plan.size(); ++i) {
-    const double seg = geom::distance(plan[i - 1], plan[i]);
-    if (seg >= left && seg > 0) {
-      dir = (1.0 / seg) * (plan[i] - plan[i - 1]);
-      at = plan[i - 1] + left * dir;
-      break;
-    }
-    left -= seg;
-  }
-  const geom::Vec2 across{-dir.y, dir.x};
-  auto clamp = [&](geom::Vec2 p) {
-    return geom::Vec2{std::clamp(p.x, w.floor.xmin + 0.3, w.floor.xmax - 0.3), std::clamp(p.y, w.floor.ymin + 0.3, w.floor.ymax - 0.3)};
-  };
-  worlds::MovingObstacle m;
-  m.name = "crossing person";
-  m.width_m = m.height_m = 0.6;
-  // Up to 3 m each side of the path, but never through an obstacle: people walk round walls
-  // (a person stepping out of a solid block would be a sensing test no robot can pass).
-  auto free_at = [&](geom::Vec2 c) {
-    for (const geom::Rect& r : w.obstacles)
-      if (geom::in_open_rect(r.inflated(0.5 * m.width_m), c)) return false;
-    return true;
-  };
-  auto reach = [&](double side) {
-    double s = 0;
-    while (s < 3.0 && free_at(clamp(at + (side * (s + 0.05)) * across))) s += 0.05;
-    return clamp(at + (side * s) * across);
-  };
-  const geom::Vec2 from = reach(-1.0), to = reach(1.0);
-  m.waypoints = {from, to};
-  m.speed_mps = 0.8;
-  // Timed to reach the path as the robot does.
-  const double to_path = geom::distance(from, at) / m.speed_mps;
-  m.start_time_s = std::max(0.0, 0.5 * total / 0.6 - to_path);
-  return m;
-}
-
-std::string record_line(const Episode& e, const BatchSpec& spec, const std::string& world_name,
-                        const sim::EpisodeResult& r, double optimal_m, const geom::Pose2& start) {
+std::string record_line(const Episode& e, const BatchSpec& spec, const worlds::World& plant,
+                        const sim::EpisodeResult& r, double optimal_m) {
+  const std::string& world_name = plant.name;
+  const geom::Pose2& start = plant.start;
   nlohmann::ordered_json j;
   j["index"] = e.index;
   j["id"] = e.id;
@@ -128,10 +100,19 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const std::stri
   j["planner"] = spec.planners[e.planner];
   j["controller"] = spec.controllers[e.controller].name;
   j["fault"] = spec.faults[e.fault].name;
+  if (!spec.faults[e.fault].sweep_parameter.empty()) {
+    j["sweep_parameter"] = spec.faults[e.fault].sweep_parameter;
+    j["sweep_value"] = spec.faults[e.fault].sweep_value;
+  }
   j["seed"] = e.seed;
   j["start"] = {start.x, start.y, start.yaw};
   sim::add_episode_metrics(j, r);
   j["optimal_length_m"] = optimal_m;
+  if (!plant.unmapped.empty()) {  // the plant as this episode met it, to replay it
+    auto boxes = json::array();
+    for (const geom::Rect& u : plant.unmapped) boxes.push_back({u.xmin, u.ymin, u.xmax, u.ymax});
+    j["unmapped"] = boxes;
+  }
   return j.dump();
 }
 
@@ -172,6 +153,8 @@ void write_outputs(const std::vector<std::string>& lines, const std::string& out
                    const std::vector<std::string>& planners) {
   const std::string csv = summary_csv(lines);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
+  const std::string sweep = sweep_csv(lines);
+  if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
   render::Report report;
   report.title = title;
   report.command = command;
@@ -191,6 +174,7 @@ void write_outputs(const std::vector<std::string>& lines, const std::string& out
     start = end == std::string::npos ? csv.size() : end + 1;
   }
   report.files = {"episodes.jsonl", "summary.csv"};
+  if (!sweep.empty()) report.files.push_back("sweep.csv");
   if (worlds_for_figures) {
     for (const worlds::World& w : *worlds_for_figures) {
       std::vector<render::ComparisonPanel> panels;
@@ -281,6 +265,67 @@ std::string summary_csv(const std::vector<std::string>& lines) {
   return out;
 }
 
+std::string sweep_csv(const std::vector<std::string>& lines) {
+  struct Acc {
+    std::int64_t n = 0, docked = 0, charging = 0, collisions = 0, robot_collisions = 0, failed_with_collision = 0;
+    std::int64_t stops = 0, replans = 0;
+    double time = 0, pos = 0;
+  };
+  std::string parameter;
+  std::vector<std::string> order;  // values as first met
+  std::map<std::string, Acc> acc;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    if (!j.contains("sweep_parameter")) continue;
+    parameter = j["sweep_parameter"].get<std::string>();
+    const std::string value = j["sweep_value"].get<std::string>();
+    if (!acc.count(value)) order.push_back(value);
+    Acc& a = acc[value];
+    ++a.n;
+    const bool docked = j["docked"].get<bool>();
+    const int collisions = j["collisions"].get<int>();
+    a.docked += docked;
+    a.charging += j.value("charging", false);
+    a.collisions += collisions;
+    a.robot_collisions += j.value("collisions_robot_moving", 0);
+    a.failed_with_collision += !docked && collisions > 0;
+    a.stops += j.value("stops", 0);
+    a.replans += j.value("replans", 0);
+    a.time += j["time_s"].get<double>();
+    if (docked) a.pos += j["position_error_m"].get<double>();
+  }
+  if (order.empty()) return "";
+  // Numeric values in increasing order, so that the rows trace a curve.
+  auto numeric = [](const std::string& s, double& v) {
+    char* end = nullptr;
+    v = std::strtod(s.c_str(), &end);
+    return end && *end == '\0' && end != s.c_str();
+  };
+  double x = 0, y = 0;
+  if (std::all_of(order.begin(), order.end(), [&](const std::string& s) { return numeric(s, x); }))
+    std::stable_sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) {
+      numeric(a, x);
+      numeric(b, y);
+      return x < y;
+    });
+  std::string out =
+      "parameter,value,episodes,docked,success_rate,ci95_low,ci95_high,charging,collisions,collisions_robot_moving,"
+      "failed_with_collision,mean_stops,mean_replans,mean_time_s,mean_position_error_mm\n";
+  for (const std::string& value : order) {
+    const Acc& a = acc[value];
+    const auto [lo, hi] = wilson_interval(a.docked, a.n);
+    char row[600];
+    std::snprintf(row, sizeof row, ",%lld,%lld,%.4f,%.4f,%.4f,%lld,%lld,%lld,%lld,%.3f,%.3f,%.2f,%.3f\n",
+                  static_cast<long long>(a.n), static_cast<long long>(a.docked), static_cast<double>(a.docked) / a.n, lo,
+                  hi, static_cast<long long>(a.charging), static_cast<long long>(a.collisions),
+                  static_cast<long long>(a.robot_collisions), static_cast<long long>(a.failed_with_collision),
+                  static_cast<double>(a.stops) / a.n, static_cast<double>(a.replans) / a.n, a.time / a.n,
+                  a.docked ? 1000 * a.pos / a.docked : 0.0);
+    out += csv_field(parameter) + "," + csv_field(value) + row;
+  }
+  return out;
+}
+
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   // Everything that can be wrong is found before the first episode.
   const BatchSpec spec = load_batch_spec(scenario_path);
@@ -291,6 +336,18 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   for (const std::string& f : spec.world_files) {
     worlds.push_back(worlds::load_world(f));
     names.push_back(worlds.back().name);
+  }
+  // A charger offset must leave the mapped charger dockable on every world it is applied to.
+  for (const FaultSetting& f : spec.faults) {
+    if (!f.charger_map_offset) continue;
+    for (worlds::World w : worlds) {
+      w.charger_map_offset = *f.charger_map_offset;
+      try {
+        worlds::validate_world(w);
+      } catch (const worlds::WorldError& e) {
+        throw worlds::WorldError(spec.source, "faults." + f.name + ".charger_map_offset", "on " + w.name + ": " + e.what());
+      }
+    }
   }
   std::vector<sim::EpisodeConfig> configs;  // controller x fault
   for (const auto& c : spec.controllers)
@@ -324,17 +381,22 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   auto worker = [&]() {
     // Planners are built per thread (their caches are not shared) and kept for the batch.
-    std::map<std::pair<std::size_t, std::string>, std::unique_ptr<planner::Planner>> planners;
-    auto planner_for = [&](std::size_t w, const std::string& name) -> planner::Planner& {
-      auto& p = planners[{w, name}];
-      if (!p) p = planner::make_planner(name, planner::planner_input(worlds[w], true));
+    // A fault moving the mapped charger has its own (the charger's body is on the map).
+    std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>> planners;
+    auto planner_for = [&](const worlds::World& w, std::size_t world, const std::string& name,
+                           std::size_t fault) -> planner::Planner& {
+      const std::size_t key = spec.faults[fault].charger_map_offset ? fault : spec.faults.size();
+      auto& p = planners[{world, name, key}];
+      if (!p) p = planner::make_planner(name, planner::planner_input(w, true));
       return *p;
     };
     try {
       for (std::size_t k = next++; k < todo.size(); k = next++) {
         const Episode& e = todo[k];
         worlds::World w = worlds[e.world];
-        planner::Planner& exact = planner_for(e.world, "vg");
+        const FaultSetting& fault = spec.faults[e.fault];
+        if (fault.charger_map_offset) w.charger_map_offset = *fault.charger_map_offset;
+        planner::Planner& exact = planner_for(w, e.world, "vg", e.fault);
         if (spec.random_starts) {
           const auto s = random_start(w, exact, e.seed, e.world);
           if (!s) throw std::runtime_error(w.name + ": no free start with a path to the charger");
@@ -343,10 +405,14 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
         const planner::PlanResult optimal = exact.plan(w.start.position(), worlds::staging_pose(w).position());
         sim::EpisodeConfig config = configs[e.controller * spec.faults.size() + e.fault];
         config.seed = e.seed;
-        if (spec.faults[e.fault].crossing_obstacle && optimal.status == planner::PlanStatus::kOk)
-          w.moving.push_back(crossing_person(w, optimal.path));
-        const sim::EpisodeResult r = sim::run_episode(w, planner_for(e.world, spec.planners[e.planner]), config);
-        const std::string line = record_line(e, spec, w.name, r, optimal.length, w.start) + "\n";
+        if (optimal.status == planner::PlanStatus::kOk) {
+          if (fault.unmapped_obstacles > 0)
+            w.unmapped = unmapped_across_path(w, optimal.path, fault.unmapped_obstacles, e.seed * 7919ULL + e.world);
+          if (fault.crossing_obstacle) w.moving.push_back(crossing_person(w, optimal.path));
+          if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
+        }
+        const sim::EpisodeResult r = sim::run_episode(w, planner_for(w, e.world, spec.planners[e.planner], e.fault), config);
+        const std::string line = record_line(e, spec, w, r, optimal.length) + "\n";
         {
           std::lock_guard lock(write_mutex);
           std::fwrite(line.data(), 1, line.size(), out);

@@ -34,6 +34,10 @@ std::int64_t merge_batches(const std::vector<std::string>& dirs, const std::stri
 /// Per-configuration summary (CSV text) of JSONL episode records.
 std::string summary_csv(const std::vector<std::string>& jsonl_lines);
 
+/// One row per value of a swept fault parameter, over every world, planner and controller
+/// (CSV text); empty when the records come from no sweep.
+std::string sweep_csv(const std::vector<std::string>& jsonl_lines);
+
 /// Wilson score interval for k successes in n trials (95 %: z = 1.96).
 std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double z = 1.96);
 

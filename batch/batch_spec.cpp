@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -43,6 +44,85 @@ std::string overrides_json(const YAML::Node& node, const std::string& source, co
   const std::string text = convert(node).dump();
   sim::parse_episode_config(text, source + " (" + field + ")");  // throws on a bad key or value
   return text;
+}
+
+// The keys of a fault that change the plant rather than the episode config; removed from
+// `body` as they are read.
+void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& source, const std::string& field) {
+  if (!body.IsMap()) return;
+  auto flag = [&](const char* key, bool& out) {
+    if (!body[key]) return;
+    try {
+      out = body[key].as<bool>();
+    } catch (const YAML::Exception&) {
+      throw WorldError(source, field + "." + key, "expected true or false");
+    }
+    body.remove(key);
+  };
+  flag("crossing_obstacle", f.crossing_obstacle);
+  flag("crossing_final_approach", f.crossing_final_approach);
+  if (body["unmapped_obstacles"]) {
+    long n = -1;
+    try {
+      n = body["unmapped_obstacles"].as<long>();
+    } catch (const YAML::Exception&) {
+    }
+    if (n < 0 || n > 50) throw WorldError(source, field + ".unmapped_obstacles", "expected a whole number from 0 to 50");
+    f.unmapped_obstacles = static_cast<int>(n);
+    body.remove("unmapped_obstacles");
+  }
+  if (body["charger_map_offset"]) {
+    const YAML::Node o = body["charger_map_offset"];
+    const std::string where = field + ".charger_map_offset";
+    if (!o.IsSequence() || o.size() != 3) throw WorldError(source, where, "expected [dx, dy, dyaw] (m, m, rad)");
+    double v[3];
+    for (int i = 0; i < 3; ++i) {
+      try {
+        v[i] = o[i].as<double>();
+      } catch (const YAML::Exception&) {
+        throw WorldError(source, where + "[" + std::to_string(i) + "]", "expected a number");
+      }
+      if (!std::isfinite(v[i])) throw WorldError(source, where + "[" + std::to_string(i) + "]", "must be finite");
+    }
+    if (std::hypot(v[0], v[1]) > 0.5 || std::fabs(v[2]) > 0.5)
+      throw WorldError(source, where, "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
+    f.charger_map_offset = geom::Pose2{v[0], v[1], v[2]};
+    body.remove("charger_map_offset");
+  }
+}
+
+// A swept value as the fault it makes: plant keys directly, anything else as a dotted
+// episode-config key ("drive.tyre_friction").
+YAML::Node sweep_override(const std::string& parameter, const YAML::Node& value) {
+  YAML::Node body(YAML::NodeType::Map);
+  const auto dot = parameter.find('.');
+  if (dot == std::string::npos) {
+    body[parameter] = value;
+  } else {
+    YAML::Node section(YAML::NodeType::Map);
+    section[parameter.substr(dot + 1)] = value;
+    body[parameter.substr(0, dot)] = section;
+  }
+  return body;
+}
+
+std::string value_text(const YAML::Node& v) {
+  if (v.IsScalar()) return v.Scalar();
+  YAML::Emitter e;
+  e << YAML::Flow << v;
+  return e.c_str();
+}
+
+// Merges two override mappings (b wins).
+YAML::Node merged(const YAML::Node& a, const YAML::Node& b) {
+  YAML::Node out = a.IsMap() ? YAML::Clone(a) : YAML::Node(YAML::NodeType::Map);
+  if (!b.IsMap()) return out;
+  for (const auto& kv : b) {
+    const std::string key = kv.first.as<std::string>();
+    if (kv.second.IsMap() && out[key] && out[key].IsMap()) out[key] = merged(out[key], kv.second);
+    else out[key] = YAML::Clone(kv.second);
+  }
+  return out;
 }
 
 }  // namespace
@@ -86,21 +166,58 @@ BatchSpec load_batch_spec(const std::string& path) {
   } else {
     s.controllers = {{"default", "{}"}};
   }
+  std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
   if (doc["faults"]) {
     if (!doc["faults"].IsMap()) throw WorldError(path, "faults", "expected a mapping name: {overrides}");
-    for (const auto& kv : doc["faults"]) {
-      const std::string name = kv.first.as<std::string>();
-      YAML::Node body = YAML::Clone(kv.second);
-      FaultSetting f{name, "{}", false};
-      if (body.IsMap() && body["crossing_obstacle"]) {
-        f.crossing_obstacle = body["crossing_obstacle"].as<bool>();
-        body.remove("crossing_obstacle");
+    for (const auto& kv : doc["faults"]) bodies.emplace_back(kv.first.as<std::string>(), YAML::Clone(kv.second));
+  }
+  if (doc["sweep"]) {
+    // One fault per value (per fault, when faults are given too): success-rate curves.
+    const YAML::Node sw = doc["sweep"];
+    if (!sw.IsMap() || !sw["parameter"] || !sw["parameter"].IsScalar())
+      throw WorldError(path, "sweep", "expected {parameter: <name>, values: [...]}");
+    const std::string parameter = sw["parameter"].Scalar();
+    if (!sw["values"] || !sw["values"].IsSequence() || sw["values"].size() == 0)
+      throw WorldError(path, "sweep.values", "expected a non-empty list of values");
+    if (sw["values"].size() > 100) throw WorldError(path, "sweep.values", "more than 100 values");
+    s.sweep_parameter = parameter;
+    if (bodies.empty()) bodies.emplace_back("", YAML::Node(YAML::NodeType::Map));
+    std::vector<std::pair<std::string, YAML::Node>> swept;
+    std::vector<std::string> values;
+    for (const auto& v : sw["values"]) values.push_back(value_text(v));
+    for (const auto& [name, body] : bodies)
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        YAML::Node one = merged(body, sweep_override(parameter, sw["values"][i]));
+        swept.emplace_back((name.empty() ? "" : name + " ") + parameter + "=" + values[i], one);
       }
-      f.json = overrides_json(body, path, "faults." + name);
-      s.faults.push_back(f);
+    bodies = std::move(swept);
+    try {
+      // The parameter must be a plant key or a config key: try the first value.
+      YAML::Node probe = YAML::Clone(sweep_override(parameter, sw["values"][0]));
+      FaultSetting f;
+      take_plant_keys(probe, f, path, "sweep.values[0]");
+      overrides_json(probe, path, "sweep");
+    } catch (const WorldError& e) {
+      throw WorldError(path, "sweep.parameter", "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
     }
-  } else {
-    s.faults = {{"none", "{}", false}};
+  }
+  for (auto& [name, body] : bodies) {
+    FaultSetting f;
+    f.name = name;
+    f.json = "{}";
+    take_plant_keys(body, f, path, "faults." + name);
+    f.json = overrides_json(body, path, "faults." + name);
+    if (!s.sweep_parameter.empty()) {
+      f.sweep_parameter = s.sweep_parameter;
+      f.sweep_value = name.substr(name.rfind('=') + 1);
+    }
+    s.faults.push_back(f);
+  }
+  if (s.faults.empty()) {
+    FaultSetting none;
+    none.name = "none";
+    none.json = "{}";
+    s.faults.push_back(none);
   }
   const YAML::Node seeds = doc["seeds"];
   if (!seeds) throw WorldError(path, "seeds", "missing (a count, or a list of seeds)");

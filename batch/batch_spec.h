@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,10 +18,15 @@ struct NamedConfig {
   std::string json;  ///< episode-config overrides (docs/config.md), "{}" for none
 };
 
+/// A fault: episode-config overrides, and changes to the plant that make it differ from the map.
 struct FaultSetting {
   std::string name;
   std::string json;              ///< episode-config overrides (noise, slip, detection noise)
   bool crossing_obstacle = false;  ///< a person crosses the planned path as the robot arrives
+  bool crossing_final_approach = false;  ///< a person crosses the final approach as the robot docks
+  int unmapped_obstacles = 0;    ///< boxes the map lacks, placed across the optimal path
+  std::optional<geom::Pose2> charger_map_offset;  ///< the charger's mapped pose minus its real one
+  std::string sweep_parameter, sweep_value;  ///< when the fault is one value of a sweep
 };
 
 struct BatchSpec {
@@ -29,7 +35,8 @@ struct BatchSpec {
   std::vector<std::string> world_files;
   std::vector<std::string> planners;
   std::vector<NamedConfig> controllers;
-  std::vector<FaultSetting> faults;
+  std::vector<FaultSetting> faults;   ///< after expanding the sweep, if any (one per value and fault)
+  std::string sweep_parameter;        ///< the swept parameter, or empty
   std::vector<std::uint64_t> seeds;
   bool random_starts = true;          ///< each seed draws a free start; else the world's start
 };

@@ -56,13 +56,84 @@ void DockingController::use_detection(const Pose2& seen) {
   dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
 }
 
+DockingCommand DockingController::recover(const DockingInput& in) {
+  DockingCommand out;
+  out.phase = phase_;
+  out.blocked = true;
+  // Stopped until the estimate has settled: nothing touching, localised, for a while. A robot
+  // that never settles gives up where it stands.
+  const bool unsettled = in.displaced || in.bumper_front || in.bumper_rear || !in.localized;
+  settled_s_ = unsettled ? 0.0 : settled_s_ + in.dt_s;
+  unsettled_s_ += in.dt_s;
+  if (settled_s_ >= params_.settle_s) {
+    // From wherever it now is: travelling again, the charger placed anew at the staging pose
+    // (the odometry never saw the shove, so the dock estimate in its frame is stale).
+    recovering_ = false;
+    ++recoveries_;
+    phase_ = DockPhase::kTravel;
+    dock_placed_ = false;
+    pressing_ = false;
+    rejected_detection_.reset();
+    out.recover_requested = true;
+    out.phase = phase_;
+  } else if (unsettled_s_ > params_.stuck_timeout_s) {
+    recovering_ = false;
+    phase_ = DockPhase::kFailed;
+    out.phase = phase_;
+  }
+  return out;
+}
+
+bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
+  std::vector<MovingBox> movers;
+  for (const MovingBox& b : in.nearby_obstacles)
+    if (geom::norm(b.velocity) > 0.2) movers.push_back(b);
+  if (movers.empty() || !position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
+                                             movers, params_.yield_horizon_s))
+    return false;
+  const Twist back{-params_.yield_speed_mps, 0.0};
+  out.twist = guard(in, back, false) ? back : Twist{};
+  out.blocked = true;
+  return true;
+}
+
 DockingCommand DockingController::step(const DockingInput& in) {
+  const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed;
+  if (in.displaced && docking && !pressing_ && !recovering_) {
+    recovering_ = true;
+    settled_s_ = unsettled_s_ = 0;
+  }
+  if (recovering_) return recover(in);
   // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
   if (in.charger_in_robot && dock_placed_) use_detection(geom::compose(in.odom_pose, *in.charger_in_robot));
   DockingCommand out = decide(in);
   // The bumper overrides every phase: never push on into what it touches.
   if ((in.bumper_front && out.twist.v_mps > 0) || (in.bumper_rear && out.twist.v_mps < 0)) out.twist.v_mps = 0;
   return out;
+}
+
+bool DockingController::guard(const DockingInput& in, const Twist& twist, bool spare_charger) {
+  std::vector<MovingBox> boxes;
+  boxes.reserve(in.nearby_obstacles.size());
+  // The charger's block as the dock estimate places it in the map frame: what is sensed
+  // there is the charger (a charger off its mapped pose returns off the map), not a hazard.
+  const Pose2 dock_in_map = geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
+  const Vec2 charger_at = dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
+  for (const MovingBox& b : in.nearby_obstacles)
+    if (!spare_charger || distance_to_box(charger_at, b.box) > 0.25) boxes.push_back(b);
+  const double v = std::max(std::fabs(twist.v_mps), std::fabs(in.speed_mps));
+  const double ahead = v * v / (2.0 * params_.max_decel_mps2) + params_.check_extra_m;
+  if (arc_clear(in.pose, twist, std::max(v, 0.1), ahead, params_.footprint_radius_m + params_.safety_margin_m, boxes))
+    return true;
+  if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
+  was_blocked_ = true;
+  clear_time_s_ = 0;
+  return false;
+}
+
+void DockingController::note_clear(double dt_s) {
+  was_blocked_ = false;
+  clear_time_s_ += dt_s;
 }
 
 DockingCommand DockingController::decide(const DockingInput& in) {
@@ -74,7 +145,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       out.twist = t.twist;
       // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
       const double v = std::max(std::fabs(t.twist.v_mps), std::fabs(in.speed_mps));
-      const double ahead = v * v / (2.0 * params_.max_decel_mps2) + params_.check_extra_m;
+      // Never beyond the corner where it will stop and turn in place: a straight arc past it
+      // would clip what the path itself turns away from.
+      const double braking = v * v / (2.0 * params_.max_decel_mps2);
+      const double ahead = std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
       // Slow (starting or slowing) robots take longer to get there: never assume less than
       // a walking pace's worth of time for the obstacles to move.
       const double travel_speed = std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
@@ -140,6 +214,16 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         // Reverse straight out, holding the axis heading; the next approach corrects offsets.
         const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
         out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
+        if (!guard(in, out.twist, false)) {
+          // Something behind: wait for it; stopped for good (failed) if it never goes.
+          out.twist = {};
+          out.blocked = true;
+          stuck_time_s_ += in.dt_s;
+          if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
+        } else {
+          stuck_time_s_ = 0;
+          note_clear(in.dt_s);
+        }
       }
       break;
     }
@@ -153,12 +237,27 @@ DockingCommand DockingController::decide(const DockingInput& in) {
 
 DockingCommand DockingController::approach(const DockingInput& in) {
   DockingCommand out;
-  if (in.charger_contact) {
-    if (in.charging) {
-      phase_ = DockPhase::kDocked;
-    } else {
+  if (in.charging) {
+    phase_ = DockPhase::kDocked;
+    pressing_ = false;
+    return out;
+  }
+  if (in.charger_contact || pressing_) {
+    // The pads touch: hold them pressed, square to the charger, until it reports charging.
+    if (!pressing_) press_time_s_ = 0;
+    pressing_ = true;
+    press_time_s_ += in.dt_s;
+    if (press_time_s_ > params_.press_timeout_s) {
+      pressing_ = false;
       miss();
+      return out;
     }
+    out.twist = {params_.press_speed_mps, 0.0};
+    return out;
+  }
+  if (in.bumper_front) {
+    // Touched something that is not the pads (the charger's side, an obstacle): back off.
+    miss();
     return out;
   }
   const Vec2 rel = in_dock_frame(in.odom_pose.position());
@@ -176,6 +275,14 @@ DockingCommand DockingController::approach(const DockingInput& in) {
   const double curvature = 2.0 * c.y / d2;
   const double v = params_.approach_speed_mps;
   out.twist = {v, v * curvature};
+  if (yield(in, out)) return out;  // someone walking into the approach: out of their way
+  if (!guard(in, out.twist, true)) {
+    // Something between the robot and the charger: wait (the approach clock runs on).
+    out.twist = {};
+    out.blocked = true;
+  } else {
+    note_clear(in.dt_s);
+  }
   return out;
 }
 

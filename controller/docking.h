@@ -1,7 +1,9 @@
 // The docking manoeuvre as a state machine: travel along the planned path to the staging
 // pose, turn onto the charger's approach axis, approach slowly while steering onto the axis,
-// and on contact either report docked (the charger says it is charging) or back off to the
-// staging pose and retry. Travel follows the plan in the map frame (localised pose); from the
+// and when the pads touch, hold them pressed until the charger says it is charging (docked),
+// or back off to the staging pose and retry. The arc check and the bumper guard every phase:
+// the approach and the back-off stop for what they sense (the charger itself excepted), and
+// the bumper forbids pushing on into anything but the pads. Travel follows the plan in the map frame (localised pose); from the
 // staging pose on, everything happens in the odometry frame, which never jumps: the dock is
 // placed there from the map once, then re-anchored by every charger detection, which removes
 // localisation error and odometry drift from the final approach.
@@ -32,6 +34,12 @@ struct DockingParams {
   double detection_gate_m = 0.1;        ///< a detection further than this from the dock estimate is
                                         ///< used only when the one before it agrees (outliers are single)
   double approach_timeout_s = 40.0;     ///< an approach lasting longer counts as a miss
+  double press_speed_mps = 0.02;        ///< creep into the pads while they are touched, until charging
+  double press_timeout_s = 1.5;         ///< pressed this long without charging: a miss
+  double stuck_timeout_s = 20.0;        ///< approach or back-off blocked (or unsettled after a shove) this
+                                        ///< long: give up, stopped
+  double settle_s = 1.0;                ///< after a displacement: stopped, localised and untouched this long
+                                        ///< before recovering (a new way to the staging pose)
   // Moving obstacles met while travelling.
   double footprint_radius_m = 0.2;      ///< robot disk, for the arc check (set from the world)
   double safety_margin_m = 0.15;        ///< extra clearance the arc must keep
@@ -48,12 +56,14 @@ struct DockingInput {
   Pose2 odom_pose;                 ///< pose in the continuous odometry frame
   double speed_mps = 0;            ///< estimated forward speed
   double dt_s = 0;                 ///< control period
-  bool charger_contact = false;    ///< contacts touch the charger
+  bool charger_contact = false;    ///< the charger's pads touch the robot's contacts
   bool charging = false;           ///< the charger reports a good connection
   std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
   std::vector<MovingBox> nearby_obstacles;  ///< sensed moving obstacles, map frame
   bool bumper_front = false;       ///< the bumper is pressed ahead of the axle ...
   bool bumper_rear = false;        ///< ... or behind it
+  bool displaced = false;          ///< moved without its wheels (shoved, slid) or touched something
+  bool localized = true;           ///< the estimate is healthy and tight enough to plan from
 };
 
 struct DockingCommand {
@@ -62,6 +72,8 @@ struct DockingCommand {
   double cross_track_error_m = 0;  ///< while travelling
   bool blocked = false;            ///< stopped because the arc ahead is not clear
   bool replan_requested = false;   ///< blocked long enough: plan again around what is seen
+  bool recover_requested = false;  ///< settled after a displacement: plan a new way to the staging pose
+                                   ///< (the controller is travelling again; give it the path)
 };
 
 class DockingController {
@@ -74,6 +86,8 @@ class DockingController {
   DockPhase phase() const { return phase_; }
   int retries() const { return retries_; }
   int stops() const { return stops_; }
+  int recoveries() const { return recoveries_; }
+  bool recovering() const { return recovering_; }
   /// The docked pose as the controller currently believes it, in the odometry frame.
   const Pose2& dock_estimate() const { return dock_odom_; }
   /// Replaces the path still to travel (after a replan); only while travelling.
@@ -82,9 +96,17 @@ class DockingController {
  private:
   DockingCommand decide(const DockingInput& in);
   DockingCommand approach(const DockingInput& in);
+  DockingCommand recover(const DockingInput& in);
+  /// Backs straight away from a moving obstacle about to reach the robot, if the way back is
+  /// clear; false when nothing threatens.
+  bool yield(const DockingInput& in, DockingCommand& out);
   Vec2 in_dock_frame(Vec2 p) const;
   void miss();
   void use_detection(const Pose2& seen_in_odom);
+  /// False (and the stop counted) when the arc of `twist` meets something sensed, leaving out
+  /// what lies at the charger when `spare_charger`.
+  bool guard(const DockingInput& in, const Twist& twist, bool spare_charger);
+  void note_clear(double dt_s);
 
   PurePursuit tracker_;
   DockingParams params_;
@@ -95,6 +117,13 @@ class DockingController {
   int retries_ = 0;
   bool giving_up_ = false;  // the last back-off before failing
   double approach_time_s_ = 0;
+  double press_time_s_ = 0;   // holding the pads
+  bool pressing_ = false;
+  double stuck_time_s_ = 0;   // approach or back-off blocked
+  bool recovering_ = false;   // stopped after a displacement, waiting to settle
+  double settled_s_ = 0;
+  double unsettled_s_ = 0;
+  int recoveries_ = 0;
   double blocked_time_s_ = 0;
   bool was_blocked_ = false;
   double clear_time_s_ = 1e9;  // driven unblocked since the last block

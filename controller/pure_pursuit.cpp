@@ -56,6 +56,7 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   // Slow down for the path's end and for sharp corners, where the robot turns in place.
   const double to_stop = std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad,
                                                                       p.approach_slowdown_distance_m));
+  out.straight_ahead_m = std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad, 5.0));
   if (to_stop < p.approach_slowdown_distance_m)
     v = std::min(v, p.max_linear_speed_mps * to_stop / p.approach_slowdown_distance_m);
   v = std::max(v, p.min_approach_speed_mps);

@@ -34,6 +34,8 @@ struct TrackingCommand {
   bool goal_reached = false;
   double cross_track_error_m = 0;  ///< distance from the path (estimated pose)
   double carrot_bearing_rad = 0;   ///< where the carrot lies, robot frame (0: dead ahead)
+  double straight_ahead_m = INFINITY;  ///< how far it drives on before it stops (the path's end or a
+                                       ///< sharp corner, where it turns in place)
 };
 
 class PurePursuit {

@@ -28,6 +28,9 @@ run world_N50_oracle_noisy ../shared/data/worlds/world_N50.json --config configs
 
 run depot ../shared/data/ros_maps/depot.yaml
 run desulfurization_plant worlds/scenarios/desulfurization_plant.json
+# Plants that differ from their maps: unmapped boxes (hatched) and a charger off its mapped pose.
+run small_plant_mismatch worlds/examples/small_plant_mismatch.json --animate
+run desulfurization_plant_mismatch worlds/scenarios/desulfurization_plant_mismatch.json
 run substation_yard worlds/scenarios/substation_yard.json
 run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
 # Seed 001's two examples: a target slower than the robot among people, a faster one behind a wall.
@@ -50,6 +53,9 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
 ./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
+# The five plants' mismatch variants with a wet floor and a person at the dock; a friction sweep.
+./build/plantsim batch scenarios/plant_mismatch.yaml --out results/batch_plant_mismatch --quiet || status=1
+./build/plantsim batch scenarios/wet_floor_sweep.yaml --out results/batch_wet_floor_sweep --quiet || status=1
 
 # The source document's comparison (its Fig. 5 and Fig. 6), then every planner driven.
 ./build/plantsim compare worlds/examples/small_plant.json --planners vg,vg-traditional --graph --plan-only \

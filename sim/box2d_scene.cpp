@@ -55,10 +55,10 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   for (const geom::Rect& r : plant.unmapped) add_box(statics, r, kObstacle);  // absent from a map's World
   for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) add_box(statics, wall, kWall);
 
-  // The charger's face is set back by Box2D's polygon skin so that contact begins exactly
-  // when the robot's centre reaches the docked pose.
+  // The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
+  // travel, so that the robot's centre stops half the travel past the docked pose.
   const worlds::ChargerBody cb = worlds::charger_body(plant);
-  const geom::Vec2 center = cb.center + b2_polygonRadius * plant.charger.heading();
+  const geom::Vec2 center = cb.center + (b2_polygonRadius + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
   b2BodyDef charger_def;
   charger_def.position.Set(static_cast<float>(center.x), static_cast<float>(center.y));
   charger_def.angle = static_cast<float>(cb.yaw);

@@ -72,6 +72,12 @@ void EkfLocalizer::update_health() {
   else health_ = LocalizationHealth::kOk;
 }
 
+void EkfLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
+  P_(0, 0) += position_sigma_m * position_sigma_m;
+  P_(1, 1) += position_sigma_m * position_sigma_m;
+  P_(2, 2) += yaw_sigma_rad * yaw_sigma_rad;
+}
+
 double EkfLocalizer::correct(const LidarScan& scan) {
   // Beams spread evenly over the scan; the same ones in every iteration.
   std::vector<std::size_t> beams;

@@ -55,7 +55,11 @@ class EkfLocalizer {
   Eigen::Matrix3d pose_covariance() const { return P_.topLeftCorner<3, 3>(); }
   /// Largest 1-sigma position error along any direction.
   double position_sigma_m() const;
+  /// Widens the position and heading uncertainty (independent additions): after the robot was
+  /// moved by something its encoders cannot see, so that the scans can pull the estimate there.
+  void widen(double position_sigma_m, double yaw_sigma_rad);
   double yaw_sigma_rad() const { return std::sqrt(P_(2, 2)); }
+  double gyro_bias_radps() const { return x_(3); }
   LocalizationHealth health() const { return health_; }
   int failed_matches() const { return failed_matches_; }
 

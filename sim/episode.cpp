@@ -19,8 +19,10 @@ SensorParams sensor_params(const EpisodeConfig& c) {
   s.odometry = c.odometry;
   s.oracle_fix = c.localization;
   s.beacon = c.beacon;
-  s.charge_position_tolerance_m = c.tolerance.position_m;
-  s.charge_heading_tolerance_rad = c.tolerance.heading_rad;
+  s.pads.lateral_tolerance_m = c.tolerance.position_m;
+  s.pads.heading_tolerance_rad = c.tolerance.heading_rad;
+  s.pads.dwell_s = c.tolerance.dwell_s;
+  s.pads.min_press_m = c.tolerance.min_press_m;
   return s;
 }
 
@@ -72,12 +74,18 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
 
   PhysicsWorld physics(plant);
   WheelDrive drive(plant.robot, config.drive);
-  SensorSuite sensors(plant, sensor_params(config), config.seed);
+  SensorParams sensing = sensor_params(config);
+  sensing.pads.travel_m = plant.charger_spec.pad_travel_m;
+  sensing.pads.contact_width_m = plant.charger_spec.width_m;
+  SensorSuite sensors(plant, sensing, config.seed);
   PerceptionParams perception_params = config.perception;
   perception_params.field_range_m = config.field.sensor_range_m;
   Perceiver perceiver(map, perception_params);
   EpisodeMetrics metrics(plant, result, config.catch_distance_m, config.step.dt_s);
 
+  controller::TractionParams traction = config.traction;
+  traction.max_accel_mps2 = std::min(traction.max_accel_mps2, plant.robot.max_accel_mps2);
+  controller::TractionGovernor governor(traction);
   const double dt = config.step.dt_s;
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / dt));
   const int period = std::max(1, config.control_period_steps);
@@ -96,6 +104,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       const Perception& p = perceiver.update(readings);        // estimate
       metrics.compare_estimate(physics, p.pose);
       metrics.compare_obstacles(p.obstacles);
+      metrics.charging(physics, readings.charging);
       worst_health = std::max(worst_health, p.health);  // ok < degraded < lost
       const Pose2 truth = physics.robot_pose();
       const double speed = geom::dot(physics.robot_velocity(), truth.heading());
@@ -116,12 +125,14 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
       result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m, d.phase, d.wall_following, target_at});
       if (!d.finished.empty()) {
-        result.status = d.finished;
-        result.docked = d.finished == "docked";
-        if (!result.docked) metrics.measure_final_error(physics);
+        // Success is the charger's signal with no collision on the way.
+        result.docked = d.finished == "docked" && result.collisions == 0;
+        result.status = d.finished == "docked" && !result.docked ? "docked_with_collision" : d.finished;
+        if (d.finished != "docked") metrics.measure_final_error(physics);
         break;
       }
-      drive.command(controller::to_wheels(d.twist, plant.robot.wheel_base_m), period * dt);  // actuate
+      const controller::Twist twist = governor.limit(d.twist, p.slipping, period * dt);
+      drive.command(controller::to_wheels(twist, plant.robot.wheel_base_m), period * dt);  // actuate
     }
     drive.apply(physics, dt);
     physics.step(config.step);  // step
@@ -138,6 +149,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.replans = counts.replans;
   result.local_minima = counts.local_minima;
   result.wall_follows = counts.wall_follows;
+  result.recoveries = counts.recoveries;
+  result.slips = governor.slips();
   if (auto final_plan = travel->final_plan()) result.plan = *final_plan;
   result.last_scan = perceiver.last_scan();
   result.tracked_final = perceiver.tracker().boxes(result.time_s);

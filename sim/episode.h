@@ -12,6 +12,7 @@
 
 #include "controller/docking.h"
 #include "controller/potential_field.h"
+#include "controller/traction.h"
 #include "planner/planner.h"
 #include "sim/perception.h"
 #include "sim/physics_world.h"
@@ -20,9 +21,12 @@
 
 namespace plantsim::sim {
 
+/// The charger's pads: they report charging when pressed with the robot within these.
 struct DockTolerance {
-  double position_m = 0.02;
+  double position_m = 0.02;               ///< robot centre off the approach axis
   double heading_rad = 2.0 * M_PI / 180.0;
+  double dwell_s = 0.5;                   ///< pressed within tolerance this long
+  double min_press_m = 0.001;             ///< pads compressed at least this far
 };
 
 /// How the robot travels to the staging pose (or to a moving target): along the planner's
@@ -43,6 +47,7 @@ struct EpisodeConfig {
   PerceptionParams perception;      ///< mode, EKF and tracker
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
+  controller::TractionParams traction;
   TravelMode travel = TravelMode::kPath;
   controller::PotentialFieldParams field;
   double catch_distance_m = 0.1;        ///< a moving target is caught this close (edge to edge)
@@ -67,17 +72,21 @@ struct TrajectorySample {
 };
 
 struct EpisodeResult {
-  std::string status;            ///< "docked", "caught", "failed", "trapped", "timeout", or a planner status
-  bool docked = false;
+  std::string status;            ///< "docked", "docked_with_collision", "caught", "failed", "trapped", "timeout",
+                                 ///< or a planner status
+  bool docked = false;           ///< charging and no collision in the whole episode (success)
   bool caught = false;           ///< a moving target was reached
   bool succeeded() const { return docked || caught; }
   double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
   double heading_error_deg = 0;
+  bool charging = false;         ///< the charger's own signal at the end
   int collisions = 0;            ///< separate contacts with obstacles or walls
   int collisions_robot_moving = 0;  ///< ... of which the robot began by moving towards what it touched
   int retries = 0;
   int stops = 0;                 ///< times the robot stopped for a moving obstacle
   int replans = 0;               ///< new plans made around what blocked the way
+  int recoveries = 0;            ///< settled and set off again after being displaced (shoved, slid)
+  int slips = 0;                 ///< wheel slips perception saw (each slowed the robot down)
   double time_s = 0;
   std::int64_t physics_steps = 0;  ///< fixed steps simulated
   double path_length_m = 0;      ///< planned, start to staging pose

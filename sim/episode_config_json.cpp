@@ -149,6 +149,27 @@ const std::vector<Field>& fields() {
       PS_FIELD("perception", perception.range_m, "range_m"),
       PS_FIELD("tolerance", tolerance.position_m, "position_m"),
       PS_FIELD("tolerance", tolerance.heading_rad, "heading_rad"),
+      PS_RANGE("tolerance", tolerance.dwell_s, "dwell_s", 0.0, 60.0, false),
+      PS_RANGE("tolerance", tolerance.min_press_m, "min_press_m", 0.0, 0.05, false),
+      PS_POSITIVE("docking", docking.press_speed_mps, "press_speed_mps"),
+      PS_POSITIVE("docking", docking.press_timeout_s, "press_timeout_s"),
+      PS_POSITIVE("docking", docking.stuck_timeout_s, "stuck_timeout_s"),
+      PS_RANGE("docking", docking.settle_s, "settle_s", 0.0, 60.0, false),
+      PS_POSITIVE("traction", traction.max_accel_mps2, "max_accel_mps2"),
+      PS_POSITIVE("traction", traction.max_angular_accel_radps2, "max_angular_accel_radps2"),
+      PS_PROBABILITY("traction", traction.slip_scale_factor, "slip_scale_factor"),
+      PS_PROBABILITY("traction", traction.min_scale, "min_scale"),
+      PS_RANGE("traction", traction.slip_hold_s, "slip_hold_s", 0.0, 60.0, false),
+      PS_RANGE("traction", traction.recover_per_s, "recover_per_s", 0.0, 10.0, false),
+      PS_RANGE("traction", traction.creep_mps, "creep_mps", 0.0, 10.0, false),
+      PS_RANGE("traction", traction.creep_radps, "creep_radps", 0.0, 10.0, false),
+      PS_POSITIVE("layer", perception.layer.cell_m, "cell_m"),
+      PS_POSITIVE("layer", perception.layer.clear_range_m, "clear_range_m"),
+      PS_FIELD("perception", perception.moving_speed_mps, "moving_speed_mps"),
+      PS_POSITIVE("perception", perception.displaced_jump_m, "displaced_jump_m"),
+      PS_POSITIVE("perception", perception.slip_jump_m, "slip_jump_m"),
+      PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
+      PS_RANGE("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0, false),
       PS_FIELD("", timeout_s, "timeout_s"),
   };
   return table;
@@ -191,6 +212,8 @@ const std::vector<BoolField>& bool_fields() {
       {"detection", "occlusion", [](EpisodeConfig& c) -> bool& { return c.detection.occlusion; }},
       {"lidar", "enabled", [](EpisodeConfig& c) -> bool& { return c.lidar.enabled; }},
       {"lidar", "max_range_returns", [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
+      {"traction", "enabled", [](EpisodeConfig& c) -> bool& { return c.traction.enabled; }},
+      {"layer", "enabled", [](EpisodeConfig& c) -> bool& { return c.perception.layer.enabled; }},
   };
   return table;
 }

@@ -6,6 +6,7 @@ namespace plantsim::sim {
 void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["status"] = r.status;
   j["docked"] = r.docked;
+  j["charging"] = r.charging;
   j["caught"] = r.caught;
   j["travel"] = r.travel;
   j["local_minima"] = r.local_minima;
@@ -17,6 +18,8 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["retries"] = r.retries;
   j["stops"] = r.stops;
   j["replans"] = r.replans;
+  j["recoveries"] = r.recoveries;
+  j["slips"] = r.slips;
   j["time_s"] = r.time_s;
   j["path_length_m"] = r.path_length_m;
   j["driven_length_m"] = r.driven_length_m;

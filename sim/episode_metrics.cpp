@@ -33,12 +33,13 @@ void EpisodeMetrics::before_step(const PhysicsWorld& physics, const ContactState
     r_.collisions_robot_moving += driving_into;
   }
   was_touching_obstacle_ = contact.obstacle;
-  if (contact.charger) {
-    if (!contact_measured_) measure_final_error(physics);
-    contact_measured_ = true;
-  } else {
-    contact_measured_ = false;
-  }
+}
+
+void EpisodeMetrics::charging(const PhysicsWorld& physics, bool on) {
+  // The pose errors are those at the moment charging starts (the first time, if it starts again).
+  if (on && !charging_measured_) measure_final_error(physics);
+  charging_measured_ = charging_measured_ || on;
+  r_.charging = on;
 }
 
 void EpisodeMetrics::after_step(const PhysicsWorld& physics) {

@@ -13,8 +13,7 @@ namespace plantsim::sim {
 class EpisodeMetrics {
  public:
   EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s);
-  /// Every physics step, before it, with the contacts the last step left: collisions and the
-  /// pose error at first charger contact.
+  /// Every physics step, before it, with the contacts the last step left: collisions.
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   /// Every physics step, after it: driven length.
   void after_step(const PhysicsWorld& physics);
@@ -24,7 +23,9 @@ class EpisodeMetrics {
   void compare_obstacles(const std::vector<controller::MovingBox>& perceived);
   /// True when the moving target is within catch distance of the robot.
   bool target_caught(const PhysicsWorld& physics) const;
-  /// The pose error now (for episodes ending without contact).
+  /// At each control step, the charger's signal: the pose error when charging starts.
+  void charging(const PhysicsWorld& physics, bool on);
+  /// The pose error now (for episodes ending without charging).
   void measure_final_error(const PhysicsWorld& physics);
 
  private:
@@ -32,7 +33,7 @@ class EpisodeMetrics {
   EpisodeResult& r_;
   double catch_distance_m_;
   bool was_touching_obstacle_ = false;
-  bool contact_measured_ = false;
+  bool charging_measured_ = false;
   double dt_s_;
   Vec2 previous_;
   std::deque<Vec2> recent_;  // positions after the last few steps

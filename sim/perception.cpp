@@ -48,6 +48,7 @@ Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
     : map_(map), p_(params), raycaster_(map), ekf_(params.ekf, map.start, raycaster_), tracker_(params.tracker), layer_(params.layer) {
   now_.pose = map.start;
   now_.odom_pose = map.start;
+  odom_yaw_before_ = map.start.yaw;
 }
 
 std::optional<geom::Pose2> Perceiver::carry_to_now(const ChargerDetection& d) const {
@@ -125,7 +126,26 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   }
 
   ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
+  // Moved without the wheels: a contact (the robot never touches anything but the charger's
+  // pads, which are not on the bumper), or a scan that pulls the estimate far, or scans the
+  // map stops explaining. Widen the estimate so that the next scans can find where it went.
+  const geom::Pose2 predicted = ekf_.pose();
+  const int failed_before = ekf_.failed_matches();
   if (r.scan) ekf_.correct(*r.scan);
+  const double correction = geom::distance(predicted.position(), ekf_.pose().position());
+  const bool jumped = correction > p_.displaced_jump_m;
+  const double encoder_turn = r.dt_s > 0 ? geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_) / r.dt_s : 0.0;
+  odom_yaw_before_ = r.odom_pose.yaw;
+  now_.slipping = correction > p_.slip_jump_m ||
+                  (r.dt_s > 0 && std::fabs(encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps())) > p_.slip_turn_radps);
+  const bool unexplained = ekf_.failed_matches() >= 2;
+  const bool became_unexplained = unexplained && failed_before < 2;
+  const bool touched = r.bumper.front || r.bumper.rear;
+  // Widened once per event (a contact lasting a second must not make the estimate lost).
+  if ((touched && !touched_before_) || became_unexplained)
+    ekf_.widen(p_.relocalize_sigma_m * (became_unexplained ? 1.0 : 0.3), 0.1);
+  touched_before_ = touched;
+  now_.displaced = touched || jumped || unexplained;
   now_.pose = ekf_.pose();
   now_.position_sigma_m = ekf_.position_sigma_m();
   now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();
@@ -143,7 +163,11 @@ const Perception& Perceiver::update(const SensorReadings& r) {
     }
   }
   if (r.scan) interpret_scan(*r.scan);
-  now_.obstacles = tracker_.boxes(r.t_s);
+  // What stands is the layer's (tight to the returns, remembered); what moves is the tracks'
+  // (a standing track's box is a guess about depth and jitters with the face it sees).
+  now_.obstacles.clear();
+  for (const auto& b : tracker_.boxes(r.t_s))
+    if (!p_.layer.enabled || geom::norm(b.velocity) > 0) now_.obstacles.push_back(b);
   now_.layer = layer_rects_;
   for (const geom::Rect& c : layer_rects_) now_.obstacles.push_back({c, {0, 0}});
   // The static returns of the last scan, and the tracked obstacles with their velocities.

@@ -35,6 +35,10 @@ struct PerceptionParams {
   TrackerParams tracker;
   ObstacleLayerParams layer;
   double moving_speed_mps = 0.3;     ///< tracks faster than this do not mark the layer (they move on)
+  double displaced_jump_m = 0.05;    ///< one scan moving the estimate this far means the wheels missed a motion
+  double slip_jump_m = 0.02;         ///< ... this far, that the wheels slipped
+  double slip_turn_radps = 0.15;     ///< encoders' turn rate this far from the gyro's: the wheels slip
+  double relocalize_sigma_m = 0.3;   ///< a displacement widens the estimate by this, so scans can catch it
 };
 
 struct Perception {
@@ -49,6 +53,8 @@ struct Perception {
   bool charger_contact = false;
   bool charging = false;
   BumperReading bumper;
+  bool displaced = false;           ///< moved without its wheels (the scan disagrees, a contact): stop and settle
+  bool slipping = false;            ///< the wheels turned otherwise than the robot moved (encoders vs gyro and scan)
   std::optional<geom::Pose2> charger_in_robot;     ///< docked pose seen, carried to now (robot frame)
   std::vector<controller::MovingBox> obstacles;    ///< tracked (or, oracle, known) obstacles off the map,
                                                    ///< and the layer's cells (standing)
@@ -89,6 +95,8 @@ class Perceiver {
   std::vector<geom::Rect> layer_rects_;                  // the layer after the last scan
   std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
   std::optional<geom::Vec2> last_target_;
+  bool touched_before_ = false;  // the bumper at the last reading
+  double odom_yaw_before_ = 0;   // for the encoders' turn rate
 };
 
 }  // namespace plantsim::sim

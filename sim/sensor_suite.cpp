@@ -29,6 +29,7 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
       lidar_(p_.lidar, seed),
       detector_(p_.detection, seed),
       oracle_fix_(p_.oracle_fix, seed),
+      pads_(p_.pads),
       rng_(seed ^ 0x2545f4914f6cdd1dULL),
       last_odom_(plant.start),
       charger_marker_(worlds::charger_body(plant).center) {}
@@ -36,13 +37,10 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
 void SensorSuite::count(const PhysicsWorld& physics, const ContactState& c, const WheelDrive& drive, double dt_s) {
   odometry_.count(drive.motor_speeds(), dt_s);
   contact_points_.insert(contact_points_.end(), c.obstacle_points.begin(), c.obstacle_points.end());
-  if (c.charger) {
-    contact_ = true;
-    // The charger's own signal: its pads engage when the robot sits within tolerance.
-    const geom::Pose2 truth = physics.robot_pose();
-    charging_ = charging_ || (geom::distance(truth.position(), plant_.charger.position()) <= p_.charge_position_tolerance_m &&
-                              std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) <= p_.charge_heading_tolerance_rad);
-  }
+  // The charger's own signal, from its pads: touched, then charging after the dwell.
+  pads_.step(physics.robot_pose(), plant_.charger, dt_s);
+  contact_ = contact_ || pads_.touched();
+  charging_ = pads_.charging();
 }
 
 SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {

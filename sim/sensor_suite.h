@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "sim/charger_pads.h"
 #include "sim/imu.h"
 #include "sim/localization.h"
 #include "sim/odometry.h"
@@ -26,8 +27,7 @@ struct SensorParams {
   OdometryNoise odometry;
   LocalizationParams oracle_fix;  ///< oracle mode's noisy truth fixes
   BeaconParams beacon;
-  double charge_position_tolerance_m = 0.02;  ///< the charger's pads engage within these
-  double charge_heading_tolerance_rad = 2.0 * M_PI / 180.0;
+  ChargerPadParams pads;  ///< travel set from the plant's charger
 };
 
 class SensorSuite {
@@ -46,6 +46,7 @@ class SensorSuite {
   Lidar lidar_;
   ChargerDetector detector_;
   Localization oracle_fix_;
+  ChargerPads pads_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> gauss_{0.0, 1.0};
   double last_read_s_ = 0;

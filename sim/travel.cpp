@@ -32,6 +32,8 @@ controller::DockingInput docking_input(const Perception& p) {
   in.nearby_obstacles = p.obstacles;
   in.bumper_front = p.bumper.front;
   in.bumper_rear = p.bumper.rear;
+  in.displaced = p.displaced;
+  in.localized = p.health == LocalizationHealth::kOk && p.position_sigma_m <= 0.05;
   return in;
 }
 

@@ -35,7 +35,7 @@ struct Decision {
 
 /// What a travel mode has counted.
 struct TravelCounts {
-  int retries = 0, stops = 0, replans = 0, local_minima = 0, wall_follows = 0;
+  int retries = 0, stops = 0, replans = 0, local_minima = 0, wall_follows = 0, recoveries = 0;
 };
 
 class Travel {

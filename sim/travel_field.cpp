@@ -36,7 +36,7 @@ class FieldTravel : public Travel {
   }
   TravelCounts counts() const override {
     TravelCounts c = docking_ ? docking_->counts() : TravelCounts{};
-    c.local_minima = minima_;
+    c.local_minima = minima_;  // recoveries: the docking's
     c.wall_follows = follows_;
     return c;
   }

@@ -13,6 +13,17 @@ class PathTravel : public Travel {
 
   Decision decide(const Perception& p) override {
     const controller::DockingCommand cmd = control_.step(docking_input(p));
+    if (cmd.recover_requested) need_plan_ = true;
+    if (need_plan_ && p.t_s >= next_try_s_) {
+      // After a displacement: a new way to the staging pose from wherever the robot now is.
+      next_try_s_ = p.t_s + 1.0;
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles)) {
+        control_.replace_path(*path);
+        plan_ = std::move(*path);
+        need_plan_ = false;
+      }
+      if (need_plan_) return decision_of({{}, cmd.phase, 0, true, false, false});  // no way yet: wait
+    }
     if (cmd.replan_requested) {
       // Plan again with what blocks the way as extra obstacles, from the nearest free point
       // if the robot stands inside their margin.
@@ -24,7 +35,9 @@ class PathTravel : public Travel {
     }
     return decision_of(cmd);
   }
-  TravelCounts counts() const override { return {control_.retries(), control_.stops(), replans_, 0, 0}; }
+  TravelCounts counts() const override {
+    return {control_.retries(), control_.stops(), replans_, 0, 0, control_.recoveries()};
+  }
   std::optional<std::vector<geom::Vec2>> final_plan() const override {
     return plan_.empty() ? std::nullopt : std::optional(plan_);
   }
@@ -37,6 +50,8 @@ class PathTravel : public Travel {
   geom::Vec2 staging_;
   std::vector<geom::Vec2> plan_;
   int replans_ = 0;
+  bool need_plan_ = false;
+  double next_try_s_ = 0;
 };
 
 }  // namespace

@@ -104,16 +104,30 @@ DockingInput at(Pose2 p, bool contact = false, bool charging = false) {
   return in;
 }
 
-TEST(Docking, ContactWhileChargingIsDockedContactWithoutIsAMissAndBacksOff) {
+// Pads touched but no charging for the press timeout: a miss. 0.02 s steps.
+DockingCommand press_until_given_up(DockingController& dc, Pose2 p) {
+  DockingCommand c = dc.step(at(p, true, false));
+  for (int i = 0; i < 200 && c.phase == DockPhase::kApproach; ++i) {
+    EXPECT_GT(c.twist.v_mps, 0.0);  // holds the pads pressed while waiting for the charger
+    EXPECT_EQ(c.twist.omega_radps, 0.0);
+    c = dc.step(at(p, i % 2 == 0, false));  // contact may flicker as the springs bounce
+  }
+  return c;
+}
+
+TEST(Docking, PadsHeldUntilTheChargerSaysChargingPressedWithoutIsAMissAndBacksOff) {
   DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);     // path end reached
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kApproach);  // already aligned
-  const DockingCommand miss = dc.step(at({2, 0.05, 0}, true, false));
+  const DockingCommand miss = press_until_given_up(dc, {2, 0.05, 0});
   EXPECT_EQ(miss.phase, DockPhase::kBackOff);
   EXPECT_EQ(dc.retries(), 1);
   EXPECT_LT(dc.step(at({1.9, 0.05, 0})).twist.v_mps, 0);  // reverses away from the charger
   EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kAlign);  // back at staging
   dc.step(at({1.0, 0.0, 0}));                                        // approach
+  const DockingCommand touched = dc.step(at({2, 0.0, 0}, true, false));
+  EXPECT_EQ(touched.phase, DockPhase::kApproach);  // touched is not docked: the dwell runs
+  EXPECT_GT(touched.twist.v_mps, 0.0);
   const DockingCommand ok = dc.step(at({2, 0.0, 0}, true, true));
   EXPECT_EQ(ok.phase, DockPhase::kDocked);
   EXPECT_EQ(ok.twist.v_mps, 0.0);
@@ -125,13 +139,50 @@ TEST(Docking, AfterTheLastRetryItBacksOffBeforeFailing) {
   DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   dc.step(at({1, 0, 0}));
   dc.step(at({1, 0, 0}));
-  EXPECT_EQ(dc.step(at({2, 0.05, 0}, true, false)).phase, DockPhase::kBackOff);  // retry 1
+  EXPECT_EQ(press_until_given_up(dc, {2, 0.05, 0}).phase, DockPhase::kBackOff);  // retry 1
   EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kAlign);
   dc.step(at({1.0, 0.0, 0}));
-  EXPECT_EQ(dc.step(at({2, 0.05, 0}, true, false)).phase, DockPhase::kBackOff);  // no retries left
+  EXPECT_EQ(press_until_given_up(dc, {2, 0.05, 0}).phase, DockPhase::kBackOff);  // no retries left
   EXPECT_LT(dc.step(at({1.95, 0.05, 0})).twist.v_mps, 0);  // still backs away, not pressed on
   EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kFailed);
   EXPECT_EQ(dc.retries(), 1);
+}
+
+TEST(Docking, TheBumperOnSomethingOtherThanThePadsIsAMiss) {
+  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  dc.step(at({1, 0, 0}));
+  dc.step(at({1, 0, 0}));
+  DockingInput in = at({1.8, 0.1, 0});
+  in.bumper_front = true;
+  const DockingCommand c = dc.step(in);
+  EXPECT_EQ(c.phase, DockPhase::kBackOff);
+  EXPECT_LE(c.twist.v_mps, 0.0);
+}
+
+TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
+  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  dc.step(at({1, 0, 0}));
+  dc.step(at({1, 0, 0}));
+  DockingInput in = at({1.2, 0, 0});
+  EXPECT_GT(dc.step(in).twist.v_mps, 0.0);  // nothing sensed: approaches
+  in.nearby_obstacles = {{{1.5, -0.3, 1.7, 0.3}, {0, 0}}};  // a box between robot and charger
+  DockingCommand c = dc.step(in);
+  EXPECT_EQ(c.twist.v_mps, 0.0);
+  EXPECT_TRUE(c.blocked);
+  EXPECT_EQ(dc.stops(), 1);
+  // What is sensed at the charger itself (a charger off its mapped pose) does not stop it.
+  in.nearby_obstacles = {{{2.2, -0.15, 2.3, 0.15}, {0, 0}}};
+  EXPECT_GT(dc.step(in).twist.v_mps, 0.0);
+  // Backing off with something behind: stops, then gives up stopped.
+  const DockingCommand miss = press_until_given_up(dc, {2, 0.05, 0});
+  ASSERT_EQ(miss.phase, DockPhase::kBackOff);
+  DockingInput back = at({1.9, 0.05, 0});
+  back.nearby_obstacles = {{{1.3, -0.3, 1.5, 0.3}, {0, 0}}};
+  c = dc.step(back);
+  EXPECT_EQ(c.twist.v_mps, 0.0);
+  for (int i = 0; i < 2000 && c.phase == DockPhase::kBackOff; ++i) c = dc.step(back);
+  EXPECT_EQ(c.phase, DockPhase::kFailed);
+  EXPECT_EQ(c.twist.v_mps, 0.0);
 }
 
 TEST(Docking, DetectionsReanchorTheDockInTheOdometryFrame) {

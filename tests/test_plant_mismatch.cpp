@@ -10,6 +10,7 @@
 
 #include "planner/planner.h"
 #include "sim/episode.h"
+#include "sim/charger_pads.h"
 #include "sim/local_obstacle_layer.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
@@ -149,3 +150,46 @@ TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
 
 }  // namespace
 }  // namespace plantsim
+
+namespace plantsim::sim {
+namespace {
+
+// 1 ms steps; returns the first time charging is reported (or -1).
+double charging_after(ChargerPads& pads, const geom::Pose2& robot, double seconds) {
+  const geom::Pose2 docked{5, 5, M_PI / 2};
+  for (int k = 1; k <= static_cast<int>(seconds * 1000); ++k) {
+    pads.step(robot, docked, 0.001);
+    if (pads.charging()) return k * 0.001;
+  }
+  return -1;
+}
+
+TEST(ChargerPads, ChargeOnlyWhenPressedWithinToleranceForTheDwell) {
+  ChargerPadParams p;  // 5 mm travel, 1 mm press, 2 cm, 2 deg, 0.5 s
+  // Pressed 2 mm, centred, square (the docked pose faces +y): charging after the dwell.
+  ChargerPads pads(p);
+  EXPECT_NEAR(charging_after(pads, {5, 5 - 0.0025 + 0.002, M_PI / 2}, 2.0), 0.5, 0.0015);
+  EXPECT_TRUE(pads.touched());
+  // Touching the pads without pressing them the minimum: touched, never charging.
+  ChargerPads light(p);
+  EXPECT_LT(charging_after(light, {5, 5 - 0.0025 + 0.0005, M_PI / 2}, 2.0), 0);
+  EXPECT_TRUE(light.touched());
+  // Pressed but 3 cm off the axis, or 3 degrees askew: never charging.
+  ChargerPads off(p);
+  EXPECT_LT(charging_after(off, {5.03, 5.001, M_PI / 2}, 2.0), 0);
+  EXPECT_TRUE(off.touched());
+  ChargerPads askew(p);
+  EXPECT_LT(charging_after(askew, {5, 5.001, M_PI / 2 + 3 * M_PI / 180}, 2.0), 0);
+  // Short of the pads: nothing.
+  ChargerPads short_of(p);
+  EXPECT_LT(charging_after(short_of, {5, 4.99, M_PI / 2}, 1.0), 0);
+  EXPECT_FALSE(short_of.touched());
+  // A break in the press restarts the dwell.
+  ChargerPads bounce(p);
+  EXPECT_LT(charging_after(bounce, {5, 5.001, M_PI / 2}, 0.4), 0);
+  bounce.step({5, 4.99, M_PI / 2}, {5, 5, M_PI / 2}, 0.001);
+  EXPECT_NEAR(charging_after(bounce, {5, 5.001, M_PI / 2}, 2.0), 0.5, 0.0015);
+}
+
+}  // namespace
+}  // namespace plantsim::sim

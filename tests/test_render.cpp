@@ -2,6 +2,7 @@
 // rectangle centres, trajectory colour along the driven path, charger colour at the charger.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -167,6 +168,62 @@ TEST(Png, ReadingGarbageThrows) {
   { std::ofstream(p) << "not a png"; }
   EXPECT_THROW(read_png(p), std::runtime_error);
   std::filesystem::remove(p);
+}
+
+}  // namespace
+}  // namespace plantsim::render
+
+namespace plantsim::render {
+namespace {
+
+// A plant that differs from its map: unmapped boxes outlined and hatched in their own colour
+// (never filled like the map's), the mapped charger outlined where the map has it, the sensed
+// layer drawn, and each of these in the legend.
+TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLegend) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/examples/small_plant_mismatch.json"));
+  auto p = planner::make_planner("vg", planner::planner_input(w, true));
+  const sim::EpisodeResult run = sim::run_episode(w, *p, {});
+  ASSERT_FALSE(run.layer_final.empty());
+  RunFigureOptions o;
+  o.width_px = 1600;
+  o.height_px = 1000;
+  PixelTransform t;
+  const Image img = draw_run_figure(w, run, o, &t);
+  if (std::getenv("PLANTSIM_KEEP")) write_png(img, "/tmp/mismatch_render.png");
+  // Pixels of the colour or of its blend with the floor, at least a quarter strong (thin
+  // anti-aliased lines are mostly blend).
+  auto near = [](Rgb px, Rgb c) {
+    const Rgb f = palette::kFloor;
+    const double a = (static_cast<double>(f.g) - px.g) / (static_cast<double>(f.g) - c.g);
+    if (a < 0.25 || a > 1.05) return false;
+    auto off = [&](double fc, double cc, double pc) { return std::fabs(fc + a * (cc - fc) - pc); };
+    return off(f.r, c.r, px.r) < 20 && off(f.b, c.b, px.b) < 20;
+  };
+  auto count = [&](const geom::Rect& r, Rgb c) {
+    const geom::Vec2 a = t.to_pixel({r.xmin, r.ymax}), b = t.to_pixel({r.xmax, r.ymin});
+    int n = 0;
+    for (int y = static_cast<int>(a.y); y <= static_cast<int>(b.y); ++y)
+      for (int x = static_cast<int>(a.x); x <= static_cast<int>(b.x); ++x) n += near(img.at(x, y), c);
+    return n;
+  };
+  for (const geom::Rect& u : w.unmapped) {
+    const int inside = count(u, palette::kUnmapped), area = static_cast<int>(u.width() * u.height() * t.scale * t.scale);
+    EXPECT_GT(inside, area / 20) << "hatch and outline drawn";
+    EXPECT_LT(count(u, palette::kObstacle), area / 20) << "not filled like a mapped obstacle";
+  }
+  // The mapped charger's outline: its colour around where the map has it, 5 cm off the real one.
+  worlds::World on_map = worlds::robot_map(w);
+  const geom::Rect mapped = worlds::charger_body(on_map).bounding_box().inflated(0.03);
+  EXPECT_GT(count(mapped, palette::kCharger), 0);
+  // Legend swatches right of the panel, below the colour bar, for each new layer.
+  auto in_legend = [&](Rgb c) {
+    for (int y = 380; y < img.height; ++y)
+      for (int x = o.width_px - 160; x < o.width_px; ++x)
+        if (img.at(x, y) == c) return true;
+    return false;
+  };
+  EXPECT_TRUE(in_legend(palette::kUnmapped));
+  EXPECT_TRUE(in_legend(palette::kLayer));
 }
 
 }  // namespace

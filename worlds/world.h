@@ -42,6 +42,8 @@ struct ChargerSpec {
   double width_m = 0.30;          ///< across the approach axis
   double depth_m = 0.10;          ///< along the approach axis
   double staging_distance_m = 1.0;  ///< staging pose this far behind the docked pose
+  double pad_travel_m = 0.005;    ///< spring travel of the contact pads: the rigid face is half of
+                                  ///< it past the docked pose, the pads' rest face half of it before
 };
 
 /// A box moving on a scripted path at constant speed (a person, a cart, a vehicle): it waits

@@ -169,6 +169,17 @@ TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
   return maze;
 }
 
+// The plant's differences from the map (both schemas): unmapped boxes and the charger's offset.
+void read_map_mismatch(const json& doc, const FieldReader& in, World& w) {
+  if (doc.contains("unmapped")) w.unmapped = in.rects(doc["unmapped"], "unmapped");
+  if (doc.contains("charger_map_offset")) {
+    const json& o = doc["charger_map_offset"];
+    if (!o.is_array() || o.size() != 3) in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
+    w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"), in.number(o[1], "charger_map_offset[1]"),
+                            in.number(o[2], "charger_map_offset[2]")};
+  }
+}
+
 World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
   World w;
   w.source = source;
@@ -215,17 +226,16 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   const json& charger = doc["charger"];
   if (charger.contains("width_m")) w.charger_spec.width_m = in.positive(charger, "width_m", "charger");
   if (charger.contains("depth_m")) w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger");
+  if (charger.contains("pad_travel_m")) {
+    w.charger_spec.pad_travel_m = in.number(charger, "pad_travel_m", "charger");
+    if (w.charger_spec.pad_travel_m < 0 || w.charger_spec.pad_travel_m > 0.05)
+      in.fail("charger.pad_travel_m", "must be from 0 to 0.05 m");
+  }
   if (charger.contains("staging_distance_m"))
     w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger");
   w.inflation_margin_m = in.number_or(doc, "inflation_margin_m", "", w.inflation_margin_m);
   if (w.inflation_margin_m < 0) in.fail("inflation_margin_m", "must not be negative");
-  if (doc.contains("unmapped")) w.unmapped = in.rects(doc["unmapped"], "unmapped");
-  if (doc.contains("charger_map_offset")) {
-    const json& o = doc["charger_map_offset"];
-    if (!o.is_array() || o.size() != 3) in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
-    w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"), in.number(o[1], "charger_map_offset[1]"),
-                            in.number(o[2], "charger_map_offset[2]")};
-  }
+  read_map_mismatch(doc, in, w);
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
@@ -261,6 +271,7 @@ World read_plain_schema(const json& doc, const FieldReader& in, const std::strin
   const Vec2 d = goal - start;
   w.start = {start.x, start.y, std::atan2(d.y, d.x)};
   w.charger = {goal.x, goal.y, 0.0};
+  read_map_mismatch(doc, in, w);
   return w;
 }
 

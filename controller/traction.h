@@ -1,0 +1,43 @@
+// Driving within the grip the floor gives. The robot does not know the floor's friction; it
+// knows when its wheels slip (perception compares the encoders with the gyro and the scan).
+// The governor sits between the travel mode and the motors. Until a slip is seen it passes the
+// twist through (the motors' limits are the robot's); each slip scales the speed down and
+// limits how fast the commanded twist may grow (acceleration, turn-in-place) to the scaled
+// limits; they recover slowly while no slip is seen. Braking is never limited: stopping
+// for an obstacle always gets the motors' full deceleration. Pure: no physics, no truth.
+#pragma once
+
+#include "controller/diff_drive.h"
+
+namespace plantsim::controller {
+
+struct TractionParams {
+  bool enabled = true;
+  double max_accel_mps2 = 1.0;           ///< forward speed may grow this fast (scaled; at most the robot's)
+  double max_angular_accel_radps2 = 3.0; ///< turning rate may grow this fast (scaled)
+  double slip_scale_factor = 0.6;        ///< each slip multiplies the scale by this ...
+  double min_scale = 0.15;               ///< ... down to this
+  double slip_hold_s = 0.5;              ///< slips closer together than this are one
+  double recover_per_s = 0.03;           ///< scale regained per second without slip
+  double creep_mps = 0.1;                ///< speeds up to this are never scaled down (docking, pressing)
+  double creep_radps = 0.3;
+};
+
+class TractionGovernor {
+ public:
+  explicit TractionGovernor(TractionParams p) : p_(p) {}
+  /// The twist to send the motors this control period, given the wanted one and whether
+  /// perception saw the wheels slip since the last period.
+  Twist limit(const Twist& wanted, bool slipping, double dt_s);
+  double scale() const { return scale_; }  ///< 1: full speed and acceleration
+  int slips() const { return slips_; }     ///< slip events met
+
+ private:
+  TractionParams p_;
+  Twist last_;
+  double scale_ = 1.0;
+  double since_slip_s_ = 1e9;
+  int slips_ = 0;
+};
+
+}  // namespace plantsim::controller

@@ -1,0 +1,165 @@
+// The plant is not its map, at scale: scenarios/plant_mismatch_suite.yaml run as a batch (300
+// random starts per fault on world_N50 and world_N200) against issue 14's targets, and a sweep
+// whose summary gives one row per value.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "batch/batch_runner.h"
+#include "test_paths.h"
+#include "worlds/world_error.h"
+
+namespace plantsim::batch {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FaultTally {
+  int episodes = 0, docked = 0, collisions = 0, robot_collisions = 0, failed_with_collision = 0, unmapped_seen = 0;
+  int recoveries = 0, slips = 0;
+  std::vector<std::string> failures;
+};
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("plantsim_plant_suite_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// The scenario with its world paths made absolute and, under PLANTSIM_SUITE_SCALE (the
+// sanitizer tree), fewer seeds.
+std::string scenario_copy(const std::string& rel, const fs::path& dir) {
+  std::ifstream in(test::source_file(rel));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = std::regex_replace(text.str(), std::regex("\\.\\./shared/data/"), test::shared_data(""));
+  if (const char* env = std::getenv("PLANTSIM_SUITE_SCALE"); env && std::atof(env) > 0 && std::atof(env) < 1)
+    s = std::regex_replace(s, std::regex("seeds: \\[.*\\]"), "seeds: " + std::to_string(std::max(5, static_cast<int>(150 * std::atof(env)))));
+  const fs::path p = dir / fs::path(rel).filename();
+  std::ofstream(p) << s;
+  return p.string();
+}
+
+std::map<std::string, FaultTally> tally(const fs::path& out) {
+  std::map<std::string, FaultTally> t;
+  std::ifstream in(out / "episodes.jsonl");
+  for (std::string line; std::getline(in, line);) {
+    const auto j = nlohmann::json::parse(line);
+    FaultTally& f = t[j["fault"].get<std::string>()];
+    ++f.episodes;
+    const bool docked = j["docked"].get<bool>();
+    const int collisions = j["collisions"].get<int>();
+    f.docked += docked;
+    f.collisions += collisions;
+    f.robot_collisions += j["collisions_robot_moving"].get<int>();
+    f.failed_with_collision += !docked && collisions > 0;
+    f.unmapped_seen += j["unmapped_seen"].get<int>();
+    f.recoveries += j["recoveries"].get<int>();
+    f.slips += j["slips"].get<int>();
+    if (!docked || collisions > 0)
+      f.failures.push_back(j["id"].get<std::string>() + ": " + j["status"].get<std::string>() + ", collisions " +
+                           std::to_string(collisions));
+  }
+  for (const auto& [name, f] : t) {
+    const auto [lo, hi] = wilson_interval(f.docked, f.episodes);
+    std::printf("%-15s %d/%d docked (95 %% Wilson [%.2f, %.2f] %%), collisions %d (robot moving %d), failed with a "
+                "collision %d, unmapped seen %d, recoveries %d, slips %d\n",
+                name.c_str(), f.docked, f.episodes, 100 * lo, 100 * hi, f.collisions, f.robot_collisions,
+                f.failed_with_collision, f.unmapped_seen, f.recoveries, f.slips);
+    for (std::size_t i = 0; i < std::min<std::size_t>(f.failures.size(), 8); ++i) std::printf("  %s\n", f.failures[i].c_str());
+  }
+  return t;
+}
+
+TEST(PlantSuite, UnmappedObstaclesAShiftedChargerWetFloorsAndACrossingPerson) {
+  const fs::path dir = temp_dir("suite");
+  RunOptions o;
+  o.out_dir = (dir / "out").string();
+  o.progress = false;
+  o.figures = false;
+  run_batch(scenario_copy("scenarios/plant_mismatch_suite.yaml", dir), o);
+  const auto t = tally(dir / "out");
+  auto rate = [&](const std::string& f) { return static_cast<double>(t.at(f).docked) / t.at(f).episodes; };
+  // 3 unmapped boxes across the optimal path: >= 99 % docked, no collision; boxes were sensed.
+  EXPECT_GE(rate("unmapped3"), 0.99);
+  EXPECT_EQ(t.at("unmapped3").collisions, 0);
+  EXPECT_GE(t.at("unmapped3").unmapped_seen, t.at("unmapped3").episodes);
+  // The charger 5 cm and 3 degrees off its mapped pose: >= 99 %.
+  EXPECT_GE(rate("charger_off"), 0.99);
+  // A wet floor: >= 99 % and no collision; a very wet one: every failure collision-free.
+  EXPECT_GE(rate("wet"), 0.99);
+  EXPECT_EQ(t.at("wet").collisions, 0);
+  EXPECT_EQ(t.at("very_wet").failed_with_collision, 0);
+  // A blind person crossing the final approach: no collision the robot began.
+  EXPECT_EQ(t.at("crossing_final").robot_collisions, 0);
+  fs::remove_all(dir);
+}
+
+TEST(PlantSuite, ASweepGivesOneSummaryRowPerValue) {
+  const fs::path dir = temp_dir("sweep");
+  const std::string yaml = (dir / "s.yaml").string();
+  std::ofstream(yaml) << "name: s\nworlds: [" << test::shared_data("worlds/world_N10.json")
+                      << "]\nsweep: {parameter: drive.tyre_friction, values: [0.8, 0.1, 0.4]}\nseeds: 2\n";
+  RunOptions o;
+  o.out_dir = (dir / "out").string();
+  o.progress = false;
+  o.figures = false;
+  run_batch(yaml, o);
+  std::ifstream in(dir / "out" / "sweep.csv");
+  std::vector<std::string> rows;
+  for (std::string l; std::getline(in, l);) rows.push_back(l);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[1].rfind("drive.tyre_friction,0.1,2,", 0), 0u) << rows[1];  // sorted by value
+  EXPECT_EQ(rows[2].rfind("drive.tyre_friction,0.4,2,", 0), 0u) << rows[2];
+  EXPECT_EQ(rows[3].rfind("drive.tyre_friction,0.8,2,", 0), 0u) << rows[3];
+  // The episode records say which value they ran with.
+  std::ifstream jl(dir / "out" / "episodes.jsonl");
+  std::string first;
+  std::getline(jl, first);
+  const auto j = nlohmann::json::parse(first);
+  EXPECT_EQ(j["sweep_parameter"], "drive.tyre_friction");
+  EXPECT_TRUE(j["fault"].get<std::string>().find("drive.tyre_friction=") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(PlantSuite, BadSweepsAndPlantFaultsAreRefusedNamingTheField) {
+  const fs::path dir = temp_dir("bad");
+  auto expect_error = [&](const std::string& body, const std::string& needle) {
+    const std::string yaml = (dir / "b.yaml").string();
+    std::ofstream(yaml) << "name: b\nworlds: [" << test::shared_data("worlds/world_N10.json") << "]\n" << body << "seeds: 1\n";
+    RunOptions o;
+    o.out_dir = (dir / "out").string();
+    o.progress = false;
+    try {
+      run_batch(yaml, o);
+      ADD_FAILURE() << "no error for: " << body;
+    } catch (const worlds::WorldError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(yaml), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir / "out" / "episodes.jsonl")) << "episodes written for: " << body;
+  };
+  expect_error("sweep: {parameter: drive.tyre_friction, values: []}\n", "sweep.values");
+  expect_error("sweep: {parameter: drive.tyre_friction}\n", "sweep.values");
+  expect_error("sweep: {parameter: drive.grip, values: [1]}\n", "sweep.parameter");
+  expect_error("sweep: {parameter: warp_speed, values: [1]}\n", "sweep.parameter");
+  expect_error("sweep: {values: [1]}\n", "sweep");
+  expect_error("faults:\n  f: {unmapped_obstacles: -1}\n", "faults.f.unmapped_obstacles");
+  expect_error("faults:\n  f: {unmapped_obstacles: many}\n", "faults.f.unmapped_obstacles");
+  expect_error("faults:\n  f: {charger_map_offset: [0.1, 0.1]}\n", "faults.f.charger_map_offset");
+  expect_error("faults:\n  f: {charger_map_offset: [0.1, .nan, 0]}\n", "faults.f.charger_map_offset[1]");
+  expect_error("faults:\n  f: {charger_map_offset: [3, 0, 0]}\n", "faults.f.charger_map_offset");
+  expect_error("faults:\n  f: {crossing_final_approach: maybe}\n", "faults.f.crossing_final_approach");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace plantsim::batch
