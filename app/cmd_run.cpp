@@ -41,6 +41,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::string config;
     std::string travel;
     bool animate = false;
+    bool undock = false;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
@@ -54,6 +55,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--travel", opt->travel,
                   "path (follow the planner's path) or potential-field (seed 001; the plan is the reference)")
       ->check(CLI::IsMember({"path", "potential-field"}));
+  cmd->add_flag("--undock", opt->undock, "After charging starts, reverse to the staging pose (docking.undock)");
   cmd->add_flag("--animate", opt->animate, "Also write animation frames (and an MP4 when ffmpeg is installed)");
   return [opt, cmd]() {
     worlds::PoseOverrides overrides;
@@ -67,6 +69,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     config.seed = opt->seed;
     if (!opt->travel.empty())
       config.travel = opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
+    if (opt->undock) config.docking.undock = true;
     if (opt->animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 

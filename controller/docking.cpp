@@ -15,6 +15,8 @@ std::string_view to_string(DockPhase p) {
     case DockPhase::kApproach: return "approach";
     case DockPhase::kBackOff: return "back_off";
     case DockPhase::kDocked: return "docked";
+    case DockPhase::kUndock: return "undock";
+    case DockPhase::kUndocked: return "undocked";
     case DockPhase::kFailed: return "failed";
   }
   return "unknown";
@@ -98,7 +100,8 @@ bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {
-  const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed;
+  const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed && phase_ != DockPhase::kUndock &&
+                       phase_ != DockPhase::kUndocked;
   if (in.displaced && docking && !pressing_ && !recovering_) {
     recovering_ = true;
     settled_s_ = unsettled_s_ = 0;
@@ -227,7 +230,28 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       }
       break;
     }
+    case DockPhase::kUndock: {
+      // Straight back out along the axis to the staging pose, guarded like a back-off.
+      const Vec2 rel = in_dock_frame(in.odom_pose.position());
+      if (rel.x <= -params_.staging_distance_m) {
+        phase_ = DockPhase::kUndocked;
+        break;
+      }
+      const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
+      out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
+      if (!guard(in, out.twist, false)) {
+        out.twist = {};
+        out.blocked = true;
+        stuck_time_s_ += in.dt_s;
+        if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
+      } else {
+        stuck_time_s_ = 0;
+        note_clear(in.dt_s);
+      }
+      break;
+    }
     case DockPhase::kDocked:
+    case DockPhase::kUndocked:
     case DockPhase::kFailed:
       break;
   }
@@ -238,8 +262,9 @@ DockingCommand DockingController::decide(const DockingInput& in) {
 DockingCommand DockingController::approach(const DockingInput& in) {
   DockingCommand out;
   if (in.charging) {
-    phase_ = DockPhase::kDocked;
+    phase_ = params_.undock ? DockPhase::kUndock : DockPhase::kDocked;
     pressing_ = false;
+    stuck_time_s_ = 0;
     return out;
   }
   if (in.charger_contact || pressing_) {

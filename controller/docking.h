@@ -18,7 +18,7 @@
 
 namespace plantsim::controller {
 
-enum class DockPhase { kTravel, kAlign, kApproach, kBackOff, kDocked, kFailed };
+enum class DockPhase { kTravel, kAlign, kApproach, kBackOff, kDocked, kUndock, kUndocked, kFailed };
 std::string_view to_string(DockPhase p);
 
 struct DockingParams {
@@ -38,6 +38,7 @@ struct DockingParams {
   double press_timeout_s = 1.5;         ///< pressed this long without charging: a miss
   double stuck_timeout_s = 20.0;        ///< approach or back-off blocked (or unsettled after a shove) this
                                         ///< long: give up, stopped
+  bool undock = false;                  ///< after charging starts, reverse to the staging pose (guarded)
   double settle_s = 1.0;                ///< after a displacement: stopped, localised and untouched this long
                                         ///< before recovering (a new way to the staging pose)
   // Moving obstacles met while travelling.

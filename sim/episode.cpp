@@ -125,10 +125,13 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
       result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m, d.phase, d.wall_following, target_at});
       if (!d.finished.empty()) {
-        // Success is the charger's signal with no collision on the way.
-        result.docked = d.finished == "docked" && result.collisions == 0;
-        result.status = d.finished == "docked" && !result.docked ? "docked_with_collision" : d.finished;
-        if (d.finished != "docked") metrics.measure_final_error(physics);
+        // Success is the charger's signal with no collision on the way (and, undocking, the
+        // staging pose reached again).
+        const bool charged = d.finished == "docked" || d.finished == "undocked";
+        result.docked = charged && result.collisions == 0;
+        result.undocked = d.finished == "undocked";
+        result.status = charged && !result.docked ? "docked_with_collision" : d.finished;
+        if (!charged) metrics.measure_final_error(physics);
         break;
       }
       const controller::Twist twist = governor.limit(d.twist, p.slipping, period * dt);

@@ -79,7 +79,8 @@ struct EpisodeResult {
   bool succeeded() const { return docked || caught; }
   double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
   double heading_error_deg = 0;
-  bool charging = false;         ///< the charger's own signal at the end
+  bool charging = false;         ///< the charger's own signal was seen (charging started)
+  bool undocked = false;         ///< with docking.undock: back at the staging pose after charging
   int collisions = 0;            ///< separate contacts with obstacles or walls
   int collisions_robot_moving = 0;  ///< ... of which the robot began by moving towards what it touched
   int retries = 0;

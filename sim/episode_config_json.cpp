@@ -213,6 +213,7 @@ const std::vector<BoolField>& bool_fields() {
       {"lidar", "enabled", [](EpisodeConfig& c) -> bool& { return c.lidar.enabled; }},
       {"lidar", "max_range_returns", [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
       {"traction", "enabled", [](EpisodeConfig& c) -> bool& { return c.traction.enabled; }},
+      {"docking", "undock", [](EpisodeConfig& c) -> bool& { return c.docking.undock; }},
       {"layer", "enabled", [](EpisodeConfig& c) -> bool& { return c.perception.layer.enabled; }},
   };
   return table;

@@ -7,6 +7,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["status"] = r.status;
   j["docked"] = r.docked;
   j["charging"] = r.charging;
+  j["undocked"] = r.undocked;
   j["caught"] = r.caught;
   j["travel"] = r.travel;
   j["local_minima"] = r.local_minima;

@@ -39,7 +39,7 @@ void EpisodeMetrics::charging(const PhysicsWorld& physics, bool on) {
   // The pose errors are those at the moment charging starts (the first time, if it starts again).
   if (on && !charging_measured_) measure_final_error(physics);
   charging_measured_ = charging_measured_ || on;
-  r_.charging = on;
+  r_.charging = r_.charging || on;
 }
 
 void EpisodeMetrics::after_step(const PhysicsWorld& physics) {

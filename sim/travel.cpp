@@ -40,6 +40,7 @@ controller::DockingInput docking_input(const Perception& p) {
 Decision decision_of(const controller::DockingCommand& cmd) {
   Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, ""};
   if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
+  if (cmd.phase == controller::DockPhase::kUndocked) d.finished = "undocked";
   if (cmd.phase == controller::DockPhase::kFailed) d.finished = "failed";
   return d;
 }

@@ -198,3 +198,34 @@ TEST(Docking, DetectionsReanchorTheDockInTheOdometryFrame) {
 
 }  // namespace
 }  // namespace plantsim::controller
+
+namespace plantsim::controller {
+namespace {
+
+TEST(Docking, UndockReversesToTheStagingPoseGuarded) {
+  DockingParams p;
+  p.undock = true;
+  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingInput in;
+  auto at_pose = [&](Pose2 pose, bool contact, bool charging) {
+    in = {};
+    in.pose = in.odom_pose = pose;
+    in.charger_contact = contact;
+    in.charging = charging;
+    in.dt_s = 0.02;
+    return dc.step(in);
+  };
+  at_pose({1, 0, 0}, false, false);
+  at_pose({1, 0, 0}, false, false);
+  EXPECT_EQ(at_pose({2, 0, 0}, true, true).phase, DockPhase::kUndock);  // charging: now back out
+  DockingCommand c = at_pose({1.9, 0, 0}, false, false);
+  EXPECT_LT(c.twist.v_mps, 0);
+  in.nearby_obstacles = {{{1.2, -0.3, 1.4, 0.3}, {0, 0}}};  // someone behind: stops
+  c = dc.step(in);
+  EXPECT_EQ(c.twist.v_mps, 0.0);
+  EXPECT_TRUE(c.blocked);
+  EXPECT_EQ(at_pose({1.0, 0, 0}, false, false).phase, DockPhase::kUndocked);
+}
+
+}  // namespace
+}  // namespace plantsim::controller
