@@ -213,7 +213,8 @@ std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double
 std::string summary_csv(const std::vector<std::string>& lines) {
   struct Acc {
     std::int64_t n = 0, docked = 0, collisions = 0, retries = 0, trapped = 0, timeouts = 0;
-    std::int64_t robot_collisions = 0, localization_not_ok = 0;
+    std::int64_t robot_collisions = 0, localization_not_ok = 0, charging = 0;
+    double stops = 0, replans = 0, recoveries = 0;
     double localization_error_max = 0;
     double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0, wall_follows = 0;
     std::int64_t ratio_n = 0, driven_n = 0;
@@ -241,26 +242,32 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     a.robot_collisions += j.value("collisions_robot_moving", 0);
     a.localization_error_max = std::max(a.localization_error_max, j.value("localization_error_max_m", 0.0));
     a.localization_not_ok += j.value("localization_status", std::string("ok")) != "ok";
+    a.stops += j.value("stops", 0);
+    a.replans += j.value("replans", 0);
+    a.recoveries += j.value("recoveries", 0);
+    a.charging += j.value("charging", false);
   }
   std::string out =
       "world,planner,controller,fault,episodes,docked,success_rate,ci95_low,ci95_high,mean_time_s,"
       "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
       "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,collisions_robot_moving,"
-      "max_localization_error_mm,localization_not_ok\n";
+      "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,charging\n";
   for (const auto& [key, a] : acc) {
     const auto [lo, hi] = wilson_interval(a.docked, a.n);
     char row[800];
     std::snprintf(row, sizeof row,
-                  "%s,%s,%s,%s,%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%.2f,%lld\n",
-                  std::get<0>(key).c_str(), std::get<1>(key).c_str(), std::get<2>(key).c_str(), std::get<3>(key).c_str(),
+                  ",%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%.2f,%lld,"
+                  "%.3f,%.3f,%.3f,%lld\n",
                   static_cast<long long>(a.n), static_cast<long long>(a.docked), static_cast<double>(a.docked) / a.n, lo, hi,
                   a.time / a.n, a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
                   a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
                   static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
                   a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
                   static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
-                  1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok));
-    out += row;
+                  1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok), a.stops / a.n,
+                  a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
+    out += csv_field(std::get<0>(key)) + "," + csv_field(std::get<1>(key)) + "," + csv_field(std::get<2>(key)) + "," +
+           csv_field(std::get<3>(key)) + row;
   }
   return out;
 }

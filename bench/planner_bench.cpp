@@ -10,6 +10,7 @@
 
 #include "bench/bench_report.h"
 #include "planner/planner.h"
+#include "planner/vg_overlay.h"
 #include "worlds/random_plant.h"
 #include "worlds/world_loader.h"
 
@@ -128,6 +129,40 @@ int run_planner_bench(const std::string& shared_data, bool quick) {
     mean /= static_cast<double>(random_ms.size());
     report("planner", {nw.name + "/vg/random_query_mean", mean, "ms"},
            Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
+    // A replan around 5 sensed boxes on the way (0.6 m, on the optimal path): on the warm map
+    // graph with the boxes added on top, against a planner rebuilt with them.
+    const planner::PlannerInput in = planner::planner_input(nw.world, false);
+    const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(p.get());
+    const planner::PlanResult way = p->plan(nw.world.start.position(), nw.world.charger.position());
+    if (vg && way.status == planner::PlanStatus::kOk && way.path.size() >= 2) {
+      std::vector<geom::Rect> raw, grown;
+      for (int k = 1; k <= 5; ++k) {
+        const double f = k / 6.0;
+        const std::size_t i = std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
+        const geom::Vec2 c = way.path[i] + 0.5 * (way.path[i + 1] - way.path[i]);
+        raw.push_back({c.x - 0.3, c.y - 0.3, c.x + 0.3, c.y + 0.3});
+        grown.push_back(raw.back().inflated(in.inflation_m));
+      }
+      planner::PlannerInput with = in;
+      with.obstacles.insert(with.obstacles.end(), raw.begin(), raw.end());
+      with.snap_to_free = true;
+      std::vector<double> rebuild_ms, overlay_ms;
+      double rebuild_len = 0, overlay_len = 0;
+      for (int r = 0; r < reps; ++r) {
+        auto t0 = Clock::now();
+        rebuild_len = planner::make_planner("vg", with)->plan(nw.world.start.position(), nw.world.charger.position()).length;
+        rebuild_ms.push_back(ms_since(t0));
+        t0 = Clock::now();
+        overlay_len = planner::plan_with_added(*vg, grown, nw.world.start.position(), nw.world.charger.position()).length;
+        overlay_ms.push_back(ms_since(t0));
+      }
+      if (std::abs(rebuild_len - overlay_len) > 1e-9 * std::max(1.0, rebuild_len)) {
+        std::cerr << "bench: replan length mismatch on " << nw.name << "\n";
+        return 1;
+      }
+      report("planner", {nw.name + "/vg/replan_5_boxes_on_map_graph", median(overlay_ms), "ms"},
+             Measure{nw.name + "/vg/replan_5_boxes_rebuilt", median(rebuild_ms), "ms"});
+    }
   }
   return 0;
 }

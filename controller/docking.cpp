@@ -134,6 +134,25 @@ bool DockingController::guard(const DockingInput& in, const Twist& twist, bool s
   return false;
 }
 
+bool DockingController::reverse_to_staging(const DockingInput& in, DockingCommand& out) {
+  const Vec2 rel = in_dock_frame(in.odom_pose.position());
+  if (rel.x <= -params_.staging_distance_m) return true;
+  // Reverse straight out, holding the axis heading; the next approach corrects offsets.
+  const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
+  out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
+  if (!guard(in, out.twist, false)) {
+    // Something behind: wait for it; stopped for good (failed) if it never goes.
+    out.twist = {};
+    out.blocked = true;
+    stuck_time_s_ += in.dt_s;
+    if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
+  } else {
+    stuck_time_s_ = 0;
+    note_clear(in.dt_s);
+  }
+  return false;
+}
+
 void DockingController::note_clear(double dt_s) {
   was_blocked_ = false;
   clear_time_s_ += dt_s;
@@ -197,6 +216,7 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       break;
     }
     case DockPhase::kAlign: {
+      if (yield(in, out)) break;  // someone walking at the robot while it turns: out of the way
       const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
       if (std::fabs(err) <= params_.align_tolerance_rad) {
         phase_ = DockPhase::kApproach;
@@ -209,47 +229,12 @@ DockingCommand DockingController::decide(const DockingInput& in) {
     case DockPhase::kApproach:
       out = approach(in);
       break;
-    case DockPhase::kBackOff: {
-      const Vec2 rel = in_dock_frame(in.odom_pose.position());
-      if (rel.x <= -params_.staging_distance_m) {
-        phase_ = giving_up_ ? DockPhase::kFailed : DockPhase::kAlign;
-      } else {
-        // Reverse straight out, holding the axis heading; the next approach corrects offsets.
-        const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
-        out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
-        if (!guard(in, out.twist, false)) {
-          // Something behind: wait for it; stopped for good (failed) if it never goes.
-          out.twist = {};
-          out.blocked = true;
-          stuck_time_s_ += in.dt_s;
-          if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
-        } else {
-          stuck_time_s_ = 0;
-          note_clear(in.dt_s);
-        }
-      }
+    case DockPhase::kBackOff:
+      if (reverse_to_staging(in, out)) phase_ = giving_up_ ? DockPhase::kFailed : DockPhase::kAlign;
       break;
-    }
-    case DockPhase::kUndock: {
-      // Straight back out along the axis to the staging pose, guarded like a back-off.
-      const Vec2 rel = in_dock_frame(in.odom_pose.position());
-      if (rel.x <= -params_.staging_distance_m) {
-        phase_ = DockPhase::kUndocked;
-        break;
-      }
-      const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
-      out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
-      if (!guard(in, out.twist, false)) {
-        out.twist = {};
-        out.blocked = true;
-        stuck_time_s_ += in.dt_s;
-        if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
-      } else {
-        stuck_time_s_ = 0;
-        note_clear(in.dt_s);
-      }
+    case DockPhase::kUndock:
+      if (reverse_to_staging(in, out)) phase_ = DockPhase::kUndocked;
       break;
-    }
     case DockPhase::kDocked:
     case DockPhase::kUndocked:
     case DockPhase::kFailed:

@@ -108,6 +108,8 @@ class DockingController {
   /// what lies at the charger when `spare_charger`.
   bool guard(const DockingInput& in, const Twist& twist, bool spare_charger);
   void note_clear(double dt_s);
+  /// Backs straight out along the axis (guarded); true once at the staging pose.
+  bool reverse_to_staging(const DockingInput& in, DockingCommand& out);
 
   PurePursuit tracker_;
   DockingParams params_;

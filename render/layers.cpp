@@ -165,6 +165,18 @@ void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySamp
   c.coloured_polyline(pts, colours, 3.0);
 }
 
+void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& events) {
+  using Kind = sim::EpisodeResult::Event::Kind;
+  const double px = 1.0 / c.transform().scale;
+  for (const auto& e : events) {
+    // Nested sizes, so that a stop, a replan and a recovery at one place all show.
+    const double r = e.kind == Kind::kStop ? 6 * px : e.kind == Kind::kReplan ? 9 * px : 12 * px;
+    const Rgb colour = e.kind == Kind::kStop ? palette::kStopMark : e.kind == Kind::kReplan ? palette::kReplanMark
+                                                                                          : palette::kRecoveryMark;
+    c.ring(e.at, r, 2.5, colour);
+  }
+}
+
 void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour) {
   if (robot.rectangular()) {
     const double hl = 0.5 * robot.length_m, hw = 0.5 * robot.width_m;

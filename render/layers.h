@@ -37,6 +37,8 @@ void draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& 
 /// The driven path, each segment coloured by speed on viridis from 0 to `max_speed_mps`.
 void draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
                               std::size_t upto = static_cast<std::size_t>(-1));
+/// Rings where the robot stopped, replanned and recovered, a few pixels across at any scale.
+void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& events);
 /// Footprint outlines every `every_s` seconds of the trajectory.
 void draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot, const std::vector<sim::TrajectorySample>& t,
                      double every_s);

@@ -49,6 +49,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
   draw_scan(c, run.last_scan);
   draw_layer(c, run.layer_final);
+  draw_events(c, run.events);
   draw_tracked(c, run.tracked_final);
   draw_start(c, world);
   if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot);
@@ -79,6 +80,13 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!run.last_scan.unexplained.empty()) legend.push_back({palette::kScanOffMap, "scan off map"});
   if (!run.tracked_final.empty()) legend.push_back({palette::kTracked, "tracked"});
   if (!run.layer_final.empty()) legend.push_back({palette::kLayer, "sensed layer"});
+  using Kind = sim::EpisodeResult::Event::Kind;
+  auto has = [&](Kind k) {
+    return std::any_of(run.events.begin(), run.events.end(), [&](const auto& e) { return e.kind == k; });
+  };
+  if (has(Kind::kStop)) legend.push_back({palette::kStopMark, "stop"});
+  if (has(Kind::kReplan)) legend.push_back({palette::kReplanMark, "replan"});
+  if (has(Kind::kRecovery)) legend.push_back({palette::kRecoveryMark, "recovery"});
   fig.legend(bar_x - 10, 380, legend);
   if (transform_out) *transform_out = t;
   return fig.finish();

@@ -66,6 +66,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   TravelSettings settings{config.tracking, config.docking, config.field, config.pursuit_replan_period_s};
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
   settings.docking.footprint_radius_m = map.robot.radius_m;
+  settings.map_planner = &planner;  // replans add what is sensed on top of its graph
   const bool pursuit = map.target.has_value();
   std::unique_ptr<Travel> travel =
       config.travel == TravelMode::kPotentialField ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
@@ -121,7 +122,13 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         next_snapshot_s = t + config.scan_log_period_s;
         result.perception_log.push_back({t, perceiver.last_scan(), perceiver.tracker().boxes(t), p.layer});
       }
+      const TravelCounts before = travel->counts();
       const Decision d = travel->decide(p);  // decide
+      const TravelCounts after = travel->counts();
+      using Kind = EpisodeResult::Event::Kind;
+      if (after.stops > before.stops) result.events.push_back({Kind::kStop, t, truth.position()});
+      if (after.replans > before.replans) result.events.push_back({Kind::kReplan, t, truth.position()});
+      if (after.recoveries > before.recoveries) result.events.push_back({Kind::kRecovery, t, truth.position()});
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
       result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m, d.phase, d.wall_following, target_at});
       if (!d.finished.empty()) {

@@ -118,6 +118,14 @@ struct EpisodeResult {
   std::vector<PerceptionSnapshot> perception_log;
   std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
   std::vector<geom::Rect> layer_final;               ///< the local obstacle layer at the end
+  /// Where the robot stopped for something, replanned, or recovered after a displacement.
+  struct Event {
+    enum class Kind { kStop, kReplan, kRecovery };
+    Kind kind;
+    double t_s;
+    Vec2 at;  ///< true position
+  };
+  std::vector<Event> events;
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the

@@ -4,13 +4,29 @@
 
 #include <algorithm>
 
+#include "planner/vg_overlay.h"
+
 namespace plantsim::sim {
 
 std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
                                                    const controller::DockingParams& docking, const geom::Pose2& from,
-                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen) {
-  planner::PlannerInput again = planner::planner_input(map, true);
+                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen,
+                                                   const planner::Planner* map_planner) {
   const double extra = std::max(0.0, docking.safety_margin_m - map.inflation_margin_m) + 0.05;
+  if (const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(map_planner)) {
+    std::vector<geom::Rect> added;
+    added.reserve(seen.size());
+    for (const auto& b : seen) added.push_back(b.box.inflated(extra + map.planning_inflation_m()));
+    const planner::PlanResult re = planner::plan_with_added(*vg, added, from.position(), to);
+    if (re.status == planner::PlanStatus::kOk) {
+      std::vector<geom::Vec2> path = re.path;
+      if (re.start_snapped) path.insert(path.begin(), from.position());
+      return path;
+    }
+    if (re.status == planner::PlanStatus::kNoPath) return std::nullopt;
+    // Start or goal blocked on the map itself (shoved into a margin): the rebuild snaps them.
+  }
+  planner::PlannerInput again = planner::planner_input(map, true);
   for (const auto& b : seen) again.obstacles.push_back(b.box.inflated(extra));
   again.snap_to_free = true;
   const planner::PlanResult re = planner::make_planner(planner_name, again)->plan(from.position(), to);

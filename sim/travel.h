@@ -23,6 +23,9 @@ struct TravelSettings {
   controller::DockingParams docking;        ///< staging distance and footprint already set from the map
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
+  /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
+  /// is never rebuilt: the sensed obstacles are added on top, planner/vg_overlay.h).
+  const planner::Planner* map_planner = nullptr;
 };
 
 struct Decision {
@@ -48,10 +51,12 @@ class Travel {
 };
 
 /// Plans from the estimated pose to `to` on the robot's map with the sensed obstacles added
-/// (grown by the arc check's extra clearance, so that the new path is one it will accept).
+/// (grown by the arc check's extra clearance, so that the new path is one it will accept): on
+/// `map_planner`'s own graph when it is the visibility graph, else with a planner built anew.
 std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
                                                    const controller::DockingParams& docking, const geom::Pose2& from,
-                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen);
+                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen,
+                                                   const planner::Planner* map_planner = nullptr);
 
 /// The docking controller's input from a perception.
 controller::DockingInput docking_input(const Perception& p);

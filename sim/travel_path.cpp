@@ -17,7 +17,7 @@ class PathTravel : public Travel {
     if (need_plan_ && p.t_s >= next_try_s_) {
       // After a displacement: a new way to the staging pose from wherever the robot now is.
       next_try_s_ = p.t_s + 1.0;
-      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles)) {
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles, s_.map_planner)) {
         control_.replace_path(*path);
         plan_ = std::move(*path);
         need_plan_ = false;
@@ -27,7 +27,7 @@ class PathTravel : public Travel {
     if (cmd.replan_requested) {
       // Plan again with what blocks the way as extra obstacles, from the nearest free point
       // if the robot stands inside their margin.
-      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles)) {
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles, s_.map_planner)) {
         control_.replace_path(*path);
         plan_ = std::move(*path);
         ++replans_;

@@ -14,7 +14,7 @@ class PursuitTravel : public Travel {
   Decision decide(const Perception& p) override {
     if (p.target && (p.t_s >= next_plan_s_ || control_.phase() != controller::DockPhase::kTravel)) {
       next_plan_s_ = p.t_s + s_.pursuit_replan_period_s;
-      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, *p.target, p.obstacles)) {
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, *p.target, p.obstacles, s_.map_planner)) {
         if (control_.phase() == controller::DockPhase::kTravel) control_.replace_path(*path);
         else control_ = controller::DockingController(s_.tracking, s_.docking, *path, map_.charger);
         ++replans_;

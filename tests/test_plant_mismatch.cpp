@@ -193,3 +193,79 @@ TEST(ChargerPads, ChargeOnlyWhenPressedWithinToleranceForTheDwell) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+#include <random>
+
+#include "geometry/predicates.h"
+#include "planner/vg_overlay.h"
+
+namespace plantsim::planner {
+namespace {
+
+// Replanning around sensed boxes on the map's own graph gives the lengths a planner rebuilt
+// with the boxes added gives: exact, without the rebuild.
+TEST(ReplanOnTheMapGraph, SameLengthsAsARebuildWithTheBoxesAdded) {
+  int compared = 0, blocked = 0;
+  for (const char* file : {"worlds/world_N50.json", "worlds/world_N200.json"}) {
+    const worlds::World w = worlds::load_world(test::shared_data(file));
+    const PlannerInput in = planner_input(w, true);
+    VisibilityGraphPlanner base(in);  // one graph for every query: its caches warm up as they go
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax),
+        side(0.3, 1.6);
+    for (int trial = 0; trial < 60; ++trial) {
+      std::vector<Rect> raw, inflated;
+      const int k = 1 + trial % 8;
+      for (int i = 0; i < k; ++i) {
+        const double x = ux(rng), y = uy(rng), a = side(rng), b = side(rng);
+        raw.push_back({x - a / 2, y - b / 2, x + a / 2, y + b / 2});
+        inflated.push_back(raw.back().inflated(in.inflation_m));
+      }
+      PlannerInput with = in;
+      with.obstacles.insert(with.obstacles.end(), raw.begin(), raw.end());
+      const auto rebuilt = make_planner("vg", with);
+      for (int q = 0; q < 5; ++q) {
+        const Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
+        const PlanResult full = rebuilt->plan(s, g);
+        if (full.status == PlanStatus::kStartBlocked || full.status == PlanStatus::kGoalBlocked) continue;
+        const PlanResult over = plan_with_added(base, inflated, s, g);
+        ASSERT_EQ(over.status, full.status) << file << " trial " << trial << " query " << q;
+        ASSERT_FALSE(over.start_snapped);
+        if (full.status == PlanStatus::kOk) {
+          ASSERT_NEAR(over.length, full.length, 1e-9 * std::max(1.0, full.length)) << file << " trial " << trial;
+          ++compared;
+        } else {
+          ++blocked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 300);
+  std::printf("%d paths equal to the rebuilt planner's, %d no-path agreed\n", compared, blocked);
+}
+
+TEST(ReplanOnTheMapGraph, AStartWithinAnAddedBoxLeavesByTheNearestSide) {
+  worlds::World w;
+  w.floor = {0, 0, 10, 10};
+  w.start = {1, 1, 0};
+  w.charger = {9, 9, 0};
+  PlannerInput in = planner_input(w, false);
+  VisibilityGraphPlanner base(in);
+  const Rect box{4.0, 4.0, 6.0, 6.0};
+  const PlanResult r = plan_with_added(base, {box}, {4.2, 5.0}, {8.0, 5.0});
+  ASSERT_EQ(r.status, PlanStatus::kOk);
+  EXPECT_TRUE(r.start_snapped);
+  EXPECT_DOUBLE_EQ(r.path.front().x, 4.0);  // out by the near side
+  EXPECT_DOUBLE_EQ(r.path.front().y, 5.0);
+  for (std::size_t i = 1; i < r.path.size(); ++i) EXPECT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], box));
+  EXPECT_EQ(plan_with_added(base, {box}, {1.0, 1.0}, {5.0, 5.0}).status, PlanStatus::kGoalBlocked);
+  // A wall with a gap at its top; a sensed box closing the gap leaves no way.
+  worlds::World walled = w;
+  walled.obstacles = {{4.9, 0.0, 5.1, 8.0}};
+  VisibilityGraphPlanner with_wall(planner_input(walled, false));
+  EXPECT_EQ(plan_with_added(with_wall, {}, {1, 1}, {9, 1}).status, PlanStatus::kOk);
+  EXPECT_EQ(plan_with_added(with_wall, {{4.0, 8.0, 6.0, 10.0}}, {1, 1}, {9, 1}).status, PlanStatus::kNoPath);
+}
+
+}  // namespace
+}  // namespace plantsim::planner

@@ -224,6 +224,19 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
   };
   EXPECT_TRUE(in_legend(palette::kUnmapped));
   EXPECT_TRUE(in_legend(palette::kLayer));
+  // Stops and replans marked where they happened, and in the legend.
+  ASSERT_GT(run.replans, 0);
+  ASSERT_GT(run.stops, 0);
+  EXPECT_TRUE(in_legend(palette::kReplanMark));
+  EXPECT_TRUE(in_legend(palette::kStopMark));
+  int replans = 0;
+  for (const auto& e : run.events) {
+    if (e.kind != sim::EpisodeResult::Event::Kind::kReplan) continue;
+    ++replans;
+    const double r = 9.0 / t.scale;
+    EXPECT_GT(count({e.at.x - r - 0.05, e.at.y - r - 0.05, e.at.x + r + 0.05, e.at.y + r + 0.05}, palette::kReplanMark), 0);
+  }
+  EXPECT_EQ(replans, run.replans);
 }
 
 }  // namespace
