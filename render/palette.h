@@ -28,7 +28,7 @@ inline constexpr Rgb kTracked{0, 0, 0};           ///< boxes of the tracked obst
 inline constexpr Rgb kEstimate{120, 60, 0};       ///< the path as the robot estimated it
 inline constexpr Rgb kUnmapped{150, 30, 30};      ///< obstacles in the plant but not on the map (hatched)
 inline constexpr Rgb kLayer{204, 121, 167};       ///< the local obstacle layer's occupied cells
-inline constexpr Rgb kStopMark{230, 159, 0};      ///< where the robot stopped for something (ring)
+inline constexpr Rgb kStopMark{0, 158, 115};      ///< where the robot stopped for something (ring)
 inline constexpr Rgb kReplanMark{0, 114, 178};    ///< where it replanned (ring)
 inline constexpr Rgb kRecoveryMark{213, 0, 0};    ///< where it recovered after a displacement (ring)
 

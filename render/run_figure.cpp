@@ -69,7 +69,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                                      {palette::kPlan, "plan"},         {palette::kFootprint, "robot"},
                                      {palette::kStart, "start"},       {palette::kCharger, "charger"}};
   if (!world.unmapped.empty()) legend.push_back({palette::kUnmapped, "not on map"});
-  if (worlds::differs_from_map(world)) legend.push_back({palette::kCharger, "mapped charger"});
+  if (worlds::differs_from_map(world)) legend.push_back({palette::kCharger, "map charger"});
   if (!world.moving.empty()) legend.push_back({palette::kMoving, "moving"});
   if (world.target) legend.push_back({palette::kTarget, "target"});
   if (!run.explored.empty()) legend.push_back({palette::kExplored, "explored"});
