@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -40,9 +39,14 @@ std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   std::ifstream in(test::source_file(rel));
   std::stringstream text;
   text << in.rdbuf();
-  std::string s = std::regex_replace(text.str(), std::regex("\\.\\./shared/data/"), test::shared_data(""));
-  if (const char* env = std::getenv("PLANTSIM_SUITE_SCALE"); env && std::atof(env) > 0 && std::atof(env) < 1)
-    s = std::regex_replace(s, std::regex("seeds: \\[.*\\]"), "seeds: " + std::to_string(std::max(5, static_cast<int>(150 * std::atof(env)))));
+  std::string s = text.str();
+  const std::string from = "../shared/data/", to = test::shared_data("");
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
+  if (const char* env = std::getenv("PLANTSIM_SUITE_SCALE"); env && std::atof(env) > 0 && std::atof(env) < 1) {
+    const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
+    if (list != std::string::npos && end != std::string::npos)
+      s.replace(list, end + 1 - list, "seeds: " + std::to_string(std::max(5, static_cast<int>(150 * std::atof(env)))));
+  }
   const fs::path p = dir / fs::path(rel).filename();
   std::ofstream(p) << s;
   return p.string();
