@@ -26,14 +26,9 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   in.floor = world.floor;
   in.obstacles = world.obstacles;  // the map's: unmapped obstacles are the plant's alone
   in.inflation_m = world.planning_inflation_m();
-  if (include_charger_body) {
-    // The charger where the map has it.
-    worlds::World charger_only;
-    charger_only.robot = world.robot;
-    charger_only.charger_spec = world.charger_spec;
-    charger_only.charger = worlds::robot_map_charger(world);
-    in.obstacles.push_back(worlds::charger_body(charger_only).bounding_box());
-  }
+  // The charger where the map has it.
+  if (include_charger_body)
+    in.obstacles.push_back(worlds::charger_body(world, worlds::robot_map_charger(world)).bounding_box());
   in.maze = world.maze;
   return in;
 }

@@ -58,11 +58,7 @@ void draw_unmapped(GlCanvas& c, const worlds::World& w) {
 
 void draw_mapped_charger(GlCanvas& c, const worlds::World& w) {
   if (!worlds::differs_from_map(w)) return;
-  worlds::World on_map;
-  on_map.robot = w.robot;
-  on_map.charger_spec = w.charger_spec;
-  on_map.charger = worlds::robot_map_charger(w);
-  const worlds::ChargerBody cb = worlds::charger_body(on_map);
+  const worlds::ChargerBody cb = worlds::charger_body(w, worlds::robot_map_charger(w));
   const Vec2 along = geom::rotate({cb.half_depth_m, 0}, cb.yaw), across = geom::rotate({0, cb.half_width_m}, cb.yaw);
   const Vec2 k = cb.center;
   c.polyline({k - along - across, k + along - across, k + along + across, k - along + across, k - along - across}, 1.5,

@@ -38,11 +38,13 @@ Rect ChargerBody::bounding_box() const {
   return {center.x - ex, center.y - ey, center.x + ex, center.y + ey};
 }
 
-ChargerBody charger_body(const World& world) {
-  const Vec2 ahead = world.charger.heading();
+ChargerBody charger_body(const World& world) { return charger_body(world, world.charger); }
+
+ChargerBody charger_body(const World& world, const Pose2& docked) {
+  const Vec2 ahead = docked.heading();
   const double half_depth = 0.5 * world.charger_spec.depth_m;
-  const Vec2 center = world.charger.position() + (world.robot.front_extent_m() + half_depth) * ahead;
-  return {center, half_depth, 0.5 * world.charger_spec.width_m, world.charger.yaw};
+  const Vec2 center = docked.position() + (world.robot.front_extent_m() + half_depth) * ahead;
+  return {center, half_depth, 0.5 * world.charger_spec.width_m, docked.yaw};
 }
 
 Pose2 staging_pose(const World& world) {

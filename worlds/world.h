@@ -115,6 +115,8 @@ struct ChargerBody {
 
 /// The block sits just ahead of the docked pose, its face at robot radius from the centre.
 ChargerBody charger_body(const World& world);
+/// The same block for the docked pose `docked` (the map's, say, instead of the real one).
+ChargerBody charger_body(const World& world, const Pose2& docked);
 
 /// Where the final approach starts: on the approach axis, staging_distance behind docked.
 Pose2 staging_pose(const World& world);
