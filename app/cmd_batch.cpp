@@ -1,10 +1,15 @@
-// `plantsim batch SCENARIO.yaml [--out DIR] [--shard i/n]` and `plantsim merge DIR... --out DIR`.
+// `plantsim batch SCENARIO.yaml [--out DIR] [--shard i/n] [--min-success R] [--junit FILE]` and
+// `plantsim merge DIR... --out DIR`. Both judge each configuration against the gate (the
+// scenario's `gate:` and --min-success) and exit 1 when one is below its threshold.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "app/commands.h"
+#include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
+#include "util/atomic_file.h"
 
 namespace plantsim::app {
 namespace {
@@ -18,14 +23,46 @@ std::pair<int, int> parse_shard(const std::string& text) {
   return {i, n};
 }
 
+// The gate options both commands take.
+struct GateOptions {
+  std::optional<double> min_success;
+  std::string statistic;
+  std::string junit;
+
+  void add_to(CLI::App* cmd) {
+    cmd->add_option("--min-success", min_success,
+                    "Exit 1 when a configuration's success is below R (0..1); replaces the scenario's gate.min_success")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--gate-statistic", statistic, "success_rate (default) or wilson_low (the 95 % Wilson lower bound)")
+        ->check(CLI::IsMember({"success_rate", "wilson_low"}));
+    cmd->add_option("--junit", junit, "Also write a JUnit XML report, one test case per configuration");
+  }
+
+  // Judges the records; prints failures; returns the exit code.
+  int judge(const std::vector<std::string>& records, batch::Gate gate, const std::string& suite, const char* who) const {
+    if (min_success) gate.min_success = *min_success;
+    if (!statistic.empty()) gate.statistic = batch::parse_gate_statistic(statistic, "--gate-statistic");
+    const auto verdicts = batch::judge_configurations(records, gate);
+    if (!junit.empty()) util::write_file_atomically(junit, batch::junit_xml(suite, verdicts, gate.statistic));
+    int gated = 0, failed = 0;
+    for (const auto& v : verdicts) gated += v.threshold.has_value(), failed += !v.passed;
+    if (gated == 0) return kExitOk;
+    std::cerr << batch::gate_failures_text(verdicts, gate.statistic);
+    std::cout << who << ": gate " << (failed ? "FAILED" : "passed") << ": " << gated - failed << " of " << gated
+              << " gated configurations at or above their threshold\n";
+    return failed ? kExitFailed : kExitOk;
+  }
+};
+
 }  // namespace
 
 std::function<int()> add_batch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("batch", "Run a scenario's episodes on all cores; resumable and splittable into shards");
+  auto* cmd = app.add_subcommand("batch", "Run a scenario's episodes on all cores; resumable, splittable into shards, a gate for CI");
   struct Options {
     std::string scenario, out, shard = "0/1";
     int threads = 0;
-    bool quiet = false, no_figures = false;
+    bool quiet = false, no_figures = false, fresh = false, check = false;
+    GateOptions gate;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("scenario", opt->scenario, "Scenario YAML (docs/batch.md)")->required();
@@ -34,6 +71,9 @@ std::function<int()> add_batch_command(CLI::App& app) {
   cmd->add_option("--threads", opt->threads, "Worker threads (default: one per core)")->check(CLI::Range(0, 256));
   cmd->add_flag("--quiet", opt->quiet, "No progress bar");
   cmd->add_flag("--no-figures", opt->no_figures, "Skip the report's figures");
+  cmd->add_flag("--fresh", opt->fresh, "Discard the folder's earlier episodes instead of resuming");
+  cmd->add_flag("--check", opt->check, "Validate the scenario and count its episodes; run and write nothing");
+  opt->gate.add_to(cmd);
   return [opt]() {
     batch::RunOptions o;
     std::tie(o.shard_index, o.shard_count) = parse_shard(opt->shard);
@@ -41,27 +81,41 @@ std::function<int()> add_batch_command(CLI::App& app) {
     o.threads = opt->threads;
     o.progress = !opt->quiet;
     o.figures = !opt->no_figures;
+    o.fresh = opt->fresh;
+    o.check_only = opt->check;
     const batch::BatchOutcome r = batch::run_batch(opt->scenario, o);
+    if (opt->check) {
+      std::cout << "batch: " << opt->scenario << " is valid: " << r.episodes << " episodes in this shard, scenario "
+                << r.scenario_fingerprint << "\n";
+      return kExitOk;
+    }
     std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, " << r.skipped
               << " already done; " << r.docked << " of those run now docked, " << r.collisions << " collisions -> "
               << o.out_dir << "\n";
-    return kExitOk;
+    return opt->gate.judge(batch::read_episode_records(o.out_dir), r.gate,
+                           std::filesystem::path(opt->scenario).stem().string(), "batch");
   };
 }
 
 std::function<int()> add_merge_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("merge", "Join shard folders of one batch into one");
+  auto* cmd = app.add_subcommand("merge", "Join shard folders of one batch into one (refuses mixed scenarios and missing shards)");
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
+    bool allow_partial = false;
+    GateOptions gate;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("dirs", opt->dirs, "Shard output folders")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Merged output folder")->required();
+  cmd->add_flag("--allow-partial", opt->allow_partial, "Merge even when some of the scenario's episodes are missing");
+  opt->gate.add_to(cmd);
   return [opt]() {
-    const std::int64_t n = batch::merge_batches(opt->dirs, opt->out);
-    std::cout << "merge: " << n << " episodes -> " << opt->out << "\n";
-    return kExitOk;
+    batch::MergeOptions m;
+    m.allow_partial = opt->allow_partial;
+    const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
+    std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out << "\n";
+    return opt->gate.judge(batch::read_episode_records(opt->out), r.gate, "merge", "merge");
   };
 }
 

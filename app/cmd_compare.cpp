@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "worlds/known_keys.h"
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
 #include "render/comparison_figure.h"
@@ -45,8 +46,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
   cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name + "_compare" : opt->out);
     const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out);
+    const std::string& out_dir = staged.path();
     std::vector<render::ComparisonPanel> panels;
     render::Report report;
     report.headers = metric_headers();
@@ -57,7 +59,12 @@ std::function<int()> add_compare_command(CLI::App& app) {
       panel.drove = !opt->plan_only;
       if (opt->plan_only) {
         auto p = planner::make_planner(name, planner::planner_input(world, false));
-        const planner::PlanResult r = p->plan(world.start.position(), world.charger.position());
+        // As `plan`: a ROS map's charger stands against a wall inside the planning inflation, so
+        // its plans end at the staging pose (`run` plans there for every world).
+        const std::string ext = std::filesystem::path(opt->world).extension().string();
+        const bool ros_map = ext == ".yaml" || ext == ".yml";
+        const planner::PlanResult r =
+            p->plan(world.start.position(), ros_map ? worlds::staging_pose(world).position() : world.charger.position());
         panel.run.planner = name;
         panel.run.status = std::string(planner::to_string(r.status));
         panel.run.plan = r.path;
@@ -85,9 +92,10 @@ std::function<int()> add_compare_command(CLI::App& app) {
     report.title = title;
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};
-    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position; nothing driven."
+    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position (the staging pose on ROS maps); nothing driven."
                                   : "Each planner plans to the staging pose; the robot drives and docks in the simulation.";
     render::write_report(report, out_dir + "/report.html");
+    staged.commit();
     return all_ok ? kExitOk : kExitFailed;
   };
 }

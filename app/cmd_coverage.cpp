@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "worlds/known_keys.h"
 #include "planner/coverage_planner.h"
 #include "render/coverage_figure.h"
 #include "render/png_io.h"
@@ -47,8 +48,9 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   cmd->add_flag("--drive", opt->drive, "Also sweep and dock in the simulation");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name + "_coverage" : opt->out);
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_coverage" : opt->out);
+    const std::string& out_dir = staged.path();
     planner::PlannerInput input = planner::planner_input(world, true);
     input.coverage_cell_m = opt->cell_m;
 
@@ -122,6 +124,7 @@ std::function<int()> add_coverage_command(CLI::App& app) {
     report.notes = "Repetition = visits beyond the first / reachable cells; order cost = sum of D_ij = 0.8 cells + 0.2 turns between "
                    "consecutive sub-regions (the document's weights).";
     render::write_report(report, out_dir + "/report.html");
+    staged.commit();
     return all_covered ? kExitOk : kExitFailed;
   };
 }

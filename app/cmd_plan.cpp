@@ -5,6 +5,8 @@
 #include <iomanip>
 #include <iostream>
 
+#include <filesystem>
+
 #include "app/commands.h"
 #include "planner/planner.h"
 #include "planner/grid_astar.h"
@@ -54,7 +56,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     double inflate = -1;
     int corner_steps = 1;
     bool snap = false;
-    std::string map, scen;
+    std::string map, scen, goal;
   };
   auto opt = std::make_shared<Options>();
   auto* world_opt = cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)");
@@ -66,6 +68,10 @@ std::function<int()> add_plan_command(CLI::App& app) {
   cmd->add_option("--corner-steps", opt->corner_steps,
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
       ->check(CLI::Range(1, 16));
+  cmd->add_option("--goal", opt->goal,
+                  "docked (the charger's docked position; default for world files) or staging (the staging pose "
+                  "`run` plans to; default for ROS maps, whose charger stands against a wall inside the planning inflation)")
+      ->check(CLI::IsMember({"docked", "staging"}));
   cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
@@ -81,9 +87,15 @@ std::function<int()> add_plan_command(CLI::App& app) {
     input.snap_to_free = opt->snap;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     auto p = planner::make_planner(opt->planner, input);
-    const planner::PlanResult r = p->plan(world.start.position(), world.charger.position());
+    const std::string ext = std::filesystem::path(opt->world).extension().string();
+    const bool ros_map = ext == ".yaml" || ext == ".yml";
+    const std::string goal_kind = opt->goal.empty() ? (ros_map ? "staging" : "docked") : opt->goal;
+    const geom::Vec2 goal = goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
+    const planner::PlanResult r = p->plan(world.start.position(), goal);
     nlohmann::json out;
     out["status"] = std::string(planner::to_string(r.status));
+    out["goal_kind"] = goal_kind;
+    out["goal"] = {goal.x, goal.y};
     out["planner"] = p->name();
     out["length"] = r.length;
     out["start_snapped"] = r.start_snapped;

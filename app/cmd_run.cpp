@@ -12,6 +12,7 @@
 #include "render/run_figure.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::app {
@@ -62,10 +63,13 @@ std::function<int()> add_run_command(CLI::App& app) {
     if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
     if (!opt->charger.empty()) overrides.charger = parse_pose(opt->charger, "--charger");
     const worlds::World world = worlds::load_world(opt->world, overrides);
-    const std::string out_dir = output_folder(opt->out.empty() ? "results/" + world.name : opt->out);
-
-    auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
+    // Every input is valid by now. The outputs are written into a staging folder beside the
+    // destination (an unwritable place fails here, before the simulation) and moved into place
+    // as a set: a rerun never mixes files of two runs.
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out);
+    const std::string& out_dir = staged.path();
     config.seed = opt->seed;
     if (!opt->travel.empty())
       config.travel = opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
@@ -88,9 +92,10 @@ std::function<int()> add_run_command(CLI::App& app) {
     render::write_report({"plantsim run: " + world.name, line, metric_headers(), {metric_row(r, world.name)}, figures,
                           {"summary.json", "trajectory.csv"}, ""},
                          out_dir + "/report.html");
+    staged.commit();
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
-              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << out_dir << "\n";
+              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
     return r.succeeded() ? kExitOk : kExitFailed;
   };
 }

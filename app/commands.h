@@ -15,10 +15,6 @@ inline constexpr int kExitBadInput = 2;
 /// "plantsim SUB ARGS..." as typed (positional arguments and the options given), for reports.
 std::string command_line(const CLI::App* sub);
 
-/// Creates the output folder `dir` (and its parents); throws std::invalid_argument when it
-/// cannot. Returns `dir`.
-std::string output_folder(const std::string& dir);
-
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);

@@ -6,33 +6,54 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "util/data_dir.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::app {
 
+namespace {
+
+// A word as a POSIX shell reads it back: quoted when it holds anything but safe characters.
+std::string shell_word(const std::string& word) {
+  const bool safe = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                             "0123456789_-./,:=+@%") == std::string::npos;
+  if (safe) return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
 std::string command_line(const CLI::App* sub) {
-  std::string line = "plantsim " + sub->get_name();
+  // Re-runs exactly: each option once, flags without values, values quoted for the shell.
+  std::string line = "plantsim";
+  if (!util::chosen_data_dir().empty()) line += " --data " + shell_word(util::chosen_data_dir());
+  line += " " + sub->get_name();
   for (const CLI::Option* o : sub->get_options()) {
     if (o->count() == 0 || o->get_name() == "--help") continue;
     const bool positional = o->get_lnames().empty();
-    for (const std::string& v : o->results()) line += positional ? " " + v : " --" + o->get_lnames().front() + " " + v;
-    if (o->get_expected_max() == 0 && !positional) line += " --" + o->get_lnames().front();
+    if (positional) {
+      for (const std::string& v : o->results()) line += " " + shell_word(v);
+    } else if (o->get_expected_max() == 0) {
+      line += " --" + o->get_lnames().front();
+    } else {
+      for (const std::string& v : o->results()) line += " --" + o->get_lnames().front() + " " + shell_word(v);
+    }
   }
   return line;
 }
 
-std::string output_folder(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) throw std::invalid_argument("cannot create output folder '" + dir + "'");
-  return dir;
-}
 
 }  // namespace plantsim::app
 
 int main(int argc, char** argv) {
   CLI::App app{"plantsim: drive a wheeled robot through a plant to its charger, in Box2D"};
   app.require_subcommand(1);
+  app.fallthrough();  // --data may follow the subcommand
+  app.set_version_flag("--version", std::string("plantsim ") + PLANTSIM_VERSION + " (commit " + PLANTSIM_GIT_COMMIT + ")");
+  std::string data_dir;
+  app.add_option("--data", data_dir, "Folder of the shared data (default: $PLANTSIM_DATA, else ../shared/data beside the checkout)");
   std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
   auto remember = [&](std::function<int()> action) {
     commands.emplace_back(app.get_subcommands({}).back(), std::move(action));
@@ -49,15 +70,38 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_generate_command(app));
   remember(plantsim::app::add_vary_command(app));
   remember(plantsim::app::add_coverage_command(app));
+  // An unknown command is named, with the known ones (CLI11 would say "A subcommand is required").
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--data") {
+      ++i;
+      continue;
+    }
+    if (word.rfind("--data=", 0) == 0 || word.rfind("-", 0) == 0) continue;
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found |= sub->get_name() == word;
+    }
+    if (!found) {
+      std::cerr << "plantsim: unknown command '" << word << "' (commands: " << known << "; plantsim --help)\n";
+      return plantsim::app::kExitBadInput;
+    }
+    break;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return plantsim::app::kExitBadInput;
   }
   try {
+    if (!data_dir.empty()) plantsim::util::set_data_dir(data_dir);
     for (auto& [sub, action] : commands)
       if (sub->parsed()) return action();
   } catch (const plantsim::worlds::WorldError& e) {

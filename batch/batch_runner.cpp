@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <cerrno>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -27,7 +29,12 @@
 #include "sim/episode_config_json.h"
 #include "sim/episode_json.h"
 #include "util/atomic_file.h"
+#include "util/fingerprint.h"
+#include "util/folder_lock.h"
+#include "util/input_file.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_error.h"
+#include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::batch {
@@ -43,30 +50,49 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-// Reads the complete lines of a JSONL file; a torn last line (a killed run) is cut off.
-std::vector<std::string> read_complete_lines(const std::string& path, bool repair) {
-  std::vector<std::string> lines;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return lines;
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::size_t keep = 0;
-  for (std::size_t start = 0; start < text.size();) {
+// A record the batch can use: a JSON object with a string id and the scenario fingerprint.
+bool usable_record(const std::string& line) {
+  const json j = json::parse(line, nullptr, false);
+  return j.is_object() && j.contains("id") && j["id"].is_string() && j.contains("scenario") && j["scenario"].is_string() &&
+         j.contains("index") && j["index"].is_number_integer() && j.contains("world") && j["world"].is_string() &&
+         j.contains("docked") && j["docked"].is_boolean();
+}
+
+struct JsonlContents {
+  std::vector<std::string> records;  // usable lines
+  std::int64_t bad_lines = 0;        // malformed or foreign-looking complete lines
+  bool torn_tail = false;            // a last line without its newline (a killed run)
+};
+
+// The lines of a JSONL file, sorted into usable records and the rest.
+JsonlContents read_jsonl(const std::string& path) {
+  JsonlContents c;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return c;
+  std::string text;
+  try {
+    text = util::read_input_file(path, 1ull << 34);
+  } catch (const util::InputFileError& e) {
+    throw std::invalid_argument(path + ": " + e.what());
+  }
+  std::size_t start = 0;
+  for (; start < text.size();) {
     const std::size_t end = text.find('\n', start);
     if (end == std::string::npos) break;
-    const std::string line = text.substr(start, end - start);
-    if (json::accept(line)) lines.push_back(line);
+    std::string line = text.substr(start, end - start);
+    if (usable_record(line)) c.records.push_back(std::move(line));
+    else if (line.find_first_not_of(" \t\r") != std::string::npos) ++c.bad_lines;
     start = end + 1;
-    keep = start;
   }
-  if (repair && keep < text.size()) std::filesystem::resize_file(path, keep);
-  return lines;
+  c.torn_tail = start < text.size();
+  return c;
 }
 
 // A free start for this world and seed: uniform over the floor, outside inflated obstacles,
 // with a path to the staging pose, not right at the charger.
 std::optional<geom::Pose2> random_start(const worlds::World& w, planner::Planner& vg, std::uint64_t seed,
-                                        std::size_t world_index) {
-  std::mt19937_64 rng(seed * 1000003ULL + world_index * 7919ULL + 17);
+                                        std::uint64_t world_content) {
+  std::mt19937_64 rng(util::Fingerprint().add(world_content).add(seed).add(std::uint64_t{17}).value());
   std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax),
       yaw(-M_PI, M_PI);
   const geom::Vec2 staging = worlds::staging_pose(w).position();
@@ -89,13 +115,46 @@ std::optional<geom::Pose2> random_start(const worlds::World& w, planner::Planner
   return std::nullopt;
 }
 
-std::string record_line(const Episode& e, const BatchSpec& spec, const worlds::World& plant,
-                        const sim::EpisodeResult& r, double optimal_m) {
+// Which scenario a record belongs to: what makes its episodes (world contents, planners,
+// settings, faults, seeds, starts), not the file's name or the order of its lists' worlds.
+struct ScenarioIdentity {
+  std::string fingerprint;  // 16 hex digits
+  std::int64_t episodes = 0;
+  std::string file;         // absolute path, to draw a merge's figures again
+};
+
+ScenarioIdentity scenario_identity(const BatchSpec& spec, const std::vector<std::uint64_t>& world_contents,
+                                   const std::vector<std::string>& world_names, std::int64_t episodes) {
+  util::Fingerprint f;
+  f.add(std::string_view("plantsim scenario v1"));
+  std::vector<std::string> worlds;
+  for (std::size_t i = 0; i < world_contents.size(); ++i)
+    worlds.push_back(world_names[i] + "#" + util::Fingerprint().add(world_contents[i]).hex());
+  std::sort(worlds.begin(), worlds.end());
+  for (const std::string& w : worlds) f.add(w);
+  for (const std::string& p : spec.planners) f.add(p);
+  for (const NamedConfig& c : spec.controllers) f.add(c.name).add(c.json);
+  for (const FaultSetting& x : spec.faults) {
+    f.add(x.name).add(x.json).add(static_cast<std::uint64_t>(x.crossing_obstacle * 4 + x.crossing_final_approach * 2));
+    f.add(static_cast<std::uint64_t>(x.unmapped_obstacles));
+    if (x.charger_map_offset) f.add(x.charger_map_offset->x).add(x.charger_map_offset->y).add(x.charger_map_offset->yaw);
+  }
+  for (std::uint64_t seed : spec.seeds) f.add(seed);
+  f.add(static_cast<std::uint64_t>(spec.random_starts));
+  std::error_code ec;
+  return {f.hex(), episodes, std::filesystem::absolute(spec.source, ec).lexically_normal().string()};
+}
+
+std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
+                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m) {
   const std::string& world_name = plant.name;
   const geom::Pose2& start = plant.start;
   nlohmann::ordered_json j;
   j["index"] = e.index;
   j["id"] = e.id;
+  j["scenario"] = scenario.fingerprint;
+  j["scenario_episodes"] = scenario.episodes;
+  j["scenario_file"] = scenario.file;
   j["world"] = world_name;
   j["planner"] = spec.planners[e.planner];
   j["controller"] = spec.controllers[e.controller].name;
@@ -189,7 +248,7 @@ void write_outputs(const std::vector<std::string>& lines, const std::string& out
         panel.run.plan_stats = r.stats;
         panels.push_back(panel);
       }
-      const std::string file = "plans_" + w.name + ".png";
+      const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
       render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world's start"), out_dir + "/" + file,
                         render::PngSettings::fast());
       report.figures.push_back({file, w.name + ": each planner's plan from the world's start to the staging pose"});
@@ -333,6 +392,8 @@ std::string sweep_csv(const std::vector<std::string>& lines) {
   return out;
 }
 
+std::vector<std::string> read_episode_records(const std::string& dir) { return read_jsonl(dir + "/episodes.jsonl").records; }
+
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   // Everything that can be wrong is found before the first episode.
   const BatchSpec spec = load_batch_spec(scenario_path);
@@ -340,9 +401,15 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
     throw std::invalid_argument("--shard i/n needs 0 <= i < n");
   std::vector<worlds::World> worlds;
   std::vector<std::string> names;
-  for (const std::string& f : spec.world_files) {
-    worlds.push_back(worlds::load_world(f));
+  std::vector<std::uint64_t> contents;
+  for (std::size_t i = 0; i < spec.world_files.size(); ++i) {
+    worlds.push_back(worlds::load_world(spec.world_files[i]));
     names.push_back(worlds.back().name);
+    contents.push_back(worlds::world_fingerprint(worlds.back()));
+    for (std::size_t k = 0; k < i; ++k)
+      if (names[k] == names[i])
+        throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
+                                 "a second world named '" + names[i] + "' (episode ids name the world; rename one)");
   }
   // A charger offset must leave the mapped charger dockable on every world it is applied to.
   for (const FaultSetting& f : spec.faults) {
@@ -361,26 +428,55 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
     for (const auto& f : spec.faults)
       configs.push_back(sim::parse_episode_config(f.json, spec.source,
                                                   sim::parse_episode_config(c.json, spec.source)));
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
-  const std::string jsonl = o.out_dir + "/episodes.jsonl";
-  {
-    std::ofstream probe(jsonl, std::ios::app);
-    if (ec || !probe) throw std::invalid_argument("output folder '" + o.out_dir + "' is not writable");
+  const std::vector<Episode> all = all_episodes(spec, names);
+  const ScenarioIdentity scenario = scenario_identity(spec, contents, names, static_cast<std::int64_t>(all.size()));
+  if (o.check_only) {
+    BatchOutcome checked;
+    checked.episodes = static_cast<std::int64_t>(shard(all, o.shard_index, o.shard_count).size());
+    checked.gate = spec.gate;
+    checked.scenario_fingerprint = scenario.fingerprint;
+    return checked;
   }
 
-  const std::vector<Episode> mine = shard(all_episodes(spec, names), o.shard_index, o.shard_count);
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if (ec || !std::filesystem::is_directory(o.out_dir))
+    throw std::invalid_argument("output folder '" + o.out_dir + "' cannot be created" + (ec ? ": " + ec.message() : ""));
+  const util::FolderLock lock(o.out_dir);  // one batch per folder, or both run every episode
+  const std::string jsonl = o.out_dir + "/episodes.jsonl";
+  if (o.fresh) std::filesystem::remove(jsonl, ec);
+  JsonlContents existing = read_jsonl(jsonl);
+  for (const std::string& line : existing.records) {
+    const std::string theirs = json::parse(line)["scenario"].get<std::string>();
+    if (theirs != scenario.fingerprint)
+      throw std::invalid_argument("output folder '" + o.out_dir + "' holds episodes of another scenario (fingerprint " +
+                                  theirs + ", this one " + scenario.fingerprint +
+                                  "): choose another --out, or --fresh to discard them");
+  }
+  BatchOutcome outcome;
+  outcome.gate = spec.gate;
+  outcome.scenario_fingerprint = scenario.fingerprint;
+  if (existing.bad_lines > 0 || existing.torn_tail) {
+    // Resume keeps what it can use and reruns the rest; the file is rewritten without them.
+    outcome.malformed_lines_cut = existing.bad_lines + existing.torn_tail;
+    std::string kept;
+    for (const std::string& line : existing.records) kept += line + "\n";
+    util::write_file_atomically(jsonl, kept);
+    std::fprintf(stderr, "batch: warning: cut %lld malformed or unfinished line(s) from %s; their episodes run again\n",
+                 static_cast<long long>(outcome.malformed_lines_cut), jsonl.c_str());
+  }
+
+  const std::vector<Episode> mine = shard(all, o.shard_index, o.shard_count);
   std::set<std::string> done;
-  for (const std::string& line : read_complete_lines(jsonl, true)) done.insert(json::parse(line)["id"].get<std::string>());
+  for (const std::string& line : existing.records) done.insert(json::parse(line)["id"].get<std::string>());
   std::vector<Episode> todo;
   for (const Episode& e : mine)
     if (!done.count(e.id)) todo.push_back(e);
 
-  BatchOutcome outcome;
   outcome.episodes = static_cast<std::int64_t>(mine.size());
   outcome.skipped = outcome.episodes - static_cast<std::int64_t>(todo.size());
   std::FILE* out = std::fopen(jsonl.c_str(), "ab");
-  if (!out) throw std::invalid_argument("cannot append to " + jsonl);
+  if (!out) throw std::invalid_argument(util::system_error_text("cannot append to " + jsonl));
   std::mutex write_mutex;
   std::atomic<std::size_t> next{0};
   Progress progress(static_cast<std::int64_t>(todo.size()), o.progress);
@@ -405,7 +501,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
         if (fault.charger_map_offset) w.charger_map_offset = *fault.charger_map_offset;
         planner::Planner& exact = planner_for(w, e.world, "vg", e.fault);
         if (spec.random_starts) {
-          const auto s = random_start(w, exact, e.seed, e.world);
+          const auto s = random_start(w, exact, e.seed, contents[e.world]);
           if (!s) throw std::runtime_error(w.name + ": no free start with a path to the charger");
           w.start = *s;
         }
@@ -414,16 +510,19 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
         config.seed = e.seed;
         if (optimal.status == planner::PlanStatus::kOk) {
           if (fault.unmapped_obstacles > 0)
-            w.unmapped = unmapped_across_path(w, optimal.path, fault.unmapped_obstacles, e.seed * 7919ULL + e.world);
+            w.unmapped = unmapped_across_path(w, optimal.path, fault.unmapped_obstacles,
+                                              util::Fingerprint().add(contents[e.world]).add(e.seed).add(std::uint64_t{7919}).value());
           if (fault.crossing_obstacle) w.moving.push_back(crossing_person(w, optimal.path));
           if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
         }
         const sim::EpisodeResult r = sim::run_episode(w, planner_for(w, e.world, spec.planners[e.planner], e.fault), config);
-        const std::string line = record_line(e, spec, w, r, optimal.length) + "\n";
+        const std::string line = record_line(e, spec, scenario, w, r, optimal.length) + "\n";
         {
           std::lock_guard lock(write_mutex);
-          std::fwrite(line.data(), 1, line.size(), out);
-          std::fflush(out);  // a killed batch loses at most the episode being written
+          // A killed batch loses at most the episode being written; a full disk stops the batch
+          // at once instead of simulating episodes whose lines are lost.
+          if (std::fwrite(line.data(), 1, line.size(), out) != line.size() || std::fflush(out) != 0)
+            throw std::runtime_error(util::system_error_text("cannot append to " + jsonl));
           ++outcome.ran;
           outcome.docked += r.docked;
           outcome.collisions += r.collisions;
@@ -439,40 +538,100 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
-  std::fclose(out);
+  const bool synced = ::fsync(::fileno(out)) == 0 || errno == EINVAL;
+  const std::string sync_error = synced ? "" : util::system_error_text("cannot sync " + jsonl);
+  if (std::fclose(out) != 0 && !failure) throw std::runtime_error(util::system_error_text("cannot close " + jsonl));
   if (failure) std::rethrow_exception(failure);
+  if (!synced) throw std::runtime_error(sync_error);
 
-  write_outputs(read_complete_lines(jsonl, false), o.out_dir, "plantsim batch: " + spec.name,
+  write_outputs(read_jsonl(jsonl).records, o.out_dir, "plantsim batch: " + spec.name,
                 "plantsim batch " + scenario_path + " --out " + o.out_dir +
                     (o.shard_count > 1 ? " --shard " + std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count) : ""),
                 o.figures ? &worlds : nullptr, spec.planners);
   return outcome;
 }
 
-std::int64_t merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir) {
-  std::map<std::int64_t, std::string> by_index;
-  std::set<std::string> ids;
+MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir, const MergeOptions& options) {
+  std::map<std::string, std::pair<std::int64_t, std::string>> by_id;  // id -> (index, line)
+  std::string fingerprint, first_dir, scenario_file;
+  std::int64_t expected = 0;
   for (const std::string& d : dirs) {
-    if (!std::filesystem::exists(d + "/episodes.jsonl")) throw std::invalid_argument(d + ": no episodes.jsonl to merge");
-    for (const std::string& line : read_complete_lines(d + "/episodes.jsonl", false)) {
+    const std::string path = d + "/episodes.jsonl";
+    if (!std::filesystem::exists(path)) throw std::invalid_argument(d + ": no episodes.jsonl to merge");
+    const JsonlContents c = read_jsonl(path);
+    if (c.bad_lines > 0)
+      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out\n", path.c_str(),
+                   static_cast<long long>(c.bad_lines));
+    for (const std::string& line : c.records) {
       const json j = json::parse(line);
-      if (ids.insert(j["id"].get<std::string>()).second) by_index[j["index"].get<std::int64_t>()] = line;
+      const std::string theirs = j["scenario"].get<std::string>();
+      if (fingerprint.empty()) {
+        fingerprint = theirs, first_dir = d;
+        expected = j.value("scenario_episodes", std::int64_t{0});
+        scenario_file = j.value("scenario_file", std::string());
+      } else if (theirs != fingerprint) {
+        throw std::invalid_argument("cannot merge episodes of different scenarios: " + first_dir + " holds scenario " +
+                                    fingerprint + ", " + d + " holds " + theirs);
+      }
+      by_id.try_emplace(j["id"].get<std::string>(), j["index"].get<std::int64_t>(), line);
     }
   }
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+  if (by_id.empty()) throw std::invalid_argument("nothing to merge: the folders hold no episodes");
+  const auto merged = static_cast<std::int64_t>(by_id.size());
+  if (merged < expected && !options.allow_partial)
+    throw IncompleteBatch("merge: " + std::to_string(expected - merged) + " of the scenario's " + std::to_string(expected) +
+                          " episodes are missing (a shard not run or not finished?); rerun them, or pass --allow-partial");
+  if (merged > expected)
+    throw std::invalid_argument("merge: " + std::to_string(merged) + " distinct episodes but the scenario has " +
+                                std::to_string(expected) + " (records of another plantsim version?)");
+  std::vector<std::pair<std::int64_t, std::string>> ordered;
+  for (auto& [id, entry] : by_id) ordered.push_back(entry);
+  std::sort(ordered.begin(), ordered.end());
   std::string text;
   std::vector<std::string> lines;
-  for (const auto& [index, line] : by_index) {
+  for (const auto& [index, line] : ordered) {
     text += line + "\n";
     lines.push_back(line);
   }
+  MergeOutcome outcome;
+  outcome.episodes = merged;
+  outcome.expected = expected;
+  // The figures need the worlds: from the scenario file when it is still there and unchanged.
+  std::vector<worlds::World> worlds;
+  std::vector<std::string> planners;
+  std::error_code ec;
+  if (!scenario_file.empty() && std::filesystem::exists(scenario_file, ec)) {
+    try {
+      const BatchSpec spec = load_batch_spec(scenario_file);
+      std::vector<std::string> names;
+      std::vector<std::uint64_t> contents;
+      for (const std::string& f : spec.world_files) {
+        worlds.push_back(worlds::load_world(f));
+        names.push_back(worlds.back().name);
+        contents.push_back(worlds::world_fingerprint(worlds.back()));
+      }
+      if (scenario_identity(spec, contents, names, expected).fingerprint == fingerprint) {
+        planners = spec.planners;
+        outcome.gate = spec.gate;
+      } else {
+        worlds.clear();
+      }
+    } catch (const std::exception&) {
+      worlds.clear();
+    }
+  }
+  if (worlds.empty())
+    std::fprintf(stderr, "merge: note: the scenario file %s is gone or changed; the report has no plan figures\n",
+                 scenario_file.c_str());
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+  const util::FolderLock lock(out_dir);
   util::write_file_atomically(out_dir + "/episodes.jsonl", text);
   std::string command = "plantsim merge";
   for (const auto& d : dirs) command += " " + d;
-  write_outputs(lines, out_dir, "plantsim merge", command + " --out " + out_dir, nullptr, {});
-  return static_cast<std::int64_t>(lines.size());
+  write_outputs(lines, out_dir, "plantsim merge", command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
+                worlds.empty() ? nullptr : &worlds, planners);
+  return outcome;
 }
 
 }  // namespace plantsim::batch

@@ -4,6 +4,8 @@
 // summary per configuration and an HTML report.
 #pragma once
 
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,8 @@ namespace plantsim::batch {
 
 struct RunOptions {
   std::string out_dir;
+  bool fresh = false;     ///< discard the folder's earlier episodes instead of resuming
+  bool check_only = false;  ///< validate everything and count the episodes; run nothing, write nothing
   int shard_index = 0;
   int shard_count = 1;
   int threads = 0;        ///< 0: one per core
@@ -22,14 +26,37 @@ struct RunOptions {
 
 struct BatchOutcome {
   std::int64_t episodes = 0, ran = 0, skipped = 0, docked = 0, collisions = 0;
+  std::int64_t malformed_lines_cut = 0;  ///< resume found lines it could not use; rerun
+  Gate gate;                             ///< the scenario's gate
+  std::string scenario_fingerprint;
+};
+
+struct MergeOptions {
+  bool allow_partial = false;  ///< merge even when episodes of the scenario are missing
+};
+
+struct MergeOutcome {
+  std::int64_t episodes = 0, expected = 0;
+  Gate gate;  ///< the scenario's gate, when its file could be read again (else none)
+};
+
+/// A merge that would lose episodes: shards missing (exit 1, not bad input).
+struct IncompleteBatch : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 /// Throws worlds::WorldError / std::invalid_argument on bad input before any episode runs.
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& options);
 
 /// Joins the episodes.jsonl of shard folders (duplicates by id dropped) into out_dir, with the
-/// summary and report recomputed. Returns the number of episodes.
-std::int64_t merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir);
+/// summary, report and figures recomputed. Refuses (std::invalid_argument) records of different
+/// scenarios or without a scenario fingerprint; throws IncompleteBatch when episodes are missing
+/// unless options.allow_partial.
+MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir,
+                           const MergeOptions& options = {});
+
+/// The complete, well-formed records of a batch folder's episodes.jsonl.
+std::vector<std::string> read_episode_records(const std::string& dir);
 
 /// Per-configuration summary (CSV text) of JSONL episode records.
 std::string summary_csv(const std::vector<std::string>& jsonl_lines);

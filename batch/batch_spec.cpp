@@ -7,14 +7,42 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include <set>
+
 #include "planner/planner.h"
 #include "sim/episode_config_json.h"
+#include "util/data_dir.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_error.h"
+#include "worlds/yaml_input.h"
 
 namespace plantsim::batch {
 namespace {
 
 using worlds::WorldError;
+
+// [-+]digits[.digits][(e|E)[-+]digits], the whole string.
+bool decimal_number(const std::string& s) {
+  std::size_t i = 0;
+  auto digits = [&]() {
+    const std::size_t from = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    return i > from;
+  };
+  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+  bool any = digits();
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    any = digits() || any;
+  }
+  if (!any) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+    if (!digits()) return false;
+  }
+  return i == s.size();
+}
 
 // A YAML mapping of overrides as JSON text, validated by the episode-config reader.
 std::string overrides_json(const YAML::Node& node, const std::string& source, const std::string& field) {
@@ -27,14 +55,12 @@ std::string overrides_json(const YAML::Node& node, const std::string& source, co
     if (n.IsScalar()) {
       const std::string s = n.Scalar();
       if (s == "true" || s == "false") return s == "true";
-      try {
-        std::size_t used = 0;
-        const double d = std::stod(s, &used);
-        if (used == s.size()) {
-          if (s.find_first_of(".eE") == std::string::npos && d >= 0) return static_cast<std::uint64_t>(std::stoull(s));
-          return d;
-        }
-      } catch (...) {
+      // Plain decimal numbers only: std::stod would read "0x10" as 16 and std::stoull as 0, and
+      // "inf" or "nan" as numbers; anything else stays text for the config reader to refuse.
+      if (decimal_number(s)) {
+        if (s.find_first_of(".eE") == std::string::npos && s[0] != '-' && s.size() <= 18)
+          return static_cast<std::uint64_t>(std::stoull(s));
+        return std::strtod(s.c_str(), nullptr);
       }
       return s;
     }
@@ -125,42 +151,126 @@ YAML::Node merged(const YAML::Node& a, const YAML::Node& b) {
   return out;
 }
 
+std::string scalar_text(const YAML::Node& doc, const char* key, const std::string& path, const std::string& fallback) {
+  if (!doc[key]) return fallback;
+  if (!doc[key].IsScalar()) throw WorldError(path, key, "expected a single value");
+  return doc[key].Scalar();
+}
+
+double fraction(const YAML::Node& n, const std::string& path, const std::string& field) {
+  if (!n.IsScalar() || !decimal_number(n.Scalar())) throw WorldError(path, field, "expected a number from 0 to 1");
+  const double v = std::strtod(n.Scalar().c_str(), nullptr);
+  if (!(v >= 0 && v <= 1)) throw WorldError(path, field, "expected a number from 0 to 1");
+  return v;
+}
+
+// gate: {min_success: R, statistic: success_rate | wilson_low, configurations: [{planner: gcr, min_success: R}, ...]}
+Gate read_gate(const YAML::Node& node, const std::string& path) {
+  Gate g;
+  if (!node) return g;
+  if (!node.IsMap()) throw WorldError(path, "gate", "expected {min_success, statistic, configurations}");
+  for (const auto& kv : node) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+    const std::vector<std::string> known = {"min_success", "statistic", "configurations"};
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw WorldError(path, "gate." + key, worlds::unknown_key_problem(key, known));
+  }
+  if (node["min_success"]) g.min_success = fraction(node["min_success"], path, "gate.min_success");
+  if (node["statistic"]) g.statistic = parse_gate_statistic(scalar_text(node, "statistic", path, ""), path + ": gate.statistic");
+  if (const YAML::Node list = node["configurations"]) {
+    if (!list.IsSequence()) throw WorldError(path, "gate.configurations", "expected a list of {world, planner, controller, fault, min_success}");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string field = "gate.configurations[" + std::to_string(i) + "]";
+      const YAML::Node item = list[i];
+      if (!item.IsMap() || !item["min_success"]) throw WorldError(path, field, "expected {planner: ..., min_success: R} (any of world, planner, controller, fault)");
+      GateRule rule;
+      for (const auto& kv : item) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+        if (key == "min_success") continue;
+        if (!kv.second.IsScalar()) throw WorldError(path, field + "." + key, "expected a name");
+        if (key == "world") rule.world = kv.second.Scalar();
+        else if (key == "planner") rule.planner = kv.second.Scalar();
+        else if (key == "controller") rule.controller = kv.second.Scalar();
+        else if (key == "fault") rule.fault = kv.second.Scalar();
+        else throw WorldError(path, field + "." + key, worlds::unknown_key_problem(key, {"world", "planner", "controller", "fault", "min_success"}));
+      }
+      rule.min_success = fraction(item["min_success"], path, field + ".min_success");
+      g.rules.push_back(rule);
+    }
+  }
+  return g;
+}
+
+BatchSpec read_batch_spec(const std::string& path);
+
 }  // namespace
 
+GateStatistic parse_gate_statistic(const std::string& text, const std::string& where) {
+  if (text == "success_rate") return GateStatistic::kSuccessRate;
+  if (text == "wilson_low") return GateStatistic::kWilsonLow;
+  throw std::invalid_argument(where + ": expected success_rate or wilson_low, got '" + text + "'");
+}
+
 BatchSpec load_batch_spec(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw WorldError(path, "", "is a directory, expected a scenario YAML");
-  YAML::Node doc;
   try {
-    doc = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw WorldError(path, "", "cannot be opened for reading");
+    return read_batch_spec(path);
   } catch (const YAML::Exception& e) {
-    throw WorldError(path, "", std::string("malformed YAML: ") + e.what());
+    // A node of the wrong kind somewhere not checked field by field.
+    throw WorldError(path, "", std::string("unexpected YAML structure: ") + e.what());
   }
+}
+
+namespace {
+
+BatchSpec read_batch_spec(const std::string& path) {
+  const YAML::Node doc = worlds::load_yaml_input(path);
   if (!doc.IsMap()) throw WorldError(path, "", "expected a mapping with worlds, planners, seeds ...");
+  for (const auto& kv : doc) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+    const std::vector<std::string> known = {"name", "worlds", "planners", "controllers", "faults", "sweep", "seeds",
+                                            "starts", "gate"};
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw WorldError(path, key, worlds::unknown_key_problem(key, known));
+  }
   BatchSpec s;
   s.source = path;
-  s.name = doc["name"] ? doc["name"].as<std::string>() : std::filesystem::path(path).stem().string();
-  const auto base = std::filesystem::path(path).parent_path();
+  s.name = scalar_text(doc, "name", path, std::filesystem::path(path).stem().string());
+  const std::string base = std::filesystem::path(path).parent_path().string();
   if (!doc["worlds"] || !doc["worlds"].IsSequence() || doc["worlds"].size() == 0)
     throw WorldError(path, "worlds", "expected a non-empty list of world files");
-  for (const auto& w : doc["worlds"]) {
-    const std::filesystem::path p(w.as<std::string>());
-    // Relative to the scenario file, or to the current folder when that is where it exists.
-    s.world_files.push_back(p.is_absolute() || std::filesystem::exists(p) ? p.string() : (base / p).string());
+  if (doc["worlds"].size() > 1000) throw WorldError(path, "worlds", "more than 1000 worlds");
+  for (std::size_t i = 0; i < doc["worlds"].size(); ++i) {
+    const YAML::Node w = doc["worlds"][i];
+    const std::string field = "worlds[" + std::to_string(i) + "]";
+    if (!w.IsScalar()) throw WorldError(path, field, "expected a file name");
+    // Relative to the scenario file ("$data/..." under the shared data folder), so that a
+    // scenario runs the same from any current folder.
+    const std::string resolved = util::resolve_input_path(w.Scalar(), base);
+    std::error_code ec;
+    if (!std::filesystem::exists(resolved, ec))
+      throw WorldError(path, field, "'" + w.Scalar() + "' not found (looked for " + resolved + ")");
+    s.world_files.push_back(resolved);
   }
   if (doc["planners"]) {
-    for (const auto& p : doc["planners"]) s.planners.push_back(p.as<std::string>());
+    if (!doc["planners"].IsSequence()) throw WorldError(path, "planners", "expected a list of planner names");
+    for (const auto& p : doc["planners"]) {
+      if (!p.IsScalar()) throw WorldError(path, "planners", "expected a list of planner names");
+      s.planners.push_back(p.Scalar());
+    }
   } else {
     s.planners = {"vg"};
   }
   const auto known = planner::planner_names();
   for (const auto& p : s.planners)
     if (std::find(known.begin(), known.end(), p) == known.end()) throw WorldError(path, "planners", "unknown planner '" + p + "'");
+  for (std::size_t i = 0; i < s.planners.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.planners[i] == s.planners[j]) throw WorldError(path, "planners", "'" + s.planners[i] + "' is listed twice");
   if (doc["controllers"]) {
     if (!doc["controllers"].IsMap()) throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
     for (const auto& kv : doc["controllers"]) {
-      const std::string name = kv.first.as<std::string>();
+      if (!kv.first.IsScalar()) throw WorldError(path, "controllers", "expected names as keys");
+      const std::string name = kv.first.Scalar();
       s.controllers.push_back({name, overrides_json(kv.second, path, "controllers." + name)});
     }
   } else {
@@ -169,7 +279,10 @@ BatchSpec load_batch_spec(const std::string& path) {
   std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
   if (doc["faults"]) {
     if (!doc["faults"].IsMap()) throw WorldError(path, "faults", "expected a mapping name: {overrides}");
-    for (const auto& kv : doc["faults"]) bodies.emplace_back(kv.first.as<std::string>(), YAML::Clone(kv.second));
+    for (const auto& kv : doc["faults"]) {
+      if (!kv.first.IsScalar()) throw WorldError(path, "faults", "expected names as keys");
+      bodies.emplace_back(kv.first.Scalar(), YAML::Clone(kv.second));
+    }
   }
   if (doc["sweep"]) {
     // One fault per value (per fault, when faults are given too): success-rate curves.
@@ -226,19 +339,39 @@ BatchSpec load_batch_spec(const std::string& path) {
       const long n = seeds.as<long>();
       if (n <= 0 || n > 1000000) throw WorldError(path, "seeds", "count must be from 1 to 1000000");
       for (long k = 1; k <= n; ++k) s.seeds.push_back(static_cast<std::uint64_t>(k));
+    } else if (seeds.IsSequence()) {
+      if (seeds.size() > 1000000) throw WorldError(path, "seeds", "more than 1000000 seeds");
+      std::set<std::uint64_t> seen;
+      for (const auto& v : seeds) {
+        if (!v.IsScalar() || !decimal_number(v.Scalar()) || v.Scalar().find_first_of("-.eE") != std::string::npos)
+          throw WorldError(path, "seeds", "expected whole numbers, got '" + (v.IsScalar() ? v.Scalar() : "a list") + "'");
+        s.seeds.push_back(v.as<std::uint64_t>());
+        if (!seen.insert(s.seeds.back()).second)
+          throw WorldError(path, "seeds", "seed " + v.Scalar() + " is listed twice (one episode id each)");
+      }
+      if (s.seeds.empty()) throw WorldError(path, "seeds", "expected a count or a non-empty list");
     } else {
-      for (const auto& v : seeds) s.seeds.push_back(v.as<std::uint64_t>());
+      throw WorldError(path, "seeds", "expected a count or a list of whole numbers");
     }
   } catch (const YAML::Exception&) {
     throw WorldError(path, "seeds", "expected a count or a list of whole numbers");
   }
   if (doc["starts"]) {
-    const std::string v = doc["starts"].as<std::string>();
+    const std::string v = scalar_text(doc, "starts", path, "");
     if (v != "random" && v != "world") throw WorldError(path, "starts", "must be 'random' or 'world'");
     s.random_starts = v == "random";
   }
+  s.gate = read_gate(doc["gate"], path);
+  // Episodes are counted before any is made: a cross product of 1e9 is a typo, not a batch.
+  const double total = static_cast<double>(s.world_files.size()) * s.planners.size() * s.controllers.size() *
+                       s.faults.size() * s.seeds.size();
+  if (total > static_cast<double>(kMaxEpisodes))
+    throw WorldError(path, "seeds", "the scenario makes " + std::to_string(static_cast<long long>(total)) +
+                                        " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
   return s;
 }
+
+}  // namespace
 
 std::vector<Episode> all_episodes(const BatchSpec& spec, const std::vector<std::string>& world_names) {
   std::vector<Episode> out;

@@ -29,6 +29,27 @@ struct FaultSetting {
   std::string sweep_parameter, sweep_value;  ///< when the fault is one value of a sweep
 };
 
+/// What a configuration's success is judged by: its success rate, or the lower end of its 95 %
+/// Wilson interval (stricter on few episodes: 10 of 10 gives 0.72).
+enum class GateStatistic { kSuccessRate, kWilsonLow };
+
+/// A threshold for the configurations matching every name given (empty matches any).
+struct GateRule {
+  std::string world, planner, controller, fault;
+  double min_success = 0;
+};
+
+/// The scenario's pass criteria (`gate:`): a default threshold for every configuration and
+/// rules for some; the last matching rule wins over the default.
+struct Gate {
+  std::optional<double> min_success;
+  GateStatistic statistic = GateStatistic::kSuccessRate;
+  std::vector<GateRule> rules;
+};
+
+/// Episodes a scenario may make (worlds x planners x controllers x faults x seeds).
+inline constexpr std::int64_t kMaxEpisodes = 10000000;
+
 struct BatchSpec {
   std::string name;
   std::string source;                 ///< the YAML file
@@ -39,7 +60,11 @@ struct BatchSpec {
   std::string sweep_parameter;        ///< the swept parameter, or empty
   std::vector<std::uint64_t> seeds;
   bool random_starts = true;          ///< each seed draws a free start; else the world's start
+  Gate gate;
 };
+
+/// "success_rate" or "wilson_low"; throws std::invalid_argument naming `where`.
+GateStatistic parse_gate_statistic(const std::string& text, const std::string& where);
 
 struct Episode {
   std::int64_t index = 0;             ///< position in the full cross product

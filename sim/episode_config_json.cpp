@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "util/input_file.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::sim {
@@ -17,12 +18,16 @@ namespace {
 
 using nlohmann::json;
 
+// No parameter is meaningful beyond this; a bound keeps 1e308 out of the physics (it would
+// turn forces non-finite) and out of step counts (a timeout of 1e308 never ends).
+constexpr double kMaxParameter = 1e6;
+
 struct Field {
   const char* section;
   const char* name;
   std::function<double&(EpisodeConfig&)> ref;
   double lo = 0;  // closed range of valid values
-  double hi = INFINITY;
+  double hi = kMaxParameter;
   bool positive = false;  // lo excluded
 };
 
@@ -30,11 +35,11 @@ struct Field {
 #define PS_RANGE(section, member, name, lo, hi, positive) \
   Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }, lo, hi, positive}
 #define PS_PROBABILITY(section, member, name) PS_RANGE(section, member, name, 0.0, 1.0, false)
-#define PS_POSITIVE(section, member, name) PS_RANGE(section, member, name, 0.0, INFINITY, true)
+#define PS_POSITIVE(section, member, name) PS_RANGE(section, member, name, 0.0, kMaxParameter, true)
 
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
-      PS_FIELD("step", step.dt_s, "dt_s"),
+      PS_RANGE("step", step.dt_s, "dt_s", 1e-4, 0.1, false),
       PS_FIELD("drive", drive.tyre_friction, "tyre_friction"),
       PS_FIELD("odometry", odometry.wheel_speed_noise, "wheel_speed_noise"),
       PS_RANGE("odometry", odometry.left_scale_error, "left_scale_error", -0.5, 0.5, false),
@@ -121,14 +126,14 @@ const std::vector<Field>& fields() {
       PS_FIELD("docking", docking.yield_horizon_s, "yield_horizon_s"),
       PS_FIELD("docking", docking.yield_speed_mps, "yield_speed_mps"),
       PS_FIELD("potential_field", field.k_att, "k_att"),
-      PS_FIELD("potential_field", field.m, "m"),
+      PS_RANGE("potential_field", field.m, "m", 0.0, 10.0, false),  // exponents
       PS_FIELD("potential_field", field.k_att_v, "k_att_v"),
-      PS_FIELD("potential_field", field.m_v, "m_v"),
+      PS_RANGE("potential_field", field.m_v, "m_v", 0.0, 10.0, false),  // exponents
       PS_FIELD("potential_field", field.k_rep, "k_rep"),
-      PS_FIELD("potential_field", field.n, "n"),
+      PS_RANGE("potential_field", field.n, "n", 0.0, 10.0, false),  // exponents
       PS_FIELD("potential_field", field.rho0_m, "rho0_m"),
       PS_FIELD("potential_field", field.k_rep_v, "k_rep_v"),
-      PS_FIELD("potential_field", field.n_v, "n_v"),
+      PS_RANGE("potential_field", field.n_v, "n_v", 0.0, 10.0, false),  // exponents
       PS_FIELD("potential_field", field.rho_min_m, "rho_min_m"),
       PS_FIELD("potential_field", field.max_speed_mps, "max_speed_mps"),
       PS_FIELD("potential_field", field.turn_gain, "turn_gain"),
@@ -170,7 +175,7 @@ const std::vector<Field>& fields() {
       PS_POSITIVE("perception", perception.slip_jump_m, "slip_jump_m"),
       PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
       PS_RANGE("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0, false),
-      PS_FIELD("", timeout_s, "timeout_s"),
+      PS_RANGE("", timeout_s, "timeout_s", 0.0, 86400.0, true),
   };
   return table;
 }
@@ -254,8 +259,7 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     if (!std::isfinite(d)) throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
     if (d < f.lo || d > f.hi || (f.positive && d <= f.lo)) {
       std::ostringstream range;
-      range << "must be " << (f.positive ? "above " : "at least ") << f.lo;
-      if (std::isfinite(f.hi)) range << " and at most " << f.hi;
+      range << "must be " << (f.positive ? "above " : "at least ") << f.lo << " and at most " << f.hi;
       throw worlds::WorldError(source, path_of(f.section, f.name), range.str());
     }
     f.ref(c) = d;
@@ -263,7 +267,8 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
   for (const IntField& f : int_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
-    if (!v->is_number_integer() || v->get<long>() < f.lo || v->get<long>() > f.hi)
+    if (!v->is_number_integer() || (v->is_number_unsigned() && v->get<std::uint64_t>() > 1000000000ULL) ||
+        v->get<std::int64_t>() < f.lo || v->get<std::int64_t>() > f.hi)
       throw worlds::WorldError(source, path_of(f.section, f.name),
                                "expected a whole number from " + std::to_string(f.lo) + " to " + std::to_string(f.hi));
     f.ref(c) = v->get<int>();
@@ -298,7 +303,6 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
       throw worlds::WorldError(source, key, "unknown parameter");
     }
   }
-  if (c.step.dt_s <= 0 || c.step.dt_s > 0.1) throw worlds::WorldError(source, "step.dt_s", "must be in (0, 0.1]");
   if (c.field.k_att <= 0) throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
   if (c.field.rho0_m <= c.field.rho_min_m)
     throw worlds::WorldError(source, "potential_field.rho0_m", "must exceed rho_min_m");
@@ -315,11 +319,13 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
 }
 
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
-  std::ifstream f(path);
-  if (!f || std::filesystem::is_directory(path)) throw worlds::WorldError(path, "", "cannot be opened for reading");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return parse_episode_config(ss.str(), path, base);
+  std::string text;
+  try {
+    text = util::read_input_file(path, 16u << 20);
+  } catch (const util::InputFileError& e) {
+    throw worlds::WorldError(path, "", e.what());
+  }
+  return parse_episode_config(text, path, base);
 }
 
 std::string default_config_json() {

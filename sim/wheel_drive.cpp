@@ -13,6 +13,9 @@ WheelDrive::WheelDrive(const worlds::RobotSpec& spec, DriveParams params)
     : spec_(spec), params_(params) {}
 
 void WheelDrive::command(controller::WheelSpeeds target, double dt_s) {
+  // A controller that divides by zero must not hand Box2D a NaN (it would poison the world):
+  // the motors then brake.
+  if (!std::isfinite(target.left_mps) || !std::isfinite(target.right_mps)) target = {0.0, 0.0};
   target = controller::saturate(target, spec_.max_speed_mps);
   const double dv = spec_.max_accel_mps2 * dt_s;
   motors_.left_mps += std::clamp(target.left_mps - motors_.left_mps, -dv, dv);

@@ -83,7 +83,7 @@ TEST_F(BatchFiles, FourShardsMergedEqualOneRun) {
     shard_dirs.push_back((dir_ / ("shard" + std::to_string(i))).string());
   }
   EXPECT_EQ(sum, whole.episodes);
-  EXPECT_EQ(merge_batches(shard_dirs, (dir_ / "merged").string()), whole.episodes);
+  EXPECT_EQ(merge_batches(shard_dirs, (dir_ / "merged").string()).episodes, whole.episodes);
   EXPECT_EQ(sorted_lines((dir_ / "merged/episodes.jsonl").string()), sorted_lines((dir_ / "whole/episodes.jsonl").string()));
   EXPECT_EQ(read((dir_ / "merged/summary.csv").string()), read((dir_ / "whole/summary.csv").string()));
 }
@@ -121,14 +121,14 @@ TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
   };
   refused(write("a.yaml", "worlds: [1, 2"), "malformed YAML");
   refused(write("b.yaml", "worlds: []\nseeds: 1\n"), "field 'worlds'");
-  refused(write("c.yaml", "worlds: [" + (dir_ / "missing.json").string() + "]\nseeds: 1\n"), "no such file");
+  refused(write("c.yaml", "worlds: [" + (dir_ / "missing.json").string() + "]\nseeds: 1\n"), "not found");
   refused(write("d.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nplanners: [teleport]\nseeds: 1\n"),
           "unknown planner");
   refused(write("e.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\nfaults:\n  x: {odometry: {wheel_nois: 1}}\n"),
           "unknown parameter");
   refused(write("f.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\n"), "field 'seeds'");
   write("file_in_the_way", "x");
-  refused(write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"), "not writable",
+  refused(write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"), "cannot be created",
           "file_in_the_way/sub");
 }
 

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <png.h>
+
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "test_paths.h"
@@ -47,6 +49,31 @@ TEST_F(TinyMaps, TrinaryNegateAndRawModes) {
   EXPECT_EQ(std::string(r.grid.cells.begin(), r.grid.cells.end()), ".@@.");
 }
 
+// map_server reads PNG images too: the same pixels as PNG give the same map as PGM.
+TEST_F(TinyMaps, PngImagesReadLikePgm) {
+  const unsigned char gray[4] = {0, 255, 128, 210};
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = 4;
+  image.height = 1;
+  image.format = PNG_FORMAT_GRAY;
+  ASSERT_TRUE(png_image_write_to_file(&image, (dir_ / "row.png").c_str(), 0, gray, 0, nullptr));
+  // And as colour, where map_server averages the channels.
+  const unsigned char rgb[12] = {0, 0, 0, 255, 255, 255, 128, 128, 128, 200, 220, 210};
+  png_image colour{};
+  colour.version = PNG_IMAGE_VERSION;
+  colour.width = 4;
+  colour.height = 1;
+  colour.format = PNG_FORMAT_RGB;
+  ASSERT_TRUE(png_image_write_to_file(&colour, (dir_ / "rgb.png").c_str(), 0, rgb, 0, nullptr));
+  const std::string yaml = "resolution: 0.5\norigin: [1.0, 2.0, 0.0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
+  const RosMap m = load_ros_map(write("png.yaml", "image: row.png\n" + yaml));
+  EXPECT_EQ(std::string(m.grid.cells.begin(), m.grid.cells.end()), "@.@.");
+  EXPECT_EQ(m.free, 2u);
+  const RosMap c = load_ros_map(write("rgb.yaml", "image: rgb.png\n" + yaml));
+  EXPECT_EQ(std::string(c.grid.cells.begin(), c.grid.cells.end()), "@.@.");
+}
+
 TEST_F(TinyMaps, BadFilesNameFileAndField) {
   auto expect = [](const std::string& path, const std::string& needle) {
     try {
@@ -60,13 +87,19 @@ TEST_F(TinyMaps, BadFilesNameFileAndField) {
          "none.pgm: cannot be opened");
   expect(write("b.yaml", "image: x.pgm\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"), "field 'resolution': missing");
   expect(write("c.yaml", "image: x.pgm\nresolution: -1\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
-         "field 'resolution': must be positive");
+         "field 'resolution': must be from 0.001 to 10 m per pixel");
   expect(write("d.yaml", "image: x.pgm\nresolution: 1\norigin: [0,0,0.5]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
          "rotated map");
   write("short.pgm", "P5\n10 10\n255\nabc");
   expect(write("e.yaml", "image: short.pgm\nresolution: 1\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
          "file ends before the last pixel");
   expect(write("f.yaml", "[1, 2"), "malformed YAML");
+  write("text.pgm", "P2\n1000000 1000000\n255\n0 0 0\n");  // a header promising more than the file holds
+  expect(write("g.yaml", "image: text.pgm\nresolution: 0.05\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "image too large");
+  write("png.pgm", "GIF89a");
+  expect(write("h.yaml", "image: png.pgm\nresolution: 0.05\norigin: [0,0,0]\noccupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "not a PGM (P5, P2) or PNG image");
 }
 
 TEST(SharedRosMaps, MergedIntoFewRectanglesCoveringTheBlockedArea) {

@@ -1,33 +1,107 @@
-// Temporary-file-then-rename writes.
+// Temporary-file-then-rename writes, with every system call checked.
 #include "util/atomic_file.h"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <stdexcept>
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
 namespace plantsim::util {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string parent_or_dot(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+}  // namespace
+
+std::string system_error_text(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+void sync_path(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(system_error_text("cannot open " + path + " to sync it"));
+  // Some file systems do not sync folders (EINVAL): the rename is then as durable as they allow.
+  const bool ok = ::fsync(fd) == 0 || errno == EINVAL || errno == EROFS;
+  const int saved = errno;
+  ::close(fd);
+  errno = saved;
+  if (!ok) throw std::runtime_error(system_error_text("cannot sync " + path));
+}
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + path + " (cannot create " + tmp + ")");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot write " + path + " (write failed)");
-    }
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error(system_error_text("cannot write " + path + " (creating " + tmp + ")"));
+  auto fail = [&](const std::string& step) {
+    const std::string text = system_error_text("cannot write " + path + " (" + step + ")");
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(text);
+  };
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail("write");
+    done += static_cast<std::size_t>(n);
   }
+  if (::fsync(fd) != 0) fail("fsync");
+  if (::close(fd) != 0) {
+    const std::string text = system_error_text("cannot write " + path + " (close)");
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(text);
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string text = system_error_text("cannot write " + path + " (rename)");
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(text);
+  }
+  sync_path(parent_or_dot(path));
+}
+
+StagedFolder::StagedFolder(std::string destination) : destination_(std::move(destination)) {
+  while (destination_.size() > 1 && destination_.back() == '/') destination_.pop_back();
+  staging_ = destination_ + ".partial-" + std::to_string(::getpid());
   std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
+  fs::remove_all(staging_, ec);
+  fs::create_directories(staging_, ec);
+  if (ec || !fs::is_directory(staging_))
+    throw std::invalid_argument("cannot create output folder '" + staging_ + "'" + (ec ? ": " + ec.message() : ""));
+}
+
+StagedFolder::~StagedFolder() {
+  if (committed_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+}
+
+void StagedFolder::commit() {
+  for (const auto& entry : fs::recursive_directory_iterator(staging_))
+    if (entry.is_regular_file()) sync_path(entry.path().string());
+  sync_path(staging_);
+  std::error_code ec;
+  // A folder cannot be renamed over a non-empty one: the old one steps aside first, and is
+  // removed only once the new one is in place.
+  std::string aside;
+  if (fs::exists(destination_, ec)) {
+    aside = destination_ + ".old-" + std::to_string(::getpid());
+    fs::remove_all(aside, ec);
+    if (::rename(destination_.c_str(), aside.c_str()) != 0)
+      throw std::runtime_error(system_error_text("cannot replace " + destination_));
   }
+  if (::rename(staging_.c_str(), destination_.c_str()) != 0) {
+    const std::string text = system_error_text("cannot move " + staging_ + " to " + destination_);
+    if (!aside.empty()) ::rename(aside.c_str(), destination_.c_str());
+    throw std::runtime_error(text);
+  }
+  committed_ = true;
+  if (!aside.empty()) fs::remove_all(aside, ec);
+  sync_path(parent_or_dot(destination_));
 }
 
 }  // namespace plantsim::util

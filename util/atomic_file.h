@@ -1,5 +1,6 @@
-// Writing output files so that a reader never sees half of one: the bytes go to a temporary
-// file beside the target, which is renamed over it only when complete.
+// Writing output so that a reader never sees half of it: the bytes go to a temporary file
+// beside the target, flushed to the disk (fsync), then renamed over it; a folder of outputs
+// is written as a whole the same way (util::StagedFolder).
 #pragma once
 
 #include <string>
@@ -7,7 +8,33 @@
 
 namespace plantsim::util {
 
-/// Throws std::runtime_error naming the path when the file cannot be written.
+/// Throws std::runtime_error naming the path and the system's reason ("No space left on device").
 void write_file_atomically(const std::string& path, std::string_view bytes);
+
+/// Flushes a file or folder to the disk; throws std::runtime_error naming it and the reason.
+void sync_path(const std::string& path);
+
+/// "<what>: <strerror(errno)>", for messages about failed system calls.
+std::string system_error_text(const std::string& what);
+
+/// A folder of outputs built beside its destination and moved into place as a whole: a rerun
+/// never leaves old and new files mixed, and a failed run leaves the old folder untouched.
+class StagedFolder {
+ public:
+  /// Creates "<destination>.partial-<pid>" next to the destination (parents created).
+  explicit StagedFolder(std::string destination);
+  ~StagedFolder();  ///< removes the staging folder unless committed
+  StagedFolder(const StagedFolder&) = delete;
+  StagedFolder& operator=(const StagedFolder&) = delete;
+
+  const std::string& path() const { return staging_; }          ///< write here
+  const std::string& destination() const { return destination_; }
+  /// Syncs and moves the staging folder to the destination (replacing an older one).
+  void commit();
+
+ private:
+  std::string destination_, staging_;
+  bool committed_ = false;
+};
 
 }  // namespace plantsim::util

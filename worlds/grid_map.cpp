@@ -1,11 +1,11 @@
 // MovingAI file parsing and blocked-cell merging.
 #include "worlds/grid_map.h"
 
-#include <filesystem>
-#include <fstream>
+#include <cmath>
 #include <map>
 #include <sstream>
 
+#include "util/input_file.h"
 #include "worlds/world_error.h"
 #include "worlds/world_limits.h"
 
@@ -16,11 +16,12 @@ bool blocked_for_anyangle(char t) { return !(t == '.' || t == 'G'); }
 
 namespace {
 
-std::ifstream open_text(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw WorldError(path, "", "cannot be opened: is a directory");
-  std::ifstream f(path);
-  if (!f) throw WorldError(path, "", "cannot be opened for reading (missing, a directory, or unreadable)");
-  return f;
+std::istringstream open_text(const std::string& path) {
+  try {
+    return std::istringstream(util::read_input_file(path));
+  } catch (const util::InputFileError& e) {
+    throw WorldError(path, "", e.what());
+  }
 }
 
 int header_value(std::istream& in, const std::string& path, const std::string& key) {
@@ -34,7 +35,7 @@ int header_value(std::istream& in, const std::string& path, const std::string& k
 }  // namespace
 
 GridMap load_movingai_map(const std::string& path) {
-  std::ifstream f = open_text(path);
+  std::istringstream f = open_text(path);
   GridMap m;
   m.source = path;
   std::string word, type;
@@ -60,7 +61,7 @@ GridMap load_movingai_map(const std::string& path) {
 }
 
 std::vector<Scenario> load_movingai_scenarios(const std::string& path) {
-  std::ifstream f = open_text(path);
+  std::istringstream f = open_text(path);
   std::string line;
   std::vector<Scenario> out;
   int line_no = 0;
@@ -72,6 +73,11 @@ std::vector<Scenario> load_movingai_scenarios(const std::string& path) {
     if (!(in >> s.bucket >> s.map >> s.map_width >> s.map_height >> s.sx >> s.sy >> s.gx >> s.gy >> s.optimal))
       throw WorldError(path, "line " + std::to_string(line_no),
                        "expected 'bucket map width height sx sy gx gy optimal'");
+    if (s.map_width <= 0 || s.map_height <= 0 || s.sx < 0 || s.sy < 0 || s.gx < 0 || s.gy < 0 ||
+        s.sx >= s.map_width || s.gx >= s.map_width || s.sy >= s.map_height || s.gy >= s.map_height ||
+        !std::isfinite(s.optimal))
+      throw WorldError(path, "line " + std::to_string(line_no), "start or goal outside the map's width and height");
+    if (out.size() >= 1000000) throw WorldError(path, "line " + std::to_string(line_no), "more than 1000000 queries");
     out.push_back(s);
   }
   return out;

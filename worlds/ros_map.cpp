@@ -6,69 +6,17 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "geometry/predicates.h"
 #include "worlds/charger_placement.h"
+#include "worlds/map_image.h"
+#include "worlds/world_limits.h"
+#include "worlds/yaml_input.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::worlds {
 namespace {
-
-struct Pgm {
-  int width = 0, height = 0, max_value = 255;
-  std::vector<int> values;  // row-major, row 0 at the top
-};
-
-// Skips white space and '#' comments between PGM header fields.
-void skip_space(std::istream& in) {
-  for (;;) {
-    const int c = in.peek();
-    if (c == '#') {
-      std::string line;
-      std::getline(in, line);
-    } else if (std::isspace(c)) {
-      in.get();
-    } else {
-      return;
-    }
-  }
-}
-
-Pgm read_pgm(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw WorldError(path, "", "is a directory, expected a PGM image");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw WorldError(path, "", "cannot be opened (the YAML's 'image' must name a readable PGM file)");
-  std::string magic;
-  in >> magic;
-  if (magic != "P5" && magic != "P2") throw WorldError(path, "magic", "not a PGM image (expected P5 or P2)");
-  Pgm p;
-  skip_space(in);
-  in >> p.width;
-  skip_space(in);
-  in >> p.height;
-  skip_space(in);
-  in >> p.max_value;
-  if (!in || p.width <= 0 || p.height <= 0 || p.max_value <= 0 || p.max_value > 65535)
-    throw WorldError(path, "header", "bad width, height or maximum value");
-  if (static_cast<double>(p.width) * p.height > 64.0e6) throw WorldError(path, "header", "image too large (over 64 Mpixel)");
-  p.values.resize(static_cast<std::size_t>(p.width) * p.height);
-  if (magic == "P5") {
-    in.get();  // the single white-space byte after the header
-    const int bytes = p.max_value > 255 ? 2 : 1;
-    std::vector<unsigned char> raw(p.values.size() * bytes);
-    in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
-    if (in.gcount() != static_cast<std::streamsize>(raw.size())) throw WorldError(path, "pixels", "file ends before the last pixel");
-    for (std::size_t i = 0; i < p.values.size(); ++i)
-      p.values[i] = bytes == 1 ? raw[i] : (raw[2 * i] << 8) | raw[2 * i + 1];
-  } else {
-    for (int& v : p.values)
-      if (!(in >> v)) throw WorldError(path, "pixels", "file ends before the last pixel");
-  }
-  return p;
-}
 
 template <typename T>
 T yaml_value(const YAML::Node& doc, const std::string& key, const std::string& path) {
@@ -83,15 +31,7 @@ T yaml_value(const YAML::Node& doc, const std::string& key, const std::string& p
 }  // namespace
 
 RosMap load_ros_map(const std::string& yaml_path) {
-  if (std::filesystem::is_directory(yaml_path)) throw WorldError(yaml_path, "", "is a directory, expected a map YAML");
-  YAML::Node doc;
-  try {
-    doc = YAML::LoadFile(yaml_path);
-  } catch (const YAML::BadFile&) {
-    throw WorldError(yaml_path, "", "cannot be opened for reading");
-  } catch (const YAML::Exception& e) {
-    throw WorldError(yaml_path, "", std::string("malformed YAML: ") + e.what());
-  }
+  const YAML::Node doc = load_yaml_input(yaml_path);
   if (!doc.IsMap()) throw WorldError(yaml_path, "", "expected a map_server YAML mapping");
   RosMap m;
   const std::string image = yaml_value<std::string>(doc, "image", yaml_path);
@@ -101,10 +41,15 @@ RosMap load_ros_map(const std::string& yaml_path) {
   const double occupied_thresh = yaml_value<double>(doc, "occupied_thresh", yaml_path);
   const double free_thresh = yaml_value<double>(doc, "free_thresh", yaml_path);
   const std::string mode = doc["mode"] ? yaml_value<std::string>(doc, "mode", yaml_path) : "trinary";
-  if (!(m.resolution_m > 0) || !std::isfinite(m.resolution_m)) throw WorldError(yaml_path, "resolution", "must be positive");
-  if (origin.size() != 3 || !std::all_of(origin.begin(), origin.end(), [](double v) { return std::isfinite(v); }))
-    throw WorldError(yaml_path, "origin", "expected [x, y, yaw]");
+  // A pixel from a millimetre to 10 m: finer or coarser is a unit mistake, and would make the
+  // inflation span thousands of pixels or the floor thousands of kilometres.
+  if (!(m.resolution_m >= kMinResolution_m && m.resolution_m <= kMaxResolution_m))
+    throw WorldError(yaml_path, "resolution", "must be from 0.001 to 10 m per pixel");
+  if (origin.size() != 3 ||
+      !std::all_of(origin.begin(), origin.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= kMaxCoordinate_m; }))
+    throw WorldError(yaml_path, "origin", "expected [x, y, yaw], finite, within +-1e7 m");
   if (origin[2] != 0.0) throw WorldError(yaml_path, "origin", "a rotated map (yaw != 0) is not supported");
+  if (negate != 0 && negate != 1) throw WorldError(yaml_path, "negate", "must be 0 or 1");
   if (!(free_thresh >= 0 && free_thresh <= occupied_thresh && occupied_thresh <= 1))
     throw WorldError(yaml_path, "free_thresh", "needs 0 <= free_thresh <= occupied_thresh <= 1");
   if (mode != "trinary" && mode != "scale" && mode != "raw") throw WorldError(yaml_path, "mode", "must be trinary, scale or raw");
@@ -113,7 +58,10 @@ RosMap load_ros_map(const std::string& yaml_path) {
   const std::filesystem::path image_path = std::filesystem::path(image).is_absolute()
                                                ? std::filesystem::path(image)
                                                : std::filesystem::path(yaml_path).parent_path() / image;
-  const Pgm pgm = read_pgm(image_path.string());
+  const MapImage pgm = read_map_image(image_path.string());
+  if (pgm.width * m.resolution_m > kMaxFloorSide_m || pgm.height * m.resolution_m > kMaxFloorSide_m)
+    throw WorldError(yaml_path, "resolution",
+                     "makes the map larger than " + std::to_string(static_cast<int>(kMaxFloorSide_m)) + " m on a side (huge world)");
   m.grid.source = yaml_path;
   m.grid.width = pgm.width;
   m.grid.height = pgm.height;
@@ -169,13 +117,22 @@ std::optional<Pose2> place_charger_against_wall(const World& world, const std::f
     }
   };
   // Along each face every 0.1 m, keeping clear of its ends by half the charger's width.
-  const double spacing = 0.1, inset = 0.5 * world.charger_spec.width_m;
+  // Counted steps, not `x += spacing`: far from the origin that sum stops advancing. On a
+  // huge map the spacing widens so that at most ~100,000 places are tried.
+  double perimeter = 0;
+  for (const Rect& r : faces) perimeter += 2 * (r.width() + r.height());
+  const double spacing = std::max(0.1, perimeter / 100000.0), inset = 0.5 * world.charger_spec.width_m;
+  auto steps = [&](double lo, double hi) {
+    return hi < lo ? 0L : static_cast<long>(std::min(std::floor((hi - lo) / spacing), 1e7)) + 1;
+  };
   for (const Rect& r : faces) {
-    for (double x = r.xmin + inset; x <= r.xmax - inset; x += spacing) {
+    for (long k = 0, n = steps(r.xmin + inset, r.xmax - inset); k < n; ++k) {
+      const double x = r.xmin + inset + k * spacing;
       consider({x, r.ymin - gap}, M_PI / 2);   // below the face, facing up
       consider({x, r.ymax + gap}, -M_PI / 2);  // above, facing down
     }
-    for (double y = r.ymin + inset; y <= r.ymax - inset; y += spacing) {
+    for (long k = 0, n = steps(r.ymin + inset, r.ymax - inset); k < n; ++k) {
+      const double y = r.ymin + inset + k * spacing;
       consider({r.xmin - gap, y}, 0.0);        // left of it, facing right
       consider({r.xmax + gap, y}, M_PI);       // right of it, facing left
     }
@@ -194,17 +151,32 @@ struct Regions {
 
 Regions free_regions(const RosMap& map, double inflation_m) {
   const GridMap& g = map.grid;
-  // A square neighbourhood, as the planner's square-cornered inflation of each pixel reaches.
-  const int grow = static_cast<int>(std::ceil(inflation_m / map.resolution_m)) + 1;
+  // A square neighbourhood, as the planner's square-cornered inflation of each pixel reaches;
+  // grown one axis at a time with running counts, so the cost does not depend on its size.
+  const int grow = static_cast<int>(std::min(std::ceil(inflation_m / map.resolution_m), 1e6)) + 1;
   Regions r;
   r.label.assign(g.cells.size(), 0);
-  for (int y = 0; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x) {
-      if (g.at(x, y) == '.') continue;
-      for (int dy = -grow; dy <= grow; ++dy)
-        for (int dx = -grow; dx <= grow; ++dx)
-          if (g.inside(x + dx, y + dy)) r.label[static_cast<std::size_t>(y + dy) * g.width + x + dx] = -1;
+  const auto w = static_cast<std::size_t>(g.width);
+  std::vector<char> across(g.cells.size(), 0);  // blocked within `grow` along the row
+  for (int y = 0; y < g.height; ++y) {
+    int blocked_in_window = 0;
+    const std::size_t row = static_cast<std::size_t>(y) * w;
+    for (int x = 0; x < g.width + grow; ++x) {
+      if (x < g.width) blocked_in_window += g.at(x, y) != '.';
+      if (x - 2 * grow - 1 >= 0) blocked_in_window -= g.at(x - 2 * grow - 1, y) != '.';
+      const int centre = x - grow;
+      if (centre >= 0 && centre < g.width) across[row + centre] = blocked_in_window > 0;
     }
+  }
+  for (int x = 0; x < g.width; ++x) {
+    int blocked_in_window = 0;
+    for (int y = 0; y < g.height + grow; ++y) {
+      if (y < g.height) blocked_in_window += across[static_cast<std::size_t>(y) * w + x];
+      if (y - 2 * grow - 1 >= 0) blocked_in_window -= across[static_cast<std::size_t>(y - 2 * grow - 1) * w + x];
+      const int centre = y - grow;
+      if (centre >= 0 && centre < g.height && blocked_in_window > 0) r.label[static_cast<std::size_t>(centre) * w + x] = -1;
+    }
+  }
   int next = 1;
   std::size_t largest_size = 0;
   std::vector<std::size_t> queue;
@@ -232,9 +204,12 @@ Regions free_regions(const RosMap& map, double inflation_m) {
 }
 
 int label_at(const RosMap& map, const Regions& r, Vec2 p) {
-  const int x = static_cast<int>(std::floor((p.x - map.origin.x) / map.resolution_m));
-  const int y = map.grid.height - 1 - static_cast<int>(std::floor((p.y - map.origin.y) / map.resolution_m));
-  return map.grid.inside(x, y) ? r.label[static_cast<std::size_t>(y) * map.grid.width + x] : -1;
+  const double column = std::floor((p.x - map.origin.x) / map.resolution_m);
+  const double row_up = std::floor((p.y - map.origin.y) / map.resolution_m);
+  // Compared as doubles first: a point far off the map must not overflow an int.
+  if (!(column >= 0 && column < map.grid.width && row_up >= 0 && row_up < map.grid.height)) return -1;
+  const int x = static_cast<int>(column), y = map.grid.height - 1 - static_cast<int>(row_up);
+  return r.label[static_cast<std::size_t>(y) * map.grid.width + x];
 }
 
 // The free pixel farthest from the charger in the region of its staging pose.

@@ -8,5 +8,11 @@ namespace plantsim::worlds {
 inline constexpr double kMaxFloorSide_m = 10000.0;
 inline constexpr std::size_t kMaxObstacles = 200000;
 inline constexpr std::size_t kMaxWorldFileBytes = 256u * 1024u * 1024u;
+/// Metres per pixel of a ROS map.
+inline constexpr double kMinResolution_m = 0.001;
+inline constexpr double kMaxResolution_m = 10.0;
+/// Coordinates in world files lie within +-this (metres): beyond it a plant is not a plant and
+/// coordinate differences lose the millimetres docking is judged by.
+inline constexpr double kMaxCoordinate_m = 1e7;
 
 }  // namespace plantsim::worlds

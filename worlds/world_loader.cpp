@@ -7,11 +7,15 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <algorithm>
+#include <cstdint>
 #include <sstream>
 
 #include "geometry/predicates.h"
+#include "util/data_dir.h"
+#include "util/input_file.h"
 #include "worlds/charger_placement.h"
+#include "worlds/known_keys.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_limits.h"
 
@@ -40,22 +44,33 @@ class FieldReader {
     if (!value.is_number()) fail(path, std::string("expected a number, got ") + value.type_name());
     const double v = value.get<double>();
     if (!std::isfinite(v)) fail(path, "must be finite");
+    // Beyond this, differences of coordinates lose the millimetres docking is judged by.
+    if (std::fabs(v) > kMaxCoordinate_m) fail(path, "beyond +-1e7 m: no plant is that large");
     return v;
+  }
+
+  /// A number from lo to hi (a robot 1e6 m wide, a speed of 1e300 are refused at load).
+  double bounded(const json& obj, const std::string& key, const std::string& path, double lo, double hi) const {
+    const double v = number(obj, key, path);
+    if (v < lo || v > hi) fail(join(path, key), "must be from " + short_number(lo) + " to " + short_number(hi));
+    return v;
+  }
+
+  /// Every key of `obj` must be one of `known`.
+  void keys(const json& obj, const std::string& path, const std::vector<std::string>& known) const {
+    if (!obj.is_object()) fail(path, "expected an object");
+    for (const auto& [key, value] : obj.items())
+      if (std::find(known.begin(), known.end(), key) == known.end()) fail(join(path, key), unknown_key_problem(key, known));
   }
 
   double number(const json& obj, const std::string& key, const std::string& path) const {
     return number(member(obj, key, path), join(path, key));
   }
 
-  double number_or(const json& obj, const std::string& key, const std::string& path,
-                   double fallback) const {
-    if (!obj.contains(key)) return fallback;
-    return number(obj, key, path);
-  }
-
-  double positive(const json& obj, const std::string& key, const std::string& path) const {
+  double positive(const json& obj, const std::string& key, const std::string& path, double most) const {
     const double v = number(obj, key, path);
     if (v <= 0) fail(join(path, key), "must be positive");
+    if (v > most) fail(join(path, key), "must be at most " + short_number(most));
     return v;
   }
 
@@ -74,8 +89,11 @@ class FieldReader {
     return {number(value[0], path + "[0]"), number(value[1], path + "[1]")};
   }
 
-  Pose2 pose(const json& value, const std::string& path) const {
-    return {number(value, "x", path), number(value, "y", path), number(value, "yaw", path)};
+  Pose2 pose(const json& value, const std::string& path, const std::vector<std::string>& extra_keys = {}) const {
+    std::vector<std::string> known = {"x", "y", "yaw"};
+    known.insert(known.end(), extra_keys.begin(), extra_keys.end());
+    keys(value, path, known);
+    return {number(value, "x", path), number(value, "y", path), bounded(value, "yaw", path, -100.0, 100.0)};
   }
 
   std::vector<Rect> rects(const json& value, const std::string& path) const {
@@ -94,6 +112,12 @@ class FieldReader {
     return path.empty() ? key : path + "." + key;
   }
 
+  static std::string short_number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
  private:
   std::string source_;
 };
@@ -104,7 +128,8 @@ std::string stem_of(const std::string& path) {
 
 // A box on a scripted path: a moving obstacle or the moving target.
 MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std::string& path) {
-  if (!m.is_object()) in.fail(path, "expected an object");
+  in.keys(m, path, {"name", "size_m", "waypoints", "speed_mps", "start_time_s", "loop", "yields_to_robot",
+                    "yield_distance_m"});
   MovingObstacle mo;
   mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
   const json& size = in.member(m, "size_m", path);
@@ -114,11 +139,11 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
   mo.height_m = wh.y;
   const json& wps = in.member(m, "waypoints", path);
   if (!wps.is_array() || wps.empty()) in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
+  if (wps.size() > 10000) in.fail(path + ".waypoints", "more than 10000 waypoints");
   for (std::size_t k = 0; k < wps.size(); ++k)
     mo.waypoints.push_back(in.point_array(wps[k], path + ".waypoints[" + std::to_string(k) + "]"));
-  mo.speed_mps = in.number_or(m, "speed_mps", path, 0.0);
-  if (mo.speed_mps < 0) in.fail(path + ".speed_mps", "must not be negative");
-  mo.start_time_s = in.number_or(m, "start_time_s", path, 0.0);
+  if (m.contains("speed_mps")) mo.speed_mps = in.bounded(m, "speed_mps", path, 0.0, 50.0);
+  if (m.contains("start_time_s")) mo.start_time_s = in.bounded(m, "start_time_s", path, 0.0, 1e6);
   if (m.contains("loop")) {
     if (!m["loop"].is_boolean()) in.fail(path + ".loop", "expected true or false");
     mo.loop = m["loop"].get<bool>();
@@ -127,8 +152,7 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
     if (!m["yields_to_robot"].is_boolean()) in.fail(path + ".yields_to_robot", "expected true or false");
     mo.yields_to_robot = m["yields_to_robot"].get<bool>();
   }
-  mo.yield_distance_m = in.number_or(m, "yield_distance_m", path, mo.yield_distance_m);
-  if (mo.yield_distance_m < 0) in.fail(path + ".yield_distance_m", "must not be negative");
+  if (m.contains("yield_distance_m")) mo.yield_distance_m = in.bounded(m, "yield_distance_m", path, 0.0, 100.0);
   return mo;
 }
 
@@ -136,15 +160,15 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
 // "corridors": [[[c, r], [c, r]], ...]} with each corridor a straight run between two nodes.
 TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
   const std::string path = "tunnel_maze";
-  if (!m.is_object()) in.fail(path, "expected an object");
+  in.keys(m, path, {"origin", "pitch_m", "corridor_m", "columns", "rows", "corridors"});
   const Vec2 origin = in.point_array(in.member(m, "origin", path), path + ".origin");
-  const double pitch = in.positive(m, "pitch_m", path), corridor = in.positive(m, "corridor_m", path);
+  const double pitch = in.positive(m, "pitch_m", path, 1000.0), corridor = in.positive(m, "corridor_m", path, 1000.0);
   if (corridor >= pitch) in.fail(path + ".corridor_m", "must be less than pitch_m");
   auto count = [&](const char* key) {
     const json& v = in.member(m, key, path);
-    if (!v.is_number_integer() || v.get<long>() < 1 || v.get<long>() > 1000)
+    if (!v.is_number_integer() || v.get<std::int64_t>() < 1 || v.get<std::int64_t>() > 1000)
       in.fail(path + "." + key, "expected a whole number from 1 to 1000");
-    return v.get<int>();
+    return static_cast<int>(v.get<std::int64_t>());
   };
   TunnelMaze maze(origin, pitch, corridor, count("columns"), count("rows"));
   const json& runs = in.member(m, "corridors", path);
@@ -158,7 +182,16 @@ TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
       const json& e = run[k];
       if (!e.is_array() || e.size() != 2 || !e[0].is_number_integer() || !e[1].is_number_integer())
         in.fail(where, "expected [[c, r], [c, r]] with whole numbers");
-      ends[k] = {e[0].get<int>(), e[1].get<int>()};
+      // Read wide, then range-checked: 4294967296 must not wrap to column 0.
+      for (int axis = 0; axis < 2; ++axis) {
+        const bool unsigned_big = e[axis].is_number_unsigned() && e[axis].get<std::uint64_t>() > 1000000;
+        const std::int64_t v = unsigned_big ? -1 : e[axis].get<std::int64_t>();
+        const std::int64_t limit = axis == 0 ? maze.columns() : maze.rows();
+        if (v < 0 || v >= limit)
+          in.fail(where + "[" + std::to_string(k) + "][" + std::to_string(axis) + "]",
+                  std::string("must be a ") + (axis == 0 ? "column" : "row") + " from 0 to " + std::to_string(limit - 1));
+      }
+      ends[k] = {static_cast<int>(e[0].get<std::int64_t>()), static_cast<int>(e[1].get<std::int64_t>())};
     }
     try {
       maze.open_run(ends[0], ends[1]);
@@ -180,11 +213,24 @@ void read_map_mismatch(const json& doc, const FieldReader& in, World& w) {
   }
 }
 
+// A world's name labels figures and reports; folders made from it go through
+// file_name_component, but a name no report can show is refused.
+std::string read_name(const json& doc, const FieldReader& in, const std::string& source) {
+  if (!doc.contains("name")) return stem_of(source);
+  if (!doc["name"].is_string()) in.fail("name", "expected a string");
+  const std::string name = doc["name"].get<std::string>();
+  if (name.empty() || name.size() > 100) in.fail("name", "expected 1 to 100 characters");
+  for (unsigned char c : name)
+    if (c < 0x20 || c == 0x7f) in.fail("name", "holds a control character");
+  return name;
+}
+
 World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
+  in.keys(doc, "", {"name", "comment", "description", "floor", "obstacles", "robot", "start", "charger",
+                    "inflation_margin_m", "unmapped", "charger_map_offset", "moving_obstacles", "target", "tunnel_maze"});
   World w;
   w.source = source;
-  w.name = doc.contains("name") && doc["name"].is_string() ? doc["name"].get<std::string>()
-                                                          : stem_of(source);
+  w.name = read_name(doc, in, source);
   if (doc.contains("tunnel_maze")) {
     // The floor and the rock come from the lattice; further obstacles may be added.
     if (doc.contains("floor")) in.fail("floor", "a tunnel_maze world takes its floor from the lattice");
@@ -197,6 +243,7 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
     }
   } else {
     const json& floor = in.member(doc, "floor", "");
+    in.keys(floor, "floor", {"xmin", "ymin", "xmax", "ymax"});
     w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
                in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
     if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
@@ -205,40 +252,42 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   }
 
   const json& robot = in.member(doc, "robot", "");
+  in.keys(robot, "robot", {"radius_m", "footprint", "wheel_base_m", "wheel_radius_m", "max_speed_mps", "max_accel_mps2", "mass_kg"});
   if (robot.contains("footprint")) {
     // A rectangle: the planner and the safety checks use its circumscribed radius.
     const json& fp = robot["footprint"];
-    w.robot.length_m = in.positive(fp, "length_m", "robot.footprint");
-    w.robot.width_m = in.positive(fp, "width_m", "robot.footprint");
+    in.keys(fp, "robot.footprint", {"length_m", "width_m"});
+    w.robot.length_m = in.positive(fp, "length_m", "robot.footprint", 20.0);
+    w.robot.width_m = in.positive(fp, "width_m", "robot.footprint", 20.0);
     w.robot.radius_m = 0.5 * std::hypot(w.robot.length_m, w.robot.width_m);
     if (robot.contains("radius_m")) in.fail("robot.radius_m", "give either radius_m (a disk) or footprint (a rectangle)");
   } else {
-    w.robot.radius_m = in.positive(robot, "radius_m", "robot");
+    w.robot.radius_m = in.positive(robot, "radius_m", "robot", 10.0);
   }
-  w.robot.wheel_base_m = in.positive(robot, "wheel_base_m", "robot");
-  w.robot.wheel_radius_m = in.positive(robot, "wheel_radius_m", "robot");
-  w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot");
-  w.robot.max_accel_mps2 = in.positive(robot, "max_accel_mps2", "robot");
-  if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot");
+  w.robot.wheel_base_m = in.positive(robot, "wheel_base_m", "robot", 20.0);
+  w.robot.wheel_radius_m = in.positive(robot, "wheel_radius_m", "robot", 5.0);
+  w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot", 20.0);
+  w.robot.max_accel_mps2 = in.positive(robot, "max_accel_mps2", "robot", 100.0);
+  if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot", 100000.0);
 
   w.start = in.pose(in.member(doc, "start", ""), "start");
-  w.charger = in.pose(in.member(doc, "charger", ""), "charger");
+  w.charger = in.pose(in.member(doc, "charger", ""), "charger", {"width_m", "depth_m", "staging_distance_m", "pad_travel_m"});
   const json& charger = doc["charger"];
-  if (charger.contains("width_m")) w.charger_spec.width_m = in.positive(charger, "width_m", "charger");
-  if (charger.contains("depth_m")) w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger");
+  if (charger.contains("width_m")) w.charger_spec.width_m = in.positive(charger, "width_m", "charger", 10.0);
+  if (charger.contains("depth_m")) w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger", 10.0);
   if (charger.contains("pad_travel_m")) {
     w.charger_spec.pad_travel_m = in.number(charger, "pad_travel_m", "charger");
     if (w.charger_spec.pad_travel_m < 0 || w.charger_spec.pad_travel_m > 0.05)
       in.fail("charger.pad_travel_m", "must be from 0 to 0.05 m");
   }
   if (charger.contains("staging_distance_m"))
-    w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger");
-  w.inflation_margin_m = in.number_or(doc, "inflation_margin_m", "", w.inflation_margin_m);
-  if (w.inflation_margin_m < 0) in.fail("inflation_margin_m", "must not be negative");
+    w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger", 100.0);
+  if (doc.contains("inflation_margin_m")) w.inflation_margin_m = in.bounded(doc, "inflation_margin_m", "", 0.0, 100.0);
   read_map_mismatch(doc, in, w);
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
+    if (list.size() > 1000) in.fail("moving_obstacles", "more than 1000 moving obstacles");
     for (std::size_t i = 0; i < list.size(); ++i)
       w.moving.push_back(read_scripted_box(in, list[i], "moving_obstacles[" + std::to_string(i) + "]"));
   }
@@ -254,6 +303,10 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
 }
 
 World read_plain_schema(const json& doc, const FieldReader& in, const std::string& source) {
+  // n, seed, min_gap, inflation and queries describe how a benchmark world was made and what
+  // its optimal lengths are; they are accepted and not used here.
+  in.keys(doc, "", {"W", "H", "rects", "start", "goal", "unmapped", "charger_map_offset", "comment", "n", "seed",
+                    "min_gap", "inflation", "queries", "inflated_case"});
   World w;
   w.source = source;
   w.name = stem_of(source);
@@ -299,18 +352,12 @@ namespace {
 
 std::string read_file(const std::string& path) {
   std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw WorldError(path, "", "no such file");
-  if (std::filesystem::is_directory(status))
-    throw WorldError(path, "", "is a directory, expected a world file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxWorldFileBytes)
-    throw WorldError(path, "", "file too large (" + std::to_string(size) + " bytes)");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw WorldError(path, "", "cannot be opened for reading");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
+  if (!std::filesystem::exists(path, ec)) throw WorldError(path, "", "no such file");
+  try {
+    return util::read_input_file(path, kMaxWorldFileBytes);
+  } catch (const util::InputFileError& e) {
+    throw WorldError(path, "", e.what());
+  }
 }
 
 }  // namespace
@@ -390,7 +437,8 @@ World parse_world_json(const std::string& text, const std::string& source) {
   return w;
 }
 
-World load_world(const std::string& path, const PoseOverrides& overrides) {
+World load_world(const std::string& written, const PoseOverrides& overrides) {
+  const std::string path = util::resolve_input_path(written, "");  // "$data/worlds/x.json"
   const std::string ext = std::filesystem::path(path).extension().string();
   World w;
   if (ext == ".yaml" || ext == ".yml") {

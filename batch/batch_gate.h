@@ -1,0 +1,35 @@
+// The batch as a gate: each configuration (world x planner x controller x fault) judged
+// against its success threshold, so CI can fail a change that makes docking worse, and a
+// JUnit XML report in which each configuration is one test case.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "batch/batch_spec.h"
+
+namespace plantsim::batch {
+
+struct ConfigurationVerdict {
+  std::string world, planner, controller, fault;
+  std::int64_t episodes = 0, docked = 0;
+  double success_rate = 0, wilson_low = 0, wilson_high = 0;
+  std::optional<double> threshold;  ///< none: not gated
+  bool passed = true;
+  std::string name() const { return world + " / " + planner + " / " + controller + " / " + fault; }
+};
+
+/// One verdict per configuration in the records, in the summary's order. `gate` from the
+/// scenario; `min_success` (the command line's --min-success) replaces its default threshold.
+std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& jsonl_lines, const Gate& gate);
+
+/// "FAIL world_N50 / vg / default / wet: 41/50 docked, success_rate 0.820 < 0.900" per failure.
+std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic);
+
+/// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold).
+std::string junit_xml(const std::string& suite_name, const std::vector<ConfigurationVerdict>& verdicts,
+                      GateStatistic statistic);
+
+}  // namespace plantsim::batch

@@ -1,0 +1,224 @@
+// The batch as a gate users can trust: configurations judged against thresholds (and the JUnit
+// report), episodes the same whatever a world's place in the list, merges that refuse mixed
+// scenarios and missing shards, one writer per folder, resume past malformed lines, and
+// scenario paths relative to the scenario file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "batch/batch_gate.h"
+#include "batch/batch_runner.h"
+#include "test_paths.h"
+#include "util/folder_lock.h"
+#include "worlds/world_error.h"
+
+namespace plantsim::batch {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string record(const std::string& world, const std::string& planner, const std::string& fault, bool docked) {
+  return nlohmann::json{{"world", world}, {"planner", planner}, {"controller", "default"}, {"fault", fault}, {"docked", docked}}.dump();
+}
+
+std::vector<std::string> records(const std::string& world, const std::string& planner, const std::string& fault, int docked, int failed) {
+  std::vector<std::string> out;
+  for (int i = 0; i < docked; ++i) out.push_back(record(world, planner, fault, true));
+  for (int i = 0; i < failed; ++i) out.push_back(record(world, planner, fault, false));
+  return out;
+}
+
+TEST(Gate, JudgesEachConfigurationAgainstItsThreshold) {
+  std::vector<std::string> lines = records("w", "vg", "none", 19, 1);  // 0.95
+  const auto gcr = records("w", "gcr", "none", 6, 4);                  // 0.60
+  lines.insert(lines.end(), gcr.begin(), gcr.end());
+  Gate gate;
+  EXPECT_TRUE(judge_configurations(lines, gate)[0].passed);  // no threshold: nothing gated
+  EXPECT_FALSE(judge_configurations(lines, gate)[0].threshold.has_value());
+  gate.min_success = 0.9;
+  auto v = judge_configurations(lines, gate);
+  ASSERT_EQ(v.size(), 2u);
+  const auto& by_gcr = v[0].planner == "gcr" ? v[0] : v[1];
+  const auto& by_vg = v[0].planner == "vg" ? v[0] : v[1];
+  EXPECT_FALSE(by_gcr.passed);
+  EXPECT_TRUE(by_vg.passed);
+  EXPECT_NE(gate_failures_text(v, gate.statistic).find("w / gcr / default / none: 6/10 docked, success_rate 0.600 < 0.900"),
+            std::string::npos) << gate_failures_text(v, gate.statistic);
+  // A rule for the baseline planner: the last matching rule wins over the default.
+  gate.rules.push_back({"", "gcr", "", "", 0.5});
+  v = judge_configurations(lines, gate);
+  EXPECT_TRUE(v[0].passed && v[1].passed);
+  // The Wilson lower bound is stricter: 19 of 20 has a lower bound of 0.764.
+  gate.statistic = GateStatistic::kWilsonLow;
+  v = judge_configurations(lines, gate);
+  const auto& vg_wilson = v[0].planner == "vg" ? v[0] : v[1];
+  EXPECT_NEAR(vg_wilson.wilson_low, 0.7639, 1e-3);
+  EXPECT_FALSE(vg_wilson.passed);
+}
+
+TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
+  std::vector<std::string> lines = records("plant<1>", "vg", "wet", 3, 1);
+  const auto ok = records("plant<1>", "vg", "dry", 4, 0);
+  lines.insert(lines.end(), ok.begin(), ok.end());
+  Gate gate;
+  gate.min_success = 0.9;
+  const std::string xml = junit_xml("suite", judge_configurations(lines, gate), gate.statistic);
+  EXPECT_NE(xml.find("tests=\"2\" failures=\"1\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("classname=\"suite.plant&lt;1&gt;\""), std::string::npos) << xml;  // escaped
+  EXPECT_NE(xml.find("<failure message=\"plant&lt;1&gt; / vg / default / wet: 3/4 docked"), std::string::npos) << xml;
+  EXPECT_GT(xml.find("<failure"), xml.find("/ wet\"")) << xml;  // the failure is the wet case's, not the dry one's
+  EXPECT_EQ(xml.find("<failure", xml.find("<failure") + 1), std::string::npos) << xml;
+}
+
+class BatchFolders : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("plantsim_gate_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const auto p = (dir_ / name).string();
+    std::ofstream(p) << text;
+    return p;
+  }
+  RunOptions options(const std::string& out, int i = 0, int n = 1) {
+    RunOptions o;
+    o.out_dir = (dir_ / out).string();
+    o.shard_index = i;
+    o.shard_count = n;
+    o.progress = false;
+    o.figures = false;
+    return o;
+  }
+  std::string two_worlds(const std::string& name, bool reversed, int seeds = 2) {
+    std::string a = test::shared_data("worlds/world_N10.json"), b = test::source_file("worlds/examples/small_plant.json");
+    if (reversed) std::swap(a, b);
+    return write(name, "worlds: [" + a + ", " + b + "]\nplanners: [vg]\nseeds: " + std::to_string(seeds) + "\n");
+  }
+  static std::map<std::string, std::string> starts_by_id(const std::string& dir) {
+    std::map<std::string, std::string> out;
+    for (const std::string& line : read_episode_records(dir)) {
+      const auto j = nlohmann::json::parse(line);
+      out[j["id"]] = j["start"].dump();
+    }
+    return out;
+  }
+  fs::path dir_;
+};
+
+TEST_F(BatchFolders, AnEpisodeIsTheSameWhateverTheWorldsOrder) {
+  run_batch(two_worlds("ab.yaml", false), options("ab"));
+  run_batch(two_worlds("ba.yaml", true), options("ba"));
+  const auto ab = starts_by_id((dir_ / "ab").string()), ba = starts_by_id((dir_ / "ba").string());
+  ASSERT_EQ(ab.size(), 4u);
+  EXPECT_EQ(ab, ba);
+  // Same episodes, so the same scenario: their shards merge.
+  EXPECT_EQ(merge_batches({(dir_ / "ab").string(), (dir_ / "ba").string()}, (dir_ / "m").string()).episodes, 4);
+}
+
+TEST_F(BatchFolders, MergeRefusesMixedScenariosAndMissingShards) {
+  run_batch(two_worlds("two.yaml", false, 2), options("two"));
+  run_batch(two_worlds("three.yaml", false, 3), options("three"));
+  try {
+    merge_batches({(dir_ / "two").string(), (dir_ / "three").string()}, (dir_ / "mixed").string());
+    ADD_FAILURE() << "merged two scenarios";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("different scenarios"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "mixed" / "episodes.jsonl"));
+  // Three of four shards of the 6-episode scenario.
+  const std::string scenario = (dir_ / "three.yaml").string();
+  std::vector<std::string> shards;
+  std::int64_t in_three = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::string name = std::string("s") + static_cast<char>('0' + i);  // (GCC 12 warns falsely on "s" + to_string)
+    in_three += run_batch(scenario, options(name, i, 4)).episodes;
+    shards.push_back((dir_ / name).string());
+  }
+  try {
+    merge_batches(shards, (dir_ / "partial").string());
+    ADD_FAILURE() << "merged 3 of 4 shards silently";
+  } catch (const IncompleteBatch& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(6 - in_three) + " of the scenario's 6 episodes are missing"),
+              std::string::npos) << e.what();
+  }
+  MergeOptions partial;
+  partial.allow_partial = true;
+  EXPECT_EQ(merge_batches(shards, (dir_ / "partial").string(), partial).episodes, in_three);
+}
+
+TEST_F(BatchFolders, BatchRefusesAFolderOfAnotherScenarioUnlessFresh) {
+  run_batch(two_worlds("two.yaml", false, 2), options("out"));
+  try {
+    run_batch(two_worlds("three.yaml", false, 3), options("out"));
+    ADD_FAILURE() << "appended another scenario's episodes";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("holds episodes of another scenario"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_episode_records((dir_ / "out").string()).size(), 4u);
+  RunOptions fresh = options("out");
+  fresh.fresh = true;
+  EXPECT_EQ(run_batch((dir_ / "three.yaml").string(), fresh).ran, 6);
+  EXPECT_EQ(read_episode_records((dir_ / "out").string()).size(), 6u);
+}
+
+TEST_F(BatchFolders, OneBatchPerOutputFolder) {
+  const std::string scenario = two_worlds("s.yaml", false);
+  fs::create_directories(dir_ / "busy");
+  const util::FolderLock held((dir_ / "busy").string());  // as another process would hold it
+  try {
+    run_batch(scenario, options("busy"));
+    ADD_FAILURE() << "two writers on one folder";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("another plantsim process is writing"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "busy" / "episodes.jsonl"));
+}
+
+TEST_F(BatchFolders, ResumeCutsMalformedLinesAndRerunsTheirEpisodes) {
+  const std::string scenario = two_worlds("s.yaml", false);
+  run_batch(scenario, options("whole"));
+  const auto whole = starts_by_id((dir_ / "whole").string());
+  // Keep two good records, add lines resume cannot use: no id, not an object, not JSON, torn.
+  const auto good = read_episode_records((dir_ / "whole").string());
+  fs::create_directories(dir_ / "damaged");
+  std::string damaged = good[0];
+  for (const char* bad : {"\n{}\n[1,2]\nnot json\n"}) damaged.append(bad);
+  damaged.append(good[1]).append("\n{\"id\": 5}\n").append(good[2], 0, 20);
+  write("damaged/episodes.jsonl", damaged);
+  const BatchOutcome r = run_batch(scenario, options("damaged"));
+  EXPECT_EQ(r.malformed_lines_cut, 5);
+  EXPECT_EQ(r.skipped, 2);
+  EXPECT_EQ(r.ran, 2);
+  EXPECT_EQ(starts_by_id((dir_ / "damaged").string()), whole);
+}
+
+TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
+  fs::create_directories(dir_ / "sc" / "w");
+  fs::copy_file(test::source_file("worlds/examples/small_plant.json"), dir_ / "sc" / "w" / "plant.json");
+  const std::string scenario = write("sc/rel.yaml", "worlds: [w/plant.json, $data/worlds/world_N10.json]\nseeds: 1\n");
+  // Whatever the current folder, the scenario finds its worlds.
+  const fs::path before = fs::current_path();
+  fs::current_path(fs::temp_directory_path());
+  RunOptions check = options("rel");
+  check.check_only = true;
+  EXPECT_EQ(run_batch(scenario, check).episodes, 2);
+  fs::current_path(before);
+  try {
+    run_batch(write("sc/missing.yaml", "worlds: [nowhere.json]\nseeds: 1\n"), check);
+    ADD_FAILURE();
+  } catch (const worlds::WorldError& e) {
+    EXPECT_NE(std::string(e.what()).find("'nowhere.json' not found (looked for " + (dir_ / "sc" / "nowhere.json").string()),
+              std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace plantsim::batch

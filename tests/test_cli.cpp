@@ -1,0 +1,268 @@
+// The command line against hostile and malformed input, run as a user would: each case in a
+// fresh folder, under `timeout` (a hang fails the case), asserting the exit code, the message,
+// and that nothing is written outside that folder. Then --version, unknown commands, the batch
+// gate's exit code and JUnit file, and recorded commands that re-run exactly.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "test_paths.h"
+
+namespace plantsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ public:  // the hostile-input table's lambdas prepare files through these
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("plantsim_cli_" + std::to_string(::getpid()) + "_" +
+                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(root_);
+    dir_ = root_ / "work";
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  static std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  // Runs plantsim in dir_ with a time limit; 124 is timeout's code for a hang.
+  Outcome run(const std::string& args, int seconds = 30) {
+    const std::string cmd = "cd '" + dir_.string() + "' && timeout " + std::to_string(seconds) + " " PLANTSIM_BINARY " " +
+                            args + " > '" + (root_ / "out.txt").string() + "' 2> '" + (root_ / "err.txt").string() + "'";
+    const int status = std::system(cmd.c_str());
+    Outcome o;
+    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    o.out = read(root_ / "out.txt");
+    o.err = read(root_ / "err.txt");
+    return o;
+  }
+  // Everything under root_ other than the work folder and the captured output.
+  std::set<std::string> outside() const {
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(root_))
+      if (e.path().filename() != "work" && e.path().filename() != "out.txt" && e.path().filename() != "err.txt")
+        names.insert(e.path().filename().string());
+    return names;
+  }
+  std::string world_json(const std::function<void(nlohmann::json&)>& edit) {
+    std::ifstream in(test::source_file("worlds/examples/small_plant.json"));
+    nlohmann::json j = nlohmann::json::parse(in);
+    edit(j);
+    return j.dump();
+  }
+  std::string ros_map(const std::string& field, const std::string& value) {
+    std::string yaml = read(test::shared_data("ros_maps/depot.yaml"));
+    const auto at = yaml.find(field + ":");
+    yaml.replace(at, yaml.find('\n', at) - at, field + ": " + value);
+    const auto image = yaml.find("image:");
+    yaml.replace(image, yaml.find('\n', image) - image, "image: " + test::shared_data("ros_maps/depot.pgm"));
+    return yaml;
+  }
+  fs::path root_, dir_;
+};
+
+struct HostileCase {
+  std::string name;
+  std::function<std::string(Cli&)> prepare;  // returns the arguments
+  std::string message;                       // part of stderr
+};
+
+TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
+  const std::string n10 = test::shared_data("worlds/world_N10.json");
+  const std::string scenario_head = "worlds: [" + n10 + "]\n";
+  const std::vector<HostileCase> cases = {
+      {"world FIFO", [](Cli& c) { ::mkfifo((c.dir_ / "w.json").c_str(), 0644); return std::string("run w.json"); }, "is a FIFO"},
+      {"world /dev/zero", [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "w.json"); return std::string("run w.json"); },
+       "is a character device"},
+      {"config /dev/zero",
+       [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "c.json"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       "is a character device"},
+      {"scenario FIFO", [](Cli& c) { ::mkfifo((c.dir_ / "s.yaml").c_str(), 0644); return std::string("batch s.yaml"); }, "is a FIFO"},
+      {"PGM /dev/zero",
+       [](Cli& c) {
+         fs::create_symlink("/dev/zero", c.dir_ / "zero.pgm");
+         c.write("m.yaml", "image: zero.pgm\nresolution: 0.05\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.25\n");
+         return std::string("run m.yaml");
+       },
+       "is a character device"},
+      {"scen /dev/zero",
+       [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "x.scen"); return std::string("plan --map " + test::shared_data("anyangle/arena.map") + " --scen x.scen"); },
+       "is a character device"},
+      {"huge world file (sparse)",
+       [](Cli& c) { std::ofstream(c.dir_ / "big.json"); fs::resize_file(c.dir_ / "big.json", 300ull << 20); return std::string("run big.json"); },
+       "more than the 268435456 allowed"},
+      {"ROS origin 1e17", [](Cli& c) { c.write("m.yaml", c.ros_map("origin", "[1.0e17, 0.0, 0.0]")); return std::string("run m.yaml"); }, "field 'origin'"},
+      {"ROS resolution 100", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "100")); return std::string("plan m.yaml"); }, "field 'resolution'"},
+      {"ROS resolution 0.0001", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "0.0001")); return std::string("plan m.yaml"); }, "field 'resolution'"},
+      {"ROS resolution 1e308", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "1e308")); return std::string("plan m.yaml"); }, "field 'resolution'"},
+      {"ROS resolution 0.002 (no room)", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "0.002")); return std::string("run m.yaml"); }, "no place leaves room to dock"},
+      {"potential field m 1e308",
+       [](Cli& c) { c.write("c.json", R"({"potential_field": {"m": 1e308}})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json --travel potential-field"); },
+       "field 'potential_field.m'"},
+      {"timeout 1e308",
+       [](Cli& c) { c.write("c.json", R"({"timeout_s": 1e308})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       "field 'timeout_s'"},
+      {"dt 1e-300",
+       [](Cli& c) { c.write("c.json", R"({"step": {"dt_s": 1e-300}})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       "field 'step.dt_s'"},
+      {"YAML alias bomb",
+       [&](Cli& c) {
+         std::string bomb = scenario_head + "seeds: 1\nfaults:\n  x: {odometry: &a0 [1,1,1,1,1,1,1,1,1,1]}\n";
+         for (int k = 1; k < 12; ++k)
+           bomb += "  y" + std::to_string(k) + ": {odometry: &a" + std::to_string(k) + " [*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + "]}\n";
+         c.write("s.yaml", bomb);
+         return std::string("batch s.yaml");
+       },
+       "YAML nodes"},
+      {"1.2e9 episodes",
+       [&](Cli& c) { c.write("s.yaml", scenario_head + "planners: [vg, grid, gcr, vg-traditional]\nfaults: {a: {}, b: {}, c: {}}\nseeds: 1000000\n"); return std::string("batch s.yaml"); },
+       "more than the limit of 10000000"},
+      {"maze column 4294967296",
+       [](Cli& c) {
+         std::ifstream in(test::source_file("worlds/scenarios/cable_tunnel_ring.json"));
+         nlohmann::json j = nlohmann::json::parse(in);
+         j["tunnel_maze"]["corridors"][0][0][0] = 4294967296ULL;
+         c.write("maze.json", j.dump());
+         return std::string("plan maze.json");
+       },
+       "must be a column"},
+      {"YAML 0x10", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x: {lidar: {rate_hz: 0x10}}\n"); return std::string("batch s.yaml"); },
+       "field 'lidar.rate_hz': expected a number"},
+      {"world key typo",
+       [](Cli& c) {
+         c.write("typo.json", c.world_json([](nlohmann::json& j) { j["obstacels"] = j["obstacles"]; j.erase("obstacles"); }));
+         return std::string("run typo.json");
+       },
+       "field 'obstacels': unknown key, did you mean 'obstacles'?"},
+      {"robot speed 1e5",
+       [](Cli& c) { c.write("w.json", c.world_json([](nlohmann::json& j) { j["robot"]["max_speed_mps"] = 1e5; })); return std::string("run w.json"); },
+       "field 'robot.max_speed_mps': must be at most 20"},
+      {"scenario worlds as a mapping", [](Cli& c) { c.write("s.yaml", "worlds: {a: 1}\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'worlds'"},
+      {"scenario seeds not numbers", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: [a, b]\n"); return std::string("batch s.yaml"); }, "field 'seeds'"},
+      {"scenario planners as a mapping", [&](Cli& c) { c.write("s.yaml", scenario_head + "planners: {x: 1}\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'planners'"},
+      {"scenario faults as a list", [&](Cli& c) { c.write("s.yaml", scenario_head + "faults: [1, 2]\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'faults'"},
+      {"scenario key typo", [&](Cli& c) { c.write("s.yaml", scenario_head + "seed: 3\n"); return std::string("batch s.yaml"); }, "did you mean 'seeds'?"},
+      {"scenario gate above 1", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\ngate: {min_success: 2}\n"); return std::string("batch s.yaml"); }, "field 'gate.min_success'"},
+      {"obstacle at 1e300",
+       [](Cli& c) { c.write("w.json", c.world_json([](nlohmann::json& j) { j["obstacles"][0][2] = 1e300; })); return std::string("run w.json"); },
+       "field 'obstacles[0][2]': beyond +-1e7 m"},
+      {"unknown command", [](Cli&) { return std::string("bogus"); }, "unknown command 'bogus'"},
+  };
+  for (const HostileCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const Outcome o = run(c.prepare(*this));
+    EXPECT_EQ(o.exit_code, 2) << o.err;
+    EXPECT_NE(o.err.find(c.message), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "results")) << "an output folder was created";
+    EXPECT_TRUE(outside().empty()) << "wrote outside its folder";
+  }
+}
+
+TEST_F(Cli, AWorldNameCannotEscapeTheResultsFolder) {
+  write("evil.json", world_json([](nlohmann::json& j) { j["name"] = "../../escaped,name|x"; }));
+  const Outcome o = run("run evil.json", 120);
+  EXPECT_LE(o.exit_code, 1) << o.err;
+  EXPECT_TRUE(outside().empty()) << "wrote outside its folder";
+  ASSERT_TRUE(fs::exists(dir_ / "results"));
+  int folders = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "results")) {
+    ++folders;
+    EXPECT_EQ(e.path().filename().string().find_first_of("/,|"), std::string::npos);
+    EXPECT_TRUE(fs::exists(e.path() / "summary.json"));
+  }
+  EXPECT_EQ(folders, 1);
+}
+
+TEST_F(Cli, VersionNamesTheCommit) {
+  const Outcome o = run("--version");
+  EXPECT_EQ(o.exit_code, 0);
+  EXPECT_EQ(o.out.rfind("plantsim ", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("(commit "), std::string::npos) << o.out;
+}
+
+TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
+  write("bad.json", "{\"tracking\": {\"lookahead_min_m\": \"far\"}}");
+  const std::string world = test::source_file("worlds/examples/small_plant.json");
+  Outcome o = run("run " + world + " --out out --config bad.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  // A folder whose parent cannot take it fails before the simulation (a file is in the way).
+  write("file", "x");
+  o = run("run " + world + " --out file/out");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("cannot create output folder"), std::string::npos) << o.err;
+  // Two runs into one folder: the second's files replace the first's, all of them.
+  ASSERT_EQ(run("run " + world + " --out out --seed 1", 120).exit_code, 0);
+  write("out/stale.txt", "from before");
+  ASSERT_EQ(run("run " + world + " --out out --seed 2", 120).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "stale.txt"));
+  const auto summary = nlohmann::json::parse(read(dir_ / "out" / "summary.json"));
+  EXPECT_NE(summary["command"].get<std::string>().find("--seed 2"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << "staging folder left behind";
+}
+
+TEST_F(Cli, RecordedCommandsRerunExactly) {
+  const std::string world = test::source_file("worlds/examples/small_plant.json");
+  ASSERT_EQ(run("run " + world + " --out 'first run' --undock --seed 3", 180).exit_code, 0);
+  const std::string recorded = nlohmann::json::parse(read(dir_ / "first run" / "summary.json"))["command"];
+  EXPECT_EQ(recorded.find("--undock true"), std::string::npos) << recorded;
+  EXPECT_EQ(recorded.rfind("plantsim run ", 0), 0u) << recorded;
+  // The same command, re-run through the shell, gives the same episode.
+  ASSERT_EQ(run(recorded.substr(std::string("plantsim ").size()), 180).exit_code, 0) << recorded;
+  const auto a = nlohmann::json::parse(read(dir_ / "first run" / "summary.json"));
+  EXPECT_EQ(a["command"], recorded);
+  EXPECT_EQ(a["undocked"], true);
+}
+
+TEST_F(Cli, BatchExitsOneWhenAConfigurationIsBelowItsGate) {
+  write("s.yaml", "name: gate\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg, gcr]\nseeds: 3\n"
+                  "gate:\n  min_success: 1.0\n  configurations:\n    - {planner: gcr, min_success: 0.0}\n");
+  Outcome o = run("batch s.yaml --out b --quiet --no-figures --junit b/junit.xml", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+  EXPECT_NE(o.out.find("gate passed"), std::string::npos) << o.out;
+  EXPECT_NE(read(dir_ / "b" / "junit.xml").find("tests=\"2\" failures=\"0\""), std::string::npos);
+  // Resumed with an impossible threshold for the baseline: nothing reruns, the gate fails, exit 1.
+  o = run("batch s.yaml --out b --quiet --no-figures --junit b/junit.xml --min-success 1.0", 300);
+  const auto records = read(dir_ / "b" / "episodes.jsonl");
+  const bool gcr_failed_once = records.find("\"planner\":\"gcr\"") != std::string::npos &&
+                               records.find("\"docked\":false") != std::string::npos;
+  if (gcr_failed_once) {
+    EXPECT_EQ(o.exit_code, 1) << o.out << o.err;
+    EXPECT_NE(o.err.find("FAIL world_N10 / gcr / default / none"), std::string::npos) << o.err;
+    EXPECT_NE(read(dir_ / "b" / "junit.xml").find("<failure"), std::string::npos);
+  }
+  // --min-success only replaces the default: the rule for gcr still holds it at 0 (3 of 3 has a
+  // Wilson lower bound of 0.44).
+  o = run("batch s.yaml --out b --quiet --no-figures --min-success 0.4 --gate-statistic wilson_low", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+}
+
+}  // namespace
+}  // namespace plantsim
