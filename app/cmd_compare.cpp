@@ -23,6 +23,8 @@ constexpr const char* kFieldEntry = "potential-field";
 std::function<int()> add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
   struct Options {
+    std::string scen;
+    int query = 0;
     std::string world;
     std::vector<std::string> planners = {"vg", "vg-traditional", "grid"};
     std::string out;
@@ -32,7 +34,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
     bool plan_only = false;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("world", opt->world, "World file")->required();
+  cmd->add_option("world", opt->world, "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")->required();
+  cmd->add_option("--scen", opt->scen, "For a MovingAI .map: the .scen file whose query gives the start and the charger");
+  cmd->add_option("--query", opt->query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
   std::vector<std::string> choices = planner::planner_names();
   choices.push_back(kFieldEntry);
   cmd->add_option("--planners", opt->planners,
@@ -45,7 +49,10 @@ std::function<int()> add_compare_command(CLI::App& app) {
   cmd->add_flag("--graph", opt->graph, "Draw each planner's graph");
   cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
   return [opt, cmd]() {
-    const worlds::World world = worlds::load_world(opt->world);
+    worlds::PoseOverrides poses;
+    poses.movingai_scen = opt->scen;
+    poses.movingai_query = opt->query;
+    const worlds::World world = worlds::load_world(opt->world, poses);
     const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out);
     const std::string& out_dir = staged.path();

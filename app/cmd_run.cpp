@@ -43,9 +43,13 @@ std::function<int()> add_run_command(CLI::App& app) {
     std::string travel;
     bool animate = false;
     bool undock = false;
+    std::string scen;
+    int query = 0;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)")->required();
+  cmd->add_option("world", opt->world, "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")->required();
+  cmd->add_option("--scen", opt->scen, "For a MovingAI .map: the .scen file whose query gives the start and the charger");
+  cmd->add_option("--query", opt->query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");
@@ -62,6 +66,8 @@ std::function<int()> add_run_command(CLI::App& app) {
     worlds::PoseOverrides overrides;
     if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
     if (!opt->charger.empty()) overrides.charger = parse_pose(opt->charger, "--charger");
+    overrides.movingai_scen = opt->scen;
+    overrides.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, overrides);
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));

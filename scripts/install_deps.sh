@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages plantsim builds with, only those that are missing.
+# Installs the Debian packages plantsim builds with, only those that are missing; with
+# `test`, also what the tests need (a single-node Slurm cluster, clang's libFuzzer).
 # Safe to run again: it does nothing when everything is present.
 set -euo pipefail
 
@@ -10,6 +11,9 @@ packages=(
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libfreetype-dev fonts-dejavu-core
 )
+if [ "${1:-}" = test ]; then
+  packages+=(slurm-wlm munge clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

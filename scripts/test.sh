@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-./scripts/install_deps.sh
+./scripts/install_deps.sh test
 ./scripts/build.sh build -DCMAKE_BUILD_TYPE=Release
 (cd build && ctest --output-on-failure --parallel "$(nproc)")
 ./scripts/build.sh build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPLANTSIM_SANITIZE=ON

@@ -199,6 +199,20 @@ TEST_F(Cli, AWorldNameCannotEscapeTheResultsFolder) {
   EXPECT_EQ(folders, 1);
 }
 
+// README lists MovingAI maps as worlds: a .scen query gives the start and the charger.
+TEST_F(Cli, RunsOnAMovingAiMapFromAScenQuery) {
+  Outcome o = run("run '$data/anyangle/arena.map' --scen '$data/anyangle/arena.scen' --query 5 --out arena", 120);
+  EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+  const auto summary = nlohmann::json::parse(read(dir_ / "arena" / "summary.json"));
+  EXPECT_TRUE(summary["docked"].get<bool>());
+  o = run("run '$data/anyangle/arena.map'");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("needs --scen FILE"), std::string::npos) << o.err;
+  o = run("run '$data/anyangle/arena.map' --scen '$data/anyangle/arena.scen' --query 99999");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("is not one of them"), std::string::npos) << o.err;
+}
+
 TEST_F(Cli, VersionNamesTheCommit) {
   const Outcome o = run("--version");
   EXPECT_EQ(o.exit_code, 0);

@@ -16,6 +16,7 @@
 #include "util/input_file.h"
 #include "worlds/charger_placement.h"
 #include "worlds/known_keys.h"
+#include "worlds/movingai_world.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_limits.h"
 
@@ -443,6 +444,9 @@ World load_world(const std::string& written, const PoseOverrides& overrides) {
   World w;
   if (ext == ".yaml" || ext == ".yml") {
     w = world_from_ros_map(load_ros_map(path), stem_of(path), overrides.start, overrides.charger);
+  } else if (ext == ".map") {
+    w = world_from_movingai(path, overrides.movingai_scen.empty() ? "" : util::resolve_input_path(overrides.movingai_scen, ""),
+                            overrides.movingai_query, overrides.start, overrides.charger);
   } else {
     w = parse_world_json(read_file(path), path);
     if (overrides.start) w.start = *overrides.start;

@@ -15,10 +15,13 @@ namespace plantsim::worlds {
 struct PoseOverrides {
   std::optional<Pose2> start;
   std::optional<Pose2> charger;
+  std::string movingai_scen;  ///< for a MovingAI .map: the .scen whose query gives start and goal
+  int movingai_query = 0;     ///< that query's number, from 0
 };
 
-/// Loads and validates a world file: plantsim JSON, a plain benchmark world, or a ROS
-/// map_server YAML (.yaml/.yml). Throws WorldError on any problem.
+/// Loads and validates a world file: plantsim JSON, a plain benchmark world, a ROS map_server
+/// YAML (.yaml/.yml) or a MovingAI map (.map, with a .scen query or both poses). "$data/..."
+/// is under the shared data folder. Throws WorldError on any problem.
 World load_world(const std::string& path, const PoseOverrides& overrides = {});
 
 /// Parses and validates world JSON text; `source` names it in messages.
