@@ -67,7 +67,12 @@ std::string overrides_json(const YAML::Node& node, const std::string& source, co
     if (!n.IsDefined() || n.IsNull()) return nlohmann::json::object();
     throw WorldError(source, field, "expected a mapping of parameters");
   };
-  const std::string text = convert(node).dump();
+  std::string text;
+  try {
+    text = convert(node).dump();
+  } catch (const nlohmann::json::type_error&) {
+    throw WorldError(source, field, "holds text that is not valid UTF-8");
+  }
   sim::parse_episode_config(text, source + " (" + field + ")");  // throws on a bad key or value
   return text;
 }
@@ -154,7 +159,18 @@ YAML::Node merged(const YAML::Node& a, const YAML::Node& b) {
 std::string scalar_text(const YAML::Node& doc, const char* key, const std::string& path, const std::string& fallback) {
   if (!doc[key]) return fallback;
   if (!doc[key].IsScalar()) throw WorldError(path, key, "expected a single value");
+  if (!worlds::valid_utf8(doc[key].Scalar())) throw WorldError(path, key, "is not valid UTF-8");
   return doc[key].Scalar();
+}
+
+// A name used in episode ids and records: printable UTF-8, at most 100 bytes.
+std::string checked_name(const YAML::Node& key, const std::string& path, const std::string& field) {
+  if (!key.IsScalar()) throw WorldError(path, field, "expected names as keys");
+  const std::string name = key.Scalar();
+  if (name.empty() || name.size() > 100 || !worlds::valid_utf8(name) ||
+      std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+    throw WorldError(path, field, "names must be 1 to 100 characters of printable UTF-8");
+  return name;
 }
 
 double fraction(const YAML::Node& n, const std::string& path, const std::string& field) {
@@ -269,8 +285,7 @@ BatchSpec read_batch_spec(const std::string& path) {
   if (doc["controllers"]) {
     if (!doc["controllers"].IsMap()) throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
     for (const auto& kv : doc["controllers"]) {
-      if (!kv.first.IsScalar()) throw WorldError(path, "controllers", "expected names as keys");
-      const std::string name = kv.first.Scalar();
+      const std::string name = checked_name(kv.first, path, "controllers");
       s.controllers.push_back({name, overrides_json(kv.second, path, "controllers." + name)});
     }
   } else {
@@ -279,10 +294,7 @@ BatchSpec read_batch_spec(const std::string& path) {
   std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
   if (doc["faults"]) {
     if (!doc["faults"].IsMap()) throw WorldError(path, "faults", "expected a mapping name: {overrides}");
-    for (const auto& kv : doc["faults"]) {
-      if (!kv.first.IsScalar()) throw WorldError(path, "faults", "expected names as keys");
-      bodies.emplace_back(kv.first.Scalar(), YAML::Clone(kv.second));
-    }
+    for (const auto& kv : doc["faults"]) bodies.emplace_back(checked_name(kv.first, path, "faults"), YAML::Clone(kv.second));
   }
   if (doc["sweep"]) {
     // One fault per value (per fault, when faults are given too): success-rate curves.
@@ -290,6 +302,7 @@ BatchSpec read_batch_spec(const std::string& path) {
     if (!sw.IsMap() || !sw["parameter"] || !sw["parameter"].IsScalar())
       throw WorldError(path, "sweep", "expected {parameter: <name>, values: [...]}");
     const std::string parameter = sw["parameter"].Scalar();
+    if (!worlds::valid_utf8(parameter) || parameter.size() > 100) throw WorldError(path, "sweep.parameter", "expected a parameter name");
     if (!sw["values"] || !sw["values"].IsSequence() || sw["values"].size() == 0)
       throw WorldError(path, "sweep.values", "expected a non-empty list of values");
     if (sw["values"].size() > 100) throw WorldError(path, "sweep.values", "more than 100 values");
@@ -297,7 +310,11 @@ BatchSpec read_batch_spec(const std::string& path) {
     if (bodies.empty()) bodies.emplace_back("", YAML::Node(YAML::NodeType::Map));
     std::vector<std::pair<std::string, YAML::Node>> swept;
     std::vector<std::string> values;
-    for (const auto& v : sw["values"]) values.push_back(value_text(v));
+    for (const auto& v : sw["values"]) {
+      values.push_back(value_text(v));
+      if (!worlds::valid_utf8(values.back()) || values.back().size() > 100)
+        throw WorldError(path, "sweep.values", "values must be at most 100 characters of UTF-8");
+    }
     for (const auto& [name, body] : bodies)
       for (std::size_t i = 0; i < values.size(); ++i) {
         YAML::Node one = merged(body, sweep_override(parameter, sw["values"][i]));

@@ -51,11 +51,13 @@ run cable_tunnel_ring_right worlds/scenarios/cable_tunnel_ring.json --planner ma
   --out results/coverage_depot_pit || status=1
 run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner coverage --config configs/coverage.json
 
+# Batches start afresh (--fresh: the results reflect this build) and are gates: each scenario's
+# `gate:` sets the success each configuration must reach, and a batch below it exits 1.
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
-./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet || status=1
+./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet --fresh --junit results/batch_plants/junit.xml || status=1
 # The five plants' mismatch variants with a wet floor and a person at the dock; a friction sweep.
-./build/plantsim batch scenarios/plant_mismatch.yaml --out results/batch_plant_mismatch --quiet || status=1
-./build/plantsim batch scenarios/wet_floor_sweep.yaml --out results/batch_wet_floor_sweep --quiet || status=1
+./build/plantsim batch scenarios/plant_mismatch.yaml --out results/batch_plant_mismatch --quiet --fresh || status=1
+./build/plantsim batch scenarios/wet_floor_sweep.yaml --out results/batch_wet_floor_sweep --quiet --fresh || status=1
 
 # The source document's comparison (its Fig. 5 and Fig. 6), then every planner driven.
 ./build/plantsim compare worlds/examples/small_plant.json --planners vg,vg-traditional --graph --plan-only \
@@ -68,9 +70,9 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 # scenario worlds (their failures are results, not errors).
 ./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,potential-field \
   --title "desulfurization_plant: visibility graph, seed 002, seed 001" --out results/baselines_desulfurization || status=1
-./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet || status=1
-./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet || status=1
-./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet || status=1
+./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet --fresh || status=1
+./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
+./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
   --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Every test: installs what is missing, builds the normal tree and an ASan + UBSan tree,
-# and runs the whole GoogleTest suite through ctest in both.
+# Every test: installs what is missing, builds the normal tree and an ASan + UBSan tree, runs
+# the whole GoogleTest suite (and the single-node Slurm cluster test) through ctest in both, then
+# fuzzes each input loader for 60 s.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -12,3 +13,5 @@ root=$PWD
 (cd build-sanitize && PLANTSIM_SUITE_SCALE=0.25 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS="suppressions=$root/tests/lsan.supp" \
    ctest --output-on-failure --parallel "$(nproc)")
+# libFuzzer on every loader of untrusted input, 60 s each under ASan + UBSan (scripts/fuzz.sh).
+./scripts/fuzz.sh 60

@@ -170,6 +170,9 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
       {"obstacle at 1e300",
        [](Cli& c) { c.write("w.json", c.world_json([](nlohmann::json& j) { j["obstacles"][0][2] = 1e300; })); return std::string("run w.json"); },
        "field 'obstacles[0][2]': beyond +-1e7 m"},
+      {"scenario name not UTF-8 (found by fuzzing)",
+       [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x\xac: {}\n"); return std::string("batch s.yaml"); },
+       "printable UTF-8"},
       {"unknown command", [](Cli&) { return std::string("bogus"); }, "unknown command 'bogus'"},
   };
   for (const HostileCase& c : cases) {

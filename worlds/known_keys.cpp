@@ -2,6 +2,7 @@
 #include "worlds/known_keys.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace plantsim::worlds {
 namespace {
@@ -37,6 +38,26 @@ std::string nearest_known_name(const std::string& key, const std::vector<std::st
 std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& known) {
   const std::string near = nearest_known_name(key, known);
   return near.empty() ? "unknown key" : "unknown key, did you mean '" + near + "'?";
+}
+
+bool valid_utf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    if (n == 0 || i + n > text.size()) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(text[i + k]) >> 6) != 0x2) return false;
+    i += n;
+  }
+  return true;
+}
+
+std::string name_from_file(const std::string& path) {
+  std::string name = std::filesystem::path(path).stem().string();
+  if (!valid_utf8(name))
+    for (char& c : name)
+      if (static_cast<unsigned char>(c) >= 0x80) c = '?';
+  return name.empty() ? "world" : name;
 }
 
 std::string file_name_component(const std::string& name) {

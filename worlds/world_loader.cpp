@@ -123,9 +123,7 @@ class FieldReader {
   std::string source_;
 };
 
-std::string stem_of(const std::string& path) {
-  return std::filesystem::path(path).stem().string();
-}
+std::string stem_of(const std::string& path) { return name_from_file(path); }
 
 // A box on a scripted path: a moving obstacle or the moving target.
 MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std::string& path) {

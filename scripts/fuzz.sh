@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses with clang under ASan + UBSan (tree build-fuzz) and runs each
+# for SECONDS (default 60) on a seed corpus made from the shipped files, after replaying the
+# regression fixtures of fuzz/regressions/<harness>/ (inputs that once crashed). Prints the
+# executions each harness reached; exits 1 on any crash, leak or timeout (the input is kept in
+# build-fuzz/artifacts/). Usage: scripts/fuzz.sh [SECONDS] [HARNESS...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+seconds=${1:-60}
+shift || true
+harnesses=("$@")
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario)
+data=$(cd ../shared/data && pwd)
+
+mkdir -p build-fuzz
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPLANTSIM_FUZZ=ON \
+  > build-fuzz/configure.log 2>&1 || { cat build-fuzz/configure.log; exit 1; }
+cmake --build build-fuzz --parallel "$(nproc)"
+
+corpus=build-fuzz/corpus
+rm -rf "$corpus"
+mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario} build-fuzz/artifacts
+small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
+for f in worlds/examples/*.json worlds/scenarios/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
+  small "$f" && cp "$f" "$corpus/world_json/$(basename "$f")"
+done
+for f in configs/*.json; do cp "$f" "$corpus/episode_config/"; done
+for f in scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
+printf 'worlds: [w.json]\nplanners: [vg]\nfaults: {a: {lidar: {range_noise_m: 0.01}}, b: {unmapped_obstacles: 2}}\nseeds: 2\ngate: {min_success: 0.5, configurations: [{planner: vg, min_success: 0.9}]}\nsweep: {parameter: drive.tyre_friction, values: [0.1, 0.5]}\n' \
+  > "$corpus/scenario/small.yaml"
+# A small ROS map (a 12 x 10 PGM, text and binary) and a cut of the depot.
+{ printf 'image: map.pgm\nresolution: 0.5\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n\n--8<--\n'
+  printf 'P2\n12 10\n255\n'; for y in $(seq 10); do for x in $(seq 12); do
+    if [ "$y" = 1 ] || [ "$y" = 10 ] || [ "$x" = 1 ] || [ "$x" = 12 ]; then printf '0 '; else printf '254 '; fi; done; echo; done
+} > "$corpus/ros_map/text.txt"
+{ printf 'image: map.pgm\nresolution: 0.25\norigin: [-1.0, 2.0, 0.0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n\n--8<--\n'
+  head -c 20000 "$data/ros_maps/depot.pgm"
+} > "$corpus/ros_map/depot_cut.txt"
+{ cat "$data/anyangle/arena.map"; printf '\n--8<--\n'; head -5 "$data/anyangle/arena.scen"; } > "$corpus/movingai/arena.txt"
+
+status=0
+for h in "${harnesses[@]}"; do
+  bin=build-fuzz/fuzz/fuzz_$h
+  if [ -d "fuzz/regressions/$h" ] && [ -n "$(ls -A "fuzz/regressions/$h")" ]; then
+    "$bin" -runs=0 "fuzz/regressions/$h"/* > "build-fuzz/$h.regressions.log" 2>&1 \
+      || { echo "fuzz: $h: a regression fixture fails again"; tail -30 "build-fuzz/$h.regressions.log"; status=1; }
+  fi
+  "$bin" "$corpus/$h" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -artifact_prefix="build-fuzz/artifacts/${h}-" -print_final_stats=1 > "build-fuzz/$h.log" 2>&1 || {
+    echo "fuzz: $h FOUND A PROBLEM (input in build-fuzz/artifacts/):"; grep -A25 "ERROR\|==ERROR\|runtime error\|deadly signal\|timeout" "build-fuzz/$h.log" | head -40; status=1; }
+  runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "build-fuzz/$h.log" | grep -o "[0-9]*$" || echo "?")
+  echo "fuzz: $h: $runs executions in $seconds s"
+done
+exit $status
