@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "util/input_file.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
 
@@ -38,11 +39,11 @@ std::function<int()> add_summarize_command(CLI::App& app) {
                      "retries", "time (s)", "planned (m)", "driven (m)"};
     const std::string html_base = opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
     for (const auto& d : opt->dirs) {
-      std::ifstream f(d + "/summary.json");
-      if (!f) throw std::invalid_argument(d + "/summary.json: no such file");
       nlohmann::json j;
       try {
-        j = nlohmann::json::parse(f);
+        j = nlohmann::json::parse(util::read_input_file(d + "/summary.json", 64u << 20));
+      } catch (const util::InputFileError& e) {
+        throw std::invalid_argument(d + "/summary.json: " + e.what());
       } catch (const nlohmann::json::exception& e) {
         throw std::invalid_argument(d + "/summary.json: malformed JSON: " + e.what());
       }

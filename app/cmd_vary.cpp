@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "util/data_dir.h"
+#include "util/input_file.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
 #include "util/atomic_file.h"
@@ -34,10 +36,7 @@ std::function<int()> add_vary_command(CLI::App& app) {
   cmd->add_option("--out", o->out, "Output file (default: stdout)");
   return [o]() {
     worlds::World w = worlds::load_world(o->world);
-    std::ifstream in(o->world);
-    std::stringstream text;
-    text << in.rdbuf();
-    nlohmann::ordered_json doc = nlohmann::ordered_json::parse(text.str());
+    nlohmann::ordered_json doc = nlohmann::ordered_json::parse(util::read_input_file(util::resolve_input_path(o->world, "")));
     if (doc.contains("rects")) throw worlds::WorldError(o->world, "", "vary takes plantsim worlds, not plain benchmark worlds");
     if (!o->offset.empty()) {
       double v[3];

@@ -216,6 +216,19 @@ TEST_F(Cli, RunsOnAMovingAiMapFromAScenQuery) {
   EXPECT_NE(o.err.find("is not one of them"), std::string::npos) << o.err;
 }
 
+// `plan` and `compare --plan-only` on a ROS map plan where `run` does: to the staging pose (the
+// auto-placed charger stands against a wall, inside the planning inflation).
+TEST_F(Cli, PlanOnARosMapPlansWhereRunDoes) {
+  Outcome o = run("plan '$data/ros_maps/depot.yaml'");
+  ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["goal_kind"], "staging");
+  EXPECT_GT(j["length"].get<double>(), 1.0);
+  o = run("compare '$data/ros_maps/depot.yaml' --plan-only --planners vg --out cmp", 120);
+  EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+}
+
 TEST_F(Cli, VersionNamesTheCommit) {
   const Outcome o = run("--version");
   EXPECT_EQ(o.exit_code, 0);
