@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/batch_runner.h"
+#include "batch_folder_test.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 
@@ -18,20 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class BatchFiles : public ::testing::Test {
+class BatchFiles : public test::BatchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("plantsim_batch_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { if (!getenv("PLANTSIM_KEEP")) fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p) << text;
-    return p;
-  }
   std::string small_scenario() {
     return write("s.yaml", "name: small\nworlds: [" + test::shared_data("worlds/world_N10.json") + ", " +
                                test::source_file("worlds/examples/small_plant.json") +
@@ -49,16 +38,6 @@ class BatchFiles : public ::testing::Test {
     std::ifstream in(path);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
-  RunOptions options(const std::string& out, int i = 0, int n = 1) {
-    RunOptions o;
-    o.out_dir = (dir_ / out).string();
-    o.shard_index = i;
-    o.shard_count = n;
-    o.progress = false;
-    o.figures = false;
-    return o;
-  }
-  fs::path dir_;
 };
 
 TEST_F(BatchFiles, FourShardsMergedEqualOneRun) {

@@ -12,6 +12,7 @@
 
 #include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
+#include "batch_folder_test.h"
 #include "test_paths.h"
 #include "util/folder_lock.h"
 #include "worlds/world_error.h"
@@ -74,29 +75,8 @@ TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
   EXPECT_EQ(xml.find("<failure", xml.find("<failure") + 1), std::string::npos) << xml;
 }
 
-class BatchFolders : public ::testing::Test {
+class BatchFolders : public test::BatchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("plantsim_gate_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p) << text;
-    return p;
-  }
-  RunOptions options(const std::string& out, int i = 0, int n = 1) {
-    RunOptions o;
-    o.out_dir = (dir_ / out).string();
-    o.shard_index = i;
-    o.shard_count = n;
-    o.progress = false;
-    o.figures = false;
-    return o;
-  }
   std::string two_worlds(const std::string& name, bool reversed, int seeds = 2) {
     std::string a = test::shared_data("worlds/world_N10.json"), b = test::source_file("worlds/examples/small_plant.json");
     if (reversed) std::swap(a, b);
@@ -110,7 +90,6 @@ class BatchFolders : public ::testing::Test {
     }
     return out;
   }
-  fs::path dir_;
 };
 
 TEST_F(BatchFolders, AnEpisodeIsTheSameWhateverTheWorldsOrder) {
