@@ -33,14 +33,14 @@ fs::path temp_dir(const std::string& name) {
   return d;
 }
 
-// The scenario with its world paths made absolute and, under PLANTSIM_SUITE_SCALE (the
+// The scenario with its shared-data paths made absolute and, under PLANTSIM_SUITE_SCALE (the
 // sanitizer tree), fewer seeds.
 std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   std::ifstream in(test::source_file(rel));
   std::stringstream text;
   text << in.rdbuf();
   std::string s = text.str();
-  const std::string from = "../shared/data/", to = test::shared_data("");
+  const std::string from = "$data/", to = test::shared_data("");
   for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
   if (const char* env = std::getenv("PLANTSIM_SUITE_SCALE"); env && std::atof(env) > 0 && std::atof(env) < 1) {
     const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
