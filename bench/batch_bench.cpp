@@ -8,6 +8,7 @@
 
 #include "batch/batch_runner.h"
 #include "bench/bench_report.h"
+#include "util/data_dir.h"
 
 namespace plantsim::bench {
 namespace {
@@ -34,7 +35,7 @@ int run_batch_bench(const std::string& shared_data, bool quick) {
   std::vector<std::pair<std::string, std::string>> worlds = {{"world_N200", shared_data + "/worlds/world_N200.json"}};
   for (const char* w : {"desulfurization_plant", "substation_yard", "coal_mine_roadways", "cable_tunnel_maze",
                         "rail_maintenance_pit"})
-    worlds.push_back({w, std::string("worlds/scenarios/") + w + ".json"});
+    worlds.push_back({w, util::checkout_dir() + "/worlds/scenarios/" + w + ".json"});
   for (const auto& [name, file] : worlds) {
     const std::string scenario = (dir / (name + ".yaml")).string();
     std::ofstream(scenario) << "worlds: [" << std::filesystem::absolute(file).string() << "]\nseeds: " << seeds << "\n";

@@ -43,6 +43,15 @@ std::string data_dir() {
   return "../shared/data";
 }
 
+std::string checkout_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  for (fs::path up = exe.parent_path(); !up.empty() && up != up.root_path(); up = up.parent_path())
+    if (fs::is_directory(up / "worlds" / "scenarios", ec)) return up.string();
+  return "";
+}
+
 std::string resolve_input_path(const std::string& written, const std::string& base) {
   if (written.rfind(kDataPrefix, 0) == 0) return (fs::path(data_dir()) / written.substr(6)).string();
   const fs::path p(written);

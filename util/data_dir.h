@@ -17,6 +17,10 @@ const std::string& chosen_data_dir();
 /// the build folder holding this executable, else ../shared/data.
 std::string data_dir();
 
+/// The checkout this executable was built in (the nearest ancestor of its folder holding
+/// worlds/scenarios), for its own example worlds; empty when there is none.
+std::string checkout_dir();
+
 /// A path as written in a file in folder `base`: "$data/..." is under data_dir(), an absolute
 /// path stays, anything else is relative to `base`.
 std::string resolve_input_path(const std::string& written, const std::string& base);
