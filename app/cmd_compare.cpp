@@ -54,7 +54,8 @@ std::function<int()> add_compare_command(CLI::App& app) {
     poses.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, poses);
     const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out);
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out,
+                              {"comparison.png", "report.html"});
     const std::string& out_dir = staged.path();
     std::vector<render::ComparisonPanel> panels;
     render::Report report;

@@ -49,7 +49,8 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
     sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_coverage" : opt->out);
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_coverage" : opt->out,
+                              {"coverage.png", "coverage.json", "report.html"});
     const std::string& out_dir = staged.path();
     planner::PlannerInput input = planner::planner_input(world, true);
     input.coverage_cell_m = opt->cell_m;

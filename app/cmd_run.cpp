@@ -74,7 +74,9 @@ std::function<int()> add_run_command(CLI::App& app) {
     // Every input is valid by now. The outputs are written into a staging folder beside the
     // destination (an unwritable place fails here, before the simulation) and moved into place
     // as a set: a rerun never mixes files of two runs.
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out);
+    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out,
+                              {"summary.json", "trajectory.csv", "run.png", "timeplots.png", "report.html", "frames",
+                               "animation.mp4"});
     const std::string& out_dir = staged.path();
     config.seed = opt->seed;
     if (!opt->travel.empty())

@@ -247,15 +247,26 @@ TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
   o = run("run " + world + " --out file/out");
   EXPECT_EQ(o.exit_code, 2) << o.err;
   EXPECT_NE(o.err.find("cannot create output folder"), std::string::npos) << o.err;
-  // Two runs into one folder: the second's files replace the first's, all of them.
+  // Two runs into one folder: the second's files replace the first's, all of them (an
+  // animation of the first is not left beside the second's figures).
   ASSERT_EQ(run("run " + world + " --out out --seed 1", 120).exit_code, 0);
-  write("out/stale.txt", "from before");
+  write("out/animation.mp4", "from before");
   ASSERT_EQ(run("run " + world + " --out out --seed 2", 120).exit_code, 0);
-  EXPECT_FALSE(fs::exists(dir_ / "out" / "stale.txt"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "animation.mp4"));
   const auto summary = nlohmann::json::parse(read(dir_ / "out" / "summary.json"));
   EXPECT_NE(summary["command"].get<std::string>().find("--seed 2"), std::string::npos);
   for (const auto& e : fs::directory_iterator(dir_))
     EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << "staging folder left behind";
+  // A folder holding anything but plantsim's outputs is never replaced: refused before the run.
+  write("mine/notes.txt", "a user's own file");
+  o = run("run " + world + " --out mine");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("holds 'notes.txt', not a plantsim output"), std::string::npos) << o.err;
+  EXPECT_EQ(read(dir_ / "mine" / "notes.txt"), "a user's own file");
+  o = run("run " + world + " --out .");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("name a folder of its own"), std::string::npos) << o.err;
+  EXPECT_TRUE(fs::exists(dir_ / "mine" / "notes.txt"));
 }
 
 TEST_F(Cli, RecordedCommandsRerunExactly) {

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -64,10 +65,25 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   sync_path(parent_or_dot(path));
 }
 
-StagedFolder::StagedFolder(std::string destination) : destination_(std::move(destination)) {
-  while (destination_.size() > 1 && destination_.back() == '/') destination_.pop_back();
-  staging_ = destination_ + ".partial-" + std::to_string(::getpid());
+StagedFolder::StagedFolder(std::string destination, const std::vector<std::string>& replaceable)
+    : destination_(std::move(destination)) {
   std::error_code ec;
+  // "out/", "out/." and "./out" name the same folder; "." or ".." would replace the current one.
+  destination_ = fs::path(destination_).lexically_normal().string();
+  while (destination_.size() > 1 && destination_.back() == '/') destination_.pop_back();
+  if (destination_ == "." || destination_ == ".." || destination_.empty() || fs::path(destination_).filename() == "..")
+    throw std::invalid_argument("output folder '" + destination_ + "': name a folder of its own (it is replaced as a whole)");
+  if (fs::exists(destination_, ec)) {
+    if (!fs::is_directory(destination_, ec))
+      throw std::invalid_argument("output folder '" + destination_ + "' is a file");
+    for (const auto& entry : fs::directory_iterator(destination_, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (std::find(replaceable.begin(), replaceable.end(), name) == replaceable.end())
+        throw std::invalid_argument("output folder '" + destination_ + "' holds '" + name +
+                                    "', not a plantsim output; it is replaced as a whole, so choose a new or empty folder");
+    }
+  }
+  staging_ = destination_ + ".partial-" + std::to_string(::getpid());
   fs::remove_all(staging_, ec);
   fs::create_directories(staging_, ec);
   if (ec || !fs::is_directory(staging_))

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace plantsim::util {
 
@@ -21,8 +22,12 @@ std::string system_error_text(const std::string& what);
 /// never leaves old and new files mixed, and a failed run leaves the old folder untouched.
 class StagedFolder {
  public:
-  /// Creates "<destination>.partial-<pid>" next to the destination (parents created).
-  explicit StagedFolder(std::string destination);
+  /// Creates "<destination>.partial-<pid>" next to the destination (parents created). An
+  /// existing destination is replaced on commit only if it is empty or holds nothing but
+  /// entries named in `replaceable` (an earlier run's outputs); a folder holding anything else
+  /// (a user's own files, `--out .`) is refused here, before any work, with
+  /// std::invalid_argument naming what is in the way.
+  StagedFolder(std::string destination, const std::vector<std::string>& replaceable);
   ~StagedFolder();  ///< removes the staging folder unless committed
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
