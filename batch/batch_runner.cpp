@@ -145,6 +145,28 @@ ScenarioIdentity scenario_identity(const BatchSpec& spec, const std::vector<std:
   return {f.hex(), episodes, std::filesystem::absolute(spec.source, ec).lexically_normal().string()};
 }
 
+// A scenario's worlds with their names and content fingerprints; two worlds of one name are
+// refused (episode ids name the world).
+struct ScenarioWorlds {
+  std::vector<worlds::World> worlds;
+  std::vector<std::string> names;
+  std::vector<std::uint64_t> contents;
+};
+
+ScenarioWorlds load_scenario_worlds(const BatchSpec& spec) {
+  ScenarioWorlds s;
+  for (std::size_t i = 0; i < spec.world_files.size(); ++i) {
+    s.worlds.push_back(worlds::load_world(spec.world_files[i]));
+    s.names.push_back(s.worlds.back().name);
+    s.contents.push_back(worlds::world_fingerprint(s.worlds.back()));
+    for (std::size_t k = 0; k < i; ++k)
+      if (s.names[k] == s.names[i])
+        throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
+                                 "a second world named '" + s.names[i] + "' (episode ids name the world; rename one)");
+  }
+  return s;
+}
+
 std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
                         const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m) {
   const std::string& world_name = plant.name;
@@ -399,18 +421,10 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const BatchSpec spec = load_batch_spec(scenario_path);
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     throw std::invalid_argument("--shard i/n needs 0 <= i < n");
-  std::vector<worlds::World> worlds;
-  std::vector<std::string> names;
-  std::vector<std::uint64_t> contents;
-  for (std::size_t i = 0; i < spec.world_files.size(); ++i) {
-    worlds.push_back(worlds::load_world(spec.world_files[i]));
-    names.push_back(worlds.back().name);
-    contents.push_back(worlds::world_fingerprint(worlds.back()));
-    for (std::size_t k = 0; k < i; ++k)
-      if (names[k] == names[i])
-        throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
-                                 "a second world named '" + names[i] + "' (episode ids name the world; rename one)");
-  }
+  const ScenarioWorlds loaded = load_scenario_worlds(spec);
+  const std::vector<worlds::World>& worlds = loaded.worlds;
+  const std::vector<std::string>& names = loaded.names;
+  const std::vector<std::uint64_t>& contents = loaded.contents;
   // A charger offset must leave the mapped charger dockable on every world it is applied to.
   for (const FaultSetting& f : spec.faults) {
     if (!f.charger_map_offset) continue;
@@ -603,14 +617,9 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   if (!scenario_file.empty() && std::filesystem::exists(scenario_file, ec)) {
     try {
       const BatchSpec spec = load_batch_spec(scenario_file);
-      std::vector<std::string> names;
-      std::vector<std::uint64_t> contents;
-      for (const std::string& f : spec.world_files) {
-        worlds.push_back(worlds::load_world(f));
-        names.push_back(worlds.back().name);
-        contents.push_back(worlds::world_fingerprint(worlds.back()));
-      }
-      if (scenario_identity(spec, contents, names, expected).fingerprint == fingerprint) {
+      ScenarioWorlds loaded = load_scenario_worlds(spec);
+      worlds = std::move(loaded.worlds);
+      if (scenario_identity(spec, loaded.contents, loaded.names, expected).fingerprint == fingerprint) {
         planners = spec.planners;
         outcome.gate = spec.gate;
       } else {
