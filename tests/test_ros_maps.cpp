@@ -51,21 +51,20 @@ TEST_F(TinyMaps, TrinaryNegateAndRawModes) {
 
 // map_server reads PNG images too: the same pixels as PNG give the same map as PGM.
 TEST_F(TinyMaps, PngImagesReadLikePgm) {
+  // One row of 4 pixels, written with libpng's simplified API.
+  auto write_row_png = [&](const char* name, png_uint_32 format, const unsigned char* pixels) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = 4;
+    image.height = 1;
+    image.format = format;
+    return png_image_write_to_file(&image, (dir_ / name).c_str(), 0, pixels, 0, nullptr) != 0;
+  };
   const unsigned char gray[4] = {0, 255, 128, 210};
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = 4;
-  image.height = 1;
-  image.format = PNG_FORMAT_GRAY;
-  ASSERT_TRUE(png_image_write_to_file(&image, (dir_ / "row.png").c_str(), 0, gray, 0, nullptr));
+  ASSERT_TRUE(write_row_png("row.png", PNG_FORMAT_GRAY, gray));
   // And as colour, where map_server averages the channels.
   const unsigned char rgb[12] = {0, 0, 0, 255, 255, 255, 128, 128, 128, 200, 220, 210};
-  png_image colour{};
-  colour.version = PNG_IMAGE_VERSION;
-  colour.width = 4;
-  colour.height = 1;
-  colour.format = PNG_FORMAT_RGB;
-  ASSERT_TRUE(png_image_write_to_file(&colour, (dir_ / "rgb.png").c_str(), 0, rgb, 0, nullptr));
+  ASSERT_TRUE(write_row_png("rgb.png", PNG_FORMAT_RGB, rgb));
   const std::string yaml = "resolution: 0.5\norigin: [1.0, 2.0, 0.0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n";
   const RosMap m = load_ros_map(write("png.yaml", "image: row.png\n" + yaml));
   EXPECT_EQ(std::string(m.grid.cells.begin(), m.grid.cells.end()), "@.@.");
