@@ -7,9 +7,11 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/episode_outputs.h"
 #include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
 #include "util/atomic_file.h"
+#include "worlds/known_keys.h"
 
 namespace plantsim::app {
 namespace {
@@ -39,9 +41,16 @@ struct GateOptions {
   }
 
   // Judges the records; prints failures; returns the exit code.
-  int judge(const std::vector<std::string>& records, batch::Gate gate, const std::string& suite, const char* who) const {
-    if (min_success) gate.min_success = *min_success;
-    if (!statistic.empty()) gate.statistic = batch::parse_gate_statistic(statistic, "--gate-statistic");
+  batch::GateOverride as_override() const {
+    batch::GateOverride o;
+    o.min_success = min_success;
+    if (!statistic.empty()) o.statistic = batch::parse_gate_statistic(statistic, "--gate-statistic");
+    return o;
+  }
+
+  int judge(const std::vector<std::string>& records, const batch::Gate& scenario_gate, const std::string& suite,
+            const char* who) const {
+    const batch::Gate gate = as_override().applied_to(scenario_gate);
     const auto verdicts = batch::judge_configurations(records, gate);
     if (!junit.empty()) util::write_file_atomically(junit, batch::junit_xml(suite, verdicts, gate.statistic));
     int gated = 0, failed = 0;
@@ -59,7 +68,7 @@ struct GateOptions {
 std::function<int()> add_batch_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("batch", "Run a scenario's episodes on all cores; resumable, splittable into shards, a gate for CI");
   struct Options {
-    std::string scenario, out, shard = "0/1";
+    std::string scenario, out, shard = "0/1", episode;
     int threads = 0;
     bool quiet = false, no_figures = false, fresh = false, check = false;
     GateOptions gate;
@@ -73,8 +82,20 @@ std::function<int()> add_batch_command(CLI::App& app) {
   cmd->add_flag("--no-figures", opt->no_figures, "Skip the report's figures");
   cmd->add_flag("--fresh", opt->fresh, "Discard the folder's earlier episodes instead of resuming");
   cmd->add_flag("--check", opt->check, "Validate the scenario and count its episodes; run and write nothing");
+  cmd->add_option("--episode", opt->episode,
+                  "Run only this episode (its id in episodes.jsonl) and write its run folder (figures, replay)");
   opt->gate.add_to(cmd);
-  return [opt]() {
+  return [opt, cmd]() {
+    if (!opt->episode.empty()) {
+      // One episode, exactly as the batch runs it, with the outputs of `plantsim run`.
+      const batch::ReplayedEpisode e = batch::replay_batch_episode(opt->scenario, opt->episode);
+      util::StagedFolder staged(
+          opt->out.empty() ? "results/episode_" + worlds::file_name_component(opt->episode) : opt->out, run_folder_names());
+      write_run_folder(e.plant, e.result, e.config, staged.path(), command_line(cmd), "episode " + e.id, false);
+      staged.commit();
+      std::cout << e.id << ": " << e.result.status << " -> " << staged.destination() << "\n";
+      return e.result.succeeded() ? kExitOk : kExitFailed;
+    }
     batch::RunOptions o;
     std::tie(o.shard_index, o.shard_count) = parse_shard(opt->shard);
     o.out_dir = opt->out.empty() ? "results/batch_" + std::filesystem::path(opt->scenario).stem().string() : opt->out;
@@ -83,6 +104,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
     o.figures = !opt->no_figures;
     o.fresh = opt->fresh;
     o.check_only = opt->check;
+    o.gate = opt->gate.as_override();
     const batch::BatchOutcome r = batch::run_batch(opt->scenario, o);
     if (opt->check) {
       std::cout << "batch: " << opt->scenario << " is valid: " << r.episodes << " episodes in this shard, scenario "
@@ -113,6 +135,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
   return [opt]() {
     batch::MergeOptions m;
     m.allow_partial = opt->allow_partial;
+    m.gate = opt->gate.as_override();
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
     std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out << "\n";
     return opt->gate.judge(batch::read_episode_records(opt->out), r.gate, "merge", "merge");

@@ -15,17 +15,21 @@ std::function<int()> add_bench_command(CLI::App& app) {
   struct Options {
     std::string target;
     bool quick = false;
+    std::string chart;
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("target", opt->target, "What to measure")->required()->check(CLI::IsMember({"planner", "sim", "render", "batch"}));
   cmd->add_flag("--quick", opt->quick, "Fewer repetitions and no slow baselines");
+  cmd->add_option("--chart", opt->chart, "planner: also time the grid and draw the log-log time chart into this PNG");
   return [opt]() {
     // The shared data from --data (given before or after the subcommand), or found beside the checkout.
     const std::string data = std::filesystem::absolute(util::data_dir()).lexically_normal().string();
+    if (!opt->chart.empty() && opt->target != "planner")
+      throw std::invalid_argument("--chart is for `bench planner` only");
     if (opt->target == "sim") return bench::run_sim_bench(data, opt->quick);
     if (opt->target == "render") return bench::run_render_bench(data, opt->quick);
     if (opt->target == "batch") return bench::run_batch_bench(data, opt->quick);
-    return bench::run_planner_bench(data, opt->quick);
+    return bench::run_planner_bench(data, opt->quick, opt->chart);
   };
 }
 

@@ -70,6 +70,9 @@ std::function<int()> add_coverage_command(CLI::App& app) {
       const planner::PlanResult r = p.plan(world.start.position(), worlds::staging_pose(world).position());
       if (r.status != planner::PlanStatus::kOk) throw std::invalid_argument(world.source + ": " + r.note);
       render::CoveragePanel panel{name, &p.grid(), p.last_plan(), {}, ""};
+      // Held-Karp is exact up to 20 sub-regions; beyond, the order shown is the greedy one.
+      if (std::string(name) == "coverage-exact" && !panel.plan.exact_cost && !panel.plan.regions.empty())
+        panel.label = "coverage-exact (greedy order: " + std::to_string(panel.plan.regions.size()) + " > 20 regions)";
       const planner::CoverageMetrics& m = panel.plan.metrics;
       all_covered = all_covered && m.covered_cells == m.reachable_cells;
       nlohmann::ordered_json j;

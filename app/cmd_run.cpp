@@ -6,10 +6,8 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
-#include "planner/planner.h"
 #include "render/animation.h"
-#include "render/report.h"
-#include "render/run_figure.h"
+#include "planner/planner.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
@@ -75,8 +73,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     // destination (an unwritable place fails here, before the simulation) and moved into place
     // as a set: a rerun never mixes files of two runs.
     util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out,
-                              {"summary.json", "trajectory.csv", "run.png", "timeplots.png", "report.html", "frames",
-                               "animation.mp4"});
+                              run_folder_names());
     const std::string& out_dir = staged.path();
     config.seed = opt->seed;
     if (!opt->travel.empty())
@@ -86,20 +83,10 @@ std::function<int()> add_run_command(CLI::App& app) {
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
     const std::string line = command_line(cmd);
-    util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, line));
-    util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
-    render::write_run_figure(world, r, out_dir + "/run.png");
-    render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
-    std::vector<render::ReportFigure> figures = {{"run.png", "The run: plan, driven path coloured by speed, footprints"},
-                                                 {"timeplots.png", "Cross-track error, speed, distance to the charger, localisation error"}};
-    if (opt->animate) {
-      const std::string movie = render::write_animation(world, r, out_dir);
-      figures.push_back({"frames/frame_0000.png", "First animation frame (all frames in frames/)"});
-      if (!movie.empty()) figures.push_back({movie, "Animation"});
-    }
-    render::write_report({"plantsim run: " + world.name, line, metric_headers(), {metric_row(r, world.name)}, figures,
-                          {"summary.json", "trajectory.csv"}, ""},
-                         out_dir + "/report.html");
+    std::string setting;
+    if (!opt->config.empty()) setting = "config " + std::filesystem::path(opt->config).filename().string();
+    if (opt->seed != 1) setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt->seed);
+    write_run_folder(world, r, config, out_dir, line, setting, opt->animate);
     staged.commit();
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions

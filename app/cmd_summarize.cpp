@@ -1,18 +1,78 @@
 // `plantsim summarize DIR...`: gathers the summary.json of several runs into one Markdown
-// table, for a reader who wants every result on one page.
+// table, and with --html into a dashboard (render/dashboard.h) that also lists the comparisons,
+// batches and coverage reports given with --link.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "app/commands.h"
 #include "util/input_file.h"
-#include "render/report.h"
+#include "render/dashboard.h"
 #include "util/atomic_file.h"
 
 namespace plantsim::app {
+namespace {
+
+/// What a run's command changed from the defaults: "config noisy_sensing.json, seed 3".
+std::string setting_of(const std::string& command) {
+  std::string out;
+  for (const char* option : {"--config", "--seed", "--travel", "--start", "--charger", "--undock"}) {
+    const std::size_t at = command.find(std::string(option));
+    if (at == std::string::npos) continue;
+    std::size_t begin = at + std::strlen(option);
+    while (begin < command.size() && (command[begin] == ' ' || command[begin] == '=' || command[begin] == '\''))
+      ++begin;
+    std::size_t end = command.find_first_of(" '", begin);
+    std::string value = command.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if (std::string(option) == "--undock") value.clear();
+    if (std::string(option) == "--config") value = std::filesystem::path(value).filename().string();
+    out += (out.empty() ? "" : ", ") + std::string(option + 2) + (value.empty() ? "" : " " + value);
+  }
+  return out.empty() ? "defaults" : out;
+}
+
+/// A linked report, its kind told by what its folder holds, with the figure that shows it best.
+render::DashboardLink link_to(const std::string& report, const std::string& base) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(report).parent_path();
+  render::DashboardLink l;
+  l.report = fs::relative(report, base).string();
+  l.title = dir.filename().string();
+  auto rel = [&](const std::string& f) { return fs::relative(dir / f, base).string(); };
+  if (!fs::exists(report)) {  // named, so that a missing report shows instead of vanishing
+    l.kind = "report";
+    l.line = "missing: the command that writes it failed or has not run";
+  } else if (fs::path(report).extension() == ".png") {  // a chart on its own
+    l.kind = "chart";
+    l.title = fs::path(report).stem().string();
+    l.thumbnail = l.report;
+    l.line = dir.filename().string() + "/" + fs::path(report).filename().string();
+  } else if (fs::exists(dir / "summary.csv")) {
+    l.kind = "batch";
+    if (fs::exists(dir / "chart_success.png")) l.thumbnail = rel("chart_success.png");
+    std::ifstream csv(dir / "summary.csv");
+    std::string line;
+    long long rows = -1;
+    while (std::getline(csv, line)) ++rows;
+    l.line = std::to_string(std::max(rows, 0LL)) + " configurations (summary.csv)";
+  } else if (fs::exists(dir / "coverage.png")) {
+    l.kind = "coverage";
+    l.thumbnail = rel("coverage.png");
+  } else if (fs::exists(dir / "comparison.png")) {
+    l.kind = "comparison";
+    l.thumbnail = rel("comparison.png");
+  } else {
+    l.kind = "report";
+  }
+  return l;
+}
+
+}  // namespace
 
 std::function<int()> add_summarize_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
@@ -25,18 +85,17 @@ std::function<int()> add_summarize_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   cmd->add_option("dirs", opt->dirs, "Run output folders")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Write here instead of stdout");
-  cmd->add_option("--html", opt->html, "Also write an HTML index with the metrics and every run's figure");
-  cmd->add_option("--link", opt->links, "Further reports to link from the index");
+  cmd->add_option("--html", opt->html, "Also write an HTML dashboard: every run's thumbnail, status and figures, and the linked reports");
+  cmd->add_option("--link", opt->links, "Further reports (or PNG charts) to link from the dashboard");
   return [opt]() {
     std::string md =
         "# plantsim results\n\n| world | planner | travel | status | position error (cm) | heading error (deg) | "
         "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     bool all_docked = true;
-    render::Report index;
-    index.title = "plantsim results";
-    index.headers = {"world", "planner", "travel", "status", "position error (cm)", "heading error (deg)", "collisions",
-                     "retries", "time (s)", "planned (m)", "driven (m)"};
+    std::vector<render::DashboardRun> runs;
+    const std::vector<std::string> headers = {"planner", "position error (cm)", "heading error (deg)", "collisions",
+                                              "retries", "stops", "replans", "time (s)", "planned (m)", "driven (m)"};
     const std::string html_base = opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
     for (const auto& d : opt->dirs) {
       nlohmann::json j;
@@ -63,20 +122,29 @@ std::function<int()> add_summarize_command(CLI::App& app) {
         std::snprintf(b, sizeof b, "%.*f", d, v);
         return std::string(b);
       };
-      index.rows.push_back({j.value("world", "?"), j.value("planner", "?"), j.value("travel", "path"), j.value("status", "?"),
-                            fmt(100.0 * j.value("position_error_m", 0.0), 2), fmt(j.value("heading_error_deg", 0.0), 2),
-                            std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
-                            fmt(j.value("time_s", 0.0), 1), fmt(j.value("path_length_m", 0.0), 2),
-                            fmt(j.value("driven_length_m", 0.0), 2)});
-      const std::string rel = std::filesystem::relative(d, html_base.empty() ? "." : html_base).string();
-      index.figures.push_back({rel + "/run.png", j.value("world", "?") + ": " + j.value("status", "?")});
-      index.files.push_back(rel + "/report.html");
-      all_docked = all_docked && (j.value("docked", false) || j.value("caught", false));
+      const bool measured = j.value("error_measured", true);
+      render::DashboardRun run;
+      run.folder = std::filesystem::relative(d, html_base.empty() ? "." : html_base).string();
+      run.world = j.value("world", "?");
+      run.setting = setting_of(j.value("command", ""));
+      run.status = j.value("status", "?");
+      run.succeeded = j.value("docked", false) || j.value("caught", false);
+      run.cells = {j.value("planner", "?") + (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
+                   measured ? fmt(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
+                   measured ? fmt(j.value("heading_error_deg", 0.0), 2) : "n/a",
+                   std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
+                   std::to_string(j.value("stops", 0)), std::to_string(j.value("replans", 0)),
+                   fmt(j.value("time_s", 0.0), 1), fmt(j.value("path_length_m", 0.0), 2),
+                   fmt(j.value("driven_length_m", 0.0), 2)};
+      for (const char* f : {"run.png", "timeplots.png"})
+        if (std::filesystem::exists(d + "/" + f)) run.figures.push_back(f);
+      runs.push_back(run);
+      all_docked = all_docked && run.succeeded;
     }
     if (!opt->html.empty()) {
-      for (const auto& l : opt->links)
-        index.files.push_back(std::filesystem::relative(l, html_base.empty() ? "." : html_base).string());
-      render::write_report(index, opt->html);
+      std::vector<render::DashboardLink> links;
+      for (const auto& l : opt->links) links.push_back(link_to(l, html_base.empty() ? "." : html_base));
+      util::write_file_atomically(opt->html, render::dashboard_html("plantsim results", headers, runs, links));
     }
     if (opt->out.empty()) {
       std::cout << md;

@@ -1,7 +1,15 @@
 // Serialising an episode's metrics and trajectory.
 #include "app/episode_outputs.h"
 
+#include "render/animation.h"
+#include "render/png_io.h"
+#include "render/replay_html.h"
+#include "render/report.h"
+#include "render/run_figure.h"
 #include "sim/episode_json.h"
+
+#include <cmath>
+#include "util/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -52,6 +60,35 @@ std::string trajectory_csv(const sim::EpisodeResult& r) {
     out += line;
   }
   return out;
+}
+
+void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r, const sim::EpisodeConfig& config,
+                      const std::string& out_dir, const std::string& line, const std::string& setting, bool animate) {
+  util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, line));
+  util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
+  render::RunFigureOptions figure;
+  figure.setting = setting;
+  figure.dock_tolerance_m = config.tolerance.position_m;
+  figure.dock_tolerance_deg = config.tolerance.heading_rad * 180.0 / M_PI;
+  render::write_run_figure(world, r, out_dir + "/run.png", figure);
+  render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
+  std::vector<render::ReportFigure> figures = {
+      {"run.png", "The run: first and final plans over the driven path (coloured by speed), events, footprints, "
+                  "docking close-up"},
+      {"timeplots.png", "Cross-track error, speed, distance to the charger, localisation error, shaded by phase"}};
+  std::vector<std::string> files = {"summary.json", "trajectory.csv"};
+  if (animate) {
+    const std::string movie = render::write_animation(world, r, out_dir);
+    files.push_back("frames/frame_0000.png");
+    if (!movie.empty()) files.push_back(movie);
+  }
+  render::write_report({"plantsim run: " + world.name + (setting.empty() ? "" : " (" + setting + ")"), line,
+                        metric_headers(), {metric_row(r, world.name)}, figures, files, "", render::replay_html(world, r)},
+                       out_dir + "/report.html");
+}
+
+std::vector<std::string> run_folder_names() {
+  return {"summary.json", "trajectory.csv", "run.png", "timeplots.png", "report.html", "frames", "animation.mp4"};
 }
 
 }  // namespace plantsim::app

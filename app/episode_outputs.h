@@ -1,5 +1,6 @@
-// Files a run leaves in its output folder: summary.json (the metrics scripts read) and
-// trajectory.csv (one row per simulation step). Written atomically.
+// Files a run leaves in its output folder: summary.json (the metrics scripts read),
+// trajectory.csv (one row per control step), the run figure, the time plots and report.html
+// with the replay. Written atomically.
 #pragma once
 
 #include <string>
@@ -16,5 +17,14 @@ std::string trajectory_csv(const sim::EpisodeResult& r);
 /// The metrics table of reports: headers, and one row per episode.
 std::vector<std::string> metric_headers();
 std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name);
+
+/// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run
+/// figure's title; `animate` adds frames/ (and animation.mp4 when ffmpeg is installed).
+void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r, const sim::EpisodeConfig& config,
+                      const std::string& out_dir, const std::string& command_line, const std::string& setting,
+                      bool animate);
+
+/// The names write_run_folder may write, for util::StagedFolder.
+std::vector<std::string> run_folder_names();
 
 }  // namespace plantsim::app

@@ -21,6 +21,7 @@
 #include <set>
 #include <thread>
 
+#include "batch/batch_report.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
 #include "render/comparison_figure.h"
@@ -29,6 +30,7 @@
 #include "sim/episode_config_json.h"
 #include "sim/episode_json.h"
 #include "util/atomic_file.h"
+#include "util/csv.h"
 #include "util/fingerprint.h"
 #include "util/folder_lock.h"
 #include "util/input_file.h"
@@ -41,14 +43,6 @@ namespace plantsim::batch {
 namespace {
 
 using nlohmann::json;
-
-// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 // A record the batch can use: a JSON object with a string id and the scenario fingerprint.
 bool usable_record(const std::string& line) {
@@ -189,6 +183,18 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioI
   j["start"] = {start.x, start.y, start.yaw};
   sim::add_episode_metrics(j, r);
   j["optimal_length_m"] = optimal_m;
+  // The driven path, thinned to a point every 0.25 m (and the last), in millimetres, for the
+  // report's overlay of every episode.
+  auto path = json::array();
+  geom::Vec2 last{NAN, NAN};
+  for (std::size_t i = 0; i < r.trajectory.size(); ++i) {
+    const geom::Vec2 p = r.trajectory[i].truth.position();
+    if (i + 1 < r.trajectory.size() && i > 0 && geom::distance(p, last) < 0.25) continue;
+    path.push_back(std::lround(p.x * 1000));
+    path.push_back(std::lround(p.y * 1000));
+    last = p;
+  }
+  j["path_mm"] = path;
   if (!plant.unmapped.empty()) {  // the plant as this episode met it, to replay it
     auto boxes = json::array();
     for (const geom::Rect& u : plant.unmapped) boxes.push_back({u.xmin, u.ymin, u.xmax, u.ymax});
@@ -229,59 +235,107 @@ class Progress {
   std::int64_t printed_decile_ = -1;
 };
 
-void write_outputs(const std::vector<std::string>& lines, const std::string& out_dir, const std::string& title,
-                   const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
-                   const std::vector<std::string>& planners) {
-  const std::string csv = summary_csv(lines);
-  util::write_file_atomically(out_dir + "/summary.csv", csv);
-  const std::string sweep = sweep_csv(lines);
-  if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
-  render::Report report;
-  report.title = title;
-  report.command = command;
-  bool header = true;
-  for (std::size_t start = 0; start < csv.size();) {
-    const std::size_t end = csv.find('\n', start);
-    std::vector<std::string> cells;
-    std::string cell;
-    for (char c : csv.substr(start, end - start)) {
-      if (c == ',') cells.push_back(cell), cell.clear();
-      else cell += c;
+/// Everything one episode needs, made the same way for the batch and for replaying one of its
+/// episodes: the plant with the episode's start and faults, the settings, the exact optimum.
+class EpisodeRunner {
+ public:
+  EpisodeRunner(const BatchSpec& spec, const std::vector<worlds::World>& worlds, const std::vector<std::uint64_t>& contents,
+                const std::vector<sim::EpisodeConfig>& configs)
+      : spec_(spec), worlds_(worlds), contents_(contents), configs_(configs) {}
+
+  struct Run {
+    worlds::World plant;
+    sim::EpisodeConfig config;
+    sim::EpisodeResult result;
+    double optimal_m = 0;
+  };
+
+  Run run(const Episode& e) {
+    Run out{worlds_[e.world], {}, {}, 0};
+    worlds::World& w = out.plant;
+    const FaultSetting& fault = spec_.faults[e.fault];
+    if (fault.charger_map_offset) w.charger_map_offset = *fault.charger_map_offset;
+    planner::Planner& exact = planner_for(w, e.world, "vg", e.fault);
+    if (spec_.random_starts) {
+      const auto s = random_start(w, exact, e.seed, contents_[e.world]);
+      if (!s) throw std::runtime_error(w.name + ": no free start with a path to the charger");
+      w.start = *s;
     }
-    cells.push_back(cell);
-    if (header) report.headers = cells;
-    else report.rows.push_back(cells);
-    header = false;
-    start = end == std::string::npos ? csv.size() : end + 1;
-  }
-  report.files = {"episodes.jsonl", "summary.csv"};
-  if (!sweep.empty()) report.files.push_back("sweep.csv");
-  if (worlds_for_figures) {
-    for (const worlds::World& w : *worlds_for_figures) {
-      std::vector<render::ComparisonPanel> panels;
-      for (const std::string& name : planners) {
-        auto p = planner::make_planner(name, planner::planner_input(w, true));
-        const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
-        render::ComparisonPanel panel{name, {}, {}, false};
-        panel.run.planner = name;
-        panel.run.status = std::string(planner::to_string(r.status));
-        panel.run.plan = r.path;
-        panel.run.path_length_m = r.length;
-        panel.run.plan_stats = r.stats;
-        panels.push_back(panel);
-      }
-      const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
-      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world's start"), out_dir + "/" + file,
-                        render::PngSettings::fast());
-      report.figures.push_back({file, w.name + ": each planner's plan from the world's start to the staging pose"});
+    const planner::PlanResult optimal = exact.plan(w.start.position(), worlds::staging_pose(w).position());
+    out.config = configs_[e.controller * spec_.faults.size() + e.fault];
+    out.config.seed = e.seed;
+    if (optimal.status == planner::PlanStatus::kOk) {
+      if (fault.unmapped_obstacles > 0)
+        w.unmapped = unmapped_across_path(w, optimal.path, fault.unmapped_obstacles,
+                                          util::Fingerprint().add(contents_[e.world]).add(e.seed).add(std::uint64_t{7919}).value());
+      if (fault.crossing_obstacle) w.moving.push_back(crossing_person(w, optimal.path));
+      if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
     }
+    out.optimal_m = optimal.length;
+    out.result = sim::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault), out.config);
+    return out;
   }
-  report.notes = "Success rate with its 95 % Wilson interval; path over optimum compares the planned length with "
-                 "the exact visibility-graph optimum from the same start; errors are over docked episodes.";
-  render::write_report(report, out_dir + "/report.html");
+
+ private:
+  // Planners are kept for the runner's life (their caches are not shared between threads). A
+  // fault moving the mapped charger has its own (the charger's body is on the map).
+  planner::Planner& planner_for(const worlds::World& w, std::size_t world, const std::string& name, std::size_t fault) {
+    const std::size_t key = spec_.faults[fault].charger_map_offset ? fault : spec_.faults.size();
+    auto& p = planners_[{world, name, key}];
+    if (!p) p = planner::make_planner(name, planner::planner_input(w, true));
+    return *p;
+  }
+
+  const BatchSpec& spec_;
+  const std::vector<worlds::World>& worlds_;
+  const std::vector<std::uint64_t>& contents_;
+  const std::vector<sim::EpisodeConfig>& configs_;
+  std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>> planners_;
+};
+
+std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec) {
+  std::vector<sim::EpisodeConfig> configs;  // controller x fault
+  for (const auto& c : spec.controllers)
+    for (const auto& f : spec.faults)
+      configs.push_back(sim::parse_episode_config(f.json, spec.source, sim::parse_episode_config(c.json, spec.source)));
+  return configs;
+}
+
+/// Replays up to `limit` failed episodes of the records for the report's failure gallery.
+std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines, const BatchSpec& spec,
+                                           const ScenarioWorlds& loaded, const std::vector<sim::EpisodeConfig>& configs,
+                                           std::size_t limit) {
+  std::set<std::string> failed;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    if (!j["docked"].get<bool>() && failed.size() < limit) failed.insert(j["id"].get<std::string>());
+  }
+  std::vector<FailedEpisode> out;
+  if (failed.empty()) return out;
+  EpisodeRunner runner(spec, loaded.worlds, loaded.contents, configs);
+  for (const Episode& e : all_episodes(spec, loaded.names))
+    if (failed.count(e.id)) {
+      EpisodeRunner::Run r = runner.run(e);
+      out.push_back({e.id, std::move(r.plant), std::move(r.result), r.config});
+    }
+  return out;
 }
 
 }  // namespace
+
+ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std::string& id) {
+  const BatchSpec spec = load_batch_spec(scenario_path);
+  const ScenarioWorlds loaded = load_scenario_worlds(spec);
+  const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
+  const std::vector<Episode> all = all_episodes(spec, loaded.names);
+  const auto it = std::find_if(all.begin(), all.end(), [&](const Episode& e) { return e.id == id; });
+  if (it == all.end())
+    throw std::invalid_argument(scenario_path + ": no episode '" + id + "' (ids are world|planner|controller|fault|seed, "
+                                "as episodes.jsonl records them)");
+  EpisodeRunner runner(spec, loaded.worlds, loaded.contents, configs);
+  EpisodeRunner::Run r = runner.run(*it);
+  return {id, std::move(r.plant), std::move(r.result), r.config};
+}
 
 std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double z) {
   if (n <= 0) return {0.0, 1.0};
@@ -347,8 +401,8 @@ std::string summary_csv(const std::vector<std::string>& lines) {
                   static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
                   1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok), a.stops / a.n,
                   a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
-    out += csv_field(std::get<0>(key)) + "," + csv_field(std::get<1>(key)) + "," + csv_field(std::get<2>(key)) + "," +
-           csv_field(std::get<3>(key)) + row;
+    out += util::csv_field(std::get<0>(key)) + "," + util::csv_field(std::get<1>(key)) + "," + util::csv_field(std::get<2>(key)) + "," +
+           util::csv_field(std::get<3>(key)) + row;
   }
   return out;
 }
@@ -409,7 +463,7 @@ std::string sweep_csv(const std::vector<std::string>& lines) {
                   static_cast<long long>(a.robot_collisions), static_cast<long long>(a.failed_with_collision),
                   static_cast<double>(a.stops) / a.n, static_cast<double>(a.replans) / a.n, a.time / a.n,
                   a.docked ? 1000 * a.pos / a.docked : 0.0);
-    out += csv_field(parameter) + "," + csv_field(value) + row;
+    out += util::csv_field(parameter) + "," + util::csv_field(value) + row;
   }
   return out;
 }
@@ -437,11 +491,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
       }
     }
   }
-  std::vector<sim::EpisodeConfig> configs;  // controller x fault
-  for (const auto& c : spec.controllers)
-    for (const auto& f : spec.faults)
-      configs.push_back(sim::parse_episode_config(f.json, spec.source,
-                                                  sim::parse_episode_config(c.json, spec.source)));
+  const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
   const std::vector<Episode> all = all_episodes(spec, names);
   const ScenarioIdentity scenario = scenario_identity(spec, contents, names, static_cast<std::int64_t>(all.size()));
   if (o.check_only) {
@@ -497,40 +547,13 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   std::exception_ptr failure;
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   auto worker = [&]() {
-    // Planners are built per thread (their caches are not shared) and kept for the batch.
-    // A fault moving the mapped charger has its own (the charger's body is on the map).
-    std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>> planners;
-    auto planner_for = [&](const worlds::World& w, std::size_t world, const std::string& name,
-                           std::size_t fault) -> planner::Planner& {
-      const std::size_t key = spec.faults[fault].charger_map_offset ? fault : spec.faults.size();
-      auto& p = planners[{world, name, key}];
-      if (!p) p = planner::make_planner(name, planner::planner_input(w, true));
-      return *p;
-    };
+    EpisodeRunner runner(spec, worlds, contents, configs);
     try {
       for (std::size_t k = next++; k < todo.size(); k = next++) {
         const Episode& e = todo[k];
-        worlds::World w = worlds[e.world];
-        const FaultSetting& fault = spec.faults[e.fault];
-        if (fault.charger_map_offset) w.charger_map_offset = *fault.charger_map_offset;
-        planner::Planner& exact = planner_for(w, e.world, "vg", e.fault);
-        if (spec.random_starts) {
-          const auto s = random_start(w, exact, e.seed, contents[e.world]);
-          if (!s) throw std::runtime_error(w.name + ": no free start with a path to the charger");
-          w.start = *s;
-        }
-        const planner::PlanResult optimal = exact.plan(w.start.position(), worlds::staging_pose(w).position());
-        sim::EpisodeConfig config = configs[e.controller * spec.faults.size() + e.fault];
-        config.seed = e.seed;
-        if (optimal.status == planner::PlanStatus::kOk) {
-          if (fault.unmapped_obstacles > 0)
-            w.unmapped = unmapped_across_path(w, optimal.path, fault.unmapped_obstacles,
-                                              util::Fingerprint().add(contents[e.world]).add(e.seed).add(std::uint64_t{7919}).value());
-          if (fault.crossing_obstacle) w.moving.push_back(crossing_person(w, optimal.path));
-          if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
-        }
-        const sim::EpisodeResult r = sim::run_episode(w, planner_for(w, e.world, spec.planners[e.planner], e.fault), config);
-        const std::string line = record_line(e, spec, scenario, w, r, optimal.length) + "\n";
+        const EpisodeRunner::Run run = runner.run(e);
+        const sim::EpisodeResult& r = run.result;
+        const std::string line = record_line(e, spec, scenario, run.plant, r, run.optimal_m) + "\n";
         {
           std::lock_guard lock(write_mutex);
           // A killed batch loses at most the episode being written; a full disk stops the batch
@@ -558,10 +581,13 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   if (failure) std::rethrow_exception(failure);
   if (!synced) throw std::runtime_error(sync_error);
 
-  write_outputs(read_jsonl(jsonl).records, o.out_dir, "plantsim batch: " + spec.name,
-                "plantsim batch " + scenario_path + " --out " + o.out_dir +
-                    (o.shard_count > 1 ? " --shard " + std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count) : ""),
-                o.figures ? &worlds : nullptr, spec.planners);
+  const std::vector<std::string> records = read_jsonl(jsonl).records;
+  const std::vector<FailedEpisode> failures =
+      o.figures ? failure_gallery(records, spec, loaded, configs, kGalleryEpisodes) : std::vector<FailedEpisode>{};
+  write_batch_report(records, o.out_dir, "plantsim batch: " + spec.name,
+                     "plantsim batch " + scenario_path + " --out " + o.out_dir +
+                         (o.shard_count > 1 ? " --shard " + std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count) : ""),
+                     o.figures ? &worlds : nullptr, spec.planners, o.gate.applied_to(spec.gate), failures, scenario_path);
   return outcome;
 }
 
@@ -638,8 +664,9 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   util::write_file_atomically(out_dir + "/episodes.jsonl", text);
   std::string command = "plantsim merge";
   for (const auto& d : dirs) command += " " + d;
-  write_outputs(lines, out_dir, "plantsim merge", command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
-                worlds.empty() ? nullptr : &worlds, planners);
+  write_batch_report(lines, out_dir, "plantsim merge",
+                     command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
+                     worlds.empty() ? nullptr : &worlds, planners, options.gate.applied_to(outcome.gate));
   return outcome;
 }
 

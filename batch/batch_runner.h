@@ -22,6 +22,7 @@ struct RunOptions {
   int threads = 0;        ///< 0: one per core
   bool progress = true;   ///< progress bar with rate and ETA on stderr
   bool figures = true;    ///< comparison figures in the report
+  GateOverride gate;      ///< the command line's changes to the scenario's gate (drawn in the charts)
 };
 
 struct BatchOutcome {
@@ -33,6 +34,7 @@ struct BatchOutcome {
 
 struct MergeOptions {
   bool allow_partial = false;  ///< merge even when episodes of the scenario are missing
+  GateOverride gate;
 };
 
 struct MergeOutcome {
@@ -64,6 +66,22 @@ std::string summary_csv(const std::vector<std::string>& jsonl_lines);
 /// One row per value of a swept fault parameter, over every world, planner and controller
 /// (CSV text); empty when the records come from no sweep.
 std::string sweep_csv(const std::vector<std::string>& jsonl_lines);
+
+/// One episode of a scenario run again on its own, exactly as the batch ran it (its start,
+/// faults and seed come from the scenario and the episode's id).
+struct ReplayedEpisode {
+  std::string id;
+  worlds::World plant;
+  sim::EpisodeResult result;
+  sim::EpisodeConfig config;
+};
+using FailedEpisode = ReplayedEpisode;
+
+/// Failed episodes a batch report draws (replayed, each with its run figure).
+inline constexpr std::size_t kGalleryEpisodes = 6;
+
+/// Throws std::invalid_argument naming the scenario when it has no episode `id`.
+ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std::string& id);
 
 /// Wilson score interval for k successes in n trials (95 %: z = 1.96).
 std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double z = 1.96);

@@ -47,6 +47,17 @@ struct Gate {
   std::vector<GateRule> rules;
 };
 
+/// What the command line changes in a scenario's gate (--min-success, --gate-statistic).
+struct GateOverride {
+  std::optional<double> min_success;
+  std::optional<GateStatistic> statistic;
+  Gate applied_to(Gate gate) const {
+    if (min_success) gate.min_success = min_success;
+    if (statistic) gate.statistic = *statistic;
+    return gate;
+  }
+};
+
 /// Episodes a scenario may make (worlds x planners x controllers x faults x seeds).
 inline constexpr std::int64_t kMaxEpisodes = 10000000;
 

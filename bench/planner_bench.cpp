@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "render/png_io.h"
+#include "render/scaling_chart.h"
 #include "planner/planner.h"
 #include "planner/vg_overlay.h"
 #include "worlds/random_plant.h"
@@ -50,7 +52,7 @@ FirstQuery build_and_query(const std::string& name, const worlds::World& w, int 
 
 }  // namespace
 
-int run_planner_bench(const std::string& shared_data, bool quick) {
+int run_planner_bench(const std::string& shared_data, bool quick, const std::string& chart_png) {
   struct Named {
     std::string name;
     worlds::World world;
@@ -73,10 +75,23 @@ int run_planner_bench(const std::string& shared_data, bool quick) {
 
   const int reps = quick ? 3 : 7;
   std::optional<Measure> previous_first;
+  render::ScalingSeries vg_series{"vg (visibility graph, A*)", {}, {}},
+      trad_series{"vg-traditional (all pairs tested)", {}, {}}, grid_series{"grid (0.1 m cells, A*)", {}, {}};
   for (const Named& nw : worlds) {
     const FirstQuery fast = build_and_query("vg", nw.world, reps);
     std::optional<FirstQuery> trad;
     if (nw.traditional) trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
+    const double obstacles = static_cast<double>(nw.world.obstacles.size());
+    vg_series.size.push_back(obstacles);
+    vg_series.cost.push_back(fast.total_ms);
+    if (trad) trad_series.size.push_back(obstacles), trad_series.cost.push_back(trad->total_ms);
+    if (!chart_png.empty()) {
+      const FirstQuery grid = build_and_query("grid", nw.world, quick ? 1 : 3);
+      report("planner", {nw.name + "/grid/build_plus_first_query", grid.total_ms, "ms"},
+             Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
+      grid_series.size.push_back(obstacles);
+      grid_series.cost.push_back(grid.total_ms);
+    }
     auto base = [&](const std::string& metric, double v) -> std::optional<Measure> {
       if (!trad) return std::nullopt;
       return Measure{nw.name + "/vg-traditional/" + metric, v, "ms"};
@@ -163,6 +178,15 @@ int run_planner_bench(const std::string& shared_data, bool quick) {
       report("planner", {nw.name + "/vg/replan_5_boxes_on_map_graph", median(overlay_ms), "ms"},
              Measure{nw.name + "/vg/replan_5_boxes_rebuilt", median(rebuild_ms), "ms"});
     }
+  }
+  if (!chart_png.empty()) {
+    const render::Image img = render::draw_scaling_chart(
+        {vg_series, trad_series, grid_series}, "Planning time against the number of obstacles",
+        "build plus first query, median of " + std::to_string(reps) + " runs (grid and vg-traditional fewer), on world_N10..N1000 "
+        "and a random N5000; vg-traditional " + std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
+        "obstacles (rectangles)", "time (ms)");
+    render::write_png(img, chart_png);
+    std::cerr << "bench: chart -> " << chart_png << "\n";
   }
   return 0;
 }

@@ -13,6 +13,11 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   TrackingCommand out;
   const PurePursuitParams& p = params_;
   PathPoint near = closest_point(path_, pose.position(), segment_, p.progress_window_m);
+  // The distance from the path counts the leg before the current one too: after a corner's
+  // release moved progress on, a robot turning in place just short of the corner is on the
+  // path, not off the next leg.
+  const double off_path =
+      segment_ > 0 ? closest_point(path_, pose.position(), segment_ - 1, p.progress_window_m).distance : near.distance;
   // Within the release distance of a sharp vertex the corner counts as reached: progress moves
   // on to the next leg. Otherwise, where the path doubles back on itself (a dead end, a lane
   // swept twice), the closest point would stay on the leg behind and the robot would turn to
@@ -22,7 +27,7 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
       geom::distance(pose.position(), path_[vertex]) <= p.corner_release_m)
     near = closest_point(path_, pose.position(), vertex, p.progress_window_m);
   segment_ = near.segment;
-  out.cross_track_error_m = near.distance;
+  out.cross_track_error_m = std::min(off_path, near.distance);
   const double remaining = remaining_length(path_, to_end_, near);
   const double to_end = geom::distance(pose.position(), path_.back());
   // Done when at the end, or when the end lies behind the robot within the tolerance band

@@ -24,15 +24,24 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     const bool last = i + 1 == run.trajectory.size();
     if (run.trajectory[i].t_s < next && !last) continue;
     next = run.trajectory[i].t_s + o.frame_every_s;
-    Figure fig(o.width_px, o.height_px, 1);
-    const PixelTransform t = fig.world_panel(world.floor, {50, 40, o.width_px - 20.0, o.height_px - 40.0});
+    Figure fig(o.width_px, o.height_px, 2);  // supersampled: anti-aliased lines
+    const PixelTransform t = fig.world_panel(world.floor, {50, 40, o.width_px - 170.0, o.height_px - 40.0});
     GlCanvas& c = fig.canvas();
+    std::vector<LegendEntry> legend;
     draw_floor(c, world);
-    draw_obstacles(c, world);
-    draw_unmapped(c, world);
-    draw_moving(c, world, run.trajectory[i].t_s);
-    draw_plan(c, run.plan);
-    draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1);
+    if (draw_obstacles(c, world)) legend.push_back({palette::kObstacle, "obstacle"});
+    if (draw_unmapped(c, world)) legend.push_back({palette::kUnmapped, "not on map"});
+    // Moving obstacles where the physics had them at this instant.
+    std::vector<geom::Rect> boxes;
+    for (const auto& track : run.moving_tracks) {
+      std::size_t k = 0;
+      while (k + 1 < track.t_s.size() && track.t_s[k + 1] <= run.trajectory[i].t_s) ++k;
+      if (!track.boxes.empty()) boxes.push_back(track.boxes[k]);
+    }
+    if (draw_moving(c, world, run.trajectory[i].t_s, boxes)) legend.push_back({palette::kMoving, "moving"});
+    if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1))
+      legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
+    if (draw_plan(c, run.plan, palette::kPlan)) legend.push_back({palette::kPlan, "plan"});
     // What perception saw last before this instant.
     const sim::EpisodeResult::PerceptionSnapshot* seen = nullptr;
     for (const auto& snap : run.perception_log)
@@ -45,7 +54,11 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     draw_start(c, world);
     draw_charger(c, world);
     draw_mapped_charger(c, world);
-    draw_footprint(c, world.robot, run.trajectory[i].truth, palette::kRobot);
+    draw_footprint(c, world.robot, run.trajectory[i].truth, palette::kRobot, 2.0);
+    legend.push_back({palette::kRobot, "robot"});
+    legend.push_back({palette::kStart, "start"});
+    legend.push_back({palette::kCharger, "charger"});
+    fig.legend(o.width_px - 150.0, 60, legend);
     fig.world_axes(world.floor, t);
     char title[160];
     std::snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(), run.trajectory[i].t_s,

@@ -1,6 +1,7 @@
-// An animation of a run: PNG frames (the map with the path so far and the robot), written
-// with the fast PNG setting into DIR/frames/, and an MP4 made from them when ffmpeg is on
-// the PATH (it is optional: plantsim never installs it).
+// An animation of a run: anti-aliased PNG frames (the map with the path so far, the robot,
+// the moving obstacles where they were, a legend and the clock in the title), written with the
+// fast PNG setting into DIR/frames/, and an MP4 made from them when ffmpeg is on the PATH (it
+// is optional: plantsim never installs it; every report has the HTML replay instead).
 #pragma once
 
 #include <string>

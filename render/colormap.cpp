@@ -1,4 +1,5 @@
-// Viridis control points (from matplotlib's published table) and tick arithmetic.
+// Cividis control points (Nuñez et al. 2018, as matplotlib publishes it, at six points) and tick
+// arithmetic.
 #include "render/colormap.h"
 
 #include <algorithm>
@@ -8,11 +9,11 @@
 
 namespace plantsim::render {
 
-Rgb viridis(double t) {
-  static const double kPoints[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},  {44, 113, 142}, {33, 144, 141},
-                                       {39, 173, 129}, {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
-  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 8.0;
-  const int i = std::min(static_cast<int>(t), 7);
+Rgb cividis(double t) {
+  static const double kPoints[6][3] = {{0, 34, 78},     {53, 69, 108},   {102, 105, 112},
+                                       {148, 142, 119}, {200, 184, 102}, {254, 232, 56}};
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 5.0;
+  const int i = std::min(static_cast<int>(t), 4);
   const double f = t - i;
   auto mix = [&](int c) { return static_cast<std::uint8_t>(std::lround(kPoints[i][c] + f * (kPoints[i + 1][c] - kPoints[i][c]))); };
   return {mix(0), mix(1), mix(2)};

@@ -1,5 +1,6 @@
-// A perceptually ordered colour map (viridis, sampled at nine points and interpolated) for
-// values such as speed, and "nice" tick steps for axes and colour bars.
+// A perceptually ordered, colour-blind-safe colour map (cividis: dark blue to yellow, sampled at
+// six points and interpolated) for values such as speed, and "nice" tick steps for axes and
+// colour bars.
 #pragma once
 
 #include <string>
@@ -10,7 +11,7 @@
 namespace plantsim::render {
 
 /// Colour of t in [0, 1] (clamped).
-Rgb viridis(double t);
+Rgb cividis(double t);
 
 /// Tick positions covering [lo, hi] at a 1, 2 or 5 x 10^k step giving about `target` ticks.
 std::vector<double> nice_ticks(double lo, double hi, int target = 6);

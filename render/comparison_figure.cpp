@@ -1,4 +1,5 @@
-// Grid of panels, at most three a row.
+// Grid of panels (one row up to three, two by two for four, then rows of three) under a legend
+// of what the panels draw and the speed scale.
 #include "render/comparison_figure.h"
 
 #include <algorithm>
@@ -11,29 +12,45 @@
 
 namespace plantsim::render {
 
+using planner::PlanStats;
+
 Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
-                      int width_px, int panel_height_px) {
-  const PanelGrid grid = panel_grid(panels.size(), 3, width_px, panel_height_px);
+                      int width_px, int panel_height_px, FigureLayout* layout_out) {
+  const int columns = panels.size() == 4 ? 2 : 3;
+  PanelGrid grid = panel_grid(panels.size(), columns, width_px, panel_height_px);
+  grid.top_px = 110;
   Figure fig(width_px, grid.height_px());
-  fig.text(title, 20, 32, 20, palette::kAxis, Anchor::kLeft, true);
+  fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
   const double cell_w = grid.panel_width_px;
+  std::vector<LegendEntry> legend;
+  auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
+    const bool known = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.label == label; });
+    if (drawn && !known) legend.push_back({colour, label});
+  };
+  bool drove_any = false;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const ComparisonPanel& p = panels[i];
     const double x0 = grid.corner(i).x, y0 = grid.corner(i).y;
-    const PixelBox box{x0 + 60, y0 + 62, x0 + cell_w - 20, y0 + panel_height_px - 45};
+    const PixelBox box{x0 + 60, y0 + 80, x0 + cell_w - 20, y0 + panel_height_px - 45};
     const PixelTransform t = fig.world_panel(world.floor, box);
     GlCanvas& c = fig.canvas();
     draw_floor(c, world);
-    draw_obstacles(c, world);
-    if (!p.graph_edges.empty()) draw_graph(c, p.graph_edges);
+    const bool obstacles = draw_obstacles(c, world);
+    listed(obstacles, palette::kObstacle, "obstacle");
+    listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "planning margin");
+    listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
     if (!p.run.explored.empty()) c.polyline(p.run.explored, 5.0, palette::kExplored);
-    draw_plan(c, p.run.plan);
+    listed(!p.run.explored.empty(), palette::kExplored, "explored");
     if (p.drove) {
-      draw_target(c, world, p.run.trajectory);
-      draw_wall_following(c, p.run.trajectory);
-      draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);
-      if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot);
+      listed(draw_target(c, world, p.run.trajectory), palette::kTarget, "target");
+      listed(draw_wall_following(c, p.run.trajectory), palette::kWallFollow, "wall following");
+      const bool drove = draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);
+      listed(drove, speed_swatch(p.run.trajectory, world.robot.max_speed_mps), "driven (speed)");
+      drove_any = drove_any || drove;
+      if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot, 2.0);
+      listed(!p.run.trajectory.empty(), palette::kRobot, "robot at the end");
     }
+    listed(draw_plan(c, p.run.plan, palette::kPlan), palette::kPlan, p.run.travel == "path" ? "plan" : "plan (reference)");
     draw_start(c, world);
     draw_charger(c, world);
     fig.world_axes(world.floor, t);
@@ -44,14 +61,29 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     else  // no plan of its own: the drawn plan is the reference
       std::snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)", p.label.c_str(),
                     p.run.driven_length_m, p.run.path_length_m);
-    std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, graph %lld vertices, %lld edges", p.run.plan_stats.build_ms,
-                  p.run.plan_stats.query_ms, static_cast<long long>(p.run.plan_stats.vertices),
-                  static_cast<long long>(p.run.plan_stats.edges));
-    fig.text(line1, x0 + 60, y0 + 20, 15, palette::kAxis, Anchor::kLeft, true);
-    fig.text(line2, x0 + 60, y0 + 38, 12, palette::kAxis);
-    fig.text(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12, palette::kAxis);
+    const PlanStats& st = p.run.plan_stats;
+    std::string structure;  // what the planner searched, in its own terms
+    if (p.run.planner.rfind("grid", 0) == 0)
+      structure = std::to_string(st.vertices) + " free cells, " + std::to_string(st.expanded) + " expanded";
+    else if (st.vertices > 0 && !p.graph_edges.empty())
+      structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(p.graph_edges.size()) +
+                  " edges drawn, " + std::to_string(st.edges) + " evaluated by the search";
+    else if (st.vertices > 0)
+      structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(st.edges) + " edges evaluated";
+    else
+      structure = "no graph (works on the obstacles directly)";
+    std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms, structure.c_str());
+    fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
+    fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
+    fig.text_fitted(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
   }
-  return fig.finish();
+  listed(true, palette::kStart, "start");
+  listed(true, palette::kCharger, "charger");
+  fig.legend(20, 62, legend, static_cast<int>(legend.size()), 150);
+  if (drove_any) fig.colour_bar({width_px - 260.0, 78, width_px - 30.0, 88}, 0.0, world.robot.max_speed_mps, "speed (m/s)");
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
 }
 
 }  // namespace plantsim::render

@@ -20,6 +20,6 @@ struct ComparisonPanel {
 };
 
 Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
-                      int width_px = 1800, int panel_height_px = 620);
+                      int width_px = 1800, int panel_height_px = 640, FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

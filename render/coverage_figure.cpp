@@ -1,4 +1,5 @@
-// Two panels a row.
+// Two panels a row under a legend of what they draw (visit counts in colour-blind-safe tints,
+// the coverage path in black so that it shows on any tint).
 #include "render/coverage_figure.h"
 
 #include <algorithm>
@@ -10,18 +11,28 @@
 namespace plantsim::render {
 namespace {
 
-constexpr Rgb kCoveredOnce{150, 215, 140};
-constexpr Rgb kCoveredTwice{250, 190, 90};
-constexpr Rgb kCoveredMore{230, 90, 60};
-constexpr Rgb kRegionOutline{40, 70, 160};
+constexpr Rgb kCoveredOnce{190, 225, 245};   // tints of Okabe-Ito sky blue, orange, reddish purple
+constexpr Rgb kCoveredTwice{245, 205, 120};
+constexpr Rgb kCoveredMore{215, 140, 185};
+constexpr Rgb kBlocked{180, 180, 185};
+constexpr Rgb kRegionOutline = palette::kOkabeBlue;
+constexpr Rgb kCoveragePath{0, 0, 0};
 
 }  // namespace
 
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    int width_px, int panel_height_px) {
-  const PanelGrid grid = panel_grid(panels.size(), 2, width_px, panel_height_px);
+                    int width_px, int panel_height_px, FigureLayout* layout_out) {
+  PanelGrid grid = panel_grid(panels.size(), 2, width_px, panel_height_px);
+  // Room under the title for a legend of up to 12 entries in at most two rows.
+  const int legend_columns = std::max(1, std::min(6, (width_px - 40) / 170));
+  grid.top_px = 64 + 2 * 19 + 16;
   Figure fig(width_px, grid.height_px());
-  fig.text(title, 20, 32, 20, palette::kAxis, Anchor::kLeft, true);
+  std::vector<LegendEntry> legend;
+  auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
+    const bool known = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.label == label; });
+    if (drawn && !known) legend.push_back({colour, label});
+  };
+  fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
   const double cell_w = grid.panel_width_px;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const CoveragePanel& p = panels[i];
@@ -37,21 +48,30 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
       for (int col = 0; col < g.columns(); ++col) {
         const planner::Cell cell{col, r};
         const int v = visits[g.index(cell)];
-        if (!g.free(cell)) c.fill_rect(g.cell_rect(cell), palette::kFootprint, 0.6f);
+        if (!g.free(cell)) c.fill_rect(g.cell_rect(cell), kBlocked);
         else if (v == 1) c.fill_rect(g.cell_rect(cell), kCoveredOnce);
         else if (v == 2) c.fill_rect(g.cell_rect(cell), kCoveredTwice);
         else if (v > 2) c.fill_rect(g.cell_rect(cell), kCoveredMore);
+        listed(!g.free(cell), kBlocked, "blocked cell");
+        listed(g.free(cell) && v == 1, kCoveredOnce, "covered once");
+        listed(g.free(cell) && v == 2, kCoveredTwice, "covered twice");
+        listed(g.free(cell) && v > 2, kCoveredMore, "covered 3+ times");
       }
-    draw_obstacles(c, world);
+    const bool obstacles = draw_obstacles(c, world);
+    listed(obstacles, palette::kObstacle, "obstacle");
+    listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "margin");
     for (const planner::CellRect& r : p.plan.regions) {
       const geom::Rect a = g.cell_rect({r.column, r.row}), b = g.cell_rect({r.column + r.width - 1, r.row + r.height - 1});
       c.polyline({{a.xmin, a.ymin}, {b.xmax, a.ymin}, {b.xmax, b.ymax}, {a.xmin, b.ymax}, {a.xmin, a.ymin}}, 2.0,
                  kRegionOutline);
     }
+    listed(!p.plan.regions.empty(), kRegionOutline, "sub-region, order");
     std::vector<Vec2> path;
     for (const planner::Cell& cell : p.plan.cells) path.push_back(g.centre(cell));
-    c.polyline(path, 1.5, palette::kPlan);
-    if (!p.driven.empty()) c.polyline(p.driven, 1.2, palette::kTrajectory);
+    c.polyline(path, 1.5, kCoveragePath);
+    listed(path.size() > 1, kCoveragePath, "coverage path");
+    if (!p.driven.empty()) c.polyline(p.driven, 1.5, palette::kPlan);
+    listed(p.driven.size() > 1, palette::kPlan, "driven");
     draw_start(c, world);
     draw_charger(c, world);
     fig.world_axes(world.floor, t);
@@ -74,11 +94,16 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     else
       std::snprintf(line2, sizeof line2, "%d sub-regions, order cost %.2f (greedy %.2f; too many for the exact order)",
                     static_cast<int>(p.plan.regions.size()), p.plan.order_cost, p.plan.greedy_cost);
-    fig.text(line1, x0 + 60, y0 + 20, 15, palette::kAxis, Anchor::kLeft, true);
-    fig.text(line2, x0 + 60, y0 + 38, 12, palette::kAxis);
-    if (!p.extra.empty()) fig.text(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis);
+    fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
+    fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
+    if (!p.extra.empty()) fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
   }
-  return fig.finish();
+  listed(true, palette::kStart, "start");
+  listed(true, palette::kCharger, "charger");
+  fig.legend(20, 64, legend, legend_columns, 170);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
 }
 
 }  // namespace plantsim::render

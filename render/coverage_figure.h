@@ -21,6 +21,6 @@ struct CoveragePanel {
 };
 
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    int width_px = 1600, int panel_height_px = 560);
+                    int width_px = 1600, int panel_height_px = 560, FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

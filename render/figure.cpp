@@ -30,8 +30,44 @@ Figure::Figure(int width, int height, int supersample) : canvas_(width, height, 
   canvas_.clear(palette::kBackground);
 }
 
+bool overlaps(const TextBox& a, const TextBox& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
 void Figure::text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor, bool bold) {
   texts_.push_back({s, x, baseline_y, size_px, colour, anchor, bold});
+}
+
+void Figure::text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
+                         bool bold) {
+  TextRenderer& tr = shared_text_renderer();
+  auto width = [&](const std::string& t) {
+    const TextBox b = tr.measure(t, 0, 0, size_px, Anchor::kLeft, bold);
+    return b.x1 - b.x0;
+  };
+  std::string fitted = s;
+  if (width(fitted) > max_width_px) {
+    while (!fitted.empty() && width(fitted + "...") > max_width_px) {
+      fitted.pop_back();
+      while (!fitted.empty() && (static_cast<unsigned char>(fitted.back()) & 0xC0) == 0x80) fitted.pop_back();  // whole characters
+      if (!fitted.empty() && static_cast<unsigned char>(fitted.back()) >= 0xC0) fitted.pop_back();
+    }
+    fitted += "...";
+  }
+  text(fitted, x, baseline_y, size_px, colour, Anchor::kLeft, bold);
+}
+
+bool Figure::text_if_free(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor) {
+  TextRenderer& tr = shared_text_renderer();
+  const TextBox box = tr.measure(s, static_cast<int>(std::lround(x)), static_cast<int>(std::lround(baseline_y)), size_px, anchor);
+  if (box.x0 < 0 || box.y0 < 0 || box.x1 > width() || box.y1 > height()) return false;
+  for (const QueuedText& q : texts_) {
+    const TextBox other = tr.measure(q.s, static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)), q.size,
+                                     q.anchor, q.bold);
+    if (overlaps(box, other)) return false;
+  }
+  text(s, x, baseline_y, size_px, colour, anchor);
+  return true;
 }
 
 PixelTransform Figure::world_panel(const geom::Rect& view, const PixelBox& box) {
@@ -66,30 +102,39 @@ void Figure::world_axes(const geom::Rect& view, const PixelTransform& t) {
 void Figure::colour_bar(const PixelBox& box, double lo, double hi, const std::string& label) {
   const int steps = 64;
   for (int i = 0; i < steps; ++i) {
-    const double y0 = box.bottom - box.height() * i / steps, y1 = box.bottom - box.height() * (i + 1) / steps;
-    canvas_.pixel_line({0.5 * (box.left + box.right), y0}, {0.5 * (box.left + box.right), y1}, box.width(),
-                       viridis((i + 0.5) / steps));
+    const double x0 = box.left + box.width() * i / steps, x1 = box.left + box.width() * (i + 1) / steps;
+    canvas_.pixel_line({x0, 0.5 * (box.top + box.bottom)}, {x1, 0.5 * (box.top + box.bottom)}, box.height(),
+                       cividis((i + 0.5) / steps));
   }
-  const auto ticks = nice_ticks(lo, hi, 5);
+  const auto ticks = nice_ticks(lo, hi, 4);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
   for (double v : ticks) {
-    const double y = box.bottom - box.height() * (v - lo) / (hi - lo);
-    canvas_.pixel_line({box.right, y}, {box.right + 4, y}, 1.0, palette::kAxis);
-    text(tick_label(v, step), box.right + 7, y + 4, 12, palette::kAxis);
+    const double x = box.left + box.width() * (v - lo) / (hi - lo);
+    canvas_.pixel_line({x, box.bottom}, {x, box.bottom + 4}, 1.0, palette::kAxis);
+    text(tick_label(v, step), x, box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
   }
-  text(label, 0.5 * (box.left + box.right), box.top - 10, 13, palette::kAxis, Anchor::kCenter);
+  text(label, box.left, box.top - 7, 13, palette::kAxis);
+  layout_.legend_boxes.push_back({box.left, box.top - 20, box.right, box.bottom + 20});
 }
 
-void Figure::legend(double x, double y, const std::vector<LegendEntry>& entries) {
+PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entries, int columns,
+                        double column_width_px) {
+  columns = std::max(1, columns);
+  const std::size_t rows = (entries.size() + columns - 1) / columns;
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    const double row = y + 20.0 * i;
-    canvas_.pixel_line({x, row - 4}, {x + 22, row - 4}, 5.0, entries[i].colour);
-    text(entries[i].label, x + 30, row + 1, 13, palette::kAxis);
+    const double cx = x + column_width_px * static_cast<double>(i / std::max<std::size_t>(rows, 1));
+    const double row = y + 19.0 * static_cast<double>(i % std::max<std::size_t>(rows, 1));
+    canvas_.pixel_line({cx, row - 4}, {cx + 22, row - 4}, 5.0, entries[i].colour);
+    text(entries[i].label, cx + 28, row + 1, 13, palette::kAxis);
+    layout_.legend.push_back(entries[i]);
   }
+  const PixelBox box{x, y - 12, x + column_width_px * columns, y + 19.0 * static_cast<double>(rows)};
+  layout_.legend_boxes.push_back(box);
+  return box;
 }
 
 void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
-                  const std::string& x_label, const std::string& y_label) {
+                  const std::string& y_label, const PlotOptions& options) {
   double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
   for (const Series& s : series)
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
@@ -101,13 +146,20 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
       ymax = std::max(ymax, s.y[i]);
     }
   if (!(xmax > xmin)) xmin = 0, xmax = 1;
+  const bool empty = !std::isfinite(ymin);
   if (!(ymax > ymin)) ymin = std::isfinite(ymin) ? ymin - 1 : 0, ymax = ymin + 2;
   ymin = std::min(ymin, 0.0);
+  // Rounding noise around zero must not be blown up into a full-height signal.
+  if (ymax - ymin < options.min_y_span) ymax = ymin + options.min_y_span;
   const double pad = 0.05 * (ymax - ymin);
   ymax += pad;
   auto px = [&](double x, double y) {
     return Vec2{box.left + box.width() * (x - xmin) / (xmax - xmin), box.bottom - box.height() * (y - ymin) / (ymax - ymin)};
   };
+  for (const Band& b : options.bands) {
+    const double x0 = px(std::clamp(b.x0, xmin, xmax), ymin).x, x1 = px(std::clamp(b.x1, xmin, xmax), ymin).x;
+    if (x1 > x0) canvas_.pixel_line({0.5 * (x0 + x1), box.top}, {0.5 * (x0 + x1), box.bottom}, x1 - x0, b.colour);
+  }
   canvas_.pixel_line({box.left, box.top}, {box.right, box.top}, 1.0, palette::kGrid);
   for (double y : nice_ticks(ymin, ymax, 4)) {
     const double py = px(xmin, y).y;
@@ -133,17 +185,45 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
     canvas_.pixel_line({box.left - 4, p.y}, {box.left, p.y}, 1.0, palette::kAxis);
     text(tick_label(y, ystep), box.left - 7, p.y + 4, 12, palette::kAxis, Anchor::kRight);
   }
-  text(title, box.left, box.top - 8, 14, palette::kAxis, Anchor::kLeft, true);
-  text(x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis, Anchor::kCenter);
-  text(y_label, box.right, box.top - 8, 12, palette::kAxis, Anchor::kRight);
+  text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14, palette::kAxis, Anchor::kLeft,
+       true);
+  if (!options.x_label.empty())
+    text(options.x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis, Anchor::kCenter);
+  if (empty && !options.note.empty())
+    text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13, palette::kAxis, Anchor::kCenter);
+  if (options.legend) {
+    // Entries right-aligned along the top edge, above the plot, last one at the right.
+    std::vector<LegendEntry> entries;
+    for (const Series& s : series) entries.push_back({s.colour, s.label});
+    std::vector<std::string> seen;
+    for (const Band& b : options.bands)
+      if (std::find(seen.begin(), seen.end(), b.label) == seen.end()) {
+        seen.push_back(b.label);
+        entries.push_back({b.colour, b.label});
+      }
+    TextRenderer& tr = shared_text_renderer();
+    double x = box.right;
+    for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
+      const TextBox m = tr.measure(it->label, 0, 0, 12);
+      x -= m.x1 - m.x0;
+      text(it->label, x, box.top - 8, 12, palette::kAxis);
+      x -= 26;
+      canvas_.pixel_line({x, box.top - 12}, {x + 20, box.top - 12}, 8.0, it->colour);
+      layout_.legend.push_back(*it);
+      x -= 14;
+    }
+    layout_.legend_boxes.push_back({x, box.top - 22, box.right, box.top - 2});
+  }
 }
 
 Image Figure::finish() {
   Image img = canvas_.read();
   TextRenderer& tr = shared_text_renderer();
-  for (const QueuedText& q : texts_)
-    tr.draw(img, q.s, static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)), q.size, q.colour, q.anchor,
-            q.bold);
+  for (const QueuedText& q : texts_) {
+    layout_.texts.push_back(q.s);
+    layout_.text_boxes.push_back(tr.draw(img, q.s, static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)),
+                                         q.size, q.colour, q.anchor, q.bold));
+  }
   texts_.clear();
   return img;
 }

@@ -24,6 +24,19 @@ struct LegendEntry {
   std::string label;
 };
 
+/// What a finished figure put where, for tests: every text's box, every legend entry and the
+/// boxes legends and insets cover (a legend swatch is not evidence that its layer was drawn).
+struct FigureLayout {
+  std::vector<std::string> texts;
+  std::vector<TextBox> text_boxes;
+  std::vector<LegendEntry> legend;
+  std::vector<PixelBox> legend_boxes;
+  std::vector<PixelBox> insets;
+};
+
+/// Whether two text boxes share a pixel.
+bool overlaps(const TextBox& a, const TextBox& b);
+
 /// Panels in a grid under a title line: at most `max_columns` a row, each `panel_height_px`
 /// high and an equal share of the width.
 struct PanelGrid {
@@ -49,16 +62,28 @@ class Figure {
   /// Text is queued and drawn over the picture by finish().
   void text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor = Anchor::kLeft,
             bool bold = false);
+  /// As text(), shortened with "..." to at most `max_width_px` (long world names, settings).
+  void text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
+                   bool bold = false);
+  /// As text(), unless it would overlap text already placed (annotations such as time ticks,
+  /// which may crowd where the robot stood still); returns whether it was placed.
+  bool text_if_free(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
+                    Anchor anchor = Anchor::kLeft);
+  /// Marks a box as an inset (a close-up drawn over the figure), for layout checks.
+  void note_inset(const PixelBox& box) { layout_.insets.push_back(box); }
 
   /// Fits `view` (world metres) into `box` keeping the aspect ratio; sets the canvas transform.
   PixelTransform world_panel(const geom::Rect& view, const PixelBox& box);
   /// Ticks and numbers along the bottom and left of a world panel, with axis labels.
   void world_axes(const geom::Rect& view, const PixelTransform& t);
 
-  /// A colour bar of viridis from lo to hi, vertical, in `box`, with ticks and a label.
+  /// A colour bar of cividis from lo to hi, horizontal, in `box`, with ticks under it and a label
+  /// above.
   void colour_bar(const PixelBox& box, double lo, double hi, const std::string& label);
-  /// A legend of coloured swatches, one row each, starting at (x, y).
-  void legend(double x, double y, const std::vector<LegendEntry>& entries);
+  /// A legend of coloured swatches, one row each, starting at (x, y), in `columns` columns of
+  /// `column_width_px`; returns the box it covers.
+  PixelBox legend(double x, double y, const std::vector<LegendEntry>& entries, int columns = 1,
+                  double column_width_px = 150);
 
   /// A line plot of (x, y) series in `box` with its own axes; series share the scales.
   struct Series {
@@ -66,11 +91,25 @@ class Figure {
     Rgb colour;
     std::string label;
   };
+  /// A shaded stretch of the x axis (a phase of the run), listed in the plot's legend.
+  struct Band {
+    double x0, x1;
+    Rgb colour;
+    std::string label;
+  };
+  struct PlotOptions {
+    std::string x_label;             ///< empty: no label (stacked plots label the bottom one)
+    std::vector<Band> bands;
+    bool legend = false;             ///< series and bands named at the top right
+    double min_y_span = 0;           ///< never zoom into less than this (noise around zero)
+    std::string note;                ///< said in the middle when no series has a value
+  };
   void plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
-            const std::string& x_label, const std::string& y_label);
+            const std::string& y_label, const PlotOptions& options);
 
   /// Reads back the drawing and composites the queued text.
   Image finish();
+  const FigureLayout& layout() const { return layout_; }
 
  private:
   struct QueuedText {
@@ -83,6 +122,7 @@ class Figure {
   };
   GlCanvas canvas_;
   std::vector<QueuedText> texts_;
+  FigureLayout layout_;
 };
 
 /// The shared text renderer (fonts are loaded once per process).

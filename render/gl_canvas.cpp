@@ -97,6 +97,19 @@ void GlCanvas::flush() const {
   batch_.clear();
 }
 
+void GlCanvas::set_clip(double left, double top, double right, double bottom) {
+  flush();  // what was drawn before is not clipped
+  const int x0 = static_cast<int>(std::floor(left * ss_)), x1 = static_cast<int>(std::ceil(right * ss_));
+  const int y0 = static_cast<int>(std::floor((height_ - bottom) * ss_)), y1 = static_cast<int>(std::ceil((height_ - top) * ss_));
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
+void GlCanvas::clear_clip() {
+  flush();
+  glDisable(GL_SCISSOR_TEST);
+}
+
 void GlCanvas::fill_rect(const Rect& r, Rgb c, float alpha) {
   const Vec2 a = gl_px({r.xmin, r.ymin}), b = gl_px({r.xmax, r.ymax});
   color(c, alpha);

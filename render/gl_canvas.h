@@ -41,6 +41,10 @@ class GlCanvas {
 
   void clear(Rgb c);
   void set_transform(const PixelTransform& t) { transform_ = t; }
+  /// Restricts drawing to the box of final-image pixels [left, right) x [top, bottom) (row 0 at
+  /// the top), for insets; clear_clip() lifts it.
+  void set_clip(double left, double top, double right, double bottom);
+  void clear_clip();
   const PixelTransform& transform() const { return transform_; }
 
   void fill_rect(const Rect& r, Rgb c, float alpha = 1.0f);

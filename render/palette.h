@@ -1,35 +1,55 @@
-// The figure colours, named once so that drawings and pixel tests agree.
+// The figure colours, named once so that drawings and pixel tests agree. The hues that must be
+// told apart at a glance (plan, charger, start, moving obstacles, target, events) are Okabe and
+// Ito's colour-blind-safe set; speed is on cividis (colormap.h), which none of them lies on.
 #pragma once
 
 #include "render/image.h"
 
 namespace plantsim::render::palette {
 
+// Okabe-Ito (Okabe & Ito 2008, "Color Universal Design").
+inline constexpr Rgb kOkabeBlack{0, 0, 0};
+inline constexpr Rgb kOkabeOrange{230, 159, 0};
+inline constexpr Rgb kOkabeSkyBlue{86, 180, 233};
+inline constexpr Rgb kOkabeBluishGreen{0, 158, 115};
+inline constexpr Rgb kOkabeYellow{240, 228, 66};
+inline constexpr Rgb kOkabeBlue{0, 114, 178};
+inline constexpr Rgb kOkabeVermillion{213, 94, 0};
+inline constexpr Rgb kOkabeReddishPurple{204, 121, 167};
+
 inline constexpr Rgb kBackground{255, 255, 255};
 inline constexpr Rgb kFloor{248, 247, 242};
 inline constexpr Rgb kGrid{222, 222, 218};
-inline constexpr Rgb kInflation{250, 210, 170};
-inline constexpr Rgb kObstacle{70, 76, 92};
-inline constexpr Rgb kGraph{190, 200, 225};
-inline constexpr Rgb kPlan{30, 110, 230};
-inline constexpr Rgb kTrajectory{215, 25, 35};
-inline constexpr Rgb kCharger{20, 150, 60};
-inline constexpr Rgb kStart{245, 160, 0};
+inline constexpr Rgb kInflation{236, 222, 200};
+inline constexpr Rgb kObstacle{64, 64, 64};
+inline constexpr Rgb kGraph{170, 170, 190};
+inline constexpr Rgb kPlan = kOkabeVermillion;       ///< the plan at the end, drawn over the driven path
+inline constexpr Rgb kFirstPlan{0, 0, 0};            ///< the plan set off on, dashed, when replanned
+inline constexpr Rgb kTrajectory = kOkabeBlue;       ///< a driven path in one colour (plots, batch overlays)
+inline constexpr Rgb kFailure = kOkabeVermillion;    ///< failed episodes in batch overlays
+inline constexpr Rgb kCharger = kOkabeBluishGreen;
+inline constexpr Rgb kStart = kOkabeOrange;
 inline constexpr Rgb kRobot{20, 20, 20};
-inline constexpr Rgb kMoving{150, 60, 170};
+inline constexpr Rgb kMoving = kOkabeSkyBlue;        ///< moving obstacles, their swept tracks and time ticks
 inline constexpr Rgb kAxis{40, 40, 48};
 inline constexpr Rgb kFootprint{120, 120, 130};
-inline constexpr Rgb kTarget{225, 50, 150};      ///< a moving target and its track
-inline constexpr Rgb kExplored{140, 170, 200};   ///< a hand-rule exploration walk
-inline constexpr Rgb kWallFollow{255, 200, 60};  ///< potential-field travel while following a wall
-inline constexpr Rgb kScan{86, 180, 233};         ///< lidar returns the map explains
-inline constexpr Rgb kScanOffMap{213, 94, 0};     ///< lidar returns it does not (tracked obstacles)
-inline constexpr Rgb kTracked{0, 0, 0};           ///< boxes of the tracked obstacles (outlines)
-inline constexpr Rgb kEstimate{120, 60, 0};       ///< the path as the robot estimated it
-inline constexpr Rgb kUnmapped{150, 30, 30};      ///< obstacles in the plant but not on the map (hatched)
-inline constexpr Rgb kLayer{204, 121, 167};       ///< the local obstacle layer's occupied cells
-inline constexpr Rgb kStopMark{0, 158, 115};      ///< where the robot stopped for something (ring)
-inline constexpr Rgb kReplanMark{0, 114, 178};    ///< where it replanned (ring)
-inline constexpr Rgb kRecoveryMark{213, 0, 0};    ///< where it recovered after a displacement (ring)
+inline constexpr Rgb kTarget = kOkabeReddishPurple;  ///< a moving target and its track
+inline constexpr Rgb kExplored{150, 130, 90};        ///< a hand-rule exploration walk
+inline constexpr Rgb kWallFollow = kOkabeYellow;     ///< potential-field travel while following a wall
+inline constexpr Rgb kScan{120, 120, 120};           ///< lidar returns the map explains (dots)
+inline constexpr Rgb kScanOffMap{150, 0, 90};        ///< lidar returns it does not (tracked obstacles)
+inline constexpr Rgb kTracked{0, 0, 0};              ///< boxes of the tracked obstacles (outlines)
+inline constexpr Rgb kEstimate{185, 185, 185};       ///< the path as the robot estimated it (band)
+inline constexpr Rgb kUnmapped{150, 30, 30};         ///< obstacles in the plant but not on the map (hatched)
+inline constexpr Rgb kLayer{120, 90, 200};           ///< the local obstacle layer's occupied cells
+inline constexpr Rgb kStopMark{0, 0, 0};             ///< where the robot stopped for something (ring)
+inline constexpr Rgb kReplanMark = kOkabeBlue;       ///< where it replanned (ring)
+inline constexpr Rgb kRecoveryMark = kOkabeOrange;   ///< where it recovered after a displacement (ring)
+inline constexpr Rgb kCollisionMark{220, 0, 0};      ///< where a collision began (cross)
+inline constexpr Rgb kRetryMark = kOkabeReddishPurple;  ///< where the docking backed off to retry (ring)
+inline constexpr Rgb kTolerance = kOkabeBluishGreen;    ///< the docking tolerance box (inset)
+inline constexpr Rgb kPhaseTravel{235, 240, 250};    ///< time-plot shading by phase
+inline constexpr Rgb kPhaseDocking{232, 246, 238};
+inline constexpr Rgb kPhaseBackOff{252, 238, 226};
 
 }  // namespace plantsim::render::palette

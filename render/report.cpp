@@ -5,9 +5,7 @@
 #include "util/atomic_file.h"
 
 namespace plantsim::render {
-namespace {
-
-std::string escape(const std::string& s) {
+std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
@@ -21,38 +19,46 @@ std::string escape(const std::string& s) {
   return out;
 }
 
-}  // namespace
+std::string image_check_script() {
+  return "<script>window.addEventListener('load', function () {\n"
+         "  const bad = Array.from(document.images).filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src);\n"
+         "  document.documentElement.dataset.imagesLoaded = bad.length ? 'missing: ' + bad.join(' ') : 'all ' + "
+         "document.images.length;\n});</script>\n";
+}
+
 
 std::string report_html(const Report& r) {
-  std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape(r.title) +
+  std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html_escape(r.title) +
                   "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
                   "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
                   "text-align:right}th{background:#eee}td:first-child,th:first-child{text-align:left}"
                   "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px 4px}"
                   "figure{margin:16px 0}</style></head><body>\n";
-  h += "<h1>" + escape(r.title) + "</h1>\n";
-  if (!r.command.empty()) h += "<p>Produced by <code>" + escape(r.command) + "</code></p>\n";
-  if (!r.notes.empty()) h += "<p>" + escape(r.notes) + "</p>\n";
+  h += "<h1>" + html_escape(r.title) + "</h1>\n";
+  if (!r.command.empty()) h += "<p>Produced by <code>" + html_escape(r.command) + "</code></p>\n";
+  if (!r.notes.empty()) h += "<p>" + html_escape(r.notes) + "</p>\n";
   if (!r.headers.empty()) {
     h += "<table><tr>";
-    for (const auto& c : r.headers) h += "<th>" + escape(c) + "</th>";
+    for (const auto& c : r.headers) h += "<th>" + html_escape(c) + "</th>";
     h += "</tr>\n";
     for (const auto& row : r.rows) {
       h += "<tr>";
-      for (const auto& c : row) h += "<td>" + escape(c) + "</td>";
+      for (const auto& c : row) h += "<td>" + html_escape(c) + "</td>";
       h += "</tr>\n";
     }
     h += "</table>\n";
   }
+  h += r.body_html;
   for (const auto& f : r.figures)
-    h += "<figure><img src=\"" + escape(f.file) + "\" alt=\"" + escape(f.caption) + "\"><figcaption>" +
-         escape(f.caption) + "</figcaption></figure>\n";
+    h += "<figure><img src=\"" + html_escape(f.file) + "\" alt=\"" + html_escape(f.caption) + "\"><figcaption>" +
+         html_escape(f.caption) + "</figcaption></figure>\n";
   if (!r.files.empty()) {
     h += "<p>Files: ";
     for (std::size_t i = 0; i < r.files.size(); ++i)
-      h += (i ? ", " : "") + std::string("<a href=\"") + escape(r.files[i]) + "\">" + escape(r.files[i]) + "</a>";
+      h += (i ? ", " : "") + std::string("<a href=\"") + html_escape(r.files[i]) + "\">" + html_escape(r.files[i]) + "</a>";
     h += "</p>\n";
   }
+  h += image_check_script();
   h += "</body></html>\n";
   return h;
 }

@@ -1,6 +1,7 @@
 // A static, offline HTML report: title, the command that produced it, a metrics table, the
-// figures (relative links to PNG files beside it) and links to the raw files. No scripts,
-// no network: it opens from disk anywhere.
+// figures (relative links to PNG files beside it), optional embedded HTML (a replay) and links
+// to the raw files. No network: it opens from disk anywhere. A small script marks on the page
+// whether every image loaded (data-images-loaded on <html>), for browser tests.
 #pragma once
 
 #include <string>
@@ -21,9 +22,14 @@ struct Report {
   std::vector<ReportFigure> figures;
   std::vector<std::string> files;  ///< other outputs to link (CSV, JSON)
   std::string notes;               ///< a paragraph of plain text
+  std::string body_html;           ///< trusted HTML placed before the figures (a replay player)
 };
 
 std::string report_html(const Report& r);
+/// Text made safe inside HTML elements and attribute values.
+std::string html_escape(const std::string& s);
+/// The script that marks <html data-images-loaded="all N"> (or "missing: ...") once loaded.
+std::string image_check_script();
 /// Written atomically to `path`.
 void write_report(const Report& r, const std::string& path);
 

@@ -74,8 +74,16 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 ./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
+# Planning time against the number of obstacles (log-log) for the visibility graph, the
+# traditional one and the grid, from the planner benchmark (its JSON lines kept beside it).
+mkdir -p results/planner_scaling
+./build/plantsim bench planner --quick --chart results/planner_scaling/planner_time.png \
+  > results/planner_scaling/bench_planner.jsonl || status=1
+
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
   --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
+  --link results/batch_plant_mismatch/report.html --link results/batch_wet_floor_sweep/report.html \
+  --link results/planner_scaling/planner_time.png \
   --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
   --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages plantsim builds with, only those that are missing; with
-# `test`, also what the tests need (a single-node Slurm cluster, clang's libFuzzer).
+# `test`, also what the tests need (a single-node Slurm cluster, clang's libFuzzer, Chromium for
+# the browser test of the reports).
 # Safe to run again: it does nothing when everything is present.
 set -euo pipefail
 
@@ -12,7 +13,7 @@ packages=(
   libfreetype-dev fonts-dejavu-core
 )
 if [ "${1:-}" = test ]; then
-  packages+=(slurm-wlm munge clang libclang-rt-14-dev)
+  packages+=(slurm-wlm munge clang libclang-rt-14-dev chromium)
 fi
 
 missing=()

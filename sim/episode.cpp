@@ -60,6 +60,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     result.plan_note = "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
   }
   result.plan = plan.path;
+  result.first_plan = plan.path;
   result.path_length_m = plan.length;
   const std::vector<Vec2> first_path = planned ? plan.path : std::vector<Vec2>{map.start.position(), goal};
 
@@ -92,6 +93,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const int period = std::max(1, config.control_period_steps);
   result.status = "timeout";
   double next_snapshot_s = 0;
+  double next_track_s = 0;
+  constexpr double kMovingTrackPeriod_s = 0.25;
   LocalizationHealth worst_health = LocalizationHealth::kOk;
   result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
@@ -129,6 +132,16 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       if (after.stops > before.stops) result.events.push_back({Kind::kStop, t, truth.position()});
       if (after.replans > before.replans) result.events.push_back({Kind::kReplan, t, truth.position()});
       if (after.recoveries > before.recoveries) result.events.push_back({Kind::kRecovery, t, truth.position()});
+      if (after.retries > before.retries) result.events.push_back({Kind::kRetry, t, truth.position()});
+      if (t >= next_track_s) {
+        next_track_s = t + kMovingTrackPeriod_s;
+        const std::vector<ActorState> actors = physics.actors();
+        result.moving_tracks.resize(actors.size());
+        for (std::size_t i = 0; i < actors.size(); ++i) {
+          result.moving_tracks[i].t_s.push_back(t);
+          result.moving_tracks[i].boxes.push_back(actors[i].box);
+        }
+      }
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
       result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m, d.phase, d.wall_following, target_at});
       if (!d.finished.empty()) {

@@ -98,11 +98,20 @@ struct EpisodeResult {
   int local_minima = 0;          ///< potential-field travel: local minima met
   int wall_follows = 0;          ///< ... and wall-following episodes begun
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
-  std::vector<Vec2> plan;
+  std::vector<Vec2> plan;          ///< the plan at the end (the last replan's, or the first)
+  std::vector<Vec2> first_plan;    ///< the plan the robot set off on (path_length_m is its length)
   std::vector<Vec2> explored;     ///< the planner's exploration walk, if it made one (seed 003)
   std::string plan_note;          ///< what the planner said about its plan
   std::vector<TrajectorySample> trajectory;
   std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
+  /// Where each moving obstacle was over time (every 0.25 s, as the physics moved it).
+  struct MovingTrack {
+    std::vector<double> t_s;
+    std::vector<geom::Rect> boxes;
+  };
+  std::vector<MovingTrack> moving_tracks;
+  bool error_measured = false;  ///< position/heading errors were measured (at contact or at the end)
+  Pose2 measured_pose;          ///< the true pose they were measured at
   std::string perception_mode = "sensors";
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
   std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
@@ -120,10 +129,10 @@ struct EpisodeResult {
   std::vector<geom::Rect> layer_final;               ///< the local obstacle layer at the end
   /// Where the robot stopped for something, replanned, or recovered after a displacement.
   struct Event {
-    enum class Kind { kStop, kReplan, kRecovery };
+    enum class Kind { kStop, kReplan, kRecovery, kCollision, kRetry };
     Kind kind;
     double t_s;
-    Vec2 at;  ///< true position
+    Vec2 at;  ///< true position (for a collision, the robot's centre when contact began)
   };
   std::vector<Event> events;
 };

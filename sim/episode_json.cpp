@@ -14,6 +14,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["wall_follows"] = r.wall_follows;
   j["position_error_m"] = r.position_error_m;
   j["heading_error_deg"] = r.heading_error_deg;
+  j["error_measured"] = r.error_measured;  // false: a pursuit, or a run that never set off (errors are 0, not measured)
   j["collisions"] = r.collisions;
   j["collisions_robot_moving"] = r.collisions_robot_moving;
   j["retries"] = r.retries;

@@ -18,6 +18,7 @@ EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result
 void EpisodeMetrics::before_step(const PhysicsWorld& physics, const ContactState& contact) {
   if (contact.obstacle && !was_touching_obstacle_) {
     ++r_.collisions;
+    r_.events.push_back({EpisodeResult::Event::Kind::kCollision, r_.physics_steps * dt_s_, physics.robot_position()});
     // Whose doing: the robot's when it was moving towards what it touched (faster than a
     // creep), not when something walked into a standing or retreating robot.
     // The motion over the last steps before contact (the solver has already stopped the
@@ -80,6 +81,8 @@ void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {
   const Pose2 truth = physics.robot_pose();
   r_.position_error_m = geom::distance(truth.position(), plant_.charger.position());
   r_.heading_error_deg = std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) * 180.0 / M_PI;
+  r_.error_measured = true;
+  r_.measured_pose = truth;
 }
 
 }  // namespace plantsim::sim

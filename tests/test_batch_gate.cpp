@@ -2,6 +2,7 @@
 // report), episodes the same whatever a world's place in the list, merges that refuse mixed
 // scenarios and missing shards, one writer per folder, resume past malformed lines, and
 // scenario paths relative to the scenario file.
+#include "util/csv.h"
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -201,3 +202,22 @@ TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
 
 }  // namespace
 }  // namespace plantsim::batch
+
+namespace plantsim::util {
+namespace {
+
+// summary.csv is RFC 4180: a name with a comma or a quote survives a round trip, and the report
+// reads the columns where they are.
+TEST(Csv, QuotedFieldsRoundTrip) {
+  const std::vector<std::string> fields = {"plain", "a,b", "say \"hi\"", "", "end"};
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    line += csv_field(fields[i]);
+  }
+  EXPECT_EQ(line, "plain,\"a,b\",\"say \"\"hi\"\"\",,end");
+  EXPECT_EQ(csv_split(line), fields);
+}
+
+}  // namespace
+}  // namespace plantsim::util

@@ -31,6 +31,7 @@ TEST(DiffDrive, SaturationKeepsCurvature) {
 
 struct TrackRun {
   double max_cross_track = 0;
+  double max_cross_track_turning_in_place = 0;
   double final_cross_track = 0;
   bool reached = false;
   Pose2 end;
@@ -46,6 +47,8 @@ TrackRun track(const std::vector<Vec2>& path, Pose2 pose, double settle_m, PureP
     const TrackingCommand c = pp.step(pose, speed);
     if (travelled > settle_m) run.max_cross_track = std::max(run.max_cross_track, c.cross_track_error_m);
     run.final_cross_track = c.cross_track_error_m;
+    if (c.twist.v_mps == 0 && c.twist.omega_radps != 0)
+      run.max_cross_track_turning_in_place = std::max(run.max_cross_track_turning_in_place, c.cross_track_error_m);
     if (c.goal_reached) {
       run.reached = true;
       break;
@@ -85,6 +88,16 @@ TEST(PurePursuit, SharpCornerCutIsBounded) {
   EXPECT_TRUE(r.reached);
   EXPECT_LT(r.max_cross_track, 0.12);
   EXPECT_NEAR(r.end.y, 5.0, 0.03);
+}
+
+TEST(PurePursuit, TurningInPlaceShortOfACornerIsOnThePath) {
+  // The robot stops within the corner release distance of the vertex on the incoming leg and
+  // turns there: its distance from the path is that from the incoming leg (about zero for this
+  // ideal drive), not from the next leg (up to the release distance), which is what made every
+  // turn in place read as ~10 cm of cross-track error.
+  const TrackRun r = track({{0, 0}, {5, 0}, {5, 5}}, {0, 0, 0}, 0.0);
+  ASSERT_TRUE(r.reached);
+  EXPECT_LT(r.max_cross_track_turning_in_place, 0.01);
 }
 
 TEST(PurePursuit, DoesNotOvershootTheEnd) {

@@ -1,0 +1,212 @@
+// Records into the report's table, chart data and figures.
+#include "batch/batch_report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "batch/batch_gate.h"
+#include "batch/batch_runner.h"
+#include "planner/planner.h"
+#include "render/batch_charts.h"
+#include "render/comparison_figure.h"
+#include "render/png_io.h"
+#include "render/report.h"
+#include "render/run_figure.h"
+#include "util/atomic_file.h"
+#include "util/csv.h"
+#include "worlds/known_keys.h"
+
+namespace plantsim::batch {
+namespace {
+
+using nlohmann::json;
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+/// The columns of summary.csv a reader looks at first, with readable headers; all of them stay
+/// in summary.csv.
+void fill_table(render::Report& report, const std::string& csv, const std::vector<ConfigurationVerdict>& verdicts) {
+  const std::vector<std::pair<std::string, std::string>> shown = {
+      {"world", "world"},
+      {"planner", "planner"},
+      {"controller", "controller"},
+      {"fault", "fault"},
+      {"episodes", "episodes"},
+      {"docked", "docked"},
+      {"success_rate", "success"},
+      {"ci95_low", "95 % low"},
+      {"ci95_high", "95 % high"},
+      {"mean_position_error_mm", "position error (mm)"},
+      {"mean_heading_error_deg", "heading error (deg)"},
+      {"mean_time_s", "time (s)"},
+      {"collisions", "collisions"},
+      {"mean_stops", "stops"},
+      {"mean_replans", "replans"},
+      {"path_over_optimum", "plan / optimum"}};
+  std::vector<std::string> header;
+  std::size_t start = 0;
+  bool first = true;
+  std::vector<int> index;
+  std::size_t row = 0;
+  while (start < csv.size()) {
+    const std::size_t end = std::min(csv.find('\n', start), csv.size());
+    const std::vector<std::string> cells = util::csv_split(csv.substr(start, end - start));
+    start = end + 1;
+    if (first) {
+      header = cells;
+      for (const auto& [key, title] : shown) {
+        const auto it = std::find(header.begin(), header.end(), key);
+        if (it == header.end()) continue;
+        index.push_back(static_cast<int>(it - header.begin()));
+        report.headers.push_back(title);
+      }
+      report.headers.push_back("gate");
+      first = false;
+      continue;
+    }
+    std::vector<std::string> out;
+    for (int i : index) out.push_back(static_cast<std::size_t>(i) < cells.size() ? cells[i] : "");
+    std::string verdict = "not gated";
+    if (row < verdicts.size() && verdicts[row].threshold)
+      verdict = (verdicts[row].passed ? "pass (>= " : "FAIL (< ") + fixed(*verdicts[row].threshold, 2) + ")";
+    out.push_back(verdict);
+    report.rows.push_back(out);
+    ++row;
+  }
+}
+
+}  // namespace
+
+void write_batch_report(const std::vector<std::string>& lines, const std::string& out_dir, const std::string& title,
+                        const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
+                        const std::vector<std::string>& planners, const Gate& gate,
+                        const std::vector<FailedEpisode>& failures, const std::string& scenario_path) {
+  const std::string csv = summary_csv(lines);
+  util::write_file_atomically(out_dir + "/summary.csv", csv);
+  const std::string sweep = sweep_csv(lines);
+  if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
+  const std::vector<ConfigurationVerdict> verdicts = judge_configurations(lines, gate);
+  render::Report report;
+  report.title = title;
+  report.command = command;
+  fill_table(report, csv, verdicts);
+  report.files = {"episodes.jsonl", "summary.csv"};
+  if (!sweep.empty()) report.files.push_back("sweep.csv");
+
+  // Charts, from the same records the table sums.
+  std::vector<render::RateRow> rates;
+  for (const ConfigurationVerdict& v : verdicts)
+    rates.push_back({v.name(), v.docked, v.episodes, v.wilson_low, v.wilson_high, v.threshold.value_or(-1.0)});
+  std::vector<render::EpisodeOutcome> episodes;
+  std::map<std::string, std::vector<render::EpisodePath>> paths;  // by world name
+  std::map<double, std::pair<long long, long long>> sweep_counts;
+  std::string sweep_parameter;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    render::EpisodeOutcome e;
+    e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() + " / " +
+               j["fault"].get<std::string>();
+    e.docked = j["docked"].get<bool>();
+    e.position_error_m = j.value("position_error_m", 0.0);
+    e.heading_error_deg = j.value("heading_error_deg", 0.0);
+    const double optimum = j.value("optimal_length_m", 0.0);
+    if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
+    e.time_s = j.value("time_s", 0.0);
+    episodes.push_back(e);
+    render::EpisodePath path;
+    path.docked = e.docked;
+    if (j.contains("path_mm") && j["path_mm"].is_array())
+      for (std::size_t k = 0; k + 1 < j["path_mm"].size(); k += 2)
+        path.points.push_back({0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
+    paths[j["world"].get<std::string>()].push_back(std::move(path));
+    if (j.contains("sweep_parameter")) {
+      sweep_parameter = j["sweep_parameter"].get<std::string>();
+      char* end = nullptr;
+      const std::string value = j["sweep_value"].get<std::string>();
+      const double x = std::strtod(value.c_str(), &end);
+      if (end && *end == '\0' && end != value.c_str()) {
+        auto& [k, n] = sweep_counts[x];
+        k += e.docked;
+        ++n;
+      }
+    }
+  }
+  auto chart = [&](const render::Image& img, const std::string& file, const std::string& caption) {
+    render::write_png(img, out_dir + "/" + file, render::PngSettings::fast());
+    report.figures.push_back({file, caption});
+  };
+  chart(render::draw_success_chart(rates, title), "chart_success.png",
+        "Success rate per configuration with its Wilson 95 % interval; the black tick is the gate");
+  chart(render::draw_error_strips(episodes, {}), "chart_errors.png",
+        "Position and heading error of every docked episode against the 2 cm / 2 degree gates");
+  chart(render::draw_efficiency_chart(episodes), "chart_efficiency.png",
+        "Driven length over the exact optimum (ECDF) and time to dock, per method");
+  if (!sweep_counts.empty()) {
+    std::vector<double> values;
+    std::vector<render::RateRow> rows;
+    for (const auto& [x, kn] : sweep_counts) {
+      const auto [lo, hi] = wilson_interval(kn.first, kn.second);
+      values.push_back(x);
+      rows.push_back({fixed(x, 3), kn.first, kn.second, lo, hi, gate.min_success.value_or(-1.0)});
+    }
+    chart(render::draw_sweep_chart(sweep_parameter, values, rows), "chart_sweep.png",
+          "Success rate against " + sweep_parameter + " with its Wilson 95 % band");
+  }
+  if (worlds_for_figures) {
+    for (const worlds::World& w : *worlds_for_figures) {
+      const auto it = paths.find(w.name);
+      if (it == paths.end()) continue;
+      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path"),
+            "paths_" + worlds::file_name_component(w.name) + ".png",
+            w.name + ": every episode's driven path from its own start; failures in vermillion, on top");
+    }
+  }
+  if (!failures.empty()) {
+    std::filesystem::create_directories(out_dir + "/failures");
+    for (const FailedEpisode& f : failures) {
+      const std::string file = "failures/" + worlds::file_name_component(f.id) + ".png";
+      render::RunFigureOptions options;
+      options.setting = "episode " + f.id;
+      options.dock_tolerance_m = f.config.tolerance.position_m;
+      render::write_png(render::draw_run_figure(f.plant, f.result, options), out_dir + "/" + file,
+                        render::PngSettings::fast());
+      report.figures.push_back({file, "FAILED " + f.id + ": " + f.result.status + ". Re-run it alone: plantsim batch " +
+                                          scenario_path + " --episode '" + f.id + "' --out DIR"});
+    }
+  }
+  if (worlds_for_figures) {
+    for (const worlds::World& w : *worlds_for_figures) {
+      std::vector<render::ComparisonPanel> panels;
+      for (const std::string& name : planners) {
+        auto p = planner::make_planner(name, planner::planner_input(w, true));
+        const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+        render::ComparisonPanel panel{name, {}, {}, false};
+        panel.run.planner = name;
+        panel.run.status = std::string(planner::to_string(r.status));
+        panel.run.plan = r.path;
+        panel.run.path_length_m = r.length;
+        panel.run.plan_stats = r.stats;
+        panels.push_back(panel);
+      }
+      const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
+      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world file's start (not an episode's)"),
+                        out_dir + "/" + file, render::PngSettings::fast());
+      report.figures.push_back({file, w.name + ": each planner's plan from the world file's start to the staging pose "
+                                               "(episodes start from random poses)"});
+    }
+  }
+  report.notes = "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
+                 "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
+                 "summary.csv has every column.";
+  render::write_report(report, out_dir + "/report.html");
+}
+
+}  // namespace plantsim::batch

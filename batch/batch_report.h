@@ -1,0 +1,24 @@
+// A batch folder's report: summary.csv (and sweep.csv when the scenario sweeps a parameter),
+// the charts (success with Wilson bars and gates, docking errors against their gates, driven
+// length over the optimum and time to dock, success against the swept value), the plan figures
+// and report.html with a readable table of the configurations.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "batch/batch_runner.h"
+#include "batch/batch_spec.h"
+#include "worlds/world.h"
+
+namespace plantsim::batch {
+
+/// `worlds_for_figures` null: no plan figures and no path overlays (the charts are always
+/// drawn). `failures`: replayed failed episodes for the gallery, each with the command that
+/// re-runs it from `scenario_path`.
+void write_batch_report(const std::vector<std::string>& jsonl_lines, const std::string& out_dir, const std::string& title,
+                        const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
+                        const std::vector<std::string>& planners, const Gate& gate,
+                        const std::vector<FailedEpisode>& failures = {}, const std::string& scenario_path = "");
+
+}  // namespace plantsim::batch

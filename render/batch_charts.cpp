@@ -1,0 +1,324 @@
+// Layout of the batch charts on linear axes of their own (categorical rows or numeric values).
+#include "render/batch_charts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "render/colormap.h"
+#include "render/layers.h"
+#include "render/palette.h"
+
+namespace plantsim::render {
+namespace {
+
+/// A data range mapped into a pixel box (row 0 at the top).
+struct Axes {
+  PixelBox box;
+  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  double px(double x) const { return box.left + box.width() * (x - x0) / (x1 - x0); }
+  double py(double y) const { return box.bottom - box.height() * (y - y0) / (y1 - y0); }
+};
+
+void x_axis(Figure& fig, const Axes& a, const std::string& label, double scale = 1.0, const std::string& suffix = "") {
+  GlCanvas& c = fig.canvas();
+  c.pixel_line({a.box.left, a.box.bottom}, {a.box.right, a.box.bottom}, 1.0, palette::kAxis);
+  const auto ticks = nice_ticks(a.x0, a.x1, 6);
+  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
+  for (double x : ticks) {
+    if (x < a.x0 - 1e-9 || x > a.x1 + 1e-9) continue;
+    c.pixel_line({a.px(x), a.box.top}, {a.px(x), a.box.bottom}, 1.0, palette::kGrid);
+    c.pixel_line({a.px(x), a.box.bottom}, {a.px(x), a.box.bottom + 4}, 1.0, palette::kAxis);
+    fig.text(tick_label(x * scale, step * scale) + suffix, a.px(x), a.box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
+  }
+  fig.text(label, 0.5 * (a.box.left + a.box.right), a.box.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
+}
+
+void y_axis(Figure& fig, const Axes& a, double scale = 1.0, const std::string& suffix = "") {
+  GlCanvas& c = fig.canvas();
+  c.pixel_line({a.box.left, a.box.bottom}, {a.box.left, a.box.top}, 1.0, palette::kAxis);
+  const auto ticks = nice_ticks(a.y0, a.y1, 5);
+  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
+  for (double y : ticks) {
+    if (y < a.y0 - 1e-9 || y > a.y1 + 1e-9) continue;
+    c.pixel_line({a.box.left, a.py(y)}, {a.box.right, a.py(y)}, 1.0, palette::kGrid);
+    fig.text(tick_label(y * scale, step * scale) + suffix, a.box.left - 7, a.py(y) + 4, 12, palette::kAxis, Anchor::kRight);
+  }
+}
+
+/// The methods in first-met order, each with an Okabe-Ito colour.
+std::vector<std::string> methods_of(const std::vector<EpisodeOutcome>& episodes) {
+  std::vector<std::string> out;
+  for (const auto& e : episodes)
+    if (std::find(out.begin(), out.end(), e.method) == out.end()) out.push_back(e.method);
+  return out;
+}
+
+Rgb method_colour(std::size_t i) {
+  static const Rgb kCycle[] = {palette::kOkabeBlue,          palette::kOkabeVermillion, palette::kOkabeBluishGreen,
+                               palette::kOkabeReddishPurple, palette::kOkabeOrange,     palette::kOkabeSkyBlue,
+                               palette::kOkabeBlack};
+  return kCycle[i % (sizeof kCycle / sizeof kCycle[0])];
+}
+
+/// A deterministic spread in [-1, 1] for the i-th dot of a strip.
+double jitter(std::size_t i) { return std::fmod(static_cast<double>(i) * 0.618033988749895, 1.0) * 2.0 - 1.0; }
+
+/// Dots of one value per episode, a row per method, with a gate line; returns the axes.
+void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string>& methods,
+                 const std::vector<std::vector<double>>& values, double gate, const std::string& title,
+                 const std::string& label, double scale) {
+  double hi = gate * 1.25;
+  for (const auto& v : values)
+    for (double x : v) hi = std::max(hi, x * 1.05);
+  const Axes a{box, 0, hi, 0, static_cast<double>(methods.size())};
+  x_axis(fig, a, label, scale);
+  fig.canvas().pixel_line({a.box.left, a.box.bottom}, {a.box.left, a.box.top}, 1.0, palette::kAxis);
+  const double row_h = box.height() / std::max<std::size_t>(methods.size(), 1);
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    const double centre = box.top + (m + 0.5) * row_h;
+    for (std::size_t i = 0; i < values[m].size(); ++i) {
+      const double x = a.px(values[m][i]), y = centre + 0.3 * row_h * jitter(i);
+      fig.canvas().pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
+    }
+  }
+  fig.canvas().pixel_line({a.px(gate), box.top}, {a.px(gate), box.bottom}, 2.0, palette::kCollisionMark);
+  fig.text(title, box.left, box.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
+}
+
+void method_labels(Figure& fig, const PixelBox& box, const std::vector<std::string>& methods,
+                   const std::vector<std::size_t>& counts) {
+  const double row_h = box.height() / std::max<std::size_t>(methods.size(), 1);
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    fig.text(methods[m] + " (" + std::to_string(counts[m]) + ")", box.left - 8, box.top + (m + 0.5) * row_h + 4, 12,
+             method_colour(m), Anchor::kRight);
+}
+
+}  // namespace
+
+Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string& title, int width_px,
+                         FigureLayout* layout_out) {
+  constexpr std::size_t kMaxRows = 80;
+  const std::vector<RateRow> rows(all_rows.begin(), all_rows.begin() + std::min(all_rows.size(), kMaxRows));
+  const double row_h = 22;
+  const int height = static_cast<int>(120 + row_h * std::max<std::size_t>(rows.size(), 1) + 60);
+  Figure fig(width_px, height);
+  fig.text(title, 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  std::string sub = "success rate per configuration with its Wilson 95 % interval";
+  if (all_rows.size() > rows.size())
+    sub += " (first " + std::to_string(rows.size()) + " of " + std::to_string(all_rows.size()) + " configurations)";
+  fig.text(sub, 20, 48, 13, palette::kAxis);
+  const PixelBox box{520, 100, width_px - 110.0, 100 + row_h * std::max<std::size_t>(rows.size(), 1)};
+  const Axes a{box, 0, 1, 0, 1};
+  x_axis(fig, a, "success rate", 100.0, " %");
+  GlCanvas& c = fig.canvas();
+  bool any_gate = false, any_below = false, any_pass = false;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const RateRow& r = rows[i];
+    const double y = box.top + (i + 0.5) * row_h;
+    const double rate = r.episodes ? static_cast<double>(r.successes) / r.episodes : 0.0;
+    const bool below = r.gate >= 0 && rate < r.gate;
+    any_below = any_below || below;
+    any_pass = any_pass || !below;
+    if (rate > 0) c.pixel_line({a.px(0), y}, {a.px(rate), y}, row_h * 0.6, below ? palette::kFailure : palette::kCharger);
+    c.pixel_line({a.px(r.low), y}, {a.px(r.high), y}, 1.6, palette::kAxis);
+    c.pixel_line({a.px(r.low), y - 5}, {a.px(r.low), y + 5}, 1.6, palette::kAxis);
+    c.pixel_line({a.px(r.high), y - 5}, {a.px(r.high), y + 5}, 1.6, palette::kAxis);
+    if (r.gate >= 0) {
+      any_gate = true;
+      c.pixel_line({a.px(r.gate), y - 0.5 * row_h}, {a.px(r.gate), y + 0.5 * row_h}, 2.0, palette::kOkabeBlack);
+    }
+    fig.text(r.label, box.left - 10, y + 4, 12, palette::kAxis, Anchor::kRight);
+    fig.text(std::to_string(r.successes) + "/" + std::to_string(r.episodes), box.right + 8, y + 4, 12, palette::kAxis);
+  }
+  std::vector<LegendEntry> legend;
+  if (any_pass) legend.push_back({palette::kCharger, any_gate ? "success rate (meets gate)" : "success rate"});
+  if (any_below) legend.push_back({palette::kFailure, "success rate (below gate)"});
+  legend.push_back({palette::kAxis, "Wilson 95 %"});
+  if (any_gate) legend.push_back({palette::kOkabeBlack, "gate"});
+  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 230);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
+Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates, int width_px,
+                        FigureLayout* layout_out) {
+  const std::vector<std::string> methods = methods_of(episodes);
+  std::vector<std::vector<double>> pos(methods.size()), heading(methods.size());
+  std::vector<std::size_t> counts(methods.size(), 0);
+  for (const auto& e : episodes) {
+    if (!e.docked) continue;
+    const std::size_t m = static_cast<std::size_t>(std::find(methods.begin(), methods.end(), e.method) - methods.begin());
+    pos[m].push_back(e.position_error_m);
+    heading[m].push_back(e.heading_error_deg);
+    ++counts[m];
+  }
+  const double row_h = 60;
+  const int height = static_cast<int>(130 + row_h * std::max<std::size_t>(methods.size(), 1) + 60);
+  Figure fig(width_px, height);
+  fig.text("Docking errors of the docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text("one dot per episode (spread vertically to be seen); red lines: the gates", 20, 48, 13, palette::kAxis);
+  const double label_w = 260, gap = 60;
+  const double panel_w = (width_px - label_w - gap - 40) / 2.0;
+  const PixelBox left{label_w, 110, label_w + panel_w, 110 + row_h * std::max<std::size_t>(methods.size(), 1)};
+  const PixelBox right{left.right + gap, left.top, left.right + gap + panel_w, left.bottom};
+  method_labels(fig, left, methods, counts);
+  char head[120];
+  std::snprintf(head, sizeof head, "Position error (gate %.0f mm)", 1000 * gates.position_m);
+  strip_panel(fig, left, methods, pos, gates.position_m, head, "mm", 1000.0);
+  std::snprintf(head, sizeof head, "Heading error (gate %.0f deg)", gates.heading_deg);
+  strip_panel(fig, right, methods, heading, gates.heading_deg, head, "deg", 1.0);
+  std::vector<LegendEntry> legend;
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    if (counts[m]) legend.push_back({method_colour(m), methods[m]});
+  if (!legend.empty()) legend.push_back({palette::kCollisionMark, "gate"});
+  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 200);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
+Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px, FigureLayout* layout_out) {
+  const std::vector<std::string> methods = methods_of(episodes);
+  std::vector<std::vector<double>> ratio(methods.size()), times(methods.size());
+  std::vector<std::size_t> counts(methods.size(), 0);
+  for (const auto& e : episodes) {
+    if (!e.docked) continue;
+    const std::size_t m = static_cast<std::size_t>(std::find(methods.begin(), methods.end(), e.method) - methods.begin());
+    if (e.driven_over_optimum > 0) ratio[m].push_back(e.driven_over_optimum);
+    times[m].push_back(e.time_s);
+    ++counts[m];
+  }
+  const int height = 560;
+  Figure fig(width_px, height);
+  fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text("left: share of episodes driving at most x times the exact optimum; right: time to dock", 20, 48, 13,
+           palette::kAxis);
+  const double half = (width_px - 120) / 2.0;
+  const PixelBox left{80, 110, 80 + half - 40, height - 60.0};
+  double hi = 1.1;
+  for (auto& v : ratio) {
+    std::sort(v.begin(), v.end());
+    if (!v.empty()) hi = std::max(hi, v.back() * 1.02);
+  }
+  const Axes a{left, 1.0, hi, 0, 1};
+  x_axis(fig, a, "driven length / optimal length");
+  y_axis(fig, a, 100.0, " %");
+  GlCanvas& c = fig.canvas();
+  std::vector<LegendEntry> legend;
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    if (ratio[m].empty()) continue;
+    std::vector<Vec2> steps{{a.px(1.0), a.py(0)}};
+    for (std::size_t i = 0; i < ratio[m].size(); ++i) {
+      steps.push_back({a.px(ratio[m][i]), steps.back().y});
+      steps.push_back({a.px(ratio[m][i]), a.py(static_cast<double>(i + 1) / ratio[m].size())});
+    }
+    steps.push_back({a.px(hi), steps.back().y});
+    c.pixel_polyline(steps, 2.2, method_colour(m));
+    legend.push_back({method_colour(m), methods[m]});
+  }
+  fig.text("ECDF of driven length over the optimum", left.left, left.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
+  const PixelBox right{80 + half + 180, 110, width_px - 40.0, height - 60.0};
+  method_labels(fig, right, methods, counts);
+  double tmax = 1;
+  for (const auto& v : times)
+    for (double t : v) tmax = std::max(tmax, t * 1.05);
+  std::vector<std::vector<double>> scaled = times;
+  const double row_h = right.height() / std::max<std::size_t>(methods.size(), 1);
+  const Axes b{right, 0, tmax, 0, 1};
+  x_axis(fig, b, "time to dock (s)");
+  c.pixel_line({right.left, right.bottom}, {right.left, right.top}, 1.0, palette::kAxis);
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    for (std::size_t i = 0; i < times[m].size(); ++i) {
+      const double x = b.px(times[m][i]), y = right.top + (m + 0.5) * row_h + 0.3 * row_h * jitter(i);
+      c.pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
+    }
+  fig.text("Time to dock", right.left, right.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
+  fig.legend(20, 76, legend, static_cast<int>(std::max<std::size_t>(legend.size(), 1)), 200);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
+Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
+                         int width_px, int height_px, FigureLayout* layout_out) {
+  Figure fig(width_px, height_px);
+  const double column = width_px - 230.0;
+  const PixelTransform t = fig.world_panel(world.floor, {70, 76, column - 20, height_px - 50.0});
+  GlCanvas& c = fig.canvas();
+  draw_floor(c, world);
+  const bool obstacles = draw_obstacles(c, world);
+  std::size_t docked = 0, failed = 0;
+  for (const EpisodePath& p : paths)
+    if (p.docked && p.points.size() > 1) c.polyline(p.points, 1.2, palette::kTrajectory), ++docked;
+  for (const EpisodePath& p : paths)
+    if (!p.docked && p.points.size() > 1) c.polyline(p.points, 2.2, palette::kFailure), ++failed;
+  const double dot = 3.0 / t.scale;
+  for (const EpisodePath& p : paths)
+    if (!p.points.empty()) c.fill_disk(p.points.front(), dot, palette::kStart);
+  draw_charger(c, world);
+  fig.world_axes(world.floor, t);
+  fig.text(title, 70, 26, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text(std::to_string(paths.size()) + " episodes: " + std::to_string(docked) + " docked, " + std::to_string(failed) +
+               " failed (drawn on top)",
+           70, 46, 13, palette::kAxis);
+  std::vector<LegendEntry> legend;
+  if (obstacles) legend.push_back({palette::kObstacle, "obstacle"});
+  if (obstacles && world.planning_inflation_m() > 0) legend.push_back({palette::kInflation, "margin"});
+  if (docked) legend.push_back({palette::kTrajectory, "docked"});
+  if (failed) legend.push_back({palette::kFailure, "failed"});
+  if (!paths.empty()) legend.push_back({palette::kStart, "starts"});
+  legend.push_back({palette::kCharger, "charger"});
+  fig.legend(column, 100, legend);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
+Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values, const std::vector<RateRow>& rows,
+                       int width_px, FigureLayout* layout_out) {
+  const int height = 560;
+  Figure fig(width_px, height);
+  fig.text("Success against " + parameter, 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text("every value's success rate, its Wilson 95 % band and the gate", 20, 48, 13, palette::kAxis);
+  const PixelBox box{90, 110, width_px - 40.0, height - 70.0};
+  double lo = values.empty() ? 0 : *std::min_element(values.begin(), values.end());
+  double hi = values.empty() ? 1 : *std::max_element(values.begin(), values.end());
+  if (!(hi > lo)) lo -= 0.5, hi += 0.5;
+  const double pad = 0.04 * (hi - lo);
+  const Axes a{box, lo - pad, hi + pad, 0, 1.0};
+  GlCanvas& c = fig.canvas();
+  // The band, one pixel column at a time between consecutive values.
+  for (std::size_t i = 0; i + 1 < values.size() && i + 1 < rows.size(); ++i) {
+    const double x0 = a.px(values[i]), x1 = a.px(values[i + 1]);
+    for (double x = x0; x < x1; x += 1.0) {
+      const double f = (x - x0) / (x1 - x0);
+      const double l = rows[i].low + f * (rows[i + 1].low - rows[i].low), h = rows[i].high + f * (rows[i + 1].high - rows[i].high);
+      c.pixel_line({x + 0.5, a.py(l)}, {x + 0.5, a.py(h)}, 1.0, palette::kPhaseTravel);
+    }
+  }
+  x_axis(fig, a, parameter);
+  y_axis(fig, a, 100.0, " %");
+  std::vector<Vec2> line;
+  double gate = -1;
+  for (std::size_t i = 0; i < values.size() && i < rows.size(); ++i) {
+    const double rate = rows[i].episodes ? static_cast<double>(rows[i].successes) / rows[i].episodes : 0.0;
+    line.push_back({a.px(values[i]), a.py(rate)});
+    gate = std::max(gate, rows[i].gate);
+  }
+  c.pixel_polyline(line, 2.2, palette::kOkabeBlue);
+  for (const Vec2& p : line) c.pixel_line({p.x - 3, p.y}, {p.x + 3, p.y}, 6.0, palette::kOkabeBlue);
+  std::vector<LegendEntry> legend = {{palette::kOkabeBlue, "success rate"}, {palette::kPhaseTravel, "Wilson 95 % band"}};
+  if (gate >= 0) {
+    c.pixel_line({box.left, a.py(gate)}, {box.right, a.py(gate)}, 2.0, palette::kCollisionMark);
+    legend.push_back({palette::kCollisionMark, "gate"});
+  }
+  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 200);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
+}  // namespace plantsim::render

@@ -1,0 +1,61 @@
+// The charts of a batch report: success rate with its Wilson 95 % interval per configuration,
+// strip plots of the docking errors with their gates, the ECDF of driven length over the optimum
+// and the time to dock per method, and success against a swept fault parameter with its band.
+// They take plain outcomes, not the batch's record format: batch/ turns records into these.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/figure.h"
+#include "worlds/world.h"
+
+namespace plantsim::render {
+
+/// One configuration's count of successes.
+struct RateRow {
+  std::string label;
+  long long successes = 0, episodes = 0;
+  double low = 0, high = 1;  ///< Wilson 95 % interval of the success rate
+  double gate = -1;          ///< the threshold it is judged against, if any
+};
+
+/// One episode, as the charts need it.
+struct EpisodeOutcome {
+  std::string method;            ///< planner / controller: the strip, ECDF line and time row it joins
+  bool docked = false;
+  double position_error_m = 0;
+  double heading_error_deg = 0;
+  double driven_over_optimum = -1;  ///< driven length over the exact optimum (< 0: unknown)
+  double time_s = 0;
+};
+
+/// One episode's driven path (thinned) and whether it succeeded.
+struct EpisodePath {
+  std::vector<Vec2> points;
+  bool docked = false;
+};
+
+struct DockingGates {
+  double position_m = 0.02;
+  double heading_deg = 2.0;
+};
+
+/// Horizontal bars of the success rate, whiskers for the interval, a tick at the gate.
+Image draw_success_chart(const std::vector<RateRow>& rows, const std::string& title, int width_px = 1400,
+                         FigureLayout* layout = nullptr);
+/// Position and heading errors of docked episodes, one strip per method, gates as lines.
+Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates, int width_px = 1400,
+                        FigureLayout* layout = nullptr);
+/// ECDF of driven length over the optimum (docked episodes) and time to dock, per method.
+Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
+                            FigureLayout* layout = nullptr);
+/// Every episode's driven path over the world, docked ones thin in blue, failed ones on top in
+/// vermillion, with their starts and the charger.
+Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
+                         int width_px = 1400, int height_px = 900, FigureLayout* layout = nullptr);
+/// Success rate against the swept parameter's values (rows in increasing order), with the band.
+Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values, const std::vector<RateRow>& rows,
+                       int width_px = 1000, FigureLayout* layout = nullptr);
+
+}  // namespace plantsim::render

@@ -1,0 +1,31 @@
+// results/index.html as a dashboard: one table of every run (a thumbnail linking to its report,
+// status, errors, setting, links to each figure), then the comparisons, batches and coverage
+// runs, each a row with its thumbnail and a link. Thumbnails are the figures themselves scaled
+// by the browser to a fixed width: no full-size image walls.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plantsim::render {
+
+struct DashboardRun {
+  std::string folder;                 ///< relative to the dashboard
+  std::string world, setting, status;
+  bool succeeded = false;
+  std::vector<std::string> cells;     ///< the metric cells, in the order of the headers
+  std::vector<std::string> figures;   ///< figure files inside the folder (the first is the thumbnail)
+};
+
+struct DashboardLink {
+  std::string kind;                   ///< "comparison", "batch", "coverage", "chart", "report"
+  std::string title;
+  std::string report;                 ///< relative to the dashboard
+  std::string thumbnail;              ///< relative to the dashboard, may be empty
+  std::string line;                   ///< one line said about it (from its files)
+};
+
+std::string dashboard_html(const std::string& title, const std::vector<std::string>& metric_headers,
+                           const std::vector<DashboardRun>& runs, const std::vector<DashboardLink>& links);
+
+}  // namespace plantsim::render

@@ -1,0 +1,224 @@
+// The run as JSON and the canvas player that draws it (colours from the figures' palette).
+#include "render/replay_html.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/palette.h"
+
+namespace plantsim::render {
+namespace {
+
+using geom::Vec2;
+using nlohmann::json;
+
+double round_to(double v, double step) { return std::round(v / step) * step; }
+
+json rect(const geom::Rect& r) { return {round_to(r.xmin, 1e-3), round_to(r.ymin, 1e-3), round_to(r.xmax, 1e-3), round_to(r.ymax, 1e-3)}; }
+
+json points(const std::vector<Vec2>& pts) {
+  json out = json::array();
+  for (const Vec2& p : pts) out.push_back({round_to(p.x, 1e-3), round_to(p.y, 1e-3)});
+  return out;
+}
+
+std::string css(Rgb c) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buf;
+}
+
+json replay_data(const worlds::World& world, const sim::EpisodeResult& run, const ReplayOptions& o) {
+  json j;
+  j["world"] = world.name;
+  j["floor"] = rect(world.floor);
+  j["obstacles"] = json::array();
+  for (const auto& r : world.obstacles) j["obstacles"].push_back(rect(r));
+  j["unmapped"] = json::array();
+  for (const auto& r : world.unmapped) j["unmapped"].push_back(rect(r));
+  const worlds::ChargerBody cb = worlds::charger_body(world);
+  j["charger"] = {round_to(cb.center.x, 1e-3), round_to(cb.center.y, 1e-3), cb.half_depth_m, cb.half_width_m, cb.yaw};
+  j["dock"] = {world.charger.x, world.charger.y};
+  j["start"] = {world.start.x, world.start.y};
+  j["robot"] = {{"radius", world.robot.radius_m},
+                {"length", world.robot.rectangular() ? world.robot.length_m : 0.0},
+                {"width", world.robot.rectangular() ? world.robot.width_m : 0.0}};
+  j["max_speed"] = world.robot.max_speed_mps;
+  j["plan"] = points(run.plan);
+  j["first_plan"] = run.replans > 0 && run.plan != run.first_plan ? points(run.first_plan) : json::array();
+  const std::size_t n = run.trajectory.size();
+  const std::size_t step = std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
+  json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(), v = json::array(),
+       docking = json::array();
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < n; i += step) kept.push_back(i);
+  if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);  // the end, always
+  for (std::size_t i : kept) {
+    const auto& s = run.trajectory[i];
+    t.push_back(round_to(s.t_s, 1e-3));
+    x.push_back(round_to(s.truth.x, 1e-4));
+    y.push_back(round_to(s.truth.y, 1e-4));
+    yaw.push_back(round_to(s.truth.yaw, 1e-4));
+    v.push_back(round_to(s.speed_mps, 1e-3));
+    docking.push_back(s.phase == controller::DockPhase::kTravel ? 0 : 1);
+  }
+  j["t"] = t;
+  j["x"] = x;
+  j["y"] = y;
+  j["yaw"] = yaw;
+  j["v"] = v;
+  j["docking"] = docking;
+  j["moving"] = json::array();
+  for (const auto& track : run.moving_tracks) {
+    json m;
+    m["t"] = track.t_s;
+    m["boxes"] = json::array();
+    for (const auto& b : track.boxes) m["boxes"].push_back(rect(b));
+    j["moving"].push_back(m);
+  }
+  j["status"] = run.status;
+  j["colours"] = {{"floor", css(palette::kFloor)},       {"obstacle", css(palette::kObstacle)},
+                  {"unmapped", css(palette::kUnmapped)}, {"plan", css(palette::kPlan)},
+                  {"first_plan", css(palette::kFirstPlan)}, {"charger", css(palette::kCharger)},
+                  {"start", css(palette::kStart)},       {"moving", css(palette::kMoving)},
+                  {"robot", css(palette::kRobot)},       {"axis", css(palette::kAxis)}};
+  return j;
+}
+
+// The player: plain JavaScript on a 2D canvas (anti-aliased by the browser).
+constexpr const char* kPlayer = R"JS(
+(function () {
+  const D = JSON.parse(document.getElementById('replay-data').textContent);
+  const canvas = document.getElementById('replay-canvas'), ctx = canvas.getContext('2d');
+  const play = document.getElementById('replay-play'), speedSel = document.getElementById('replay-speed');
+  const slider = document.getElementById('replay-slider'), zoomBox = document.getElementById('replay-zoom');
+  const section = document.getElementById('replay');
+  const C = D.colours, T = D.t, N = T.length, tEnd = N ? T[N - 1] : 0;
+  const cividis = [[0,34,78],[53,69,108],[102,105,112],[148,142,119],[200,184,102],[254,232,56]];
+  function speedColour(v) {
+    let f = Math.min(1, Math.max(0, Math.abs(v) / D.max_speed)) * 5;
+    const i = Math.min(4, Math.floor(f)); f -= i;
+    const a = cividis[i], b = cividis[i + 1];
+    return 'rgb(' + [0, 1, 2].map(k => Math.round(a[k] + f * (b[k] - a[k]))).join(',') + ')';
+  }
+  const dpr = window.devicePixelRatio || 1, W = canvas.width, H = canvas.height;
+  canvas.width = W * dpr; canvas.height = H * dpr; canvas.style.width = W + 'px'; canvas.style.maxWidth = '100%';
+  const legendW = 170, full = D.floor;
+  let view = full.slice(), time = 0, playing = true, last = null, frames = 0;
+  function index(t) { let lo = 0, hi = N - 1; while (lo < hi) { const m = (lo + hi + 1) >> 1; if (T[m] <= t) lo = m; else hi = m - 1; } return lo; }
+  function targetView(i) {
+    if (!zoomBox.checked || !D.docking[i]) return full;
+    const r = 1.5, cx = D.dock[0], cy = D.dock[1];
+    return [cx - r, cy - r, cx + r, cy + r];
+  }
+  function transform() {
+    const w = W - legendW - 20, h = H - 40, s = Math.min(w / (view[2] - view[0]), h / (view[3] - view[1]));
+    const ox = 10 + (w - s * (view[2] - view[0])) / 2, oy = 30 + (h - s * (view[3] - view[1])) / 2;
+    return { s: s, px: x => ox + s * (x - view[0]), py: y => oy + s * (view[3] - y) };
+  }
+  function rect(g, r, fill, stroke) {
+    const x = g.px(r[0]), y = g.py(r[3]), w = g.s * (r[2] - r[0]), h = g.s * (r[3] - r[1]);
+    if (fill) { ctx.fillStyle = fill; ctx.fillRect(x, y, w, h); }
+    if (stroke) { ctx.strokeStyle = stroke; ctx.lineWidth = 2; ctx.strokeRect(x, y, w, h); }
+  }
+  function line(g, pts, colour, width, dash) {
+    if (pts.length < 2) return;
+    ctx.beginPath(); ctx.setLineDash(dash || []); ctx.strokeStyle = colour; ctx.lineWidth = width;
+    pts.forEach((p, k) => k ? ctx.lineTo(g.px(p[0]), g.py(p[1])) : ctx.moveTo(g.px(p[0]), g.py(p[1])));
+    ctx.stroke(); ctx.setLineDash([]);
+  }
+  function movingBox(m, t) {
+    let k = 0; while (k + 1 < m.t.length && m.t[k + 1] <= t) k++;
+    return m.boxes[k];
+  }
+  function draw() {
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.fillStyle = '#fff'; ctx.fillRect(0, 0, W, H);
+    const i = index(time), g = transform();
+    ctx.save(); ctx.beginPath(); ctx.rect(10, 30, W - legendW - 20, H - 40); ctx.clip();
+    rect(g, full, C.floor, C.axis);
+    D.obstacles.forEach(r => rect(g, r, C.obstacle));
+    D.unmapped.forEach(r => rect(g, r, null, C.unmapped));
+    line(g, D.first_plan, C.first_plan, 1.5, [6, 5]);
+    for (let k = 1; k <= i; k++) {
+      ctx.beginPath(); ctx.strokeStyle = speedColour(D.v[k]); ctx.lineWidth = 4; ctx.lineCap = 'round';
+      ctx.moveTo(g.px(D.x[k - 1]), g.py(D.y[k - 1])); ctx.lineTo(g.px(D.x[k]), g.py(D.y[k])); ctx.stroke();
+    }
+    line(g, D.plan, C.plan, 1.5);
+    D.moving.forEach(m => { if (m.t.length) rect(g, movingBox(m, time), C.moving, C.axis); });
+    const cb = D.charger;
+    ctx.save(); ctx.translate(g.px(cb[0]), g.py(cb[1])); ctx.rotate(-cb[4]);
+    ctx.fillStyle = C.charger; ctx.fillRect(-g.s * cb[2], -g.s * cb[3], 2 * g.s * cb[2], 2 * g.s * cb[3]); ctx.restore();
+    ctx.fillStyle = C.start; ctx.beginPath(); ctx.arc(g.px(D.start[0]), g.py(D.start[1]), 5, 0, 2 * Math.PI); ctx.fill();
+    if (N) {  // the robot: footprint and heading, never under 8 px across
+      const x = g.px(D.x[i]), y = g.py(D.y[i]), a = D.yaw[i];
+      const grow = Math.max(1, 4 / (g.s * D.robot.radius));
+      ctx.save(); ctx.translate(x, y); ctx.rotate(-a); ctx.strokeStyle = C.robot; ctx.lineWidth = 2;
+      ctx.beginPath();
+      if (D.robot.length > 0) ctx.rect(-g.s * grow * D.robot.length / 2, -g.s * grow * D.robot.width / 2, g.s * grow * D.robot.length, g.s * grow * D.robot.width);
+      else ctx.arc(0, 0, g.s * grow * D.robot.radius, 0, 2 * Math.PI);
+      ctx.moveTo(0, 0); ctx.lineTo(g.s * grow * (D.robot.length > 0 ? D.robot.length / 2 : D.robot.radius), 0);
+      ctx.stroke(); ctx.restore();
+    }
+    ctx.restore();
+    // Clock and legend.
+    ctx.fillStyle = C.axis; ctx.font = 'bold 15px DejaVu Sans, sans-serif';
+    ctx.fillText(D.world + '   t = ' + time.toFixed(1) + ' s of ' + tEnd.toFixed(1) + ' s   ' +
+                 (N && D.docking[i] ? 'docking' : 'travel') + '   ' + speedSel.value + 'x', 10, 20);
+    const items = [['plan', C.plan], ['driven (speed)', speedColour(D.max_speed * 0.6)], ['robot', C.robot],
+                   ['charger', C.charger], ['start', C.start]];
+    if (D.obstacles.length) items.push(['obstacle', C.obstacle]);
+    if (D.first_plan.length) items.push(['first plan', C.first_plan]);
+    if (D.moving.length) items.push(['moving', C.moving]);
+    if (D.unmapped.length) items.push(['not on map', C.unmapped]);
+    ctx.font = '13px DejaVu Sans, sans-serif';
+    items.forEach((it, k) => {
+      const y = 50 + 20 * k; ctx.fillStyle = it[1]; ctx.fillRect(W - legendW, y - 8, 22, 6);
+      ctx.fillStyle = C.axis; ctx.fillText(it[0], W - legendW + 30, y);
+    });
+    frames++;
+    section.dataset.replayFrames = frames; section.dataset.replayTime = time.toFixed(3);
+    slider.value = tEnd > 0 ? Math.round(1000 * time / tEnd) : 0;
+  }
+  // Frames at 30 per second by timer (a hidden tab slows it; a headless test's virtual clock
+  // runs it), each advancing the replay by the real time elapsed times the chosen speed.
+  function tick() {
+    const now = performance.now();
+    if (last !== null && playing) {
+      time += (now - last) / 1000 * parseFloat(speedSel.value);
+      if (time >= tEnd) { time = tEnd; playing = false; play.textContent = 'play'; }
+    }
+    last = now;
+    const goal = targetView(index(time)), f = 0.08;  // ease into and out of the docking close-up
+    view = view.map((v, k) => v + f * (goal[k] - v));
+    draw();
+    setTimeout(tick, 1000 / 30);
+  }
+  play.onclick = () => { if (time >= tEnd) time = 0; playing = !playing; play.textContent = playing ? 'pause' : 'play'; };
+  slider.oninput = () => { time = tEnd * slider.value / 1000; };
+  tick();
+})();
+)JS";
+
+}  // namespace
+
+std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run, const ReplayOptions& o) {
+  std::string data = replay_data(world, run, o).dump();
+  // Inside a script element "</" could end it early.
+  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) data.replace(at, 2, "<\\/");
+  std::string h = "<section id=\"replay\" data-replay-frames=\"0\">\n<h2>Replay</h2>\n";
+  h += "<canvas id=\"replay-canvas\" width=\"" + std::to_string(o.width_px) + "\" height=\"" + std::to_string(o.height_px) +
+       "\"></canvas>\n";
+  h += "<p><button id=\"replay-play\">pause</button> speed <select id=\"replay-speed\"><option>0.5</option>"
+       "<option>1</option><option>2</option><option selected>4</option><option>8</option><option>16</option></select> "
+       "<input id=\"replay-slider\" type=\"range\" min=\"0\" max=\"1000\" value=\"0\" style=\"width:50%\"> "
+       "<label><input id=\"replay-zoom\" type=\"checkbox\" checked> zoom on the docking</label></p>\n";
+  h += "<script type=\"application/json\" id=\"replay-data\">" + data + "</script>\n";
+  h += std::string("<script>") + kPlayer + "</script>\n</section>\n";
+  return h;
+}
+
+}  // namespace plantsim::render

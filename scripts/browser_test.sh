@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The reports as a browser shows them: a run report (with its replay), a batch report, a
+# comparison and the dashboard linking them are made in a scratch folder and opened in headless
+# Chromium. Fails when any image does not load (data-images-loaded on <html>, set by the page
+# after its load event) or when the replay does not advance (data-replay-frames and
+# data-replay-time on its section). Usage: scripts/browser_test.sh BUILD_DIR
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(cd "${1:?usage: browser_test.sh BUILD_DIR}" && pwd)"
+plantsim="$build/plantsim"
+browser="$(command -v chromium || command -v chromium-browser || true)"
+if [ -z "$browser" ]; then
+  echo "browser_test: chromium is not installed (./scripts/install_deps.sh test installs it)" >&2
+  exit 1
+fi
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
+"$plantsim" run "$root/worlds/examples/corridor_crossing.json" --out run > /dev/null
+"$plantsim" batch "$root/tests/fixtures/browser_batch.yaml" --out batch --quiet > /dev/null
+"$plantsim" compare "$root/worlds/examples/small_plant.json" --planners vg,grid --plan-only --out compare > /dev/null
+"$plantsim" summarize run --html index.html --link batch/report.html --link compare/report.html > /dev/null
+
+dom() {  # the page's DOM after its scripts ran for 4 s of virtual time
+  "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
+    --user-data-dir="$scratch/profile" --virtual-time-budget=4000 --dump-dom "file://$scratch/$1" 2> /dev/null
+}
+status=0
+all_loaded='^data-images-loaded="all ([0-9]+)"$'
+for page in index.html run/report.html batch/report.html compare/report.html; do
+  html="$(dom "$page")"
+  loaded="$(grep -o 'data-images-loaded="[^"]*"' <<< "$html" | head -1 || true)"
+  if [[ "$loaded" =~ $all_loaded ]] && [ "${BASH_REMATCH[1]}" -gt 0 ]; then
+    echo "browser_test: $page: ${BASH_REMATCH[1]} images loaded"
+  else
+    echo "browser_test: FAIL $page: images not all loaded (${loaded:-no marker: the page script did not run})" >&2
+    status=1
+  fi
+done
+html="$(dom run/report.html)"
+frames="$(grep -o 'data-replay-frames="[0-9]*"' <<< "$html" | grep -o '[0-9]\+' || echo 0)"
+time_s="$(grep -o 'data-replay-time="[0-9.]*"' <<< "$html" | grep -o '[0-9.]\+' || echo 0)"
+if [ "${frames:-0}" -ge 10 ] && awk -v t="$time_s" 'BEGIN { exit !(t > 0) }'; then
+  echo "browser_test: the replay advanced: $frames frames drawn, at t = $time_s s"
+else
+  echo "browser_test: FAIL the replay did not advance (frames ${frames:-none}, time ${time_s:-none})" >&2
+  status=1
+fi
+exit $status

@@ -1,0 +1,238 @@
+// Every figure type against its own data: the legend lists exactly what is drawn (each entry's
+// colour in the picture, each layer the run has in the legend, nothing it lacks), titles say what
+// summary.json says, and no text overlaps another or leaves the canvas.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "figure_checks.h"
+#include "planner/planner.h"
+#include "render/batch_charts.h"
+#include "planner/coverage_planner.h"
+#include "render/comparison_figure.h"
+#include "render/coverage_figure.h"
+#include "render/palette.h"
+#include "render/png_io.h"
+#include "render/run_figure.h"
+#include "sim/episode.h"
+#include "sim/episode_json.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::render {
+namespace {
+
+struct Case {
+  worlds::World world;
+  sim::EpisodeResult run;
+};
+
+Case simulate(const std::string& file, sim::TravelMode travel = sim::TravelMode::kPath) {
+  Case c{worlds::load_world(file), {}};
+  auto p = planner::make_planner("vg", planner::planner_input(c.world, true));
+  sim::EpisodeConfig config;
+  config.travel = travel;
+  c.run = sim::run_episode(c.world, *p, config);
+  return c;
+}
+
+void keep(const Image& img, const std::string& name) {
+  if (std::getenv("PLANTSIM_KEEP")) write_png(img, "/tmp/" + name + ".png");
+}
+
+std::string format(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// The subtitle carries summary.json's numbers, as summary.json has them.
+void expect_title_matches_summary(const FigureLayout& layout, const sim::EpisodeResult& run) {
+  nlohmann::ordered_json j;
+  sim::add_episode_metrics(j, run);
+  std::string sub;
+  for (const std::string& s : layout.texts)
+    if (s.find("  |  planned ") != std::string::npos) sub = s;
+  ASSERT_FALSE(sub.empty());
+  EXPECT_EQ(sub.rfind(j["status"].get<std::string>() + ",", 0), 0u) << sub;
+  if (run.error_measured) {
+    EXPECT_NE(sub.find(format("error %.1f cm", 100 * j["position_error_m"].get<double>())), std::string::npos) << sub;
+  } else {
+    EXPECT_NE(sub.find("error n/a"), std::string::npos) << sub;
+  }
+  EXPECT_NE(sub.find(std::to_string(j["collisions"].get<int>()) + " collisions"), std::string::npos) << sub;
+  EXPECT_NE(sub.find(format("planned %.2f m", j["path_length_m"].get<double>())), std::string::npos) << sub;
+  EXPECT_NE(sub.find(format("driven %.2f m", j["driven_length_m"].get<double>())), std::string::npos) << sub;
+}
+
+TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingCloseUp) {
+  const Case c = simulate(test::source_file("worlds/examples/parked_cart.json"));
+  ASSERT_TRUE(c.run.docked);
+  ASSERT_GT(c.run.replans, 0);
+  FigureLayout layout;
+  PixelTransform t;
+  const Image img = draw_run_figure(c.world, c.run, {}, &t, &layout);
+  keep(img, "layout_parked_cart");
+  test::expect_sound_layout(img, layout, "parked_cart run figure");
+  expect_title_matches_summary(layout, c.run);
+  for (const char* label : {"first plan", "final plan", "replan", "moving (swept)", "driven (speed)", "start", "charger"})
+    EXPECT_TRUE(test::has_legend(layout, label)) << label;
+  // Absent things are not listed.
+  for (const char* label : {"wall following", "target", "collision", "not on map", "plan", "explored", "graph"})
+    EXPECT_FALSE(test::has_legend(layout, label)) << label;
+  // The final plan shows over the driven path along its length (it is drawn on top).
+  int seen = 0, checked = 0;
+  for (std::size_t i = 0; i + 1 < c.run.plan.size(); ++i)
+    for (double f : {0.3, 0.5, 0.7}) {
+      const Vec2 p = t.to_pixel(c.run.plan[i] + f * (c.run.plan[i + 1] - c.run.plan[i]));
+      ++checked;
+      bool near = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const Rgb px = img.at(static_cast<int>(p.x) + dx, static_cast<int>(p.y) + dy);
+          near = near || (std::abs(px.r - palette::kPlan.r) < 30 && std::abs(px.g - palette::kPlan.g) < 30 &&
+                          std::abs(px.b - palette::kPlan.b) < 30);
+        }
+      seen += near;
+    }
+  EXPECT_GE(seen, checked * 9 / 10);
+  // The close-up is there, inside the canvas, with the pose at contact.
+  ASSERT_EQ(layout.insets.size(), 1u);
+  EXPECT_LE(layout.insets[0].bottom, img.height);
+  bool contact_line = false;
+  for (const std::string& s : layout.texts) contact_line = contact_line || s.rfind("at contact: 0.", 0) == 0;
+  EXPECT_TRUE(contact_line);
+}
+
+TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
+  const Case c =
+      simulate(test::source_file("worlds/scenarios/seed001_slow_target.json"), sim::TravelMode::kPotentialField);
+  ASSERT_TRUE(c.run.caught);
+  FigureLayout layout;
+  const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
+  keep(img, "layout_pursuit");
+  test::expect_sound_layout(img, layout, "pursuit run figure");
+  expect_title_matches_summary(layout, c.run);
+  EXPECT_TRUE(test::has_legend(layout, "target"));
+  EXPECT_EQ(test::has_legend(layout, "wall following"), c.run.wall_follows > 0);
+  EXPECT_TRUE(layout.insets.empty()) << "no docking close-up for a pursuit";
+
+  FigureLayout plots;
+  const Image tp = draw_time_plots(c.world, c.run, 1280, 1000, &plots);
+  keep(tp, "layout_pursuit_time");
+  test::expect_sound_layout(tp, plots, "pursuit time plots");
+}
+
+TEST(FigureLayout, TimePlotsShadePhasesAndKeepLabelsOnTheCanvas) {
+  const Case c = simulate(test::shared_data("worlds/world_N10.json"));
+  ASSERT_TRUE(c.run.docked);
+  FigureLayout layout;
+  const Image img = draw_time_plots(c.world, c.run, 1280, 1000, &layout);
+  keep(img, "layout_time");
+  test::expect_sound_layout(img, layout, "time plots");
+  EXPECT_TRUE(test::has_legend(layout, "travel"));
+  EXPECT_TRUE(test::has_legend(layout, "docking"));
+  bool time_label = false;
+  for (const std::string& s : layout.texts) time_label = time_label || s == "time (s)";
+  EXPECT_TRUE(time_label);
+}
+
+TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndTheExactFallBack) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  std::vector<std::unique_ptr<planner::CoveragePlanner>> planners;
+  std::vector<CoveragePanel> panels;
+  for (const char* name : {"coverage", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
+    planners.push_back(std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), planner::coverage_method(name)));
+    ASSERT_EQ(planners.back()->plan(w.start.position(), worlds::staging_pose(w).position()).status, planner::PlanStatus::kOk);
+    panels.push_back({name, &planners.back()->grid(), planners.back()->last_plan(), {}, ""});
+  }
+  FigureLayout layout;
+  const Image img = draw_coverage(w, panels, "coverage", 1600, 560, &layout);
+  keep(img, "layout_coverage");
+  test::expect_sound_layout(img, layout, "coverage");
+  for (const char* label : {"covered once", "coverage path", "sub-region, order", "start", "charger"})
+    EXPECT_TRUE(test::has_legend(layout, label)) << label;
+  EXPECT_FALSE(test::has_legend(layout, "driven"));
+}
+
+TEST(FigureLayout, LongNamesAreShortenedInsideTheCanvas) {
+  Case c = simulate(test::shared_data("worlds/world_N10.json"));
+  c.world.name = std::string(120, 'w') + "_\u4e2d\u6587";
+  RunFigureOptions o;
+  o.setting = "episode " + std::string(200, 's');
+  FigureLayout layout;
+  const Image img = draw_run_figure(c.world, c.run, o, nullptr, &layout);
+  test::expect_sound_layout(img, layout, "long names");
+}
+
+TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
+  const Case c = simulate(test::shared_data("worlds/world_N10.json"));
+  std::vector<ComparisonPanel> panels;
+  for (const char* name : {"vg", "vg-traditional", "grid", "gcr"}) {
+    auto p = planner::make_planner(name, planner::planner_input(c.world, true));
+    sim::EpisodeResult r;
+    const planner::PlanResult plan = p->plan(c.world.start.position(), worlds::staging_pose(c.world).position());
+    r.planner = name;
+    r.plan = plan.path;
+    r.path_length_m = plan.length;
+    r.plan_stats = plan.stats;
+    r.status = "planned";
+    panels.push_back({name, r, {}, false});
+  }
+  panels[0] = {"vg", c.run, {}, true};
+  FigureLayout layout;
+  const Image img = draw_comparison(c.world, panels, "four planners", 1800, 640, &layout);
+  keep(img, "layout_comparison");
+  test::expect_sound_layout(img, layout, "comparison");
+  EXPECT_EQ(img.height, 110 + 2 * 640) << "two rows of two";
+  for (const char* label : {"plan", "driven (speed)", "start", "charger", "obstacle"})
+    EXPECT_TRUE(test::has_legend(layout, label)) << label;
+  // No panel line boasts a meaningless graph size.
+  for (const std::string& s : layout.texts) EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
+}
+
+TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
+  // Two configurations, one below its gate; two methods with docked and failed episodes.
+  const std::vector<RateRow> rates = {{"w / vg / pp / dry", 19, 20, 0.76, 0.99, 0.9},
+                                      {"w / vg / pp / wet", 12, 20, 0.39, 0.78, 0.9}};
+  FigureLayout layout;
+  Image img = draw_success_chart(rates, "test batch", 1400, &layout);
+  keep(img, "layout_success");
+  test::expect_sound_layout(img, layout, "success chart");
+  EXPECT_TRUE(test::has_legend(layout, "success rate (below gate)"));
+  EXPECT_TRUE(test::has_legend(layout, "success rate (meets gate)"));
+  EXPECT_TRUE(test::has_legend(layout, "gate"));
+  EXPECT_TRUE(test::has_legend(layout, "Wilson 95 %"));
+
+  std::vector<EpisodeOutcome> episodes;
+  for (int i = 0; i < 40; ++i) {
+    EpisodeOutcome e;
+    e.method = i % 2 ? "vg / pure-pursuit / dry" : "gcr / pure-pursuit / dry";
+    e.docked = i % 7 != 0;
+    e.position_error_m = 0.001 * (i % 15);
+    e.heading_error_deg = 0.1 * (i % 12);
+    e.driven_over_optimum = 1.0 + 0.01 * i;
+    e.time_s = 60 + i;
+    episodes.push_back(e);
+  }
+  img = draw_error_strips(episodes, {}, 1400, &layout);
+  keep(img, "layout_errors");
+  test::expect_sound_layout(img, layout, "error strips");
+  EXPECT_TRUE(test::has_legend(layout, "vg / pure-pursuit / dry"));
+  EXPECT_TRUE(test::has_legend(layout, "gcr / pure-pursuit / dry"));
+  img = draw_efficiency_chart(episodes, 1400, &layout);
+  keep(img, "layout_efficiency");
+  test::expect_sound_layout(img, layout, "efficiency chart");
+  EXPECT_EQ(layout.legend.size(), 2u);
+  img = draw_sweep_chart("friction", {0.05, 0.1, 0.3}, {{"0.05", 7, 10, 0.4, 0.9, 0.9}, {"0.1", 9, 10, 0.6, 0.98, 0.9},
+                                                         {"0.3", 10, 10, 0.72, 1.0, 0.9}},
+                         1000, &layout);
+  keep(img, "layout_sweep");
+  test::expect_sound_layout(img, layout, "sweep chart");
+  EXPECT_TRUE(test::has_legend(layout, "Wilson 95 % band"));
+}
+
+}  // namespace
+}  // namespace plantsim::render

@@ -1,0 +1,15 @@
+// RFC 4180 CSV fields: quoting a field for writing and splitting a line for reading.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plantsim::util {
+
+/// The field as written: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& s);
+
+/// The fields of one line (no line breaks inside quoted fields expected).
+std::vector<std::string> csv_split(const std::string& line);
+
+}  // namespace plantsim::util
