@@ -197,7 +197,10 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
         panels.push_back(panel);
       }
       const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
-      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world file's start (not an episode's)"),
+      // One panel needs no 1800-pixel canvas.
+      const int width = panels.size() == 1 ? 1000 : panels.size() == 2 ? 1500 : 1800;
+      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world file's start (not an episode's)",
+                                                width),
                         out_dir + "/" + file, render::PngSettings::fast());
       report.figures.push_back({file, w.name + ": each planner's plan from the world file's start to the staging pose "
                                                "(episodes start from random poses)"});

@@ -13,6 +13,8 @@
 namespace plantsim::render {
 namespace {
 
+constexpr Rgb kBand{185, 212, 238};  // a light tint of the success line's blue
+
 /// A data range mapped into a pixel box (row 0 at the top).
 struct Axes {
   PixelBox box;
@@ -296,7 +298,7 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
     for (double x = x0; x < x1; x += 1.0) {
       const double f = (x - x0) / (x1 - x0);
       const double l = rows[i].low + f * (rows[i + 1].low - rows[i].low), h = rows[i].high + f * (rows[i + 1].high - rows[i].high);
-      c.pixel_line({x + 0.5, a.py(l)}, {x + 0.5, a.py(h)}, 1.0, palette::kPhaseTravel);
+      c.pixel_line({x + 0.5, a.py(l)}, {x + 0.5, a.py(h)}, 1.0, kBand);
     }
   }
   x_axis(fig, a, parameter);
@@ -310,7 +312,7 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
   }
   c.pixel_polyline(line, 2.2, palette::kOkabeBlue);
   for (const Vec2& p : line) c.pixel_line({p.x - 3, p.y}, {p.x + 3, p.y}, 6.0, palette::kOkabeBlue);
-  std::vector<LegendEntry> legend = {{palette::kOkabeBlue, "success rate"}, {palette::kPhaseTravel, "Wilson 95 % band"}};
+  std::vector<LegendEntry> legend = {{palette::kOkabeBlue, "success rate"}, {kBand, "Wilson 95 % band"}};
   if (gate >= 0) {
     c.pixel_line({box.left, a.py(gate)}, {box.right, a.py(gate)}, 2.0, palette::kCollisionMark);
     legend.push_back({palette::kCollisionMark, "gate"});

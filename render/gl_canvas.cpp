@@ -216,6 +216,19 @@ Image GlCanvas::read() const {
       std::memcpy(img.rgba.data() + row * row_bytes, src + static_cast<std::size_t>(height_ - 1 - row) * row_bytes, row_bytes);
     return img;
   }
+  if (ss_ == 2) {  // the usual case: a 2x2 box filter over whole rows, no per-channel loops
+    for (int row = 0; row < height_; ++row) {
+      const std::uint8_t* a = src + static_cast<std::size_t>((height_ - 1 - row) * 2) * w * 4;
+      const std::uint8_t* b = a + static_cast<std::size_t>(w) * 4;
+      std::uint8_t* out = img.rgba.data() + static_cast<std::size_t>(row) * width_ * 4;
+      for (int col = 0; col < width_; ++col, a += 8, b += 8, out += 4) {
+        out[0] = static_cast<std::uint8_t>((a[0] + a[4] + b[0] + b[4] + 2) >> 2);
+        out[1] = static_cast<std::uint8_t>((a[1] + a[5] + b[1] + b[5] + 2) >> 2);
+        out[2] = static_cast<std::uint8_t>((a[2] + a[6] + b[2] + b[6] + 2) >> 2);
+      }
+    }
+    return img;
+  }
   const int n = ss_ * ss_;
   for (int row = 0; row < height_; ++row) {
     const int gl_row0 = (height_ - 1 - row) * ss_;  // OSMesa rows start at the bottom

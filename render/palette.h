@@ -35,7 +35,7 @@ inline constexpr Rgb kAxis{40, 40, 48};
 inline constexpr Rgb kFootprint{120, 120, 130};
 inline constexpr Rgb kTarget = kOkabeReddishPurple;  ///< a moving target and its track
 inline constexpr Rgb kExplored{150, 130, 90};        ///< a hand-rule exploration walk
-inline constexpr Rgb kWallFollow = kOkabeYellow;     ///< potential-field travel while following a wall
+inline constexpr Rgb kWallFollow{215, 185, 240};    ///< potential-field travel while following a wall (band; not the speed scale's yellow)
 inline constexpr Rgb kScan{120, 120, 120};           ///< lidar returns the map explains (dots)
 inline constexpr Rgb kScanOffMap{150, 0, 90};        ///< lidar returns it does not (tracked obstacles)
 inline constexpr Rgb kTracked{0, 0, 0};              ///< boxes of the tracked obstacles (outlines)

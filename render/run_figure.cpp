@@ -122,9 +122,17 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
   c.set_clip(lo.x, hi.y, hi.x, lo.y);
   c.fill_rect(view, palette::kBackground);
-  draw_floor(c, world);
-  draw_obstacles(c, world);
-  draw_unmapped(c, world);
+  // Only what the close-up shows: a thousand-obstacle plant need not be drawn twice.
+  worlds::World near = world;
+  const geom::Rect reach = view.inflated(world.planning_inflation_m());
+  auto outside = [&](const geom::Rect& r) {
+    return r.xmax < reach.xmin || r.xmin > reach.xmax || r.ymax < reach.ymin || r.ymin > reach.ymax;
+  };
+  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside), near.obstacles.end());
+  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside), near.unmapped.end());
+  draw_floor(c, near);
+  draw_obstacles(c, near);
+  draw_unmapped(c, near);
   // The tolerance: the band of centres within it, 0.3 m along the approach axis up to the dock.
   const geom::Pose2& dock = world.charger;
   const Vec2 along = dock.heading(), across{-along.y, along.x};

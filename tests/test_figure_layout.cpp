@@ -13,6 +13,7 @@
 #include "planner/coverage_planner.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"
+#include "render/scaling_chart.h"
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/run_figure.h"
@@ -232,6 +233,26 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   keep(img, "layout_sweep");
   test::expect_sound_layout(img, layout, "sweep chart");
   EXPECT_TRUE(test::has_legend(layout, "Wilson 95 % band"));
+
+  // Every episode's path: failures listed only when there are some, and drawn on top.
+  const worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
+  const Vec2 a = w.start.position(), b = w.charger.position();
+  std::vector<EpisodePath> paths = {{{a, 0.5 * (a + b), b}, true}};
+  img = draw_episode_paths(w, paths, "paths", 1400, 900, &layout);
+  test::expect_sound_layout(img, layout, "episode paths");
+  EXPECT_TRUE(test::has_legend(layout, "docked"));
+  EXPECT_FALSE(test::has_legend(layout, "failed"));
+  paths.push_back({{a, a + Vec2{5, 5}}, false});
+  img = draw_episode_paths(w, paths, "paths", 1400, 900, &layout);
+  keep(img, "layout_paths");
+  test::expect_sound_layout(img, layout, "episode paths with a failure");
+  EXPECT_TRUE(test::has_legend(layout, "failed"));
+
+  img = draw_scaling_chart({{"vg", {10, 100, 1000}, {0.03, 2, 16}}, {"grid", {10, 100, 1000}, {19, 13, 15}}}, "time",
+                           "subtitle", "obstacles", "time (ms)", 1100, 700, &layout);
+  keep(img, "layout_scaling");
+  test::expect_sound_layout(img, layout, "scaling chart");
+  EXPECT_EQ(layout.legend.size(), 2u);
 }
 
 }  // namespace
