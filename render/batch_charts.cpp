@@ -93,8 +93,8 @@ void method_labels(Figure& fig, const PixelBox& box, const std::vector<std::stri
                    const std::vector<std::size_t>& counts) {
   const double row_h = box.height() / std::max<std::size_t>(methods.size(), 1);
   for (std::size_t m = 0; m < methods.size(); ++m)
-    fig.text(methods[m] + " (" + std::to_string(counts[m]) + ")", box.left - 8, box.top + (m + 0.5) * row_h + 4, 12,
-             method_colour(m), Anchor::kRight);
+    fig.text(fig.fit(methods[m] + " (" + std::to_string(counts[m]) + ")", 12, box.left - 16), box.left - 8,
+             box.top + (m + 0.5) * row_h + 4, 12, method_colour(m), Anchor::kRight);
 }
 
 }  // namespace
@@ -106,7 +106,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   const double row_h = 22;
   const int height = static_cast<int>(120 + row_h * std::max<std::size_t>(rows.size(), 1) + 60);
   Figure fig(width_px, height);
-  fig.text(title, 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text_fitted(title, 20, 28, 18, palette::kAxis, width_px - 40.0, true);
   std::string sub = "success rate per configuration with its Wilson 95 % interval";
   if (all_rows.size() > rows.size())
     sub += " (first " + std::to_string(rows.size()) + " of " + std::to_string(all_rows.size()) + " configurations)";
@@ -131,7 +131,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
       any_gate = true;
       c.pixel_line({a.px(r.gate), y - 0.5 * row_h}, {a.px(r.gate), y + 0.5 * row_h}, 2.0, palette::kOkabeBlack);
     }
-    fig.text(r.label, box.left - 10, y + 4, 12, palette::kAxis, Anchor::kRight);
+    fig.text(fig.fit(r.label, 12, box.left - 20), box.left - 10, y + 4, 12, palette::kAxis, Anchor::kRight);
     fig.text(std::to_string(r.successes) + "/" + std::to_string(r.episodes), box.right + 8, y + 4, 12, palette::kAxis);
   }
   std::vector<LegendEntry> legend;
@@ -172,11 +172,8 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   strip_panel(fig, left, methods, pos, gates.position_m, head, "mm", 1000.0);
   std::snprintf(head, sizeof head, "Heading error (gate %.0f deg)", gates.heading_deg);
   strip_panel(fig, right, methods, heading, gates.heading_deg, head, "deg", 1.0);
-  std::vector<LegendEntry> legend;
-  for (std::size_t m = 0; m < methods.size(); ++m)
-    if (counts[m]) legend.push_back({method_colour(m), methods[m]});
-  if (!legend.empty()) legend.push_back({palette::kCollisionMark, "gate"});
-  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 200);
+  // Each row is named in its dots' colour; the legend says what the red lines are.
+  fig.legend(20, 76, {{palette::kCollisionMark, "gate"}}, 1, 200);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;
@@ -193,13 +190,18 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
     times[m].push_back(e.time_s);
     ++counts[m];
   }
-  const int height = 560;
+  // The legend names every method's ECDF line, six a row.
+  std::size_t listed = 0;
+  for (const auto& v : ratio) listed += !v.empty();
+  const int legend_rows = static_cast<int>((std::max<std::size_t>(listed, 1) + 5) / 6);
+  const double top = 110 + 19.0 * (legend_rows - 1);
+  const int height = static_cast<int>(560 + top - 110);
   Figure fig(width_px, height);
   fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
   fig.text("left: share of episodes driving at most x times the exact optimum; right: time to dock", 20, 48, 13,
            palette::kAxis);
   const double half = (width_px - 120) / 2.0;
-  const PixelBox left{80, 110, 80 + half - 40, height - 60.0};
+  const PixelBox left{80, top, 80 + half - 40, height - 60.0};
   double hi = 1.1;
   for (auto& v : ratio) {
     std::sort(v.begin(), v.end());
@@ -222,7 +224,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
     legend.push_back({method_colour(m), methods[m]});
   }
   fig.text("ECDF of driven length over the optimum", left.left, left.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
-  const PixelBox right{80 + half + 180, 110, width_px - 40.0, height - 60.0};
+  const PixelBox right{80 + half + 180, top, width_px - 40.0, height - 60.0};
   method_labels(fig, right, methods, counts);
   double tmax = 1;
   for (const auto& v : times)
@@ -238,7 +240,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
       c.pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
     }
   fig.text("Time to dock", right.left, right.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
-  fig.legend(20, 76, legend, static_cast<int>(std::max<std::size_t>(legend.size(), 1)), 200);
+  fig.legend(20, 76, legend, std::max(1, std::min(6, static_cast<int>(legend.size()))), (width_px - 40.0) / 6);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;
@@ -252,20 +254,36 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   GlCanvas& c = fig.canvas();
   draw_floor(c, world);
   const bool obstacles = draw_obstacles(c, world);
-  std::size_t docked = 0, failed = 0;
-  for (const EpisodePath& p : paths)
-    if (p.docked && p.points.size() > 1) c.polyline(p.points, 1.2, palette::kTrajectory), ++docked;
-  for (const EpisodePath& p : paths)
-    if (!p.docked && p.points.size() > 1) c.polyline(p.points, 2.2, palette::kFailure), ++failed;
+  // At most kMaxDrawn of each kind, evenly chosen: a figure's cost must not grow with a
+  // million-episode batch.
+  constexpr std::size_t kMaxDrawn = 2000;
+  std::vector<const EpisodePath*> ok, bad;
+  for (const EpisodePath& p : paths) (p.docked ? ok : bad).push_back(&p);
+  auto chosen = [](const std::vector<const EpisodePath*>& all) {
+    std::vector<const EpisodePath*> out;
+    const std::size_t step = (all.size() + kMaxDrawn - 1) / kMaxDrawn;
+    for (std::size_t i = 0; i < all.size(); i += std::max<std::size_t>(step, 1)) out.push_back(all[i]);
+    return out;
+  };
+  const std::vector<const EpisodePath*> ok_drawn = chosen(ok), bad_drawn = chosen(bad);
+  const std::size_t docked = ok.size(), failed = bad.size();
+  for (const EpisodePath* p : ok_drawn)
+    if (p->points.size() > 1) c.polyline(p->points, 1.2, palette::kTrajectory);
+  for (const EpisodePath* p : bad_drawn)
+    if (p->points.size() > 1) c.polyline(p->points, 2.2, palette::kFailure);
   const double dot = 3.0 / t.scale;
-  for (const EpisodePath& p : paths)
-    if (!p.points.empty()) c.fill_disk(p.points.front(), dot, palette::kStart);
+  for (const auto* set : {&ok_drawn, &bad_drawn})
+    for (const EpisodePath* p : *set)
+      if (!p->points.empty()) c.fill_disk(p->points.front(), dot, palette::kStart);
   draw_charger(c, world);
   fig.world_axes(world.floor, t);
-  fig.text(title, 70, 26, 18, palette::kAxis, Anchor::kLeft, true);
-  fig.text(std::to_string(paths.size()) + " episodes: " + std::to_string(docked) + " docked, " + std::to_string(failed) +
-               " failed (drawn on top)",
-           70, 46, 13, palette::kAxis);
+  fig.text_fitted(title, 70, 26, 18, palette::kAxis, width_px - 90.0, true);
+  std::string sub = std::to_string(paths.size()) + " episodes: " + std::to_string(docked) + " docked, " +
+                    std::to_string(failed) + " failed (drawn on top)";
+  if (ok_drawn.size() < ok.size() || bad_drawn.size() < bad.size())
+    sub += "; drawn: " + std::to_string(ok_drawn.size()) + " docked and " + std::to_string(bad_drawn.size()) +
+           " failed, evenly chosen";
+  fig.text_fitted(sub, 70, 46, 13, palette::kAxis, width_px - 90.0);
   std::vector<LegendEntry> legend;
   if (obstacles) legend.push_back({palette::kObstacle, "obstacle"});
   if (obstacles && world.planning_inflation_m() > 0) legend.push_back({palette::kInflation, "margin"});
@@ -283,7 +301,7 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
                        int width_px, FigureLayout* layout_out) {
   const int height = 560;
   Figure fig(width_px, height);
-  fig.text("Success against " + parameter, 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text_fitted("Success against " + parameter, 20, 28, 18, palette::kAxis, width_px - 40.0, true);
   fig.text("every value's success rate, its Wilson 95 % band and the gate", 20, 48, 13, palette::kAxis);
   const PixelBox box{90, 110, width_px - 40.0, height - 70.0};
   double lo = values.empty() ? 0 : *std::min_element(values.begin(), values.end());

@@ -38,23 +38,25 @@ void Figure::text(const std::string& s, double x, double baseline_y, int size_px
   texts_.push_back({s, x, baseline_y, size_px, colour, anchor, bold});
 }
 
-void Figure::text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
-                         bool bold) {
+std::string Figure::fit(const std::string& s, int size_px, double max_width_px, bool bold) const {
   TextRenderer& tr = shared_text_renderer();
   auto width = [&](const std::string& t) {
     const TextBox b = tr.measure(t, 0, 0, size_px, Anchor::kLeft, bold);
     return b.x1 - b.x0;
   };
+  if (width(s) <= max_width_px) return s;
   std::string fitted = s;
-  if (width(fitted) > max_width_px) {
-    while (!fitted.empty() && width(fitted + "...") > max_width_px) {
-      fitted.pop_back();
-      while (!fitted.empty() && (static_cast<unsigned char>(fitted.back()) & 0xC0) == 0x80) fitted.pop_back();  // whole characters
-      if (!fitted.empty() && static_cast<unsigned char>(fitted.back()) >= 0xC0) fitted.pop_back();
-    }
-    fitted += "...";
+  while (!fitted.empty() && width(fitted + "...") > max_width_px) {
+    fitted.pop_back();
+    while (!fitted.empty() && (static_cast<unsigned char>(fitted.back()) & 0xC0) == 0x80) fitted.pop_back();  // whole characters
+    if (!fitted.empty() && static_cast<unsigned char>(fitted.back()) >= 0xC0) fitted.pop_back();
   }
-  text(fitted, x, baseline_y, size_px, colour, Anchor::kLeft, bold);
+  return fitted + "...";
+}
+
+void Figure::text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
+                         bool bold) {
+  text(fit(s, size_px, max_width_px, bold), x, baseline_y, size_px, colour, Anchor::kLeft, bold);
 }
 
 bool Figure::text_if_free(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor) {
@@ -125,7 +127,7 @@ PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entr
     const double cx = x + column_width_px * static_cast<double>(i / std::max<std::size_t>(rows, 1));
     const double row = y + 19.0 * static_cast<double>(i % std::max<std::size_t>(rows, 1));
     canvas_.pixel_line({cx, row - 4}, {cx + 22, row - 4}, 5.0, entries[i].colour);
-    text(entries[i].label, cx + 28, row + 1, 13, palette::kAxis);
+    text(fit(entries[i].label, 13, column_width_px - 34), cx + 28, row + 1, 13, palette::kAxis);
     layout_.legend.push_back(entries[i]);
   }
   const PixelBox box{x, y - 12, x + column_width_px * columns, y + 19.0 * static_cast<double>(rows)};

@@ -62,6 +62,8 @@ class Figure {
   /// Text is queued and drawn over the picture by finish().
   void text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor = Anchor::kLeft,
             bool bold = false);
+  /// `s` shortened with "..." (whole characters) to at most `max_width_px` at this size.
+  std::string fit(const std::string& s, int size_px, double max_width_px, bool bold = false) const;
   /// As text(), shortened with "..." to at most `max_width_px` (long world names, settings).
   void text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
                    bool bold = false);

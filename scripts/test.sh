@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every test: installs what is missing, builds the normal tree and an ASan + UBSan tree, runs
-# the whole GoogleTest suite (and the single-node Slurm cluster test) through ctest in both, then
-# fuzzes each input loader for 60 s.
+# the whole GoogleTest suite (and, in the normal tree, the single-node Slurm cluster test and the
+# headless Chromium test of the reports) through ctest in both, then fuzzes each input loader for 60 s.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD

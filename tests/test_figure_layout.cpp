@@ -3,6 +3,7 @@
 // summary.json says, and no text overlaps another or leaves the canvas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -221,12 +222,30 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   img = draw_error_strips(episodes, {}, 1400, &layout);
   keep(img, "layout_errors");
   test::expect_sound_layout(img, layout, "error strips");
-  EXPECT_TRUE(test::has_legend(layout, "vg / pure-pursuit / dry"));
-  EXPECT_TRUE(test::has_legend(layout, "gcr / pure-pursuit / dry"));
+  // Each strip is named, in its dots' colour, with its count of docked episodes.
+  auto has_text = [&](const std::string& t) {
+    return std::find(layout.texts.begin(), layout.texts.end(), t) != layout.texts.end();
+  };
+  EXPECT_TRUE(has_text("vg / pure-pursuit / dry (17)"));
+  EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (17)"));
+  EXPECT_TRUE(test::has_legend(layout, "gate"));
   img = draw_efficiency_chart(episodes, 1400, &layout);
   keep(img, "layout_efficiency");
   test::expect_sound_layout(img, layout, "efficiency chart");
   EXPECT_EQ(layout.legend.size(), 2u);
+  // Many methods with long names still fit: legends wrap and labels are shortened.
+  std::vector<EpisodeOutcome> many;
+  for (int i = 0; i < 96; ++i) {
+    EpisodeOutcome e = episodes[i % episodes.size()];
+    e.method = "planner-" + std::to_string(i % 12) + " / a-controller-with-a-long-name / fault-" + std::string(30, 'f');
+    e.docked = true;
+    many.push_back(e);
+  }
+  img = draw_efficiency_chart(many, 1400, &layout);
+  test::expect_sound_layout(img, layout, "efficiency chart, 12 methods");
+  EXPECT_EQ(layout.legend.size(), 12u);
+  img = draw_error_strips(many, {}, 1400, &layout);
+  test::expect_sound_layout(img, layout, "error strips, 12 methods");
   img = draw_sweep_chart("friction", {0.05, 0.1, 0.3}, {{"0.05", 7, 10, 0.4, 0.9, 0.9}, {"0.1", 9, 10, 0.6, 0.98, 0.9},
                                                          {"0.3", 10, 10, 0.72, 1.0, 0.9}},
                          1000, &layout);
