@@ -23,30 +23,29 @@ struct Axes {
   double py(double y) const { return box.bottom - box.height() * (y - y0) / (y1 - y0); }
 };
 
-void x_axis(Figure& fig, const Axes& a, const std::string& label, double scale = 1.0, const std::string& suffix = "") {
+/// The bottom (horizontal) or left axis of `a`: line, grid, ticks and numbers (value x scale,
+/// with a suffix such as " %"), and the label under a horizontal one.
+void axis(Figure& fig, const Axes& a, bool horizontal, const std::string& label = "", double scale = 1.0,
+          const std::string& suffix = "") {
   GlCanvas& c = fig.canvas();
-  c.pixel_line({a.box.left, a.box.bottom}, {a.box.right, a.box.bottom}, 1.0, palette::kAxis);
-  const auto ticks = nice_ticks(a.x0, a.x1, 6);
+  const PixelBox& b = a.box;
+  const double lo = horizontal ? a.x0 : a.y0, hi = horizontal ? a.x1 : a.y1;
+  c.pixel_line({b.left, b.bottom}, horizontal ? Vec2{b.right, b.bottom} : Vec2{b.left, b.top}, 1.0, palette::kAxis);
+  const auto ticks = nice_ticks(lo, hi, horizontal ? 6 : 5);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
-  for (double x : ticks) {
-    if (x < a.x0 - 1e-9 || x > a.x1 + 1e-9) continue;
-    c.pixel_line({a.px(x), a.box.top}, {a.px(x), a.box.bottom}, 1.0, palette::kGrid);
-    c.pixel_line({a.px(x), a.box.bottom}, {a.px(x), a.box.bottom + 4}, 1.0, palette::kAxis);
-    fig.text(tick_label(x * scale, step * scale) + suffix, a.px(x), a.box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
+  for (double v : ticks) {
+    if (v < lo - 1e-9 || v > hi + 1e-9) continue;
+    const std::string number = tick_label(v * scale, step * scale) + suffix;
+    if (horizontal) {
+      c.pixel_line({a.px(v), b.top}, {a.px(v), b.bottom}, 1.0, palette::kGrid);
+      c.pixel_line({a.px(v), b.bottom}, {a.px(v), b.bottom + 4}, 1.0, palette::kAxis);
+      fig.text(number, a.px(v), b.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
+    } else {
+      c.pixel_line({b.left, a.py(v)}, {b.right, a.py(v)}, 1.0, palette::kGrid);
+      fig.text(number, b.left - 7, a.py(v) + 4, 12, palette::kAxis, Anchor::kRight);
+    }
   }
-  fig.text(label, 0.5 * (a.box.left + a.box.right), a.box.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
-}
-
-void y_axis(Figure& fig, const Axes& a, double scale = 1.0, const std::string& suffix = "") {
-  GlCanvas& c = fig.canvas();
-  c.pixel_line({a.box.left, a.box.bottom}, {a.box.left, a.box.top}, 1.0, palette::kAxis);
-  const auto ticks = nice_ticks(a.y0, a.y1, 5);
-  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
-  for (double y : ticks) {
-    if (y < a.y0 - 1e-9 || y > a.y1 + 1e-9) continue;
-    c.pixel_line({a.box.left, a.py(y)}, {a.box.right, a.py(y)}, 1.0, palette::kGrid);
-    fig.text(tick_label(y * scale, step * scale) + suffix, a.box.left - 7, a.py(y) + 4, 12, palette::kAxis, Anchor::kRight);
-  }
+  if (horizontal) fig.text(label, 0.5 * (b.left + b.right), b.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
 }
 
 /// The methods in first-met order, each with an Okabe-Ito colour.
@@ -75,7 +74,7 @@ void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string
   for (const auto& v : values)
     for (double x : v) hi = std::max(hi, x * 1.05);
   const Axes a{box, 0, hi, 0, static_cast<double>(methods.size())};
-  x_axis(fig, a, label, scale);
+  axis(fig, a, true, label, scale);
   fig.canvas().pixel_line({a.box.left, a.box.bottom}, {a.box.left, a.box.top}, 1.0, palette::kAxis);
   const double row_h = box.height() / std::max<std::size_t>(methods.size(), 1);
   for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -113,7 +112,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   fig.text(sub, 20, 48, 13, palette::kAxis);
   const PixelBox box{520, 100, width_px - 110.0, 100 + row_h * std::max<std::size_t>(rows.size(), 1)};
   const Axes a{box, 0, 1, 0, 1};
-  x_axis(fig, a, "success rate", 100.0, " %");
+  axis(fig, a, true, "success rate", 100.0, " %");
   GlCanvas& c = fig.canvas();
   bool any_gate = false, any_below = false, any_pass = false;
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -208,8 +207,8 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
     if (!v.empty()) hi = std::max(hi, v.back() * 1.02);
   }
   const Axes a{left, 1.0, hi, 0, 1};
-  x_axis(fig, a, "driven length / optimal length");
-  y_axis(fig, a, 100.0, " %");
+  axis(fig, a, true, "driven length / optimal length");
+  axis(fig, a, false, "", 100.0, " %");
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
   for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -232,7 +231,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   std::vector<std::vector<double>> scaled = times;
   const double row_h = right.height() / std::max<std::size_t>(methods.size(), 1);
   const Axes b{right, 0, tmax, 0, 1};
-  x_axis(fig, b, "time to dock (s)");
+  axis(fig, b, true, "time to dock (s)");
   c.pixel_line({right.left, right.bottom}, {right.left, right.top}, 1.0, palette::kAxis);
   for (std::size_t m = 0; m < methods.size(); ++m)
     for (std::size_t i = 0; i < times[m].size(); ++i) {
@@ -319,8 +318,8 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
       c.pixel_line({x + 0.5, a.py(l)}, {x + 0.5, a.py(h)}, 1.0, kBand);
     }
   }
-  x_axis(fig, a, parameter);
-  y_axis(fig, a, 100.0, " %");
+  axis(fig, a, true, parameter);
+  axis(fig, a, false, "", 100.0, " %");
   std::vector<Vec2> line;
   double gate = -1;
   for (std::size_t i = 0; i < values.size() && i < rows.size(); ++i) {
