@@ -87,7 +87,7 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
 
 void write_batch_report(const std::vector<std::string>& lines, const std::string& out_dir, const std::string& title,
                         const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
-                        const std::vector<std::string>& planners, const Gate& gate,
+                        const std::vector<std::string>& planners, const Gate& gate, bool charts,
                         const std::vector<FailedEpisode>& failures, const std::string& scenario_path) {
   const std::string csv = summary_csv(lines);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
@@ -98,6 +98,9 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   report.title = title;
   report.command = command;
   fill_table(report, csv, verdicts);
+  report.notes = "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
+                 "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
+                 "summary.csv has every column.";
   report.files = {"episodes.jsonl", "summary.csv"};
   if (!sweep.empty()) report.files.push_back("sweep.csv");
 
@@ -138,6 +141,10 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
         ++n;
       }
     }
+  }
+  if (!charts) {
+    render::write_report(report, out_dir + "/report.html");
+    return;
   }
   auto chart = [&](const render::Image& img, const std::string& file, const std::string& caption) {
     render::write_png(img, out_dir + "/" + file, render::PngSettings::fast());
@@ -206,9 +213,6 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                                                "(episodes start from random poses)"});
     }
   }
-  report.notes = "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
-                 "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
-                 "summary.csv has every column.";
   render::write_report(report, out_dir + "/report.html");
 }
 

@@ -588,7 +588,8 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   write_batch_report(records, o.out_dir, "plantsim batch: " + spec.name,
                      "plantsim batch " + scenario_path + " --out " + o.out_dir +
                          (o.shard_count > 1 ? " --shard " + std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count) : ""),
-                     o.figures ? &worlds : nullptr, spec.planners, o.gate.applied_to(spec.gate), failures, scenario_path);
+                     o.figures ? &worlds : nullptr, spec.planners, o.gate.applied_to(spec.gate), o.figures, failures,
+                     scenario_path);
   return outcome;
 }
 
@@ -667,7 +668,7 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   for (const auto& d : dirs) command += " " + d;
   write_batch_report(lines, out_dir, "plantsim merge",
                      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
-                     worlds.empty() ? nullptr : &worlds, planners, options.gate.applied_to(outcome.gate));
+                     worlds.empty() ? nullptr : &worlds, planners, options.gate.applied_to(outcome.gate), true);
   return outcome;
 }
 
