@@ -207,10 +207,12 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(draw_tracked(c, run.tracked_final), palette::kTracked, "tracked");
   draw_events(c, run.events);
   using Kind = sim::EpisodeResult::Event::Kind;
-  for (auto [kind, label] : {std::pair{Kind::kStop, "stop"}, {Kind::kReplan, "replan"}, {Kind::kRetry, "retry"},
-                             {Kind::kRecovery, "recovery"}, {Kind::kCollision, "collision"}})
+  for (const auto& named : {std::pair{Kind::kStop, "stop"}, {Kind::kReplan, "replan"}, {Kind::kRetry, "retry"},
+                            {Kind::kRecovery, "recovery"}, {Kind::kCollision, "collision"}}) {
+    const Kind kind = named.first;
     listed(std::any_of(run.events.begin(), run.events.end(), [&](const auto& e) { return e.kind == kind; }),
-           event_colour(kind), label);
+           event_colour(kind), named.second);
+  }
   draw_start(c, world);
   listed(true, palette::kStart, "start");
   if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot, 2.0);
