@@ -127,7 +127,8 @@ struct EpisodeResult {
   std::vector<PerceptionSnapshot> perception_log;
   std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
   std::vector<geom::Rect> layer_final;               ///< the local obstacle layer at the end
-  /// Where the robot stopped for something, replanned, or recovered after a displacement.
+  /// Where the robot stopped for something, replanned, recovered after a displacement, backed
+  /// off to retry the docking, or began a collision.
   struct Event {
     enum class Kind { kStop, kReplan, kRecovery, kCollision, kRetry };
     Kind kind;
