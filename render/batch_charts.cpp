@@ -56,6 +56,10 @@ std::vector<std::string> methods_of(const std::vector<EpisodeOutcome>& episodes)
   return out;
 }
 
+std::size_t method_index(const std::vector<std::string>& methods, const std::string& method) {
+  return static_cast<std::size_t>(std::find(methods.begin(), methods.end(), method) - methods.begin());
+}
+
 Rgb method_colour(std::size_t i) {
   static const Rgb kCycle[] = {palette::kOkabeBlue,          palette::kOkabeVermillion, palette::kOkabeBluishGreen,
                                palette::kOkabeReddishPurple, palette::kOkabeOrange,     palette::kOkabeSkyBlue,
@@ -151,7 +155,7 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   std::vector<std::size_t> counts(methods.size(), 0);
   for (const auto& e : episodes) {
     if (!e.docked) continue;
-    const std::size_t m = static_cast<std::size_t>(std::find(methods.begin(), methods.end(), e.method) - methods.begin());
+    const std::size_t m = method_index(methods, e.method);
     pos[m].push_back(e.position_error_m);
     heading[m].push_back(e.heading_error_deg);
     ++counts[m];
@@ -184,7 +188,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   std::vector<std::size_t> counts(methods.size(), 0);
   for (const auto& e : episodes) {
     if (!e.docked) continue;
-    const std::size_t m = static_cast<std::size_t>(std::find(methods.begin(), methods.end(), e.method) - methods.begin());
+    const std::size_t m = method_index(methods, e.method);
     if (e.driven_over_optimum > 0) ratio[m].push_back(e.driven_over_optimum);
     times[m].push_back(e.time_s);
     ++counts[m];
@@ -228,7 +232,6 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   double tmax = 1;
   for (const auto& v : times)
     for (double t : v) tmax = std::max(tmax, t * 1.05);
-  std::vector<std::vector<double>> scaled = times;
   const double row_h = right.height() / std::max<std::size_t>(methods.size(), 1);
   const Axes b{right, 0, tmax, 0, 1};
   axis(fig, b, true, "time to dock (s)");
