@@ -24,7 +24,7 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     const bool last = i + 1 == run.trajectory.size();
     if (run.trajectory[i].t_s < next && !last) continue;
     next = run.trajectory[i].t_s + o.frame_every_s;
-    Figure fig(o.width_px, o.height_px, 2);  // supersampled: anti-aliased lines
+    Figure fig(o.width_px, o.height_px);
     const PixelTransform t = fig.world_panel(world.floor, {50, 40, o.width_px - 170.0, o.height_px - 40.0});
     GlCanvas& c = fig.canvas();
     std::vector<LegendEntry> legend;

@@ -54,7 +54,7 @@ PanelGrid panel_grid(std::size_t panels, int max_columns, int width_px, int pane
 
 class Figure {
  public:
-  Figure(int width, int height, int supersample = 2);
+  Figure(int width, int height, int supersample = 1);
   GlCanvas& canvas() { return canvas_; }
   int width() const { return canvas_.width(); }
   int height() const { return canvas_.height(); }

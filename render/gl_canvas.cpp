@@ -25,20 +25,39 @@ PixelTransform PixelTransform::fit(const Rect& view, double left, double bottom,
 struct GlCanvas::Context {
   OSMesaContext mesa = nullptr;
   std::vector<std::uint8_t> buffer;
+  Context() = default;
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  ~Context() {
+    if (mesa) OSMesaDestroyContext(mesa);
+  }
 };
 
+namespace {
+
+// A new OSMesa context compiles llvmpipe's shaders again, which costs as much as drawing a
+// figure; figures come one after another, so each thread keeps the contexts it released.
+thread_local std::vector<std::unique_ptr<GlCanvas::Context>> idle_contexts;
+
+}  // namespace
+
 GlCanvas::GlCanvas(int width, int height, int supersample)
-    : width_(width), height_(height), ss_(std::max(1, supersample)), ctx_(std::make_unique<Context>()) {
+    : width_(width), height_(height), ss_(std::max(1, supersample)), smooth_edges_(ss_ == 1) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw std::invalid_argument("image size must be between 1 and 16384 pixels a side");
   const int w = width_ * ss_, h = height_ * ss_;
-  ctx_->mesa = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
-  if (!ctx_->mesa) throw std::runtime_error("OSMesa: cannot create a context");
-  ctx_->buffer.assign(static_cast<std::size_t>(w) * h * 4, 0);
-  if (!OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, w, h)) {
-    OSMesaDestroyContext(ctx_->mesa);
-    throw std::runtime_error("OSMesa: cannot bind the frame buffer");
+  if (!idle_contexts.empty()) {
+    ctx_ = std::move(idle_contexts.back());
+    idle_contexts.pop_back();
+  } else {
+    ctx_ = std::make_unique<Context>();
+    ctx_->mesa = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+    if (!ctx_->mesa) throw std::runtime_error("OSMesa: cannot create a context");
   }
+  ctx_->buffer.resize(static_cast<std::size_t>(w) * h * 4);
+  if (!OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, w, h))
+    throw std::runtime_error("OSMesa: cannot bind the frame buffer");
+  // A reused context keeps its state: set all of it.
   glViewport(0, 0, w, h);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
@@ -46,16 +65,30 @@ GlCanvas::GlCanvas(int width, int height, int supersample)
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
 }
 
 GlCanvas::~GlCanvas() {
-  if (ctx_ && ctx_->mesa) OSMesaDestroyContext(ctx_->mesa);
+  if (!ctx_) return;
+  // A context is released only in a sane state; a few idle ones are enough for nesting.
+  if (idle_contexts.size() < 2) idle_contexts.push_back(std::move(ctx_));
+}
+
+// Two canvases alive in one thread share GL's notion of "current": each binds its own
+// context before it talks to GL.
+void GlCanvas::make_current() const {
+  if (OSMesaGetCurrentContext() != ctx_->mesa &&
+      !OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, width_ * ss_, height_ * ss_))
+    throw std::runtime_error("OSMesa: cannot bind the frame buffer");
 }
 
 void GlCanvas::clear(Rgb c) {
   batch_.clear();
+  make_current();
   glClearColor(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
 }
@@ -68,14 +101,26 @@ void GlCanvas::color(Rgb c, float alpha) {
   current_ = {c.r, c.g, c.b, static_cast<std::uint8_t>(std::lround(std::clamp(alpha, 0.0f, 1.0f) * 255))};
 }
 
-void GlCanvas::vertex(double x, double y) {
-  batch_.push_back({static_cast<float>(x), static_cast<float>(y), current_[0], current_[1], current_[2], current_[3]});
+void GlCanvas::vertex(Vec2 p, float coverage) {
+  const auto alpha = static_cast<std::uint8_t>(std::lround(current_[3] * std::clamp(coverage, 0.0f, 1.0f)));
+  batch_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), current_[0], current_[1], current_[2], alpha});
 }
 
 void GlCanvas::triangle(Vec2 a, Vec2 b, Vec2 c) {
-  vertex(a.x, a.y);
-  vertex(b.x, b.y);
-  vertex(c.x, c.y);
+  vertex(a);
+  vertex(b);
+  vertex(c);
+}
+
+// Opacity interpolates linearly across the band: with a band one pixel wide, that is the
+// fraction of each pixel the shape covers.
+void GlCanvas::rim(Vec2 a, Vec2 b, Vec2 c, Vec2 d, float inner_coverage) {
+  vertex(a, inner_coverage);
+  vertex(b, inner_coverage);
+  vertex(c, 0.0f);
+  vertex(a, inner_coverage);
+  vertex(c, 0.0f);
+  vertex(d, 0.0f);
 }
 
 void GlCanvas::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
@@ -87,6 +132,7 @@ void GlCanvas::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 // submission order, so the layer order holds, at the cost of one call instead of thousands.
 void GlCanvas::flush() const {
   if (batch_.empty()) return;
+  make_current();
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_COLOR_ARRAY);
   glVertexPointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
@@ -99,6 +145,7 @@ void GlCanvas::flush() const {
 
 void GlCanvas::set_clip(double left, double top, double right, double bottom) {
   flush();  // what was drawn before is not clipped
+  make_current();
   const int x0 = static_cast<int>(std::floor(left * ss_)), x1 = static_cast<int>(std::ceil(right * ss_));
   const int y0 = static_cast<int>(std::floor((height_ - bottom) * ss_)), y1 = static_cast<int>(std::ceil((height_ - top) * ss_));
   glEnable(GL_SCISSOR_TEST);
@@ -107,6 +154,7 @@ void GlCanvas::set_clip(double left, double top, double right, double bottom) {
 
 void GlCanvas::clear_clip() {
   flush();
+  make_current();
   glDisable(GL_SCISSOR_TEST);
 }
 
@@ -118,20 +166,43 @@ void GlCanvas::fill_rect(const Rect& r, Rgb c, float alpha) {
 
 void GlCanvas::fill_box(Vec2 center, double half_x, double half_y, double yaw, Rgb c) {
   color(c);
-  Vec2 p[4];
-  int i = 0;
-  for (Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}})
-    p[i++] = gl_px(center + geom::rotate({k.x * half_x, k.y * half_y}, yaw));
-  quad(p[0], p[1], p[2], p[3]);
+  const Vec2 mid = gl_px(center);
+  const double hx = ss_ * transform_.scale * half_x, hy = ss_ * transform_.scale * half_y;
+  auto corners = [&](double grow) {
+    std::array<Vec2, 4> p;
+    int i = 0;
+    for (Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}})
+      p[i++] = mid + geom::rotate({k.x * std::max(hx + grow, 0.0), k.y * std::max(hy + grow, 0.0)}, yaw);
+    return p;
+  };
+  if (!smooth_edges_) {
+    const auto p = corners(0.0);
+    quad(p[0], p[1], p[2], p[3]);
+    return;
+  }
+  // An opaque core shrunk by half a pixel and a rim grown by half a pixel; a box thinner than
+  // a pixel is rim only, its peak opacity the share of a pixel it covers.
+  const float peak = static_cast<float>(std::min(1.0, 2.0 * std::min(hx, hy)));
+  const auto inner = corners(-0.5), outer = corners(0.5);
+  if (peak >= 1.0f) quad(inner[0], inner[1], inner[2], inner[3]);
+  for (int i = 0; i < 4; ++i) rim(inner[i], inner[(i + 1) % 4], outer[(i + 1) % 4], outer[i], peak);
 }
 
 void GlCanvas::disk_px(Vec2 c, double r) {
   const int n = std::clamp(static_cast<int>(r * 1.5), r < 3.0 ? 6 : 12, 96);  // a few-pixel disk needs few sides
-  Vec2 prev{c.x + r, c.y};
+  // Smoothed: an opaque core to r - 1/2 and a rim to r + 1/2; a disk under a pixel is rim only.
+  const double r_in = smooth_edges_ ? std::max(r - 0.5, 0.0) : r, r_out = r + 0.5;
+  const float core = smooth_edges_ ? static_cast<float>(std::min(1.0, 2.0 * r)) : 1.0f;
+  Vec2 prev{1, 0};
   for (int i = 1; i <= n; ++i) {
     const double a = 2.0 * M_PI * i / n;
-    const Vec2 next{c.x + r * std::cos(a), c.y + r * std::sin(a)};
-    triangle(c, prev, next);
+    const Vec2 next{std::cos(a), std::sin(a)};
+    if (r_in > 0) {
+      vertex(c, core);
+      vertex(c + r_in * prev, core);
+      vertex(c + r_in * next, core);
+    }
+    if (smooth_edges_) rim(c + r_in * prev, c + r_in * next, c + r_out * next, c + r_out * prev, core);
     prev = next;
   }
 }
@@ -152,53 +223,126 @@ void GlCanvas::quad_px(Vec2 a, Vec2 b, double w) {
   const Vec2 d = b - a;
   const double len = geom::norm(d);
   if (len == 0) return;
-  const Vec2 n = (0.5 * w / len) * Vec2{-d.y, d.x};
-  quad(a + n, b + n, b - n, a - n);
+  const Vec2 unit_normal = (1.0 / len) * Vec2{-d.y, d.x};
+  if (!smooth_edges_) {
+    const Vec2 n = 0.5 * w * unit_normal;
+    quad(a + n, b + n, b - n, a - n);
+    return;
+  }
+  // An opaque core w - 1 wide and a one-pixel rim each side; a line under a pixel wide is a
+  // tent two pixels wide whose peak is its width, so it still carries its share of ink.
+  const double half_core = std::max(0.5 * w - 0.5, 0.0), half_out = std::max(0.5 * w + 0.5, 1.0);
+  const float peak = static_cast<float>(std::min(w, 1.0));
+  const Vec2 n_in = half_core * unit_normal, n_out = half_out * unit_normal;
+  if (half_core > 0) quad(a + n_in, b + n_in, b - n_in, a - n_in);
+  rim(a + n_in, b + n_in, b + n_out, a + n_out, peak);
+  rim(a - n_in, b - n_in, b - n_out, a - n_out, peak);
 }
 
 void GlCanvas::polyline(const std::vector<Vec2>& pts, double width_px, Rgb c) {
   color(c);
-  const double w = ss_ * width_px;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Vec2 p = gl_px(pts[i]);
-    if (i > 0) quad_px(gl_px(pts[i - 1]), p, w);
-    if (w > 2.0) disk_px(p, 0.5 * w);
-  }
+  std::vector<Vec2> gl;
+  gl.reserve(pts.size());
+  for (Vec2 p : pts) gl.push_back(gl_px(p));
+  stroke_px(gl, ss_ * width_px, nullptr, true);
 }
 
 void GlCanvas::pixel_line(Vec2 a, Vec2 b, double width_px, Rgb c) {
   color(c);
-  auto to_gl = [&](Vec2 p) { return Vec2{ss_ * p.x, ss_ * (height_ - p.y)}; };
-  quad_px(to_gl(a), to_gl(b), ss_ * width_px);
+  quad_px(pixel_to_gl(a), pixel_to_gl(b), ss_ * width_px);
 }
 
 void GlCanvas::pixel_polyline(const std::vector<Vec2>& pts, double width_px, Rgb c) {
   color(c);
-  auto to_gl = [&](Vec2 p) { return Vec2{ss_ * p.x, ss_ * (height_ - p.y)}; };
-  const double w = ss_ * width_px;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (i > 0) quad_px(to_gl(pts[i - 1]), to_gl(pts[i]), w);
-    if (w > 2.0) disk_px(to_gl(pts[i]), 0.5 * w);
-  }
+  std::vector<Vec2> gl;
+  gl.reserve(pts.size());
+  for (Vec2 p : pts) gl.push_back(pixel_to_gl(p));
+  stroke_px(gl, ss_ * width_px, nullptr, true);
 }
 
 void GlCanvas::coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours, double width_px) {
-  const double w = ss_ * width_px;
-  for (std::size_t i = 1; i < pts.size() && i - 1 < colours.size(); ++i) {
-    color(colours[i - 1]);
-    const Vec2 a = gl_px(pts[i - 1]), b = gl_px(pts[i]);
-    quad_px(a, b, w);
-    // A round join only where the line turns enough to open a visible notch.
-    if (w > 2.0 && i + 1 < pts.size()) {
-      const Vec2 d1 = b - a, d2 = gl_px(pts[i + 1]) - b;
-      const double turn = std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
-      if (turn * w > 0.5) disk_px(b, 0.5 * w);
+  std::vector<Vec2> gl;
+  gl.reserve(pts.size());
+  for (Vec2 p : pts) gl.push_back(gl_px(p));
+  stroke_px(gl, ss_ * width_px, &colours, false);
+}
+
+Vec2 GlCanvas::pixel_to_gl(Vec2 p) const { return {ss_ * p.x, ss_ * (height_ - p.y)}; }
+
+namespace {
+
+// Which points to keep so that the line moves by at most `tolerance` pixels (Douglas-Peucker
+// between consecutive pinned points; the ends are pinned). A path of thousands of sub-pixel
+// samples costs triangles without changing a pixel.
+std::vector<std::size_t> points_to_keep(const std::vector<Vec2>& pts, double tolerance, const std::vector<bool>& pinned) {
+  std::vector<bool> keep(pts.size(), false);
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  std::size_t from = 0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if (pinned[i] || i + 1 == pts.size()) {
+      spans.push_back({from, i});
+      from = i;
     }
+  if (!pts.empty()) keep.front() = keep.back() = true;
+  while (!spans.empty()) {
+    const auto [lo, hi] = spans.back();
+    spans.pop_back();
+    keep[lo] = keep[hi] = true;
+    const Vec2 d = pts[hi] - pts[lo];
+    const double len = geom::norm(d);
+    double worst = -1;
+    std::size_t worst_at = lo;
+    for (std::size_t i = lo + 1; i < hi; ++i) {
+      const double off = len > 0 ? std::fabs(geom::cross(d, pts[i] - pts[lo])) / len : geom::norm(pts[i] - pts[lo]);
+      if (off > worst) worst = off, worst_at = i;
+    }
+    if (worst > tolerance) {
+      spans.push_back({lo, worst_at});
+      spans.push_back({worst_at, hi});
+    }
+  }
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (keep[i]) kept.push_back(i);
+  return kept;
+}
+
+bool visibly_different(Rgb a, Rgb b) {
+  return std::abs(a.r - b.r) > 2 || std::abs(a.g - b.g) > 2 || std::abs(a.b - b.b) > 2;
+}
+
+}  // namespace
+
+void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w, const std::vector<Rgb>* colours, bool round_caps) {
+  // A colour change pins its point; segments merged into one take the first one's colour.
+  const std::size_t n_all = colours ? std::min(all_pts.size(), colours->size() + 1) : all_pts.size();
+  std::vector<bool> pinned(n_all, false);
+  if (colours)
+    for (std::size_t i = 1, run_start = 0; i + 1 < n_all; ++i)
+      if (visibly_different((*colours)[i], (*colours)[run_start])) pinned[i] = true, run_start = i;
+  std::vector<Vec2> pts(all_pts.begin(), all_pts.begin() + static_cast<std::ptrdiff_t>(n_all));
+  const std::vector<std::size_t> kept = points_to_keep(pts, 0.1, pinned);
+  const bool joins = w > 2.0;  // a thinner line shows no notch at a corner
+  if (joins && round_caps && !kept.empty()) disk_px(pts[kept.front()], 0.5 * w);
+  for (std::size_t k = 1; k < kept.size(); ++k) {
+    if (colours) color((*colours)[kept[k - 1]]);
+    const Vec2 a = pts[kept[k - 1]], b = pts[kept[k]];
+    quad_px(a, b, w);
+    if (!joins) continue;
+    if (k + 1 == kept.size()) {
+      if (round_caps) disk_px(b, 0.5 * w);
+      continue;
+    }
+    // A round join only where the line turns enough to open a visible notch.
+    const Vec2 d1 = b - a, d2 = pts[kept[k + 1]] - b;
+    const double turn = std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
+    if (turn * w > 0.5 || geom::dot(d1, d2) < 0) disk_px(b, 0.5 * w);
   }
 }
 
 void GlCanvas::finish() const {
   flush();
+  make_current();
   glFinish();
 }
 

@@ -1,7 +1,10 @@
 // A headless OpenGL canvas on OSMesa (software rendering, no display, no GPU) with a
 // world-to-pixel transform that keeps the aspect ratio. Draws filled rectangles, oriented
-// boxes, disks and thick polylines in world coordinates; reads back an Image. Lines are
-// smoothed by rendering at a multiple of the final size and averaging down.
+// boxes, disks and thick polylines in world coordinates; reads back an Image. Edges are smoothed
+// either analytically (supersample 1: lines, disks and boxes carry a one-pixel rim whose opacity
+// falls to zero, the coverage of a pixel by the shape) or by rendering at a multiple of the final
+// size and averaging down. Axis-aligned rectangles stay crisp in both: tiles that share an edge
+// must not show a seam.
 #pragma once
 
 #include <array>
@@ -31,7 +34,7 @@ struct PixelTransform {
 
 class GlCanvas {
  public:
-  GlCanvas(int width, int height, int supersample = 2);
+  GlCanvas(int width, int height, int supersample = 1);
   ~GlCanvas();
   GlCanvas(const GlCanvas&) = delete;
   GlCanvas& operator=(const GlCanvas&) = delete;
@@ -46,6 +49,7 @@ class GlCanvas {
   void set_clip(double left, double top, double right, double bottom);
   void clear_clip();
   const PixelTransform& transform() const { return transform_; }
+  struct Context;  ///< an OSMesa context and its frame buffer, reused by the next canvas
 
   void fill_rect(const Rect& r, Rgb c, float alpha = 1.0f);
   void fill_box(Vec2 center, double half_x, double half_y, double yaw, Rgb c);
@@ -69,17 +73,25 @@ class GlCanvas {
     std::uint8_t r, g, b, a;
   };
   void color(Rgb c, float alpha = 1.0f);
-  void vertex(double x, double y);
+  /// `coverage` scales the current colour's opacity: 0 on the outer edge of a smoothing rim.
+  void vertex(Vec2 p, float coverage = 1.0f);
   void triangle(Vec2 a, Vec2 b, Vec2 c);
   void quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+  /// A band from the opaque edge a-b to the transparent edge c-d (its rim).
+  void rim(Vec2 a, Vec2 b, Vec2 c, Vec2 d, float inner_coverage = 1.0f);
   void flush() const;
+  void make_current() const;
   void quad_px(Vec2 a, Vec2 b, double width_px);  // in supersampled pixels, GL rows
   void disk_px(Vec2 center, double radius_px);
   Vec2 gl_px(Vec2 world) const;
+  Vec2 pixel_to_gl(Vec2 image_px) const;
+  /// Segments between GL-pixel points, width w; colours[i] for segment i when given (else the
+  /// current colour); round joins where the line turns, round caps when asked.
+  void stroke_px(const std::vector<Vec2>& pts, double w, const std::vector<Rgb>* colours, bool round_caps);
 
   int width_, height_, ss_;
+  bool smooth_edges_;  ///< analytic rims (no supersampling to average them)
   PixelTransform transform_;
-  struct Context;
   std::unique_ptr<Context> ctx_;
   std::array<std::uint8_t, 4> current_{0, 0, 0, 255};
   mutable std::vector<BatchVertex> batch_;
