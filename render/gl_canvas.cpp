@@ -322,18 +322,19 @@ void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w, const std::
       if (visibly_different((*colours)[i], (*colours)[run_start])) pinned[i] = true, run_start = i;
   std::vector<Vec2> pts(all_pts.begin(), all_pts.begin() + static_cast<std::ptrdiff_t>(n_all));
   const std::vector<std::size_t> kept = points_to_keep(pts, 0.1, pinned);
-  const bool joins = w > 2.0;  // a thinner line shows no notch at a corner
-  if (joins && round_caps && !kept.empty()) disk_px(pts[kept.front()], 0.5 * w);
+  const bool caps = round_caps && w > 2.0;  // a thinner line's flat end is the same to the eye
+  if (caps && !kept.empty()) disk_px(pts[kept.front()], 0.5 * w);
   for (std::size_t k = 1; k < kept.size(); ++k) {
     if (colours) color((*colours)[kept[k - 1]]);
     const Vec2 a = pts[kept[k - 1]], b = pts[kept[k]];
     quad_px(a, b, w);
-    if (!joins) continue;
     if (k + 1 == kept.size()) {
-      if (round_caps) disk_px(b, 0.5 * w);
+      if (caps) disk_px(b, 0.5 * w);
       continue;
     }
-    // A round join only where the line turns enough to open a visible notch.
+    // A round join only where the line turns enough to open a visible notch (its width is
+    // about w/2 times the sine of the turn), thin lines included: simplified, a sharp corner
+    // is one vertex, with no short samples left to fill it.
     const Vec2 d1 = b - a, d2 = pts[kept[k + 1]] - b;
     const double turn = std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
     if (turn * w > 0.5 || geom::dot(d1, d2) < 0) disk_px(b, 0.5 * w);
