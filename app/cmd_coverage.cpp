@@ -9,7 +9,7 @@
 
 #include "app/commands.h"
 #include "worlds/known_keys.h"
-#include "planner/coverage_planner.h"
+#include "planner/coverage/coverage_planner.h"
 #include "render/coverage_figure.h"
 #include "render/png_io.h"
 #include "render/report.h"

@@ -9,7 +9,7 @@
 
 #include "app/commands.h"
 #include "planner/planner.h"
-#include "planner/grid_astar.h"
+#include "planner/grid/grid_astar.h"
 #include "worlds/grid_map.h"
 #include "worlds/world_loader.h"
 

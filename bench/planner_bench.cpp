@@ -12,7 +12,7 @@
 #include "render/png_io.h"
 #include "render/scaling_chart.h"
 #include "planner/planner.h"
-#include "planner/vg_overlay.h"
+#include "planner/vg/vg_overlay.h"
 #include "worlds/random_plant.h"
 #include "worlds/world_loader.h"
 

@@ -3,11 +3,11 @@
 
 #include <stdexcept>
 
-#include "planner/gcr_planner.h"
-#include "planner/coverage_planner.h"
-#include "planner/maze_planner.h"
-#include "planner/grid_astar.h"
-#include "planner/vg_planner.h"
+#include "planner/gcr/gcr_planner.h"
+#include "planner/coverage/coverage_planner.h"
+#include "planner/maze/maze_planner.h"
+#include "planner/grid/grid_astar.h"
+#include "planner/vg/vg_planner.h"
 
 namespace plantsim::planner {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "planner/coverage_plan.h"
+#include "planner/coverage/coverage_plan.h"
 #include "render/figure.h"
 #include "worlds/world.h"
 

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "planner/vg_overlay.h"
+#include "planner/vg/vg_overlay.h"
 
 namespace plantsim::sim {
 

@@ -24,7 +24,7 @@ struct TravelSettings {
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
   /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
-  /// is never rebuilt: the sensed obstacles are added on top, planner/vg_overlay.h).
+  /// is never rebuilt: the sensed obstacles are added on top, planner/vg/vg_overlay.h).
   const planner::Planner* map_planner = nullptr;
 };
 

@@ -9,7 +9,7 @@
 #include <numeric>
 #include <random>
 
-#include "planner/coverage_planner.h"
+#include "planner/coverage/coverage_planner.h"
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "test_paths.h"

@@ -11,7 +11,7 @@
 #include "figure_checks.h"
 #include "planner/planner.h"
 #include "render/batch_charts.h"
-#include "planner/coverage_planner.h"
+#include "planner/coverage/coverage_planner.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"
 #include "render/scaling_chart.h"

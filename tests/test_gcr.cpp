@@ -7,7 +7,7 @@
 
 #include "geometry/polyline.h"
 #include "geometry/predicates.h"
-#include "planner/gcr_planner.h"
+#include "planner/gcr/gcr_planner.h"
 #include "planner/inflation.h"
 
 namespace plantsim::planner {

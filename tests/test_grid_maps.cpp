@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "planner/grid_astar.h"
+#include "planner/grid/grid_astar.h"
 #include "planner/planner.h"
 #include "test_paths.h"
 #include "worlds/grid_map.h"

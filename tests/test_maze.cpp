@@ -3,7 +3,7 @@
 // the shortest route; the solution is driven and docked in the simulation.
 #include <gtest/gtest.h>
 
-#include "planner/hand_rule.h"
+#include "planner/maze/hand_rule.h"
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "test_paths.h"

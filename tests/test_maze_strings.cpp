@@ -1,7 +1,7 @@
 // Seed 003's turn-string simplification on the document's own worked examples.
 #include <gtest/gtest.h>
 
-#include "planner/maze_strings.h"
+#include "planner/maze/maze_strings.h"
 
 namespace plantsim::planner {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "planner/planner.h"
-#include "planner/vg_planner.h"
+#include "planner/vg/vg_planner.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 

@@ -197,7 +197,7 @@ TEST(ChargerPads, ChargeOnlyWhenPressedWithinToleranceForTheDwell) {
 #include <random>
 
 #include "geometry/predicates.h"
-#include "planner/vg_overlay.h"
+#include "planner/vg/vg_overlay.h"
 
 namespace plantsim::planner {
 namespace {

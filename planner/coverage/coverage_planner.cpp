@@ -1,5 +1,5 @@
 // From points to cells and back, with the document's metrics in the note.
-#include "planner/coverage_planner.h"
+#include "planner/coverage/coverage_planner.h"
 
 #include <chrono>
 #include <cstdio>

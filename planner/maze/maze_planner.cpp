@@ -1,5 +1,5 @@
 // From points to lattice nodes and back, with the strings in the result's note.
-#include "planner/maze_planner.h"
+#include "planner/maze/maze_planner.h"
 
 #include <chrono>
 #include <cmath>

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "planner/angle_coverage.h"
+#include "planner/vg/angle_coverage.h"
 #include "planner/obstacle_map.h"
 
 namespace plantsim::planner {

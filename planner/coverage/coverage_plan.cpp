@@ -1,5 +1,5 @@
 // Assembling coverage paths and measuring them.
-#include "planner/coverage_plan.h"
+#include "planner/coverage/coverage_plan.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,5 +1,5 @@
 // Union of pseudo-angle intervals on the circle, split at the seam 0/4.
-#include "planner/angle_coverage.h"
+#include "planner/vg/angle_coverage.h"
 
 #include <algorithm>
 

@@ -8,7 +8,7 @@
 #include "planner/astar.h"
 #include "planner/obstacle_map.h"
 #include "planner/planner.h"
-#include "planner/visibility_graph.h"
+#include "planner/vg/visibility_graph.h"
 
 namespace plantsim::planner {
 

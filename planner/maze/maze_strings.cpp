@@ -1,5 +1,5 @@
 // Turn-string simplification by the document's rewrite rules.
-#include "planner/maze_strings.h"
+#include "planner/maze/maze_strings.h"
 
 #include <stdexcept>
 

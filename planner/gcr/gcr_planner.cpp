@@ -1,5 +1,5 @@
 // Gradient / coordinate-rotation walk and its local optimisation.
-#include "planner/gcr_planner.h"
+#include "planner/gcr/gcr_planner.h"
 
 #include <chrono>
 #include <cmath>

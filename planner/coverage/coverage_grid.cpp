@@ -1,5 +1,5 @@
 // Cells, the decomposition, sweeps and breadth-first travel.
-#include "planner/coverage_grid.h"
+#include "planner/coverage/coverage_grid.h"
 
 #include <cmath>
 #include <deque>

@@ -5,7 +5,7 @@
 // that the robot sweeps the pit and docks. The last plan is kept for coverage figures.
 #pragma once
 
-#include "planner/coverage_plan.h"
+#include "planner/coverage/coverage_plan.h"
 #include "planner/planner.h"
 
 namespace plantsim::planner {

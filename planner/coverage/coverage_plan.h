@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "planner/coverage_grid.h"
-#include "planner/region_order.h"
+#include "planner/coverage/coverage_grid.h"
+#include "planner/coverage/region_order.h"
 
 namespace plantsim::planner {
 

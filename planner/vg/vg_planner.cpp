@@ -1,6 +1,6 @@
 // Visibility-graph planners: the improved one (reduced graph, lazy edges, A*) and the
 // traditional one (all corners, all pairs, Dijkstra).
-#include "planner/vg_planner.h"
+#include "planner/vg/vg_planner.h"
 
 #include <algorithm>
 #include <chrono>

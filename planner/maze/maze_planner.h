@@ -5,7 +5,7 @@
 // world without a lattice they answer "no path" and say why.
 #pragma once
 
-#include "planner/hand_rule.h"
+#include "planner/maze/hand_rule.h"
 #include "planner/planner.h"
 
 namespace plantsim::planner {

@@ -1,5 +1,5 @@
 // Octile A* and the rasterising grid planner.
-#include "planner/grid_astar.h"
+#include "planner/grid/grid_astar.h"
 
 #include <chrono>
 #include <cmath>

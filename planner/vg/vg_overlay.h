@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "planner/vg_planner.h"
+#include "planner/vg/vg_planner.h"
 
 namespace plantsim::planner {
 

@@ -1,5 +1,5 @@
 // Distances between sub-regions and the three ways of ordering them.
-#include "planner/region_order.h"
+#include "planner/coverage/region_order.h"
 
 #include <algorithm>
 #include <cmath>

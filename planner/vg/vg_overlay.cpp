@@ -1,5 +1,5 @@
 // A* over the map's visibility graph plus the added rectangles' corners.
-#include "planner/vg_overlay.h"
+#include "planner/vg/vg_overlay.h"
 
 #include <chrono>
 #include <limits>

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "planner/maze_strings.h"
+#include "planner/maze/maze_strings.h"
 #include "worlds/tunnel_maze.h"
 
 namespace plantsim::planner {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "planner/coverage_grid.h"
+#include "planner/coverage/coverage_grid.h"
 
 namespace plantsim::planner {
 

@@ -1,5 +1,5 @@
 // Hand-rule walks, the shortest route and the ring search.
-#include "planner/hand_rule.h"
+#include "planner/maze/hand_rule.h"
 
 #include <deque>
 #include <map>

@@ -1,5 +1,5 @@
 // Convex-corner extraction and the ring-by-ring search for visible, tangent vertices.
-#include "planner/visibility_graph.h"
+#include "planner/vg/visibility_graph.h"
 
 #include <algorithm>
 #include <climits>
