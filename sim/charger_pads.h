@@ -16,6 +16,10 @@ struct ChargerPadParams {
   double heading_tolerance_rad = 2.0 * M_PI / 180.0;  ///< ... and heading this close to the charger's
   double dwell_s = 0.5;                 ///< pressed within tolerance this long before charging
   double contact_width_m = 0.2;         ///< the pads' width: off-axis farther than half of it, no touch
+  /// The pads are a thin slab in front of the rigid face: a robot whose centre lies farther past
+  /// the face than this is not pressing them but standing behind the charger (in the next
+  /// corridor, across the wall), where it must never charge. Box2D lets a body sink a few mm.
+  double max_overtravel_m = 0.02;
 };
 
 class ChargerPads {

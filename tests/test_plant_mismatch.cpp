@@ -184,6 +184,11 @@ TEST(ChargerPads, ChargeOnlyWhenPressedWithinToleranceForTheDwell) {
   ChargerPads short_of(p);
   EXPECT_LT(charging_after(short_of, {5, 4.99, M_PI / 2}, 1.0), 0);
   EXPECT_FALSE(short_of.touched());
+  // On the axis and square but 3 m past the docked pose: behind the charger, across its wall
+  // (a maze route's dead end ran there and used to charge with a 3.1 m error).
+  ChargerPads behind(p);
+  EXPECT_LT(charging_after(behind, {5, 8.1, M_PI / 2}, 1.0), 0);
+  EXPECT_FALSE(behind.touched());
   // A break in the press restarts the dwell.
   ChargerPads bounce(p);
   EXPECT_LT(charging_after(bounce, {5, 5.001, M_PI / 2}, 0.4), 0);
