@@ -36,6 +36,7 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
 std::vector<std::string> planner_names() {
   return {"vg",        "vg-traditional",    "grid",               "gcr",
           "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
+          "maze-left-resimplified", "maze-right-resimplified",
           "coverage",  "coverage-exact",    "coverage-greedy",    "coverage-cells"};
 }
 
@@ -48,6 +49,10 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
   if (name == "maze-left-explore") return std::make_unique<MazePlanner>(input, Hand::kLeft, true);
   if (name == "maze-right-explore") return std::make_unique<MazePlanner>(input, Hand::kRight, true);
+  if (name == "maze-left-resimplified")
+    return std::make_unique<MazePlanner>(input, Hand::kLeft, false, ThirdString::kResimplified);
+  if (name == "maze-right-resimplified")
+    return std::make_unique<MazePlanner>(input, Hand::kRight, false, ThirdString::kResimplified);
   if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, coverage_method(name));
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }

@@ -31,6 +31,15 @@ struct PlanStats {
   std::int64_t segment_tests = 0;  ///< exact visibility tests so far
 };
 
+/// A label a method puts on the map (seed 003: the letters recorded at a junction, where each
+/// walk of the ring search ended).
+struct PlanMark {
+  enum class Kind { kExplorationLetters, kRouteLetters, kTriedEnd };
+  Vec2 at;
+  std::string text;
+  Kind kind = Kind::kExplorationLetters;
+};
+
 struct PlanResult {
   PlanStatus status = PlanStatus::kNoPath;
   std::vector<Vec2> path;      ///< start .. goal, empty unless status is kOk
@@ -40,6 +49,8 @@ struct PlanResult {
   bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
   std::string note;            ///< why a baseline failed (trapped, oscillating...) or what it met
   std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's exploration)
+  std::vector<std::vector<Vec2>> tried;  ///< walks it tried and dropped or kept (seed 003's ring search)
+  std::vector<PlanMark> marks;           ///< labels for figures (seed 003's junction letters)
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
@@ -51,8 +62,8 @@ struct PlannerInput {
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
-  std::optional<worlds::TunnelMaze> maze;
-  double coverage_cell_m = 2.0;  ///< cell size of the coverage planners (seed 004: 2 x 2 m)  ///< the tunnel lattice of a maze world (seed 003)
+  std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
+  double coverage_cell_m = 2.0;  ///< cell size of the coverage planners (seed 004: 2 x 2 m)
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

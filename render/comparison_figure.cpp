@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "render/layers.h"
+#include "render/method_marks.h"
 #include "render/palette.h"
 #include "render/run_figure.h"
 
@@ -41,6 +42,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
     if (!p.run.explored.empty()) c.polyline(p.run.explored, 5.0, palette::kExplored);
     listed(!p.run.explored.empty(), palette::kExplored, "explored");
+  listed(draw_tried_walks(c, p.run.tried), palette::kTried, "ring search walks");
     if (p.drove) {
       listed(draw_target(c, world, p.run.trajectory), palette::kTarget, "target");
       listed(draw_wall_following(c, p.run.trajectory), palette::kWallFollow, "wall following");
@@ -53,6 +55,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(draw_plan(c, p.run.plan, palette::kPlan), palette::kPlan, p.run.travel == "path" ? "plan" : "plan (reference)");
     draw_start(c, world);
     draw_charger(c, world);
+    for (const LegendEntry& e : draw_plan_marks(fig, t, p.run.marks)) listed(true, e.colour, e.label);
     fig.world_axes(world.floor, t);
     char line1[256], line2[256];
     if (p.run.travel == "path")
@@ -79,7 +82,12 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
   }
   listed(true, palette::kStart, "start");
   listed(true, palette::kCharger, "charger");
-  fig.legend(20, 62, legend, static_cast<int>(legend.size()), 150);
+  // One row while it fits beside the speed scale, else two (the panels start below both).
+  const double legend_width = width_px - 40.0 - (drove_any ? 270.0 : 0.0);
+  const int fitting = std::max(1, static_cast<int>(legend_width / 150.0));
+  const int legend_rows = legend.size() > static_cast<std::size_t>(fitting) ? 2 : 1;
+  const int legend_columns = static_cast<int>((legend.size() + legend_rows - 1) / legend_rows);
+  fig.legend(20, 62, legend, legend_columns, std::min(150.0, legend_width / std::max(1, legend_columns)));
   if (drove_any) fig.colour_bar({width_px - 260.0, 78, width_px - 30.0, 88}, 0.0, world.robot.max_speed_mps, "speed (m/s)");
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();

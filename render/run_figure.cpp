@@ -9,6 +9,7 @@
 #include "geometry/polyline.h"
 #include "render/colormap.h"
 #include "render/layers.h"
+#include "render/method_marks.h"
 #include "render/palette.h"
 
 namespace plantsim::render {
@@ -189,6 +190,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
            palette::kMoving, "moving");
   if (!run.explored.empty()) c.polyline(run.explored, 5.0, palette::kExplored);
   listed(!run.explored.empty(), palette::kExplored, "explored");
+  listed(draw_tried_walks(c, run.tried), palette::kTried, "ring search walks");
   listed(draw_target(c, world, run.trajectory), palette::kTarget, "target");
   listed(draw_wall_following(c, run.trajectory), palette::kWallFollow, "wall following");
   listed(draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s), palette::kFootprint,
@@ -219,6 +221,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_charger(c, world);
   listed(true, palette::kCharger, "charger");
   listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger");
+  for (const LegendEntry& e : draw_plan_marks(fig, t, run.marks)) legend.push_back(e);
   if (!world.moving.empty()) draw_time_ticks(fig, run, t);
   fig.world_axes(world.floor, t);
 

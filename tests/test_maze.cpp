@@ -3,6 +3,8 @@
 // the shortest route; the solution is driven and docked in the simulation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "planner/maze/hand_rule.h"
 #include "planner/planner.h"
 #include "sim/episode.h"
@@ -106,6 +108,77 @@ TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
   EXPECT_TRUE(e.docked) << e.status;
   EXPECT_EQ(e.collisions, 0);
   EXPECT_GT(e.driven_length_m, 0.95 * first.length);  // it really went into the dead ends
+}
+
+// The document drives the third string as recorded (its Fig. 25 keeps "SRRRUSURRRR" with its
+// dead end); simplifying it again is plantsim's option, and on this ring it is shorter.
+TEST(RingMazeThirdString, DrivenAsRecordedByDefaultAndSimplifiedAgainOnRequest) {
+  const worlds::World w = ring_world();
+  const auto entrance = w.maze->nearest_node(w.start.position());
+  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
+  ASSERT_TRUE(entrance && exit);
+  const MazeSolution recorded = solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kLeft);
+  ASSERT_TRUE(recorded.solved());
+  EXPECT_EQ(recorded.route.turns, recorded.third);
+  EXPECT_NE(recorded.third.find('U'), std::string::npos) << recorded.third;  // a dead end, kept
+  // Every walk of the search is kept, the last one the one that reached the exit.
+  ASSERT_FALSE(recorded.attempts.empty());
+  EXPECT_EQ(recorded.attempts.size(), recorded.attempt_labels.size());
+  EXPECT_EQ(recorded.attempts.back().end, WalkEnd::kExit);
+  for (std::size_t i = 0; i + 1 < recorded.attempts.size(); ++i) EXPECT_NE(recorded.attempts[i].end, WalkEnd::kExit);
+
+  const MazeSolution again =
+      solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kLeft, ThirdString::kResimplified);
+  ASSERT_TRUE(again.solved());
+  EXPECT_EQ(again.third, recorded.third);
+  EXPECT_LT(again.route.nodes.size(), recorded.route.nodes.size());
+  EXPECT_EQ(again.route.turns.find('U'), std::string::npos) << again.route.turns;
+}
+
+// Each letter is recorded where the walk had a choice (a junction) or none (a dead end, U).
+TEST(RingMazeThirdString, LettersSitAtJunctionsAndDeadEnds) {
+  const worlds::World w = ring_world();
+  const auto entrance = w.maze->nearest_node(w.start.position());
+  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
+  const MazeSolution s = solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kRight);
+  for (const MazeWalk* walk : {&s.exploration, &s.route}) {
+    ASSERT_EQ(walk->turn_at.size(), walk->turns.size());
+    for (std::size_t i = 0; i < walk->turns.size(); ++i) {
+      int open = 0;
+      for (int h = 0; h < 4; ++h) open += w.maze->open(walk->nodes[walk->turn_at[i]], static_cast<Heading>(h));
+      if (walk->turns[i] == 'U')
+        EXPECT_EQ(open, 1) << i;
+      else
+        EXPECT_GE(open, 3) << i;
+    }
+  }
+}
+
+TEST(MazePlanner, FiguresGetTheSearchWalksAndEveryRecordedLetter) {
+  const worlds::World w = ring_world();
+  for (const char* name : {"maze-left", "maze-right-resimplified"}) {
+    auto p = make_planner(name, planner_input(w, true));
+    const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+    ASSERT_EQ(r.status, PlanStatus::kOk) << r.note;
+    EXPECT_FALSE(r.tried.empty()) << name;
+    std::string explored_letters, tries;
+    for (const PlanMark& m : r.marks) {
+      if (m.kind == PlanMark::Kind::kExplorationLetters)
+        for (char c : m.text)
+          if (c != ' ') explored_letters += c;
+      if (m.kind == PlanMark::Kind::kTriedEnd) tries += m.text + "; ";
+    }
+    // The exploration string is in the note; its letters are all on the map, once each.
+    const std::size_t at = r.note.find("explored ") + 9;
+    std::string first = r.note.substr(at, r.note.find(' ', at) - at);
+    std::sort(first.begin(), first.end());
+    std::sort(explored_letters.begin(), explored_letters.end());
+    EXPECT_EQ(explored_letters, first) << name;
+    EXPECT_NE(tries.find(": exit"), std::string::npos) << tries;
+    EXPECT_NE(r.note.find(std::string(name).find("resimplified") != std::string::npos ? "simplified again" : "as recorded"),
+              std::string::npos)
+        << r.note;
+  }
 }
 
 TEST(MazePlanner, AWorldWithoutALatticeGetsNoPathAndTheReason) {

@@ -66,6 +66,7 @@ MazeWalk walk_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading
       letter = script[next_letter++];
       if (!maze.open(at, turned(heading, letter))) {
         w.turns += letter;
+        w.turn_at.push_back(w.nodes.size() - 1);
         w.end = WalkEnd::kBlocked;
         return w;
       }
@@ -73,6 +74,7 @@ MazeWalk walk_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading
       letter = ways[0];
     }
     w.turns += letter;
+    w.turn_at.push_back(w.nodes.size() - 1);
     heading = turned(heading, letter);
   }
   w.end = WalkEnd::kStepLimit;
@@ -100,7 +102,8 @@ std::vector<LatticeNode> shortest_route(const TunnelMaze& maze, LatticeNode from
   return {route.rbegin(), route.rend()};
 }
 
-MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand) {
+MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand,
+                        ThirdString third_string) {
   MazeSolution s;
   s.exploration = walk_maze(maze, entrance, heading, exit, hand);
   s.simplified = simplify_turns(s.exploration.turns, hand);
@@ -124,15 +127,19 @@ MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading he
         std::string script = s.simplified.substr(0, i);
         script += change;
         const MazeWalk w = walk_maze(maze, entrance, heading, exit, then, script);
-        s.search_log += "marker " + std::to_string(n) + " " + c + "->" + change + ", then " +
-                        (then == Hand::kLeft ? "left" : "right") + " hand: " + std::string(to_string(w.end)) + "; ";
+        s.attempts.push_back(w);
+        s.attempt_labels.push_back("marker " + std::to_string(n) + " " + c + "->" + change + ", then " +
+                                   (then == Hand::kLeft ? "left" : "right") + " hand: " + std::string(to_string(w.end)));
+        s.search_log += s.attempt_labels.back() + "; ";
         if (w.end == WalkEnd::kExit) {
-          // The third string is a record like the first: the document's rules drop the dead
-          // ends it still visits, when the shorter string still reaches the exit.
           s.third = w.turns;
           s.route = w;
-          const MazeWalk shorter = walk_maze(maze, entrance, heading, exit, then, simplify_turns(w.turns, then));
-          if (shorter.end == WalkEnd::kExit && shorter.nodes.size() < w.nodes.size()) s.route = shorter;
+          if (third_string == ThirdString::kResimplified) {
+            // The third string is a record like the first: the second step's rules drop the
+            // dead ends it still visits, when the shorter string still reaches the exit.
+            const MazeWalk shorter = walk_maze(maze, entrance, heading, exit, then, simplify_turns(w.turns, then));
+            if (shorter.end == WalkEnd::kExit && shorter.nodes.size() < w.nodes.size()) s.route = shorter;
+          }
           return s;
         }
       }

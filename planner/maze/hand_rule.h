@@ -24,6 +24,7 @@ std::string_view to_string(WalkEnd e);
 struct MazeWalk {
   std::vector<LatticeNode> nodes;  ///< entrance .. where it ended
   std::string turns;               ///< L/R/S/U at each junction and dead end
+  std::vector<std::size_t> turn_at;  ///< turns[i] was recorded at nodes[turn_at[i]]
   WalkEnd end = WalkEnd::kStepLimit;
   double length_m(const TunnelMaze& maze) const { return nodes.empty() ? 0.0 : maze.pitch_m() * (nodes.size() - 1.0); }
 };
@@ -37,21 +38,29 @@ MazeWalk walk_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading
 /// The shortest corridor route (breadth-first; every edge is one pitch), empty if none.
 std::vector<LatticeNode> shortest_route(const TunnelMaze& maze, LatticeNode from, LatticeNode to);
 
+/// What the next inspections drive after a ring search. The document stores the third string
+/// as recorded and drives it (its Fig. 25 keeps "SRRRUSURRRR", dead ends and all);
+/// re-simplifying it by the second step's rules is plantsim's option, shorter where it works.
+enum class ThirdString { kAsRecorded, kResimplified };
+
 /// The document's whole procedure: explore by the hand rule (first string), simplify (second
 /// string) and drive it; when the exploration came back to the entrance (the exit inside a
 /// ring of tunnels), change the N-th L or S marker (right hand: R or S) of the second string,
 /// N = 1, 2, ..., to each of its untried directions, continue by either hand rule, and keep the
-/// first walk that reaches the exit (third string), itself simplified when that still works.
+/// first walk that reaches the exit (third string).
 struct MazeSolution {
   MazeWalk exploration;     ///< first string
   std::string simplified;   ///< second string
   std::string third;        ///< ring search: the record of the first walk that reached the exit
   MazeWalk route;           ///< what is driven: the second string's walk, or the third string's
-                            ///< (simplified again when that still reaches the exit)
+                            ///< (as recorded, or simplified again when asked and that still works)
   bool ring_search = false; ///< the exploration came back to the entrance
-  std::string search_log;   ///< each tried change and where it ended
+  std::vector<MazeWalk> attempts;           ///< the ring search's walks, in the order tried
+  std::vector<std::string> attempt_labels;  ///< "marker 1 L->R, then left hand: exit"
+  std::string search_log;   ///< the labels joined
   bool solved() const { return route.end == WalkEnd::kExit; }
 };
-MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand);
+MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand,
+                        ThirdString third_string = ThirdString::kAsRecorded);
 
 }  // namespace plantsim::planner

@@ -4,13 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "geometry/polyline.h"
 
 namespace plantsim::planner {
 
-MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration)
-    : maze_(input.maze), hand_(hand), drive_exploration_(drive_exploration) {}
+MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration, ThirdString third_string)
+    : maze_(input.maze), hand_(hand), drive_exploration_(drive_exploration), third_string_(third_string) {}
 
 PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -24,7 +25,7 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
     r.note = "the lattice has no corridor";
     return r;
   }
-  const MazeSolution s = solve_maze(*maze_, *entrance, Heading::kEast, *exit, hand_);
+  const MazeSolution s = solve_maze(*maze_, *entrance, Heading::kEast, *exit, hand_, third_string_);
   const std::vector<LatticeNode> best = shortest_route(*maze_, *entrance, *exit);
   // Start and goal lie in corridors near their nodes; a point already on the first (last)
   // corridor of the route joins it there instead of doubling back from the node.
@@ -44,12 +45,46 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
     return p;
   };
   r.explored = to_path(s.exploration.nodes, false);
+  // Where each search walk ended: "tries 1, 2: closed" where several ended alike in one place.
+  std::map<std::pair<std::pair<int, int>, WalkEnd>, std::vector<std::size_t>> ended_at;
+  for (std::size_t k = 0; k < s.attempts.size(); ++k) {
+    const MazeWalk& w = s.attempts[k];
+    r.tried.push_back(to_path(w.nodes, false));
+    ended_at[{{w.nodes.back().column, w.nodes.back().row}, w.end}].push_back(k + 1);
+  }
+  for (const auto& [where, tries] : ended_at) {
+    const WalkEnd end = where.second;
+    std::string text = tries.size() > 1 ? "tries " : "try ";
+    for (std::size_t i = 0; i < tries.size(); ++i) text += (i ? ", " : "") + std::to_string(tries[i]);
+    text += end == WalkEnd::kExit ? ": exit" : end == WalkEnd::kBackAtEntrance ? ": back" :
+            end == WalkEnd::kBlocked ? ": closed" : ": step limit";
+    r.marks.push_back({maze_->position({where.first.first, where.first.second}), text, PlanMark::Kind::kTriedEnd});
+  }
+  // One label per junction and walk: the letters recorded there in the order they were ("S U L"
+  // where the walk came back from a dead end).
+  auto label_junctions = [&](const MazeWalk& w, PlanMark::Kind kind) {
+    std::map<std::pair<int, int>, std::size_t> label_of;
+    for (std::size_t i = 0; i < w.turns.size() && i < w.turn_at.size(); ++i) {
+      const LatticeNode n = w.nodes[w.turn_at[i]];
+      const auto [it, fresh] = label_of.try_emplace({n.column, n.row}, r.marks.size());
+      if (fresh)
+        r.marks.push_back({maze_->position(n), std::string(1, w.turns[i]), kind});
+      else
+        r.marks[it->second].text += std::string(" ") + w.turns[i];
+    }
+  };
+  label_junctions(s.exploration, PlanMark::Kind::kExplorationLetters);
+  if (s.solved()) label_junctions(s.route, PlanMark::Kind::kRouteLetters);
   char line[512];
   std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
                 hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
                 std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_), s.simplified.c_str());
   r.note = line;
-  if (s.ring_search) r.note += "ring search: " + s.search_log + "third string " + s.third + "; ";
+  if (s.ring_search)
+    r.note += "ring search: " + s.search_log + "third string " + s.third +
+              (third_string_ == ThirdString::kResimplified ? " (simplified again where that still reaches the exit)"
+                                                            : " (driven as recorded)") +
+              "; ";
   std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
                 s.route.turns.c_str(), s.route.length_m(*maze_), std::string(to_string(s.route.end)).c_str(),
                 best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
