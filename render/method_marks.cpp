@@ -25,6 +25,10 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
 std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t, const std::vector<planner::PlanMark>& marks) {
   using Kind = planner::PlanMark::Kind;
   bool placed[3] = {false, false, false};
+  // A dot where each letter was recorded (the text sits beside it, where it has room).
+  for (const auto& m : marks)
+    if (m.kind != Kind::kTriedEnd)
+      fig.canvas().fill_disk(m.at, 2.5 / t.scale, m.kind == Kind::kRouteLetters ? palette::kPlan : palette::kExploredText);
   for (const auto& m : marks) {
     const Vec2 p = t.to_pixel(m.at);
     bool ok = false;
@@ -43,7 +47,7 @@ std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t, c
   }
   std::vector<LegendEntry> legend;
   if (placed[0]) legend.push_back({palette::kExploredText, "letters explored"});
-  if (placed[1]) legend.push_back({palette::kPlan, "letters driven"});
+  if (placed[1]) legend.push_back({palette::kPlan, "letters driven"});  // dots on the plan's line
   return legend;
 }
 

@@ -1,7 +1,7 @@
 // What a method showed of its own working, drawn over a world panel: seed 003's ring-search
 // walks (dashed, each shifted a little so that walks sharing a corridor stay apart) and the
-// letters it recorded at each junction (the exploration's above left, the driven route's below
-// right) with where each search walk ended.
+// letters it recorded at each junction (a dot on the junction; the exploration's letters above
+// left, the driven route's below right) with where each search walk ended.
 #pragma once
 
 #include <string>

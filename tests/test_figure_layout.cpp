@@ -195,6 +195,26 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   for (const std::string& s : layout.texts) EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
 }
 
+// Seed 003 shows its working: the ring search's walks with where each ended, and the letters
+// recorded at the junctions, all listed and none on top of another text.
+TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
+  Case c{worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")), {}};
+  auto p = planner::make_planner("maze-left", planner::planner_input(c.world, true));
+  c.run = sim::run_episode(c.world, *p, {});
+  FigureLayout layout;
+  const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
+  keep(img, "layout_maze");
+  test::expect_sound_layout(img, layout, "maze run");
+  expect_title_matches_summary(layout, c.run);
+  for (const char* label : {"explored", "ring search walks", "letters explored", "letters driven"})
+    EXPECT_TRUE(test::has_legend(layout, label)) << label;
+  const auto count = [&](const std::string& prefix) {
+    return std::count_if(layout.texts.begin(), layout.texts.end(), [&](const std::string& t) { return t.rfind(prefix, 0) == 0; });
+  };
+  EXPECT_GE(count("tr"), 2);  // "tries 1, 2: closed" and "try 3: exit"
+  EXPECT_GE(count("U"), 3);    // dead ends of the exploration
+}
+
 TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   // Two configurations, one below its gate; two methods with docked and failed episodes.
   const std::vector<RateRow> rates = {{"w / vg / pp / dry", 19, 20, 0.76, 0.99, 0.9},
