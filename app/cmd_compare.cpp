@@ -3,6 +3,7 @@
 // source document's Fig. 5 / Fig. 6 when the planners are vg and vg-traditional).
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/commands.h"
@@ -55,7 +56,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     const worlds::World world = worlds::load_world(opt->world, poses);
     const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out,
-                              {"comparison.png", "report.html"});
+                              {"comparison.png", "comparison.json", "report.html"});
     const std::string& out_dir = staged.path();
     std::vector<render::ComparisonPanel> panels;
     render::Report report;
@@ -97,9 +98,30 @@ std::function<int()> add_compare_command(CLI::App& app) {
     }
     const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;
     render::write_png(render::draw_comparison(world, panels, title), out_dir + "/comparison.png");
+    // The figure's numbers, for whoever quotes them.
+    nlohmann::ordered_json data;
+    data["world"] = world.name;
+    data["title"] = title;
+    data["command"] = command_line(cmd);
+    for (const auto& panel : panels) {
+      const planner::PlanStats& st = panel.run.plan_stats;
+      data["panels"].push_back({{"label", panel.label},
+                                {"status", panel.run.status},
+                                {"path_length_m", panel.run.path_length_m},
+                                {"build_ms", st.build_ms},
+                                {"query_ms", st.query_ms},
+                                {"vertices", st.vertices},
+                                {"edges_evaluated", st.edges},
+                                {"segment_tests", st.segment_tests},
+                                {"expanded", st.expanded},
+                                {"graph_edges_drawn", panel.graph_edges.size()}});
+    }
+    if (panels.size() == 2) data["differences"] = render::what_differs(panels[0], panels[1]);
+    util::write_file_atomically(out_dir + "/comparison.json", data.dump(2) + "\n");
     report.title = title;
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};
+    report.files = {"comparison.json"};
     report.notes = opt->plan_only ? "Plans from the start to the charger's docked position (the staging pose on ROS maps); nothing driven."
                                   : "Each planner plans to the staging pose; the robot drives and docks in the simulation.";
     render::write_report(report, out_dir + "/report.html");

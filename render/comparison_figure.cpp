@@ -15,13 +15,34 @@ namespace plantsim::render {
 
 using planner::PlanStats;
 
+std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
+  const PlanStats &x = a.run.plan_stats, &y = b.run.plan_stats;
+  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty()) return "";
+  const double la = a.run.path_length_m, lb = b.run.path_length_m;
+  const double ta = x.build_ms + x.query_ms, tb = y.build_ms + y.query_ms;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%s vs %s: path %.2f vs %.2f m (%s); vertices %lld vs %lld; edges evaluated %lld vs %lld; "
+                "segment tests %lld vs %lld; plan time %.2f vs %.2f ms",
+                a.label.c_str(), b.label.c_str(), la, lb, std::fabs(la - lb) < 5e-3 ? "the same length" : "lengths differ",
+                static_cast<long long>(x.vertices), static_cast<long long>(y.vertices), static_cast<long long>(x.edges),
+                static_cast<long long>(y.edges), static_cast<long long>(x.segment_tests),
+                static_cast<long long>(y.segment_tests), ta, tb);
+  return line;
+}
+
 Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
                       int width_px, int panel_height_px, FigureLayout* layout_out) {
   const int columns = panels.size() == 4 ? 2 : 3;
   PanelGrid grid = panel_grid(panels.size(), columns, width_px, panel_height_px);
-  grid.top_px = 110;
+  // Two graph planners side by side (the document's Fig. 5 and Fig. 6): say under the title
+  // what differs between them and what does not.
+  const std::string differences = panels.size() == 2 ? what_differs(panels[0], panels[1]) : "";
+  const double legend_y = differences.empty() ? 62 : 80;
+  grid.top_px = differences.empty() ? 110 : 126;
   Figure fig(width_px, grid.height_px());
   fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
+  if (!differences.empty()) fig.text_fitted(differences, 20, 54, 13, palette::kAxis, width_px - 40.0);
   const double cell_w = grid.panel_width_px;
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
@@ -75,6 +96,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
       structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(st.edges) + " edges evaluated";
     else
       structure = "no graph (works on the obstacles directly)";
+    if (st.segment_tests > 0) structure += ", " + std::to_string(st.segment_tests) + " segment tests";
     std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms, structure.c_str());
     fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
     fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
@@ -87,7 +109,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
   const int fitting = std::max(1, static_cast<int>(legend_width / 150.0));
   const int legend_rows = legend.size() > static_cast<std::size_t>(fitting) ? 2 : 1;
   const int legend_columns = static_cast<int>((legend.size() + legend_rows - 1) / legend_rows);
-  fig.legend(20, 62, legend, legend_columns, std::min(150.0, legend_width / std::max(1, legend_columns)));
+  fig.legend(20, legend_y, legend, legend_columns, std::min(150.0, legend_width / std::max(1, legend_columns)));
   if (drove_any) fig.colour_bar({width_px - 260.0, 78, width_px - 30.0, 88}, 0.0, world.robot.max_speed_mps, "speed (m/s)");
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();

@@ -19,6 +19,10 @@ struct ComparisonPanel {
   bool drove = true;                               ///< false: a plan only, no trajectory drawn
 };
 
+/// For two graph planners: "vg vs vg-traditional: path 57.83 vs 57.83 m (the same length);
+/// vertices ...; edges evaluated ...; segment tests ...; plan time ..."; empty otherwise.
+std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b);
+
 Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
                       int width_px = 1800, int panel_height_px = 640, FigureLayout* layout = nullptr);
 

@@ -195,6 +195,39 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   for (const std::string& s : layout.texts) EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
 }
 
+// Seed 000's Fig. 5 vs Fig. 6 on its own plant: both graphs exact, so the line under the title
+// says the lengths agree and gives the work each did, as the panels' statistics have it.
+TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  std::vector<ComparisonPanel> panels;
+  for (const char* name : {"vg", "vg-traditional"}) {
+    auto p = planner::make_planner(name, planner::planner_input(w, false));
+    const planner::PlanResult plan = p->plan(w.start.position(), w.charger.position());
+    ASSERT_EQ(plan.status, planner::PlanStatus::kOk) << name;
+    sim::EpisodeResult r;
+    r.planner = name;
+    r.plan = plan.path;
+    r.path_length_m = plan.length;
+    r.plan_stats = plan.stats;
+    r.status = "ok";
+    panels.push_back({name, r, p->graph_edges(), false});
+  }
+  FigureLayout layout;
+  const Image img = draw_comparison(w, panels, "Fig. 5 vs Fig. 6", 1800, 640, &layout);
+  keep(img, "layout_fig5_fig6");
+  test::expect_sound_layout(img, layout, "fig5 vs fig6");
+  const std::string line = what_differs(panels[0], panels[1]);
+  EXPECT_TRUE(std::find(layout.texts.begin(), layout.texts.end(), line) != layout.texts.end()) << line;
+  EXPECT_NE(line.find("(the same length)"), std::string::npos) << line;
+  const auto& a = panels[0].run.plan_stats;
+  const auto& b = panels[1].run.plan_stats;
+  EXPECT_NE(line.find("segment tests " + std::to_string(a.segment_tests) + " vs " + std::to_string(b.segment_tests)),
+            std::string::npos)
+      << line;
+  EXPECT_LT(a.segment_tests, b.segment_tests);  // the document's claim: less work for the same path
+  EXPECT_LT(a.edges, b.edges);
+}
+
 // Seed 003 shows its working: the ring search's walks with where each ended, and the letters
 // recorded at the junctions, all listed and none on top of another text.
 TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
