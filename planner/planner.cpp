@@ -34,7 +34,7 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
 }
 
 std::vector<std::string> planner_names() {
-  return {"vg",        "vg-traditional",    "grid",               "gcr",
+  return {"vg",        "vg-traditional",    "grid",               "gcr",                "gcr-shortcut",
           "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
           "maze-left-resimplified", "maze-right-resimplified",
           "coverage",  "coverage-exact",    "coverage-greedy",    "coverage-cells"};
@@ -45,6 +45,7 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
   if (name == "grid") return std::make_unique<GridPlanner>(input, input.grid_resolution_m);
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
+  if (name == "gcr-shortcut") return std::make_unique<GcrPlanner>(input, true);
   if (name == "maze-left") return std::make_unique<MazePlanner>(input, Hand::kLeft);
   if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
   if (name == "maze-left-explore") return std::make_unique<MazePlanner>(input, Hand::kLeft, true);

@@ -189,7 +189,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
     listed(draw_moving(c, world, run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s, run.moving_final),
            palette::kMoving, "moving");
   if (!run.explored.empty()) c.polyline(run.explored, 5.0, palette::kExplored);
-  listed(!run.explored.empty(), palette::kExplored, "explored");
+  listed(!run.explored.empty(), palette::kExplored, run.explored_label);
   listed(draw_tried_walks(c, run.tried), palette::kTried, "ring search walks");
   listed(draw_target(c, world, run.trajectory), palette::kTarget, "target");
   listed(draw_wall_following(c, run.trajectory), palette::kWallFollow, "wall following");

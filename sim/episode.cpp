@@ -49,6 +49,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   const planner::PlanResult plan = planner.plan(map.start.position(), goal);
   result.plan_stats = plan.stats;
   result.explored = plan.explored;
+  result.explored_label = plan.explored_label;
   result.tried = plan.tried;
   result.marks = plan.marks;
   result.plan_note = plan.note;

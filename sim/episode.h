@@ -100,7 +100,8 @@ struct EpisodeResult {
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
   std::vector<Vec2> plan;          ///< the plan at the end (the last replan's, or the first)
   std::vector<Vec2> first_plan;    ///< the plan the robot set off on (path_length_m is its length)
-  std::vector<Vec2> explored;     ///< the planner's exploration walk, if it made one (seed 003)
+  std::vector<Vec2> explored;     ///< the planner's exploration walk, if it made one (seed 003, 002)
+  std::string explored_label = "explored";  ///< what the planner calls it ("raw walk")
   std::vector<std::vector<Vec2>> tried;  ///< walks it tried before its answer (seed 003's ring search)
   std::vector<planner::PlanMark> marks;  ///< its labels for figures (seed 003's junction letters)
   std::string plan_note;          ///< what the planner said about its plan

@@ -9,6 +9,8 @@
 #include "geometry/predicates.h"
 #include "planner/gcr/gcr_planner.h"
 #include "planner/inflation.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim::planner {
 namespace {
@@ -79,10 +81,93 @@ TEST(Gcr, RandomWorldsNeverCrossAnObstacleNorExceedTheWalk) {
 TEST(Gcr, AUShapedTrapIsReportedNotFaked) {
   // A cup open away from the goal: the walk cannot leave it by the document's rules.
   GcrPlanner p(floor_with({{40, 30, 42, 70}, {20, 30, 42, 32}, {20, 68, 42, 70}}));
-  // Inside, the gradient pushes against the cup's bottom and rotation runs up and down it.
+  // Inside, the gradient pushes against the cup's bottom and rotation runs up and down it, a
+  // little further each time: not an exact loop, so the step budget ends it, and says so.
   const auto r = p.plan({35, 50}, {90, 50});
   EXPECT_EQ(r.status, PlanStatus::kNoPath);
-  EXPECT_NE(r.note.find("oscillating"), std::string::npos) << r.note;
+  EXPECT_NE(r.note.find("timed out"), std::string::npos) << r.note;
+  EXPECT_NE(r.note.find("circling"), std::string::npos) << r.note;
+}
+
+TEST(Gcr, AnExactLoopIsCalledOscillating) {
+  // In the cable-tunnel maze the walk from here comes back to a state it was in exactly (the
+  // same point to the bit, axis and priorities): it would repeat for ever.
+  const auto w = worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_maze.json"));
+  GcrPlanner p(planner_input(w, true));
+  const GcrPlanner::Walk walk = p.walk({5.221, 5.320}, worlds::staging_pose(w).position());
+  EXPECT_FALSE(walk.reached);
+  EXPECT_NE(walk.failure.find("oscillating"), std::string::npos) << walk.failure;
+}
+
+// The document's step rule: |x| = dx/dy and |y| = 1 unit when the goal is farther along x (and
+// the other way round), in the goal's direction; the whole way when less than that is left.
+TEST(Gcr, TheDocumentsStepRule) {
+  const double unit = 0.1;
+  auto near = [](Vec2 a, Vec2 b) { return geom::distance(a, b) < 1e-12; };
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {10, 2}, unit), {0.5, 0.1}));
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {2, 10}, unit), {0.1, 0.5}));
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({5, 5}, {-5, 3}, unit), {-0.5, -0.1}));
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {10, 10}, unit), {0.1, 0.1}));
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {40, 0.05}, unit), {40, 0.05}));  // along an axis: one step
+}
+
+// The document's Fig. 4: the same method towards goals on either side of each axis. Mirrored
+// worlds give mirrored walks, step for step, so the priorities follow the goal's direction; and
+// against a wall across x the first rotation runs towards the goal along y.
+TEST(Gcr, Fig4GoalsInEveryDirectionGiveMirroredWalks) {
+  // A floor centred on the origin, so that mirroring is a change of sign (exact in floating point).
+  auto centred = [](Rect block) {
+    PlannerInput in;
+    in.floor = {-50, -50, 50, 50};
+    in.obstacles = {block};
+    in.inflation_m = 0.3;
+    return in;
+  };
+  const Rect block{-10, -20, 10, 20};
+  GcrPlanner base(centred(block));
+  const GcrPlanner::Walk w = base.walk({-45, -45}, {45, 45});
+  ASSERT_TRUE(w.reached) << w.failure;
+  ASSERT_FALSE(w.first_rotation_axes.empty());
+  EXPECT_TRUE(w.first_rotation_axes.front() == (Vec2{0, 1}));
+  for (const auto& [mx, my] : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}, std::pair{-1.0, -1.0}}) {
+    auto mirror = [&](Vec2 p) { return Vec2{mx * p.x, my * p.y}; };
+    GcrPlanner m(centred(block));  // the block is symmetric: its mirror is itself
+    const GcrPlanner::Walk v = m.walk(mirror({-45, -45}), mirror({45, 45}));
+    ASSERT_TRUE(v.reached) << v.failure;
+    ASSERT_EQ(v.points.size(), w.points.size()) << mx << " " << my;
+    for (std::size_t i = 0; i < w.points.size(); ++i) ASSERT_LT(geom::distance(v.points[i], mirror(w.points[i])), 1e-9) << i;
+    EXPECT_TRUE(v.first_rotation_axes.front() == (Vec2{0, my}));
+    const auto r = m.plan(mirror({-45, -45}), mirror({45, 45}));
+    EXPECT_EQ(r.status, PlanStatus::kOk);
+    EXPECT_FALSE(r.explored.empty());  // the raw walk comes along for the figure
+  }
+}
+
+// On the substation yard, a loop check on rounded positions called these walks loops; they
+// arrive (after 105 m and 382 m).
+TEST(Gcr, WalksThatArriveAreNotCalledLoops) {
+  const auto w = worlds::load_world(test::source_file("worlds/scenarios/substation_yard.json"));
+  GcrPlanner p(planner_input(w, true));
+  const Vec2 goal = worlds::staging_pose(w).position();
+  for (const Vec2 start : {Vec2{19.940324, 22.117312}, Vec2{12.703525, 22.804981}}) {
+    const GcrPlanner::Walk walk = p.walk(start, goal);
+    EXPECT_TRUE(walk.reached) << start.x << ", " << start.y << ": " << walk.failure;
+  }
+}
+
+// plantsim's extra pass is an option, never the default; where it changes anything it shortens.
+TEST(Gcr, TheShortcutPassIsAnOptionAndOnlyShortens) {
+  const auto w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  GcrPlanner plain(planner_input(w, true)), shortcut(planner_input(w, true), true);
+  EXPECT_EQ(plain.name(), "gcr");
+  EXPECT_EQ(shortcut.name(), "gcr-shortcut");
+  const Vec2 goal = worlds::staging_pose(w).position();
+  const auto a = plain.plan(w.start.position(), goal), b = shortcut.plan(w.start.position(), goal);
+  ASSERT_EQ(a.status, PlanStatus::kOk) << a.note;
+  ASSERT_EQ(b.status, PlanStatus::kOk) << b.note;
+  EXPECT_LT(b.length, a.length - 0.1);  // measured: the extra pass shortens this plant's path
+  EXPECT_LE(a.length, polyline_length(a.explored) + 1e-9);
+  EXPECT_NE(b.note.find("shortcut pass"), std::string::npos) << b.note;
 }
 
 }  // namespace
