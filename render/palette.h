@@ -34,8 +34,8 @@ inline constexpr Rgb kMoving = kOkabeSkyBlue;        ///< moving obstacles, thei
 inline constexpr Rgb kAxis{40, 40, 48};
 inline constexpr Rgb kFootprint{120, 120, 130};
 inline constexpr Rgb kTarget = kOkabeReddishPurple;  ///< a moving target and its track
-inline constexpr Rgb kExplored{150, 130, 90};        ///< a hand-rule exploration walk
-inline constexpr Rgb kExploredText{105, 85, 40};     ///< letters recorded on it (darker, to read on the band)
+inline constexpr Rgb kExplored{180, 222, 180};       ///< a walk before the answer (003's exploration, 002's raw walk): a pale green band, off the speed scale
+inline constexpr Rgb kExploredText{40, 105, 40};     ///< letters recorded on it (darker, to read on the band)
 inline constexpr Rgb kTried{0, 110, 110};            ///< the ring search's walks (dashed), seed 003
 inline constexpr Rgb kWallFollow{215, 185, 240};    ///< potential-field travel while following a wall (band; not the speed scale's yellow)
 inline constexpr Rgb kScan{120, 120, 120};           ///< lidar returns the map explains (dots)

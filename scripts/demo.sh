@@ -71,8 +71,8 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 # The seed baselines (002's gradient and coordinate rotation, 001's potential field) beside the
 # visibility graph: one plant side by side, then random plants of 10-200 rectangles and the
 # scenario worlds (their failures are results, not errors).
-./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,potential-field \
-  --title "desulfurization_plant: visibility graph, seed 002, seed 001" --out results/baselines_desulfurization || status=1
+./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,gcr-shortcut,potential-field \
+  --title "desulfurization_plant: visibility graph, seed 002 (as written, and with the shortcut pass), seed 001" --out results/baselines_desulfurization || status=1
 ./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
