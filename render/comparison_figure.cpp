@@ -55,6 +55,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     const double x0 = grid.corner(i).x, y0 = grid.corner(i).y;
     const PixelBox box{x0 + 60, y0 + 80, x0 + cell_w - 20, y0 + panel_height_px - 45};
     const PixelTransform t = fig.world_panel(world.floor, box);
+    fig.clip_to_world(world.floor, t);
     GlCanvas& c = fig.canvas();
     draw_floor(c, world);
     const bool obstacles = draw_obstacles(c, world);

@@ -79,7 +79,13 @@ PixelTransform Figure::world_panel(const geom::Rect& view, const PixelBox& box) 
   return t;
 }
 
+void Figure::clip_to_world(const geom::Rect& view, const PixelTransform& t, double margin_px) {
+  const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
+  canvas_.set_clip(lo.x - margin_px, hi.y - margin_px, hi.x + margin_px, lo.y + margin_px);
+}
+
 void Figure::world_axes(const geom::Rect& view, const PixelTransform& t) {
+  canvas_.clear_clip();
   const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
   const int target_x = std::max(2, static_cast<int>((hi.x - lo.x) / 90));
   const int target_y = std::max(2, static_cast<int>((lo.y - hi.y) / 70));

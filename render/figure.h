@@ -76,7 +76,12 @@ class Figure {
 
   /// Fits `view` (world metres) into `box` keeping the aspect ratio; sets the canvas transform.
   PixelTransform world_panel(const geom::Rect& view, const PixelBox& box);
-  /// Ticks and numbers along the bottom and left of a world panel, with axis labels.
+  /// Restricts drawing to `view` (a few pixels beyond, for lines on its edge) until
+  /// world_axes(): what perception placed off the floor (a lost estimate, stray returns) must
+  /// not run over the legend.
+  void clip_to_world(const geom::Rect& view, const PixelTransform& t, double margin_px = 4);
+  /// Ticks and numbers along the bottom and left of a world panel, with axis labels (lifts the
+  /// clip first).
   void world_axes(const geom::Rect& view, const PixelTransform& t);
 
   /// A colour bar of cividis from lo to hi, horizontal, in `box`, with ticks under it and a label

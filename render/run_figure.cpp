@@ -172,6 +172,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const double column = o.width_px - 300.0;  // the right column: colour bar, legend, close-up
   const PixelBox panel{70, 76, column - 30, o.height_px - 50.0};
   const PixelTransform t = fig.world_panel(world.floor, panel);
+  fig.clip_to_world(world.floor, t);
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label) {

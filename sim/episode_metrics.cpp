@@ -78,6 +78,7 @@ bool EpisodeMetrics::target_caught(const PhysicsWorld& physics) const {
 }
 
 void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {
+  if (plant_.target) return;  // a pursuit ends at its target, not at the charger: nothing to measure
   const Pose2 truth = physics.robot_pose();
   r_.position_error_m = geom::distance(truth.position(), plant_.charger.position());
   r_.heading_error_deg = std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) * 180.0 / M_PI;

@@ -159,10 +159,13 @@ TEST_F(RenderedRun, ComparisonPanelsShareTheScale) {
   ComparisonPanel a{"vg", *run_, {}, true}, b{"vg-traditional", *run_, {}, true};
   const Image img = draw_comparison(*world_, {a, b}, "test", 1600, 500);
   EXPECT_EQ(img.width, 1600);
-  EXPECT_EQ(img.height, 610);
-  // Panel 0's box as draw_comparison lays it out (title and legend 110 px, margins 60/80/20/45);
-  // panel 1 is the same box 800 pixels to the right, so every obstacle centre repeats there.
-  const PixelTransform t = PixelTransform::fit(world_->floor, 60, 610 - (110 + 500 - 45), 800 - 20, 610 - (110 + 80), 610);
+  // Title, the line saying what differs between the two graph planners, and the legend: 126 px.
+  const int top = 126;
+  EXPECT_EQ(img.height, top + 500);
+  // Panel 0's box as draw_comparison lays it out (margins 60/80/20/45); panel 1 is the same box
+  // 800 pixels to the right, so every obstacle centre repeats there.
+  const int h = img.height;
+  const PixelTransform t = PixelTransform::fit(world_->floor, 60, h - (top + 500 - 45), 800 - 20, h - (top + 80), h);
   for (const auto& r : world_->obstacles) {
     const geom::Vec2 p = t.to_pixel(r.center());
     EXPECT_EQ(img.at(static_cast<int>(p.x), static_cast<int>(p.y)), palette::kObstacle);
