@@ -112,7 +112,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
       return kExitOk;
     }
     std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, " << r.skipped
-              << " already done; " << r.docked << " of those run now docked, " << r.collisions << " collisions -> "
+              << " already done; " << r.succeeded << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions << " collisions -> "
               << o.out_dir << "\n";
     return opt->gate.judge(batch::read_episode_records(o.out_dir), r.gate,
                            std::filesystem::path(opt->scenario).stem().string(), "batch");

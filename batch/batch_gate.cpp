@@ -42,11 +42,18 @@ std::string fixed(double v, int digits = 3) {
 
 std::string verdict_line(const ConfigurationVerdict& v, GateStatistic statistic) {
   const double value = statistic == GateStatistic::kWilsonLow ? v.wilson_low : v.success_rate;
-  return v.name() + ": " + std::to_string(v.docked) + "/" + std::to_string(v.episodes) + " docked, " +
+  return v.name() + ": " + std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " + v.outcome() + ", " +
          statistic_name(statistic) + " " + fixed(value) + (v.passed ? " >= " : " < ") + fixed(*v.threshold);
 }
 
 }  // namespace
+
+bool record_succeeded(const nlohmann::json& record) {
+  if (record.contains("succeeded") && record["succeeded"].is_boolean()) return record["succeeded"].get<bool>();
+  return record.value("docked", false);
+}
+
+bool record_is_pursuit(const nlohmann::json& record) { return record.value("goal", std::string("dock")) == "catch"; }
 
 std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& lines, const Gate& gate) {
   std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationVerdict> by_key;
@@ -56,12 +63,13 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
     ConfigurationVerdict& v = by_key[key];
     std::tie(v.world, v.planner, v.controller, v.fault) = key;
     ++v.episodes;
-    v.docked += j.value("docked", false);
+    v.succeeded += record_succeeded(j);
+    v.pursuit = v.pursuit || record_is_pursuit(j);
   }
   std::vector<ConfigurationVerdict> out;
   for (auto& [key, v] : by_key) {
-    v.success_rate = static_cast<double>(v.docked) / static_cast<double>(v.episodes);
-    std::tie(v.wilson_low, v.wilson_high) = wilson_interval(v.docked, v.episodes);
+    v.success_rate = static_cast<double>(v.succeeded) / static_cast<double>(v.episodes);
+    std::tie(v.wilson_low, v.wilson_high) = wilson_interval(v.succeeded, v.episodes);
     v.threshold = gate.min_success;
     for (const GateRule& r : gate.rules)
       if (matches(r, v)) v.threshold = r.min_success;
@@ -91,14 +99,17 @@ std::string junit_xml(const std::string& suite_name, const std::vector<Configura
     xml += "    <testcase classname=\"" + xml_escaped(suite_name + "." + v.world) + "\" name=\"" +
            xml_escaped(v.planner + " / " + v.controller + " / " + v.fault) + "\">\n";
     xml += "      <properties><property name=\"episodes\" value=\"" + std::to_string(v.episodes) +
-           "\"/><property name=\"docked\" value=\"" + std::to_string(v.docked) + "\"/><property name=\"success_rate\" value=\"" +
+           "\"/><property name=\"" + v.outcome() + "\" value=\"" + std::to_string(v.succeeded) +
+           "\"/><property name=\"success_rate\" value=\"" +
            fixed(v.success_rate, 4) + "\"/><property name=\"wilson_low\" value=\"" + fixed(v.wilson_low, 4) + "\"/>" +
            (v.threshold ? "<property name=\"min_success\" value=\"" + fixed(*v.threshold, 4) + "\"/>" : std::string()) +
            "</properties>\n";
     if (!v.passed)
       xml += "      <failure message=\"" + xml_escaped(verdict_line(v, statistic)) + "\" type=\"success_below_threshold\"/>\n";
     else if (!v.threshold)
-      xml += "      <system-out>" + xml_escaped(std::to_string(v.docked) + "/" + std::to_string(v.episodes) + " docked (not gated)") + "</system-out>\n";
+      xml += "      <system-out>" +
+             xml_escaped(std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " + v.outcome() + " (not gated)") +
+             "</system-out>\n";
     xml += "    </testcase>\n";
   }
   return xml + "  </testsuite>\n</testsuites>\n";

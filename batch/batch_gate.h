@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,9 +13,17 @@
 
 namespace plantsim::batch {
 
+/// An episode record's success: docked at the charger, or, in a pursuit world, the target caught
+/// (records written before the "succeeded" field count "docked").
+bool record_succeeded(const nlohmann::json& record);
+/// True for a record of a pursuit world (its goal is a target to catch, not the charger).
+bool record_is_pursuit(const nlohmann::json& record);
+
 struct ConfigurationVerdict {
   std::string world, planner, controller, fault;
-  std::int64_t episodes = 0, docked = 0;
+  std::int64_t episodes = 0, succeeded = 0;
+  bool pursuit = false;  ///< a pursuit world: success is "caught"
+  const char* outcome() const { return pursuit ? "caught" : "docked"; }
   double success_rate = 0, wilson_low = 0, wilson_high = 0;
   std::optional<double> threshold;  ///< none: not gated
   bool passed = true;
@@ -25,7 +34,8 @@ struct ConfigurationVerdict {
 /// scenario; `min_success` (the command line's --min-success) replaces its default threshold.
 std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& jsonl_lines, const Gate& gate);
 
-/// "FAIL world_N50 / vg / default / wet: 41/50 docked, success_rate 0.820 < 0.900" per failure.
+/// "FAIL world_N50 / vg / default / wet: 41/50 docked, success_rate 0.820 < 0.900" per failure
+/// ("caught" in a pursuit world).
 std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic);
 
 /// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold).

@@ -40,7 +40,7 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
       {"controller", "controller"},
       {"fault", "fault"},
       {"episodes", "episodes"},
-      {"docked", "docked"},
+      {"succeeded", "succeeded"},
       {"success_rate", "success"},
       {"ci95_low", "95 % low"},
       {"ci95_high", "95 % high"},
@@ -107,11 +107,12 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   // Charts, from the same records the table sums.
   std::vector<render::RateRow> rates;
   for (const ConfigurationVerdict& v : verdicts)
-    rates.push_back({v.name(), v.docked, v.episodes, v.wilson_low, v.wilson_high, v.threshold.value_or(-1.0)});
+    rates.push_back({v.name(), v.succeeded, v.episodes, v.wilson_low, v.wilson_high, v.threshold.value_or(-1.0)});
   std::vector<render::EpisodeOutcome> episodes;
   std::map<std::string, std::vector<render::EpisodePath>> paths;  // by world name
   std::map<double, std::pair<long long, long long>> sweep_counts;
   std::string sweep_parameter;
+  bool pursuit = false;  // the records are of a pursuit: success is a catch
   for (const std::string& line : lines) {
     const json j = json::parse(line);
     render::EpisodeOutcome e;
@@ -125,7 +126,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     e.time_s = j.value("time_s", 0.0);
     episodes.push_back(e);
     render::EpisodePath path;
-    path.docked = e.docked;
+    path.succeeded = record_succeeded(j);
+    pursuit = pursuit || record_is_pursuit(j);
     if (j.contains("path_mm") && j["path_mm"].is_array())
       for (std::size_t k = 0; k + 1 < j["path_mm"].size(); k += 2)
         path.points.push_back({0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
@@ -137,7 +139,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
       const double x = std::strtod(value.c_str(), &end);
       if (end && *end == '\0' && end != value.c_str()) {
         auto& [k, n] = sweep_counts[x];
-        k += e.docked;
+        k += record_succeeded(j);
         ++n;
       }
     }
@@ -171,7 +173,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     for (const worlds::World& w : *worlds_for_figures) {
       const auto it = paths.find(w.name);
       if (it == paths.end()) continue;
-      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path"),
+      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path", pursuit ? "caught" : "docked"),
             "paths_" + worlds::file_name_component(w.name) + ".png",
             w.name + ": every episode's driven path from its own start; failures in vermillion, on top");
     }

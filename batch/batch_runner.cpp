@@ -21,6 +21,7 @@
 #include <set>
 #include <thread>
 
+#include "batch/batch_gate.h"
 #include "batch/batch_report.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
@@ -178,6 +179,8 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioI
   }
   j["seed"] = e.seed;
   j["start"] = {start.x, start.y, start.yaw};
+  j["goal"] = plant.target ? "catch" : "dock";
+  j["succeeded"] = r.succeeded();
   sim::add_episode_metrics(j, r);
   j["optimal_length_m"] = optimal_m;
   // The driven path for the report's overlay of every episode, in millimetres, thinned to a
@@ -306,7 +309,7 @@ std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines
   std::set<std::string> failed;
   for (const std::string& line : lines) {
     const json j = json::parse(line);
-    if (!j["docked"].get<bool>() && failed.size() < limit) failed.insert(j["id"].get<std::string>());
+    if (!record_succeeded(j) && failed.size() < limit) failed.insert(j["id"].get<std::string>());
   }
   std::vector<FailedEpisode> out;
   if (failed.empty()) return out;
@@ -345,7 +348,7 @@ std::pair<double, double> wilson_interval(std::int64_t k, std::int64_t n, double
 
 std::string summary_csv(const std::vector<std::string>& lines) {
   struct Acc {
-    std::int64_t n = 0, docked = 0, collisions = 0, retries = 0, trapped = 0, timeouts = 0;
+    std::int64_t n = 0, succeeded = 0, docked = 0, collisions = 0, retries = 0, trapped = 0, timeouts = 0;
     std::int64_t robot_collisions = 0, localization_not_ok = 0, charging = 0;
     double stops = 0, replans = 0, recoveries = 0;
     double localization_error_max = 0;
@@ -358,7 +361,8 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     Acc& a = acc[{j["world"], j["planner"], j["controller"], j["fault"]}];
     ++a.n;
     const bool docked = j["docked"].get<bool>();
-    a.docked += docked;
+    a.succeeded += record_succeeded(j);
+    a.docked += docked;  // docking errors are means over these
     a.collisions += j["collisions"].get<int>();
     a.retries += j["retries"].get<int>();
     a.time += j["time_s"].get<double>();
@@ -381,18 +385,18 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     a.charging += j.value("charging", false);
   }
   std::string out =
-      "world,planner,controller,fault,episodes,docked,success_rate,ci95_low,ci95_high,mean_time_s,"
+      "world,planner,controller,fault,episodes,succeeded,success_rate,ci95_low,ci95_high,mean_time_s,"
       "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
       "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,collisions_robot_moving,"
       "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,charging\n";
   for (const auto& [key, a] : acc) {
-    const auto [lo, hi] = wilson_interval(a.docked, a.n);
+    const auto [lo, hi] = wilson_interval(a.succeeded, a.n);
     char row[800];
     std::snprintf(row, sizeof row,
                   ",%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%.2f,%lld,"
                   "%.3f,%.3f,%.3f,%lld\n",
-                  static_cast<long long>(a.n), static_cast<long long>(a.docked), static_cast<double>(a.docked) / a.n, lo, hi,
-                  a.time / a.n, a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
+                  static_cast<long long>(a.n), static_cast<long long>(a.succeeded), static_cast<double>(a.succeeded) / a.n, lo,
+                  hi, a.time / a.n, a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
                   a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
                   static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
                   a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
@@ -559,7 +563,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
           if (std::fwrite(line.data(), 1, line.size(), out) != line.size() || std::fflush(out) != 0)
             throw std::runtime_error(util::system_error_text("cannot append to " + jsonl));
           ++outcome.ran;
-          outcome.docked += r.docked;
+          outcome.succeeded += r.succeeded();
           outcome.collisions += r.collisions;
         }
         progress.tick();

@@ -26,7 +26,7 @@ struct RunOptions {
 };
 
 struct BatchOutcome {
-  std::int64_t episodes = 0, ran = 0, skipped = 0, docked = 0, collisions = 0;
+  std::int64_t episodes = 0, ran = 0, skipped = 0, succeeded = 0, collisions = 0;  ///< succeeded: docked or caught
   std::int64_t malformed_lines_cut = 0;  ///< resume found lines it could not use; rerun
   Gate gate;                             ///< the scenario's gate
   std::string scenario_fingerprint;

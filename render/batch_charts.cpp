@@ -249,6 +249,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
 }
 
 Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
+                         const std::string& success_word,
                          int width_px, int height_px, FigureLayout* layout_out) {
   Figure fig(width_px, height_px);
   const double column = width_px - 230.0;
@@ -260,7 +261,7 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   // million-episode batch.
   constexpr std::size_t kMaxDrawn = 2000;
   std::vector<const EpisodePath*> ok, bad;
-  for (const EpisodePath& p : paths) (p.docked ? ok : bad).push_back(&p);
+  for (const EpisodePath& p : paths) (p.succeeded ? ok : bad).push_back(&p);
   auto chosen = [](const std::vector<const EpisodePath*>& all) {
     std::vector<const EpisodePath*> out;
     const std::size_t step = (all.size() + kMaxDrawn - 1) / kMaxDrawn;
@@ -268,7 +269,7 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
     return out;
   };
   const std::vector<const EpisodePath*> ok_drawn = chosen(ok), bad_drawn = chosen(bad);
-  const std::size_t docked = ok.size(), failed = bad.size();
+  const std::size_t succeeded = ok.size(), failed = bad.size();
   for (const EpisodePath* p : ok_drawn)
     if (p->points.size() > 1) c.polyline(p->points, 1.2, palette::kTrajectory);
   for (const EpisodePath* p : bad_drawn)
@@ -280,16 +281,16 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   draw_charger(c, world);
   fig.world_axes(world.floor, t);
   fig.text_fitted(title, 70, 26, 18, palette::kAxis, width_px - 90.0, true);
-  std::string sub = std::to_string(paths.size()) + " episodes: " + std::to_string(docked) + " docked, " +
+  std::string sub = std::to_string(paths.size()) + " episodes: " + std::to_string(succeeded) + " " + success_word + ", " +
                     std::to_string(failed) + " failed (drawn on top)";
   if (ok_drawn.size() < ok.size() || bad_drawn.size() < bad.size())
-    sub += "; drawn: " + std::to_string(ok_drawn.size()) + " docked and " + std::to_string(bad_drawn.size()) +
+    sub += "; drawn: " + std::to_string(ok_drawn.size()) + " " + success_word + " and " + std::to_string(bad_drawn.size()) +
            " failed, evenly chosen";
   fig.text_fitted(sub, 70, 46, 13, palette::kAxis, width_px - 90.0);
   std::vector<LegendEntry> legend;
   if (obstacles) legend.push_back({palette::kObstacle, "obstacle"});
   if (obstacles && world.planning_inflation_m() > 0) legend.push_back({palette::kInflation, "margin"});
-  if (docked) legend.push_back({palette::kTrajectory, "docked"});
+  if (succeeded) legend.push_back({palette::kTrajectory, success_word});
   if (failed) legend.push_back({palette::kFailure, "failed"});
   if (!paths.empty()) legend.push_back({palette::kStart, "starts"});
   legend.push_back({palette::kCharger, "charger"});

@@ -33,7 +33,7 @@ struct EpisodeOutcome {
 /// One episode's driven path (thinned) and whether it succeeded.
 struct EpisodePath {
   std::vector<Vec2> points;
-  bool docked = false;
+  bool succeeded = false;  ///< docked, or caught in a pursuit
 };
 
 struct DockingGates {
@@ -50,10 +50,12 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
 /// ECDF of driven length over the optimum (docked episodes) and time to dock, per method.
 Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
                             FigureLayout* layout = nullptr);
-/// Every episode's driven path over the world, docked ones thin in blue, failed ones on top in
-/// vermillion, with their starts and the charger.
+/// Every episode's driven path over the world, those that succeeded thin in blue (named
+/// `success_word`: "docked", or "caught" in a pursuit), failed ones on top in vermillion, with
+/// their starts and the charger.
 Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
-                         int width_px = 1400, int height_px = 900, FigureLayout* layout = nullptr);
+                         const std::string& success_word = "docked", int width_px = 1400, int height_px = 900,
+                         FigureLayout* layout = nullptr);
 /// Success rate against the swept parameter's values (rows in increasing order), with the band.
 Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values, const std::vector<RateRow>& rows,
                        int width_px = 1000, FigureLayout* layout = nullptr);

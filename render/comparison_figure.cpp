@@ -17,7 +17,9 @@ using planner::PlanStats;
 
 std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
   const PlanStats &x = a.run.plan_stats, &y = b.run.plan_stats;
-  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty()) return "";
+  // Only two different graph planners: two ways of travelling on one plan share its numbers.
+  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty() || a.run.planner == b.run.planner)
+    return "";
   const double la = a.run.path_length_m, lb = b.run.path_length_m;
   const double ta = x.build_ms + x.query_ms, tb = y.build_ms + y.query_ms;
   char line[512];
@@ -66,11 +68,18 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(!p.run.explored.empty(), palette::kExplored, p.run.explored_label);
   listed(draw_tried_walks(c, p.run.tried), palette::kTried, "ring search walks");
     if (p.drove) {
+      listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving, "moving (swept)");
       listed(draw_target(c, world, p.run.trajectory), palette::kTarget, "target");
       listed(draw_wall_following(c, p.run.trajectory), palette::kWallFollow, "wall following");
       const bool drove = draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);
       listed(drove, speed_swatch(p.run.trajectory, world.robot.max_speed_mps), "driven (speed)");
       drove_any = drove_any || drove;
+      // Where collisions began: the cause of a failure is part of the comparison.
+      std::vector<sim::EpisodeResult::Event> collisions;
+      for (const auto& e : p.run.events)
+        if (e.kind == sim::EpisodeResult::Event::Kind::kCollision) collisions.push_back(e);
+      draw_events(c, collisions);
+      listed(!collisions.empty(), palette::kCollisionMark, "collision");
       if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot, 2.0);
       listed(!p.run.trajectory.empty(), palette::kRobot, "robot at the end");
     }

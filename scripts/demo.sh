@@ -74,6 +74,16 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 ./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,gcr,gcr-shortcut,potential-field \
   --title "desulfurization_plant: visibility graph, seed 002 (as written, and with the shortcut pass), seed 001" --out results/baselines_desulfurization || status=1
 ./build/plantsim batch scenarios/seed_baselines.yaml --out results/batch_seed_baselines --quiet --fresh || status=1
+# Seed 001's moving-target examples: the document's potential field beside path travel (the
+# visibility graph re-planned to the target), same worlds; the third target never parks.
+# A miss is a result here (exit 1: the job ran, an episode failed); only bad input (2) fails the demo.
+for w in seed001_slow_target seed001_target_behind_wall seed001_target_moves_on; do
+  rc=0
+  ./build/plantsim compare worlds/scenarios/$w.json --planners vg,potential-field \
+    --title "$w: path travel vs seed 001's potential field" --out results/pursuit_$w || rc=$?
+  [ "$rc" -le 1 ] || status=1
+done
+./build/plantsim batch scenarios/seed001_pursuit.yaml --out results/batch_seed001_pursuit --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
@@ -88,6 +98,8 @@ mkdir -p results/planner_scaling
   --link results/batch_plant_mismatch/report.html --link results/batch_wet_floor_sweep/report.html \
   --link results/planner_scaling/planner_time.png \
   --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
-  --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html
+  --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html \
+  --link results/pursuit_seed001_slow_target/report.html --link results/pursuit_seed001_target_behind_wall/report.html \
+  --link results/pursuit_seed001_target_moves_on/report.html --link results/batch_seed001_pursuit/report.html
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
 exit $status

@@ -62,6 +62,26 @@ TEST(Gate, JudgesEachConfigurationAgainstItsThreshold) {
   EXPECT_FALSE(vg_wilson.passed);
 }
 
+// A pursuit world's episodes never dock: their success is the catch, and the verdict says so.
+TEST(Gate, APursuitSucceedsByCatchingNotDocking) {
+  std::vector<std::string> lines;
+  for (int i = 0; i < 4; ++i)
+    lines.push_back(nlohmann::json{{"world", "chase"}, {"planner", "vg"}, {"controller", "path"}, {"fault", "none"},
+                                   {"docked", false}, {"caught", i < 3}, {"succeeded", i < 3}, {"goal", "catch"}}
+                        .dump());
+  Gate gate;
+  gate.min_success = 0.9;
+  const auto v = judge_configurations(lines, gate);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_EQ(v[0].succeeded, 3);
+  EXPECT_NEAR(v[0].success_rate, 0.75, 1e-12);
+  EXPECT_NE(gate_failures_text(v, gate.statistic).find("chase / vg / path / none: 3/4 caught"), std::string::npos)
+      << gate_failures_text(v, gate.statistic);
+  // Records from before the "succeeded" field still count by "docked".
+  EXPECT_TRUE(record_succeeded(nlohmann::json{{"docked", true}}));
+  EXPECT_FALSE(record_succeeded(nlohmann::json{{"docked", false}}));
+}
+
 TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
   std::vector<std::string> lines = records("plant<1>", "vg", "wet", 3, 1);
   const auto ok = records("plant<1>", "vg", "dry", 4, 0);

@@ -310,15 +310,16 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   const worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
   const Vec2 a = w.start.position(), b = w.charger.position();
   std::vector<EpisodePath> paths = {{{a, 0.5 * (a + b), b}, true}};
-  img = draw_episode_paths(w, paths, "paths", 1400, 900, &layout);
+  img = draw_episode_paths(w, paths, "paths", "docked", 1400, 900, &layout);
   test::expect_sound_layout(img, layout, "episode paths");
   EXPECT_TRUE(test::has_legend(layout, "docked"));
   EXPECT_FALSE(test::has_legend(layout, "failed"));
   paths.push_back({{a, a + Vec2{5, 5}}, false});
-  img = draw_episode_paths(w, paths, "paths", 1400, 900, &layout);
+  img = draw_episode_paths(w, paths, "paths", "caught", 1400, 900, &layout);
   keep(img, "layout_paths");
   test::expect_sound_layout(img, layout, "episode paths with a failure");
   EXPECT_TRUE(test::has_legend(layout, "failed"));
+  EXPECT_TRUE(test::has_legend(layout, "caught"));  // a pursuit's successes are catches
 
   img = draw_scaling_chart({{"vg", {10, 100, 1000}, {0.03, 2, 16}}, {"grid", {10, 100, 1000}, {19, 13, 15}}}, "time",
                            "subtitle", "obstacles", "time (ms)", 1100, 700, &layout);

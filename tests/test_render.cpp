@@ -159,8 +159,8 @@ TEST_F(RenderedRun, ComparisonPanelsShareTheScale) {
   ComparisonPanel a{"vg", *run_, {}, true}, b{"vg-traditional", *run_, {}, true};
   const Image img = draw_comparison(*world_, {a, b}, "test", 1600, 500);
   EXPECT_EQ(img.width, 1600);
-  // Title, the line saying what differs between the two graph planners, and the legend: 126 px.
-  const int top = 126;
+  // Title and legend: 110 px (both panels show one planner's run, so no line of differences).
+  const int top = 110;
   EXPECT_EQ(img.height, top + 500);
   // Panel 0's box as draw_comparison lays it out (margins 60/80/20/45); panel 1 is the same box
   // 800 pixels to the right, so every obstacle centre repeats there.
