@@ -16,6 +16,20 @@ namespace {
 
 worlds::World ring_world() { return worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")); }
 
+// The ring world's entrance (at the start) and exit (at the staging pose) on its lattice.
+std::pair<LatticeNode, LatticeNode> ring_ends(const worlds::World& w) {
+  const auto entrance = w.maze->nearest_node(w.start.position());
+  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
+  EXPECT_TRUE(entrance && exit);
+  return {entrance.value_or(LatticeNode{}), exit.value_or(LatticeNode{})};
+}
+
+// A named maze planner's answer on the ring world, start to staging pose.
+PlanResult plan_ring(const worlds::World& w, const std::string& name) {
+  auto p = make_planner(name, planner_input(w, true));
+  return p->plan(w.start.position(), worlds::staging_pose(w).position());
+}
+
 // True when every point along the path (every 5 cm) is off the rock.
 bool stays_in_corridors(const std::vector<Vec2>& path, const std::vector<geom::Rect>& rock) {
   for (std::size_t i = 1; i < path.size(); ++i) {
@@ -114,10 +128,8 @@ TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
 // dead end); simplifying it again is plantsim's option, and on this ring it is shorter.
 TEST(RingMazeThirdString, DrivenAsRecordedByDefaultAndSimplifiedAgainOnRequest) {
   const worlds::World w = ring_world();
-  const auto entrance = w.maze->nearest_node(w.start.position());
-  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
-  ASSERT_TRUE(entrance && exit);
-  const MazeSolution recorded = solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kLeft);
+  const auto [entrance, exit] = ring_ends(w);
+  const MazeSolution recorded = solve_maze(*w.maze, entrance, Heading::kEast, exit, Hand::kLeft);
   ASSERT_TRUE(recorded.solved());
   EXPECT_EQ(recorded.route.turns, recorded.third);
   EXPECT_NE(recorded.third.find('U'), std::string::npos) << recorded.third;  // a dead end, kept
@@ -128,7 +140,7 @@ TEST(RingMazeThirdString, DrivenAsRecordedByDefaultAndSimplifiedAgainOnRequest) 
   for (std::size_t i = 0; i + 1 < recorded.attempts.size(); ++i) EXPECT_NE(recorded.attempts[i].end, WalkEnd::kExit);
 
   const MazeSolution again =
-      solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kLeft, ThirdString::kResimplified);
+      solve_maze(*w.maze, entrance, Heading::kEast, exit, Hand::kLeft, ThirdString::kResimplified);
   ASSERT_TRUE(again.solved());
   EXPECT_EQ(again.third, recorded.third);
   EXPECT_LT(again.route.nodes.size(), recorded.route.nodes.size());
@@ -138,9 +150,8 @@ TEST(RingMazeThirdString, DrivenAsRecordedByDefaultAndSimplifiedAgainOnRequest) 
 // Each letter is recorded where the walk had a choice (a junction) or none (a dead end, U).
 TEST(RingMazeThirdString, LettersSitAtJunctionsAndDeadEnds) {
   const worlds::World w = ring_world();
-  const auto entrance = w.maze->nearest_node(w.start.position());
-  const auto exit = w.maze->nearest_node(worlds::staging_pose(w).position());
-  const MazeSolution s = solve_maze(*w.maze, *entrance, Heading::kEast, *exit, Hand::kRight);
+  const auto [entrance, exit] = ring_ends(w);
+  const MazeSolution s = solve_maze(*w.maze, entrance, Heading::kEast, exit, Hand::kRight);
   for (const MazeWalk* walk : {&s.exploration, &s.route}) {
     ASSERT_EQ(walk->turn_at.size(), walk->turns.size());
     for (std::size_t i = 0; i < walk->turns.size(); ++i) {
@@ -157,8 +168,7 @@ TEST(RingMazeThirdString, LettersSitAtJunctionsAndDeadEnds) {
 TEST(MazePlanner, FiguresGetTheSearchWalksAndEveryRecordedLetter) {
   const worlds::World w = ring_world();
   for (const char* name : {"maze-left", "maze-right-resimplified"}) {
-    auto p = make_planner(name, planner_input(w, true));
-    const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+    const PlanResult r = plan_ring(w, name);
     ASSERT_EQ(r.status, PlanStatus::kOk) << r.note;
     EXPECT_FALSE(r.tried.empty()) << name;
     std::string explored_letters, tries;
