@@ -129,8 +129,9 @@ TEST(Gcr, Fig4GoalsInEveryDirectionGiveMirroredWalks) {
   ASSERT_TRUE(w.reached) << w.failure;
   ASSERT_FALSE(w.first_rotation_axes.empty());
   EXPECT_TRUE(w.first_rotation_axes.front() == (Vec2{0, 1}));
-  for (const auto& [mx, my] : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}, std::pair{-1.0, -1.0}}) {
-    auto mirror = [&](Vec2 p) { return Vec2{mx * p.x, my * p.y}; };
+  for (const Vec2 flip : {Vec2{-1, 1}, Vec2{1, -1}, Vec2{-1, -1}}) {
+    const double mx = flip.x, my = flip.y;  // (clang 14: a lambda may not capture a structured binding)
+    auto mirror = [mx, my](Vec2 p) { return Vec2{mx * p.x, my * p.y}; };
     GcrPlanner m(centred(block));  // the block is symmetric: its mirror is itself
     const GcrPlanner::Walk v = m.walk(mirror({-45, -45}), mirror({45, 45}));
     ASSERT_TRUE(v.reached) << v.failure;
