@@ -74,8 +74,10 @@ GlCanvas::GlCanvas(int width, int height, int supersample)
 
 GlCanvas::~GlCanvas() {
   if (!ctx_) return;
-  // A context is released only in a sane state; a few idle ones are enough for nesting.
-  if (idle_contexts.size() < 2) idle_contexts.push_back(std::move(ctx_));
+  // Kept for the next canvas: two are enough for a canvas made while another is alive. A frame
+  // buffer over 64 MB (a poster-sized figure) is not held on to between figures.
+  constexpr std::size_t kKeptBufferBytes = 64u << 20;
+  if (idle_contexts.size() < 2 && ctx_->buffer.size() <= kKeptBufferBytes) idle_contexts.push_back(std::move(ctx_));
 }
 
 // Two canvases alive in one thread share GL's notion of "current": each binds its own
