@@ -36,13 +36,14 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
   long steps_x = 0, steps_y = 0;
   // 20 times the straight distance in steps, plus room for short trips around large obstacles.
   const long budget = static_cast<long>(20.0 * geom::distance(start, goal) / step_m_) + 20000;
-  // The walk is deterministic: in rotation its future depends only on the point, the axis and the
-  // priorities. The same state exactly (to the bit) means a loop for ever. Anything less exact
+  // The walk is deterministic: in rotation its future depends only on where the run began (to
+  // the bit), the whole steps taken from there, the axis and the priorities. The same state
+  // again means a loop for ever: no walk that would arrive is stopped. Anything less exact
   // fails walks that do arrive: on the substation yard, counting passes through the same
   // step-sized cell failed walks that arrived after 105 m and 382 m, even when allowed ten
   // passes. A walk that circles with a drift (up and down inside a cup, a little further each
   // time) runs into the step budget instead and says so.
-  std::set<std::tuple<double, double, int, int, int>> rotation_states;
+  std::set<std::tuple<double, double, long, long, int, int, int>> rotation_states;
 
   for (long k = 0; k < budget; ++k) {
     if (p == goal) {
@@ -96,7 +97,7 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
     if (axis == Vec2{0, 0}) w.first_rotation_axes.push_back(chosen);
     axis = chosen;
     const int ax = static_cast<int>(axis.x), ay = static_cast<int>(axis.y);
-    if (!rotation_states.emplace(p.x, p.y, ax, ay, priority_key).second) {
+    if (!rotation_states.emplace(contact.x, contact.y, steps_x, steps_y, ax, ay, priority_key).second) {
       w.failure = "oscillating: coordinate rotation came back to a state it was in (it would loop for ever)";
       return w;
     }

@@ -12,7 +12,8 @@
 // straight shortcut if free, else the same method planned again for that piece, until no
 // segment crosses an obstacle. "gcr-shortcut" adds plantsim's own last pass, not in the
 // document: any vertex whose neighbours see each other is dropped. A walk that comes back to a
-// state it was in exactly (the same point, axis and priorities: it would loop for ever) or runs
+// state it was in exactly (a rotation run from the same contact point to the bit, the same steps
+// from it, axis and priorities: it would loop for ever) or runs
 // past its step budget (20 times the straight distance, plus 20,000 steps) reports "no path"
 // and why.
 #pragma once
