@@ -91,7 +91,7 @@ TEST(Gcr, AUShapedTrapIsReportedNotFaked) {
 
 TEST(Gcr, AnExactLoopIsCalledOscillating) {
   // In the cable-tunnel maze the walk from here comes back to a state it was in exactly (the
-  // same point to the bit, axis and priorities): it would repeat for ever.
+  // same rotation run, step for step, with the same axis and priorities): it would repeat for ever.
   const auto w = worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_maze.json"));
   GcrPlanner p(planner_input(w, true));
   const GcrPlanner::Walk walk = p.walk({5.221, 5.320}, worlds::staging_pose(w).position());
