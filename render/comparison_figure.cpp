@@ -64,9 +64,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "planning margin");
     listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
-    if (!p.run.explored.empty()) c.polyline(p.run.explored, 5.0, palette::kExplored);
-    listed(!p.run.explored.empty(), palette::kExplored, p.run.explored_label);
-  listed(draw_tried_walks(c, p.run.tried), palette::kTried, "ring search walks");
+    for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
     if (p.drove) {
       listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving, "moving (swept)");
       listed(draw_target(c, world, p.run.trajectory), palette::kTarget, "target");

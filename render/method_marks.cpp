@@ -8,6 +8,8 @@
 
 namespace plantsim::render {
 
+namespace {
+
 bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) {
   bool drawn = false;
   const double px = 1.0 / c.transform().scale;
@@ -20,6 +22,18 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
     drawn = draw_dashed(c, moved, 1.5, 6.0, palette::kTried) || drawn;
   }
   return drawn;
+}
+
+}  // namespace
+
+std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const sim::EpisodeResult& run) {
+  std::vector<LegendEntry> legend;
+  if (!run.explored.empty()) {
+    c.polyline(run.explored, 5.0, palette::kExplored);
+    legend.push_back({palette::kExplored, run.explored_label});
+  }
+  if (draw_tried_walks(c, run.tried)) legend.push_back({palette::kTried, "ring search walks"});
+  return legend;
 }
 
 std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t, const std::vector<planner::PlanMark>& marks) {

@@ -189,9 +189,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   else
     listed(draw_moving(c, world, run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s, run.moving_final),
            palette::kMoving, "moving");
-  if (!run.explored.empty()) c.polyline(run.explored, 5.0, palette::kExplored);
-  listed(!run.explored.empty(), palette::kExplored, run.explored_label);
-  listed(draw_tried_walks(c, run.tried), palette::kTried, "ring search walks");
+  for (const LegendEntry& e : draw_walks_before_answer(c, run)) listed(true, e.colour, e.label);
   listed(draw_target(c, world, run.trajectory), palette::kTarget, "target");
   listed(draw_wall_following(c, run.trajectory), palette::kWallFollow, "wall following");
   listed(draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s), palette::kFootprint,
