@@ -27,6 +27,7 @@ std::function<int()> add_batch_command(CLI::App& app);
 std::function<int()> add_merge_command(CLI::App& app);
 std::function<int()> add_generate_command(CLI::App& app);
 std::function<int()> add_coverage_command(CLI::App& app);
+std::function<int()> add_coverage_study_command(CLI::App& app);
 std::function<int()> add_vary_command(CLI::App& app);
 
 }  // namespace plantsim::app

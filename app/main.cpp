@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_generate_command(app));
   remember(plantsim::app::add_vary_command(app));
   remember(plantsim::app::add_coverage_command(app));
+  remember(plantsim::app::add_coverage_study_command(app));
   // An unknown command is named, with the known ones (CLI11 would say "A subcommand is required").
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];

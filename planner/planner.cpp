@@ -37,7 +37,8 @@ std::vector<std::string> planner_names() {
   return {"vg",        "vg-traditional",    "grid",               "gcr",                "gcr-shortcut",
           "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
           "maze-left-resimplified", "maze-right-resimplified",
-          "coverage",  "coverage-exact",    "coverage-greedy",    "coverage-cells"};
+          "coverage",  "coverage-chnn",     "coverage-potts",     "coverage-exact",
+          "coverage-greedy",    "coverage-cells"};
 }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
@@ -54,7 +55,7 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
     return std::make_unique<MazePlanner>(input, Hand::kLeft, false, ThirdString::kResimplified);
   if (name == "maze-right-resimplified")
     return std::make_unique<MazePlanner>(input, Hand::kRight, false, ThirdString::kResimplified);
-  if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, coverage_method(name));
+  if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, name);
   throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
 }
 

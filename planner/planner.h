@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "planner/coverage/coverage_params.h"
 #include "worlds/world.h"
 
 namespace plantsim::planner {
@@ -65,7 +66,7 @@ struct PlannerInput {
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
   std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
-  double coverage_cell_m = 2.0;  ///< cell size of the coverage planners (seed 004: 2 x 2 m)
+  CoverageParams coverage;       ///< seed 004's cell size, weights and network constants
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

@@ -17,15 +17,38 @@ constexpr Rgb kCoveredMore{215, 140, 185};
 constexpr Rgb kBlocked{180, 180, 185};
 constexpr Rgb kRegionOutline = palette::kOkabeBlue;
 constexpr Rgb kCoveragePath{0, 0, 0};
+constexpr Rgb kSweepStart = palette::kOkabeVermillion;
 
 }  // namespace
 
+std::string describe_order(const planner::CoveragePlan& p) {
+  char line[256];
+  if (!p.ok) return p.failure;
+  if (p.regions.empty()) {
+    std::snprintf(line, sizeof line, "cell by cell (no sub-regions); %d reachable cells", p.metrics.reachable_cells);
+    return line;
+  }
+  std::snprintf(line, sizeof line, "%d sub-regions, order cost %.2f (greedy %.2f)", static_cast<int>(p.regions.size()),
+                p.order_cost, p.greedy_cost);
+  std::string s = line;
+  if (p.network_restarts > 0) {
+    std::snprintf(line, sizeof line, "; valid order in %d of %d restarts", p.network_valid, p.network_restarts);
+    s += line;
+  }
+  if (p.exact) {
+    if (p.exact->proven) std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
+    else std::snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)", p.exact->seconds, p.exact->lower_bound);
+    s += line;
+  }
+  return s;
+}
+
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    int width_px, int panel_height_px, FigureLayout* layout_out) {
+                    const std::string& subtitle, int width_px, int panel_height_px, FigureLayout* layout_out) {
   PanelGrid grid = panel_grid(panels.size(), 2, width_px, panel_height_px);
-  // Room under the title for a legend of up to 12 entries in at most two rows.
+  // Room under the title and its subtitle for a legend of up to 12 entries in at most two rows.
   const int legend_columns = std::max(1, std::min(6, (width_px - 40) / 170));
-  grid.top_px = 64 + 2 * 19 + 16;
+  grid.top_px = 64 + 22 + 2 * 19 + 16;
   Figure fig(width_px, grid.height_px());
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
@@ -33,6 +56,7 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     if (drawn && !known) legend.push_back({colour, label});
   };
   fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
+  fig.text_fitted(subtitle, 20, 58, 14, palette::kAxis, width_px - 40.0);
   const double cell_w = grid.panel_width_px;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const CoveragePanel& p = panels[i];
@@ -66,6 +90,13 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
                  kRegionOutline);
     }
     listed(!p.plan.regions.empty(), kRegionOutline, "sub-region, order");
+    // Where each sweep starts: its lanes run from there.
+    bool sweep_starts = false;
+    for (const planner::Cell& first : p.plan.sweep_starts) {
+      c.fill_disk(g.centre(first), 0.18 * g.cell_m(), kSweepStart);
+      sweep_starts = true;
+    }
+    listed(sweep_starts, kSweepStart, "sweep start");
     std::vector<Vec2> path;
     for (const planner::Cell& cell : p.plan.cells) path.push_back(g.centre(cell));
     c.polyline(path, 1.5, kCoveragePath);
@@ -83,24 +114,19 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
       fig.text(std::to_string(k + 1), px.x, px.y + 6, 15, kRegionOutline, Anchor::kCenter, true);
     }
     const planner::CoverageMetrics& m = p.plan.metrics;
-    char line1[256], line2[256];
-    std::snprintf(line1, sizeof line1, "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
-                  p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends, m.length_m);
-    if (p.plan.regions.empty())
-      std::snprintf(line2, sizeof line2, "cell by cell (no sub-regions); %d reachable cells", m.reachable_cells);
-    else if (p.plan.exact_cost)
-      std::snprintf(line2, sizeof line2, "%d sub-regions, order cost %.2f (exact %.2f, greedy %.2f)",
-                    static_cast<int>(p.plan.regions.size()), p.plan.order_cost, *p.plan.exact_cost, p.plan.greedy_cost);
+    char line1[256];
+    if (p.plan.ok)
+      std::snprintf(line1, sizeof line1, "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
+                    p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends, m.length_m);
     else
-      std::snprintf(line2, sizeof line2, "%d sub-regions, order cost %.2f (greedy %.2f; too many for the exact order)",
-                    static_cast<int>(p.plan.regions.size()), p.plan.order_cost, p.plan.greedy_cost);
-    fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
-    fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
+      std::snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
+    fig.text_fitted(line1, x0 + 60, y0 + 20, 15, p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
+    fig.text_fitted(describe_order(p.plan), x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
     if (!p.extra.empty()) fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
   }
   listed(true, palette::kStart, "start");
   listed(true, palette::kCharger, "charger");
-  fig.legend(20, 64, legend, legend_columns, 170);
+  fig.legend(20, 86, legend, legend_columns, 170);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

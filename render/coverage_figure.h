@@ -1,6 +1,7 @@
 // Seed 004's figure: one panel per coverage method on the same work area, cells filled by how
 // often the path visits them (once: green; more: orange to red), blocked cells dark, the
-// sub-regions outlined with their visiting order numbered, the path, and the document's metrics.
+// sub-regions outlined with their visiting order numbered, where each sweep starts, the path, and
+// the document's metrics. A method without a plan says why in its panel.
 #pragma once
 
 #include <string>
@@ -20,7 +21,13 @@ struct CoveragePanel {
   std::string extra;          ///< one more line of text (e.g. driven coverage)
 };
 
+/// How a plan's order was found, in a line: sub-regions, order cost and the greedy one, the
+/// network's share of settled restarts, the search's proof (or the failure of a plan).
+std::string describe_order(const planner::CoveragePlan& plan);
+
+/// `subtitle`: a line under the title (the document's numbers beside these).
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    int width_px = 1600, int panel_height_px = 560, FigureLayout* layout = nullptr);
+                    const std::string& subtitle, int width_px = 1600, int panel_height_px = 560,
+                    FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

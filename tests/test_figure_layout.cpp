@@ -141,22 +141,34 @@ TEST(FigureLayout, TimePlotsShadePhasesAndKeepLabelsOnTheCanvas) {
   EXPECT_TRUE(time_label);
 }
 
-TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndTheExactFallBack) {
+TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
   const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
   std::vector<std::unique_ptr<planner::CoveragePlanner>> planners;
   std::vector<CoveragePanel> panels;
-  for (const char* name : {"coverage", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
-    planners.push_back(std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), planner::coverage_method(name)));
+  for (const char* name : {"coverage-chnn", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
+    planners.push_back(std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), name));
     ASSERT_EQ(planners.back()->plan(w.start.position(), worlds::staging_pose(w).position()).status, planner::PlanStatus::kOk);
     panels.push_back({name, &planners.back()->grid(), planners.back()->last_plan(), {}, ""});
   }
+  // A network that settled on no order: its panel says so instead of drawing a path.
+  planner::CoveragePlan failed;
+  failed.ok = false;
+  failed.failure = "the Hopfield network settled on a valid order in 0 of 50 restarts";
+  panels.push_back({"coverage-chnn (no order)", &planners.front()->grid(), failed, {}, ""});
   FigureLayout layout;
-  const Image img = draw_coverage(w, panels, "coverage", 1600, 560, &layout);
+  const Image img = draw_coverage(w, panels, "coverage", "document vs here", 1600, 560, &layout);
   keep(img, "layout_coverage");
   test::expect_sound_layout(img, layout, "coverage");
-  for (const char* label : {"covered once", "coverage path", "sub-region, order", "start", "charger"})
+  for (const char* label : {"covered once", "coverage path", "sub-region, order", "sweep start", "start", "charger"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   EXPECT_FALSE(test::has_legend(layout, "driven"));
+  auto said = [&](const std::string& part) {
+    return std::any_of(layout.texts.begin(), layout.texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+  };
+  EXPECT_TRUE(said("proven optimal"));
+  EXPECT_TRUE(said("valid order in"));
+  EXPECT_TRUE(said("NO PLAN"));
+  EXPECT_TRUE(said("settled on a valid order in 0 of 50 restarts"));
 }
 
 TEST(FigureLayout, LongNamesAreShortenedInsideTheCanvas) {

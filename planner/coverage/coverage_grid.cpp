@@ -100,10 +100,9 @@ std::vector<bool> CoverageGrid::reachable(Cell from) const {
 
 std::vector<Cell> CoverageGrid::travel(Cell from, Cell to) const { return descend(distances_from({to}), from); }
 
-std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from) const {
+std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from, int heading) const {
   if (!free(from) || dist[index(from)] < 0) return {};
   std::vector<Cell> path{from};
-  int heading = -1;
   while (dist[index(path.back())] > 0) {
     const Cell c = path.back();
     for (int k = 0; k < 4; ++k) {
@@ -148,17 +147,17 @@ std::vector<CellRect> CoverageGrid::decompose(const std::vector<bool>& within) c
   return out;
 }
 
-std::vector<Cell> sweep(const CellRect& r, int corner) {
+std::vector<Cell> sweep(const CellRect& r, int corner, bool lanes_along_x) {
   const bool from_right = corner == 1 || corner == 3, from_top = corner == 2 || corner == 3;
   std::vector<Cell> out;
   out.reserve(static_cast<std::size_t>(r.cells()));
-  if (r.width >= r.height) {  // lanes along x, stepping in y
+  if (lanes_along_x) {  // stepping in y
     for (int k = 0; k < r.height; ++k) {
       const int row = from_top ? r.row + r.height - 1 - k : r.row + k;
       const bool rightwards = (k % 2 == 0) != from_right;
       for (int j = 0; j < r.width; ++j) out.push_back({rightwards ? r.column + j : r.column + r.width - 1 - j, row});
     }
-  } else {  // lanes along y, stepping in x
+  } else {  // stepping in x
     for (int k = 0; k < r.width; ++k) {
       const int column = from_right ? r.column + r.width - 1 - k : r.column + k;
       const bool upwards = (k % 2 == 0) != from_top;

@@ -65,8 +65,9 @@ class CoverageGrid {
   /// Breadth-first distances (in cells) from every cell of `sources`; -1 where unreachable.
   std::vector<int> distances_from(const std::vector<Cell>& sources) const;
   /// Downhill in `dist` from `from` to a cell at distance 0, keeping the heading where it can
-  /// (fewer turns for the same length); empty if `from` is unreachable.
-  std::vector<Cell> descend(const std::vector<int>& dist, Cell from) const;
+  /// (fewer turns for the same length), starting with `heading` (-1: none yet); empty if `from`
+  /// is unreachable.
+  std::vector<Cell> descend(const std::vector<int>& dist, Cell from, int heading = -1) const;
 
   /// The rectangular decomposition: scanning rows bottom to top and cells left to right, each
   /// free cell not yet assigned starts a sub-region that grows right as far as it can, then up
@@ -83,7 +84,7 @@ class CoverageGrid {
 };
 
 /// The back-and-forth sweep of a sub-region from one of its corners (0: bottom-left,
-/// 1: bottom-right, 2: top-left, 3: top-right), lanes along its longer side.
-std::vector<Cell> sweep(const CellRect& r, int corner);
+/// 1: bottom-right, 2: top-left, 3: top-right), lanes along x or along y.
+std::vector<Cell> sweep(const CellRect& r, int corner, bool lanes_along_x);
 
 }  // namespace plantsim::planner

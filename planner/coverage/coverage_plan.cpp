@@ -1,20 +1,14 @@
-// Assembling coverage paths and measuring them.
+// Assembling coverage paths from sub-region orders, and measuring them.
 #include "planner/coverage/coverage_plan.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <limits>
 
 namespace plantsim::planner {
-namespace {
 
-// Appends `more` to `path`, skipping its first cell when it repeats the path's last.
-void append(std::vector<Cell>& path, const std::vector<Cell>& more) {
+void append_cells(std::vector<Cell>& path, const std::vector<Cell>& more) {
   for (std::size_t i = 0; i < more.size(); ++i)
     if (!(i == 0 && !path.empty() && path.back() == more[0])) path.push_back(more[i]);
 }
-
-}  // namespace
 
 CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path, Cell start) {
   CoverageMetrics m;
@@ -34,100 +28,75 @@ CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cel
   return m;
 }
 
-CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, RegionOrdering ordering, const ChnnParams& chnn) {
-  CoveragePlan plan;
-  plan.regions = grid.decompose(grid.reachable(start));
-  if (plan.regions.empty()) return plan;
-  int first = 0;
-  for (std::size_t i = 0; i < plan.regions.size(); ++i)
-    if (plan.regions[i].contains(start)) first = static_cast<int>(i);
-  const DistanceMatrix d = region_distances(grid, plan.regions);
-  const auto exact = held_karp_order(d, first);
-  if (exact) plan.exact_cost = order_cost(d, *exact);
-  const std::vector<int> greedy = greedy_order(d, first);
-  plan.greedy_cost = order_cost(d, greedy);
-  if (ordering == RegionOrdering::kChnn) {
-    const ChnnResult r = chnn_order(d, first, chnn);
-    plan.order = r.order;
-    plan.chnn_settled = r.settled_valid;
-    plan.chnn_restarts = r.restarts;
-  } else if (ordering == RegionOrdering::kExact && exact) {
-    plan.order = *exact;
-  } else {
-    plan.order = greedy;  // also when too many regions for the exact order (the note says so)
-  }
-  plan.order_cost = order_cost(d, plan.order);
-
-  // Sweep each region from the corner nearest to where the robot is.
-  plan.cells.push_back(start);
-  int dead_ends = 0;
-  for (int region : plan.order) {
-    const CellRect& r = plan.regions[region];
-    std::vector<Cell> best_travel, best_sweep;
-    for (int corner = 0; corner < 4; ++corner) {
-      const std::vector<Cell> s = sweep(r, corner);
-      const std::vector<Cell> t = grid.travel(plan.cells.back(), s.front());
-      if (!t.empty() && (best_travel.empty() || t.size() < best_travel.size())) best_travel = t, best_sweep = s;
-    }
-    // Crossing more than the step into the next region means passing covered ground.
-    if (best_travel.size() > 2) ++dead_ends;
-    append(plan.cells, best_travel);
-    append(plan.cells, best_sweep);
-  }
-  plan.metrics = measure_coverage(grid, plan.cells, start);
-  plan.metrics.dead_ends = dead_ends;
-  return plan;
-}
-
-CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start) {
-  // Attribute of a neighbour: 1 for uncovered, less 0.5 per visit; among equals the smallest
-  // turn wins (straight, then left or right, then back). A robot with no uncovered neighbour
-  // is at a dead point: it goes to the nearest uncovered cell (ring search = breadth first).
+CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, RegionOrdering ordering,
+                                  const CoverageParams& params) {
   CoveragePlan plan;
   const std::vector<bool> reach = grid.reachable(start);
-  std::vector<int> visits(reach.size(), 0);
-  int left = 0;
-  for (std::size_t i = 0; i < reach.size(); ++i) left += reach[i];
+  if (end && (!grid.inside(*end) || !reach[grid.index(*end)])) {
+    plan.ok = false;
+    plan.failure = "the end cell cannot be reached from the start";
+    return plan;
+  }
+  plan.regions = grid.decompose(reach);
+  if (plan.regions.empty()) return plan;
+  const SweepModel model(grid, plan.regions, start, end, params.weights);
+  const std::vector<int> greedy = greedy_order(model);
+  plan.greedy_cost = model.best_sweeps(greedy).cost;
+  switch (ordering) {
+    case RegionOrdering::kChnn: {
+      const HopfieldResult r = hopfield_order(model.region_distances(), params.chnn);
+      plan.network_valid = r.valid;
+      plan.network_restarts = r.restarts;
+      if (!r.order) {
+        plan.ok = false;
+        plan.failure = "the Hopfield network settled on a valid order in 0 of " + std::to_string(r.restarts) + " restarts";
+        return plan;
+      }
+      plan.order = *r.order;
+      break;
+    }
+    case RegionOrdering::kPotts: {
+      const PottsResult r = potts_order(model.region_distances(), params.potts);
+      plan.network_valid = r.settled_valid;
+      plan.network_restarts = r.restarts;
+      plan.order = r.order;
+      break;
+    }
+    case RegionOrdering::kExact:
+      plan.exact = exact_order(model, {greedy}, params.exact);
+      plan.order = plan.exact->order;
+      break;
+    case RegionOrdering::kGreedy: plan.order = greedy; break;
+  }
+  const SweepModel::Sweeps sweeps = model.best_sweeps(plan.order);
+  plan.sweeps = sweeps.variants;
+  plan.order_cost = sweeps.cost;
+
+  // The path: the way to each region's sweep, the sweep, and at last the way to the end. A way
+  // that crosses covered cells is a dead end the order could not avoid.
+  std::vector<int> visits(static_cast<std::size_t>(grid.columns()) * grid.rows(), 0);
   plan.cells.push_back(start);
   ++visits[grid.index(start)];
-  --left;
-  int heading = 0, dead_ends = 0;
-  static constexpr int turn_order[4] = {0, 1, 3, 2};  // straight, left, right, back
-  while (left > 0) {
-    const Cell at = plan.cells.back();
-    int best = -1;
-    for (int t : turn_order) {
-      const int h = (heading + t) % 4;
-      const Cell n = neighbour(at, h);
-      if (grid.free(n) && visits[grid.index(n)] == 0) {
-        best = h;
-        break;
+  int dead_ends = 0;
+  auto walk = [&](const std::vector<Cell>& cells, bool is_way) {
+    bool crossed = false;
+    for (std::size_t i = 1; i + (is_way ? 1 : 0) < cells.size(); ++i) crossed = crossed || visits[grid.index(cells[i])] > 0;
+    dead_ends += is_way && crossed;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (!(i == 0 && plan.cells.back() == cells[0])) {
+        plan.cells.push_back(cells[i]);
+        ++visits[grid.index(cells[i])];
       }
-    }
-    if (best >= 0) {
-      const Cell n = neighbour(at, best);
-      plan.cells.push_back(n);
-      ++visits[grid.index(n)];
-      --left;
-      heading = best;
-      continue;
-    }
-    ++dead_ends;
-    const std::vector<int> dist = grid.distances_from({at});
-    Cell target{-1, -1};
-    int target_d = std::numeric_limits<int>::max();
-    for (int r = 0; r < grid.rows(); ++r)
-      for (int c = 0; c < grid.columns(); ++c) {
-        const std::size_t i = grid.index({c, r});
-        if (reach[i] && visits[i] == 0 && dist[i] >= 0 && dist[i] < target_d) target_d = dist[i], target = {c, r};
-      }
-    const std::vector<Cell> t = grid.travel(at, target);
-    for (std::size_t i = 1; i < t.size(); ++i) {
-      if (visits[grid.index(t[i])]++ == 0) --left;
-      plan.cells.push_back(t[i]);
-    }
-    if (t.size() > 1) heading = heading_between(t[t.size() - 2], t.back());
+  };
+  int last = SweepModel::kStart, last_variant = 0;
+  for (std::size_t k = 0; k < plan.order.size(); ++k) {
+    const int region = plan.order[k], variant = plan.sweeps[k];
+    walk(model.travel(last, last_variant, region, variant), true);
+    walk(model.variant(region, variant).cells, false);
+    plan.sweep_starts.push_back(model.variant(region, variant).cells.front());
+    last = region, last_variant = variant;
   }
+  if (end) walk(model.travel_to_end(last, last_variant), true);
   plan.metrics = measure_coverage(grid, plan.cells, start);
   plan.metrics.dead_ends = dead_ends;
   return plan;

@@ -1,8 +1,8 @@
-// Seed 004's full-coverage path: decompose the reachable cells into rectangles, order them
-// (CHNN, exact or greedy), sweep each from its best corner, travel between them over the grid;
-// and the document's comparison method, cell-by-cell coverage by confidence (uncovered first,
-// straight on before turning) with a ring search for the nearest uncovered cell at dead ends.
-// The document's metrics come with every plan.
+// Seed 004's full-coverage path by sub-regions: decompose the reachable cells into rectangles,
+// order them (the document's CHNN, annealed Potts neurons, the proven optimum, or greedily),
+// choose each region's sweep (start corner, lane direction) best for that order, and travel
+// between them over the grid, from the start cell to the end cell. The document's metrics
+// come with every plan.
 #pragma once
 
 #include <optional>
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "planner/coverage/coverage_grid.h"
-#include "planner/coverage/region_order.h"
+#include "planner/coverage/coverage_params.h"
 
 namespace plantsim::planner {
 
-enum class RegionOrdering { kChnn, kExact, kGreedy };
+enum class RegionOrdering { kChnn, kPotts, kExact, kGreedy };
 
 struct CoverageMetrics {
   int reachable_cells = 0;
@@ -31,18 +31,24 @@ struct CoverageMetrics {
 CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path, Cell start);
 
 struct CoveragePlan {
-  std::vector<Cell> cells;          ///< the path, cell by cell, start first
-  std::vector<CellRect> regions;    ///< sub-regions (empty for the grid method)
-  std::vector<int> order;           ///< regions in visiting order
-  double order_cost = 0;            ///< sum of D_ij along the order
-  std::optional<double> exact_cost; ///< the Held-Karp optimum, when the count allows
+  bool ok = true;
+  std::string failure;               ///< why there is no path (the network settled on no order)
+  std::vector<Cell> cells;           ///< the path, cell by cell, start first (and the end last)
+  std::vector<CellRect> regions;     ///< sub-regions (empty for the cell method)
+  std::vector<int> order;            ///< regions in visiting order
+  std::vector<int> sweeps;           ///< the sweep variant of each, per position
+  std::vector<Cell> sweep_starts;    ///< the first cell of each sweep, per position
+  double order_cost = 0;             ///< sum of D along the order, the way to the end included
   double greedy_cost = 0;
-  int chnn_settled = 0, chnn_restarts = 0;
+  std::optional<ExactOrder> exact;   ///< the search's account, for the exact method
+  int network_valid = 0, network_restarts = 0;  ///< restarts that settled on a permutation
   CoverageMetrics metrics;
 };
 
-CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, RegionOrdering ordering,
-                                  const ChnnParams& chnn = {});
-CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start);
+/// Appends `more` to `path`, skipping its first cell when it repeats the path's last.
+void append_cells(std::vector<Cell>& path, const std::vector<Cell>& more);
+
+CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, RegionOrdering ordering,
+                                  const CoverageParams& params = {});
 
 }  // namespace plantsim::planner

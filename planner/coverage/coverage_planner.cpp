@@ -6,28 +6,22 @@
 #include <stdexcept>
 
 #include "geometry/polyline.h"
+#include "planner/coverage/cell_coverage.h"
 
 namespace plantsim::planner {
 
-CoveragePlanner::CoveragePlanner(const PlannerInput& input, CoverageMethod method)
-    : grid_(input.floor, input.coverage_cell_m, input.obstacles, input.inflation_m), method_(method) {}
-
-std::string CoveragePlanner::name() const {
-  switch (method_) {
-    case CoverageMethod::kChnn: return "coverage";
-    case CoverageMethod::kExact: return "coverage-exact";
-    case CoverageMethod::kGreedy: return "coverage-greedy";
-    case CoverageMethod::kCells: return "coverage-cells";
-  }
-  return "coverage";
-}
+CoveragePlanner::CoveragePlanner(const PlannerInput& input, std::string_view name)
+    : grid_(input.floor, input.coverage.cell_m, input.obstacles, input.inflation_m), name_(name),
+      method_(coverage_method(name)), params_(input.coverage) {}
 
 bool is_coverage_planner(std::string_view n) {
-  return n == "coverage" || n == "coverage-exact" || n == "coverage-greedy" || n == "coverage-cells";
+  return n == "coverage" || n == "coverage-chnn" || n == "coverage-potts" || n == "coverage-exact" ||
+         n == "coverage-greedy" || n == "coverage-cells";
 }
 
 CoverageMethod coverage_method(std::string_view n) {
-  if (n == "coverage") return CoverageMethod::kChnn;
+  if (n == "coverage" || n == "coverage-chnn") return CoverageMethod::kChnn;
+  if (n == "coverage-potts") return CoverageMethod::kPotts;
   if (n == "coverage-exact") return CoverageMethod::kExact;
   if (n == "coverage-greedy") return CoverageMethod::kGreedy;
   if (n == "coverage-cells") return CoverageMethod::kCells;
@@ -43,21 +37,29 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
     r.note = "no free coverage cell";
     return r;
   }
-  if (method_ == CoverageMethod::kCells) {
-    last_ = plan_cell_coverage(grid_, *first);
-  } else {
-    const RegionOrdering o = method_ == CoverageMethod::kChnn    ? RegionOrdering::kChnn
-                             : method_ == CoverageMethod::kExact ? RegionOrdering::kExact
-                                                                 : RegionOrdering::kGreedy;
-    last_ = plan_region_coverage(grid_, *first, o);
-  }
-  std::vector<Cell> cells = last_.cells;
-  const std::vector<Cell> home = grid_.travel(cells.back(), *last);
-  if (home.empty()) {
+  if (!grid_.reachable(*first)[grid_.index(*last)]) {
     r.note = "the goal's cell cannot be reached from the covered area";
     return r;
   }
-  cells.insert(cells.end(), home.begin() + 1, home.end());
+  if (method_ == CoverageMethod::kCells) {
+    last_ = plan_cell_coverage(grid_, *first, *last, params_);
+  } else {
+    const RegionOrdering o = method_ == CoverageMethod::kChnn    ? RegionOrdering::kChnn
+                             : method_ == CoverageMethod::kPotts ? RegionOrdering::kPotts
+                             : method_ == CoverageMethod::kExact ? RegionOrdering::kExact
+                                                                 : RegionOrdering::kGreedy;
+    try {
+      last_ = plan_region_coverage(grid_, *first, *last, o, params_);
+    } catch (const std::invalid_argument& e) {  // too many sub-regions
+      r.note = e.what();
+      return r;
+    }
+  }
+  if (!last_.ok) {
+    r.note = last_.failure;
+    return r;
+  }
+  const std::vector<Cell>& cells = last_.cells;
   // Cell centres, keeping only where the heading changes.
   std::vector<Vec2> path{start};
   for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -74,13 +76,26 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
   char note[400];
   std::snprintf(note, sizeof note,
                 "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, %d dead ends, "
-                "%.1f m of coverage path; order cost %.2f",
+                "%.1f m from start to end cell",
                 static_cast<int>(last_.regions.size()), 100 * m.coverage, m.reachable_cells, 100 * m.repetition, m.turns,
-                m.dead_ends, m.length_m, last_.order_cost);
+                m.dead_ends, m.length_m);
   r.note = note;
   if (method_ != CoverageMethod::kCells) {
-    if (last_.exact_cost) std::snprintf(note, sizeof note, " (exact %.2f, greedy %.2f)", *last_.exact_cost, last_.greedy_cost);
-    else std::snprintf(note, sizeof note, " (too many regions for the exact order; greedy %.2f)", last_.greedy_cost);
+    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", last_.order_cost, last_.greedy_cost);
+    r.note += note;
+  }
+  if (method_ == CoverageMethod::kChnn || method_ == CoverageMethod::kPotts) {
+    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts", last_.network_valid,
+                  last_.network_restarts);
+    r.note += note;
+  }
+  if (last_.exact) {
+    if (last_.exact->proven)
+      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)", last_.exact->seconds,
+                    static_cast<unsigned long long>(last_.exact->prefixes));
+    else
+      std::snprintf(note, sizeof note, "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
+                    last_.exact->seconds, last_.exact->lower_bound);
     r.note += note;
   }
   r.stats.vertices = m.reachable_cells;

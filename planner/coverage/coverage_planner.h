@@ -1,8 +1,10 @@
-// Seed 004 behind the planner interface: "coverage" (sub-regions ordered by the CHNN, the
-// document's method), "coverage-exact" (Held-Karp order), "coverage-greedy" (nearest region
-// next) and "coverage-cells" (the document's cell-by-cell comparison method). The path covers
-// every reachable cell from the start, then goes to the goal (the charger's staging pose), so
-// that the robot sweeps the pit and docks. The last plan is kept for coverage figures.
+// Seed 004 behind the planner interface: "coverage-chnn" (sub-regions ordered by the document's
+// Hopfield network; "coverage" is the same method), "coverage-potts" (plantsim's annealed Potts
+// variant of the network), "coverage-exact" (the proven optimum order), "coverage-greedy"
+// (nearest sweep next) and "coverage-cells" (the document's cell-by-cell comparison method).
+// The path covers every reachable cell from the start and ends at the goal's cell (the
+// charger's staging pose), so that the robot sweeps the pit and docks. The last plan is kept
+// for coverage figures.
 #pragma once
 
 #include "planner/coverage/coverage_plan.h"
@@ -10,23 +12,27 @@
 
 namespace plantsim::planner {
 
-enum class CoverageMethod { kChnn, kExact, kGreedy, kCells };
+enum class CoverageMethod { kChnn, kPotts, kExact, kGreedy, kCells };
 
 class CoveragePlanner : public Planner {
  public:
-  CoveragePlanner(const PlannerInput& input, CoverageMethod method);
-  std::string name() const override;
+  /// `name` is one the registry accepts (is_coverage_planner).
+  CoveragePlanner(const PlannerInput& input, std::string_view name);
+  std::string name() const override { return name_; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
 
   const CoverageGrid& grid() const { return grid_; }
   const CoveragePlan& last_plan() const { return last_; }
+  CoverageMethod method() const { return method_; }
 
  private:
   CoverageGrid grid_;
+  std::string name_;
   CoverageMethod method_;
+  CoverageParams params_;
   CoveragePlan last_;
   // The last query and its answer: an episode plans again what `plantsim coverage` has just
-  // planned, and a coverage plan (CHNN restarts, the exact order for its gap) is not cheap.
+  // planned, and a coverage plan (network restarts, the exact search) is not cheap.
   std::optional<std::pair<Vec2, Vec2>> last_query_;
   PlanResult last_result_;
 };

@@ -1,0 +1,300 @@
+// Branch and bound over sub-region orders, with dominance pruning.
+#include "planner/coverage/exact_order.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <limits>
+#include <unordered_map>
+
+namespace plantsim::planner {
+namespace {
+
+constexpr int kMaxVariants = 8;
+constexpr int kMaxSearchedRegions = 63;  // the state key is a 64-bit set
+using Costs = std::array<double, kMaxVariants>;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct StateKey {
+  std::uint64_t done;
+  int last;
+  friend bool operator==(const StateKey&, const StateKey&) = default;
+};
+struct StateHash {
+  std::size_t operator()(const StateKey& k) const { return std::hash<std::uint64_t>()(k.done * 0x9E3779B97F4A7C15ull ^ k.last); }
+};
+
+class Search {
+ public:
+  Search(const SweepModel& m, const ExactOrderOptions& o, std::vector<int> incumbent, double incumbent_cost)
+      : m_(m), options_(o), n_(m.regions()), best_order_(std::move(incumbent)), best_cost_(incumbent_cost),
+        deadline_(std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(o.time_limit_s))) {
+    // Region-level cheapest costs (over all sweeps): between regions, from the start (row n) and
+    // to the end (column n).
+    cheapest_.assign(static_cast<std::size_t>(n_ + 1) * (n_ + 1), kInf);
+    for (int i = -1; i < n_; ++i)
+      for (int v = 0; v < (i < 0 ? 1 : m_.variants(i)); ++v) {
+        const int row = i < 0 ? n_ : i;
+        for (int j = 0; j < n_; ++j)
+          if (j != i)
+            for (int w = 0; w < m_.variants(j); ++w)
+              at(row, j) = std::min(at(row, j), m_.cost(i, v, j, w));
+        if (i >= 0) at(i, n_) = std::min(at(i, n_), m_.cost_to_end(i, v));
+      }
+    // Sweep-level tables for the split bound: travel (D without the next sweep's own turns)
+    // into each sweep from each region's cheapest end, and out of each sweep to each region.
+    into_.assign(static_cast<std::size_t>(n_ + 1) * n_ * kMaxVariants, kInf);
+    out_of_.assign(static_cast<std::size_t>(n_) * kMaxVariants * (n_ + 1), kInf);
+    for (int i = -1; i < n_; ++i)
+      for (int v = 0; v < (i < 0 ? 1 : m_.variants(i)); ++v)
+        for (int j = 0; j < n_; ++j)
+          if (j != i)
+            for (int w = 0; w < m_.variants(j); ++w) {
+              const double t = m_.cost(i, v, j, w) - own(j, w);
+              double& in = into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w];
+              in = std::min(in, t);
+              if (i >= 0) {
+                double& out = out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + j];
+                out = std::min(out, t);
+              }
+            }
+    for (int i = 0; i < n_; ++i)
+      for (int v = 0; v < m_.variants(i); ++v)
+        out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + n_] = m_.has_end() ? m_.cost_to_end(i, v) : 0.0;
+  }
+
+  bool run() {
+    Costs none{};
+    none.fill(kInf);
+    none[0] = 0;
+    root_bound_ = still_to_come(0, SweepModel::kStart);
+    root_bound_ = std::max(root_bound_, split_bound(0, SweepModel::kStart, none));
+    prefix_.clear();
+    expand(0, SweepModel::kStart, none);
+    return !timed_out_;
+  }
+
+  const std::vector<int>& order() const { return best_order_; }
+  double cost() const { return best_cost_; }
+  double root_bound() const { return root_bound_; }
+  std::uint64_t prefixes() const { return prefixes_; }
+
+ private:
+  double& at(int i, int j) { return cheapest_[static_cast<std::size_t>(i) * (n_ + 1) + j]; }
+  double at(int i, int j) const { return cheapest_[static_cast<std::size_t>(i) * (n_ + 1) + j]; }
+
+  // A lower bound of what follows a prefix over `done` ending at `last`: every region left is
+  // entered from the last one or from another region left, and every one of them and the last
+  // is left for a region left or the end; the larger of the two sums.
+  double still_to_come(std::uint64_t done, int last) const {
+    const int last_row = last == SweepModel::kStart ? n_ : last;
+    double in = 0, out = 0;
+    bool any_left = false;
+    for (int j = 0; j < n_; ++j) {
+      if (done >> j & 1) continue;
+      any_left = true;
+      double best_in = at(last_row, j), best_out = m_.has_end() ? at(j, n_) : 0.0;
+      for (int i = 0; i < n_; ++i)
+        if (i != j && !(done >> i & 1)) best_in = std::min(best_in, at(i, j)), best_out = std::min(best_out, at(j, i));
+      in += best_in;
+      out += best_out;
+    }
+    if (last != SweepModel::kStart && m_.has_end()) {
+      double best_out = any_left ? kInf : at(last, n_);
+      for (int j = 0; j < n_; ++j)
+        if (!(done >> j & 1)) best_out = std::min(best_out, at(last, j));
+      out += best_out;
+    }
+    return std::max(in, out);
+  }
+
+  double own(int j, int w) const { return m_.weights().turns * m_.variant(j, w).turns; }
+
+  // Another lower bound, of the whole order, that keeps each sweep's way in and way out
+  // together: every way joins two sweeps, so half of it is charged to each; each region left
+  // pays its own turns and half its cheapest way in (from the last region or one left) and out
+  // (to one left or the end) for the same sweep; the last region pays half its way out for the
+  // sweep its prefix ended with.
+  double split_bound(std::uint64_t done, int last, const Costs& costs) const {
+    bool any_left = false;
+    double total = 0, end_in = m_.has_end() ? kInf : 0.0, most_out_charged = 0;
+    const int last_variants = last == SweepModel::kStart ? 1 : m_.variants(last);
+    for (int j = 0; j < n_; ++j) {
+      if (done >> j & 1) continue;
+      any_left = true;
+      double best = kInf, best_without_out = kInf;
+      for (int w = 0; w < m_.variants(j); ++w) {
+        double in = into_[(static_cast<std::size_t>(last + 1) * n_ + j) * kMaxVariants + w];
+        const double* out_row = &out_of_[(static_cast<std::size_t>(j) * kMaxVariants + w) * (n_ + 1)];
+        double out = m_.has_end() ? out_row[n_] : kInf;
+        for (int i = 0; i < n_; ++i)
+          if (i != j && !(done >> i & 1)) {
+            in = std::min(in, into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w]);
+            out = std::min(out, out_row[i]);
+          }
+        if (out == kInf) out = 0;  // no end and no region left besides j: j ends the path
+        if (m_.has_end()) end_in = std::min(end_in, out_row[n_]);
+        best = std::min(best, own(j, w) + 0.5 * in + 0.5 * out);
+        best_without_out = std::min(best_without_out, own(j, w) + 0.5 * in);
+      }
+      total += best;
+      most_out_charged = std::max(most_out_charged, best - best_without_out);
+    }
+    // Without an end one region left has no way out: take back the most any was charged for it.
+    if (!m_.has_end()) total -= most_out_charged;
+    double prefix = kInf;
+    for (int v = 0; v < last_variants; ++v) {
+      double out = kInf;
+      if (last == SweepModel::kStart) {
+        for (int j = 0; j < n_; ++j)
+          for (int w = 0; w < m_.variants(j); ++w) out = std::min(out, into_[static_cast<std::size_t>(j) * kMaxVariants + w]);
+      } else {
+        const double* out_row = &out_of_[(static_cast<std::size_t>(last) * kMaxVariants + v) * (n_ + 1)];
+        out = any_left ? kInf : out_row[n_];
+        for (int j = 0; j < n_; ++j)
+          if (!(done >> j & 1)) out = std::min(out, out_row[j]);
+      }
+      prefix = std::min(prefix, costs[v] + 0.5 * out);
+    }
+    if (!any_left) {  // only the way to the end is left, whole
+      double whole = kInf;
+      for (int v = 0; v < last_variants; ++v) whole = std::min(whole, costs[v] + m_.cost_to_end(last, v));
+      return whole;
+    }
+    return prefix + total + 0.5 * end_in;
+  }
+
+  // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v.
+  void expand(std::uint64_t done, int last, const Costs& costs) {
+    if (timed_out_) return;
+    if (++prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_) {
+      timed_out_ = true;
+      return;
+    }
+    const int last_variants = last == SweepModel::kStart ? 1 : m_.variants(last);
+    if (static_cast<int>(prefix_.size()) == n_) {
+      double total = kInf;
+      for (int v = 0; v < last_variants; ++v) total = std::min(total, costs[v] + m_.cost_to_end(last, v));
+      if (total < best_cost_ - 1e-12) best_cost_ = total, best_order_ = prefix_;
+      return;
+    }
+    double so_far = kInf;
+    for (int v = 0; v < last_variants; ++v) so_far = std::min(so_far, costs[v]);
+    if (so_far + still_to_come(done, last) >= best_cost_ - 1e-12) return;
+    if (split_bound(done, last, costs) >= best_cost_ - 1e-12) return;
+    struct Child {
+      int region;
+      double bound;
+      Costs costs;
+    };
+    std::vector<Child> children;
+    for (int j = 0; j < n_; ++j) {
+      if (done >> j & 1) continue;
+      Child c{j, kInf, {}};
+      c.costs.fill(kInf);
+      double low = kInf;
+      for (int w = 0; w < m_.variants(j); ++w) {
+        for (int v = 0; v < last_variants; ++v) c.costs[w] = std::min(c.costs[w], costs[v] + m_.cost(last, v, j, w));
+        low = std::min(low, c.costs[w]);
+      }
+      c.bound = low;
+      if (c.bound < best_cost_ - 1e-12) children.push_back(c);
+    }
+    std::sort(children.begin(), children.end(), [](const Child& a, const Child& b) { return a.bound < b.bound; });
+    for (const Child& c : children) {
+      if (c.bound >= best_cost_ - 1e-12) break;
+      const std::uint64_t next = done | (std::uint64_t{1} << c.region);
+      if (dominated(next, c.region, c.costs)) continue;
+      prefix_.push_back(c.region);
+      expand(next, c.region, c.costs);
+      prefix_.pop_back();
+      if (timed_out_) return;
+    }
+  }
+
+  // Another prefix over the same regions ending at the same one was at most as dear for every
+  // sweep of it: whatever follows this one followed that one too. Records this one otherwise.
+  bool dominated(std::uint64_t done, int last, const Costs& costs) {
+    const StateKey key{done, last};
+    auto it = seen_.find(key);
+    if (it == seen_.end()) {
+      if (seen_.size() < options_.max_table_states) seen_.emplace(key, costs);
+      return false;
+    }
+    bool beaten = true;
+    for (int w = 0; w < m_.variants(last); ++w) beaten = beaten && it->second[w] <= costs[w];
+    if (beaten) return true;
+    for (int w = 0; w < m_.variants(last); ++w) it->second[w] = std::min(it->second[w], costs[w]);
+    return false;
+  }
+
+  const SweepModel& m_;
+  ExactOrderOptions options_;
+  int n_;
+  std::vector<int> best_order_, prefix_;
+  double best_cost_;
+  std::chrono::steady_clock::time_point deadline_;
+  std::vector<double> cheapest_, into_, out_of_;
+  double root_bound_ = 0;
+  std::unordered_map<StateKey, Costs, StateHash> seen_;
+  std::uint64_t prefixes_ = 0;
+  bool timed_out_ = false;
+};
+
+}  // namespace
+
+std::vector<int> improve_order(const SweepModel& model, std::vector<int> order) {
+  double cost = model.best_sweeps(order).cost;
+  const int n = static_cast<int>(order.size());
+  for (bool better = true; better;) {
+    better = false;
+    // Reverse a stretch.
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) {
+        std::reverse(order.begin() + a, order.begin() + b + 1);
+        const double c = model.best_sweeps(order).cost;
+        if (c < cost - 1e-12) cost = c, better = true;
+        else std::reverse(order.begin() + a, order.begin() + b + 1);
+      }
+    // Move one region elsewhere.
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        if (a == b) continue;
+        std::vector<int> moved = order;
+        const int r = moved[a];
+        moved.erase(moved.begin() + a);
+        moved.insert(moved.begin() + b, r);
+        const double c = model.best_sweeps(moved).cost;
+        if (c < cost - 1e-12) cost = c, order = std::move(moved), better = true;
+      }
+  }
+  return order;
+}
+
+ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
+                       const ExactOrderOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ExactOrder out;
+  out.cost = kInf;
+  const bool searched = model.regions() <= kMaxSearchedRegions;
+  for (const std::vector<int>& o : starting_orders) {
+    std::vector<int> better = searched ? improve_order(model, o) : o;
+    const double c = model.best_sweeps(better).cost;
+    if (c < out.cost) out.cost = c, out.order = std::move(better);
+  }
+  if (searched) {
+    Search search(model, options, out.order, out.cost);
+    out.proven = search.run();
+    out.order = search.order();
+    out.cost = search.cost();
+    out.lower_bound = out.proven ? out.cost : search.root_bound();
+    out.prefixes = search.prefixes();
+  } else {
+    out.lower_bound = 0;
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace plantsim::planner

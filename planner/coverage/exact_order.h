@@ -1,0 +1,38 @@
+// The best order of seed 004's sub-regions, proven: depth-first branch and bound over orders,
+// each prefix carrying the best cost for every way its last region can be swept (so the sweep
+// choices are exact too), bounded by the cheapest ways into and out of the regions left, a table
+// of (regions done, last region) states that drops any prefix another one already beats for
+// every sweep of the last region (dynamic programming's pruning without its 2^n table). Started
+// from the best of the given orders improved by moving and reversing stretches.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "planner/coverage/sweep_model.h"
+
+namespace plantsim::planner {
+
+struct ExactOrderOptions {
+  double time_limit_s = 10.0;
+  std::size_t max_table_states = 1'000'000;  ///< memory: about 150 bytes each
+};
+
+struct ExactOrder {
+  std::vector<int> order;
+  double cost = 0;
+  bool proven = false;       ///< the search finished: no order is cheaper
+  double lower_bound = 0;    ///< when not proven: no order is cheaper than this
+  double seconds = 0;
+  std::uint64_t prefixes = 0;  ///< prefixes expanded
+};
+
+/// Beyond 63 regions nothing is searched (the state key is a 64-bit set): the order is then the
+/// best starting one and `proven` is false.
+ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
+                       const ExactOrderOptions& options = {});
+
+/// Moves single regions and reverses stretches of the order while that lowers its cost.
+std::vector<int> improve_order(const SweepModel& model, std::vector<int> order);
+
+}  // namespace plantsim::planner
