@@ -39,6 +39,7 @@ nlohmann::ordered_json coverage_plan_json(const CoverageRun& run) {
     j["restarts"] = p.network_restarts;
   }
   if (p.exact) {
+    j["searched"] = p.exact->searched;
     j["proven_optimal"] = p.exact->proven;
     j["lower_bound"] = p.exact->lower_bound;
     j["search_s"] = p.exact->seconds;

@@ -36,7 +36,8 @@ std::string describe_order(const planner::CoveragePlan& p) {
     s += line;
   }
   if (p.exact) {
-    if (p.exact->proven) std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
+    if (!p.exact->searched) std::snprintf(line, sizeof line, "; NOT searched: the search handles at most 63 regions");
+    else if (p.exact->proven) std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
     else std::snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)", p.exact->seconds, p.exact->lower_bound);
     s += line;
   }

@@ -173,6 +173,15 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
       {"scenario name not UTF-8 (found by fuzzing)",
        [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x\xac: {}\n"); return std::string("batch s.yaml"); },
        "printable UTF-8"},
+      {"coverage parameter typo",
+       [](Cli& c) { c.write("p.json", R"({"chnn": {"alpah": 1}})"); return "coverage " + test::source_file("worlds/scenarios/depot_pit_coverage.json") + " --params p.json"; },
+       "field 'chnn.alpah': unknown key"},
+      {"coverage search of 1e9 s",
+       [](Cli& c) { c.write("p.json", R"({"exact": {"time_limit_s": 1e9}})"); return std::string("coverage-study --maps 1 --params p.json"); },
+       "field 'exact.time_limit_s'"},
+      {"coverage weights not summing to 1",
+       [](Cli& c) { c.write("p.json", R"({"w1_cells": 0.5})"); return std::string("coverage-study --maps 1 --params p.json"); },
+       "field 'w1_cells'"},
       {"unknown command", [](Cli&) { return std::string("bogus"); }, "unknown command 'bogus'"},
   };
   for (const HostileCase& c : cases) {

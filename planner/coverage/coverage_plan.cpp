@@ -2,6 +2,7 @@
 #include "planner/coverage/coverage_plan.h"
 
 #include <algorithm>
+#include <string>
 
 namespace plantsim::planner {
 
@@ -44,6 +45,12 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
   plan.greedy_cost = model.best_sweeps(greedy).cost;
   switch (ordering) {
     case RegionOrdering::kChnn: {
+      if (model.regions() > kMaxNetworkRegions) {
+        plan.ok = false;
+        plan.failure = std::to_string(model.regions()) + " sub-regions: the Hopfield network is not run above " +
+                       std::to_string(kMaxNetworkRegions) + " (its work per step grows as n^3)";
+        return plan;
+      }
       const HopfieldResult r = hopfield_order(model.region_distances(), params.chnn);
       plan.network_valid = r.valid;
       plan.network_restarts = r.restarts;

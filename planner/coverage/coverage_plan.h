@@ -16,6 +16,10 @@ namespace plantsim::planner {
 
 enum class RegionOrdering { kChnn, kPotts, kExact, kGreedy };
 
+/// Above this many sub-regions the Hopfield network is not run (its n^3 work per step of the
+/// state equation): the plan says so instead.
+inline constexpr int kMaxNetworkRegions = 150;
+
 struct CoverageMetrics {
   int reachable_cells = 0;
   int covered_cells = 0;

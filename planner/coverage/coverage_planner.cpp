@@ -90,7 +90,10 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
     r.note += note;
   }
   if (last_.exact) {
-    if (last_.exact->proven)
+    if (!last_.exact->searched)
+      std::snprintf(note, sizeof note, "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
+                    static_cast<int>(last_.regions.size()));
+    else if (last_.exact->proven)
       std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)", last_.exact->seconds,
                     static_cast<unsigned long long>(last_.exact->prefixes));
     else

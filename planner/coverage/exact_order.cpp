@@ -283,6 +283,7 @@ ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<in
     const double c = model.best_sweeps(better).cost;
     if (c < out.cost) out.cost = c, out.order = std::move(better);
   }
+  out.searched = searched;
   if (searched) {
     Search search(model, options, out.order, out.cost);
     out.proven = search.run();

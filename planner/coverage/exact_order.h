@@ -21,6 +21,7 @@ struct ExactOrderOptions {
 struct ExactOrder {
   std::vector<int> order;
   double cost = 0;
+  bool searched = false;     ///< false above 63 regions: the order is the best starting one
   bool proven = false;       ///< the search finished: no order is cheaper
   double lower_bound = 0;    ///< when not proven: no order is cheaper than this
   double seconds = 0;

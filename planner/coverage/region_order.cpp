@@ -7,6 +7,11 @@
 #include <random>
 
 namespace plantsim::planner {
+namespace {
+
+constexpr double kUpdateBudget = 3e9;
+
+}  // namespace
 
 std::vector<int> greedy_order(const SweepModel& m) {
   const int n = m.regions();
@@ -47,7 +52,13 @@ PottsResult potts_order(const RegionDistances& dist, const PottsParams& p) {
   std::uniform_real_distribution<double> noise(-0.05, 0.05);
   double best_cost = std::numeric_limits<double>::infinity();
   std::vector<double> v(static_cast<std::size_t>(n) * n), field(n);
-  for (int restart = 0; restart < p.restarts; ++restart) {
+  // Each restart costs n^3 updates per sweep and temperature: on large maps fewer restarts run,
+  // so that the work stays near kUpdateBudget (the result says how many ran).
+  int temperatures = 0;
+  for (double t = p.t0; t > p.t_min; t *= p.cooling) ++temperatures;
+  const double per_restart = static_cast<double>(n) * n * n * p.sweeps * temperatures;
+  const int restarts = std::max(1, std::min(p.restarts, static_cast<int>(kUpdateBudget / per_restart)));
+  for (int restart = 0; restart < restarts; ++restart) {
     for (double& x : v) x = (1.0 + noise(rng)) / n;
     for (double t = p.t0; t > p.t_min; t *= p.cooling) {
       for (int sweep = 0; sweep < p.sweeps; ++sweep)

@@ -26,7 +26,7 @@ struct PottsParams {
   double cooling = 0.93; ///< temperature factor per step
   double t_min = 0.005;
   int sweeps = 4;        ///< updates of every position per temperature
-  int restarts = 20;
+  int restarts = 20;     ///< fewer on large maps: the work is capped near 3e9 updates
   std::uint64_t seed = 1;
 };
 
