@@ -197,7 +197,7 @@ TEST(ExactOrder, ACrowdedMapGivesAnOrderAndAnHonestBoundWithinItsLimit) {
   EXPECT_TRUE(is_permutation_of(e.order, regions.size()));
   EXPECT_LE(e.cost, m.best_sweeps(greedy).cost + 1e-9);
   EXPECT_LE(e.lower_bound, e.cost + 1e-9);
-  EXPECT_GT(e.lower_bound, 0.5 * e.cost);
+  EXPECT_GT(e.lower_bound, 0.7 * e.cost);  // the root's multipliers: 55.85 of 72.40 measured
   std::printf("%zu regions: best %.2f, lower bound %.2f, proven %d, %llu prefixes\n", regions.size(), e.cost, e.lower_bound,
               e.proven, static_cast<unsigned long long>(e.prefixes));
 }

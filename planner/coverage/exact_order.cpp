@@ -12,6 +12,7 @@ namespace {
 
 constexpr int kMaxVariants = 8;
 constexpr int kMaxSearchedRegions = 63;  // the state key is a 64-bit set
+constexpr int kMultiplierSteps = 1000;
 using Costs = std::array<double, kMaxVariants>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -69,6 +70,7 @@ class Search {
     none.fill(kInf);
     none[0] = 0;
     root_bound_ = still_to_come(0, SweepModel::kStart);
+    tune_multipliers(none);
     root_bound_ = std::max(root_bound_, split_bound(0, SweepModel::kStart, none));
     prefix_.clear();
     expand(0, SweepModel::kStart, none);
@@ -111,58 +113,106 @@ class Search {
 
   double own(int j, int w) const { return m_.weights().turns * m_.variant(j, w).turns; }
 
+  double into(int i, int j, int w) const { return into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w]; }
+  double out_of(int j, int w, int k) const { return out_of_[(static_cast<std::size_t>(j) * kMaxVariants + w) * (n_ + 1) + k]; }
+  // Multiplier of the way from i (kStart: the start) to j (n_: the end).
+  double& pi(int i, int j) { return pi_[static_cast<std::size_t>(i + 1) * (n_ + 1) + j]; }
+  double pi(int i, int j) const { return pi_[static_cast<std::size_t>(i + 1) * (n_ + 1) + j]; }
+
   // Another lower bound, of the whole order, that keeps each sweep's way in and way out
-  // together: every way joins two sweeps, so half of it is charged to each; each region left
-  // pays its own turns and half its cheapest way in (from the last region or one left) and out
-  // (to one left or the end) for the same sweep; the last region pays half its way out for the
-  // sweep its prefix ended with.
-  double split_bound(std::uint64_t done, int last, const Costs& costs) const {
+  // together: every way joins two sweeps, so half of it is charged to each end of it; each
+  // region left pays its own turns, half its cheapest way in (from the last region or one left)
+  // and half its cheapest way out (to one left or the end) for the same sweep; the last region
+  // pays half its way out for the sweep its prefix ended with, the end half its way in. A
+  // multiplier pi(a, b) is added to the way a -> b where b pays for it and taken off where a
+  // does: on any order the two cancel, so every choice of them gives a bound, and the root's
+  // are raised by subgradient steps until the bound stops rising (Lagrangian relaxation of
+  // "the way b was entered by is the way a left by"). Without an end the end is a free node.
+  struct Choices {
+    std::vector<int> in, out;  // per region left: where its cheapest way came from, went to
+    int last_out = -1, end_in = -1;
+  };
+  double split_bound(std::uint64_t done, int last, const Costs& costs, Choices* chosen = nullptr) const {
     bool any_left = false;
-    double total = 0, end_in = m_.has_end() ? kInf : 0.0, most_out_charged = 0;
+    double total = 0, end_in = kInf;
+    int end_from = -1;
     const int last_variants = last == SweepModel::kStart ? 1 : m_.variants(last);
+    if (chosen) chosen->in.assign(n_, -2), chosen->out.assign(n_, -2);
     for (int j = 0; j < n_; ++j) {
       if (done >> j & 1) continue;
       any_left = true;
-      double best = kInf, best_without_out = kInf;
+      double best = kInf;
       for (int w = 0; w < m_.variants(j); ++w) {
-        double in = into_[(static_cast<std::size_t>(last + 1) * n_ + j) * kMaxVariants + w];
-        const double* out_row = &out_of_[(static_cast<std::size_t>(j) * kMaxVariants + w) * (n_ + 1)];
-        double out = m_.has_end() ? out_row[n_] : kInf;
+        double in = 0.5 * into(last, j, w) + pi(last, j), out = 0.5 * out_of(j, w, n_) - pi(j, n_);
+        int from = last, to = n_;
         for (int i = 0; i < n_; ++i)
           if (i != j && !(done >> i & 1)) {
-            in = std::min(in, into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w]);
-            out = std::min(out, out_row[i]);
+            const double a = 0.5 * into(i, j, w) + pi(i, j), b = 0.5 * out_of(j, w, i) - pi(j, i);
+            if (a < in) in = a, from = i;
+            if (b < out) out = b, to = i;
           }
-        if (out == kInf) out = 0;  // no end and no region left besides j: j ends the path
-        if (m_.has_end()) end_in = std::min(end_in, out_row[n_]);
-        best = std::min(best, own(j, w) + 0.5 * in + 0.5 * out);
-        best_without_out = std::min(best_without_out, own(j, w) + 0.5 * in);
+        const double e = 0.5 * out_of(j, w, n_) + pi(j, n_);
+        if (e < end_in) end_in = e, end_from = j;
+        if (own(j, w) + in + out < best) {
+          best = own(j, w) + in + out;
+          if (chosen) chosen->in[j] = from, chosen->out[j] = to;
+        }
       }
       total += best;
-      most_out_charged = std::max(most_out_charged, best - best_without_out);
-    }
-    // Without an end one region left has no way out: take back the most any was charged for it.
-    if (!m_.has_end()) total -= most_out_charged;
-    double prefix = kInf;
-    for (int v = 0; v < last_variants; ++v) {
-      double out = kInf;
-      if (last == SweepModel::kStart) {
-        for (int j = 0; j < n_; ++j)
-          for (int w = 0; w < m_.variants(j); ++w) out = std::min(out, into_[static_cast<std::size_t>(j) * kMaxVariants + w]);
-      } else {
-        const double* out_row = &out_of_[(static_cast<std::size_t>(last) * kMaxVariants + v) * (n_ + 1)];
-        out = any_left ? kInf : out_row[n_];
-        for (int j = 0; j < n_; ++j)
-          if (!(done >> j & 1)) out = std::min(out, out_row[j]);
-      }
-      prefix = std::min(prefix, costs[v] + 0.5 * out);
     }
     if (!any_left) {  // only the way to the end is left, whole
       double whole = kInf;
       for (int v = 0; v < last_variants; ++v) whole = std::min(whole, costs[v] + m_.cost_to_end(last, v));
       return whole;
     }
-    return prefix + total + 0.5 * end_in;
+    double prefix = kInf;
+    for (int v = 0; v < last_variants; ++v) {
+      double out = kInf;
+      int to = -1;
+      for (int k = 0; k < n_; ++k) {
+        if (done >> k & 1) continue;
+        double way = kInf;
+        if (last == SweepModel::kStart) {
+          for (int w = 0; w < m_.variants(k); ++w) way = std::min(way, into(SweepModel::kStart, k, w));
+        } else {
+          way = out_of(last, v, k);
+        }
+        if (0.5 * way - pi(last, k) < out) out = 0.5 * way - pi(last, k), to = k;
+      }
+      if (costs[v] + out < prefix) {
+        prefix = costs[v] + out;
+        if (chosen) chosen->last_out = to;
+      }
+    }
+    if (chosen) chosen->end_in = end_from;
+    return prefix + total + end_in;
+  }
+
+  // Raises the root's multipliers (Polyak steps towards the incumbent, halved when the bound
+  // stalls) and keeps those of the best bound.
+  void tune_multipliers(const Costs& root) {
+    pi_.assign(static_cast<std::size_t>(n_ + 1) * (n_ + 1), 0.0);
+    std::vector<double> best_pi = pi_;
+    double best = split_bound(0, SweepModel::kStart, root), theta = 1.0;
+    int stalled = 0;
+    Choices c;
+    for (int step = 0; step < kMultiplierSteps && std::chrono::steady_clock::now() < deadline_; ++step) {
+      const double bound = split_bound(0, SweepModel::kStart, root, &c);
+      if (bound > best + 1e-12) best = bound, best_pi = pi_, stalled = 0;
+      else if (++stalled > 20) theta *= 0.5, stalled = 0;
+      // d bound / d pi(a, b): +1 where b's way in came from a, -1 where a's way out went to b.
+      std::vector<double> g(pi_.size(), 0.0);
+      auto add = [&](int a, int b, double x) { g[static_cast<std::size_t>(a + 1) * (n_ + 1) + b] += x; };
+      for (int j = 0; j < n_; ++j) add(c.in[j], j, 1.0), add(j, c.out[j], -1.0);
+      add(SweepModel::kStart, c.last_out, -1.0);
+      add(c.end_in, n_, 1.0);
+      double norm = 0;
+      for (double x : g) norm += x * x;
+      if (norm == 0 || !(best_cost_ > bound)) break;  // consistent choices: the bound is an order
+      const double length = theta * (best_cost_ - bound) / norm;
+      for (std::size_t k = 0; k < pi_.size(); ++k) pi_[k] += length * g[k];
+    }
+    pi_ = best_pi;
   }
 
   // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v.
@@ -235,7 +285,7 @@ class Search {
   std::vector<int> best_order_, prefix_;
   double best_cost_;
   std::chrono::steady_clock::time_point deadline_;
-  std::vector<double> cheapest_, into_, out_of_;
+  std::vector<double> cheapest_, into_, out_of_, pi_;
   double root_bound_ = 0;
   std::unordered_map<StateKey, Costs, StateHash> seen_;
   std::uint64_t prefixes_ = 0;

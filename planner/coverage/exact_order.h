@@ -1,6 +1,7 @@
 // The best order of seed 004's sub-regions, proven: depth-first branch and bound over orders,
 // each prefix carrying the best cost for every way its last region can be swept (so the sweep
-// choices are exact too), bounded by the cheapest ways into and out of the regions left, a table
+// choices are exact too), bounded by the cheapest ways into and out of the regions left (half of
+// each way charged to either end, with Lagrangian multipliers tuned at the root), a table
 // of (regions done, last region) states that drops any prefix another one already beats for
 // every sweep of the last region (dynamic programming's pruning without its 2^n table). Started
 // from the best of the given orders improved by moving and reversing stretches.
