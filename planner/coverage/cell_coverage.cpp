@@ -41,13 +41,9 @@ std::optional<Cell> ring_search(const CoverageGrid& grid, Cell from, const std::
 }
 
 CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, const CoverageParams& params) {
-  CoveragePlan plan;
   const std::vector<bool> reach = grid.reachable(start);
-  if (end && (!grid.inside(*end) || !reach[grid.index(*end)])) {
-    plan.ok = false;
-    plan.failure = "the end cell cannot be reached from the start";
-    return plan;
-  }
+  if (auto failed = unreachable_end(grid, reach, end)) return *failed;
+  CoveragePlan plan;
   std::vector<int> visits(reach.size(), 0);
   int left = 0;
   for (std::size_t i = 0; i < reach.size(); ++i) left += reach[i];

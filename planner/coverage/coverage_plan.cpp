@@ -29,15 +29,20 @@ CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cel
   return m;
 }
 
+std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid, const std::vector<bool>& reachable,
+                                            std::optional<Cell> end) {
+  if (!end || (grid.inside(*end) && reachable[grid.index(*end)])) return std::nullopt;
+  CoveragePlan plan;
+  plan.ok = false;
+  plan.failure = "the end cell cannot be reached from the start";
+  return plan;
+}
+
 CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, RegionOrdering ordering,
                                   const CoverageParams& params) {
-  CoveragePlan plan;
   const std::vector<bool> reach = grid.reachable(start);
-  if (end && (!grid.inside(*end) || !reach[grid.index(*end)])) {
-    plan.ok = false;
-    plan.failure = "the end cell cannot be reached from the start";
-    return plan;
-  }
+  if (auto failed = unreachable_end(grid, reach, end)) return *failed;
+  CoveragePlan plan;
   plan.regions = grid.decompose(reach);
   if (plan.regions.empty()) return plan;
   const SweepModel model(grid, plan.regions, start, end, params.weights);

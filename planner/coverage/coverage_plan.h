@@ -49,6 +49,11 @@ struct CoveragePlan {
   CoverageMetrics metrics;
 };
 
+/// A plan that failed because `end` is given but off the grid or not in `reachable`; nullopt when
+/// the end is fine (or there is none).
+std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid, const std::vector<bool>& reachable,
+                                            std::optional<Cell> end);
+
 /// Appends `more` to `path`, skipping its first cell when it repeats the path's last.
 void append_cells(std::vector<Cell>& path, const std::vector<Cell>& more);
 
