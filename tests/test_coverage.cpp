@@ -94,7 +94,7 @@ TEST(Coverage, AnEmptyRectangleIsOneSweepAlongItsLongSideWithoutRepetition) {
 TEST(SweepModel, TheOrderCostIsThePathsOwnTravelAndTurns) {
   int exact_matches = 0, without_single_cells = 0;
   CoverageParams params;
-  params.exact.time_limit_s = 0.5;
+  params.exact.max_prefixes = 100000;
   for (std::uint64_t seed = 0; seed <= 4; ++seed) {
     const auto pit = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
     const CoverageGrid g = seed == 0 ? grid_of(pit) : generated_map(0.2, seed);
@@ -191,7 +191,7 @@ TEST(ExactOrder, ACrowdedMapGivesAnOrderAndAnHonestBoundWithinItsLimit) {
   ASSERT_GE(regions.size(), 30u);
   const SweepModel m(g, regions, {0, 0}, charger_cell(g));
   ExactOrderOptions o;
-  o.time_limit_s = 1.0;
+  o.max_prefixes = 300000;
   const std::vector<int> greedy = greedy_order(m);
   const ExactOrder e = exact_order(m, {greedy}, o);
   EXPECT_TRUE(is_permutation_of(e.order, regions.size()));
@@ -283,7 +283,7 @@ TEST_P(Shares, EveryMethodCoversAllReachableCellsAndEndsAtTheCharger) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const worlds::World w = worlds::cell_block_world({GetParam(), seed});
     PlannerInput in = planner_input(w, true);
-    in.coverage.exact.time_limit_s = 2;
+    in.coverage.exact.max_prefixes = 200000;
     for (const char* name : {"coverage-chnn", "coverage-potts", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
       CoveragePlanner planner(in, name);
       const PlanResult r = planner.plan(w.start.position(), worlds::staging_pose(w).position());

@@ -59,6 +59,7 @@ const std::vector<Field>& fields() {
       CP_INT("potts", potts.sweeps, "sweeps", 1, 1000),
       CP_INT("potts", potts.restarts, "restarts", 1, 10000),
       CP_INT("potts", potts.seed, "seed", 0, 9e15),
+      CP_INT("exact", exact.max_prefixes, "max_prefixes", 0, 1e12),
       CP_REAL("exact", exact.time_limit_s, "time_limit_s", 0.0, 3600.0),
       CP_INT("exact", exact.max_table_states, "max_table_states", 0, 1e8),
   };

@@ -218,7 +218,7 @@ class Search {
   // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v.
   void expand(std::uint64_t done, int last, const Costs& costs) {
     if (timed_out_) return;
-    if (++prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_) {
+    if (++prefixes_ > options_.max_prefixes || (prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)) {
       timed_out_ = true;
       return;
     }
