@@ -15,10 +15,10 @@
 namespace plantsim::planner {
 
 struct ExactOrderOptions {
-  /// The search stops after this many prefixes (about 8 s on the machine of docs/seeds.md's
+  /// The search stops after this many prefixes (4-7 s on the machine of docs/seeds.md's
   /// numbers), so that what it finds does not depend on the machine's load, or at the time
   /// limit, whichever comes first.
-  std::uint64_t max_prefixes = 3'000'000;
+  std::uint64_t max_prefixes = 1'500'000;
   double time_limit_s = 10.0;
   std::size_t max_table_states = 1'000'000;  ///< memory: about 150 bytes each
 };
