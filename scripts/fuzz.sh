@@ -10,7 +10,7 @@ root=$PWD
 seconds=${1:-60}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params)
 data=$(cd ../shared/data && pwd)
 
 mkdir -p build-fuzz
@@ -20,12 +20,14 @@ cmake --build build-fuzz --parallel "$(nproc)"
 
 corpus=build-fuzz/corpus
 rm -rf "$corpus"
-mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario} build-fuzz/artifacts
+mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params} build-fuzz/artifacts
 small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
 for f in worlds/examples/*.json worlds/scenarios/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
   small "$f" && cp "$f" "$corpus/world_json/$(basename "$f")"
 done
 for f in configs/*.json; do cp "$f" "$corpus/episode_config/"; done
+cp configs/coverage_params.json "$corpus/coverage_params/"
+printf '{"chnn": {"restarts": 3, "eta": 1e3}, "exact": {"max_prefixes": 10}}' > "$corpus/coverage_params/small.json"
 for f in scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
 printf 'worlds: [w.json]\nplanners: [vg]\nfaults: {a: {lidar: {range_noise_m: 0.01}}, b: {unmapped_obstacles: 2}}\nseeds: 2\ngate: {min_success: 0.5, configurations: [{planner: vg, min_success: 0.9}]}\nsweep: {parameter: drive.tyre_friction, values: [0.1, 0.5]}\n' \
   > "$corpus/scenario/small.yaml"
