@@ -17,7 +17,7 @@ constexpr Rgb kCoveredMore{215, 140, 185};
 constexpr Rgb kBlocked{180, 180, 185};
 constexpr Rgb kRegionOutline = palette::kOkabeBlue;
 constexpr Rgb kCoveragePath{0, 0, 0};
-constexpr Rgb kSweepStart = palette::kOkabeVermillion;
+constexpr Rgb kSweepStart = palette::kOkabeYellow;  // vermillion is the driven path's
 
 }  // namespace
 
@@ -95,6 +95,7 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     bool sweep_starts = false;
     for (const planner::Cell& first : p.plan.sweep_starts) {
       c.fill_disk(g.centre(first), 0.18 * g.cell_m(), kSweepStart);
+      c.ring(g.centre(first), 0.18 * g.cell_m(), 1.0, kCoveragePath);  // yellow needs an edge on pale tints
       sweep_starts = true;
     }
     listed(sweep_starts, kSweepStart, "sweep start");
