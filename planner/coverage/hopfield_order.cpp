@@ -48,13 +48,7 @@ HopfieldResult hopfield_order(const RegionDistances& dist, const HopfieldParams&
     result.valid = result.restarts = result.settled = 1;
     return result;
   }
-  // Distances scaled to at most 1, so that the constants mean the same on every map.
-  double dmax = 0;
-  for (int x = 0; x < n; ++x) {
-    dmax = std::max({dmax, dist.from_start[x], dist.to_end[x]});
-    for (int y = 0; y < n; ++y) dmax = std::max(dmax, dist.between[x][y]);
-  }
-  if (!(dmax > 0) || !std::isfinite(dmax)) dmax = 1;
+  const double dmax = distance_scale(dist);
   Eigen::MatrixXd d(n, n);
   Eigen::VectorXd from_start(n), to_end(n);
   for (int x = 0; x < n; ++x) {

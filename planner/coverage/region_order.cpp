@@ -35,13 +35,7 @@ PottsResult potts_order(const RegionDistances& dist, const PottsParams& p) {
   const int n = static_cast<int>(dist.between.size());
   PottsResult result;
   if (n == 0) return result;
-  // Distances scaled to at most 1, so that the weights mean the same on every map.
-  double dmax = 0;
-  for (int x = 0; x < n; ++x) {
-    dmax = std::max({dmax, dist.from_start[x], dist.to_end[x]});
-    for (int y = 0; y < n; ++y) dmax = std::max(dmax, dist.between[x][y]);
-  }
-  if (!(dmax > 0) || !std::isfinite(dmax)) dmax = 1;
+  const double dmax = distance_scale(dist);
   std::vector<double> d(static_cast<std::size_t>(n) * n, 0.0), first(n), last(n);
   for (int x = 0; x < n; ++x) {
     first[x] = dist.from_start[x] / dmax;

@@ -2,17 +2,25 @@
 #include "planner/coverage/sweep_model.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 
 namespace plantsim::planner {
-namespace {
-
-int sweep_turns(const std::vector<Cell>& cells) { return turns_along(cells); }
-
-}  // namespace
+double distance_scale(const RegionDistances& d) {
+  double largest = 0;
+  auto take = [&](double v) {
+    if (std::isfinite(v)) largest = std::max(largest, v);
+  };
+  for (std::size_t x = 0; x < d.between.size(); ++x) {
+    take(d.from_start[x]);
+    take(d.to_end[x]);
+    for (double v : d.between[x]) take(v);
+  }
+  return largest > 0 ? largest : 1.0;
+}
 
 SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, Cell start, std::optional<Cell> end,
                        CoverageWeights weights)
@@ -26,7 +34,7 @@ SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, 
     for (bool along_x : {true, false})
       for (int corner = 0; corner < 4; ++corner) {
         SweepVariant v{sweep(r, corner, along_x), 0};
-        v.turns = sweep_turns(v.cells);
+        v.turns = turns_along(v.cells);
         if (std::none_of(vs.begin(), vs.end(), [&](const SweepVariant& o) { return o.cells == v.cells; }))
           vs.push_back(std::move(v));
       }

@@ -33,6 +33,10 @@ struct RegionDistances {
   std::vector<double> from_start, to_end;    ///< to_end is all zero without an end cell
 };
 
+/// The largest finite distance (1 if none is positive): the networks scale by it, so that their
+/// constants mean the same on every map.
+double distance_scale(const RegionDistances& d);
+
 class SweepModel {
  public:
   /// Throws std::invalid_argument when the regions are too many to tabulate (over 400).
