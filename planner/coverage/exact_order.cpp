@@ -5,7 +5,10 @@
 #include <array>
 #include <chrono>
 #include <limits>
+#include <random>
 #include <unordered_map>
+
+#include "planner/coverage/order_lp.h"
 
 namespace plantsim::planner {
 namespace {
@@ -13,6 +16,9 @@ namespace {
 constexpr int kMaxVariants = 8;
 constexpr int kMaxSearchedRegions = 63;  // the state key is a 64-bit set
 constexpr int kMultiplierSteps = 1000;
+constexpr int kRelaxedDepth = 2;
+constexpr int kPerturbations = 100;  // of the starting order, before the search
+constexpr std::uint64_t kPerturbationSeed = 4;  // prefixes up to this long solve the relaxation again
 using Costs = std::array<double, kMaxVariants>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -27,8 +33,9 @@ struct StateHash {
 
 class Search {
  public:
-  Search(const SweepModel& m, const ExactOrderOptions& o, std::vector<int> incumbent, double incumbent_cost)
-      : m_(m), options_(o), n_(m.regions()), best_order_(std::move(incumbent)), best_cost_(incumbent_cost),
+  Search(const SweepModel& m, OrderRelaxation& relaxation, const ExactOrderOptions& o, std::vector<int> incumbent,
+         double incumbent_cost)
+      : m_(m), relaxation_(relaxation), options_(o), n_(m.regions()), best_order_(std::move(incumbent)), best_cost_(incumbent_cost),
         deadline_(std::chrono::steady_clock::now() +
                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(o.time_limit_s))) {
     // Region-level cheapest costs (over all sweeps): between regions, from the start (row n) and
@@ -73,7 +80,9 @@ class Search {
     tune_multipliers(none);
     root_bound_ = std::max(root_bound_, split_bound(0, SweepModel::kStart, none));
     prefix_.clear();
-    expand(0, SweepModel::kStart, none);
+    OrderRelaxation::Bound root = relaxation_.solve(prefix_, deadline_);
+    if (root.solved) root_bound_ = std::max(root_bound_, root.value), relaxed_.push_back(relaxed(std::move(root)));
+    expand(0, SweepModel::kStart, none, none);
     return !timed_out_;
   }
 
@@ -109,6 +118,76 @@ class Search {
       out += best_out;
     }
     return std::max(in, out);
+  }
+
+  // The relaxation solved for a prefix: its reduced costs, and the cheapest of them between
+  // regions (over all sweeps), laid out as cheapest_.
+  struct Relaxed {
+    double base;
+    std::vector<double> reduced, cheapest;
+  };
+  Relaxed relaxed(OrderRelaxation::Bound&& b) const {
+    Relaxed r{b.base, std::move(b.reduced), std::vector<double>(cheapest_.size(), kInf)};
+    for (int i = -1; i < n_; ++i)
+      for (int v = 0; v < (i < 0 ? 1 : m_.variants(i)); ++v) {
+        double* row = &r.cheapest[static_cast<std::size_t>(i < 0 ? n_ : i) * (n_ + 1)];
+        for (int j = 0; j < n_; ++j)
+          if (j != i)
+            for (int w = 0; w < m_.variants(j); ++w) row[j] = std::min(row[j], r.reduced[relaxation_.way(i, v, j, w)]);
+        if (i >= 0) row[n_] = std::min(row[n_], r.reduced[relaxation_.way_to_end(i, v)]);
+      }
+    return r;
+  }
+  double reduced(int i, int v, int j, int w) const { return relaxed_.back().reduced[relaxation_.way(i, v, j, w)]; }
+  double reduced_to_end(int i, int v) const { return relaxed_.back().reduced[relaxation_.way_to_end(i, v)]; }
+
+  // The current prefix's cheapest reduced cost for every sweep of its last region.
+  Costs prefix_reduced() const {
+    Costs at{};
+    at.fill(kInf);
+    at[0] = 0;
+    int from = SweepModel::kStart;
+    for (int r : prefix_) {
+      Costs next{};
+      next.fill(kInf);
+      for (int w = 0; w < m_.variants(r); ++w)
+        for (int v = 0; v < (from == SweepModel::kStart ? 1 : m_.variants(from)); ++v)
+          next[w] = std::min(next[w], at[v] + reduced(from, v, r, w));
+      at = next, from = r;
+    }
+    return at;
+  }
+
+  // The relaxation's bound of the orders that start with a prefix: its base, the prefix's
+  // reduced cost and the larger of two sums of reduced ways: into every region left (from the
+  // last region or another one left) and to the end from one left; or out of every region left
+  // (to another one or the end) and out of the last region.
+  double reduced_bound(std::uint64_t done, int last, const Costs& prefix_reduced) const {
+    const Relaxed& r = relaxed_.back();
+    const int last_variants = last == SweepModel::kStart ? 1 : m_.variants(last);
+    double prefix = kInf;
+    for (int v = 0; v < last_variants; ++v) prefix = std::min(prefix, prefix_reduced[v]);
+    const int last_row = last == SweepModel::kStart ? n_ : last;
+    auto rc = [&](int row, int j) { return r.cheapest[static_cast<std::size_t>(row) * (n_ + 1) + j]; };
+    double rest_in = 0, to_end = kInf, rest_out = 0, last_out = kInf;
+    bool any_left = false;
+    for (int j = 0; j < n_; ++j) {
+      if (done >> j & 1) continue;
+      any_left = true;
+      double in = rc(last_row, j), out = rc(j, n_);
+      for (int i = 0; i < n_; ++i)
+        if (i != j && !(done >> i & 1)) in = std::min(in, rc(i, j)), out = std::min(out, rc(j, i));
+      rest_in += in;
+      rest_out += out;
+      to_end = std::min(to_end, rc(j, n_));
+      last_out = std::min(last_out, rc(last_row, j));
+    }
+    if (!any_left) {
+      double whole = kInf;
+      for (int v = 0; v < last_variants; ++v) whole = std::min(whole, prefix_reduced[v] + reduced_to_end(last, v));
+      return r.base + whole;
+    }
+    return r.base + prefix + std::max(rest_in + to_end, rest_out + last_out);
   }
 
   double own(int j, int w) const { return m_.weights().turns * m_.variant(j, w).turns; }
@@ -215,8 +294,9 @@ class Search {
     pi_ = best_pi;
   }
 
-  // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v.
-  void expand(std::uint64_t done, int last, const Costs& costs) {
+  // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v; `reduced[v]`
+  // the same in the relaxation's reduced costs.
+  void expand(std::uint64_t done, int last, const Costs& costs, Costs prefix_rc) {
     if (timed_out_) return;
     if (++prefixes_ > options_.max_prefixes || (prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)) {
       timed_out_ = true;
@@ -233,19 +313,40 @@ class Search {
     for (int v = 0; v < last_variants; ++v) so_far = std::min(so_far, costs[v]);
     if (so_far + still_to_come(done, last) >= best_cost_ - 1e-12) return;
     if (split_bound(done, last, costs) >= best_cost_ - 1e-12) return;
+    // Near the root, the relaxation solved again for this prefix (its subtree is large).
+    bool own_relaxation = false;
+    if (!relaxed_.empty() && !prefix_.empty() && static_cast<int>(prefix_.size()) <= kRelaxedDepth) {
+      OrderRelaxation::Bound b = relaxation_.solve(prefix_, deadline_);
+      if (b.solved) {
+        if (b.value >= best_cost_ - 1e-12) return;
+        relaxed_.push_back(relaxed(std::move(b)));
+        own_relaxation = true;
+        prefix_rc = prefix_reduced();
+      }
+    }
+    struct Pop {
+      std::vector<Relaxed>& stack;
+      bool own;
+      ~Pop() { if (own) stack.pop_back(); }
+    } pop{relaxed_, own_relaxation};
+    if (!relaxed_.empty() && reduced_bound(done, last, prefix_rc) >= best_cost_ - 1e-12) return;
     struct Child {
       int region;
       double bound;
-      Costs costs;
+      Costs costs, reduced;
     };
     std::vector<Child> children;
     for (int j = 0; j < n_; ++j) {
       if (done >> j & 1) continue;
-      Child c{j, kInf, {}};
+      Child c{j, kInf, {}, {}};
       c.costs.fill(kInf);
+      c.reduced.fill(kInf);
       double low = kInf;
       for (int w = 0; w < m_.variants(j); ++w) {
-        for (int v = 0; v < last_variants; ++v) c.costs[w] = std::min(c.costs[w], costs[v] + m_.cost(last, v, j, w));
+        for (int v = 0; v < last_variants; ++v) {
+          c.costs[w] = std::min(c.costs[w], costs[v] + m_.cost(last, v, j, w));
+          if (!relaxed_.empty()) c.reduced[w] = std::min(c.reduced[w], prefix_rc[v] + reduced(last, v, j, w));
+        }
         low = std::min(low, c.costs[w]);
       }
       c.bound = low;
@@ -257,7 +358,7 @@ class Search {
       const std::uint64_t next = done | (std::uint64_t{1} << c.region);
       if (dominated(next, c.region, c.costs)) continue;
       prefix_.push_back(c.region);
-      expand(next, c.region, c.costs);
+      expand(next, c.region, c.costs, c.reduced);
       prefix_.pop_back();
       if (timed_out_) return;
     }
@@ -280,6 +381,8 @@ class Search {
   }
 
   const SweepModel& m_;
+  OrderRelaxation& relaxation_;
+  std::vector<Relaxed> relaxed_;  // the innermost prefix's relaxation last
   ExactOrderOptions options_;
   int n_;
   std::vector<int> best_order_, prefix_;
@@ -307,17 +410,41 @@ std::vector<int> improve_order(const SweepModel& model, std::vector<int> order) 
         if (c < cost - 1e-12) cost = c, better = true;
         else std::reverse(order.begin() + a, order.begin() + b + 1);
       }
-    // Move one region elsewhere.
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b) {
-        if (a == b) continue;
-        std::vector<int> moved = order;
-        const int r = moved[a];
-        moved.erase(moved.begin() + a);
-        moved.insert(moved.begin() + b, r);
-        const double c = model.best_sweeps(moved).cost;
-        if (c < cost - 1e-12) cost = c, order = std::move(moved), better = true;
-      }
+    // Move a stretch of one to three regions elsewhere.
+    for (int length = 1; length <= 3; ++length)
+      for (int a = 0; a + length <= n; ++a)
+        for (int b = 0; b + length <= n; ++b) {
+          if (a == b) continue;
+          std::vector<int> moved = order;
+          const std::vector<int> stretch(moved.begin() + a, moved.begin() + a + length);
+          moved.erase(moved.begin() + a, moved.begin() + a + length);
+          moved.insert(moved.begin() + b, stretch.begin(), stretch.end());
+          const double c = model.best_sweeps(moved).cost;
+          if (c < cost - 1e-12) cost = c, order = std::move(moved), better = true;
+        }
+  }
+  return order;
+}
+
+std::vector<int> perturbed_search(const SweepModel& model, std::vector<int> order, int rounds, std::uint64_t seed) {
+  order = improve_order(model, std::move(order));
+  double cost = model.best_sweeps(order).cost;
+  const int n = static_cast<int>(order.size());
+  if (n < 8) return order;
+  std::mt19937_64 random(seed);
+  for (int round = 0; round < rounds; ++round) {
+    // Double bridge: A B C D -> A C B D, which the moves above cannot undo in one step.
+    std::array<int, 3> cut{};
+    for (int& c : cut) c = 1 + static_cast<int>(random() % static_cast<std::uint64_t>(n - 1));
+    std::sort(cut.begin(), cut.end());
+    if (cut[0] == cut[1] || cut[1] == cut[2]) continue;
+    std::vector<int> next(order.begin(), order.begin() + cut[0]);
+    next.insert(next.end(), order.begin() + cut[1], order.begin() + cut[2]);
+    next.insert(next.end(), order.begin() + cut[0], order.begin() + cut[1]);
+    next.insert(next.end(), order.begin() + cut[2], order.end());
+    next = improve_order(model, std::move(next));
+    const double c = model.best_sweeps(next).cost;
+    if (c < cost - 1e-12) cost = c, order = std::move(next);
   }
   return order;
 }
@@ -329,13 +456,14 @@ ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<in
   out.cost = kInf;
   const bool searched = model.regions() <= kMaxSearchedRegions;
   for (const std::vector<int>& o : starting_orders) {
-    std::vector<int> better = searched ? improve_order(model, o) : o;
+    std::vector<int> better = searched ? perturbed_search(model, o, kPerturbations, kPerturbationSeed) : o;
     const double c = model.best_sweeps(better).cost;
     if (c < out.cost) out.cost = c, out.order = std::move(better);
   }
   out.searched = searched;
   if (searched) {
-    Search search(model, options, out.order, out.cost);
+    OrderRelaxation relaxation(model);
+    Search search(model, relaxation, options, out.order, out.cost);
     out.proven = search.run();
     out.order = search.order();
     out.cost = search.cost();
