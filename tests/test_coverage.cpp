@@ -194,12 +194,14 @@ TEST(ExactOrder, ACrowdedMapIsProvenAndCutShortGivesAnHonestBound) {
   ASSERT_GE(regions.size(), 30u);
   const SweepModel m(g, regions, {0, 0}, charger_cell(g));
   const std::vector<int> greedy = greedy_order(m);
-  const ExactOrder e = exact_order(m, {greedy});
+  ExactOrderOptions by_count;  // the prefix count alone stops it (sanitizer builds are slow)
+  by_count.time_limit_s = 600;
+  const ExactOrder e = exact_order(m, {greedy}, by_count);
   EXPECT_TRUE(e.proven);
   EXPECT_TRUE(is_permutation_of(e.order, regions.size()));
   EXPECT_NEAR(m.best_sweeps(e.order).cost, e.cost, 1e-9);
   EXPECT_LT(e.cost, m.best_sweeps(greedy).cost);
-  ExactOrderOptions short_search;
+  ExactOrderOptions short_search = by_count;
   short_search.max_prefixes = 1000;
   const ExactOrder cut = exact_order(m, {greedy}, short_search);
   EXPECT_FALSE(cut.proven);
@@ -218,7 +220,9 @@ TEST(ExactOrder, TheRelaxationBoundsEveryOrderWayByWay) {
   for (std::uint64_t seed : {3u, 9u}) {
     const CoverageGrid g = generated_map(0.25, seed);
     const SweepModel m(g, g.decompose(g.reachable({0, 0})), {0, 0}, charger_cell(g));
-    const ExactOrder best = exact_order(m, {greedy_order(m)});
+    ExactOrderOptions by_count;
+    by_count.time_limit_s = 600;
+    const ExactOrder best = exact_order(m, {greedy_order(m)}, by_count);
     ASSERT_TRUE(best.proven);
     OrderRelaxation relaxation(m);
     const auto later = std::chrono::steady_clock::now() + std::chrono::seconds(10);

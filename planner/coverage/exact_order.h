@@ -1,10 +1,13 @@
 // The best order of seed 004's sub-regions, proven: depth-first branch and bound over orders,
 // each prefix carrying the best cost for every way its last region can be swept (so the sweep
-// choices are exact too), bounded by the cheapest ways into and out of the regions left (half of
-// each way charged to either end, with Lagrangian multipliers tuned at the root), a table
-// of (regions done, last region) states that drops any prefix another one already beats for
-// every sweep of the last region (dynamic programming's pruning without its 2^n table). Started
-// from the best of the given orders improved by moving and reversing stretches.
+// choices are exact too). Bounds: the cheapest ways into and out of the regions left; a split
+// bound (half of each way charged to either end, Lagrangian multipliers tuned at the root); and
+// the linear relaxation with subtour cuts (order_lp.h), solved at the root and again for every
+// prefix of one or two regions, whose reduced costs bound the prefixes below them. A table of
+// (regions done, last region) states drops any prefix another one already beats for every sweep
+// of the last region (dynamic programming's pruning without its 2^n table). The first order is
+// the best given one improved by moving and reversing stretches, then perturbed (double bridge)
+// and improved again, 100 times with a fixed seed.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +18,7 @@
 namespace plantsim::planner {
 
 struct ExactOrderOptions {
-  /// The search stops after this many prefixes (4-7 s on the machine of docs/seeds.md's
+  /// The search stops after this many prefixes (about 5 s on the machine of docs/seeds.md's
   /// numbers), so that what it finds does not depend on the machine's load, or at the time
   /// limit, whichever comes first.
   std::uint64_t max_prefixes = 1'500'000;
