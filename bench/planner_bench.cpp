@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "bench/large_map_bench.h"
 #include "render/png_io.h"
 #include "render/scaling_chart.h"
 #include "planner/planner.h"
@@ -188,7 +189,9 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
     render::write_png(img, chart_png);
     std::cerr << "bench: chart -> " << chart_png << "\n";
   }
-  return 0;
+  const int anyangle = run_anyangle_cases(shared_data, quick);
+  const int plants = run_random_plant_scaling(quick);
+  return anyangle != 0 ? anyangle : plants;
 }
 
 }  // namespace plantsim::bench
