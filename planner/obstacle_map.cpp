@@ -68,9 +68,12 @@ bool ObstacleMap::quadrant_occupied(Vec2 c, int sx, int sy, std::int32_t self) c
 }
 
 void ObstacleMap::find_pinch_points() {
-  // A pinch is a corner point where two diagonally opposite quadrants are filled while the
-  // segment through it has nowhere free to pass: every segment with the point in its
-  // interior is refused there.
+  // A pinch is a corner point where two diagonally opposite quadrants are filled and the other
+  // two free: a segment could cross there from one free quadrant to the other touching the
+  // rectangles only at their corners, so every segment with the point in its interior is
+  // refused there. A concave corner (three quadrants filled) is not one: a segment through it
+  // runs into a rectangle's interior or between two rectangles along their shared edge, which
+  // the other tests refuse.
   std::vector<Vec2> found;
   for (std::size_t i = 0; i < obstacle_count_; ++i) {
     const Rect& r = rects_[i];
@@ -78,8 +81,7 @@ void ObstacleMap::find_pinch_points() {
     for (const Vec2& c : corners) {
       const bool ne = quadrant_occupied(c, 1, 1, -1), sw = quadrant_occupied(c, -1, -1, -1);
       const bool nw = quadrant_occupied(c, -1, 1, -1), se = quadrant_occupied(c, 1, -1, -1);
-      const bool all = ne && sw && nw && se;
-      if (!all && ((ne && sw) || (nw && se))) found.push_back(c);
+      if ((ne && sw && !nw && !se) || (nw && se && !ne && !sw)) found.push_back(c);
     }
   }
   std::sort(found.begin(), found.end(), [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
