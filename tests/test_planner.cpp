@@ -2,6 +2,7 @@
 // visibility graph with 0.3 m square inflation), and the statuses for bad queries.
 #include <gtest/gtest.h>
 
+#include "planner/obstacle_map.h"
 #include "planner/planner.h"
 #include "planner/vg/vg_planner.h"
 #include "test_paths.h"
@@ -130,6 +131,25 @@ TEST(PlannerSnap, DeepInsideMergedObstaclesFindsTheConcaveCornerSide) {
   const auto r = p->plan({7.5, 9}, {1, 1});  // nearest boundary: x = 8 at distance 0.5
   ASSERT_EQ(r.status, PlanStatus::kOk);
   EXPECT_EQ(r.path.front(), (Vec2{8, 9}));
+}
+
+// Pinch points are where two rectangles touch only at a corner; a concave corner is not one,
+// and the segments through it are refused by the other tests all the same.
+TEST(ObstacleMapPinches, DiagonalTouchIsAPinchAConcaveCornerIsNot) {
+  const Rect floor{-5, -5, 5, 5};
+  const ObstacleMap diagonal({{0, 0, 1, 1}, {1, 1, 2, 2}}, floor, 0);
+  ASSERT_EQ(diagonal.pinch_points().size(), 1u);
+  EXPECT_TRUE(diagonal.is_pinch_point({1, 1}));
+  EXPECT_FALSE(diagonal.segment_free({0, 2}, {2, 0}));  // squeezes through the touching corners
+  EXPECT_TRUE(diagonal.segment_free({0, 2}, {1, 1}));   // ends there
+
+  const ObstacleMap ell({{0, 0, 2, 1}, {0, 1, 1, 2}}, floor, 0);  // concave corner at (1, 1)
+  EXPECT_TRUE(ell.pinch_points().empty());
+  EXPECT_FALSE(ell.segment_free({2, 2}, {0, 0}));      // into the rectangles
+  EXPECT_FALSE(ell.segment_free({2, 1}, {-1, 1}));     // between them along their shared edge
+  EXPECT_FALSE(ell.segment_free({1, 3}, {1, -1}));     // down through the lower one
+  EXPECT_TRUE(ell.segment_free({1, 1}, {2, 2}));       // from the corner into the free quadrant
+  EXPECT_TRUE(ell.segment_free({3, 1}, {1, 1}));       // along the lower one's top edge
 }
 
 }  // namespace
