@@ -184,12 +184,16 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
       }
     }
     if (stop_ring != INT_MAX) continue;
-    // Rectangles reaching past the square count with their part inside it.
+    // Rectangles reaching past the square count with their part inside it; one the square has
+    // grown to hold whole counts once more and is done.
+    std::size_t kept = 0;
     for (std::int32_t i : big_rects_) {
       const Rect& r = rects[i];
       add_span(coverage, u, {std::max(r.xmin, box.xmin), std::max(r.ymin, box.ymin),
                              std::min(r.xmax, box.xmax), std::min(r.ymax, box.ymax)});
+      if (!(r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax)) big_rects_[kept++] = i;
     }
+    big_rects_.resize(kept);
     if (coverage.full()) {
       // Every ray is blocked within the square, so no vertex farther than its farthest
       // corner is visible; finish the rings that can still hold nearer vertices.
