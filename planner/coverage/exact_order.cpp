@@ -16,9 +16,13 @@ namespace {
 constexpr int kMaxVariants = 8;
 constexpr int kMaxSearchedRegions = 63;  // the state key is a 64-bit set
 constexpr int kMultiplierSteps = 1000;
-constexpr int kRelaxedDepth = 2;
+constexpr int kRelaxedDepth = 2;  // prefixes up to this long solve the relaxation again
 constexpr int kPerturbations = 100;  // of the starting order, before the search
-constexpr std::uint64_t kPerturbationSeed = 4;  // prefixes up to this long solve the relaxation again
+constexpr std::uint64_t kPerturbationSeed = 4;
+// Work of the local search before the search (regions in the orders evaluated; about 2 s on
+// docs/seeds.md's machine): every perturbation on maps up to 31 regions (25 million), fewer on
+// larger ones; a count, not a time, so that the result does not depend on the machine's load.
+constexpr std::uint64_t kLocalSearchWork = 30'000'000;
 using Costs = std::array<double, kMaxVariants>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -294,7 +298,7 @@ class Search {
     pi_ = best_pi;
   }
 
-  // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v; `reduced[v]`
+  // `costs[v]`: the prefix's cheapest cost ending with its last region swept as v; `prefix_rc[v]`
   // the same in the relaxation's reduced costs.
   void expand(std::uint64_t done, int last, const Costs& costs, Costs prefix_rc) {
     if (timed_out_) return;
@@ -397,16 +401,24 @@ class Search {
 
 }  // namespace
 
-std::vector<int> improve_order(const SweepModel& model, std::vector<int> order) {
-  double cost = model.best_sweeps(order).cost;
+namespace {
+
+// Moves single regions and short stretches and reverses stretches while that lowers the cost;
+// `work` counts the regions of every order evaluated.
+std::vector<int> local_search(const SweepModel& model, std::vector<int> order, std::uint64_t& work) {
   const int n = static_cast<int>(order.size());
+  auto cost_of = [&](const std::vector<int>& o) {
+    work += static_cast<std::uint64_t>(n);
+    return model.best_sweeps(o).cost;
+  };
+  double cost = cost_of(order);
   for (bool better = true; better;) {
     better = false;
     // Reverse a stretch.
     for (int a = 0; a < n; ++a)
       for (int b = a + 1; b < n; ++b) {
         std::reverse(order.begin() + a, order.begin() + b + 1);
-        const double c = model.best_sweeps(order).cost;
+        const double c = cost_of(order);
         if (c < cost - 1e-12) cost = c, better = true;
         else std::reverse(order.begin() + a, order.begin() + b + 1);
       }
@@ -419,21 +431,24 @@ std::vector<int> improve_order(const SweepModel& model, std::vector<int> order) 
           const std::vector<int> stretch(moved.begin() + a, moved.begin() + a + length);
           moved.erase(moved.begin() + a, moved.begin() + a + length);
           moved.insert(moved.begin() + b, stretch.begin(), stretch.end());
-          const double c = model.best_sweeps(moved).cost;
+          const double c = cost_of(moved);
           if (c < cost - 1e-12) cost = c, order = std::move(moved), better = true;
         }
   }
   return order;
 }
 
-std::vector<int> perturbed_search(const SweepModel& model, std::vector<int> order, int rounds, std::uint64_t seed) {
-  order = improve_order(model, std::move(order));
+// The local search, then perturbations (double bridge: A B C D -> A C B D, which its moves
+// cannot undo in one step) each followed by it, keeping the best, until the rounds or the work
+// budget are spent.
+std::vector<int> perturbed_search(const SweepModel& model, std::vector<int> order) {
+  std::uint64_t work = 0;
+  order = local_search(model, std::move(order), work);
   double cost = model.best_sweeps(order).cost;
   const int n = static_cast<int>(order.size());
   if (n < 8) return order;
-  std::mt19937_64 random(seed);
-  for (int round = 0; round < rounds; ++round) {
-    // Double bridge: A B C D -> A C B D, which the moves above cannot undo in one step.
+  std::mt19937_64 random(kPerturbationSeed);
+  for (int round = 0; round < kPerturbations && work < kLocalSearchWork; ++round) {
     std::array<int, 3> cut{};
     for (int& c : cut) c = 1 + static_cast<int>(random() % static_cast<std::uint64_t>(n - 1));
     std::sort(cut.begin(), cut.end());
@@ -442,12 +457,14 @@ std::vector<int> perturbed_search(const SweepModel& model, std::vector<int> orde
     next.insert(next.end(), order.begin() + cut[1], order.begin() + cut[2]);
     next.insert(next.end(), order.begin() + cut[0], order.begin() + cut[1]);
     next.insert(next.end(), order.begin() + cut[2], order.end());
-    next = improve_order(model, std::move(next));
+    next = local_search(model, std::move(next), work);
     const double c = model.best_sweeps(next).cost;
     if (c < cost - 1e-12) cost = c, order = std::move(next);
   }
   return order;
 }
+
+}  // namespace
 
 ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
                        const ExactOrderOptions& options) {
@@ -456,7 +473,7 @@ ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<in
   out.cost = kInf;
   const bool searched = model.regions() <= kMaxSearchedRegions;
   for (const std::vector<int>& o : starting_orders) {
-    std::vector<int> better = searched ? perturbed_search(model, o, kPerturbations, kPerturbationSeed) : o;
+    std::vector<int> better = searched ? perturbed_search(model, o) : o;
     const double c = model.best_sweeps(better).cost;
     if (c < out.cost) out.cost = c, out.order = std::move(better);
   }

@@ -7,7 +7,7 @@
 // (regions done, last region) states drops any prefix another one already beats for every sweep
 // of the last region (dynamic programming's pruning without its 2^n table). The first order is
 // the best given one improved by moving and reversing stretches, then perturbed (double bridge)
-// and improved again, 100 times with a fixed seed.
+// and improved again, 100 times with a fixed seed (fewer above about 31 regions: a work budget).
 #pragma once
 
 #include <cstdint>
@@ -32,7 +32,7 @@ struct ExactOrder {
   bool searched = false;     ///< false above 63 regions: the order is the best starting one
   bool proven = false;       ///< the search finished: no order is cheaper
   double lower_bound = 0;    ///< when not proven: no order is cheaper than this
-  double seconds = 0;
+  double seconds = 0;        ///< the first order's local search included
   std::uint64_t prefixes = 0;  ///< prefixes expanded
 };
 
@@ -40,8 +40,5 @@ struct ExactOrder {
 /// best starting one and `proven` is false.
 ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
                        const ExactOrderOptions& options = {});
-
-/// Moves single regions and reverses stretches of the order while that lowers its cost.
-std::vector<int> improve_order(const SweepModel& model, std::vector<int> order);
 
 }  // namespace plantsim::planner
