@@ -69,7 +69,7 @@ struct OrderRelaxation::Lp {
   ~Lp() { glp_delete_prob(problem); }
 };
 
-OrderRelaxation::OrderRelaxation(const SweepModel& m) : model_(m), lp_(std::make_unique<Lp>()) {
+OrderRelaxation::OrderRelaxation(const SweepModel& m) : lp_(std::make_unique<Lp>()) {
   const int n = m.regions();
   offset_.resize(n);
   nodes_ = 1;

@@ -45,7 +45,6 @@ class OrderRelaxation {
   std::size_t node(int i, int v) const { return i == SweepModel::kStart ? 0 : offset_[i] + v; }
 
   struct Lp;
-  const SweepModel& model_;
   std::vector<std::size_t> offset_;
   std::size_t nodes_ = 0;  // the start, every sweep, the end
   std::unique_ptr<Lp> lp_;
