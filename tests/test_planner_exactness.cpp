@@ -9,12 +9,15 @@
 
 #include <fstream>
 #include <random>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "geometry/predicates.h"
 #include "planner/inflation.h"
 #include "planner/planner.h"
+#include "planner/vg/vg_planner.h"
+#include "worlds/grid_map.h"
 #include "test_paths.h"
 
 namespace plantsim::planner {
@@ -171,6 +174,46 @@ TEST(RandomWorlds, FastPlannerMatchesBruteForceAndStaysClear) {
   EXPECT_GT(with_path, 800);
   EXPECT_GT(no_path, 5);
   EXPECT_EQ(compared, 2000);
+}
+
+// Every pair of graph vertices that sees each other and is tangent at both ends must be an
+// edge of the resolved graph: the ring search drops candidates hidden behind a rectangle, and
+// this is where a wrongly dropped one would show. Brute force over all pairs.
+void expect_graph_complete(const PlannerInput& in, const std::string& what) {
+  VisibilityGraphPlanner vg(in);
+  const auto found = vg.graph_edges();  // resolves every vertex
+  const auto& g = vg.graph();
+  const auto& v = g.vertices();
+  std::set<std::pair<std::pair<double, double>, std::pair<double, double>>> edges;
+  auto key = [](Vec2 a, Vec2 b) {
+    auto pa = std::make_pair(a.x, a.y), pb = std::make_pair(b.x, b.y);
+    return pa < pb ? std::make_pair(pa, pb) : std::make_pair(pb, pa);
+  };
+  for (const auto& [a, b] : found) edges.insert(key(a, b));
+  std::size_t expected = 0;
+  for (std::size_t a = 0; a < v.size(); ++a)
+    for (std::size_t b = a + 1; b < v.size(); ++b) {
+      const Vec2 d = v[b].p - v[a].p;
+      if (v[a].p == v[b].p || !VisibilityGraph::tangent(v[a], d) || !VisibilityGraph::tangent(v[b], d) ||
+          !vg.map().segment_free(v[a].p, v[b].p))
+        continue;
+      ++expected;
+      ASSERT_TRUE(edges.count(key(v[a].p, v[b].p))) << what << ": missing edge (" << v[a].p.x << ", " << v[a].p.y
+                                                    << ") - (" << v[b].p.x << ", " << v[b].p.y << ")";
+    }
+  EXPECT_EQ(edges.size(), expected) << what;
+}
+
+TEST(RandomWorlds, ResolvedGraphHoldsEveryVisibleTangentPair) {
+  std::mt19937_64 rng(4242);
+  for (int world = 0; world < 200; ++world) expect_graph_complete(random_world(rng, world % 2 == 0), "world " + std::to_string(world));
+  // A grid map merged into rectangles: touching rectangles, shared corners and pinches everywhere.
+  const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
+  PlannerInput in;
+  in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
+  in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
+  in.inflation_m = 0;
+  expect_graph_complete(in, "arena");
 }
 
 TEST(RandomWorlds, LaterQueriesOnAWarmGraphGiveTheSameAnswers) {

@@ -37,6 +37,12 @@ void AngleCoverage::insert(double lo, double hi) {
   }
 }
 
+bool AngleCoverage::covers(double a) const {
+  auto it = std::upper_bound(intervals_.begin(), intervals_.end(), a,
+                             [](double x, const std::pair<double, double>& iv) { return x < iv.first; });
+  return it != intervals_.begin() && a < std::prev(it)->second && a > std::prev(it)->first;
+}
+
 bool AngleCoverage::full() const {
   return intervals_.size() == 1 && intervals_[0].first <= 0.0 && intervals_[0].second >= kPseudoAnglePeriod;
 }

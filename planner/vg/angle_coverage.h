@@ -1,9 +1,10 @@
 // Which directions around a point are already known to be blocked, as a union of open
 // intervals of pseudo-angle: a cheap monotone stand-in for the angle (0 along +x, 1 along +y,
 // 2 along -x, 3 along -y, period 4), with no trigonometry. Used only to stop a visibility
-// search early, never to accept an edge, so it is made conservative: each interval is shrunk
-// by kPseudoAngleSlack, far above the rounding of its endpoints (a few 1e-16), which can only
-// delay the stop, never wrongly cause it.
+// search early and to rule out candidates, never to accept an edge, so it is made
+// conservative: each interval is shrunk by kPseudoAngleSlack, far above the rounding of its
+// endpoints (a few 1e-16), which can only delay a stop or keep a blocked candidate, never
+// wrongly stop or drop a visible one.
 #pragma once
 
 #include <utility>
@@ -15,6 +16,9 @@ namespace plantsim::planner {
 
 inline constexpr double kPseudoAngleSlack = 1e-9;
 inline constexpr double kPseudoAnglePeriod = 4.0;
+/// Relative margin by which a point must lie beyond a rectangle's farthest corner before the
+/// rectangle is said to hide it (distances are rounded to a few 1e-16 relative).
+inline constexpr double kDepthSlack = 1e-9;
 
 /// Pseudo-angle of direction d (d != 0), in [0, 4), increasing counter-clockwise.
 inline double pseudo_angle(geom::Vec2 d) {
@@ -29,6 +33,11 @@ class AngleCoverage {
   void add(double lo, double hi);
   /// True when every direction is covered.
   bool full() const;
+  /// True when direction `a` (a pseudo-angle in [0, 4)) lies inside a covered interval. The
+  /// intervals were shrunk by the slack, so a direction whose rounded pseudo-angle is inside
+  /// is truly inside the open interval that was added.
+  bool covers(double a) const;
+  void clear() { intervals_.clear(); }
 
  private:
   void insert(double lo, double hi);

@@ -129,7 +129,42 @@ void VisibilityGraph::add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) c
   } else {
     return;  // u on or in the rectangle: it blocks no ray for certain
   }
-  coverage.add(pseudo_angle(cw - u), pseudo_angle(ccw - u));
+  const double lo = pseudo_angle(cw - u), hi = pseudo_angle(ccw - u);
+  coverage.add(lo, hi);
+  const double far_x = std::max(std::abs(u.x - r.xmin), std::abs(u.x - r.xmax));
+  const double far_y = std::max(std::abs(u.y - r.ymin), std::abs(u.y - r.ymax));
+  spans_.push_back({std::sqrt(far_x * far_x + far_y * far_y), lo, hi});
+}
+
+void VisibilityGraph::drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const {
+  // A ray strictly inside a rectangle's span enters its interior before the rectangle's
+  // farthest corner, so a vertex farther than that in such a direction is hidden. Candidates
+  // are met nearest first; a rectangle joins the coverage once its depth's shell (a cell
+  // size wide) lies wholly nearer than the candidate, so that spans need only a bucket sort.
+  const double shell = map_.cell_size();
+  auto shell_of = [&](double d) { return static_cast<std::size_t>(d / shell); };
+  auto span_shell = [&](const Span& sp) { return shell_of(sp.depth * (1 + kDepthSlack)); };
+  // Counting sort: nearer_than_[k] = how many spans lie in shells before k.
+  std::size_t shells = 1;
+  for (const Span& sp : spans_) shells = std::max(shells, span_shell(sp) + 1);
+  nearer_than_.assign(shells + 1, 0);
+  for (const Span& sp : spans_) ++nearer_than_[span_shell(sp) + 1];
+  for (std::size_t k = 1; k <= shells; ++k) nearer_than_[k] += nearer_than_[k - 1];
+  fill_at_.assign(nearer_than_.begin(), nearer_than_.end() - 1);
+  by_shell_.resize(spans_.size());
+  for (const Span& sp : spans_) by_shell_[fill_at_[span_shell(sp)]++] = sp;
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+            [](const GraphEdge& a, const GraphEdge& b) { return std::tie(a.length, a.to) < std::tie(b.length, b.to); });
+  AngleCoverage nearer;
+  std::size_t next_span = 0, kept = first;
+  for (std::size_t i = first; i < out.size(); ++i) {
+    const GraphEdge c = out[i];
+    // Spans whose shell ends at or before the candidate's shell starts.
+    const std::size_t k = std::min(shell_of(c.length), shells);
+    for (; next_span < nearer_than_[k]; ++next_span) nearer.add(by_shell_[next_span].lo, by_shell_[next_span].hi);
+    if (!nearer.covers(pseudo_angle(vertices_[c.to].p - u))) out[kept++] = c;
+  }
+  out.resize(kept);
 }
 
 void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_index,
@@ -147,6 +182,8 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
     coverage.add(lo, lo + 1.0);
   }
   big_rects_.clear();
+  spans_.clear();
+  const std::size_t first = out.size();
   const int cx0 = m.cell_x(u.x), cy0 = m.cell_y(u.y);
   const int last_ring = std::max({cx0, cy0, m.grid_width() - 1 - cx0, m.grid_height() - 1 - cy0});
   int stop_ring = INT_MAX;
@@ -204,6 +241,7 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
       stop_ring = static_cast<int>(std::floor(reach / cs)) + 1;
     }
   }
+  drop_hidden(u, out, first);
 }
 
 }  // namespace plantsim::planner

@@ -6,7 +6,10 @@
 // ends, not yet known to be visible) are gathered the first time a search expands it, and an
 // edge's visibility is tested only when a search pops it. Candidates are gathered outward
 // ring by ring over the obstacle grid, stopping once every direction is known to be blocked
-// nearer than the ring reached, so the cost follows local clutter, not the world's size.
+// nearer than the ring reached, so the cost follows local clutter, not the world's size; a
+// candidate that lies beyond one of the rectangles met, in a direction strictly inside that
+// rectangle's view, is dropped there (most hidden pairs: 99 % of ArcticStation's candidates
+// were hidden before this), so segment tests are left for the pairs a union of rectangles hides.
 // Not safe for concurrent queries: give each thread its own graph.
 #pragma once
 
@@ -78,6 +81,11 @@ class VisibilityGraph {
  private:
   void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index, std::vector<GraphEdge>& out) const;
   void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
+  void drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const;
+
+  struct Span {  // directions (lo, hi) a rectangle hides beyond `depth`, its farthest corner
+    double depth, lo, hi;
+  };
 
   const ObstacleMap& map_;
   std::vector<GraphVertex> vertices_;
@@ -89,6 +97,9 @@ class VisibilityGraph {
   mutable std::vector<std::uint32_t> rect_seen_;  // stamp per rectangle, for one scan
   mutable std::uint32_t scan_stamp_ = 0;
   mutable std::vector<std::int32_t> big_rects_;   // scratch: rectangles reaching past a ring
+  mutable std::vector<Span> spans_;               // scratch: every rectangle's span in one scan
+  mutable std::vector<Span> by_shell_;            // scratch: spans_ bucketed by depth
+  mutable std::vector<std::size_t> nearer_than_, fill_at_;  // scratch: the bucket sort's counts
   mutable std::int64_t edges_found_ = 0;
   mutable std::int64_t segment_tests_ = 0;
 };
