@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <queue>
 #include <tuple>
 
@@ -115,9 +116,14 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   expansions.resize(n, 0);
   std::vector<std::int32_t> parent(n + 2, -1);
   std::vector<double> cost(n + 2, 0.0);
+  // The cheapest cost pushed along an edge known to be visible (from a resolved vertex): a
+  // later, dearer push can never be the one popped first, so it is not pushed. Equal costs
+  // are still pushed, so that ties resolve exactly as before.
+  std::vector<double> best_known(n + 2, std::numeric_limits<double>::infinity());
   SearchResult result;
-  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv) {
-    if (closed[v]) return;
+  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv, bool known_visible) {
+    if (closed[v] || gv > best_known[v]) return;
+    if (known_visible) best_known[v] = std::min(best_known[v], gv);
     open.push({gv + geom::distance(point(v), goal), gv, v, from, candidate});
     ++result.stats.pushed;
   };
@@ -140,20 +146,23 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
     const Vec2 u = point(e.node);
     if (e.node == s) {
       graph_.candidates_from_point(start, from_start);
-      for (const GraphEdge& c : from_start) push(c.to, s, kUntested, c.length);
-      push(g, s, kUntested, geom::distance(start, goal));
+      for (const GraphEdge& c : from_start) push(c.to, s, kUntested, c.length, false);
+      push(g, s, kUntested, geom::distance(start, goal), false);
       continue;
     }
     // A vertex met again in a later search is worth resolving to its exact edges.
     if (expansions[e.node] < 2 && ++expansions[e.node] == 2) graph_.resolve(e.node);
     const auto& cands = graph_.candidates(e.node);
+    const bool exact = graph_.resolved(e.node);
     const Vec2 prev = point(e.parent);
     for (std::size_t i = 0; i < cands.size(); ++i) {
-      if (closed[cands[i].to] || !graph_.taut(prev, e.node, vertices[cands[i].to].p)) continue;
-      push(cands[i].to, e.node, static_cast<std::int32_t>(i), e.g + cands[i].length);
+      const std::int32_t w = cands[i].to;
+      const double gw = e.g + cands[i].length;
+      if (closed[w] || gw > best_known[w] || !graph_.taut(prev, e.node, vertices[w].p)) continue;
+      push(w, e.node, static_cast<std::int32_t>(i), gw, exact);
     }
     if (VisibilityGraph::tangent(vertices[e.node], goal - u) && graph_.taut(prev, e.node, goal))
-      push(g, e.node, kUntested, e.g + geom::distance(u, goal));
+      push(g, e.node, kUntested, e.g + geom::distance(u, goal), false);
   }
   if (closed[g]) {
     result.found = true;

@@ -138,9 +138,9 @@ void VisibilityGraph::add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) c
 
 void VisibilityGraph::drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const {
   // A ray strictly inside a rectangle's span enters its interior before the rectangle's
-  // farthest corner, so a vertex farther than that in such a direction is hidden. Candidates
-  // are met nearest first; a rectangle joins the coverage once its depth's shell (a cell
-  // size wide) lies wholly nearer than the candidate, so that spans need only a bucket sort.
+  // farthest corner, so a vertex farther than that in such a direction is hidden. Rectangles
+  // and candidates are bucketed into shells a cell wide by distance (no sort); candidates of a
+  // shell are tested against the rectangles of all nearer shells.
   const double shell = map_.cell_size();
   auto shell_of = [&](double d) { return static_cast<std::size_t>(d / shell); };
   auto span_shell = [&](const Span& sp) { return shell_of(sp.depth * (1 + kDepthSlack)); };
@@ -153,16 +153,20 @@ void VisibilityGraph::drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size
   fill_at_.assign(nearer_than_.begin(), nearer_than_.end() - 1);
   by_shell_.resize(spans_.size());
   for (const Span& sp : spans_) by_shell_[fill_at_[span_shell(sp)]++] = sp;
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-            [](const GraphEdge& a, const GraphEdge& b) { return std::tie(a.length, a.to) < std::tie(b.length, b.to); });
+  // Candidates by shell too (a shell past the last span's is treated as that one).
+  cand_at_.assign(shells + 2, 0);
+  for (std::size_t i = first; i < out.size(); ++i) ++cand_at_[std::min(shell_of(out[i].length), shells) + 1];
+  for (std::size_t k = 1; k < cand_at_.size(); ++k) cand_at_[k] += cand_at_[k - 1];
+  fill_at_.assign(cand_at_.begin(), cand_at_.end() - 1);
+  cand_by_shell_.resize(out.size() - first);
+  for (std::size_t i = first; i < out.size(); ++i) cand_by_shell_[fill_at_[std::min(shell_of(out[i].length), shells)]++] = out[i];
   AngleCoverage nearer;
   std::size_t next_span = 0, kept = first;
-  for (std::size_t i = first; i < out.size(); ++i) {
-    const GraphEdge c = out[i];
-    // Spans whose shell ends at or before the candidate's shell starts.
-    const std::size_t k = std::min(shell_of(c.length), shells);
+  for (std::size_t k = 0; k <= shells; ++k) {
+    // Spans in shells before k end nearer than any candidate of shell k starts.
     for (; next_span < nearer_than_[k]; ++next_span) nearer.add(by_shell_[next_span].lo, by_shell_[next_span].hi);
-    if (!nearer.covers(pseudo_angle(vertices_[c.to].p - u))) out[kept++] = c;
+    for (std::size_t i = cand_at_[k]; i < cand_at_[k + 1]; ++i)
+      if (!nearer.covers(pseudo_angle(vertices_[cand_by_shell_[i].to].p - u))) out[kept++] = cand_by_shell_[i];
   }
   out.resize(kept);
 }

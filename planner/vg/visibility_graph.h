@@ -99,7 +99,8 @@ class VisibilityGraph {
   mutable std::vector<std::int32_t> big_rects_;   // scratch: rectangles reaching past a ring
   mutable std::vector<Span> spans_;               // scratch: every rectangle's span in one scan
   mutable std::vector<Span> by_shell_;            // scratch: spans_ bucketed by depth
-  mutable std::vector<std::size_t> nearer_than_, fill_at_;  // scratch: the bucket sort's counts
+  mutable std::vector<std::size_t> nearer_than_, cand_at_, fill_at_;  // scratch: the bucket sorts' counts
+  mutable std::vector<GraphEdge> cand_by_shell_;                        // scratch: candidates bucketed
   mutable std::int64_t edges_found_ = 0;
   mutable std::int64_t segment_tests_ = 0;
 };
