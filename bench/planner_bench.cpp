@@ -145,15 +145,16 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
     mean /= static_cast<double>(random_ms.size());
     report("planner", {nw.name + "/vg/random_query_mean", mean, "ms"},
            Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
-    // A replan around 5 sensed boxes on the way (0.6 m, on the optimal path): on the warm map
-    // graph with the boxes added on top, against a planner rebuilt with them.
+    // A replan around 1 and 5 sensed boxes on the way (0.6 m, on the optimal path): on the warm
+    // map graph with the boxes added on top, against a planner rebuilt with them.
     const planner::PlannerInput in = planner::planner_input(nw.world, false);
     const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(p.get());
     const planner::PlanResult way = p->plan(nw.world.start.position(), nw.world.charger.position());
-    if (vg && way.status == planner::PlanStatus::kOk && way.path.size() >= 2) {
+    if (!vg || way.status != planner::PlanStatus::kOk || way.path.size() < 2) continue;
+    for (const int boxes : {1, 5}) {
       std::vector<geom::Rect> raw, grown;
-      for (int k = 1; k <= 5; ++k) {
-        const double f = k / 6.0;
+      for (int k = 1; k <= boxes; ++k) {
+        const double f = static_cast<double>(k) / (boxes + 1);
         const std::size_t i = std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
         const geom::Vec2 c = way.path[i] + 0.5 * (way.path[i + 1] - way.path[i]);
         raw.push_back({c.x - 0.3, c.y - 0.3, c.x + 0.3, c.y + 0.3});
@@ -173,11 +174,12 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
         overlay_ms.push_back(ms_since(t0));
       }
       if (std::abs(rebuild_len - overlay_len) > 1e-9 * std::max(1.0, rebuild_len)) {
-        std::cerr << "bench: replan length mismatch on " << nw.name << "\n";
+        std::cerr << "bench: replan length mismatch on " << nw.name << " with " << boxes << " boxes\n";
         return 1;
       }
-      report("planner", {nw.name + "/vg/replan_5_boxes_on_map_graph", median(overlay_ms), "ms"},
-             Measure{nw.name + "/vg/replan_5_boxes_rebuilt", median(rebuild_ms), "ms"});
+      const std::string what = "/vg/replan_" + std::to_string(boxes) + (boxes == 1 ? "_box" : "_boxes");
+      report("planner", {nw.name + what + "_on_map_graph", median(overlay_ms), "ms"},
+             Measure{nw.name + what + "_rebuilt", median(rebuild_ms), "ms"});
     }
   }
   if (!chart_png.empty()) {
