@@ -55,6 +55,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     std::string planner = "vg";
     double inflate = -1;
     int corner_steps = 1;
+    std::string inflation = "square";
     bool snap = false;
     std::string map, scen, goal;
   };
@@ -68,6 +69,10 @@ std::function<int()> add_plan_command(CLI::App& app) {
   cmd->add_option("--corner-steps", opt->corner_steps,
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
       ->check(CLI::Range(1, 16));
+  cmd->add_option("--inflation", opt->inflation,
+                  "square (rectangles grown to rectangles, the document's; see --corner-steps) or round (grown by a "
+                  "disk, rounded corners: the disk robot's true optimum, segments and arcs; planner vg-round)")
+      ->check(CLI::IsMember({"square", "round"}));
   cmd->add_option("--goal", opt->goal,
                   "docked (the charger's docked position; default for world files) or staging (the staging pose "
                   "`run` plans to; default for ROS maps, whose charger stands against a wall inside the planning inflation)")
@@ -86,6 +91,12 @@ std::function<int()> add_plan_command(CLI::App& app) {
     input.corner_steps = opt->corner_steps;
     input.snap_to_free = opt->snap;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
+    if (opt->inflation == "round") {
+      if (opt->planner != "vg" && opt->planner != "vg-round")
+        throw std::invalid_argument("plan: --inflation round is the visibility graph's (planner vg), not " + opt->planner + "'s");
+      if (opt->corner_steps != 1) throw std::invalid_argument("plan: --corner-steps is for --inflation square");
+      opt->planner = "vg-round";
+    }
     auto p = planner::make_planner(opt->planner, input);
     const std::string ext = std::filesystem::path(opt->world).extension().string();
     const bool ros_map = ext == ".yaml" || ext == ".yml";

@@ -44,6 +44,8 @@ struct PlanMark {
 struct PlanResult {
   PlanStatus status = PlanStatus::kNoPath;
   std::vector<Vec2> path;      ///< start .. goal, empty unless status is kOk
+  std::vector<Vec2> drive_path;  ///< what a controller should follow when not `path` itself
+                                 ///< (vg-round: arcs replaced by their tangents' corners); empty: `path`
   double length = 0;           ///< metres, sum of segment lengths
   PlanStats stats;
   bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start

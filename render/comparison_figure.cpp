@@ -60,9 +60,11 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     fig.clip_to_world(world.floor, t);
     GlCanvas& c = fig.canvas();
     draw_floor(c, world);
-    const bool obstacles = draw_obstacles(c, world);
+    const MarginShape shape = margin_shape(p.run.planner.empty() ? p.label : p.run.planner);
+    const bool obstacles = draw_obstacles(c, world, shape);
     listed(obstacles, palette::kObstacle, "obstacle");
-    listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "planning margin");
+    listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
+           shape == MarginShape::kRound ? "planning margin (rounded)" : "planning margin");
     listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
     for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
     if (p.drove) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/predicates.h"
 #include "render/colormap.h"
 #include "render/palette.h"
 
@@ -24,13 +25,28 @@ void draw_floor(GlCanvas& c, const worlds::World& w) {
     c.polyline({{w.floor.xmin, y}, {w.floor.xmax, y}}, 1.0, palette::kGrid);
 }
 
-bool draw_obstacles(GlCanvas& c, const worlds::World& w) {
+MarginShape margin_shape(const std::string& planner_name) {
+  return planner_name == "vg-round" ? MarginShape::kRound : MarginShape::kSquare;
+}
+
+bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
   const double inflation = w.planning_inflation_m();
-  for (const auto& r : w.obstacles) {
-    const geom::Rect m = r.inflated(inflation);
+  auto fill_on_floor = [&](const geom::Rect& m) {
     c.fill_rect({std::max(m.xmin, w.floor.xmin), std::max(m.ymin, w.floor.ymin), std::min(m.xmax, w.floor.xmax),
                  std::min(m.ymax, w.floor.ymax)},
                 palette::kInflation);
+  };
+  for (const auto& r : w.obstacles) {
+    if (shape == MarginShape::kSquare || inflation <= 0) {
+      fill_on_floor(r.inflated(inflation));
+      continue;
+    }
+    // The rectangle grown by a disk: grown along x, along y, and a disk at each corner.
+    fill_on_floor({r.xmin - inflation, r.ymin, r.xmax + inflation, r.ymax});
+    fill_on_floor({r.xmin, r.ymin - inflation, r.xmax, r.ymax + inflation});
+    // A corner on or past the floor's edge needs no disk: its part on the floor is covered.
+    for (Vec2 k : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
+      if (geom::in_open_rect(w.floor, k)) c.fill_disk(k, inflation, palette::kInflation);
   }
   for (const auto& r : w.obstacles) c.fill_rect(r, palette::kObstacle);
   return !w.obstacles.empty();

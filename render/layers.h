@@ -12,8 +12,12 @@
 namespace plantsim::render {
 
 void draw_floor(GlCanvas& c, const worlds::World& w);                  ///< floor and metre grid
+/// How a planner grows obstacles by the planning margin: to rectangles, or by a disk (rounded
+/// corners: planner vg-round). Figures draw the margin the plan was made around.
+enum class MarginShape { kSquare, kRound };
+MarginShape margin_shape(const std::string& planner_name);
 /// Margins, then obstacles; false when the world has none.
-bool draw_obstacles(GlCanvas& c, const worlds::World& w);
+bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape = MarginShape::kSquare);
 /// Obstacles the plant has and the map lacks: outlined and hatched, never filled like the map's.
 bool draw_unmapped(GlCanvas& c, const worlds::World& w);
 /// Where the map puts the charger, as an outline, when that is not where it stands.

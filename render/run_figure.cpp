@@ -132,7 +132,7 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside), near.obstacles.end());
   near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside), near.unmapped.end());
   draw_floor(c, near);
-  draw_obstacles(c, near);
+  draw_obstacles(c, near, margin_shape(run.planner));
   draw_unmapped(c, near);
   // The tolerance: the band of centres within it, 0.3 m along the approach axis up to the dock.
   const geom::Pose2& dock = world.charger;
@@ -179,9 +179,11 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
     if (drawn) legend.push_back({colour, label});
   };
   draw_floor(c, world);
-  const bool obstacles = draw_obstacles(c, world);
+  const MarginShape shape = margin_shape(run.planner);
+  const bool obstacles = draw_obstacles(c, world, shape);
   listed(obstacles, palette::kObstacle, "obstacle");
-  listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "margin");
+  listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
+         shape == MarginShape::kRound ? "margin (rounded)" : "margin");
   listed(draw_unmapped(c, world), palette::kUnmapped, "not on map");
   listed(draw_graph(c, o.graph_edges), palette::kGraph, "graph");
   if (!run.moving_tracks.empty())

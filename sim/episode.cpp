@@ -65,7 +65,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.plan = plan.path;
   result.first_plan = plan.path;
   result.path_length_m = plan.length;
-  const std::vector<Vec2> first_path = planned ? plan.path : std::vector<Vec2>{map.start.position(), goal};
+  const std::vector<Vec2> first_path =
+      planned ? (plan.drive_path.empty() ? plan.path : plan.drive_path) : std::vector<Vec2>{map.start.position(), goal};
 
   TravelSettings settings{config.tracking, config.docking, config.field, config.pursuit_replan_period_s};
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;

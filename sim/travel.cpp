@@ -31,7 +31,7 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
   again.snap_to_free = true;
   const planner::PlanResult re = planner::make_planner(planner_name, again)->plan(from.position(), to);
   if (re.status != planner::PlanStatus::kOk) return std::nullopt;
-  std::vector<geom::Vec2> path = re.path;
+  std::vector<geom::Vec2> path = re.drive_path.empty() ? re.path : re.drive_path;
   if (re.start_snapped) path.insert(path.begin(), from.position());
   return path;
 }

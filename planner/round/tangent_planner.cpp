@@ -1,0 +1,304 @@
+// Tangents between equal circles, the lazy A* over them, and the clearance checks.
+#include "planner/round/tangent_planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <queue>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <unordered_set>
+
+#include "geometry/clearance.h"
+#include "geometry/predicates.h"
+#include "planner/free_point.h"
+#include "planner/inflation.h"
+
+namespace plantsim::planner {
+namespace {
+
+constexpr double kTwoPi = 2.0 * M_PI;
+constexpr double kArcSampleRad = 2.0 * M_PI / 180.0;
+
+Vec2 left_of(Vec2 d) { return {-d.y, d.x}; }
+
+// A tangent segment: it leaves `dep` (on the first circle, or the start) and reaches `arr`.
+struct Tangent {
+  Vec2 dep, arr;
+};
+
+// The line leaving circle (ci, sense si) for circle (cj, sj), both of radius r; sense +1 wraps
+// a circle counter-clockwise (it lies on the left), -1 clockwise. None when the circles are too
+// close for a crossing tangent, or coincide.
+std::optional<Tangent> circle_to_circle(Vec2 ci, int si, Vec2 cj, int sj, double r) {
+  const Vec2 D = cj - ci;
+  const double l = geom::norm(D);
+  if (l == 0) return std::nullopt;
+  Vec2 d = (1.0 / l) * D;
+  if (si != sj) {
+    const double s = 2.0 * si * r / l;
+    if (std::abs(s) > 1) return std::nullopt;
+    d = geom::rotate(d, std::asin(s));
+  }
+  return Tangent{ci - si * r * left_of(d), cj - sj * r * left_of(d)};
+}
+
+std::optional<Tangent> point_to_circle(Vec2 p, Vec2 cj, int sj, double r) {
+  const Vec2 D = cj - p;
+  const double l = geom::norm(D);
+  if (l < r) return std::nullopt;
+  const Vec2 d = geom::rotate((1.0 / l) * D, std::asin(-sj * r / l));
+  return Tangent{p, cj - sj * r * left_of(d)};
+}
+
+std::optional<Tangent> circle_to_point(Vec2 ci, int si, Vec2 p, double r) {
+  const Vec2 D = p - ci;
+  const double l = geom::norm(D);
+  if (l < r) return std::nullopt;
+  const Vec2 d = geom::rotate((1.0 / l) * D, std::asin(si * r / l));
+  return Tangent{ci - si * r * left_of(d), p};
+}
+
+double angle_of(Vec2 p, Vec2 c) { return std::atan2(p.y - c.y, p.x - c.x); }
+
+// The turn along a circle in sense s from angle a to angle b, in [0, 2 pi); a turn within
+// rounding of a full circle is none (a tangent that leaves where the last one arrived).
+double sweep_between(double a, double b, int s) {
+  double t = std::fmod(s > 0 ? b - a : a - b, kTwoPi);
+  if (t < 0) t += kTwoPi;
+  if (t > kTwoPi - 1e-12) t = 0;
+  return t;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
+    : raw_(input.obstacles),
+      free_floor_(input.floor.inflated(-input.inflation_m)),
+      radius_(input.inflation_m),
+      square_(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m),
+      snap_(input.snap_to_free) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (raw_.size() > kMaxObstacles)
+    throw std::invalid_argument("vg-round: " + std::to_string(raw_.size()) + " obstacles; it plans among at most " +
+                                std::to_string(kMaxObstacles) + " (use vg with --corner-steps for larger worlds)");
+  if (!(radius_ > 0)) throw std::invalid_argument("vg-round: the inflation must be positive (it is the rounding radius)");
+  const std::size_t obstacles = raw_.size();
+  // The walls as rectangles thick enough that only their inner faces matter: at the clearance
+  // from them lies the floor shrunk by it, corners square (the walls are flat).
+  for (const Rect& w : geom::surrounding_walls(input.floor, 2 * radius_ + 1)) raw_.push_back(w);
+  const Rect reach = input.floor.inflated(radius_);
+  for (std::size_t i = 0; i < obstacles; ++i) {
+    const Rect& o = raw_[i];
+    for (Vec2 c : {Vec2{o.xmin, o.ymin}, Vec2{o.xmax, o.ymin}, Vec2{o.xmax, o.ymax}, Vec2{o.xmin, o.ymax}}) {
+      if (!geom::in_closed_rect(reach, c)) continue;
+      bool buried = false;  // inside another rectangle: every point around it is too near
+      for (const Rect& q : raw_) buried = buried || geom::in_open_rect(q, c);
+      if (!buried) circles_.push_back(c);
+    }
+  }
+  std::sort(circles_.begin(), circles_.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  circles_.erase(std::unique(circles_.begin(), circles_.end()), circles_.end());
+  build_ms_ = ms_since(t0);
+}
+
+bool RoundTangentPlanner::point_clear(Vec2 p) const {
+  if (!geom::in_closed_rect(free_floor_.inflated(geom::kClearanceTolerance_m), p)) return false;
+  for (const Rect& q : raw_)
+    if (geom::distance_to_rect(p, q) < radius_ - geom::kClearanceTolerance_m) return false;
+  return true;
+}
+
+bool RoundTangentPlanner::segment_clear(Vec2 p, Vec2 q) const {
+  for (const Rect& o : raw_)
+    if (geom::segment_rect_distance(p, q, o) < radius_ - geom::kClearanceTolerance_m) return false;
+  return true;
+}
+
+void RoundTangentPlanner::append_drive_corners(Vec2 c, double from, int sense, double sweep, Vec2 arr, Vec2 dep,
+                                               std::vector<Vec2>& out) const {
+  if (sweep <= 0) return;
+  // The arc split into k equal turns, each replaced by the corner where the tangents at its
+  // ends meet (r / cos(turn / 2) from the center: outside the circle, inside the square
+  // inflation's corner), the fewest pieces whose legs all keep the clearance.
+  for (int k = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * M_PI)))); k <= 64; k *= 2) {
+    const double turn = sweep / k, reach = radius_ / std::cos(0.5 * turn);
+    std::vector<Vec2> corners;
+    for (int i = 0; i < k; ++i) corners.push_back(c + reach * geom::unit_from_angle(from + sense * turn * (i + 0.5)));
+    bool clear = segment_clear(arr, corners.front()) && segment_clear(corners.back(), dep);
+    for (std::size_t i = 1; clear && i < corners.size(); ++i) clear = segment_clear(corners[i - 1], corners[i]);
+    if (clear) {
+      out.insert(out.end(), corners.begin(), corners.end());
+      return;
+    }
+  }
+  // Nothing around the arc keeps clear (another obstacle hugs it): the arc's own samples.
+  const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
+  for (int i = 1; i < steps; ++i) out.push_back(c + radius_ * geom::unit_from_angle(from + sense * sweep * i / steps));
+}
+
+bool RoundTangentPlanner::arc_clear(std::int32_t circle, double from, double sweep) const {
+  const Vec2 c = circles_[static_cast<std::size_t>(circle)];
+  for (const Rect& o : raw_)
+    if (!geom::arc_keeps_clearance(c, radius_, from, sweep, o, radius_)) return false;
+  return true;
+}
+
+PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult out;
+  out.stats.build_ms = build_ms_;
+  out.stats.vertices = static_cast<std::int64_t>(circles_.size());
+  auto finish = [&] {
+    out.stats.query_ms = ms_since(t0);
+    out.stats.segment_tests = segment_tests_;
+    out.stats.edges = tangents_kept_;
+    return out;
+  };
+  // A blocked end moves to the square inflation's nearest free point (free here too: the square
+  // grows every obstacle at least as far as the disk does), when snapping is on.
+  for (auto [p, snapped, blocked] : {std::tuple{&start, &out.start_snapped, PlanStatus::kStartBlocked},
+                                     std::tuple{&goal, &out.goal_snapped, PlanStatus::kGoalBlocked}}) {
+    if (point_clear(*p)) continue;
+    const auto moved = snap_ ? nearest_free_point(square_, *p) : std::nullopt;
+    if (!moved) {
+      out.status = blocked;
+      return finish();
+    }
+    *p = *moved;
+    *snapped = true;
+  }
+
+  const double r = radius_;
+  const auto n = static_cast<std::int32_t>(circles_.size());
+  constexpr std::int32_t kStart = -1, kGoal = -2;
+  struct State {
+    std::int32_t circle;  // kStart for the start
+    std::int8_t sense;
+    Vec2 dep, arr;        // the tangent it arrived by: left its parent at dep, reached arr
+    double arr_angle;
+    std::int32_t parent;
+  };
+  struct Entry {
+    double f, g;
+    std::int32_t circle, parent;  // circle kGoal: the goal
+    std::int8_t sense;
+    Vec2 dep, arr;
+    double sweep;                 // the turn on the parent's circle before dep
+    bool operator>(const Entry& o) const {
+      if (f != o.f) return f > o.f;
+      if (g != o.g) return g < o.g;
+      if (circle != o.circle) return circle > o.circle;
+      if (sense != o.sense) return sense > o.sense;
+      return parent > o.parent;
+    }
+  };
+  std::vector<State> states{{kStart, 0, start, start, 0.0, -1}};
+  std::unordered_set<std::uint64_t> closed;
+  auto key = [&](std::int32_t circle, int sense, std::int32_t parent) {
+    const State& p = states[static_cast<std::size_t>(parent)];
+    const auto from = static_cast<std::uint64_t>(p.circle + 1) * 2 + (p.sense > 0);
+    return (static_cast<std::uint64_t>(circle) * 2 + (sense > 0)) * (2 * static_cast<std::uint64_t>(n) + 2) + from;
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  auto push = [&](std::int32_t circle, int sense, std::int32_t parent, const Tangent& t, double sweep, double g) {
+    const Vec2 target = circle == kGoal ? goal : t.arr;
+    open.push({g + geom::distance(target, goal), g, circle, parent, static_cast<std::int8_t>(sense), t.dep, t.arr, sweep});
+  };
+
+  std::vector<double> cost{0.0};
+  std::int64_t expanded = 0;
+  auto expand_state = [&](std::int32_t at) {
+    ++expanded;
+    const State s = states[static_cast<std::size_t>(at)];
+    const double g = cost[static_cast<std::size_t>(at)];
+    if (s.circle == kStart) {
+      push(kGoal, 0, at, {start, goal}, 0, geom::distance(start, goal));
+      for (std::int32_t j = 0; j < n; ++j)
+        for (int sj : {1, -1})
+          if (const auto t = point_to_circle(start, circles_[static_cast<std::size_t>(j)], sj, r))
+            push(j, sj, at, *t, 0, g + geom::distance(t->dep, t->arr));
+      return;
+    }
+    const Vec2 ci = circles_[static_cast<std::size_t>(s.circle)];
+    auto leave = [&](std::int32_t circle, int sense, const Tangent& t) {
+      const double sweep = sweep_between(s.arr_angle, angle_of(t.dep, ci), s.sense);
+      if (sweep > M_PI) return;  // around one corner a shortest path turns by at most half a turn
+      push(circle, sense, at, t, sweep, g + r * sweep + geom::distance(t.dep, t.arr));
+    };
+    if (const auto t = circle_to_point(ci, s.sense, goal, r)) leave(kGoal, 0, *t);
+    for (std::int32_t j = 0; j < n; ++j) {
+      if (j == s.circle) continue;
+      for (int sj : {1, -1})
+        if (const auto t = circle_to_circle(ci, s.sense, circles_[static_cast<std::size_t>(j)], sj, r)) leave(j, sj, *t);
+    }
+  };
+
+  expand_state(0);
+  while (!open.empty()) {
+    const Entry e = open.top();
+    open.pop();
+    const State& parent = states[static_cast<std::size_t>(e.parent)];
+    const std::uint64_t k = e.circle == kGoal ? 0 : key(e.circle, e.sense, e.parent);
+    if (e.circle != kGoal && closed.count(k)) continue;
+    // The turn on the parent's circle, then the segment.
+    if (parent.circle != kStart && e.sweep > 0) {
+      const double a = parent.arr_angle, from = parent.sense > 0 ? a : a - e.sweep;
+      if (!arc_clear(parent.circle, from, e.sweep)) continue;
+    }
+    ++segment_tests_;
+    if (!segment_clear(e.dep, e.arr)) continue;
+    ++tangents_kept_;
+    if (e.circle == kGoal) {
+      // The path: back through the states, each arc sampled, then forwards.
+      std::vector<std::int32_t> chain;
+      for (std::int32_t v = e.parent; v != -1; v = states[static_cast<std::size_t>(v)].parent) chain.push_back(v);
+      std::reverse(chain.begin(), chain.end());
+      out.path.push_back(start);
+      out.drive_path.push_back(start);
+      auto add_arc = [&](const State& on, Vec2 dep) {
+        if (on.circle == kStart) return;
+        const Vec2 c = circles_[static_cast<std::size_t>(on.circle)];
+        const double sweep = sweep_between(on.arr_angle, angle_of(dep, c), on.sense);
+        const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
+        for (int i = 1; i < steps; ++i)
+          out.path.push_back(c + r * geom::unit_from_angle(on.arr_angle + on.sense * sweep * i / steps));
+        append_drive_corners(c, on.arr_angle, on.sense, sweep, on.arr, dep, out.drive_path);
+      };
+      for (std::size_t i = 1; i < chain.size(); ++i) {
+        const State& s = states[static_cast<std::size_t>(chain[i])];
+        add_arc(states[static_cast<std::size_t>(chain[i - 1])], s.dep);
+        for (auto* line : {&out.path, &out.drive_path}) {
+          if (!(line->back() == s.dep)) line->push_back(s.dep);
+          line->push_back(s.arr);
+        }
+      }
+      add_arc(states[static_cast<std::size_t>(chain.back())], e.dep);
+      for (auto* line : {&out.path, &out.drive_path}) {
+        if (!(line->back() == e.dep)) line->push_back(e.dep);
+        if (!(line->back() == goal)) line->push_back(goal);
+      }
+      out.status = PlanStatus::kOk;
+      out.length = e.g;
+      out.note = "segments and arcs of radius " + std::to_string(r) + " m around corners; arcs sampled every 2 degrees, length exact";
+      out.stats.expanded = expanded;
+      return finish();
+    }
+    closed.insert(k);
+    const Vec2 c = circles_[static_cast<std::size_t>(e.circle)];
+    states.push_back({e.circle, e.sense, e.dep, e.arr, angle_of(e.arr, c), e.parent});
+    cost.push_back(e.g);
+    expand_state(static_cast<std::int32_t>(states.size() - 1));
+  }
+  out.status = PlanStatus::kNoPath;
+  out.stats.expanded = expanded;
+  return finish();
+}
+
+}  // namespace plantsim::planner
