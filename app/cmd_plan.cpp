@@ -115,6 +115,11 @@ std::function<int()> add_plan_command(CLI::App& app) {
     auto path = nlohmann::json::array();
     for (const auto& v : r.path) path.push_back({v.x, v.y});
     out["path"] = path;
+    if (!r.drive_path.empty()) {
+      auto drive = nlohmann::json::array();
+      for (const auto& v : r.drive_path) drive.push_back({v.x, v.y});
+      out["drive_path"] = drive;
+    }
     out["stats"] = {{"build_ms", r.stats.build_ms},     {"query_ms", r.stats.query_ms},
                     {"vertices", r.stats.vertices},     {"edges", r.stats.edges},
                     {"expanded", r.stats.expanded},     {"segment_tests", r.stats.segment_tests}};
