@@ -72,6 +72,19 @@ double sweep_between(double a, double b, int s) {
   return t;
 }
 
+// True when angle a lies in one of the closed quadrants of `mask`, up to rounding.
+bool in_quadrants(double a, unsigned mask) {
+  if (mask == 15u) return true;
+  constexpr double kSlack = 1e-9;
+  for (unsigned q = 0; q < 4; ++q) {
+    if (!(mask & (1u << q))) continue;
+    double off = std::fmod(a - q * 0.5 * M_PI + kSlack, kTwoPi);
+    if (off < 0) off += kTwoPi;
+    if (off <= 0.5 * M_PI + 2 * kSlack) return true;
+  }
+  return false;
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -94,17 +107,44 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
   // from them lies the floor shrunk by it, corners square (the walls are flat).
   for (const Rect& w : geom::surrounding_walls(input.floor, 2 * radius_ + 1)) raw_.push_back(w);
   const Rect reach = input.floor.inflated(radius_);
+  // Each corner with the quadrant of directions pointing away from its rectangle (bit q:
+  // angles [q pi/2, (q + 1) pi/2]); a degenerate rectangle gives one point two or four bits.
+  struct Corner {
+    Vec2 c;
+    std::size_t rect;
+    unsigned quadrants;
+  };
+  std::vector<Corner> corners;
   for (std::size_t i = 0; i < obstacles; ++i) {
     const Rect& o = raw_[i];
-    for (Vec2 c : {Vec2{o.xmin, o.ymin}, Vec2{o.xmax, o.ymin}, Vec2{o.xmax, o.ymax}, Vec2{o.xmin, o.ymax}}) {
-      if (!geom::in_closed_rect(reach, c)) continue;
+    const Corner own[4] = {{{o.xmax, o.ymax}, i, 1u}, {{o.xmin, o.ymax}, i, 2u}, {{o.xmin, o.ymin}, i, 4u},
+                           {{o.xmax, o.ymin}, i, 8u}};
+    for (const Corner& k : own) {
+      if (!geom::in_closed_rect(reach, k.c)) continue;
       bool buried = false;  // inside another rectangle: every point around it is too near
-      for (const Rect& q : raw_) buried = buried || geom::in_open_rect(q, c);
-      if (!buried) circles_.push_back(c);
+      for (const Rect& q : raw_) buried = buried || geom::in_open_rect(q, k.c);
+      if (!buried) corners.push_back(k);
     }
   }
-  std::sort(circles_.begin(), circles_.end(), [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-  circles_.erase(std::unique(circles_.begin(), circles_.end()), circles_.end());
+  auto by_point = [](const Corner& a, const Corner& b) {
+    return a.c.x != b.c.x ? a.c.x < b.c.x : a.c.y != b.c.y ? a.c.y < b.c.y : a.rect < b.rect;
+  };
+  std::sort(corners.begin(), corners.end(), by_point);
+  for (std::size_t i = 0; i < corners.size();) {
+    // A point on the circle outside a rectangle's quadrants is nearer to it than the radius:
+    // only the quadrants every rectangle cornered there allows can hold a tangent point.
+    unsigned common = 15u;
+    std::size_t j = i;
+    while (j < corners.size() && corners[j].c == corners[i].c) {
+      unsigned mine = 0;
+      const std::size_t rect = corners[j].rect;
+      for (; j < corners.size() && corners[j].c == corners[i].c && corners[j].rect == rect; ++j) mine |= corners[j].quadrants;
+      common &= mine;
+    }
+    circles_.push_back(corners[i].c);
+    allowed_.push_back(common == 0 ? 15u : common);  // none in common: touching rectangles; no pruning
+    i = j;
+  }
   build_ms_ = ms_since(t0);
 }
 
@@ -212,6 +252,10 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
     open.push({g + geom::distance(target, goal), g, circle, parent, static_cast<std::int8_t>(sense), t.dep, t.arr, sweep});
   };
 
+  auto may_touch = [&](std::int32_t circle, Vec2 p) {
+    const Vec2 c = circles_[static_cast<std::size_t>(circle)];
+    return in_quadrants(angle_of(p, c), allowed_[static_cast<std::size_t>(circle)]);
+  };
   std::vector<double> cost{0.0};
   std::int64_t expanded = 0;
   auto expand_state = [&](std::int32_t at) {
@@ -223,11 +267,12 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
       for (std::int32_t j = 0; j < n; ++j)
         for (int sj : {1, -1})
           if (const auto t = point_to_circle(start, circles_[static_cast<std::size_t>(j)], sj, r))
-            push(j, sj, at, *t, 0, g + geom::distance(t->dep, t->arr));
+            if (may_touch(j, t->arr)) push(j, sj, at, *t, 0, g + geom::distance(t->dep, t->arr));
       return;
     }
     const Vec2 ci = circles_[static_cast<std::size_t>(s.circle)];
     auto leave = [&](std::int32_t circle, int sense, const Tangent& t) {
+      if (!may_touch(s.circle, t.dep) || (circle != kGoal && !may_touch(circle, t.arr))) return;
       const double sweep = sweep_between(s.arr_angle, angle_of(t.dep, ci), s.sense);
       if (sweep > M_PI) return;  // around one corner a shortest path turns by at most half a turn
       push(circle, sense, at, t, sweep, g + r * sweep + geom::distance(t.dep, t.arr));

@@ -47,6 +47,7 @@ class RoundTangentPlanner : public Planner {
   Rect free_floor_;            // the floor shrunk by the clearance (walls are flat)
   double radius_;
   std::vector<Vec2> circles_;  // distinct corners of the obstacles that are not inside one
+  std::vector<unsigned> allowed_;  // per circle, the quadrants a tangent may touch it in (bit q: [q, q + 1] pi/2)
   ObstacleMap square_;         // the square inflation, for snapping a blocked end (a subset of free space)
   bool snap_;
   double build_ms_ = 0;
