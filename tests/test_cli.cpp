@@ -238,6 +238,27 @@ TEST_F(Cli, PlanOnARosMapPlansWhereRunDoes) {
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
 }
 
+// `plan --inflation round`: shorter than the square inflation on a plant with corners to turn,
+// the path the robot follows beside the one drawn; combinations it cannot honour are refused.
+TEST_F(Cli, PlanWithRoundInflation) {
+  const std::string world = test::source_file("worlds/scenarios/desulfurization_plant.json");
+  Outcome o = run("plan " + world + " --inflation round");
+  ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
+  const auto round = nlohmann::json::parse(o.out);
+  EXPECT_EQ(round["planner"], "vg-round");
+  EXPECT_GT(round["drive_path"].size(), 1u);
+  o = run("plan " + world);
+  ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
+  const auto square = nlohmann::json::parse(o.out);
+  EXPECT_LT(round["length"].get<double>(), square["length"].get<double>() - 0.1);
+  o = run("plan " + world + " --inflation round --planner grid");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("--inflation round is the visibility graph's"), std::string::npos) << o.err;
+  o = run("plan " + world + " --inflation round --inflate 0");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("must be positive"), std::string::npos) << o.err;
+}
+
 TEST_F(Cli, VersionNamesTheCommit) {
   const Outcome o = run("--version");
   EXPECT_EQ(o.exit_code, 0);
