@@ -10,6 +10,7 @@
 #include <fstream>
 #include <random>
 #include <set>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +19,7 @@
 #include "planner/planner.h"
 #include "planner/vg/vg_planner.h"
 #include "worlds/grid_map.h"
+#include "worlds/random_plant.h"
 #include "test_paths.h"
 
 namespace plantsim::planner {
@@ -214,6 +216,67 @@ TEST(RandomWorlds, ResolvedGraphHoldsEveryVisibleTangentPair) {
   in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
   in.inflation_m = 0;
   expect_graph_complete(in, "arena");
+}
+
+// A world changed by a few obstacles (one taken away, one added) keeps every vertex's edges
+// the change cannot reach: the changed planner's whole graph and answers equal a planner built
+// for the changed world from nothing.
+TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0), size(0.2, 3.0);
+  std::int64_t reused = 0;
+  for (int world = 0; world < 120; ++world) {
+    // Small worlds with touching and overlapping rectangles (every scan reaches the change:
+    // nothing is taken over, the answers must still agree), and plants of 300 rectangles where
+    // a change is local.
+    PlannerInput in;
+    double w = 20, h = 14;
+    if (world % 4 == 3) {
+      worlds::RandomPlantOptions o;
+      o.rect_count = 300;
+      o.seed = static_cast<std::uint64_t>(world);
+      w = o.width_m = 55;
+      h = o.height_m = 33;
+      in = planner_input(worlds::random_plant(o), false);
+    } else {
+      in = random_world(rng, world % 2 == 0);
+    }
+    VisibilityGraphPlanner base(in);
+    std::vector<std::pair<Vec2, Vec2>> queries;
+    for (int q = 0; q < 12; ++q) queries.push_back({{ux(rng) * w / 20, uy(rng) * h / 14}, {ux(rng) * w / 20, uy(rng) * h / 14}});
+    for (const auto& [s, g] : queries) base.plan(s, g);  // warm: candidates found, some resolved
+    std::vector<std::size_t> removed;
+    if (!in.obstacles.empty()) removed.push_back(static_cast<std::size_t>(rng() % in.obstacles.size()));
+    std::vector<Rect> added;
+    if (world % 3 != 0) {
+      const double x = ux(rng) * w / 20, y = uy(rng) * h / 14;
+      added.push_back({x, y, x + size(rng), y + size(rng)});
+    }
+    const auto changed = base.with_changes(added, removed);
+    VisibilityGraphPlanner fresh(changed->input());
+    reused += changed->graph().reused();
+    const std::string what = "world " + std::to_string(world);
+    for (const auto& [s, g] : queries) {
+      const PlanResult a = changed->plan(s, g), b = fresh.plan(s, g);
+      ASSERT_EQ(a.status, b.status) << what;
+      if (a.status == PlanStatus::kOk) {
+        ASSERT_NEAR(a.length, b.length, 1e-12) << what;
+      }
+    }
+    auto sorted = [](std::vector<std::pair<Vec2, Vec2>> e) {
+      std::sort(e.begin(), e.end(), [](const auto& p, const auto& q) {
+        return std::tie(p.first.x, p.first.y, p.second.x, p.second.y) < std::tie(q.first.x, q.first.y, q.second.x, q.second.y);
+      });
+      return e;
+    };
+    const auto ea = sorted(changed->graph_edges()), eb = sorted(fresh.graph_edges());
+    ASSERT_EQ(ea.size(), eb.size()) << what;
+    for (std::size_t i = 0; i < ea.size(); ++i) ASSERT_TRUE(ea[i].first == eb[i].first && ea[i].second == eb[i].second) << what;
+  }
+  EXPECT_GT(reused, 500);  // the case this is about: most vertices taken over
+  // An index past the obstacles is refused.
+  VisibilityGraphPlanner small(random_world(rng, false));
+  EXPECT_THROW(small.with_changes({}, {small.input().obstacles.size()}), std::out_of_range);
 }
 
 TEST(RandomWorlds, LaterQueriesOnAWarmGraphGiveTheSameAnswers) {

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <limits>
 #include <queue>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "geometry/polyline.h"
@@ -61,10 +63,40 @@ void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanR
 
 VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
     : build_start_(std::chrono::steady_clock::now()),
+      input_(input),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       graph_(map_),
       snap_(input.snap_to_free) {
   build_ms_ = ms_since(build_start_);
+}
+
+VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base,
+                                               const std::vector<Rect>& changed)
+    : build_start_(std::chrono::steady_clock::now()),
+      input_(input),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      graph_(map_, base.graph_, changed),
+      snap_(input.snap_to_free) {
+  build_ms_ = ms_since(build_start_);
+}
+
+std::unique_ptr<VisibilityGraphPlanner> VisibilityGraphPlanner::with_changes(const std::vector<Rect>& added,
+                                                                             const std::vector<std::size_t>& removed) const {
+  PlannerInput next = input_;
+  std::vector<Rect> changed_raw = added;
+  std::vector<char> drop(input_.obstacles.size(), 0);
+  for (std::size_t i : removed) {
+    if (i >= drop.size())
+      throw std::out_of_range("vg: obstacle " + std::to_string(i) + " to remove; the world has " + std::to_string(drop.size()));
+    drop[i] = 1;
+    changed_raw.push_back(input_.obstacles[i]);
+  }
+  next.obstacles.clear();
+  for (std::size_t i = 0; i < input_.obstacles.size(); ++i)
+    if (!drop[i]) next.obstacles.push_back(input_.obstacles[i]);
+  next.obstacles.insert(next.obstacles.end(), added.begin(), added.end());
+  const std::vector<Rect> changed = inflate(changed_raw, input_.inflation_m, input_.corner_steps);
+  return std::unique_ptr<VisibilityGraphPlanner>(new VisibilityGraphPlanner(next, *this, changed));
 }
 
 PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <memory>
 
 #include "planner/astar.h"
 #include "planner/obstacle_map.h"
@@ -16,15 +17,24 @@ class VisibilityGraphPlanner : public Planner {
  public:
   explicit VisibilityGraphPlanner(const PlannerInput& input);
   std::string name() const override { return "vg"; }
+  /// A planner for this one's world with obstacles `added` and the obstacles at the indices
+  /// `removed` (into the input's obstacles) taken away: a parked cart that arrived or left. It
+  /// takes over every vertex's edges that the change cannot reach, so the next query searches
+  /// mostly a warm graph. Throws std::out_of_range for an index past the obstacles.
+  std::unique_ptr<VisibilityGraphPlanner> with_changes(const std::vector<Rect>& added,
+                                                       const std::vector<std::size_t>& removed) const;
+  const PlannerInput& input() const { return input_; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;  ///< the whole reduced graph
   const ObstacleMap& map() const { return map_; }
   const VisibilityGraph& graph() const { return graph_; }
 
  private:
+  VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base, const std::vector<Rect>& changed);
   SearchResult lazy_astar(Vec2 start, Vec2 goal) const;
 
   std::chrono::steady_clock::time_point build_start_;  // first member: times the build
+  PlannerInput input_;
   ObstacleMap map_;
   VisibilityGraph graph_;
   mutable std::vector<std::uint16_t> expansions_;  // how often each vertex was expanded (max 2)

@@ -49,7 +49,53 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
   candidates_.resize(vertices_.size());
   verdict_.resize(vertices_.size());
   candidates_ready_.assign(vertices_.size(), 0);
+  scan_box_.resize(vertices_.size());
   rect_seen_.assign(map.rects().size(), 0);
+}
+
+VisibilityGraph::VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base, const std::vector<Rect>& changed)
+    : VisibilityGraph(map) {
+  // A vertex's candidates and verdicts came from the rectangles inside the square its scan
+  // covered, and its segments to them lie in that square: where no changed rectangle reaches
+  // into it (a cell's margin added, for corners on its edge), the new map gives the same.
+  auto key = [](const GraphVertex& v) { return std::make_tuple(v.p.x, v.p.y, v.sx, v.sy); };
+  auto before = [&](const GraphVertex& a, const GraphVertex& b) { return key(a) < key(b); };
+  const auto& old_vertices = base.vertices_;
+  std::vector<std::int32_t> old_to_new(old_vertices.size(), -1);
+  for (std::size_t i = 0, j = 0; i < old_vertices.size() && j < vertices_.size();) {
+    if (before(old_vertices[i], vertices_[j])) ++i;
+    else if (before(vertices_[j], old_vertices[i])) ++j;
+    else old_to_new[i++] = static_cast<std::int32_t>(j++);
+  }
+  const double margin = std::max(map.cell_size(), base.map_.cell_size());
+  for (std::size_t i = 0; i < old_vertices.size(); ++i) {
+    const std::int32_t v = old_to_new[i];
+    if (v < 0 || !base.candidates_ready_[i]) continue;
+    const Rect box = base.scan_box_[i].inflated(margin);
+    const bool touched = std::any_of(changed.begin(), changed.end(), [&](const Rect& r) {
+      return r.xmin <= box.xmax && box.xmin <= r.xmax && r.ymin <= box.ymax && box.ymin <= r.ymax;
+    });
+    if (touched) continue;
+    std::vector<GraphEdge> kept;
+    std::vector<std::int8_t> verdicts;
+    bool complete = true;
+    for (std::size_t c = 0; c < base.candidates_[i].size(); ++c) {
+      const std::int32_t to = old_to_new[static_cast<std::size_t>(base.candidates_[i][c].to)];
+      if (to < 0) {  // a vertex gone: it lay on a changed rectangle, so this one was touched
+        complete = false;
+        break;
+      }
+      kept.push_back({to, base.candidates_[i][c].length});
+      verdicts.push_back(base.verdict_[i][c]);
+    }
+    if (!complete) continue;
+    const auto n = static_cast<std::size_t>(v);
+    candidates_[n] = std::move(kept);
+    verdict_[n] = std::move(verdicts);
+    candidates_ready_[n] = base.candidates_ready_[i];
+    scan_box_[n] = base.scan_box_[i];
+    ++reused_;
+  }
 }
 
 bool VisibilityGraph::tangent(const GraphVertex& v, Vec2 d) {
@@ -213,7 +259,9 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
     }
   };
 
+  int k_last = 0;
   for (int k = 0; k <= last_ring && k <= stop_ring; ++k) {
+    k_last = k;
     // World bounds of the (unclipped) square of cells within ring k.
     const Rect box{m.cell_bounds(cx0 - k, 0).xmin, m.cell_bounds(0, cy0 - k).ymin,
                    m.cell_bounds(cx0 + k, 0).xmax, m.cell_bounds(0, cy0 + k).ymax};
@@ -246,6 +294,9 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
     }
   }
   drop_hidden(u, out, first);
+  if (self_index >= 0)
+    scan_box_[static_cast<std::size_t>(self_index)] = {m.cell_bounds(cx0 - k_last, 0).xmin, m.cell_bounds(0, cy0 - k_last).ymin,
+                                                       m.cell_bounds(cx0 + k_last, 0).xmax, m.cell_bounds(0, cy0 + k_last).ymax};
 }
 
 }  // namespace plantsim::planner

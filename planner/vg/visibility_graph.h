@@ -37,6 +37,12 @@ struct GraphEdge {
 class VisibilityGraph {
  public:
   explicit VisibilityGraph(const ObstacleMap& map);
+  /// The graph of `map`, a copy of `base`'s map with the (inflated) rectangles `changed` added
+  /// or removed: what `base` found for a vertex whose scan no changed rectangle reaches is
+  /// taken over as it is; the rest is found anew, lazily.
+  VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base, const std::vector<Rect>& changed);
+  /// Vertices whose candidates were taken over from a base graph.
+  std::int64_t reused() const { return reused_; }
 
   const ObstacleMap& map() const { return map_; }
   const std::vector<GraphVertex>& vertices() const { return vertices_; }
@@ -93,6 +99,8 @@ class VisibilityGraph {
   mutable std::vector<std::vector<GraphEdge>> candidates_;
   mutable std::vector<std::vector<std::int8_t>> verdict_;  // per candidate: -1 unknown, 0, 1
   mutable std::vector<char> candidates_ready_;
+  mutable std::vector<Rect> scan_box_;  // per vertex, the square its scan covered
+  std::int64_t reused_ = 0;
   mutable std::int64_t candidates_gathered_ = 0;
   mutable std::vector<std::uint32_t> rect_seen_;  // stamp per rectangle, for one scan
   mutable std::uint32_t scan_stamp_ = 0;
