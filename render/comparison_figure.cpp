@@ -64,7 +64,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     const bool obstacles = draw_obstacles(c, world, shape);
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
-           shape == MarginShape::kRound ? "planning margin (rounded)" : "planning margin");
+           shape == MarginShape::kRound ? "rounded margin" : "planning margin");
     listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
     for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
     if (p.drove) {

@@ -183,7 +183,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const bool obstacles = draw_obstacles(c, world, shape);
   listed(obstacles, palette::kObstacle, "obstacle");
   listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
-         shape == MarginShape::kRound ? "margin (rounded)" : "margin");
+         shape == MarginShape::kRound ? "rounded margin" : "margin");
   listed(draw_unmapped(c, world), palette::kUnmapped, "not on map");
   listed(draw_graph(c, o.graph_edges), palette::kGraph, "graph");
   if (!run.moving_tracks.empty())

@@ -70,6 +70,12 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
   --out results/fig5_vs_fig6 || status=1
 ./build/plantsim compare ../shared/data/worlds/world_N50.json --planners vg,vg-traditional,grid,gcr \
   --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
+# Not in any source document: the disk robot's true optimum (obstacles grown by a disk, segments
+# and arcs) beside the document's square inflation, both driven (the robot turns at the arcs'
+# tangent corners).
+./build/plantsim compare worlds/scenarios/cable_tunnel_ring.json --planners vg,vg-round \
+  --title "cable_tunnel_ring: square inflation (the document's) vs round (vg-round), both driven" \
+  --out results/round_vs_square || status=1
 
 # The seed baselines (002's gradient and coordinate rotation, 001's potential field) beside the
 # visibility graph: one plant side by side, then random plants of 10-200 rectangles and the
@@ -97,7 +103,8 @@ mkdir -p results/planner_scaling
   > results/planner_scaling/bench_planner.jsonl || status=1
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
-  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/batch_plants/report.html \
+  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/round_vs_square/report.html \
+  --link results/batch_plants/report.html \
   --link results/batch_plant_mismatch/report.html --link results/batch_wet_floor_sweep/report.html \
   --link results/planner_scaling/planner_time.png \
   --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
