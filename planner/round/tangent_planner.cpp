@@ -85,6 +85,13 @@ bool in_quadrants(double a, unsigned mask) {
   return false;
 }
 
+// Points strictly inside the arc of circle (c, r) from angle `from` in `sense` through `sweep`,
+// at most 2 degrees apart (its ends are the tangent points, added by the caller).
+void append_arc_samples(Vec2 c, double r, double from, int sense, double sweep, std::vector<Vec2>& out) {
+  const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
+  for (int i = 1; i < steps; ++i) out.push_back(c + r * geom::unit_from_angle(from + sense * sweep * i / steps));
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -94,9 +101,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
     : raw_(input.obstacles),
       free_floor_(input.floor.inflated(-input.inflation_m)),
-      radius_(input.inflation_m),
-      square_(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m),
-      snap_(input.snap_to_free) {
+      radius_(input.inflation_m) {
   const auto t0 = std::chrono::steady_clock::now();
   if (raw_.size() > kMaxObstacles)
     throw std::invalid_argument("vg-round: " + std::to_string(raw_.size()) + " obstacles; it plans among at most " +
@@ -145,10 +150,12 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
     allowed_.push_back(common == 0 ? 15u : common);  // none in common: touching rectangles; no pruning
     i = j;
   }
+  if (input.snap_to_free) square_.emplace(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m);
   build_ms_ = ms_since(t0);
 }
 
 bool RoundTangentPlanner::point_clear(Vec2 p) const {
+  // The walls alone would refuse a point off the floor, but not a NaN (every comparison false).
   if (!geom::in_closed_rect(free_floor_.inflated(geom::kClearanceTolerance_m), p)) return false;
   for (const Rect& q : raw_)
     if (geom::distance_to_rect(p, q) < radius_ - geom::kClearanceTolerance_m) return false;
@@ -179,8 +186,7 @@ void RoundTangentPlanner::append_drive_corners(Vec2 c, double from, int sense, d
     }
   }
   // Nothing around the arc keeps clear (another obstacle hugs it): the arc's own samples.
-  const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
-  for (int i = 1; i < steps; ++i) out.push_back(c + radius_ * geom::unit_from_angle(from + sense * sweep * i / steps));
+  append_arc_samples(c, radius_, from, sense, sweep, out);
 }
 
 bool RoundTangentPlanner::arc_clear(std::int32_t circle, double from, double sweep) const {
@@ -206,7 +212,7 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   for (auto [p, snapped, blocked] : {std::tuple{&start, &out.start_snapped, PlanStatus::kStartBlocked},
                                      std::tuple{&goal, &out.goal_snapped, PlanStatus::kGoalBlocked}}) {
     if (point_clear(*p)) continue;
-    const auto moved = snap_ ? nearest_free_point(square_, *p) : std::nullopt;
+    const auto moved = square_ ? nearest_free_point(*square_, *p) : std::nullopt;
     if (!moved) {
       out.status = blocked;
       return finish();
@@ -311,9 +317,7 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
         if (on.circle == kStart) return;
         const Vec2 c = circles_[static_cast<std::size_t>(on.circle)];
         const double sweep = sweep_between(on.arr_angle, angle_of(dep, c), on.sense);
-        const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
-        for (int i = 1; i < steps; ++i)
-          out.path.push_back(c + r * geom::unit_from_angle(on.arr_angle + on.sense * sweep * i / steps));
+        append_arc_samples(c, r, on.arr_angle, on.sense, sweep, out.path);
         append_drive_corners(c, on.arr_angle, on.sense, sweep, on.arr, dep, out.drive_path);
       };
       for (std::size_t i = 1; i < chain.size(); ++i) {

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "planner/obstacle_map.h"
@@ -48,8 +49,8 @@ class RoundTangentPlanner : public Planner {
   double radius_;
   std::vector<Vec2> circles_;  // distinct corners of the obstacles that are not inside one
   std::vector<unsigned> allowed_;  // per circle, the quadrants a tangent may touch it in (bit q: [q, q + 1] pi/2)
-  ObstacleMap square_;         // the square inflation, for snapping a blocked end (a subset of free space)
-  bool snap_;
+  std::optional<ObstacleMap> square_;  // the square inflation, for snapping a blocked end (a subset
+                                       // of free space); built only when snapping is on
   double build_ms_ = 0;
   std::int64_t segment_tests_ = 0;  // tangents (with the arc before them) checked, all queries
   std::int64_t tangents_kept_ = 0;  // of those, clear
