@@ -82,42 +82,46 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
     in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
     in.inflation_m = 0;
 
-    reset_peak_memory();
-    const double before = current_memory_mb().value_or(0);
-    const auto t0 = Clock::now();
-    auto vg = planner::make_planner("vg", in);
-    const double preprocess_ms = us_since(t0) / 1000;
-    const double preprocess_mb = grown_mb(before);
+    for (const char* method : {"vg", "interval"}) {
+      reset_peak_memory();
+      const double before = current_memory_mb().value_or(0);
+      const auto t0 = Clock::now();
+      auto planner = planner::make_planner(method, in);
+      const double preprocess_ms = us_since(t0) / 1000;
+      const double preprocess_mb = grown_mb(before);
 
-    // Cold: every query once, in the file's order (the lazy graph grows as they come); warm: all
-    // again on the same planner.
-    std::vector<double> cold, warm;
-    reset_peak_memory();
-    const double before_queries = current_memory_mb().value_or(0);
-    for (int pass = 0; pass < 2; ++pass)
-      for (const Query& q : queries) {
-        const auto t = Clock::now();
-        const planner::PlanResult r = vg->plan(worlds::lattice_point(map, q.sx, q.sy), worlds::lattice_point(map, q.gx, q.gy));
-        (pass == 0 ? cold : warm).push_back(us_since(t));
-        if (r.status != planner::PlanStatus::kOk || std::abs(r.length - q.reference) > 5e-6 * q.reference + 1e-5) {
-          std::cerr << "bench: " << name << " query " << q.sx << " " << q.sy << " -> " << q.gx << " " << q.gy << ": length "
-                    << r.length << ", reference " << q.reference << "\n";
-          ++failures;
+      // Cold: every query once, in the file's order (vg's lazy graph grows as they come); warm:
+      // all again on the same planner.
+      std::vector<double> cold, warm;
+      reset_peak_memory();
+      const double before_queries = current_memory_mb().value_or(0);
+      for (int pass = 0; pass < 2; ++pass)
+        for (const Query& q : queries) {
+          const auto t = Clock::now();
+          const planner::PlanResult r =
+              planner->plan(worlds::lattice_point(map, q.sx, q.sy), worlds::lattice_point(map, q.gx, q.gy));
+          (pass == 0 ? cold : warm).push_back(us_since(t));
+          if (r.status != planner::PlanStatus::kOk || std::abs(r.length - q.reference) > 5e-6 * q.reference + 1e-5) {
+            std::cerr << "bench: " << name << " " << method << " query " << q.sx << " " << q.sy << " -> " << q.gx << " "
+                      << q.gy << ": length " << r.length << ", reference " << q.reference << "\n";
+            ++failures;
+          }
         }
-      }
-    const double queries_mb = grown_mb(before_queries);
-    const Spread c = spread(cold), w = spread(warm);
-    const std::string q = std::to_string(queries.size());
-    const std::string pre = name + "/polyanya_recorded/";
-    report("planner", {name + "/vg/preprocess", preprocess_ms, "ms"});
-    report("planner", {name + "/vg/preprocess_peak_memory", preprocess_mb, "MB"});
-    report("planner", {name + "/vg/" + q + "_cold_queries/mean", c.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
-    report("planner", {name + "/vg/" + q + "_cold_queries/median", c.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
-    report("planner", {name + "/vg/" + q + "_cold_queries/p99", c.p99, "us"});
-    report("planner", {name + "/vg/" + q + "_cold_queries/max", c.max, "us"});
-    report("planner", {name + "/vg/" + q + "_warm_queries/mean", w.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
-    report("planner", {name + "/vg/" + q + "_warm_queries/median", w.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
-    report("planner", {name + "/vg/queries_peak_memory_growth", queries_mb, "MB"});
+      const double queries_mb = grown_mb(before_queries);
+      const Spread c = spread(cold), w = spread(warm);
+      const std::string q = std::to_string(queries.size());
+      const std::string pre = name + "/polyanya_recorded/";
+      const std::string at = name + "/" + method + "/";
+      report("planner", {at + "preprocess", preprocess_ms, "ms"});
+      report("planner", {at + "preprocess_peak_memory", preprocess_mb, "MB"});
+      report("planner", {at + q + "_cold_queries/mean", c.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
+      report("planner", {at + q + "_cold_queries/median", c.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
+      report("planner", {at + q + "_cold_queries/p99", c.p99, "us"});
+      report("planner", {at + q + "_cold_queries/max", c.max, "us"});
+      report("planner", {at + q + "_warm_queries/mean", w.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
+      report("planner", {at + q + "_warm_queries/median", w.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
+      report("planner", {at + "queries_peak_memory_growth", queries_mb, "MB"});
+    }
   }
   return failures == 0 ? 0 : 1;
 }
@@ -125,54 +129,67 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
 int run_random_plant_scaling(bool quick) {
   std::vector<int> sizes{1000, 5000, 20000};
   if (!quick) sizes.insert(sizes.end(), {50000, 200000});
-  std::vector<double> log_n, log_ms;
-  std::optional<Measure> smallest;
-  for (int n : sizes) {
-    worlds::RandomPlantOptions o;
-    o.rect_count = n;
-    o.seed = 6000;
-    // world_N1000's floor scaled with the count, so that rectangles keep its size and density.
-    o.width_m = 100.0 * std::sqrt(n / 1000.0);
-    o.height_m = 60.0 * std::sqrt(n / 1000.0);
-    const worlds::World w = worlds::random_plant(o);
-    reset_peak_memory();
-    const double before = current_memory_mb().value_or(0);
-    const auto t0 = Clock::now();
-    auto vg = planner::make_planner("vg", planner::planner_input(w, false));
-    const double build_ms = us_since(t0) / 1000;
-    const planner::PlanResult first = vg->plan(w.start.position(), w.charger.position());
-    const double total_ms = us_since(t0) / 1000;
-    if (first.status != planner::PlanStatus::kOk) {
-      std::cerr << "bench: random plant of " << n << " rectangles: no path from start to charger\n";
-      return 1;
+  // vg first; the interval search's figures are printed against vg's at the same size.
+  std::vector<Measure> vg_first, vg_random;
+  for (const std::string method : {"vg", "interval"}) {
+    std::vector<double> log_n, log_ms;
+    std::optional<Measure> smallest;
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      const int n = sizes[i];
+      worlds::RandomPlantOptions o;
+      o.rect_count = n;
+      o.seed = 6000;
+      // world_N1000's floor scaled with the count, so that rectangles keep its size and density.
+      o.width_m = 100.0 * std::sqrt(n / 1000.0);
+      o.height_m = 60.0 * std::sqrt(n / 1000.0);
+      const worlds::World w = worlds::random_plant(o);
+      reset_peak_memory();
+      const double before = current_memory_mb().value_or(0);
+      const auto t0 = Clock::now();
+      auto planner = planner::make_planner(method, planner::planner_input(w, false));
+      const double build_ms = us_since(t0) / 1000;
+      const planner::PlanResult first = planner->plan(w.start.position(), w.charger.position());
+      const double total_ms = us_since(t0) / 1000;
+      if (first.status != planner::PlanStatus::kOk) {
+        std::cerr << "bench: random plant of " << n << " rectangles: no path from start to charger\n";
+        return 1;
+      }
+      std::mt19937_64 rng(99);
+      std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
+      std::vector<double> random_ms;
+      for (int tries = 0; tries < 200 && random_ms.size() < (quick ? 10u : 20u); ++tries) {
+        const auto t = Clock::now();
+        if (planner->plan({ux(rng), uy(rng)}, {ux(rng), uy(rng)}).status == planner::PlanStatus::kOk)
+          random_ms.push_back(us_since(t) / 1000);
+      }
+      const double memory_mb = grown_mb(before);
+      const std::string name = "plant_" + std::to_string(n) + "/" + method + "/";
+      const Measure first_query{name + "build_plus_first_query", total_ms, "ms"};
+      const Measure random{name + "random_query_mean", random_ms.empty() ? 0 : spread(random_ms).mean, "ms"};
+      report("planner", {name + "build", build_ms, "ms"});
+      if (method == "vg") {
+        report("planner", first_query, smallest);
+        if (!random_ms.empty()) report("planner", random);
+        vg_first.push_back(first_query);
+        vg_random.push_back(random);
+      } else {
+        report("planner", first_query, vg_first[i]);
+        if (!random_ms.empty()) report("planner", random, vg_random[i]);
+      }
+      report("planner", {name + "peak_memory_growth", memory_mb, "MB"});
+      if (!smallest) smallest = first_query;
+      log_n.push_back(std::log(n));
+      log_ms.push_back(std::log(total_ms));
     }
-    std::mt19937_64 rng(99);
-    std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
-    std::vector<double> random_ms;
-    for (int tries = 0; tries < 200 && random_ms.size() < (quick ? 10u : 20u); ++tries) {
-      const auto t = Clock::now();
-      if (vg->plan({ux(rng), uy(rng)}, {ux(rng), uy(rng)}).status == planner::PlanStatus::kOk)
-        random_ms.push_back(us_since(t) / 1000);
-    }
-    const double memory_mb = grown_mb(before);
-    const std::string name = "plant_" + std::to_string(n);
-    const Measure first_query{name + "/vg/build_plus_first_query", total_ms, "ms"};
-    report("planner", {name + "/vg/build", build_ms, "ms"});
-    report("planner", first_query, smallest);
-    if (!random_ms.empty()) report("planner", {name + "/vg/random_query_mean", spread(random_ms).mean, "ms"});
-    report("planner", {name + "/vg/peak_memory_growth", memory_mb, "MB"});
-    if (!smallest) smallest = first_query;
-    log_n.push_back(std::log(n));
-    log_ms.push_back(std::log(total_ms));
+    // Least-squares slope of log time against log count: time ~ N^exponent.
+    const double k = static_cast<double>(log_n.size());
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < log_n.size(); ++i)
+      sx += log_n[i], sy += log_ms[i], sxx += log_n[i] * log_n[i], sxy += log_n[i] * log_ms[i];
+    report("planner", {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) + "/" + method +
+                           "/build_plus_first_query_growth_exponent",
+                       (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
   }
-  // Least-squares slope of log time against log count: time ~ N^exponent.
-  const double k = static_cast<double>(log_n.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < log_n.size(); ++i)
-    sx += log_n[i], sy += log_ms[i], sxx += log_n[i] * log_n[i], sxy += log_n[i] * log_ms[i];
-  report("planner", {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) +
-                         "/vg/build_plus_first_query_growth_exponent",
-                     (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
   return 0;
 }
 

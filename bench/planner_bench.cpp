@@ -81,6 +81,14 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       trad_series{"vg-traditional (all pairs tested)", {}, {}}, grid_series{"grid (0.1 m cells, A*)", {}, {}};
   for (const Named& nw : worlds) {
     const FirstQuery fast = build_and_query("vg", nw.world, reps);
+    // The same question answered by interval search over the free-space mesh.
+    const FirstQuery interval = build_and_query("interval", nw.world, reps);
+    report("planner", {nw.name + "/interval/build_plus_first_query", interval.total_ms, "ms"},
+           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
+    if (std::abs(interval.result.length - fast.result.length) > 1e-9 * (1 + fast.result.length)) {
+      std::cerr << "bench: interval and vg lengths differ on " << nw.name << "\n";
+      return 1;
+    }
     std::optional<FirstQuery> trad;
     if (nw.traditional) trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
     const double obstacles = static_cast<double>(nw.world.obstacles.size());

@@ -43,4 +43,28 @@ std::optional<Vec2> nearest_free_point(const ObstacleMap& map, Vec2 p) {
   return std::nullopt;
 }
 
+// Shared pre-checks; returns false and fills `out` when the query cannot proceed. With
+// snapping on, a blocked end moves to the nearest free point and the result says so.
+bool usable_endpoints(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal, PlanResult& out) {
+  if (!map.point_free(start)) {
+    const auto moved = snap ? nearest_free_point(map, start) : std::nullopt;
+    if (!moved) {
+      out.status = PlanStatus::kStartBlocked;
+      return false;
+    }
+    start = *moved;
+    out.start_snapped = true;
+  }
+  if (!map.point_free(goal)) {
+    const auto moved = snap ? nearest_free_point(map, goal) : std::nullopt;
+    if (!moved) {
+      out.status = PlanStatus::kGoalBlocked;
+      return false;
+    }
+    goal = *moved;
+    out.goal_snapped = true;
+  }
+  return true;
+}
+
 }  // namespace plantsim::planner

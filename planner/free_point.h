@@ -9,10 +9,15 @@
 #include <optional>
 
 #include "planner/obstacle_map.h"
+#include "planner/planner.h"
 
 namespace plantsim::planner {
 
 /// p itself when it is free; none when no free point lies within the map.
 std::optional<Vec2> nearest_free_point(const ObstacleMap& map, Vec2 p);
+
+/// A query's ends checked before a search: false (with `out.status` set) when one is blocked
+/// and may not move; with `snap`, a blocked end moves to its nearest free point and `out` says so.
+bool usable_endpoints(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal, PlanResult& out);
 
 }  // namespace plantsim::planner

@@ -16,31 +16,34 @@
 namespace plantsim {
 namespace {
 
-std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map) {
+std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map, const char* method = "vg") {
   planner::PlannerInput in;
   in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
   in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
   in.inflation_m = 0;
-  return planner::make_planner("vg", in);
+  return planner::make_planner(method, in);
 }
 
+// Both exact planners: the visibility graph and the interval search over the free-space mesh.
 TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
-  auto vg = anyangle_planner(map);
-  std::ifstream ref(test::shared_data("anyangle/arena_anyangle_ref.tsv"));
-  std::string header;
-  std::getline(ref, header);
-  int sx, sy, gx, gy, checked = 0;
-  double expected, octile;
-  while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
-    const auto r = vg->plan(worlds::lattice_point(map, sx, sy), worlds::lattice_point(map, gx, gy));
-    ASSERT_EQ(r.status, planner::PlanStatus::kOk) << sx << " " << sy << " " << gx << " " << gy;
-    EXPECT_LE(std::fabs(r.length - expected), 5e-6 * expected + 1e-5)
-        << sx << " " << sy << " -> " << gx << " " << gy << ": " << r.length << " vs " << expected;
-    EXPECT_LE(r.length, octile + 5e-6 * octile + 1e-5);  // never longer than octile (printed rounded)
-    ++checked;
+  for (const char* method : {"vg", "interval"}) {
+    auto planner = anyangle_planner(map, method);
+    std::ifstream ref(test::shared_data("anyangle/arena_anyangle_ref.tsv"));
+    std::string header;
+    std::getline(ref, header);
+    int sx, sy, gx, gy, checked = 0;
+    double expected, octile;
+    while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
+      const auto r = planner->plan(worlds::lattice_point(map, sx, sy), worlds::lattice_point(map, gx, gy));
+      ASSERT_EQ(r.status, planner::PlanStatus::kOk) << method << " " << sx << " " << sy << " " << gx << " " << gy;
+      EXPECT_LE(std::fabs(r.length - expected), 5e-6 * expected + 1e-5)
+          << method << " " << sx << " " << sy << " -> " << gx << " " << gy << ": " << r.length << " vs " << expected;
+      EXPECT_LE(r.length, octile + 5e-6 * octile + 1e-5);  // never longer than octile (printed rounded)
+      ++checked;
+    }
+    EXPECT_EQ(checked, 160) << method;
   }
-  EXPECT_EQ(checked, 160);
 }
 
 TEST(GridBaseline, ReproducesMovingAIOctileLengthsOnEveryTenthScenario) {

@@ -7,7 +7,9 @@
 //   90, 180 and 270 degrees.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <set>
 #include <tuple>
@@ -92,7 +94,7 @@ TEST(Fixtures, HandWorkedLengthsInFourRotations) {
       PlannerInput in = fx.input;
       in.floor = rotate_quarter(fx.input.floor, k);
       for (Rect& r : in.obstacles) r = rotate_quarter(r, k);
-      for (const char* planner : {"vg", "vg-traditional"}) {
+      for (const char* planner : {"vg", "vg-traditional", "interval"}) {
         auto p = make_planner(planner, in);
         for (const auto& q : fx.queries) {
           const std::string what = fx.name + " rotated " + std::to_string(90 * k) + " by " + planner;
@@ -111,11 +113,15 @@ TEST(Fixtures, CornerTouchingPathNeverPassesThroughTheContactPoint) {
   in.floor = {0, 0, 8, 8};
   in.inflation_m = 0;
   in.obstacles = {{2, 2, 4, 4}, {4, 4, 6, 6}};
-  auto p = make_planner("vg", in);
-  const PlanResult r = p->plan({3, 5}, {5, 3});
-  for (std::size_t i = 1; i < r.path.size(); ++i) {
-    EXPECT_FALSE(geom::in_segment_interior(r.path[i - 1], r.path[i], {4, 4}));
-    EXPECT_FALSE(r.path[i] == (Vec2{4, 4}));
+  for (const char* planner : {"vg", "interval"}) {
+    auto p = make_planner(planner, in);
+    const PlanResult r = p->plan({3, 5}, {5, 3});
+    ASSERT_EQ(r.status, PlanStatus::kOk) << planner;
+    EXPECT_GT(r.length, 2 * std::sqrt(2.0) + 1) << planner;  // around a square, not through the contact
+    for (std::size_t i = 1; i < r.path.size(); ++i) {
+      EXPECT_FALSE(geom::in_segment_interior(r.path[i - 1], r.path[i], {4, 4})) << planner;
+      EXPECT_FALSE(r.path[i] == (Vec2{4, 4})) << planner;
+    }
   }
 }
 
@@ -176,6 +182,83 @@ TEST(RandomWorlds, FastPlannerMatchesBruteForceAndStaysClear) {
   EXPECT_GT(with_path, 800);
   EXPECT_GT(no_path, 5);
   EXPECT_EQ(compared, 2000);
+}
+
+// The interval search over the free-space mesh answers exactly what the visibility graph does:
+// the same status and length on every query, endpoints on edges and corners included, and its
+// path stays clear. Lattice worlds bring shared edges, pinches and collinear corners.
+TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> ux(-1.0, 21.0), uy(-1.0, 15.0);
+  int with_path = 0, no_path = 0;
+  for (int world = 0; world < 2000; ++world) {
+    const bool lattice = world % 2 == 0;
+    const PlannerInput in = random_world(rng, lattice);
+    auto vg = make_planner("vg", in);
+    auto interval = make_planner("interval", in);
+    for (int q = 0; q < 8; ++q) {
+      Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
+      if (lattice && q % 2 == 0) {
+        s = {0.5 * std::round(2 * s.x), 0.5 * std::round(2 * s.y)};
+        g = {0.5 * std::round(2 * g.x), 0.5 * std::round(2 * g.y)};
+      }
+      const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
+      const std::string what = "world " + std::to_string(world) + " query " + std::to_string(q) + " (" +
+                               std::to_string(s.x) + ", " + std::to_string(s.y) + ") -> (" + std::to_string(g.x) +
+                               ", " + std::to_string(g.y) + ")";
+      ASSERT_EQ(to_string(a.status), to_string(b.status)) << what;
+      if (a.status != PlanStatus::kOk) {
+        no_path += a.status == PlanStatus::kNoPath;
+        continue;
+      }
+      ++with_path;
+      ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << what;
+      ASSERT_EQ(a.path.front(), s) << what;
+      ASSERT_EQ(a.path.back(), g) << what;
+      expect_path_clear(a, in, what);
+    }
+  }
+  std::printf("interval against vg: %d queries with a path, %d without\n", with_path, no_path);
+  EXPECT_GT(with_path, 4500);
+  EXPECT_GT(no_path, 30);
+}
+
+// At the scale of a real site (3,000 rectangles, inflated by the robot's clearance, so the mesh's
+// coordinates sit on the inflation lattice), the interval search still answers as the
+// visibility graph does; ends that are NaN, infinite or far off the floor get vg's statuses.
+TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
+  worlds::RandomPlantOptions o;
+  o.rect_count = 3000;
+  o.seed = 31;
+  o.width_m = 100.0 * std::sqrt(3.0);
+  o.height_m = 60.0 * std::sqrt(3.0);
+  const worlds::World w = worlds::random_plant(o);
+  const PlannerInput in = planner_input(w, false);
+  auto vg = make_planner("vg", in);
+  auto interval = make_planner("interval", in);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
+  int with_path = 0;
+  for (int q = 0; q < 150; ++q) {
+    const Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
+    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
+    ASSERT_EQ(to_string(a.status), to_string(b.status)) << "query " << q;
+    if (a.status != PlanStatus::kOk) continue;
+    ++with_path;
+    ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << "query " << q;
+    expect_path_clear(a, in, "query " + std::to_string(q));
+  }
+  EXPECT_GT(with_path, 60);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const Vec2 free_point = w.start.position();
+  for (const auto& [s, g] : std::vector<std::pair<Vec2, Vec2>>{{{nan, 1}, free_point},
+                                                                {free_point, {1, inf}},
+                                                                {{-1e6, 5}, free_point},
+                                                                {free_point, {w.floor.xmax + 1, w.floor.ymax + 1}}}) {
+    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
+    EXPECT_NE(a.status, PlanStatus::kOk);
+    EXPECT_EQ(to_string(a.status), to_string(b.status));
+  }
 }
 
 // Every pair of graph vertices that sees each other and is tangent at both ends must be an

@@ -22,30 +22,6 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Shared pre-checks; returns false and fills `out` when the query cannot proceed. With
-// snapping on, a blocked end moves to the nearest free point and the result says so.
-bool endpoints_usable(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal, PlanResult& out) {
-  if (!map.point_free(start)) {
-    const auto moved = snap ? nearest_free_point(map, start) : std::nullopt;
-    if (!moved) {
-      out.status = PlanStatus::kStartBlocked;
-      return false;
-    }
-    start = *moved;
-    out.start_snapped = true;
-  }
-  if (!map.point_free(goal)) {
-    const auto moved = snap ? nearest_free_point(map, goal) : std::nullopt;
-    if (!moved) {
-      out.status = PlanStatus::kGoalBlocked;
-      return false;
-    }
-    goal = *moved;
-    out.goal_snapped = true;
-  }
-  return true;
-}
-
 void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanResult& out) {
   if (!found.found) {
     out.status = PlanStatus::kNoPath;
@@ -102,7 +78,7 @@ std::unique_ptr<VisibilityGraphPlanner> VisibilityGraphPlanner::with_changes(con
 PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
-  if (endpoints_usable(map_, snap_, start, goal, out)) {
+  if (usable_endpoints(map_, snap_, start, goal, out)) {
     const SearchResult found = lazy_astar(start, goal);
     const auto& vertices = graph_.vertices();
     std::vector<Vec2> points;
@@ -250,7 +226,7 @@ TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& i
 PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
-  if (endpoints_usable(map_, snap_, start, goal, out)) {
+  if (usable_endpoints(map_, snap_, start, goal, out)) {
     const auto n = static_cast<std::int32_t>(corners_.size());
     const std::int32_t s = n, g = n + 1;
     std::vector<Vec2> points = corners_;

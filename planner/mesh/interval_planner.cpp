@@ -1,0 +1,68 @@
+// The interval planner: the obstacle map for the query's ends, the mesh for the search.
+#include "planner/mesh/interval_planner.h"
+
+#include <chrono>
+
+#include "geometry/polyline.h"
+#include "planner/free_point.h"
+#include "planner/inflation.h"
+
+namespace plantsim::planner {
+namespace {
+
+double ms_between(std::chrono::steady_clock::time_point t0, std::chrono::steady_clock::time_point t1) {
+  return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+Vec2 swapped(Vec2 p) { return {p.y, p.x}; }
+Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
+
+}  // namespace
+
+IntervalPlanner::IntervalPlanner(const PlannerInput& input)
+    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      snap_(input.snap_to_free) {
+  const auto t0 = std::chrono::steady_clock::now();
+  mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
+  std::vector<Rect> rects;
+  rects.reserve(map_.rects().size());
+  for (const Rect& r : map_.rects()) rects.push_back(swapped(r));
+  auto across = std::make_unique<FreeSpaceMesh>(rects, swapped(map_.free_floor()));
+  if (across->cells().size() < mesh_->cells().size()) {
+    mesh_ = std::move(across);
+    transposed_ = true;
+  }
+  search_ = std::make_unique<IntervalSearch>(*mesh_);
+  build_ms_ = ms_between(t0, std::chrono::steady_clock::now());
+}
+
+PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PlanResult out;
+  if (usable_endpoints(map_, snap_, start, goal, out)) {
+    const IntervalPath found = transposed_ ? search_->find(swapped(start), swapped(goal)) : search_->find(start, goal);
+    out.status = found.found ? PlanStatus::kOk : PlanStatus::kNoPath;
+    out.path = found.path;
+    if (transposed_)
+      for (Vec2& p : out.path) p = swapped(p);
+    out.length = geom::polyline_length(out.path);
+    out.stats.expanded = found.expanded;
+  }
+  out.stats.build_ms = build_ms_;
+  out.stats.query_ms = ms_between(t0, std::chrono::steady_clock::now());
+  out.stats.vertices = static_cast<std::int64_t>(mesh_->cells().size());
+  out.stats.edges = static_cast<std::int64_t>(mesh_->portals().size());
+  return out;
+}
+
+std::vector<std::pair<Vec2, Vec2>> IntervalPlanner::graph_edges() const {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  out.reserve(mesh_->portals().size());
+  for (const MeshPortal& p : mesh_->portals()) {
+    const Vec2 a{p.x, p.y0}, b{p.x, p.y1};
+    out.push_back(transposed_ ? std::make_pair(swapped(a), swapped(b)) : std::make_pair(a, b));
+  }
+  return out;
+}
+
+}  // namespace plantsim::planner
