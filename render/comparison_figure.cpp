@@ -18,7 +18,8 @@ using planner::PlanStats;
 std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
   const PlanStats &x = a.run.plan_stats, &y = b.run.plan_stats;
   // Only two different graph planners: two ways of travelling on one plan share its numbers.
-  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty() || a.run.planner == b.run.planner)
+  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty() || a.run.planner == b.run.planner ||
+      searches_a_mesh(a.run.planner) || searches_a_mesh(b.run.planner))  // cells and portals are no vertices and edges
     return "";
   const double la = a.run.path_length_m, lb = b.run.path_length_m;
   const double ta = x.build_ms + x.query_ms, tb = y.build_ms + y.query_ms;
@@ -65,7 +66,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
            shape == MarginShape::kRound ? "rounded margin" : "planning margin");
-    listed(draw_graph(c, p.graph_edges), palette::kGraph, "graph");
+    listed(draw_graph(c, p.graph_edges), palette::kGraph, searches_a_mesh(p.run.planner) ? "mesh portals" : "graph");
     for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
     if (p.drove) {
       listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving, "moving (swept)");
@@ -97,7 +98,10 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
                     p.run.driven_length_m, p.run.path_length_m);
     const PlanStats& st = p.run.plan_stats;
     std::string structure;  // what the planner searched, in its own terms
-    if (p.run.planner.rfind("grid", 0) == 0)
+    if (searches_a_mesh(p.run.planner))
+      structure = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals, " +
+                  std::to_string(st.expanded) + " intervals expanded";
+    else if (p.run.planner.rfind("grid", 0) == 0)
       structure = std::to_string(st.vertices) + " free cells, " + std::to_string(st.expanded) + " expanded";
     else if (st.vertices > 0 && !p.graph_edges.empty())
       structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(p.graph_edges.size()) +

@@ -29,6 +29,8 @@ MarginShape margin_shape(const std::string& planner_name) {
   return planner_name == "vg-round" ? MarginShape::kRound : MarginShape::kSquare;
 }
 
+bool searches_a_mesh(const std::string& planner_name) { return planner_name == "interval"; }
+
 bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
   const double inflation = w.planning_inflation_m();
   auto fill_on_floor = [&](const geom::Rect& m) {

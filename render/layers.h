@@ -25,6 +25,9 @@ bool draw_mapped_charger(GlCanvas& c, const worlds::World& w);
 /// The local obstacle layer's occupied cells (merged), as perception remembered them.
 bool draw_layer(GlCanvas& c, const std::vector<geom::Rect>& cells);
 bool draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges);
+/// True for a planner whose "graph" is a mesh of the free floor (planner interval): its
+/// vertices are cells and its edges the portals between them, named so in figures.
+bool searches_a_mesh(const std::string& planner_name);
 void draw_charger(GlCanvas& c, const worlds::World& w);                ///< block and approach axis
 void draw_start(GlCanvas& c, const worlds::World& w);
 /// Routes, and the boxes where given (else where their scripts put them at t).

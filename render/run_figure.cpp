@@ -185,7 +185,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
          shape == MarginShape::kRound ? "rounded margin" : "margin");
   listed(draw_unmapped(c, world), palette::kUnmapped, "not on map");
-  listed(draw_graph(c, o.graph_edges), palette::kGraph, "graph");
+  listed(draw_graph(c, o.graph_edges), palette::kGraph, searches_a_mesh(run.planner) ? "mesh portals" : "graph");
   if (!run.moving_tracks.empty())
     listed(draw_moving_tracks(c, run.moving_tracks), palette::kMoving, "moving (swept)");
   else

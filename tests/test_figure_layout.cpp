@@ -240,6 +240,38 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
   EXPECT_LT(a.edges, b.edges);
 }
 
+// The interval planner searches a mesh, not a graph: its panel names cells, portals and the
+// intervals expanded, its portals are listed as such, and no vertex/edge comparison with vg is
+// printed (cells are not vertices).
+TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  std::vector<ComparisonPanel> panels;
+  for (const char* name : {"vg", "interval"}) {
+    auto p = planner::make_planner(name, planner::planner_input(w, false));
+    const planner::PlanResult plan = p->plan(w.start.position(), w.charger.position());
+    ASSERT_EQ(plan.status, planner::PlanStatus::kOk) << name;
+    sim::EpisodeResult r;
+    r.planner = name;
+    r.plan = plan.path;
+    r.path_length_m = plan.length;
+    r.plan_stats = plan.stats;
+    r.status = "ok";
+    panels.push_back({name, r, p->graph_edges(), false});
+  }
+  FigureLayout layout;
+  const Image img = draw_comparison(w, panels, "vg vs interval", 1800, 640, &layout);
+  keep(img, "layout_vg_interval");
+  test::expect_sound_layout(img, layout, "vg vs interval");
+  EXPECT_TRUE(test::has_legend(layout, "mesh portals"));
+  EXPECT_TRUE(test::has_legend(layout, "graph"));
+  EXPECT_EQ(what_differs(panels[0], panels[1]), "");
+  const auto& st = panels[1].run.plan_stats;
+  const std::string mesh = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals";
+  EXPECT_TRUE(std::any_of(layout.texts.begin(), layout.texts.end(),
+                          [&](const std::string& t) { return t.find(mesh) != std::string::npos; }))
+      << mesh;
+}
+
 // Seed 003 shows its working: the ring search's walks with where each ended, and the letters
 // recorded at the junctions, all listed and none on top of another text.
 TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {

@@ -53,20 +53,25 @@ bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, V
 }
 
 void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
-                          double g) {
+                          std::int32_t root_vertex, double g) {
   // A cell whose only portal is this one leads nowhere unless the goal is in it.
   if (mesh_.portal_count(cell) == 1 && !mesh_.cell_holds(cell, goal_)) return;
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
-  fresh_.push_back({portal, cell, ya, yb, root, parent, g});
+  fresh_.push_back({portal, cell, ya, yb, root, root_vertex, parent, g});
+}
+
+void IntervalSearch::push_open(Entry e) {
+  open_.push_back(e);
+  std::push_heap(open_.begin(), open_.end());
 }
 
 void IntervalSearch::queue_fresh() {
   for (const Node& n : fresh_) {
     nodes_.push_back(n);
     const double x = mesh_.portals()[n.portal].x;
-    open_.push({n.g + heuristic(x, n.ya, n.yb, n.root), n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
+    push_open({n.g + heuristic(x, n.ya, n.yb, n.root), n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
   }
 }
 
@@ -87,8 +92,8 @@ void IntervalSearch::expand_and_queue(std::int32_t index, std::int64_t& expanded
 }
 
 void IntervalSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
-  nodes_.push_back({-1, -1, 0, 0, root, parent, g});
-  open_.push({g, g, static_cast<std::int32_t>(nodes_.size() - 1)});
+  nodes_.push_back({-1, -1, 0, 0, root, -1, parent, g});
+  push_open({g, g, static_cast<std::int32_t>(nodes_.size() - 1)});
 }
 
 // `from` lies on the portal's line but off the portal: the way goes along the line to the
@@ -100,13 +105,14 @@ void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, s
   const double gc = g + dist(from, c);
   if (!corner_improves(2 * portal + end, gc, from, c)) return;
   if (!(nodes_[parent].root == from)) {  // a turn at `from` first: recorded for the path, never searched
-    nodes_.push_back({-2, -1, 0, 0, from, parent, g});
+    nodes_.push_back({-2, -1, 0, 0, from, -1, parent, g});
     parent = static_cast<std::int32_t>(nodes_.size() - 1);
   }
-  push(parent, portal, cell, q.y0, q.y1, c, gc);
+  push(parent, portal, cell, q.y0, q.y1, c, 2 * portal + end, gc);
 }
 
-void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, double g, std::int32_t cell, std::int32_t except) {
+void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
+                                    std::int32_t except) {
   const double eps = mesh_.tolerance();
   if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + dist(root, goal_));
   for (const auto side : {mesh_.left_portals(cell), mesh_.right_portals(cell)})
@@ -114,7 +120,7 @@ void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, double g, st
       if (q == except) continue;
       const MeshPortal& p = mesh_.portals()[q];
       if (std::fabs(root.x - p.x) > eps)
-        push(parent, q, other_side(q, cell), p.y0, p.y1, root, g);
+        push(parent, q, other_side(q, cell), p.y0, p.y1, root, root_vertex, g);
       else if (root.y < p.y0 - eps || root.y > p.y1 + eps)
         push_along_line(parent, root, g, q, other_side(q, cell));
       // else the root is on this portal: the cell beyond holds it too and is searched from it.
@@ -126,7 +132,7 @@ void IntervalSearch::expand(std::int32_t index) {
   const MeshPortal& P = mesh_.portals()[n.portal];
   const double x = P.x, eps = mesh_.tolerance();
   const Vec2 r = n.root;
-  if (std::fabs(r.x - x) <= eps) return expand_in_view(index, r, n.g, n.cell, n.portal);
+  if (std::fabs(r.x - x) <= eps) return expand_in_view(index, r, n.root_vertex, n.g, n.cell, n.portal);
 
   const MeshCell& D = mesh_.cells()[n.cell];
   const bool rightward = x > r.x;
@@ -137,7 +143,7 @@ void IntervalSearch::expand(std::int32_t index) {
   // is reached by bending there.
   const bool turn_low = P.corner0 && n.ya <= P.y0 + eps, turn_high = P.corner1 && n.yb >= P.y1 - eps;
   const Vec2 a{x, P.y0}, b{x, P.y1};
-  const double ga = n.g + dist(r, a), gb = n.g + dist(r, b);
+  const double ga = turn_low ? n.g + dist(r, a) : 0, gb = turn_high ? n.g + dist(r, b) : 0;
   const bool use_low = turn_low && corner_improves(2 * n.portal, ga, r, a);
   const bool use_high = turn_high && corner_improves(2 * n.portal + 1, gb, r, b);
 
@@ -156,9 +162,9 @@ void IntervalSearch::expand(std::int32_t index) {
     const MeshPortal& Q = mesh_.portals()[q];
     const std::int32_t beyond = other_side(q, n.cell);
     const double lo = std::max(Q.y0, ya_far), hi = std::min(Q.y1, yb_far);
-    if (lo <= hi + eps) push(index, q, beyond, lo, hi, r, n.g);
-    if (use_low && ya_far > Q.y0 + eps) push(index, q, beyond, Q.y0, std::min(Q.y1, ya_far), a, ga);
-    if (use_high && yb_far < Q.y1 - eps) push(index, q, beyond, std::max(Q.y0, yb_far), Q.y1, b, gb);
+    if (lo <= hi + eps) push(index, q, beyond, lo, hi, r, n.root_vertex, n.g);
+    if (use_low && ya_far > Q.y0 + eps) push(index, q, beyond, Q.y0, std::min(Q.y1, ya_far), a, 2 * n.portal, ga);
+    if (use_high && yb_far < Q.y1 - eps) push(index, q, beyond, std::max(Q.y0, yb_far), Q.y1, b, 2 * n.portal + 1, gb);
   }
   if (!use_low && !use_high) return;
   // Portals on the near side beyond the corner lie on the corner's own line.
@@ -175,7 +181,7 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
   IntervalPath out;
   goal_ = goal;
   nodes_.clear();
-  open_ = {};
+  open_.clear();
   if (++search_ == 0) {  // the stamps wrapped: forget them all
     std::fill(stamp_.begin(), stamp_.end(), 0);
     search_ = 1;
@@ -188,13 +194,14 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
       out.path = {start, goal};
       return out;
     }
-  nodes_.push_back({-1, -1, 0, 0, start, -1, 0});  // the start, as the first root
+  nodes_.push_back({-1, -1, 0, 0, start, -1, -1, 0});  // the start, as the first root
   fresh_.clear();
-  for (const std::int32_t c : first) expand_in_view(0, start, 0, c, -1);
+  for (const std::int32_t c : first) expand_in_view(0, start, -1, 0, c, -1);
   queue_fresh();
   while (!open_.empty()) {
-    const Entry e = open_.top();
-    open_.pop();
+    std::pop_heap(open_.begin(), open_.end());
+    const Entry e = open_.back();
+    open_.pop_back();
     const Node& n = nodes_[e.node];
     if (n.portal == -1) {
       out.found = true;
@@ -205,6 +212,8 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
       out.generated = static_cast<std::int64_t>(nodes_.size());
       return out;
     }
+    // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
+    if (n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g) continue;
     expand_and_queue(e.node, out.expanded);
   }
   out.generated = static_cast<std::int64_t>(nodes_.size());

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 #include "planner/mesh/free_space_mesh.h"
@@ -34,6 +33,7 @@ class IntervalSearch {
     std::int32_t cell;    ///< the cell the node opens into
     double ya, yb;        ///< the interval on the portal's line
     Vec2 root;
+    std::int32_t root_vertex;  ///< the portal end it is (2 * portal + end), -1 for the start
     std::int32_t parent;
     double g;
   };
@@ -45,9 +45,12 @@ class IntervalSearch {
   void expand(std::int32_t node);
   void expand_and_queue(std::int32_t node, std::int64_t& expanded);
   void queue_fresh();
+  void push_open(Entry e);
   /// The root lies in the closed cell: every portal of it is in view.
-  void expand_in_view(std::int32_t parent, Vec2 root, double g, std::int32_t cell, std::int32_t except);
-  void push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root, double g);
+  void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
+                      std::int32_t except);
+  void push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
+            std::int32_t root_vertex, double g);
   /// A turn at a portal's end, reached from `from`: kept unless that corner was reached more
   /// cheaply before, or as cheaply along the same line.
   bool corner_improves(std::int32_t vertex, double g, Vec2 from, Vec2 corner);
@@ -60,7 +63,7 @@ class IntervalSearch {
   Vec2 goal_;
   std::vector<Node> nodes_;
   std::vector<Node> fresh_;  // the successors of the node being expanded
-  std::priority_queue<Entry> open_;
+  std::vector<Entry> open_;  // a binary heap (std::push_heap), its storage kept across queries
   struct Arrival {
     double g = 0;
     Vec2 dir;  // unit direction it came in along
