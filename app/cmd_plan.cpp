@@ -19,7 +19,8 @@ namespace {
 // One line per scenario: "sx sy gx gy length" (-1 when there is no path). The visibility
 // graph answers any-angle queries between lattice points (cell corners, the Polyanya
 // convention); the grid planner answers octile queries between cell centres (MovingAI's).
-int plan_scenarios(const std::string& map_path, const std::string& scen_path, const std::string& planner_name) {
+int plan_scenarios(const std::string& map_path, const std::string& scen_path, const std::string& planner_name,
+                   int landmarks) {
   const worlds::GridMap map = worlds::load_movingai_map(map_path);
   const auto scenarios = worlds::load_movingai_scenarios(scen_path);
   std::unique_ptr<planner::Planner> vg;
@@ -28,6 +29,7 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path, co
     in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
     in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
     in.inflation_m = 0;
+    in.landmarks = landmarks;
     vg = planner::make_planner(planner_name, in);
   }
   for (const auto& s : scenarios) {
@@ -57,6 +59,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     int corner_steps = 1;
     std::string inflation = "square";
     bool snap = false;
+    int landmarks = 0;
     std::string map, scen, goal;
   };
   auto opt = std::make_shared<Options>();
@@ -77,6 +80,10 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "docked (the charger's docked position; default for world files) or staging (the staging pose "
                   "`run` plans to; default for ROS maps, whose charger stands against a wall inside the planning inflation)")
       ->check(CLI::IsMember({"docked", "staging"}));
+  cmd->add_option("--landmarks", opt->landmarks,
+                  "Planner interval: this many landmarks for a stronger heuristic (the same answers, fewer nodes); "
+                  "each costs one search over the whole map when the planner is built, so it pays on many queries")
+      ->check(CLI::Range(0, 64));
   cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
@@ -84,12 +91,15 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "Inflation in metres (default: robot radius + the world's margin)")
       ->check(CLI::NonNegativeNumber);
   return [opt]() {
-    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner);
+    if (opt->landmarks > 0 && opt->planner != "interval")
+      throw std::invalid_argument("plan: --landmarks is the interval planner's, not " + opt->planner + "'s");
+    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks);
     if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);
     input.corner_steps = opt->corner_steps;
     input.snap_to_free = opt->snap;
+    input.landmarks = opt->landmarks;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     if (opt->inflation == "round") {
       if (opt->planner != "vg" && opt->planner != "vg-round")

@@ -82,11 +82,19 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
     in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
     in.inflation_m = 0;
 
-    for (const char* method : {"vg", "interval"}) {
+    struct Method {
+      const char* label;  // the case name's
+      const char* planner;
+      int landmarks;
+    };
+    for (const Method& m : {Method{"vg", "vg", 0}, Method{"interval", "interval", 0},
+                            Method{"interval_8_landmarks", "interval", 8}}) {
+      const std::string method = m.label;
+      in.landmarks = m.landmarks;
       reset_peak_memory();
       const double before = current_memory_mb().value_or(0);
       const auto t0 = Clock::now();
-      auto planner = planner::make_planner(method, in);
+      auto planner = planner::make_planner(m.planner, in);
       const double preprocess_ms = us_since(t0) / 1000;
       const double preprocess_mb = grown_mb(before);
 

@@ -259,6 +259,26 @@ TEST_F(Cli, PlanWithRoundInflation) {
   EXPECT_NE(o.err.find("must be positive"), std::string::npos) << o.err;
 }
 
+// The interval planner answers as vg does, with or without landmarks; other planners refuse them.
+TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
+  const std::string world = test::source_file("worlds/scenarios/desulfurization_plant.json");
+  Outcome o = run("plan " + world);
+  ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
+  const double vg = nlohmann::json::parse(o.out)["length"].get<double>();
+  for (const std::string extra : {"", " --landmarks 4"}) {
+    o = run("plan " + world + " --planner interval" + extra);
+    ASSERT_EQ(o.exit_code, 0) << extra << o.out << o.err;
+    const auto j = nlohmann::json::parse(o.out);
+    EXPECT_EQ(j["planner"], "interval");
+    EXPECT_NEAR(j["length"].get<double>(), vg, 1e-9 * vg) << extra;
+  }
+  o = run("plan " + world + " --landmarks 4");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("--landmarks is the interval planner's"), std::string::npos) << o.err;
+  o = run("plan " + world + " --planner interval --landmarks 65");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+}
+
 TEST_F(Cli, VersionNamesTheCommit) {
   const Outcome o = run("--version");
   EXPECT_EQ(o.exit_code, 0);

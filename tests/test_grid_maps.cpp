@@ -16,19 +16,22 @@
 namespace plantsim {
 namespace {
 
-std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map, const char* method = "vg") {
+std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map, const char* method = "vg",
+                                                   int landmarks = 0) {
   planner::PlannerInput in;
   in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
   in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
   in.inflation_m = 0;
+  in.landmarks = landmarks;
   return planner::make_planner(method, in);
 }
 
 // Both exact planners: the visibility graph and the interval search over the free-space mesh.
 TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
-  for (const char* method : {"vg", "interval"}) {
-    auto planner = anyangle_planner(map, method);
+  for (const char* method : {"vg", "interval", "interval+landmarks"}) {
+    const bool landmarks = std::string(method) == "interval+landmarks";
+    auto planner = landmarks ? anyangle_planner(map, "interval", 6) : anyangle_planner(map, method);
     std::ifstream ref(test::shared_data("anyangle/arena_anyangle_ref.tsv"));
     std::string header;
     std::getline(ref, header);
@@ -44,6 +47,31 @@ TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
     }
     EXPECT_EQ(checked, 160) << method;
   }
+}
+
+// What the landmarks are for: on a large map (BigGameHunters, every 4th reference query), the
+// same answers from fewer expanded intervals.
+TEST(AnyAngle, LandmarksKeepTheAnswersAndCutTheWork) {
+  const auto map = worlds::load_movingai_map(test::shared_data("anyangle/BigGameHunters.map"));
+  auto plain = anyangle_planner(map, "interval");
+  auto alt = anyangle_planner(map, "interval", 8);
+  std::ifstream ref(test::shared_data("anyangle/BigGameHunters_anyangle_ref.tsv"));
+  std::string header;
+  std::getline(ref, header);
+  int sx, sy, gx, gy, line = 0;
+  double expected, octile;
+  std::int64_t expanded_plain = 0, expanded_alt = 0;
+  while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
+    if (line++ % 4) continue;
+    const geom::Vec2 s = worlds::lattice_point(map, sx, sy), g = worlds::lattice_point(map, gx, gy);
+    const auto a = plain->plan(s, g), b = alt->plan(s, g);
+    ASSERT_EQ(b.status, planner::PlanStatus::kOk) << sx << " " << sy << " " << gx << " " << gy;
+    EXPECT_LE(std::fabs(b.length - expected), 5e-6 * expected + 1e-5) << sx << " " << sy << " -> " << gx << " " << gy;
+    EXPECT_NEAR(a.length, b.length, 1e-9 * (1 + a.length));
+    expanded_plain += a.stats.expanded, expanded_alt += b.stats.expanded;
+  }
+  EXPECT_GT(line, 400);
+  EXPECT_LT(expanded_alt, expanded_plain * 85 / 100) << expanded_alt << " with landmarks, " << expanded_plain << " without";
 }
 
 TEST(GridBaseline, ReproducesMovingAIOctileLengthsOnEveryTenthScenario) {

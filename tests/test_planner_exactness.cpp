@@ -18,6 +18,8 @@
 
 #include "geometry/predicates.h"
 #include "planner/inflation.h"
+#include "planner/mesh/free_space_mesh.h"
+#include "planner/mesh/interval_search.h"
 #include "planner/planner.h"
 #include "planner/vg/vg_planner.h"
 #include "worlds/grid_map.h"
@@ -196,6 +198,9 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
     const PlannerInput in = random_world(rng, lattice);
     auto vg = make_planner("vg", in);
     auto interval = make_planner("interval", in);
+    PlannerInput with_landmarks = in;
+    with_landmarks.landmarks = 1 + world % 4;
+    auto alt = make_planner("interval", with_landmarks);
     for (int q = 0; q < 8; ++q) {
       Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
       if (lattice && q % 2 == 0) {
@@ -213,6 +218,9 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
       }
       ++with_path;
       ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << what;
+      const PlanResult c = alt->plan(s, g);
+      ASSERT_EQ(c.status, PlanStatus::kOk) << what << " with landmarks";
+      ASSERT_NEAR(c.length, b.length, 1e-9 * (1 + b.length)) << what << " with landmarks";
       ASSERT_EQ(a.path.front(), s) << what;
       ASSERT_EQ(a.path.back(), g) << what;
       expect_path_clear(a, in, what);
@@ -236,6 +244,9 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
   const PlannerInput in = planner_input(w, false);
   auto vg = make_planner("vg", in);
   auto interval = make_planner("interval", in);
+  PlannerInput with_landmarks = in;
+  with_landmarks.landmarks = 2;
+  auto alt = make_planner("interval", with_landmarks);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
   int with_path = 0;
@@ -246,6 +257,7 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
     if (a.status != PlanStatus::kOk) continue;
     ++with_path;
     ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << "query " << q;
+    ASSERT_NEAR(alt->plan(s, g).length, b.length, 1e-9 * (1 + b.length)) << "query " << q << " with landmarks";
     expect_path_clear(a, in, "query " + std::to_string(q));
   }
   EXPECT_GT(with_path, 60);
@@ -259,6 +271,37 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
     EXPECT_NE(a.status, PlanStatus::kOk);
     EXPECT_EQ(to_string(a.status), to_string(b.status));
   }
+}
+
+// The landmarks' distances are exact: from a corner of the free floor to every cell corner, the
+// search with no goal measures what vg's shortest path to that corner is.
+TEST(RandomWorlds, LandmarkDistancesAreShortestPathLengths) {
+  std::mt19937_64 rng(808);
+  int checked = 0;
+  for (int world = 0; world < 60; ++world) {
+    const PlannerInput in = random_world(rng, world % 2 == 0);
+    const ObstacleMap map(inflate(in.obstacles, in.inflation_m, in.corner_steps), in.floor, in.inflation_m);
+    const FreeSpaceMesh mesh(map.rects(), map.free_floor());
+    if (mesh.cells().empty()) continue;
+    IntervalSearch search(mesh);
+    const MeshCell& c0 = mesh.cells()[std::uniform_int_distribution<std::size_t>(0, mesh.cells().size() - 1)(rng)];
+    const Vec2 source{c0.xlo, c0.yhi};
+    const std::vector<double> d = search.distances_to_corners(source);
+    auto vg = make_planner("vg", in);
+    for (std::size_t i = 0; i < d.size(); i += 7) {
+      const MeshCell& c = mesh.cells()[i / 4];
+      const Vec2 corner{i % 2 ? c.xhi : c.xlo, i % 4 >= 2 ? c.yhi : c.ylo};
+      const PlanResult r = vg->plan(source, corner);
+      const std::string what = "world " + std::to_string(world) + " corner " + std::to_string(i);
+      if (r.status != PlanStatus::kOk) {
+        EXPECT_FALSE(std::isfinite(d[i])) << what;
+        continue;
+      }
+      ASSERT_NEAR(d[i], r.length, 1e-9 * (1 + r.length)) << what;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 500);
 }
 
 // Every pair of graph vertices that sees each other and is tangent at both ends must be an

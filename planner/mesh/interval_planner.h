@@ -5,6 +5,7 @@
 // scan for the start's visible corners. Why both exist: `vg` is the source document's method
 // and draws its graph; `interval` answers the same question faster on large maps (docs/seeds.md).
 // The mesh is cut along x or along y, whichever gives fewer cells (fewer cells, fewer nodes).
+// With `landmarks` in its input, the search also takes the landmarks' (ALT) lower bound.
 #pragma once
 
 #include <memory>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plantsim::planner {
 namespace {
@@ -54,8 +55,9 @@ bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, V
 
 void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
                           std::int32_t root_vertex, double g) {
-  // A cell whose only portal is this one leads nowhere unless the goal is in it.
-  if (mesh_.portal_count(cell) == 1 && !mesh_.cell_holds(cell, goal_)) return;
+  // A cell whose only portal is this one leads nowhere unless the goal is in it (a search
+  // measuring distances to every corner still enters it).
+  if (!flood_ && mesh_.portal_count(cell) == 1 && !mesh_.cell_holds(cell, goal_)) return;
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
@@ -71,7 +73,8 @@ void IntervalSearch::queue_fresh() {
   for (const Node& n : fresh_) {
     nodes_.push_back(n);
     const double x = mesh_.portals()[n.portal].x;
-    push_open({n.g + heuristic(x, n.ya, n.yb, n.root), n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
+    const double h = flood_ ? 0 : std::max(heuristic(x, n.ya, n.yb, n.root), landmark_bound(n.root_vertex));
+    push_open({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
   }
 }
 
@@ -114,6 +117,7 @@ void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, s
 void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
                                     std::int32_t except) {
   const double eps = mesh_.tolerance();
+  if (flood_) record_corners_in_view(cell, root, g);
   if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + dist(root, goal_));
   for (const auto side : {mesh_.left_portals(cell), mesh_.right_portals(cell)})
     for (const std::int32_t q : side) {
@@ -146,6 +150,7 @@ void IntervalSearch::expand(std::int32_t index) {
   const double ga = turn_low ? n.g + dist(r, a) : 0, gb = turn_high ? n.g + dist(r, b) : 0;
   const bool use_low = turn_low && corner_improves(2 * n.portal, ga, r, a);
   const bool use_high = turn_high && corner_improves(2 * n.portal + 1, gb, r, b);
+  if (flood_) record_corners(n.cell, r, n.g, x, n.ya, n.yb, turn_low, a, ga, turn_high, b, gb);
 
   if (mesh_.cell_holds(n.cell, goal_)) {
     const double sg = (goal_.x - r.x) / (x - r.x);
@@ -177,6 +182,21 @@ void IntervalSearch::expand(std::int32_t index) {
   }
 }
 
+// A* until the goal is popped (its node's index) or the queue runs dry (-1).
+std::int32_t IntervalSearch::run(std::int64_t& expanded) {
+  while (!open_.empty()) {
+    std::pop_heap(open_.begin(), open_.end());
+    const Entry e = open_.back();
+    open_.pop_back();
+    const Node& n = nodes_[e.node];
+    if (n.portal == -1) return e.node;
+    // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
+    if (n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g) continue;
+    expand_and_queue(e.node, expanded);
+  }
+  return -1;
+}
+
 IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
   IntervalPath out;
   goal_ = goal;
@@ -195,29 +215,190 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
       return out;
     }
   nodes_.push_back({-1, -1, 0, 0, start, -1, -1, 0});  // the start, as the first root
+  if (landmarks_ > 0) {
+    // The start is no corner: its distances are bounded from its cell's corners, as the goal's.
+    set_goal_bounds(first.front(), start);
+    const std::vector<double> start_low = goal_low_, start_high = goal_high_;
+    set_goal_bounds(mesh_.cells_at(goal).front(), goal);
+    start_bound_ = 0;
+    for (int k = 0; k < landmarks_; ++k)
+      if (std::isfinite(start_low[k]) && std::isfinite(goal_low_[k]))
+        start_bound_ = std::max({start_bound_, goal_low_[k] - start_high[k], start_low[k] - goal_high_[k]});
+    start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
+  }
   fresh_.clear();
   for (const std::int32_t c : first) expand_in_view(0, start, -1, 0, c, -1);
   queue_fresh();
-  while (!open_.empty()) {
-    std::pop_heap(open_.begin(), open_.end());
-    const Entry e = open_.back();
-    open_.pop_back();
-    const Node& n = nodes_[e.node];
-    if (n.portal == -1) {
-      out.found = true;
-      out.path.push_back(goal);
-      for (std::int32_t i = e.node; i >= 0; i = nodes_[i].parent)
-        if (!(nodes_[i].root == out.path.back())) out.path.push_back(nodes_[i].root);
-      std::reverse(out.path.begin(), out.path.end());
-      out.generated = static_cast<std::int64_t>(nodes_.size());
-      return out;
-    }
-    // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
-    if (n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g) continue;
-    expand_and_queue(e.node, out.expanded);
+  const std::int32_t reached = run(out.expanded);
+  if (reached >= 0) {
+    out.found = true;
+    out.path.push_back(goal);
+    for (std::int32_t i = reached; i >= 0; i = nodes_[i].parent)
+      if (!(nodes_[i].root == out.path.back())) out.path.push_back(nodes_[i].root);
+    std::reverse(out.path.begin(), out.path.end());
   }
   out.generated = static_cast<std::int64_t>(nodes_.size());
   return out;
+}
+
+// Every point where the mesh's cells meet (cell corners and portal ends) gets one number, so
+// that a distance measured through any cell reaches them all.
+void IntervalSearch::number_points() {
+  if (!point_of_corner_.empty()) return;
+  const auto& cells = mesh_.cells();
+  const auto& portals = mesh_.portals();
+  std::vector<std::pair<Vec2, std::size_t>> all;
+  all.reserve(4 * cells.size() + 2 * portals.size());
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const MeshCell& m = cells[c];
+    all.push_back({{m.xlo, m.ylo}, 4 * c}), all.push_back({{m.xhi, m.ylo}, 4 * c + 1});
+    all.push_back({{m.xlo, m.yhi}, 4 * c + 2}), all.push_back({{m.xhi, m.yhi}, 4 * c + 3});
+  }
+  const std::size_t ends = 4 * cells.size();
+  for (std::size_t p = 0; p < portals.size(); ++p) {
+    all.push_back({{portals[p].x, portals[p].y0}, ends + 2 * p});
+    all.push_back({{portals[p].x, portals[p].y1}, ends + 2 * p + 1});
+  }
+  std::sort(all.begin(), all.end(), [](const auto& u, const auto& v) {
+    return u.first.x != v.first.x ? u.first.x < v.first.x : u.first.y < v.first.y;
+  });
+  point_of_corner_.resize(ends);
+  point_of_end_.resize(2 * portals.size());
+  points_ = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (i > 0 && !(all[i].first == all[i - 1].first)) ++points_;
+    const std::size_t slot = all[i].second;
+    (slot < ends ? point_of_corner_[slot] : point_of_end_[slot - ends]) = static_cast<std::int32_t>(points_);
+  }
+  ++points_;
+}
+
+template <typename F>
+void IntervalSearch::for_each_point(std::int32_t cell, F&& f) const {
+  const MeshCell& c = mesh_.cells()[cell];
+  const std::size_t k = 4 * static_cast<std::size_t>(cell);
+  f(Vec2{c.xlo, c.ylo}, point_of_corner_[k]), f(Vec2{c.xhi, c.ylo}, point_of_corner_[k + 1]);
+  f(Vec2{c.xlo, c.yhi}, point_of_corner_[k + 2]), f(Vec2{c.xhi, c.yhi}, point_of_corner_[k + 3]);
+  for (const auto side : {mesh_.left_portals(cell), mesh_.right_portals(cell)})
+    for (const std::int32_t q : side) {
+      const MeshPortal& p = mesh_.portals()[q];
+      f(Vec2{p.x, p.y0}, point_of_end_[2 * q]), f(Vec2{p.x, p.y1}, point_of_end_[2 * q + 1]);
+    }
+}
+
+void IntervalSearch::record_corners_in_view(std::int32_t cell, Vec2 r, double g) {
+  for_each_point(cell, [&](Vec2 p, std::int32_t id) { (*flood_)[id] = std::min((*flood_)[id], g + dist(r, p)); });
+}
+
+// The cell's points within the node's view get the way through it; those behind a corner the
+// interval ends at, the way bending there.
+void IntervalSearch::record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya, double yb, bool low, Vec2 a,
+                                    double ga, bool high, Vec2 b, double gb) {
+  const double eps = mesh_.tolerance();
+  for_each_point(cell, [&](Vec2 p, std::int32_t id) {
+    const double s = (p.x - r.x) / (x - r.x);
+    const double lo = r.y + (ya - r.y) * s, hi = r.y + (yb - r.y) * s;
+    double& d = (*flood_)[id];
+    if (p.y >= lo - eps && p.y <= hi + eps)
+      d = std::min(d, g + dist(r, p));
+    else if (p.y < lo && low)
+      d = std::min(d, ga + dist(a, p));
+    else if (p.y > hi && high)
+      d = std::min(d, gb + dist(b, p));
+  });
+}
+
+std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
+  number_points();
+  std::vector<double> at_point(points_, std::numeric_limits<double>::infinity());
+  std::vector<double> out(4 * mesh_.cells().size(), std::numeric_limits<double>::infinity());
+  const std::vector<std::int32_t> first = mesh_.cells_at(source);
+  if (first.empty()) return out;
+  flood_ = &at_point;
+  goal_ = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};  // in no cell
+  nodes_.clear();
+  open_.clear();
+  if (++search_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    search_ = 1;
+  }
+  nodes_.push_back({-1, -1, 0, 0, source, -1, -1, 0});
+  fresh_.clear();
+  for (const std::int32_t c : first) expand_in_view(0, source, -1, 0, c, -1);
+  queue_fresh();
+  std::int64_t expanded = 0;
+  run(expanded);
+  flood_ = nullptr;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = at_point[point_of_corner_[i]];
+  return out;
+}
+
+void IntervalSearch::add_landmarks(int count) {
+  const auto& cells = mesh_.cells();
+  if (cells.empty() || count <= 0) return;
+  const std::size_t corners = 4 * cells.size();
+  std::vector<std::vector<double>> from;
+  std::vector<double> nearest(corners, std::numeric_limits<double>::infinity());
+  std::size_t next = 0;  // cell 0's lower left corner first
+  for (int k = 0; k < count; ++k) {
+    const MeshCell& c = cells[next / 4];
+    const Vec2 source{next % 2 ? c.xhi : c.xlo, next % 4 >= 2 ? c.yhi : c.ylo};
+    from.push_back(distances_to_corners(source));
+    // The next landmark: the reachable corner farthest from every landmark so far.
+    double far = 0;
+    for (std::size_t i = 0; i < corners; ++i) {
+      nearest[i] = std::min(nearest[i], from.back()[i]);
+      if (std::isfinite(nearest[i]) && nearest[i] > far) far = nearest[i], next = i;
+    }
+    if (far == 0) break;
+  }
+  landmarks_ = static_cast<int>(from.size());
+  corner_distance_.assign(corners * landmarks_, 0);
+  for (std::size_t i = 0; i < corners; ++i)
+    for (int k = 0; k < landmarks_; ++k) corner_distance_[i * landmarks_ + k] = from[k][i];
+  // A portal's end is a corner of the cell on one side or the other (or both).
+  const auto& portals = mesh_.portals();
+  end_distance_.assign(2 * portals.size() * landmarks_, 0);
+  for (std::size_t p = 0; p < portals.size(); ++p) {
+    const MeshPortal& q = portals[p];
+    const std::size_t low = cells[q.left].ylo == q.y0 ? 4 * q.left + 1 : 4 * q.right + 0;
+    const std::size_t high = cells[q.left].yhi == q.y1 ? 4 * q.left + 3 : 4 * q.right + 2;
+    for (int k = 0; k < landmarks_; ++k) {
+      end_distance_[(2 * p) * landmarks_ + k] = corner_distance_[low * landmarks_ + k];
+      end_distance_[(2 * p + 1) * landmarks_ + k] = corner_distance_[high * landmarks_ + k];
+    }
+  }
+  goal_low_.assign(landmarks_, 0);
+  goal_high_.assign(landmarks_, 0);
+}
+
+// Each landmark's distance to the point lies within its distance to a corner of the point's
+// (convex) cell, give or take the straight way between them.
+void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
+  const MeshCell& c = mesh_.cells()[cell];
+  const Vec2 corners[4] = {{c.xlo, c.ylo}, {c.xhi, c.ylo}, {c.xlo, c.yhi}, {c.xhi, c.yhi}};
+  for (int k = 0; k < landmarks_; ++k) {
+    double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 4; ++i) {
+      const double d = corner_distance_[(4 * static_cast<std::size_t>(cell) + i) * landmarks_ + k];
+      if (!std::isfinite(d)) continue;
+      low = std::max(low, d - dist(corners[i], p));
+      high = std::min(high, d + dist(corners[i], p));
+    }
+    goal_low_[k] = low, goal_high_[k] = high;
+  }
+}
+
+// max over landmarks of |d(L, goal) - d(L, root)|, bounded from below; a hair less, so that
+// rounding can never make it overestimate.
+double IntervalSearch::landmark_bound(std::int32_t root_vertex) const {
+  if (landmarks_ == 0) return 0;
+  if (root_vertex < 0) return start_bound_;
+  double h = 0;
+  const double* d = &end_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
+  for (int k = 0; k < landmarks_; ++k)
+    if (std::isfinite(d[k]) && std::isfinite(goal_low_[k])) h = std::max({h, goal_low_[k] - d[k], d[k] - goal_high_[k]});
+  return h > 0 ? h * (1 - 1e-12) - mesh_.tolerance() : 0;
 }
 
 }  // namespace plantsim::planner

@@ -26,6 +26,15 @@ class IntervalSearch {
  public:
   explicit IntervalSearch(const FreeSpaceMesh& mesh);
   IntervalPath find(Vec2 start, Vec2 goal);
+  /// Picks `count` landmarks (each the free corner farthest from those before) and stores the
+  /// exact shortest distance from each to every cell corner. Queries then take as heuristic
+  /// also the landmarks' lower bound |d(L, goal) - d(L, root)| (ALT, Goldberg and Harrelson
+  /// 2005), which sees the detours the straight line does not; answers are unchanged.
+  void add_landmarks(int count);
+  int landmark_count() const { return landmarks_; }
+  /// Exact shortest distance from `source` to every cell corner (4 per cell: x low y low, x high
+  /// y low, x low y high, x high y high), infinity where unreachable: a search with no goal.
+  std::vector<double> distances_to_corners(Vec2 source);
 
  private:
   struct Node {
@@ -57,6 +66,15 @@ class IntervalSearch {
   void push_goal(std::int32_t parent, Vec2 root, double g);
   void push_along_line(std::int32_t parent, Vec2 from, double g, std::int32_t portal, std::int32_t cell);
   double heuristic(double x, double ya, double yb, Vec2 root) const;
+  double landmark_bound(std::int32_t root_vertex) const;
+  void set_goal_bounds(std::int32_t goal_cell, Vec2 goal);
+  void record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya, double yb, bool low, Vec2 a, double ga,
+                      bool high, Vec2 b, double gb);
+  void record_corners_in_view(std::int32_t cell, Vec2 r, double g);
+  void number_points();
+  template <typename F>
+  void for_each_point(std::int32_t cell, F&& f) const;
+  std::int32_t run(std::int64_t& expanded);
   std::int32_t other_side(std::int32_t portal, std::int32_t cell) const;
 
   const FreeSpaceMesh& mesh_;
@@ -71,6 +89,14 @@ class IntervalSearch {
   std::vector<Arrival> best_;          // per portal end (2 * portal + end)
   std::vector<std::uint32_t> stamp_;   // which search best_ holds
   std::uint32_t search_ = 0;
+  // Landmarks: distances from each to every cell corner and portal end, landmark-minor.
+  int landmarks_ = 0;
+  std::vector<double> corner_distance_, end_distance_;
+  std::vector<double> goal_low_, goal_high_;  // bounds on each landmark's distance to the goal
+  double start_bound_ = 0;                    // the landmarks' bound for nodes rooted at the start
+  std::vector<double>* flood_ = nullptr;      // while measuring distances: by point number
+  std::vector<std::int32_t> point_of_corner_, point_of_end_;  // cell corners and portal ends, numbered
+  std::size_t points_ = 0;
 };
 
 }  // namespace plantsim::planner
