@@ -37,8 +37,8 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input)
     transposed_ = true;
   }
   search_ = std::make_unique<IntervalSearch>(*mesh_);
-  // Each landmark costs one search over the whole mesh now (12 ms on ArcticStation, a second on
-  // a 50,000-rectangle plant) and 8 bytes per cell corner and portal end: worth it for many queries.
+  // Each landmark costs one search over the whole mesh now, and 8 bytes per cell corner and
+  // portal end: worth it when the planner answers many queries (bench: ArcticStation).
   search_->add_landmarks(input.landmarks);
   build_ms_ = ms_between(t0, std::chrono::steady_clock::now());
 }
