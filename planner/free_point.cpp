@@ -46,25 +46,18 @@ std::optional<Vec2> nearest_free_point(const ObstacleMap& map, Vec2 p) {
 // Shared pre-checks; returns false and fills `out` when the query cannot proceed. With
 // snapping on, a blocked end moves to the nearest free point and the result says so.
 bool usable_endpoints(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal, PlanResult& out) {
-  if (!map.point_free(start)) {
-    const auto moved = snap ? nearest_free_point(map, start) : std::nullopt;
+  const auto usable = [&](Vec2& p, bool& snapped, PlanStatus blocked) {
+    if (map.point_free(p)) return true;
+    const auto moved = snap ? nearest_free_point(map, p) : std::nullopt;
     if (!moved) {
-      out.status = PlanStatus::kStartBlocked;
+      out.status = blocked;
       return false;
     }
-    start = *moved;
-    out.start_snapped = true;
-  }
-  if (!map.point_free(goal)) {
-    const auto moved = snap ? nearest_free_point(map, goal) : std::nullopt;
-    if (!moved) {
-      out.status = PlanStatus::kGoalBlocked;
-      return false;
-    }
-    goal = *moved;
-    out.goal_snapped = true;
-  }
-  return true;
+    p = *moved;
+    snapped = true;
+    return true;
+  };
+  return usable(start, out.start_snapped, PlanStatus::kStartBlocked) && usable(goal, out.goal_snapped, PlanStatus::kGoalBlocked);
 }
 
 }  // namespace plantsim::planner

@@ -207,15 +207,14 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   for (const std::string& s : layout.texts) EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
 }
 
-// Seed 000's Fig. 5 vs Fig. 6 on its own plant: both graphs exact, so the line under the title
-// says the lengths agree and gives the work each did, as the panels' statistics have it.
-TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+// Each planner's plan from the start to the charger, as a comparison panel with its graph
+// (plans only, nothing driven); a planner that finds no path is left out.
+std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w, const std::vector<std::string>& names) {
   std::vector<ComparisonPanel> panels;
-  for (const char* name : {"vg", "vg-traditional"}) {
+  for (const std::string& name : names) {
     auto p = planner::make_planner(name, planner::planner_input(w, false));
     const planner::PlanResult plan = p->plan(w.start.position(), w.charger.position());
-    ASSERT_EQ(plan.status, planner::PlanStatus::kOk) << name;
+    if (plan.status != planner::PlanStatus::kOk) continue;
     sim::EpisodeResult r;
     r.planner = name;
     r.plan = plan.path;
@@ -224,6 +223,15 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
     r.status = "ok";
     panels.push_back({name, r, p->graph_edges(), false});
   }
+  return panels;
+}
+
+// Seed 000's Fig. 5 vs Fig. 6 on its own plant: both graphs exact, so the line under the title
+// says the lengths agree and gives the work each did, as the panels' statistics have it.
+TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", "vg-traditional"});
+  ASSERT_EQ(panels.size(), 2u);
   FigureLayout layout;
   const Image img = draw_comparison(w, panels, "Fig. 5 vs Fig. 6", 1800, 640, &layout);
   keep(img, "layout_fig5_fig6");
@@ -245,19 +253,8 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
 // printed (cells are not vertices).
 TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
   const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
-  std::vector<ComparisonPanel> panels;
-  for (const char* name : {"vg", "interval"}) {
-    auto p = planner::make_planner(name, planner::planner_input(w, false));
-    const planner::PlanResult plan = p->plan(w.start.position(), w.charger.position());
-    ASSERT_EQ(plan.status, planner::PlanStatus::kOk) << name;
-    sim::EpisodeResult r;
-    r.planner = name;
-    r.plan = plan.path;
-    r.path_length_m = plan.length;
-    r.plan_stats = plan.stats;
-    r.status = "ok";
-    panels.push_back({name, r, p->graph_edges(), false});
-  }
+  const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", "interval"});
+  ASSERT_EQ(panels.size(), 2u);
   FigureLayout layout;
   const Image img = draw_comparison(w, panels, "vg vs interval", 1800, 640, &layout);
   keep(img, "layout_vg_interval");
