@@ -22,11 +22,11 @@ Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
 }  // namespace
 
 IntervalPlanner::IntervalPlanner(const PlannerInput& input)
-    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+    : build_start_(std::chrono::steady_clock::now()),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       snap_(input.snap_to_free) {
   if (input.landmarks < 0 || input.landmarks > 64)
     throw std::invalid_argument("interval: landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
-  const auto t0 = std::chrono::steady_clock::now();
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
   std::vector<Rect> rects;
   rects.reserve(map_.rects().size());
@@ -40,7 +40,7 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input)
   // Each landmark costs one search over the whole mesh now, and 8 bytes per cell corner and
   // portal end: worth it when the planner answers many queries (bench: ArcticStation).
   search_->add_landmarks(input.landmarks);
-  build_ms_ = ms_between(t0, std::chrono::steady_clock::now());
+  build_ms_ = ms_between(build_start_, std::chrono::steady_clock::now());
 }
 
 PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {

@@ -8,6 +8,7 @@
 // With `landmarks` in its input, the search also takes the landmarks' (ALT) lower bound.
 #pragma once
 
+#include <chrono>
 #include <memory>
 
 #include "planner/mesh/free_space_mesh.h"
@@ -27,6 +28,7 @@ class IntervalPlanner : public Planner {
   const FreeSpaceMesh& mesh() const { return *mesh_; }
 
  private:
+  std::chrono::steady_clock::time_point build_start_;  // first member: times the whole build
   ObstacleMap map_;
   std::unique_ptr<FreeSpaceMesh> mesh_;
   std::unique_ptr<IntervalSearch> search_;
