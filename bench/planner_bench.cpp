@@ -78,7 +78,8 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
   const int reps = quick ? 3 : 7;
   std::optional<Measure> previous_first;
   render::ScalingSeries vg_series{"vg (visibility graph, A*)", {}, {}},
-      trad_series{"vg-traditional (all pairs tested)", {}, {}}, grid_series{"grid (0.1 m cells, A*)", {}, {}};
+      trad_series{"vg-traditional (all pairs tested)", {}, {}}, grid_series{"grid (0.1 m cells, A*)", {}, {}},
+      interval_series{"interval (mesh, interval search)", {}, {}};
   for (const Named& nw : worlds) {
     const FirstQuery fast = build_and_query("vg", nw.world, reps);
     // The same question answered by interval search over the free-space mesh.
@@ -94,6 +95,8 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
     const double obstacles = static_cast<double>(nw.world.obstacles.size());
     vg_series.size.push_back(obstacles);
     vg_series.cost.push_back(fast.total_ms);
+    interval_series.size.push_back(obstacles);
+    interval_series.cost.push_back(interval.total_ms);
     if (trad) trad_series.size.push_back(obstacles), trad_series.cost.push_back(trad->total_ms);
     if (!chart_png.empty()) {
       const FirstQuery grid = build_and_query("grid", nw.world, quick ? 1 : 3);
@@ -218,7 +221,7 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
   }
   if (!chart_png.empty()) {
     const render::Image img = render::draw_scaling_chart(
-        {vg_series, trad_series, grid_series}, "Planning time against the number of obstacles",
+        {vg_series, trad_series, grid_series, interval_series}, "Planning time against the number of obstacles",
         "build plus first query, median of " + std::to_string(reps) + " runs (grid and vg-traditional fewer), on world_N10..N1000 "
         "and a random N5000; vg-traditional " + std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
         "obstacles (rectangles)", "time (ms)");

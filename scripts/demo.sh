@@ -97,7 +97,8 @@ done
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
 # Planning time against the number of obstacles (log-log) for the visibility graph, the
-# traditional one and the grid, from the planner benchmark (its JSON lines kept beside it).
+# traditional one, the grid and the interval search, from the planner benchmark (its JSON lines
+# kept beside it).
 mkdir -p results/planner_scaling
 ./build/plantsim bench planner --quick --chart results/planner_scaling/planner_time.png \
   > results/planner_scaling/bench_planner.jsonl || status=1
