@@ -7,6 +7,7 @@
 
 #include "geometry/polyline.h"
 #include "planner/coverage/cell_coverage.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 
@@ -102,7 +103,7 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
     r.note += note;
   }
   r.stats.vertices = m.reachable_cells;
-  r.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.stats.query_ms = util::ms_since(t0);
   last_query_ = {start, goal};
   last_result_ = r;
   return r;

@@ -8,6 +8,7 @@
 
 #include "geometry/polyline.h"
 #include "planner/inflation.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 using geom::polyline_length;
@@ -181,7 +182,7 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
       out.note = note;
     }
   }
-  out.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  out.stats.query_ms = util::ms_since(t0);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include "geometry/polyline.h"
 #include "planner/astar.h"
 #include "planner/inflation.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 namespace {
@@ -71,7 +72,7 @@ GridPlanner::GridPlanner(const PlannerInput& input, double resolution_m) : resol
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) blocked_[static_cast<std::size_t>(y) * width_ + x] = 1;
   }
-  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  build_ms_ = util::ms_since(t0);
 }
 
 std::pair<int, int> GridPlanner::cell_of(Vec2 p) const {
@@ -106,7 +107,7 @@ PlanResult GridPlanner::plan(Vec2 start, Vec2 goal) {
     }
   }
   out.stats.build_ms = build_ms_;
-  out.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  out.stats.query_ms = util::ms_since(t0);
   out.stats.vertices = static_cast<std::int64_t>(blocked_.size());
   return out;
 }

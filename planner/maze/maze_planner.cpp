@@ -7,6 +7,7 @@
 #include <map>
 
 #include "geometry/polyline.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 
@@ -101,7 +102,7 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   }
   r.stats.vertices = static_cast<std::int64_t>(maze_->columns()) * maze_->rows();
   r.stats.edges = maze_->open_edges();
-  r.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.stats.query_ms = util::ms_since(t0);
   return r;
 }
 

@@ -8,13 +8,10 @@
 #include "geometry/polyline.h"
 #include "planner/free_point.h"
 #include "planner/inflation.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 namespace {
-
-double ms_between(std::chrono::steady_clock::time_point t0, std::chrono::steady_clock::time_point t1) {
-  return std::chrono::duration<double, std::milli>(t1 - t0).count();
-}
 
 Vec2 swapped(Vec2 p) { return {p.y, p.x}; }
 Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
@@ -40,7 +37,7 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input)
   // Each landmark costs one search over the whole mesh now, and 8 bytes per cell corner and
   // portal end: worth it when the planner answers many queries (bench: ArcticStation).
   search_->add_landmarks(input.landmarks);
-  build_ms_ = ms_between(build_start_, std::chrono::steady_clock::now());
+  build_ms_ = util::ms_since(build_start_);
 }
 
 PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
@@ -56,7 +53,7 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
     out.stats.expanded = found.expanded;
   }
   out.stats.build_ms = build_ms_;
-  out.stats.query_ms = ms_between(t0, std::chrono::steady_clock::now());
+  out.stats.query_ms = util::ms_since(t0);
   out.stats.vertices = static_cast<std::int64_t>(mesh_->cells().size());
   out.stats.edges = static_cast<std::int64_t>(mesh_->portals().size());
   return out;

@@ -197,8 +197,7 @@ std::int32_t IntervalSearch::run(std::int64_t& expanded) {
   return -1;
 }
 
-IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
-  IntervalPath out;
+void IntervalSearch::begin(Vec2 goal) {
   goal_ = goal;
   nodes_.clear();
   open_.clear();
@@ -206,29 +205,38 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
     std::fill(stamp_.begin(), stamp_.end(), 0);
     search_ = 1;
   }
-  const std::vector<std::int32_t> first = mesh_.cells_at(start);
-  if (first.empty() || mesh_.cells_at(goal).empty()) return out;
+}
+
+void IntervalSearch::queue_source(Vec2 source, const std::vector<std::int32_t>& cells) {
+  nodes_.push_back({-1, -1, 0, 0, source, -1, -1, 0});
+  fresh_.clear();
+  for (const std::int32_t c : cells) expand_in_view(0, source, -1, 0, c, -1);
+  queue_fresh();
+}
+
+IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
+  IntervalPath out;
+  begin(goal);
+  const std::vector<std::int32_t> first = mesh_.cells_at(start), last = mesh_.cells_at(goal);
+  if (first.empty() || last.empty()) return out;
   for (const std::int32_t c : first)
     if (mesh_.cell_holds(c, goal)) {
       out.found = true;
       out.path = {start, goal};
       return out;
     }
-  nodes_.push_back({-1, -1, 0, 0, start, -1, -1, 0});  // the start, as the first root
   if (landmarks_ > 0) {
     // The start is no corner: its distances are bounded from its cell's corners, as the goal's.
     set_goal_bounds(first.front(), start);
     const std::vector<double> start_low = goal_low_, start_high = goal_high_;
-    set_goal_bounds(mesh_.cells_at(goal).front(), goal);
+    set_goal_bounds(last.front(), goal);
     start_bound_ = 0;
     for (int k = 0; k < landmarks_; ++k)
       if (std::isfinite(start_low[k]) && std::isfinite(goal_low_[k]))
         start_bound_ = std::max({start_bound_, goal_low_[k] - start_high[k], start_low[k] - goal_high_[k]});
     start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
   }
-  fresh_.clear();
-  for (const std::int32_t c : first) expand_in_view(0, start, -1, 0, c, -1);
-  queue_fresh();
+  queue_source(start, first);  // the start, as the first root
   const std::int32_t reached = run(out.expanded);
   if (reached >= 0) {
     out.found = true;
@@ -315,17 +323,8 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
   const std::vector<std::int32_t> first = mesh_.cells_at(source);
   if (first.empty()) return out;
   flood_ = &at_point;
-  goal_ = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};  // in no cell
-  nodes_.clear();
-  open_.clear();
-  if (++search_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    search_ = 1;
-  }
-  nodes_.push_back({-1, -1, 0, 0, source, -1, -1, 0});
-  fresh_.clear();
-  for (const std::int32_t c : first) expand_in_view(0, source, -1, 0, c, -1);
-  queue_fresh();
+  begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal in no cell
+  queue_source(source, first);
   std::int64_t expanded = 0;
   run(expanded);
   flood_ = nullptr;

@@ -51,6 +51,10 @@ class IntervalSearch {
     std::int32_t node;
     bool operator<(const Entry& o) const { return f != o.f ? f > o.f : g < o.g; }
   };
+  /// Forgets the last search (its nodes, queue and the corners' best arrivals).
+  void begin(Vec2 goal);
+  /// The first root, with every portal of the cells holding it in view, queued.
+  void queue_source(Vec2 source, const std::vector<std::int32_t>& cells);
   void expand(std::int32_t node);
   void expand_and_queue(std::int32_t node, std::int64_t& expanded);
   void queue_fresh();

@@ -15,6 +15,7 @@
 #include "geometry/predicates.h"
 #include "planner/free_point.h"
 #include "planner/inflation.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 namespace {
@@ -92,10 +93,6 @@ void append_arc_samples(Vec2 c, double r, double from, int sense, double sweep, 
   for (int i = 1; i < steps; ++i) out.push_back(c + r * geom::unit_from_angle(from + sense * sweep * i / steps));
 }
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
@@ -151,7 +148,7 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
     i = j;
   }
   if (input.snap_to_free) square_.emplace(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m);
-  build_ms_ = ms_since(t0);
+  build_ms_ = util::ms_since(t0);
 }
 
 bool RoundTangentPlanner::point_clear(Vec2 p) const {
@@ -202,7 +199,7 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   out.stats.build_ms = build_ms_;
   out.stats.vertices = static_cast<std::int64_t>(circles_.size());
   auto finish = [&] {
-    out.stats.query_ms = ms_since(t0);
+    out.stats.query_ms = util::ms_since(t0);
     out.stats.segment_tests = segment_tests_;
     out.stats.edges = tangents_kept_;
     return out;

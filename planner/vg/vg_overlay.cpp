@@ -7,6 +7,7 @@
 
 #include "geometry/polyline.h"
 #include "geometry/predicates.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 namespace {
@@ -163,7 +164,7 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
       if (out.path.empty() || !(out.path.back() == *it)) out.path.push_back(*it);
     out.length = geom::polyline_length(out.path);
   }
-  out.stats.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  out.stats.query_ms = util::ms_since(t0);
   return out;
 }
 

@@ -14,13 +14,10 @@
 #include "planner/astar.h"
 #include "planner/free_point.h"
 #include "planner/inflation.h"
+#include "util/stopwatch.h"
 
 namespace plantsim::planner {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanResult& out) {
   if (!found.found) {
@@ -43,7 +40,7 @@ VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       graph_(map_),
       snap_(input.snap_to_free) {
-  build_ms_ = ms_since(build_start_);
+  build_ms_ = util::ms_since(build_start_);
 }
 
 VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base,
@@ -53,7 +50,7 @@ VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input, const 
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       graph_(map_, base.graph_, changed),
       snap_(input.snap_to_free) {
-  build_ms_ = ms_since(build_start_);
+  build_ms_ = util::ms_since(build_start_);
 }
 
 std::unique_ptr<VisibilityGraphPlanner> VisibilityGraphPlanner::with_changes(const std::vector<Rect>& added,
@@ -90,7 +87,7 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
     out.stats.expanded = found.stats.expanded;
   }
   out.stats.build_ms = build_ms_;
-  out.stats.query_ms = ms_since(t0);
+  out.stats.query_ms = util::ms_since(t0);
   out.stats.vertices = static_cast<std::int64_t>(graph_.vertices().size());
   out.stats.edges = graph_.edges_found();
   out.stats.segment_tests = graph_.segment_tests();
@@ -220,7 +217,7 @@ TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& i
       adjacency_[b].push_back({static_cast<std::int32_t>(a), len});
       edges_ += 1;
     }
-  build_ms_ = ms_since(t0);
+  build_ms_ = util::ms_since(t0);
 }
 
 PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
@@ -256,7 +253,7 @@ PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
     out.stats.expanded = found.stats.expanded;
   }
   out.stats.build_ms = build_ms_;
-  out.stats.query_ms = ms_since(t0);
+  out.stats.query_ms = util::ms_since(t0);
   out.stats.vertices = static_cast<std::int64_t>(corners_.size());
   out.stats.edges = edges_;
   out.stats.segment_tests = segment_tests_;
