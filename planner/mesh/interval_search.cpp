@@ -9,6 +9,9 @@
 namespace plantsim::planner {
 namespace {
 
+// A landmark's distance not known (the point is unreachable from it).
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
 // Not std::hypot: coordinates are bounded by the world's limits, and hypot's care for overflow
 // cost a third of a query's time.
 double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
@@ -354,7 +357,8 @@ void IntervalSearch::add_landmarks(int count) {
   landmarks_ = static_cast<int>(from.size());
   corner_distance_.assign(corners * landmarks_, 0);
   for (std::size_t i = 0; i < corners; ++i)
-    for (int k = 0; k < landmarks_; ++k) corner_distance_[i * landmarks_ + k] = from[k][i];
+    for (int k = 0; k < landmarks_; ++k)  // unreachable: NaN, which every comparison ignores
+      corner_distance_[i * landmarks_ + k] = std::isfinite(from[k][i]) ? from[k][i] : kUnknown;
   // A portal's end is a corner of the cell on one side or the other (or both).
   const auto& portals = mesh_.portals();
   end_distance_.assign(2 * portals.size() * landmarks_, 0);
@@ -384,7 +388,8 @@ void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
       low = std::max(low, d - dist(corners[i], p));
       high = std::min(high, d + dist(corners[i], p));
     }
-    goal_low_[k] = low, goal_high_[k] = high;
+    const bool known = std::isfinite(low);
+    goal_low_[k] = known ? low : kUnknown, goal_high_[k] = known ? high : kUnknown;
   }
 }
 
@@ -395,8 +400,12 @@ double IntervalSearch::landmark_bound(std::int32_t root_vertex) const {
   if (root_vertex < 0) return start_bound_;
   double h = 0;
   const double* d = &end_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
-  for (int k = 0; k < landmarks_; ++k)
-    if (std::isfinite(d[k]) && std::isfinite(goal_low_[k])) h = std::max({h, goal_low_[k] - d[k], d[k] - goal_high_[k]});
+  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
+  for (int k = 0; k < landmarks_; ++k) {
+    const double a = goal_low_[k] - d[k], b = d[k] - goal_high_[k];
+    h = a > h ? a : h;
+    h = b > h ? b : h;
+  }
   return h > 0 ? h * (1 - 1e-12) - mesh_.tolerance() : 0;
 }
 
