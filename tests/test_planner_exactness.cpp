@@ -12,6 +12,8 @@
 #include <limits>
 #include <random>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +21,7 @@
 #include "geometry/predicates.h"
 #include "planner/inflation.h"
 #include "planner/mesh/free_space_mesh.h"
+#include "planner/mesh/interval_planner.h"
 #include "planner/mesh/interval_search.h"
 #include "planner/planner.h"
 #include "planner/vg/vg_planner.h"
@@ -271,6 +274,29 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
     const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
     EXPECT_NE(a.status, PlanStatus::kOk);
     EXPECT_EQ(to_string(a.status), to_string(b.status));
+  }
+}
+
+// Landmarks on a huge plant would cost minutes and gigabytes at build: a request past the
+// budget (landmarks x mesh cells) is refused with the most this map allows, before any search.
+TEST(RandomWorlds, LandmarksPastTheBudgetAreRefusedWithTheMostThatFit) {
+  worlds::RandomPlantOptions o;
+  o.rect_count = 15000;
+  o.seed = 6000;
+  o.width_m = 100.0 * std::sqrt(15.0);
+  o.height_m = 60.0 * std::sqrt(15.0);
+  PlannerInput in = planner_input(worlds::random_plant(o), false);
+  const std::size_t cells = IntervalPlanner(in).mesh().cells().size();
+  ASSERT_GT(64 * cells, kLandmarkCellBudget) << "the plant must be big enough to pass the budget";
+  in.landmarks = 64;
+  try {
+    IntervalPlanner refused(in);
+    FAIL() << "64 landmarks over " << cells << " cells were accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("landmarks x cells"), std::string::npos) << message;
+    EXPECT_NE(message.find("at most " + std::to_string(kLandmarkCellBudget / cells) + " here"), std::string::npos)
+        << message;
   }
 }
 

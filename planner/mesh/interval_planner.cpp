@@ -35,7 +35,15 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input)
   }
   search_ = std::make_unique<IntervalSearch>(*mesh_);
   // Each landmark costs one search over the whole mesh now, and 8 bytes per cell corner and
-  // portal end: worth it when the planner answers many queries (bench: ArcticStation).
+  // portal end: worth it when the planner answers many queries (bench: ArcticStation). On a
+  // huge plant that is minutes and gigabytes, so the product is bounded and a request past it
+  // refused before any search starts.
+  const std::size_t cells = mesh_->cells().size();
+  if (input.landmarks > 0 && static_cast<std::size_t>(input.landmarks) * cells > kLandmarkCellBudget)
+    throw std::invalid_argument(
+        "interval: " + std::to_string(input.landmarks) + " landmarks over a mesh of " + std::to_string(cells) +
+        " cells: each landmark is a search of the whole mesh at build, and landmarks x cells may not pass " +
+        std::to_string(kLandmarkCellBudget) + " (at most " + std::to_string(kLandmarkCellBudget / cells) + " here)");
   search_->add_landmarks(input.landmarks);
   build_ms_ = util::ms_since(build_start_);
 }

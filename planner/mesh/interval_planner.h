@@ -9,6 +9,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <memory>
 
 #include "planner/mesh/free_space_mesh.h"
@@ -17,6 +18,10 @@
 #include "planner/planner.h"
 
 namespace plantsim::planner {
+
+/// Landmarks times mesh cells: past it a request for landmarks is refused (one landmark over
+/// a 50,000-rectangle plant (150,000 cells) is a search of most of a second and 8 MB of table).
+inline constexpr std::size_t kLandmarkCellBudget = 2'000'000;
 
 class IntervalPlanner : public Planner {
  public:

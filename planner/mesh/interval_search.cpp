@@ -339,26 +339,30 @@ void IntervalSearch::add_landmarks(int count) {
   const auto& cells = mesh_.cells();
   if (cells.empty() || count <= 0) return;
   const std::size_t corners = 4 * cells.size();
-  std::vector<std::vector<double>> from;
+  // Filled landmark by landmark in place (landmark-minor, `count` wide), then closed up if
+  // fewer were found: no second copy of the table is ever held.
+  corner_distance_.assign(corners * count, kUnknown);
   std::vector<double> nearest(corners, std::numeric_limits<double>::infinity());
   std::size_t next = 0;  // cell 0's lower left corner first
-  for (int k = 0; k < count; ++k) {
+  int found = 0;
+  while (found < count) {
     const MeshCell& c = cells[next / 4];
     const Vec2 source{next % 2 ? c.xhi : c.xlo, next % 4 >= 2 ? c.yhi : c.ylo};
-    from.push_back(distances_to_corners(source));
+    const std::vector<double> from = distances_to_corners(source);
     // The next landmark: the reachable corner farthest from every landmark so far.
     double far = 0;
     for (std::size_t i = 0; i < corners; ++i) {
-      nearest[i] = std::min(nearest[i], from.back()[i]);
+      if (std::isfinite(from[i])) corner_distance_[i * count + found] = from[i];  // unreachable: NaN
+      nearest[i] = std::min(nearest[i], from[i]);
       if (std::isfinite(nearest[i]) && nearest[i] > far) far = nearest[i], next = i;
     }
+    ++found;
     if (far == 0) break;
   }
-  landmarks_ = static_cast<int>(from.size());
-  corner_distance_.assign(corners * landmarks_, 0);
+  landmarks_ = found;
   for (std::size_t i = 0; i < corners; ++i)
-    for (int k = 0; k < landmarks_; ++k)  // unreachable: NaN, which every comparison ignores
-      corner_distance_[i * landmarks_ + k] = std::isfinite(from[k][i]) ? from[k][i] : kUnknown;
+    for (int k = 0; k < landmarks_; ++k) corner_distance_[i * landmarks_ + k] = corner_distance_[i * count + k];
+  corner_distance_.resize(corners * landmarks_);
   // A portal's end is a corner of the cell on one side or the other (or both).
   const auto& portals = mesh_.portals();
   end_distance_.assign(2 * portals.size() * landmarks_, 0);
