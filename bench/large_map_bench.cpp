@@ -141,13 +141,7 @@ int run_random_plant_scaling(bool quick) {
   std::vector<Measure> vg_first, vg_random;
   std::vector<worlds::World> plants;  // made once: generating 200,000 rectangles takes minutes
   for (int n : sizes) {
-    worlds::RandomPlantOptions o;
-    o.rect_count = n;
-    o.seed = 6000;
-    // world_N1000's floor scaled with the count, so that rectangles keep its size and density.
-    o.width_m = 100.0 * std::sqrt(n / 1000.0);
-    o.height_m = 60.0 * std::sqrt(n / 1000.0);
-    plants.push_back(worlds::random_plant(o));
+    plants.push_back(worlds::random_plant(worlds::as_dense_as_n1000(n, 6000)));
   }
   for (const std::string method : {"vg", "interval"}) {
     std::vector<double> log_n, log_ms;

@@ -239,12 +239,7 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
 // coordinates sit on the inflation lattice), the interval search still answers as the
 // visibility graph does; ends that are NaN, infinite or far off the floor get vg's statuses.
 TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
-  worlds::RandomPlantOptions o;
-  o.rect_count = 3000;
-  o.seed = 31;
-  o.width_m = 100.0 * std::sqrt(3.0);
-  o.height_m = 60.0 * std::sqrt(3.0);
-  const worlds::World w = worlds::random_plant(o);
+  const worlds::World w = worlds::random_plant(worlds::as_dense_as_n1000(3000, 31));
   const PlannerInput in = planner_input(w, false);
   auto vg = make_planner("vg", in);
   auto interval = make_planner("interval", in);
@@ -280,12 +275,7 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
 // Landmarks on a huge plant would cost minutes and gigabytes at build: a request past the
 // budget (landmarks x mesh cells) is refused with the most this map allows, before any search.
 TEST(RandomWorlds, LandmarksPastTheBudgetAreRefusedWithTheMostThatFit) {
-  worlds::RandomPlantOptions o;
-  o.rect_count = 15000;
-  o.seed = 6000;
-  o.width_m = 100.0 * std::sqrt(15.0);
-  o.height_m = 60.0 * std::sqrt(15.0);
-  PlannerInput in = planner_input(worlds::random_plant(o), false);
+  PlannerInput in = planner_input(worlds::random_plant(worlds::as_dense_as_n1000(15000, 6000)), false);
   const std::size_t cells = IntervalPlanner(in).mesh().cells().size();
   ASSERT_GT(64 * cells, kLandmarkCellBudget) << "the plant must be big enough to pass the budget";
   in.landmarks = 64;

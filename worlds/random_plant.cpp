@@ -11,6 +11,15 @@
 
 namespace plantsim::worlds {
 
+RandomPlantOptions as_dense_as_n1000(int rect_count, std::uint64_t seed) {
+  RandomPlantOptions o;
+  o.rect_count = rect_count;
+  o.seed = seed;
+  o.width_m = 100.0 * std::sqrt(rect_count / 1000.0);
+  o.height_m = 60.0 * std::sqrt(rect_count / 1000.0);
+  return o;
+}
+
 World random_plant(const RandomPlantOptions& o) {
   if (o.rect_count < 0 || !(o.width_m > 2 * o.min_gap_m + 2) || !(o.height_m > 2 * o.min_gap_m + 2) ||
       !(o.coverage > 0 && o.coverage < 0.6) || !(o.min_gap_m >= 0))

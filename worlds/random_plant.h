@@ -21,6 +21,10 @@ struct RandomPlantOptions {
   bool allow_overlap = false; ///< place rectangles freely, so they may overlap and touch
 };
 
+/// A plant of `rect_count` rectangles with world_N1000's size of rectangle and density: its
+/// 100 x 60 m floor grown with the count (benchmarks and tests at scale).
+RandomPlantOptions as_dense_as_n1000(int rect_count, std::uint64_t seed);
+
 /// Throws std::invalid_argument when the options are out of range or the rectangles cannot
 /// be placed.
 World random_plant(const RandomPlantOptions& options);
