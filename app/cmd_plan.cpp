@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "planner/planner.h"
 #include "planner/grid/grid_astar.h"
+#include "planner/mesh/interval_planner.h"
 #include "worlds/grid_map.h"
 #include "worlds/world_loader.h"
 
@@ -82,7 +83,9 @@ std::function<int()> add_plan_command(CLI::App& app) {
       ->check(CLI::IsMember({"docked", "staging"}));
   cmd->add_option("--landmarks", opt->landmarks,
                   "Planner interval: this many landmarks for a stronger heuristic (the same answers, fewer nodes); "
-                  "each costs one search over the whole map when the planner is built, so it pays on many queries")
+                  "each costs one search over the whole map when the planner is built, so it pays on many queries; "
+                  "landmarks x mesh cells may not pass " +
+                      std::to_string(planner::kLandmarkCellBudget) + " (refused, with the most the map allows)")
       ->check(CLI::Range(0, 64));
   cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")

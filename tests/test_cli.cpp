@@ -277,6 +277,14 @@ TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
   EXPECT_NE(o.err.find("--landmarks is the interval planner's"), std::string::npos) << o.err;
   o = run("plan " + world + " --planner interval --landmarks 65");
   EXPECT_EQ(o.exit_code, 2) << o.err;
+  // On a big plant 64 landmarks would be minutes of build: refused, with the most that fit.
+  o = run("generate --count 15000 --seed 6000 --width 387 --height 232 --out big.json", 120);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  o = run("plan big.json --planner interval --landmarks 64", 120);
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  EXPECT_NE(o.err.find("landmarks x cells may not pass"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("(at most "), std::string::npos) << o.err;
 }
 
 TEST_F(Cli, VersionNamesTheCommit) {
