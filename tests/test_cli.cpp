@@ -277,7 +277,7 @@ TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
   EXPECT_NE(o.err.find("--landmarks is the interval planner's"), std::string::npos) << o.err;
   o = run("plan " + world + " --planner interval --landmarks 65");
   EXPECT_EQ(o.exit_code, 2) << o.err;
-  // On a big plant 64 landmarks would be minutes of build: refused, with the most that fit.
+  // Each landmark is a search of the whole mesh: past the budget, refused with the most that fit.
   o = run("generate --count 15000 --seed 6000 --width 387 --height 232 --out big.json", 120);
   ASSERT_EQ(o.exit_code, 0) << o.err;
   o = run("plan big.json --planner interval --landmarks 64", 120);
