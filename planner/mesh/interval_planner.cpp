@@ -2,7 +2,6 @@
 #include "planner/mesh/interval_planner.h"
 
 #include <chrono>
-#include <future>
 #include <stdexcept>
 #include <string>
 
@@ -25,16 +24,11 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input)
       snap_(input.snap_to_free) {
   if (input.landmarks < 0 || input.landmarks > 64)
     throw std::invalid_argument("interval: landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
-  // The two sweeps share nothing: the one across runs beside this one (on the same thread
-  // if no other can be started).
-  auto sweep_across = std::async(std::launch::async | std::launch::deferred, [this] {
-    std::vector<Rect> rects;
-    rects.reserve(map_.rects().size());
-    for (const Rect& r : map_.rects()) rects.push_back(swapped(r));
-    return std::make_unique<FreeSpaceMesh>(rects, swapped(map_.free_floor()));
-  });
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
-  std::unique_ptr<FreeSpaceMesh> across = sweep_across.get();
+  std::vector<Rect> rects;
+  rects.reserve(map_.rects().size());
+  for (const Rect& r : map_.rects()) rects.push_back(swapped(r));
+  auto across = std::make_unique<FreeSpaceMesh>(rects, swapped(map_.free_floor()));
   if (across->cells().size() < mesh_->cells().size()) {
     mesh_ = std::move(across);
     transposed_ = true;
