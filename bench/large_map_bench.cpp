@@ -88,7 +88,7 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       int landmarks;
     };
     for (const Method& m : {Method{"vg", "vg", 0}, Method{"interval", "interval", 0},
-                            Method{"interval_16_landmarks", "interval", 16}}) {
+                            Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0}}) {
       const std::string method = m.label;
       in.landmarks = m.landmarks;
       reset_peak_memory();
@@ -101,6 +101,7 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       // Cold: every query once, in the file's order (vg's lazy graph grows as they come); warm:
       // all again on the same planner.
       std::vector<double> cold, warm;
+      double expanded = 0;  // per query, cold (vg: vertices; the meshes: intervals)
       reset_peak_memory();
       const double before_queries = current_memory_mb().value_or(0);
       for (int pass = 0; pass < 2; ++pass)
@@ -109,6 +110,7 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
           const planner::PlanResult r =
               planner->plan(worlds::lattice_point(map, q.sx, q.sy), worlds::lattice_point(map, q.gx, q.gy));
           (pass == 0 ? cold : warm).push_back(us_since(t));
+          if (pass == 0) expanded += static_cast<double>(r.stats.expanded) / static_cast<double>(queries.size());
           if (r.status != planner::PlanStatus::kOk || std::abs(r.length - q.reference) > 5e-6 * q.reference + 1e-5) {
             std::cerr << "bench: " << name << " " << method << " query " << q.sx << " " << q.sy << " -> " << q.gx << " "
                       << q.gy << ": length " << r.length << ", reference " << q.reference << "\n";
@@ -129,6 +131,7 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       report("planner", {at + q + "_warm_queries/mean", w.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
       report("planner", {at + q + "_warm_queries/median", w.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
       report("planner", {at + "queries_peak_memory_growth", queries_mb, "MB"});
+      report("planner", {at + q + "_cold_queries/expanded_mean", expanded, "nodes"});
     }
   }
   return failures == 0 ? 0 : 1;
@@ -137,13 +140,13 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
 int run_random_plant_scaling(bool quick) {
   std::vector<int> sizes{1000, 5000, 20000};
   if (!quick) sizes.insert(sizes.end(), {50000, 200000});
-  // vg first; the interval search's figures are printed against vg's at the same size.
+  // vg first; the mesh searches' figures are printed against vg's at the same size.
   std::vector<Measure> vg_first, vg_random;
   std::vector<worlds::World> plants;  // made once: generating 200,000 rectangles takes minutes
   for (int n : sizes) {
     plants.push_back(worlds::random_plant(worlds::as_dense_as_n1000(n, 6000)));
   }
-  for (const std::string method : {"vg", "interval"}) {
+  for (const std::string method : {"vg", "interval", "polyanya"}) {
     std::vector<double> log_n, log_ms;
     std::optional<Measure> smallest;
     for (std::size_t i = 0; i < sizes.size(); ++i) {

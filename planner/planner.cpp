@@ -36,7 +36,7 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
 }
 
 std::vector<std::string> planner_names() {
-  return {"vg",        "vg-traditional",    "vg-round",    "interval",   "grid",               "gcr",                "gcr-shortcut",
+  return {"vg",        "vg-traditional",    "vg-round",    "interval",   "polyanya",   "grid",               "gcr",                "gcr-shortcut",
           "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
           "maze-left-resimplified", "maze-right-resimplified",
           "coverage",  "coverage-chnn",     "coverage-potts",     "coverage-exact",
@@ -48,6 +48,7 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
   if (name == "vg-round") return std::make_unique<RoundTangentPlanner>(input);
   if (name == "interval") return std::make_unique<IntervalPlanner>(input);
+  if (name == "polyanya") return std::make_unique<IntervalPlanner>(input, MeshKind::kConvexPolygons);
   if (name == "grid") return std::make_unique<GridPlanner>(input, input.grid_resolution_m);
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
   if (name == "gcr-shortcut") return std::make_unique<GcrPlanner>(input, true);

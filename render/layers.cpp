@@ -29,7 +29,7 @@ MarginShape margin_shape(const std::string& planner_name) {
   return planner_name == "vg-round" ? MarginShape::kRound : MarginShape::kSquare;
 }
 
-bool searches_a_mesh(const std::string& planner_name) { return planner_name == "interval"; }
+bool searches_a_mesh(const std::string& planner_name) { return planner_name == "interval" || planner_name == "polyanya"; }
 
 bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
   const double inflation = w.planning_inflation_m();

@@ -10,7 +10,7 @@ packages=(
   libbox2d-dev libeigen3-dev libosmesa6-dev libpng-dev
   libgtest-dev libgmock-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
-  libfreetype-dev fonts-dejavu-core libglpk-dev
+  libfreetype-dev fonts-dejavu-core libglpk-dev libcgal-dev
 )
 if [ "${1:-}" = test ]; then
   packages+=(slurm-wlm munge clang libclang-rt-14-dev chromium)

@@ -99,7 +99,7 @@ TEST(Fixtures, HandWorkedLengthsInFourRotations) {
       PlannerInput in = fx.input;
       in.floor = rotate_quarter(fx.input.floor, k);
       for (Rect& r : in.obstacles) r = rotate_quarter(r, k);
-      for (const char* planner : {"vg", "vg-traditional", "interval"}) {
+      for (const char* planner : {"vg", "vg-traditional", "interval", "polyanya"}) {
         auto p = make_planner(planner, in);
         for (const auto& q : fx.queries) {
           const std::string what = fx.name + " rotated " + std::to_string(90 * k) + " by " + planner;
@@ -118,7 +118,7 @@ TEST(Fixtures, CornerTouchingPathNeverPassesThroughTheContactPoint) {
   in.floor = {0, 0, 8, 8};
   in.inflation_m = 0;
   in.obstacles = {{2, 2, 4, 4}, {4, 4, 6, 6}};
-  for (const char* planner : {"vg", "interval"}) {
+  for (const char* planner : {"vg", "interval", "polyanya"}) {
     auto p = make_planner(planner, in);
     const PlanResult r = p->plan({3, 5}, {5, 3});
     ASSERT_EQ(r.status, PlanStatus::kOk) << planner;
@@ -204,6 +204,7 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
     PlannerInput with_landmarks = in;
     with_landmarks.landmarks = 1 + world % 4;
     auto alt = make_planner("interval", with_landmarks);
+    auto polyanya = make_planner("polyanya", in);
     for (int q = 0; q < 8; ++q) {
       Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
       if (lattice && q % 2 == 0) {
@@ -218,6 +219,8 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
       // Landmarks see only their own part of a walled world: elsewhere they must know nothing.
       const PlanResult c = alt->plan(s, g);
       ASSERT_EQ(to_string(c.status), to_string(b.status)) << what << " with landmarks";
+      const PlanResult d = polyanya->plan(s, g);
+      ASSERT_EQ(to_string(d.status), to_string(b.status)) << what << " polyanya";
       if (a.status != PlanStatus::kOk) {
         no_path += a.status == PlanStatus::kNoPath;
         continue;
@@ -225,12 +228,16 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
       ++with_path;
       ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << what;
       ASSERT_NEAR(c.length, b.length, 1e-9 * (1 + b.length)) << what << " with landmarks";
+      ASSERT_NEAR(d.length, b.length, 1e-9 * (1 + b.length)) << what << " polyanya";
       ASSERT_EQ(a.path.front(), s) << what;
       ASSERT_EQ(a.path.back(), g) << what;
+      ASSERT_EQ(d.path.front(), s) << what << " polyanya";
+      ASSERT_EQ(d.path.back(), g) << what << " polyanya";
       expect_path_clear(a, in, what);
+      expect_path_clear(d, in, what + " polyanya");
     }
   }
-  std::printf("interval against vg: %d queries with a path, %d without\n", with_path, no_path);
+  std::printf("interval and polyanya against vg: %d queries with a path, %d without\n", with_path, no_path);
   EXPECT_GT(with_path, 4500);
   EXPECT_GT(no_path, 30);
 }
@@ -246,16 +253,20 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
   PlannerInput with_landmarks = in;
   with_landmarks.landmarks = 2;
   auto alt = make_planner("interval", with_landmarks);
+  auto polyanya = make_planner("polyanya", in);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
   int with_path = 0;
   for (int q = 0; q < 150; ++q) {
     const Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
-    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
+    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g), d = polyanya->plan(s, g);
     ASSERT_EQ(to_string(a.status), to_string(b.status)) << "query " << q;
+    ASSERT_EQ(to_string(d.status), to_string(b.status)) << "query " << q << " polyanya";
     if (a.status != PlanStatus::kOk) continue;
     ++with_path;
     ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << "query " << q;
+    ASSERT_NEAR(d.length, b.length, 1e-9 * (1 + b.length)) << "query " << q << " polyanya";
+    expect_path_clear(d, in, "query " + std::to_string(q) + " polyanya");
     ASSERT_NEAR(alt->plan(s, g).length, b.length, 1e-9 * (1 + b.length)) << "query " << q << " with landmarks";
     expect_path_clear(a, in, "query " + std::to_string(q));
   }
@@ -266,9 +277,10 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
                                                                 {free_point, {1, inf}},
                                                                 {{-1e6, 5}, free_point},
                                                                 {free_point, {w.floor.xmax + 1, w.floor.ymax + 1}}}) {
-    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
+    const PlanResult a = interval->plan(s, g), b = vg->plan(s, g), d = polyanya->plan(s, g);
     EXPECT_NE(a.status, PlanStatus::kOk);
     EXPECT_EQ(to_string(a.status), to_string(b.status));
+    EXPECT_EQ(to_string(d.status), to_string(b.status));
   }
 }
 

@@ -191,40 +191,10 @@ void FreeSpaceMesh::index_portals() {
 }
 
 void FreeSpaceMesh::index_cells() {
-  if (cells_.empty()) return;
-  double x0 = cells_[0].xlo, y0 = cells_[0].ylo, x1 = cells_[0].xhi, y1 = cells_[0].yhi;
-  for (const MeshCell& c : cells_) {
-    x0 = std::min(x0, c.xlo), y0 = std::min(y0, c.ylo), x1 = std::max(x1, c.xhi), y1 = std::max(y1, c.yhi);
-  }
-  // About one bucket per cell, over the floor's bounding box.
-  const double w = x1 - x0, h = y1 - y0;
-  bucket_ = std::max(std::sqrt(w * h / static_cast<double>(cells_.size())), 1e-6 * std::max(w, h));
-  nbx_ = std::clamp(static_cast<int>(std::ceil(w / bucket_)), 1, 4096);
-  nby_ = std::clamp(static_cast<int>(std::ceil(h / bucket_)), 1, 4096);
-  bucket_ = std::max({bucket_, w / nbx_, h / nby_});
-  bx0_ = x0, by0_ = y0;
-  const auto bx = [&](double x) { return std::clamp(static_cast<int>((x - bx0_) / bucket_), 0, nbx_ - 1); };
-  const auto by = [&](double y) { return std::clamp(static_cast<int>((y - by0_) / bucket_), 0, nby_ - 1); };
-  std::vector<std::int32_t> count(static_cast<std::size_t>(nbx_) * nby_ + 1, 0);
-  for (int pass = 0; pass < 2; ++pass) {
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
-      const MeshCell& c = cells_[i];
-      for (int v = by(c.ylo - eps_); v <= by(c.yhi + eps_); ++v)
-        for (int u = bx(c.xlo - eps_); u <= bx(c.xhi + eps_); ++u) {
-          const std::size_t b = static_cast<std::size_t>(v) * nbx_ + u;
-          if (pass == 0)
-            ++count[b + 1];
-          else
-            bucket_index_[bucket_start_[b] + count[b]++] = static_cast<std::int32_t>(i);
-        }
-    }
-    if (pass == 0) {
-      for (std::size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
-      bucket_start_ = count;
-      bucket_index_.resize(static_cast<std::size_t>(count.back()));
-      std::fill(count.begin(), count.end(), 0);
-    }
-  }
+  std::vector<BoxBuckets::Box> boxes;
+  boxes.reserve(cells_.size());
+  for (const MeshCell& c : cells_) boxes.push_back({c.xlo, c.ylo, c.xhi, c.yhi});
+  buckets_ = BoxBuckets(boxes, eps_);
 }
 
 bool FreeSpaceMesh::cell_holds(std::int32_t cell, Vec2 p) const {
@@ -234,12 +204,8 @@ bool FreeSpaceMesh::cell_holds(std::int32_t cell, Vec2 p) const {
 
 std::vector<std::int32_t> FreeSpaceMesh::cells_at(Vec2 p) const {
   std::vector<std::int32_t> out;
-  if (cells_.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) return out;
-  const int u = std::clamp(static_cast<int>((p.x - bx0_) / bucket_), 0, nbx_ - 1);
-  const int v = std::clamp(static_cast<int>((p.y - by0_) / bucket_), 0, nby_ - 1);
-  const std::size_t b = static_cast<std::size_t>(v) * nbx_ + u;
-  for (std::int32_t i = bucket_start_[b]; i < bucket_start_[b + 1]; ++i)
-    if (cell_holds(bucket_index_[i], p)) out.push_back(bucket_index_[i]);
+  for (const std::int32_t c : buckets_.near(p))
+    if (cell_holds(c, p)) out.push_back(c);
   return out;
 }
 

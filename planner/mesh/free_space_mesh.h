@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "planner/mesh/box_buckets.h"
 
 namespace plantsim::planner {
 
@@ -67,10 +68,7 @@ class FreeSpaceMesh {
   std::vector<MeshCell> cells_;
   std::vector<MeshPortal> portals_;
   std::vector<std::int32_t> left_index_, left_start_, right_index_, right_start_;
-  // Point location: a uniform grid of buckets listing the cells that overlap them.
-  double bx0_ = 0, by0_ = 0, bucket_ = 1;
-  int nbx_ = 1, nby_ = 1;
-  std::vector<std::int32_t> bucket_index_, bucket_start_;
+  BoxBuckets buckets_;  // point location
   double eps_ = 1e-13;
 };
 

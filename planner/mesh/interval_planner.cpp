@@ -18,13 +18,21 @@ Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
 
 }  // namespace
 
-IntervalPlanner::IntervalPlanner(const PlannerInput& input)
+IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     : build_start_(std::chrono::steady_clock::now()),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       snap_(input.snap_to_free) {
   if (input.landmarks < 0 || input.landmarks > 64)
     throw std::invalid_argument("interval: landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
+  if (kind == MeshKind::kConvexPolygons) {
+    // Both sweeps have the same walls, so the polygons do not depend on which one is cut.
+    if (input.landmarks != 0) throw std::invalid_argument("polyanya: landmarks are the interval planner's (--planner interval)");
+    convex_ = std::make_unique<ConvexMesh>(*mesh_);
+    polygon_search_ = std::make_unique<PolygonSearch>(*convex_);
+    build_ms_ = util::ms_since(build_start_);
+    return;
+  }
   std::vector<Rect> rects;
   rects.reserve(map_.rects().size());
   for (const Rect& r : map_.rects()) rects.push_back(swapped(r));
@@ -52,7 +60,8 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
   if (usable_endpoints(map_, snap_, start, goal, out)) {
-    const IntervalPath found = transposed_ ? search_->find(swapped(start), swapped(goal)) : search_->find(start, goal);
+    const Vec2 from = transposed_ ? swapped(start) : start, to = transposed_ ? swapped(goal) : goal;
+    const IntervalPath found = convex_ ? polygon_search_->find(from, to) : search_->find(from, to);
     out.status = found.found ? PlanStatus::kOk : PlanStatus::kNoPath;
     out.path = found.path;
     if (transposed_)
@@ -62,18 +71,23 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
   }
   out.stats.build_ms = build_ms_;
   out.stats.query_ms = util::ms_since(t0);
-  out.stats.vertices = static_cast<std::int64_t>(mesh_->cells().size());
-  out.stats.edges = static_cast<std::int64_t>(mesh_->portals().size());
+  out.stats.vertices = convex_ ? convex_->polygon_count() : static_cast<std::int64_t>(mesh_->cells().size());
+  out.stats.edges = convex_ ? convex_->portal_count() : static_cast<std::int64_t>(mesh_->portals().size());
   return out;
 }
 
 std::vector<std::pair<Vec2, Vec2>> IntervalPlanner::graph_edges() const {
   std::vector<std::pair<Vec2, Vec2>> out;
-  out.reserve(mesh_->portals().size());
-  for (const MeshPortal& p : mesh_->portals()) {
-    const Vec2 a{p.x, p.y0}, b{p.x, p.y1};
-    out.push_back(transposed_ ? std::make_pair(swapped(a), swapped(b)) : std::make_pair(a, b));
+  const auto add = [&](Vec2 a, Vec2 b) { out.push_back(transposed_ ? std::make_pair(swapped(a), swapped(b)) : std::make_pair(a, b)); };
+  if (convex_) {
+    for (std::int32_t p = 0; p < convex_->polygon_count(); ++p)
+      for (std::int32_t k = 0; k < convex_->size(p); ++k)
+        if (convex_->neighbour(p, k) > p)  // each shared edge once
+          add(convex_->points()[convex_->vertex(p, k)], convex_->points()[convex_->vertex(p, k + 1)]);
+    return out;
   }
+  out.reserve(mesh_->portals().size());
+  for (const MeshPortal& p : mesh_->portals()) add({p.x, p.y0}, {p.x, p.y1});
   return out;
 }
 

@@ -6,6 +6,8 @@
 // and draws its graph; `interval` answers the same question faster on large maps (docs/seeds.md).
 // The mesh is cut along x or along y, whichever gives fewer cells (fewer cells, fewer nodes).
 // With `landmarks` in its input, the search also takes the landmarks' (ALT) lower bound.
+// `polyanya` is the same planner over convex polygons instead (mesh/convex_mesh.h): a path
+// crosses fewer cells, each costs more to expand (docs/seeds.md has the measurements).
 #pragma once
 
 #include <chrono>
@@ -14,6 +16,7 @@
 
 #include "planner/mesh/free_space_mesh.h"
 #include "planner/mesh/interval_search.h"
+#include "planner/mesh/polygon_search.h"
 #include "planner/obstacle_map.h"
 #include "planner/planner.h"
 
@@ -23,12 +26,14 @@ namespace plantsim::planner {
 /// a 50,000-rectangle plant (150,000 cells) is a search of most of a second and 8 MB of table).
 inline constexpr std::size_t kLandmarkCellBudget = 2'000'000;
 
+enum class MeshKind { kRectangles, kConvexPolygons };
+
 class IntervalPlanner : public Planner {
  public:
-  explicit IntervalPlanner(const PlannerInput& input);
-  std::string name() const override { return "interval"; }
+  explicit IntervalPlanner(const PlannerInput& input, MeshKind kind = MeshKind::kRectangles);
+  std::string name() const override { return convex_ ? "polyanya" : "interval"; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
-  /// The mesh's portals: where paths may pass from one free cell to the next.
+  /// The mesh's portals: where paths may pass from one free cell (or polygon) to the next.
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;
   const FreeSpaceMesh& mesh() const { return *mesh_; }
 
@@ -37,6 +42,8 @@ class IntervalPlanner : public Planner {
   ObstacleMap map_;
   std::unique_ptr<FreeSpaceMesh> mesh_;
   std::unique_ptr<IntervalSearch> search_;
+  std::unique_ptr<ConvexMesh> convex_;  // polyanya: the rectangles' floor as convex polygons
+  std::unique_ptr<PolygonSearch> polygon_search_;
   bool transposed_ = false;  // the mesh is of the world with x and y swapped
   bool snap_ = false;
   double build_ms_ = 0;

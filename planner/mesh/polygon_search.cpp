@@ -1,0 +1,247 @@
+// Polyanya over the convex mesh. Sides are measured as signed distances (cross products over a
+// unit direction), so the one tolerance of the mesh, a length, decides every "on the line".
+#include "planner/mesh/polygon_search.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plantsim::planner {
+using geom::cross;
+using geom::dot;
+
+namespace {
+
+double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
+// A range of an edge's parameter t in [0, 1]; empty when lo > hi.
+struct Range {
+  double lo, hi;
+  Range meet(Range o) const { return {std::max(lo, o.lo), std::min(hi, o.hi)}; }
+};
+
+// Where fa + t (fb - fa) >= -eps: a side of a line, measured at the edge's two ends.
+Range nonnegative(double fa, double fb, double eps) {
+  if (fa >= -eps && fb >= -eps) return {0, 1};
+  if (fa < -eps && fb < -eps) return {1, 0};
+  const double t = fa / (fa - fb);
+  return fa < -eps ? Range{t, 1} : Range{0, t};
+}
+
+Vec2 along(Vec2 a, Vec2 b, double t) { return t <= 0 ? a : t >= 1 ? b : Vec2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+
+}  // namespace
+
+PolygonSearch::PolygonSearch(const ConvexMesh& mesh)
+    : mesh_(mesh),
+      portals_of_(mesh.polygon_count(), 0),
+      goal_stamp_(mesh.polygon_count(), 0),
+      best_(mesh.points().size()),
+      stamp_(mesh.points().size(), 0) {
+  for (std::int32_t p = 0; p < mesh.polygon_count(); ++p)
+    for (std::int32_t k = 0; k < mesh.size(p); ++k) portals_of_[p] += mesh.neighbour(p, k) >= 0;
+}
+
+// Root-level pruning: a turn at a vertex reached more dearly than before is dropped. One
+// reached as cheaply is kept: the same corner seen through another polygon opens other edges.
+bool PolygonSearch::corner_improves(std::int32_t vertex, double g) {
+  if (stamp_[vertex] == search_) {
+    if (g > best_[vertex] + mesh_.tolerance() * 16) return false;
+    best_[vertex] = std::min(best_[vertex], g);
+  } else {
+    stamp_[vertex] = search_;
+    best_[vertex] = g;
+  }
+  return true;
+}
+
+// Lower bound on root -> some point of [left, right] -> goal: the straight line, the goal
+// mirrored across the interval's line when it is on the root's side.
+double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
+  const Vec2 d = right - left;
+  const double dd = dot(d, d);
+  if (dd <= 0) return dist(root, left) + dist(left, goal_);
+  const double sr = cross(d, root - left), st = cross(d, goal_ - left);
+  if (std::fabs(sr) <= mesh_.tolerance() * std::sqrt(dd)) return dist(root, goal_);
+  Vec2 t = goal_;
+  if ((sr > 0) == (st > 0)) t = goal_ - (2 * st / dd) * Vec2{-d.y, d.x};
+  const double o1 = cross(t - root, left - root), o2 = cross(t - root, right - root);
+  if ((o1 <= 0 && o2 >= 0) || (o1 >= 0 && o2 <= 0)) return dist(root, t);
+  return std::min(dist(root, left) + dist(left, t), dist(root, right) + dist(right, t));
+}
+
+void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
+                         std::int32_t root_vertex, double g) {
+  const std::int32_t beyond = mesh_.neighbour(polygon, k);
+  // A polygon whose only way in is this edge leads nowhere unless the goal is in it.
+  if (portals_of_[beyond] == 1 && goal_stamp_[beyond] != search_) return;
+  const std::int32_t entry = mesh_.twin(polygon, k);
+  const std::int32_t va = mesh_.vertex(polygon, k), vb = mesh_.vertex(polygon, k + 1);
+  const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
+  const double eps = mesh_.tolerance(), side = cross(b - a, root - a), reach = eps * eps * dot(b - a, b - a);
+  // A root beyond the edge would look back through it: a ray that only touches the edge at an
+  // end, passing by. (Sides compared squared: no square root on the common way.)
+  if (side < 0 && side * side > reach) return;
+  if (side * side <= reach) {
+    const double len = dist(a, b), at = dot(root - a, b - a) / len;
+    if (at >= -eps && at <= len + eps) {  // the root is on the edge: all of the polygon beyond is in view
+      fresh_.push_back({beyond, entry, b, a, root, root_vertex, parent, g});
+      return;
+    }
+    // On the edge's line, off the edge: along the line to its nearer end, turning there.
+    const std::int32_t near = at < 0 ? va : vb;
+    const Vec2 c = mesh_.points()[near];
+    const double gc = g + dist(root, c);
+    if (!corner_improves(near, gc)) return;
+    if (!(nodes_[parent].root == root)) {  // a turn at `root` first: recorded for the path, never searched
+      nodes_.push_back({-2, -1, {}, {}, root, root_vertex, parent, g});
+      parent = static_cast<std::int32_t>(nodes_.size() - 1);
+    }
+    fresh_.push_back({beyond, entry, b, a, c, near, parent, gc});
+    return;
+  }
+  fresh_.push_back({beyond, entry, left, right, root, root_vertex, parent, g});
+}
+
+void PolygonSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
+  nodes_.push_back({-1, -1, {}, {}, root, -1, parent, g});
+  open_.push_back({g, g, static_cast<std::int32_t>(nodes_.size() - 1)});
+  std::push_heap(open_.begin(), open_.end());
+}
+
+void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
+                                   std::int32_t polygon, std::int32_t except, bool from_start) {
+  if (goal_stamp_[polygon] == search_) push_goal(parent, root, g + dist(root, goal_));
+  const double eps = mesh_.tolerance();
+  for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
+    if (k == except || mesh_.neighbour(polygon, k) < 0) continue;
+    const Vec2 a = mesh_.points()[mesh_.vertex(polygon, k)], b = mesh_.points()[mesh_.vertex(polygon, k + 1)];
+    if (from_start) {  // the start on this edge: the polygon beyond holds it too and is searched from it
+      const double len = dist(a, b), at = dot(root - a, b - a) / len;
+      if (std::fabs(cross(b - a, root - a)) <= eps * len && at >= -eps && at <= len + eps) continue;
+    }
+    push(parent, polygon, k, a, b, root, root_vertex, g);
+  }
+}
+
+void PolygonSearch::expand(std::int32_t index) {
+  const Node n = nodes_[index];
+  const std::int32_t Q = n.polygon, j = n.entry;
+  const std::int32_t lv = mesh_.vertex(Q, j), rv = mesh_.vertex(Q, j + 1);
+  const Vec2 A = mesh_.points()[lv], B = mesh_.points()[rv], r = n.root;
+  const double eps = mesh_.tolerance();
+  // Q lies left of its edge A -> B; a root not strictly right of it is on the edge.
+  if (cross(B - A, r - A) > -eps * dist(A, B)) return expand_in_view(index, r, n.root_vertex, n.g, Q, j, false);
+
+  const Vec2 L = n.left, R = n.right;
+  const double lr = dist(r, R), ll = dist(r, L);
+  const Vec2 uR{(R.x - r.x) / lr, (R.y - r.y) / lr}, uL{(L.x - r.x) / ll, (L.y - r.y) / ll};
+  const auto right_side = [&](Vec2 p) { return cross(uR, p - r); };  // >= 0: not right of the ray through R
+  const auto left_side = [&](Vec2 p) { return cross(uL, p - r); };   // <= 0: not left of the ray through L
+  const bool turn_right = mesh_.is_corner(rv) && dot(R - B, R - B) <= eps * eps;
+  const bool turn_left = mesh_.is_corner(lv) && dot(L - A, L - A) <= eps * eps;
+  const double gR = turn_right ? n.g + dist(r, B) : 0, gL = turn_left ? n.g + dist(r, A) : 0;
+  const bool use_right = turn_right && corner_improves(rv, gR);
+  const bool use_left = turn_left && corner_improves(lv, gL);
+
+  if (goal_stamp_[Q] == search_) {
+    const double gr = right_side(goal_), gl = left_side(goal_);
+    if (gr >= -eps && gl <= eps)
+      push_goal(index, r, n.g + dist(r, goal_));
+    else if (gr < -eps && use_right)
+      push_goal(index, B, gR + dist(B, goal_));
+    else if (gl > eps && use_left)
+      push_goal(index, A, gL + dist(A, goal_));
+  }
+  const std::int32_t count = mesh_.size(Q);
+  for (std::int32_t k = j + 1; k < j + count; ++k) {
+    if (mesh_.neighbour(Q, k) < 0) continue;
+    const Vec2 a = mesh_.points()[mesh_.vertex(Q, k)], b = mesh_.points()[mesh_.vertex(Q, k + 1)];
+    // Wholly right of the view with no turn there, or wholly left: nothing to see.
+    const double rb = right_side(b);
+    if (rb < -eps && !use_right) continue;
+    const double la = left_side(a);
+    if (la > eps && !use_left) continue;
+    const double ra = right_side(a), lb = left_side(b);
+    // The part in view: not right of the ray through R, not left of the ray through L. (Each
+    // side is a range of the edge, though not always at its same end: a ray through an end of
+    // the entry edge may run inside Q and meet the far side twice.)
+    const Range seen = nonnegative(ra, rb, eps).meet(nonnegative(-la, -lb, eps));
+    if (seen.lo <= seen.hi + 1e-12) push(index, Q, k, along(a, b, seen.lo), along(a, b, seen.hi), r, n.root_vertex, n.g);
+    if (use_right && std::min(ra, rb) < -eps) {
+      const Range hidden = nonnegative(-ra, -rb, eps);
+      push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), B, rv, gR);
+    }
+    if (use_left && std::max(la, lb) > eps) {
+      const Range hidden = nonnegative(la, lb, eps);
+      push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), A, lv, gL);
+    }
+  }
+}
+
+void PolygonSearch::queue_fresh() {
+  for (const Node& n : fresh_) {
+    nodes_.push_back(n);
+    const double h = heuristic(n.left, n.right, n.root);
+    open_.push_back({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
+    std::push_heap(open_.begin(), open_.end());
+  }
+}
+
+std::int32_t PolygonSearch::run(std::int64_t& expanded) {
+  while (!open_.empty()) {
+    std::pop_heap(open_.begin(), open_.end());
+    const Entry e = open_.back();
+    open_.pop_back();
+    const Node& n = nodes_[e.node];
+    if (n.polygon == -1) return e.node;
+    if (n.root_vertex >= 0 && best_[n.root_vertex] + mesh_.tolerance() * 16 < n.g) continue;
+    fresh_.clear();
+    expand(e.node);
+    ++expanded;
+    // A lone successor is expanded at once (its f is no smaller than its parent's).
+    while (fresh_.size() == 1) {
+      nodes_.push_back(fresh_.front());
+      fresh_.clear();
+      expand(static_cast<std::int32_t>(nodes_.size() - 1));
+      ++expanded;
+    }
+    queue_fresh();
+  }
+  return -1;
+}
+
+IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
+  IntervalPath out;
+  goal_ = goal;
+  nodes_.clear();
+  open_.clear();
+  if (++search_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    std::fill(goal_stamp_.begin(), goal_stamp_.end(), 0);
+    search_ = 1;
+  }
+  const std::vector<std::int32_t> first = mesh_.polygons_at(start), last = mesh_.polygons_at(goal);
+  if (first.empty() || last.empty()) return out;
+  for (const std::int32_t p : last) goal_stamp_[p] = search_;
+  for (const std::int32_t p : first)
+    if (goal_stamp_[p] == search_) {
+      out.found = true;
+      out.path = {start, goal};
+      return out;
+    }
+  nodes_.push_back({-1, -1, {}, {}, start, -1, -1, 0});
+  fresh_.clear();
+  for (const std::int32_t p : first) expand_in_view(0, start, -1, 0, p, -1, true);
+  queue_fresh();
+  const std::int32_t reached = run(out.expanded);
+  if (reached >= 0) {
+    out.found = true;
+    out.path.push_back(goal);
+    for (std::int32_t i = reached; i >= 0; i = nodes_[i].parent)
+      if (!(nodes_[i].root == out.path.back())) out.path.push_back(nodes_[i].root);
+    std::reverse(out.path.begin(), out.path.end());
+  }
+  out.generated = static_cast<std::int64_t>(nodes_.size());
+  return out;
+}
+
+}  // namespace plantsim::planner
