@@ -82,7 +82,8 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "`run` plans to; default for ROS maps, whose charger stands against a wall inside the planning inflation)")
       ->check(CLI::IsMember({"docked", "staging"}));
   cmd->add_option("--landmarks", opt->landmarks,
-                  "Planner interval: this many landmarks for a stronger heuristic (the same answers, fewer nodes); "
+                  "Planners interval and polyanya: this many landmarks for a stronger heuristic (the same answers, fewer "
+                  "nodes); "
                   "each costs one search over the whole map when the planner is built, so it pays on many queries; "
                   "landmarks x mesh cells may not pass " +
                       std::to_string(planner::kLandmarkCellBudget) + " (refused, with the most the map allows)")
@@ -94,8 +95,8 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "Inflation in metres (default: robot radius + the world's margin)")
       ->check(CLI::NonNegativeNumber);
   return [opt]() {
-    if (opt->landmarks > 0 && opt->planner != "interval")
-      throw std::invalid_argument("plan: --landmarks is the interval planner's, not " + opt->planner + "'s");
+    if (opt->landmarks > 0 && opt->planner != "interval" && opt->planner != "polyanya")
+      throw std::invalid_argument("plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
     if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks);
     if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);

@@ -259,22 +259,23 @@ TEST_F(Cli, PlanWithRoundInflation) {
   EXPECT_NE(o.err.find("must be positive"), std::string::npos) << o.err;
 }
 
-// The interval planner answers as vg does, with or without landmarks; other planners refuse them.
+// The mesh planners answer as vg does, with or without landmarks; other planners refuse them.
 TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
   const std::string world = test::source_file("worlds/scenarios/desulfurization_plant.json");
   Outcome o = run("plan " + world);
   ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
   const double vg = nlohmann::json::parse(o.out)["length"].get<double>();
-  for (const std::string extra : {"", " --landmarks 4"}) {
-    o = run("plan " + world + " --planner interval" + extra);
-    ASSERT_EQ(o.exit_code, 0) << extra << o.out << o.err;
-    const auto j = nlohmann::json::parse(o.out);
-    EXPECT_EQ(j["planner"], "interval");
-    EXPECT_NEAR(j["length"].get<double>(), vg, 1e-9 * vg) << extra;
-  }
+  for (const std::string planner : {"interval", "polyanya"})
+    for (const std::string extra : {"", " --landmarks 4"}) {
+      o = run("plan " + world + " --planner " + planner + extra);
+      ASSERT_EQ(o.exit_code, 0) << planner << extra << o.out << o.err;
+      const auto j = nlohmann::json::parse(o.out);
+      EXPECT_EQ(j["planner"], planner);
+      EXPECT_NEAR(j["length"].get<double>(), vg, 1e-9 * vg) << planner << extra;
+    }
   o = run("plan " + world + " --landmarks 4");
   EXPECT_EQ(o.exit_code, 2);
-  EXPECT_NE(o.err.find("--landmarks is the interval planner's"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("--landmarks is for the mesh planners"), std::string::npos) << o.err;
   o = run("plan " + world + " --planner interval --landmarks 65");
   EXPECT_EQ(o.exit_code, 2) << o.err;
   // Each landmark is a search of the whole mesh: past the budget, refused with the most that fit.

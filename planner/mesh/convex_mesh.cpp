@@ -5,20 +5,30 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <queue>
 
 namespace plantsim::planner {
+
+// A polygon while merging: its corners counter-clockwise and, per edge, the triangle that was
+// beyond it (-1 for a wall), resolved to the polygon holding that triangle now.
+struct ConvexMesh::Piece {
+  std::vector<std::int32_t> corner, beyond;
+  double area = 0;
+  bool alive = true;
+};
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel>;
+using FaceBase =
+    CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<std::int32_t, Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 
@@ -49,13 +59,7 @@ std::vector<std::pair<Vec2, Vec2>> walls_of(const FreeSpaceMesh& m) {
   return out;
 }
 
-// A polygon while merging: its corners counter-clockwise and, per edge, the triangle that was
-// beyond it (-1 for a wall), resolved to the polygon holding that triangle now.
-struct Piece {
-  std::vector<std::int32_t> corner, beyond;
-  double area = 0;
-  bool alive = true;
-};
+using Piece = ConvexMesh::Piece;
 
 class Merger {
  public:
@@ -131,37 +135,43 @@ class Merger {
   std::vector<std::int32_t> owner_;
 };
 
-}  // namespace
 
-ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolerance()) {
-  if (rectangles.cells().empty()) {
-    first_ = {0};
-    return;
-  }
-  Cdt cdt;
-  std::map<std::pair<double, double>, Cdt::Vertex_handle> at;
-  const auto handle = [&](Vec2 p) {
-    auto [it, fresh] = at.try_emplace({p.x, p.y});
-    if (fresh) it->second = cdt.insert(Kernel::Point_2(p.x, p.y));
-    return it->second;
-  };
+// The free triangles of a constrained Delaunay triangulation of the walls, as pieces to merge;
+// fills `points` with the triangulation's vertices.
+std::vector<Piece> free_triangles(const FreeSpaceMesh& rectangles, std::vector<Vec2>& points) {
+  // Every cell corner once (portal ends are cell corners too), sorted, so that a wall's ends
+  // are found by binary search.
+  std::vector<Vec2> sites;
+  sites.reserve(4 * rectangles.cells().size());
   for (const MeshCell& c : rectangles.cells())
-    for (const Vec2 p : {Vec2{c.xlo, c.ylo}, Vec2{c.xhi, c.ylo}, Vec2{c.xlo, c.yhi}, Vec2{c.xhi, c.yhi}}) handle(p);
-  for (const auto& [a, b] : walls_of(rectangles)) cdt.insert_constraint(handle(a), handle(b));
+    for (const Vec2 p : {Vec2{c.xlo, c.ylo}, Vec2{c.xhi, c.ylo}, Vec2{c.xlo, c.yhi}, Vec2{c.xhi, c.yhi}}) sites.push_back(p);
+  const auto before = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  std::sort(sites.begin(), sites.end(), before);
+  sites.erase(std::unique(sites.begin(), sites.end()), sites.end());
+  const auto site = [&](Vec2 p) { return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), p, before) - sites.begin()); };
+  std::vector<std::pair<std::size_t, std::size_t>> walls;
+  for (const auto& [a, b] : walls_of(rectangles)) walls.emplace_back(site(a), site(b));
+  std::vector<Kernel::Point_2> cgal_sites;
+  cgal_sites.reserve(sites.size());
+  for (const Vec2 p : sites) cgal_sites.emplace_back(p.x, p.y);
+  // Points and walls handed over at once: CGAL sorts the points along a space-filling curve
+  // before inserting them, far faster than one at a time.
+  Cdt cdt;
+  cdt.insert_constraints(cgal_sites.begin(), cgal_sites.end(), walls.begin(), walls.end());
 
-  // Number the vertices and the free triangles (a triangle is free when its centroid is on the
-  // free floor: no wall crosses a triangle, so it lies wholly on one side).
+  // A triangle is free when its centroid is on the free floor (no wall crosses a triangle, so
+  // it lies wholly on one side).
   std::int32_t next_vertex = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     v->info() = next_vertex++;
-    points_.push_back({v->point().x(), v->point().y()});
+    points.push_back({v->point().x(), v->point().y()});
   }
-  std::map<Cdt::Face_handle, std::int32_t> triangle;
   std::vector<Cdt::Face_handle> faces;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    const Vec2 a = points_[f->vertex(0)->info()], b = points_[f->vertex(1)->info()], c = points_[f->vertex(2)->info()];
+    const Vec2 a = points[f->vertex(0)->info()], b = points[f->vertex(1)->info()], c = points[f->vertex(2)->info()];
     if (rectangles.cells_at({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3}).empty()) continue;
-    triangle[f] = static_cast<std::int32_t>(faces.size());
+    f->info() = static_cast<std::int32_t>(faces.size());
     faces.push_back(f);
   }
   std::vector<Piece> pieces(faces.size());
@@ -172,28 +182,58 @@ ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolera
       p.corner.push_back(f->vertex(k)->info());
       // Edge k runs from corner k to corner k + 1: opposite CGAL's vertex k + 2.
       const int opposite = (k + 2) % 3;
-      const auto beyond = triangle.find(f->neighbor(opposite));
-      p.beyond.push_back(beyond != triangle.end() && !f->is_constrained(opposite) ? beyond->second : -1);
+      const std::int32_t beyond = f->neighbor(opposite)->info();
+      p.beyond.push_back(beyond >= 0 && !f->is_constrained(opposite) ? beyond : -1);
     }
-    const Vec2 a = points_[p.corner[0]], b = points_[p.corner[1]], c = points_[p.corner[2]];
+    const Vec2 a = points[p.corner[0]], b = points[p.corner[1]], c = points[p.corner[2]];
     p.area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }
-  Merger merger(std::move(pieces), points_);
-  merger.run();
+  return pieces;
+}
 
-  // Polygons numbered in order, their neighbours resolved, each edge's twin found.
-  std::vector<std::int32_t> number(merger.pieces().size(), -1);
+// Interleaved bits of a point's place in the box (a Z-order key): polygons near each other on
+// the floor are near each other in memory, which is what a search's cache wants.
+std::uint64_t z_order(Vec2 p, Vec2 lo, Vec2 size) {
+  const auto grid = [](double u) { return static_cast<std::uint64_t>(std::clamp(u, 0.0, 1.0) * 65535.0); };
+  const std::uint64_t x = grid((p.x - lo.x) / size.x), y = grid((p.y - lo.y) / size.y);
+  std::uint64_t key = 0;
+  for (int bit = 0; bit < 16; ++bit) key |= ((x >> bit) & 1) << (2 * bit) | ((y >> bit) & 1) << (2 * bit + 1);
+  return key;
+}
+
+}  // namespace
+
+ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolerance()) {
   first_ = {0};
-  for (std::size_t t = 0; t < merger.pieces().size(); ++t)
-    if (merger.pieces()[t].alive) {
-      number[t] = static_cast<std::int32_t>(first_.size()) - 1;
-      first_.push_back(first_.back() + static_cast<std::int32_t>(merger.pieces()[t].corner.size()));
-    }
-  for (std::size_t t = 0; t < merger.pieces().size(); ++t) {
-    const Piece& p = merger.pieces()[t];
-    if (!p.alive) continue;
+  if (rectangles.cells().empty()) return;
+  Merger merger(free_triangles(rectangles, points_), points_);
+  merger.run();
+  std::vector<std::int32_t> owner(merger.pieces().size());
+  for (std::size_t t = 0; t < owner.size(); ++t) owner[t] = merger.owner(static_cast<std::int32_t>(t));
+  lay_out(merger.pieces(), owner);
+  mark_corners();
+  index_polygons();
+}
+
+// The merged polygons numbered in Z-order of their first corner, their neighbours resolved,
+// each edge's twin found.
+void ConvexMesh::lay_out(const std::vector<Piece>& pieces, const std::vector<std::int32_t>& owner) {
+  Vec2 lo = points_.front(), hi = points_.front();
+  for (const Vec2 p : points_) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  const Vec2 extent{std::max(hi.x - lo.x, 1e-300), std::max(hi.y - lo.y, 1e-300)};
+  std::vector<std::pair<std::uint64_t, std::int32_t>> order;
+  for (std::size_t t = 0; t < pieces.size(); ++t)
+    if (pieces[t].alive) order.push_back({z_order(points_[pieces[t].corner.front()], lo, extent), static_cast<std::int32_t>(t)});
+  std::sort(order.begin(), order.end());
+  std::vector<std::int32_t> number(pieces.size(), -1);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    number[order[i].second] = static_cast<std::int32_t>(i);
+    first_.push_back(first_.back() + static_cast<std::int32_t>(pieces[order[i].second].corner.size()));
+  }
+  for (const auto& [key, t] : order) {
+    const Piece& p = pieces[t];
     corner_.insert(corner_.end(), p.corner.begin(), p.corner.end());
-    for (const std::int32_t b : p.beyond) neighbour_.push_back(b >= 0 ? number[merger.owner(b)] : -1);
+    for (const std::int32_t b : p.beyond) neighbour_.push_back(b >= 0 ? number[owner[b]] : -1);
   }
   twin_.assign(corner_.size(), -1);
   for (std::int32_t p = 0; p < polygon_count(); ++p)
@@ -204,7 +244,11 @@ ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolera
       for (std::int32_t j = 0; j < size(q); ++j)
         if (vertex(q, j) == vertex(p, k + 1) && vertex(q, j + 1) == vertex(p, k)) twin_[first_[p] + k] = j;
     }
+}
 
+void ConvexMesh::mark_corners() {
+  std::vector<std::uint8_t> wedges(points_.size(), 0);
+  pinch_flag_.assign(points_.size(), false);
   // A corner: some wedge between consecutive walls around the vertex, on the free side, is
   // wider than a half-turn. Each polygon adds its angle at the vertex to the wedge it lies in;
   // wedges are found by walking round the vertex from a wall through the polygons.
@@ -228,8 +272,9 @@ ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolera
         if (q == p && i % size(q) == k) break;
       }
       if (angle > M_PI + 1e-9) corner_flag_[v] = true;
+      ++wedges[v];
     }
-  index_polygons();
+  for (std::size_t v = 0; v < points_.size(); ++v) pinch_flag_[v] = wedges[v] > 1;
 }
 
 void ConvexMesh::index_polygons() {

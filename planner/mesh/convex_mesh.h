@@ -36,11 +36,15 @@ class ConvexMesh {
   /// A vertex a shortest path may bend at: an obstacle's convex corner or a slit's tip (a wedge
   /// of free floor wider than a half-turn between two walls).
   bool is_corner(std::int32_t vertex) const { return corner_flag_[vertex]; }
+  /// A vertex where free wedges meet that a path may not pass between (walls touching at a
+  /// point): how far it is depends on the side it is reached from.
+  bool is_pinch(std::int32_t vertex) const { return pinch_flag_[vertex]; }
   /// Every polygon whose closed area holds p (within the tolerance): two or more on a shared
   /// edge or vertex, none off the free floor.
   std::vector<std::int32_t> polygons_at(Vec2 p) const;
   bool polygon_holds(std::int32_t polygon, Vec2 p) const;
   double tolerance() const { return eps_; }
+  struct Piece;  ///< a polygon while the mesh is built (convex_mesh.cpp)
 
  private:
   // k within one turn either way of [0, n): no division on the search's hot path.
@@ -48,10 +52,12 @@ class ConvexMesh {
     const std::int32_t n = size(polygon);
     return k >= n ? k - n : k < 0 ? k + n : k;
   }
+  void lay_out(const std::vector<Piece>& pieces, const std::vector<std::int32_t>& owner);
+  void mark_corners();
   void index_polygons();
 
   std::vector<Vec2> points_;
-  std::vector<bool> corner_flag_;
+  std::vector<bool> corner_flag_, pinch_flag_;
   std::vector<std::int32_t> first_;  // polygon p's corners are corner_[first_[p] .. first_[p + 1])
   std::vector<std::int32_t> corner_, neighbour_, twin_;
   std::int64_t portals_ = 0;

@@ -202,6 +202,18 @@ bool FreeSpaceMesh::cell_holds(std::int32_t cell, Vec2 p) const {
   return p.x >= c.xlo - eps_ && p.x <= c.xhi + eps_ && p.y >= c.ylo - eps_ && p.y <= c.yhi + eps_;
 }
 
+bool FreeSpaceMesh::is_pinch(Vec2 p) const {
+  // Which quadrants round p the cells holding it reach into: bit 0 lower left, 1 lower right,
+  // 2 upper left, 3 upper right.
+  unsigned quadrants = 0;
+  for (const std::int32_t i : cells_at(p)) {
+    const MeshCell& c = cells_[i];
+    const bool left = c.xlo < p.x - eps_, right = c.xhi > p.x + eps_, below = c.ylo < p.y - eps_, above = c.yhi > p.y + eps_;
+    quadrants |= (left && below ? 1u : 0u) | (right && below ? 2u : 0u) | (left && above ? 4u : 0u) | (right && above ? 8u : 0u);
+  }
+  return quadrants == (1u | 8u) || quadrants == (2u | 4u);
+}
+
 std::vector<std::int32_t> FreeSpaceMesh::cells_at(Vec2 p) const {
   std::vector<std::int32_t> out;
   for (const std::int32_t c : buckets_.near(p))

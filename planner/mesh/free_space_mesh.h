@@ -53,6 +53,9 @@ class FreeSpaceMesh {
   /// p lies on a portal or a shared corner, none when p is not on the free floor.
   std::vector<std::int32_t> cells_at(Vec2 p) const;
   bool cell_holds(std::int32_t cell, Vec2 p) const;
+  /// p is where two blocked quadrants touch diagonally (a pinch): the free floor on the two
+  /// other sides meets there, but no path passes from one to the other.
+  bool is_pinch(Vec2 p) const;
   /// Absolute tolerance for comparing computed coordinates (an interval's ends projected across
   /// a cell): a few hundred ulps of the floor's extent, far below the inflation lattice, so
   /// cells one lattice step wide stay apart.

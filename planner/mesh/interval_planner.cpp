@@ -18,18 +18,32 @@ Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
 
 }  // namespace
 
+// Each landmark costs one search over the whole mesh at build, and 8 bytes per cell corner (per
+// vertex): worth it when the planner answers many queries (bench: ArcticStation). On a huge
+// plant that is minutes and gigabytes, so the product is bounded and a request past it refused
+// before any search starts.
+void IntervalPlanner::check_landmark_budget(int landmarks, std::size_t cells) const {
+  if (landmarks > 0 && static_cast<std::size_t>(landmarks) * cells > kLandmarkCellBudget)
+    throw std::invalid_argument(
+        name() + ": " + std::to_string(landmarks) + " landmarks over a mesh of " + std::to_string(cells) +
+        " cells: each landmark is a search of the whole mesh at build, and landmarks x cells may not pass " +
+        std::to_string(kLandmarkCellBudget) + " (at most " + std::to_string(kLandmarkCellBudget / cells) + " here)");
+}
+
 IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     : build_start_(std::chrono::steady_clock::now()),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
       snap_(input.snap_to_free) {
   if (input.landmarks < 0 || input.landmarks > 64)
-    throw std::invalid_argument("interval: landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
+    throw std::invalid_argument(std::string(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval") +
+                                ": landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
   if (kind == MeshKind::kConvexPolygons) {
     // Both sweeps have the same walls, so the polygons do not depend on which one is cut.
-    if (input.landmarks != 0) throw std::invalid_argument("polyanya: landmarks are the interval planner's (--planner interval)");
     convex_ = std::make_unique<ConvexMesh>(*mesh_);
     polygon_search_ = std::make_unique<PolygonSearch>(*convex_);
+    check_landmark_budget(input.landmarks, static_cast<std::size_t>(convex_->polygon_count()));
+    polygon_search_->add_landmarks(input.landmarks);
     build_ms_ = util::ms_since(build_start_);
     return;
   }
@@ -42,16 +56,7 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     transposed_ = true;
   }
   search_ = std::make_unique<IntervalSearch>(*mesh_);
-  // Each landmark costs one search over the whole mesh now, and 8 bytes per cell corner and
-  // portal end: worth it when the planner answers many queries (bench: ArcticStation). On a
-  // huge plant that is minutes and gigabytes, so the product is bounded and a request past it
-  // refused before any search starts.
-  const std::size_t cells = mesh_->cells().size();
-  if (input.landmarks > 0 && static_cast<std::size_t>(input.landmarks) * cells > kLandmarkCellBudget)
-    throw std::invalid_argument(
-        "interval: " + std::to_string(input.landmarks) + " landmarks over a mesh of " + std::to_string(cells) +
-        " cells: each landmark is a search of the whole mesh at build, and landmarks x cells may not pass " +
-        std::to_string(kLandmarkCellBudget) + " (at most " + std::to_string(kLandmarkCellBudget / cells) + " here)");
+  check_landmark_budget(input.landmarks, mesh_->cells().size());
   search_->add_landmarks(input.landmarks);
   build_ms_ = util::ms_since(build_start_);
 }

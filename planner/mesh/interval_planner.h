@@ -38,6 +38,8 @@ class IntervalPlanner : public Planner {
   const FreeSpaceMesh& mesh() const { return *mesh_; }
 
  private:
+  void check_landmark_budget(int landmarks, std::size_t cells) const;
+
   std::chrono::steady_clock::time_point build_start_;  // first member: times the whole build
   ObstacleMap map_;
   std::unique_ptr<FreeSpaceMesh> mesh_;

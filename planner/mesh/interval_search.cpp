@@ -228,15 +228,19 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
       out.path = {start, goal};
       return out;
     }
-  if (landmarks_ > 0) {
+  // A goal at a pinch is two points, one on each side: distances to it break the triangle
+  // inequality the landmarks' bound rests on, so such a query does without them.
+  use_landmarks_ = landmarks_ > 0 && !mesh_.is_pinch(goal);
+  if (use_landmarks_) {
     // The start is no corner: its distances are bounded from its cell's corners, as the goal's.
     set_goal_bounds(first.front(), start);
     const std::vector<double> start_low = goal_low_, start_high = goal_high_;
     set_goal_bounds(last.front(), goal);
     start_bound_ = 0;
-    for (int k = 0; k < landmarks_; ++k)
-      if (std::isfinite(start_low[k]) && std::isfinite(goal_low_[k]))
-        start_bound_ = std::max({start_bound_, goal_low_[k] - start_high[k], start_low[k] - goal_high_[k]});
+    if (!mesh_.is_pinch(start))
+      for (int k = 0; k < landmarks_; ++k)
+        if (std::isfinite(start_low[k]) && std::isfinite(goal_low_[k]))
+          start_bound_ = std::max({start_bound_, goal_low_[k] - start_high[k], start_low[k] - goal_high_[k]});
     start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
   }
   queue_source(start, first);  // the start, as the first root
@@ -343,6 +347,11 @@ void IntervalSearch::add_landmarks(int count) {
   // fewer were found: no second copy of the table is ever held.
   corner_distance_.assign(corners * count, kUnknown);
   std::vector<double> nearest(corners, std::numeric_limits<double>::infinity());
+  std::vector<bool> pinch(corners);
+  for (std::size_t i = 0; i < corners; ++i) {
+    const MeshCell& c = cells[i / 4];
+    pinch[i] = mesh_.is_pinch({i % 2 ? c.xhi : c.xlo, i % 4 >= 2 ? c.yhi : c.ylo});
+  }
   std::size_t next = 0;  // cell 0's lower left corner first
   int found = 0;
   while (found < count) {
@@ -352,7 +361,8 @@ void IntervalSearch::add_landmarks(int count) {
     // The next landmark: the reachable corner farthest from every landmark so far.
     double far = 0;
     for (std::size_t i = 0; i < corners; ++i) {
-      if (std::isfinite(from[i])) corner_distance_[i * count + found] = from[i];  // unreachable: NaN
+      // Unreachable, or a pinch (whose distance depends on the side it is reached from): NaN.
+      if (std::isfinite(from[i]) && !pinch[i]) corner_distance_[i * count + found] = from[i];
       nearest[i] = std::min(nearest[i], from[i]);
       if (std::isfinite(nearest[i]) && nearest[i] > far) far = nearest[i], next = i;
     }
@@ -400,7 +410,7 @@ void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
 // max over landmarks of |d(L, goal) - d(L, root)|, bounded from below; a hair less, so that
 // rounding can never make it overestimate.
 double IntervalSearch::landmark_bound(std::int32_t root_vertex) const {
-  if (landmarks_ == 0) return 0;
+  if (!use_landmarks_) return 0;
   if (root_vertex < 0) return start_bound_;
   double h = 0;
   const double* d = &end_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];

@@ -95,6 +95,7 @@ class IntervalSearch {
   std::uint32_t search_ = 0;
   // Landmarks: distances from each to every cell corner and portal end, landmark-minor.
   int landmarks_ = 0;
+  bool use_landmarks_ = false;  // this query: landmarks, and the goal not at a pinch
   std::vector<double> corner_distance_, end_distance_;
   std::vector<double> goal_low_, goal_high_;  // bounds on each landmark's distance to the goal
   double start_bound_ = 0;                    // the landmarks' bound for nodes rooted at the start

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plantsim::planner {
 using geom::cross;
@@ -72,7 +73,7 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
                          std::int32_t root_vertex, double g) {
   const std::int32_t beyond = mesh_.neighbour(polygon, k);
   // A polygon whose only way in is this edge leads nowhere unless the goal is in it.
-  if (portals_of_[beyond] == 1 && goal_stamp_[beyond] != search_) return;
+  if (!flood_ && portals_of_[beyond] == 1 && goal_stamp_[beyond] != search_) return;
   const std::int32_t entry = mesh_.twin(polygon, k);
   const std::int32_t va = mesh_.vertex(polygon, k), vb = mesh_.vertex(polygon, k + 1);
   const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
@@ -110,6 +111,7 @@ void PolygonSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
 void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
                                    std::int32_t polygon, std::int32_t except, bool from_start) {
   if (goal_stamp_[polygon] == search_) push_goal(parent, root, g + dist(root, goal_));
+  if (flood_) record_in_view(polygon, root, g);
   const double eps = mesh_.tolerance();
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
     if (k == except || mesh_.neighbour(polygon, k) < 0) continue;
@@ -141,6 +143,7 @@ void PolygonSearch::expand(std::int32_t index) {
   const double gR = turn_right ? n.g + dist(r, B) : 0, gL = turn_left ? n.g + dist(r, A) : 0;
   const bool use_right = turn_right && corner_improves(rv, gR);
   const bool use_left = turn_left && corner_improves(lv, gL);
+  if (flood_) record_view(Q, r, n.g, uR, uL, turn_right, B, gR, turn_left, A, gL);
 
   if (goal_stamp_[Q] == search_) {
     const double gr = right_side(goal_), gl = left_side(goal_);
@@ -180,7 +183,7 @@ void PolygonSearch::expand(std::int32_t index) {
 void PolygonSearch::queue_fresh() {
   for (const Node& n : fresh_) {
     nodes_.push_back(n);
-    const double h = heuristic(n.left, n.right, n.root);
+    const double h = flood_ ? 0 : std::max(heuristic(n.left, n.right, n.root), landmark_bound(n.root_vertex));
     open_.push_back({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
     std::push_heap(open_.begin(), open_.end());
   }
@@ -209,16 +212,20 @@ std::int32_t PolygonSearch::run(std::int64_t& expanded) {
   return -1;
 }
 
-IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
-  IntervalPath out;
+void PolygonSearch::begin(Vec2 goal) {
   goal_ = goal;
   nodes_.clear();
   open_.clear();
-  if (++search_ == 0) {
+  if (++search_ == 0) {  // the stamps wrapped: forget them all
     std::fill(stamp_.begin(), stamp_.end(), 0);
     std::fill(goal_stamp_.begin(), goal_stamp_.end(), 0);
     search_ = 1;
   }
+}
+
+IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
+  IntervalPath out;
+  begin(goal);
   const std::vector<std::int32_t> first = mesh_.polygons_at(start), last = mesh_.polygons_at(goal);
   if (first.empty() || last.empty()) return out;
   for (const std::int32_t p : last) goal_stamp_[p] = search_;
@@ -228,6 +235,16 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
       out.path = {start, goal};
       return out;
     }
+  use_landmarks_ = landmarks_ > 0 && !at_pinch(last, goal);
+  if (use_landmarks_) {
+    bound_landmark_distances(last, goal, goal_low_, goal_high_);
+    bound_landmark_distances(first, start, start_low_, start_high_);
+    start_bound_ = 0;
+    if (!at_pinch(first, start))
+      for (int k = 0; k < landmarks_; ++k)  // NaN (unknown) compares false: no bound from it
+        start_bound_ = std::max({start_bound_, goal_low_[k] - start_high_[k], start_low_[k] - goal_high_[k]});
+    start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
+  }
   nodes_.push_back({-1, -1, {}, {}, start, -1, -1, 0});
   fresh_.clear();
   for (const std::int32_t p : first) expand_in_view(0, start, -1, 0, p, -1, true);
@@ -242,6 +259,132 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   }
   out.generated = static_cast<std::int64_t>(nodes_.size());
   return out;
+}
+
+// A point at a pinch is two points, one on each side: distances to it break the triangle
+// inequality the landmarks' bound rests on, so a query that starts or ends there does without.
+bool PolygonSearch::at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) const {
+  const double eps = mesh_.tolerance();
+  for (const std::int32_t q : polygons)
+    for (std::int32_t k = 0; k < mesh_.size(q); ++k) {
+      const std::int32_t v = mesh_.vertex(q, k);
+      if (mesh_.is_pinch(v) && dot(mesh_.points()[v] - p, mesh_.points()[v] - p) <= eps * eps) return true;
+    }
+  return false;
+}
+
+void PolygonSearch::record_in_view(std::int32_t polygon, Vec2 r, double g) {
+  for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
+    const std::int32_t v = mesh_.vertex(polygon, k);
+    (*flood_)[v] = std::min((*flood_)[v], g + dist(r, mesh_.points()[v]));
+  }
+}
+
+// The polygon's vertices in the node's view get the straight way; those right (left) of it,
+// the way bending at the interval's right (left) end when that is a corner.
+void PolygonSearch::record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B, double gR,
+                                bool left, Vec2 A, double gL) {
+  const double eps = mesh_.tolerance();
+  for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
+    const std::int32_t v = mesh_.vertex(polygon, k);
+    const Vec2 p = mesh_.points()[v];
+    const double rs = cross(uR, p - r), ls = cross(uL, p - r);
+    double& d = (*flood_)[v];
+    if (rs >= -eps && ls <= eps)
+      d = std::min(d, g + dist(r, p));
+    else if (rs < -eps && right)
+      d = std::min(d, gR + dist(B, p));
+    else if (ls > eps && left)
+      d = std::min(d, gL + dist(A, p));
+  }
+}
+
+std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
+  std::vector<double> out(mesh_.points().size(), std::numeric_limits<double>::infinity());
+  const std::vector<std::int32_t> first = mesh_.polygons_at(source);
+  if (first.empty()) return out;
+  flood_ = &out;
+  begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal nowhere
+  nodes_.push_back({-1, -1, {}, {}, source, -1, -1, 0});
+  fresh_.clear();
+  for (const std::int32_t p : first) expand_in_view(0, source, -1, 0, p, -1, true);
+  queue_fresh();
+  std::int64_t expanded = 0;
+  run(expanded);
+  flood_ = nullptr;
+  return out;
+}
+
+void PolygonSearch::add_landmarks(int count) {
+  const std::size_t vertices = mesh_.points().size();
+  if (mesh_.polygon_count() == 0 || count <= 0) return;
+  // Filled landmark by landmark in place (`count` wide), closed up if fewer were found.
+  vertex_distance_.assign(vertices * count, std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> nearest(vertices, std::numeric_limits<double>::infinity());
+  std::int32_t next = mesh_.vertex(0, 0);
+  int found = 0;
+  while (found < count) {
+    const std::vector<double> from = distances_to_vertices(mesh_.points()[next]);
+    // The next landmark: the reachable vertex farthest from every landmark so far.
+    double far = 0;
+    for (std::size_t v = 0; v < vertices; ++v) {
+      // A pinch's distance depends on the side it is reached from: no bound is taken from it.
+      if (std::isfinite(from[v]) && !mesh_.is_pinch(static_cast<std::int32_t>(v))) vertex_distance_[v * count + found] = from[v];
+      nearest[v] = std::min(nearest[v], from[v]);
+      if (std::isfinite(nearest[v]) && nearest[v] > far) far = nearest[v], next = static_cast<std::int32_t>(v);
+    }
+    ++found;
+    if (far == 0) break;
+  }
+  landmarks_ = found;
+  for (std::size_t v = 0; v < vertices; ++v)
+    for (int k = 0; k < landmarks_; ++k) vertex_distance_[v * landmarks_ + k] = vertex_distance_[v * count + k];
+  vertex_distance_.resize(vertices * landmarks_);
+}
+
+// Each landmark's distance to p lies within its distance to a vertex of a (convex) polygon
+// holding p, give or take the straight way between them; reached through whichever polygon
+// holding p is nearest, so the bounds through each are combined by their minimum. (Through one
+// polygon alone they would fail where p is a pinch point, reached from the other side.)
+void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p, std::vector<double>& low,
+                                             std::vector<double>& high) const {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  low.assign(landmarks_, kInf);
+  high.assign(landmarks_, kInf);
+  std::vector<double> side_low(landmarks_), side_high(landmarks_);
+  for (const std::int32_t polygon : polygons) {
+    std::fill(side_low.begin(), side_low.end(), -kInf);
+    std::fill(side_high.begin(), side_high.end(), kInf);
+    for (std::int32_t i = 0; i < mesh_.size(polygon); ++i) {
+      const std::int32_t v = mesh_.vertex(polygon, i);
+      const double to = dist(mesh_.points()[v], p);
+      for (int k = 0; k < landmarks_; ++k) {
+        const double d = vertex_distance_[static_cast<std::size_t>(v) * landmarks_ + k];
+        if (!std::isfinite(d)) continue;  // unreachable, or a pinch (NaN)
+        side_low[k] = std::max(side_low[k], d - to);
+        side_high[k] = std::min(side_high[k], d + to);
+      }
+    }
+    for (int k = 0; k < landmarks_; ++k) low[k] = std::min(low[k], side_low[k]), high[k] = std::min(high[k], side_high[k]);
+  }
+  for (int k = 0; k < landmarks_; ++k)
+    if (!std::isfinite(low[k]) || !std::isfinite(high[k])) low[k] = high[k] = std::numeric_limits<double>::quiet_NaN();
+}
+
+// max over landmarks of |d(L, goal) - d(L, root)|, bounded from below; a hair less, so that
+// rounding can never make it overestimate.
+double PolygonSearch::landmark_bound(std::int32_t root_vertex) const {
+  if (!use_landmarks_) return 0;
+  if (root_vertex < 0) return start_bound_;
+  double h = 0;
+  const double* d = &vertex_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
+  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
+  for (int k = 0; k < landmarks_; ++k) {
+    const double a = goal_low_[k] - d[k], b = d[k] - goal_high_[k];
+    h = a > h ? a : h;
+    h = b > h ? b : h;
+  }
+  return h > 0 ? h * (1 - 1e-12) - mesh_.tolerance() : 0;
 }
 
 }  // namespace plantsim::planner

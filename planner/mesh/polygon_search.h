@@ -19,6 +19,14 @@ class PolygonSearch {
  public:
   explicit PolygonSearch(const ConvexMesh& mesh);
   IntervalPath find(Vec2 start, Vec2 goal);
+  /// As IntervalSearch::add_landmarks: `count` landmarks (each the corner farthest from those
+  /// before), the exact distance from each to every mesh vertex stored, and their (ALT) lower
+  /// bound taken in the heuristic as well. Answers are unchanged.
+  void add_landmarks(int count);
+  int landmark_count() const { return landmarks_; }
+  /// Exact shortest distance from `source` to every mesh vertex, infinity where unreachable: a
+  /// search with no goal.
+  std::vector<double> distances_to_vertices(Vec2 source);
 
  private:
   struct Node {
@@ -45,6 +53,16 @@ class PolygonSearch {
   void push_goal(std::int32_t parent, Vec2 root, double g);
   bool corner_improves(std::int32_t vertex, double g);
   double heuristic(Vec2 left, Vec2 right, Vec2 root) const;
+  double landmark_bound(std::int32_t root_vertex) const;
+  bool at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) const;
+  /// Bounds on each landmark's distance to p, from the vertices of the polygons holding it.
+  void bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p, std::vector<double>& low,
+                                std::vector<double>& high) const;
+  /// While measuring distances: what the node's view of its polygon tells of its vertices.
+  void record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B, double gR, bool left,
+                   Vec2 A, double gL);
+  void record_in_view(std::int32_t polygon, Vec2 r, double g);
+  void begin(Vec2 goal);
   void queue_fresh();
   std::int32_t run(std::int64_t& expanded);
 
@@ -55,6 +73,13 @@ class PolygonSearch {
   std::vector<Node> nodes_, fresh_;
   std::vector<Entry> open_;
   std::vector<double> best_;  // per vertex, the cheapest turn there this search
+  // Landmarks: distances from each to every vertex, landmark-minor (NaN: unreachable).
+  int landmarks_ = 0;
+  bool use_landmarks_ = false;  // this query: landmarks, and neither end at a pinch
+  std::vector<double> vertex_distance_;
+  std::vector<double> goal_low_, goal_high_, start_low_, start_high_;
+  double start_bound_ = 0;                // the landmarks' bound for nodes rooted at the start
+  std::vector<double>* flood_ = nullptr;  // while measuring distances: per vertex
   std::vector<std::uint32_t> stamp_;
   std::uint32_t search_ = 0;
 };
