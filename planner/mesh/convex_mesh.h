@@ -30,6 +30,11 @@ class ConvexMesh {
   }
   /// The same edge's index in the neighbour (where it runs from corner k + 1 to corner k).
   std::int32_t twin(std::int32_t polygon, std::int32_t k) const { return twin_[first_[polygon] + wrap(polygon, k)]; }
+  /// The same three as arrays over the polygon's corners (index k in [0, size)), for loops
+  /// that walk a polygon.
+  const std::int32_t* corners(std::int32_t polygon) const { return corner_.data() + first_[polygon]; }
+  const std::int32_t* neighbours(std::int32_t polygon) const { return neighbour_.data() + first_[polygon]; }
+  const std::int32_t* twins(std::int32_t polygon) const { return twin_.data() + first_[polygon]; }
   /// Edges with a polygon on both sides, each counted once.
   std::int64_t portal_count() const { return portals_; }
   const std::vector<Vec2>& points() const { return points_; }

@@ -71,11 +71,11 @@ double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
 
 void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
                          std::int32_t root_vertex, double g) {
-  const std::int32_t beyond = mesh_.neighbour(polygon, k);
+  const std::int32_t beyond = mesh_.neighbours(polygon)[k];
   // A polygon whose only way in is this edge leads nowhere unless the goal is in it.
   if (!flood_ && portals_of_[beyond] == 1 && goal_stamp_[beyond] != search_) return;
-  const std::int32_t entry = mesh_.twin(polygon, k);
-  const std::int32_t va = mesh_.vertex(polygon, k), vb = mesh_.vertex(polygon, k + 1);
+  const std::int32_t entry = mesh_.twins(polygon)[k];
+  const std::int32_t va = mesh_.corners(polygon)[k], vb = mesh_.corners(polygon)[k + 1 < mesh_.size(polygon) ? k + 1 : 0];
   const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
   const double eps = mesh_.tolerance(), side = cross(b - a, root - a), reach = eps * eps * dot(b - a, b - a);
   // A root beyond the edge would look back through it: a ray that only touches the edge at an
@@ -130,8 +130,11 @@ void PolygonSearch::expand(std::int32_t index) {
   const std::int32_t lv = mesh_.vertex(Q, j), rv = mesh_.vertex(Q, j + 1);
   const Vec2 A = mesh_.points()[lv], B = mesh_.points()[rv], r = n.root;
   const double eps = mesh_.tolerance();
-  // Q lies left of its edge A -> B; a root not strictly right of it is on the edge.
-  if (cross(B - A, r - A) > -eps * dist(A, B)) return expand_in_view(index, r, n.root_vertex, n.g, Q, j, false);
+  // Q lies left of its edge A -> B; a root not strictly right of it is on the edge (sides
+  // compared squared: no square root).
+  const double side = cross(B - A, r - A);
+  if (side >= 0 || side * side <= eps * eps * dot(B - A, B - A))
+    return expand_in_view(index, r, n.root_vertex, n.g, Q, j, false);
 
   const Vec2 L = n.left, R = n.right;
   const double lr = dist(r, R), ll = dist(r, L);
@@ -154,29 +157,34 @@ void PolygonSearch::expand(std::int32_t index) {
     else if (gl > eps && use_left)
       push_goal(index, A, gL + dist(A, goal_));
   }
+  // Round the far side from the entry edge's right end, each vertex's sides measured once.
   const std::int32_t count = mesh_.size(Q);
-  for (std::int32_t k = j + 1; k < j + count; ++k) {
-    if (mesh_.neighbour(Q, k) < 0) continue;
-    const Vec2 a = mesh_.points()[mesh_.vertex(Q, k)], b = mesh_.points()[mesh_.vertex(Q, k + 1)];
-    // Wholly right of the view with no turn there, or wholly left: nothing to see.
-    const double rb = right_side(b);
-    if (rb < -eps && !use_right) continue;
-    const double la = left_side(a);
-    if (la > eps && !use_left) continue;
-    const double ra = right_side(a), lb = left_side(b);
-    // The part in view: not right of the ray through R, not left of the ray through L. (Each
-    // side is a range of the edge, though not always at its same end: a ray through an end of
-    // the entry edge may run inside Q and meet the far side twice.)
-    const Range seen = nonnegative(ra, rb, eps).meet(nonnegative(-la, -lb, eps));
-    if (seen.lo <= seen.hi + 1e-12) push(index, Q, k, along(a, b, seen.lo), along(a, b, seen.hi), r, n.root_vertex, n.g);
-    if (use_right && std::min(ra, rb) < -eps) {
-      const Range hidden = nonnegative(-ra, -rb, eps);
-      push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), B, rv, gR);
+  const std::int32_t* corner = mesh_.corners(Q);
+  const std::int32_t* beyond = mesh_.neighbours(Q);
+  std::int32_t k = j + 1 < count ? j + 1 : 0;
+  Vec2 a = B;
+  double ra = right_side(a), la = left_side(a);
+  for (std::int32_t step = 1; step < count; ++step) {
+    const std::int32_t next = k + 1 < count ? k + 1 : 0;
+    const Vec2 b = mesh_.points()[corner[next]];
+    const double rb = right_side(b), lb = left_side(b);
+    // Walls, and edges wholly right of the view with no turn there or wholly left: nothing.
+    if (beyond[k] >= 0 && (rb >= -eps || use_right) && (la <= eps || use_left)) {
+      // The part in view: not right of the ray through R, not left of the ray through L. (Each
+      // side is a range of the edge, though not always at its same end: a ray through an end
+      // of the entry edge may run inside Q and meet the far side twice.)
+      const Range seen = nonnegative(ra, rb, eps).meet(nonnegative(-la, -lb, eps));
+      if (seen.lo <= seen.hi + 1e-12) push(index, Q, k, along(a, b, seen.lo), along(a, b, seen.hi), r, n.root_vertex, n.g);
+      if (use_right && std::min(ra, rb) < -eps) {
+        const Range hidden = nonnegative(-ra, -rb, eps);
+        push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), B, rv, gR);
+      }
+      if (use_left && std::max(la, lb) > eps) {
+        const Range hidden = nonnegative(la, lb, eps);
+        push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), A, lv, gL);
+      }
     }
-    if (use_left && std::max(la, lb) > eps) {
-      const Range hidden = nonnegative(la, lb, eps);
-      push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), A, lv, gL);
-    }
+    a = b, ra = rb, la = lb, k = next;
   }
 }
 
