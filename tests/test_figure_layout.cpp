@@ -248,25 +248,27 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
   EXPECT_LT(a.edges, b.edges);
 }
 
-// The interval planner searches a mesh, not a graph: its panel names cells, portals and the
-// intervals expanded, its portals are listed as such, and no vertex/edge comparison with vg is
-// printed (cells are not vertices).
+// The mesh planners search a mesh, not a graph: each panel names cells (rectangles, or convex
+// polygons for polyanya), portals and the intervals expanded, the portals are listed as such,
+// and no vertex/edge comparison with vg is printed (cells are not vertices).
 TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
   const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
-  const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", "interval"});
-  ASSERT_EQ(panels.size(), 2u);
-  FigureLayout layout;
-  const Image img = draw_comparison(w, panels, "vg vs interval", 1800, 640, &layout);
-  keep(img, "layout_vg_interval");
-  test::expect_sound_layout(img, layout, "vg vs interval");
-  EXPECT_TRUE(test::has_legend(layout, "mesh portals"));
-  EXPECT_TRUE(test::has_legend(layout, "graph"));
-  EXPECT_EQ(what_differs(panels[0], panels[1]), "");
-  const auto& st = panels[1].run.plan_stats;
-  const std::string mesh = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals";
-  EXPECT_TRUE(std::any_of(layout.texts.begin(), layout.texts.end(),
-                          [&](const std::string& t) { return t.find(mesh) != std::string::npos; }))
-      << mesh;
+  for (const std::string mesh_planner : {"interval", "polyanya"}) {
+    const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", mesh_planner});
+    ASSERT_EQ(panels.size(), 2u);
+    FigureLayout layout;
+    const Image img = draw_comparison(w, panels, "vg vs " + mesh_planner, 1800, 640, &layout);
+    keep(img, "layout_vg_" + mesh_planner);
+    test::expect_sound_layout(img, layout, "vg vs " + mesh_planner);
+    EXPECT_TRUE(test::has_legend(layout, "mesh portals")) << mesh_planner;
+    EXPECT_TRUE(test::has_legend(layout, "graph")) << mesh_planner;
+    EXPECT_EQ(what_differs(panels[0], panels[1]), "") << mesh_planner;
+    const auto& st = panels[1].run.plan_stats;
+    const std::string mesh = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals";
+    EXPECT_TRUE(std::any_of(layout.texts.begin(), layout.texts.end(),
+                            [&](const std::string& t) { return t.find(mesh) != std::string::npos; }))
+        << mesh;
+  }
 }
 
 // Seed 003 shows its working: the ring search's walks with where each ended, and the letters
