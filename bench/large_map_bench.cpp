@@ -88,7 +88,8 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       int landmarks;
     };
     for (const Method& m : {Method{"vg", "vg", 0}, Method{"interval", "interval", 0},
-                            Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0}}) {
+                            Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0},
+                            Method{"polyanya_16_landmarks", "polyanya", 16}}) {
       const std::string method = m.label;
       in.landmarks = m.landmarks;
       reset_peak_memory();
