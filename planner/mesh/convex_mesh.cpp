@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <queue>
 
@@ -263,15 +264,15 @@ void ConvexMesh::mark_corners() {
       for (std::size_t steps = 0; steps <= corner_.size(); ++steps) {
         const Vec2 a = points_[vertex(q, i - 1)], b = points_[vertex(q, i + 1)];
         double turn = std::atan2((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x), (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y));
-        if (turn < 0) turn += 2 * M_PI;
-        angle += 2 * M_PI - turn;  // the polygon's interior angle at the vertex
+        if (turn < 0) turn += 2 * std::numbers::pi;
+        angle += 2 * std::numbers::pi - turn;  // the polygon's interior angle at the vertex
         const std::int32_t next = neighbour(q, i);
         if (next < 0) break;
         i = twin(q, i) + 1;  // in `next`, the edge runs from corner twin + 1 (this vertex)
         q = next;
         if (q == p && i % size(q) == k) break;
       }
-      if (angle > M_PI + 1e-9) corner_flag_[v] = true;
+      if (angle > std::numbers::pi + 1e-9) corner_flag_[v] = true;
       ++wedges[v];
     }
   for (std::size_t v = 0; v < points_.size(); ++v) pinch_flag_[v] = wedges[v] > 1;
