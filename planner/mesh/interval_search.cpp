@@ -2,6 +2,8 @@
 // on a line x = const and projecting it across a cell is one division per end.
 #include "planner/mesh/interval_search.h"
 
+#include "planner/mesh/landmarks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -236,23 +238,13 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
     set_goal_bounds(first.front(), start);
     const std::vector<double> start_low = goal_low_, start_high = goal_high_;
     set_goal_bounds(last.front(), goal);
-    start_bound_ = 0;
-    if (!mesh_.is_pinch(start))
-      for (int k = 0; k < landmarks_; ++k)
-        if (std::isfinite(start_low[k]) && std::isfinite(goal_low_[k]))
-          start_bound_ = std::max({start_bound_, goal_low_[k] - start_high[k], start_low[k] - goal_high_[k]});
-    start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
+    start_bound_ = mesh_.is_pinch(start) ? 0
+                                         : planner::landmark_bound(start_low.data(), start_high.data(), goal_low_,
+                                                                   goal_high_, mesh_.tolerance());
   }
   queue_source(start, first);  // the start, as the first root
   const std::int32_t reached = run(out.expanded);
-  if (reached >= 0) {
-    out.found = true;
-    out.path.push_back(goal);
-    for (std::int32_t i = reached; i >= 0; i = nodes_[i].parent)
-      if (!(nodes_[i].root == out.path.back())) out.path.push_back(nodes_[i].root);
-    std::reverse(out.path.begin(), out.path.end());
-  }
-  out.generated = static_cast<std::int64_t>(nodes_.size());
+  read_back(nodes_, reached, goal, out);
   return out;
 }
 
@@ -342,37 +334,16 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
 void IntervalSearch::add_landmarks(int count) {
   const auto& cells = mesh_.cells();
   if (cells.empty() || count <= 0) return;
-  const std::size_t corners = 4 * cells.size();
-  // Filled landmark by landmark in place (landmark-minor, `count` wide), then closed up if
-  // fewer were found: no second copy of the table is ever held.
-  corner_distance_.assign(corners * count, kUnknown);
-  std::vector<double> nearest(corners, std::numeric_limits<double>::infinity());
-  std::vector<bool> pinch(corners);
-  for (std::size_t i = 0; i < corners; ++i) {
+  const auto corner_point = [&](std::size_t i) {
     const MeshCell& c = cells[i / 4];
-    pinch[i] = mesh_.is_pinch({i % 2 ? c.xhi : c.xlo, i % 4 >= 2 ? c.yhi : c.ylo});
-  }
-  std::size_t next = 0;  // cell 0's lower left corner first
-  int found = 0;
-  while (found < count) {
-    const MeshCell& c = cells[next / 4];
-    const Vec2 source{next % 2 ? c.xhi : c.xlo, next % 4 >= 2 ? c.yhi : c.ylo};
-    const std::vector<double> from = distances_to_corners(source);
-    // The next landmark: the reachable corner farthest from every landmark so far.
-    double far = 0;
-    for (std::size_t i = 0; i < corners; ++i) {
-      // Unreachable, or a pinch (whose distance depends on the side it is reached from): NaN.
-      if (std::isfinite(from[i]) && !pinch[i]) corner_distance_[i * count + found] = from[i];
-      nearest[i] = std::min(nearest[i], from[i]);
-      if (std::isfinite(nearest[i]) && nearest[i] > far) far = nearest[i], next = i;
-    }
-    ++found;
-    if (far == 0) break;
-  }
-  landmarks_ = found;
-  for (std::size_t i = 0; i < corners; ++i)
-    for (int k = 0; k < landmarks_; ++k) corner_distance_[i * landmarks_ + k] = corner_distance_[i * count + k];
-  corner_distance_.resize(corners * landmarks_);
+    return Vec2{i % 2 ? c.xhi : c.xlo, i % 4 >= 2 ? c.yhi : c.ylo};
+  };
+  // Cell 0's lower left corner first.
+  LandmarkTable table = measure_landmarks(
+      count, 4 * cells.size(), 0, [&](std::size_t i) { return distances_to_corners(corner_point(i)); },
+      [&](std::size_t i) { return mesh_.is_pinch(corner_point(i)); });
+  landmarks_ = table.landmarks;
+  corner_distance_ = std::move(table.distance);
   // A portal's end is a corner of the cell on one side or the other (or both).
   const auto& portals = mesh_.portals();
   end_distance_.assign(2 * portals.size() * landmarks_, 0);
@@ -412,15 +383,8 @@ void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
 double IntervalSearch::landmark_bound(std::int32_t root_vertex) const {
   if (!use_landmarks_) return 0;
   if (root_vertex < 0) return start_bound_;
-  double h = 0;
   const double* d = &end_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
-  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
-  for (int k = 0; k < landmarks_; ++k) {
-    const double a = goal_low_[k] - d[k], b = d[k] - goal_high_[k];
-    h = a > h ? a : h;
-    h = b > h ? b : h;
-  }
-  return h > 0 ? h * (1 - 1e-12) - mesh_.tolerance() : 0;
+  return planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
 }
 
 }  // namespace plantsim::planner

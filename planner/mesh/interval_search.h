@@ -12,15 +12,9 @@
 #include <vector>
 
 #include "planner/mesh/free_space_mesh.h"
+#include "planner/mesh/interval_path.h"
 
 namespace plantsim::planner {
-
-struct IntervalPath {
-  bool found = false;
-  std::vector<Vec2> path;  ///< start .. goal, the corners it turns at between
-  std::int64_t expanded = 0;
-  std::int64_t generated = 0;
-};
 
 class IntervalSearch {
  public:

@@ -2,6 +2,8 @@
 // unit direction), so the one tolerance of the mesh, a length, decides every "on the line".
 #include "planner/mesh/polygon_search.h"
 
+#include "planner/mesh/landmarks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -247,25 +249,16 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   if (use_landmarks_) {
     bound_landmark_distances(last, goal, goal_low_, goal_high_);
     bound_landmark_distances(first, start, start_low_, start_high_);
-    start_bound_ = 0;
-    if (!at_pinch(first, start))
-      for (int k = 0; k < landmarks_; ++k)  // NaN (unknown) compares false: no bound from it
-        start_bound_ = std::max({start_bound_, goal_low_[k] - start_high_[k], start_low_[k] - goal_high_[k]});
-    start_bound_ = start_bound_ > 0 ? start_bound_ * (1 - 1e-12) - mesh_.tolerance() : 0;
+    start_bound_ = at_pinch(first, start) ? 0
+                                          : planner::landmark_bound(start_low_.data(), start_high_.data(), goal_low_,
+                                                                    goal_high_, mesh_.tolerance());
   }
   nodes_.push_back({-1, -1, {}, {}, start, -1, -1, 0});
   fresh_.clear();
   for (const std::int32_t p : first) expand_in_view(0, start, -1, 0, p, -1, true);
   queue_fresh();
   const std::int32_t reached = run(out.expanded);
-  if (reached >= 0) {
-    out.found = true;
-    out.path.push_back(goal);
-    for (std::int32_t i = reached; i >= 0; i = nodes_[i].parent)
-      if (!(nodes_[i].root == out.path.back())) out.path.push_back(nodes_[i].root);
-    std::reverse(out.path.begin(), out.path.end());
-  }
-  out.generated = static_cast<std::int64_t>(nodes_.size());
+  read_back(nodes_, reached, goal, out);
   return out;
 }
 
@@ -324,30 +317,13 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
 }
 
 void PolygonSearch::add_landmarks(int count) {
-  const std::size_t vertices = mesh_.points().size();
   if (mesh_.polygon_count() == 0 || count <= 0) return;
-  // Filled landmark by landmark in place (`count` wide), closed up if fewer were found.
-  vertex_distance_.assign(vertices * count, std::numeric_limits<double>::quiet_NaN());
-  std::vector<double> nearest(vertices, std::numeric_limits<double>::infinity());
-  std::int32_t next = mesh_.vertex(0, 0);
-  int found = 0;
-  while (found < count) {
-    const std::vector<double> from = distances_to_vertices(mesh_.points()[next]);
-    // The next landmark: the reachable vertex farthest from every landmark so far.
-    double far = 0;
-    for (std::size_t v = 0; v < vertices; ++v) {
-      // A pinch's distance depends on the side it is reached from: no bound is taken from it.
-      if (std::isfinite(from[v]) && !mesh_.is_pinch(static_cast<std::int32_t>(v))) vertex_distance_[v * count + found] = from[v];
-      nearest[v] = std::min(nearest[v], from[v]);
-      if (std::isfinite(nearest[v]) && nearest[v] > far) far = nearest[v], next = static_cast<std::int32_t>(v);
-    }
-    ++found;
-    if (far == 0) break;
-  }
-  landmarks_ = found;
-  for (std::size_t v = 0; v < vertices; ++v)
-    for (int k = 0; k < landmarks_; ++k) vertex_distance_[v * landmarks_ + k] = vertex_distance_[v * count + k];
-  vertex_distance_.resize(vertices * landmarks_);
+  LandmarkTable table = measure_landmarks(
+      count, mesh_.points().size(), static_cast<std::size_t>(mesh_.vertex(0, 0)),
+      [&](std::size_t v) { return distances_to_vertices(mesh_.points()[v]); },
+      [&](std::size_t v) { return mesh_.is_pinch(static_cast<std::int32_t>(v)); });
+  landmarks_ = table.landmarks;
+  vertex_distance_ = std::move(table.distance);
 }
 
 // Each landmark's distance to p lies within its distance to a vertex of a (convex) polygon
@@ -384,15 +360,8 @@ void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& po
 double PolygonSearch::landmark_bound(std::int32_t root_vertex) const {
   if (!use_landmarks_) return 0;
   if (root_vertex < 0) return start_bound_;
-  double h = 0;
   const double* d = &vertex_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
-  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
-  for (int k = 0; k < landmarks_; ++k) {
-    const double a = goal_low_[k] - d[k], b = d[k] - goal_high_[k];
-    h = a > h ? a : h;
-    h = b > h ? b : h;
-  }
-  return h > 0 ? h * (1 - 1e-12) - mesh_.tolerance() : 0;
+  return planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
 }
 
 }  // namespace plantsim::planner

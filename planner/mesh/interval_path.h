@@ -1,0 +1,34 @@
+// What an interval search answers (both meshes'), and how its path is read back from the
+// search's nodes: each node keeps its root and its parent, so the path is the roots from the
+// goal's node back to the start's, each turn once.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::planner {
+
+struct IntervalPath {
+  bool found = false;
+  std::vector<geom::Vec2> path;  ///< start .. goal, the corners it turns at between
+  std::int64_t expanded = 0;
+  std::int64_t generated = 0;
+};
+
+/// Fills `out` from the node `reached` (the goal's; -1: none was) back through its parents.
+template <typename Node>
+void read_back(const std::vector<Node>& nodes, std::int32_t reached, geom::Vec2 goal, IntervalPath& out) {
+  if (reached >= 0) {
+    out.found = true;
+    out.path.push_back(goal);
+    for (std::int32_t i = reached; i >= 0; i = nodes[i].parent)
+      if (!(nodes[i].root == out.path.back())) out.path.push_back(nodes[i].root);
+    std::reverse(out.path.begin(), out.path.end());
+  }
+  out.generated = static_cast<std::int64_t>(nodes.size());
+}
+
+}  // namespace plantsim::planner
