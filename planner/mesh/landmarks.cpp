@@ -1,4 +1,4 @@
-// Landmarks: farthest-point choice, the table filled in place, and the ALT bound.
+// Landmarks: the farthest-point choice, the table filled in place.
 #include "planner/mesh/landmarks.h"
 
 #include <algorithm>
@@ -33,18 +33,6 @@ LandmarkTable measure_landmarks(int count, std::size_t points, std::size_t first
     for (int k = 0; k < out.landmarks; ++k) out.distance[i * out.landmarks + k] = out.distance[i * count + k];
   out.distance.resize(points * out.landmarks);
   return out;
-}
-
-double landmark_bound(const double* low, const double* high, const std::vector<double>& goal_low,
-                      const std::vector<double>& goal_high, double tolerance) {
-  double h = 0;
-  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
-  for (std::size_t k = 0; k < goal_low.size(); ++k) {
-    const double a = goal_low[k] - high[k], b = low[k] - goal_high[k];
-    h = a > h ? a : h;
-    h = b > h ? b : h;
-  }
-  return h > 0 ? h * (1 - 1e-12) - tolerance : 0;
 }
 
 }  // namespace plantsim::planner

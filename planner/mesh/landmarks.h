@@ -27,7 +27,17 @@ LandmarkTable measure_landmarks(int count, std::size_t points, std::size_t first
 /// lies in [low[k], high[k]] and the goal, whose lies in [goal_low[k], goal_high[k]]: the most
 /// of goal_low - high and low - goal_high over the landmarks (NaN bounds give nothing), a hair
 /// less, so that rounding never makes it overestimate.
-double landmark_bound(const double* low, const double* high, const std::vector<double>& goal_low,
-                      const std::vector<double>& goal_high, double tolerance);
+/// Inline: the searches call it for every node they queue.
+inline double landmark_bound(const double* low, const double* high, const std::vector<double>& goal_low,
+                             const std::vector<double>& goal_high, double tolerance) {
+  double h = 0;
+  // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.
+  for (std::size_t k = 0; k < goal_low.size(); ++k) {
+    const double a = goal_low[k] - high[k], b = low[k] - goal_high[k];
+    h = a > h ? a : h;
+    h = b > h ? b : h;
+  }
+  return h > 0 ? h * (1 - 1e-12) - tolerance : 0;
+}
 
 }  // namespace plantsim::planner
