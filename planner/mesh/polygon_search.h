@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "planner/mesh/convex_mesh.h"
-#include "planner/mesh/interval_search.h"
+#include "planner/mesh/interval_path.h"
 
 namespace plantsim::planner {
 
