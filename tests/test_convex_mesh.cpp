@@ -8,6 +8,8 @@
 
 #include "planner/mesh/convex_mesh.h"
 #include "planner/mesh/free_space_mesh.h"
+#include "planner/mesh/interval_search.h"
+#include "planner/mesh/polygon_search.h"
 
 namespace plantsim::planner {
 namespace {
@@ -114,6 +116,44 @@ TEST(ConvexMesh, PinchesAndSlitsShareNoEdgeAndCornersAreWherePathsBend) {
   ASSERT_FALSE(above.empty());
   for (const std::int32_t p : below)
     for (const std::int32_t q : above) EXPECT_NE(p, q);
+}
+
+// Rows of small boxes along a corridor (brackets along a tunnel wall): the corridor between the
+// rows is convex, thousands of collinear corners long. Merged whole, it made building the mesh
+// quadratic; polygons stay within kMaxCorners, and paths through the gaps keep their lengths.
+TEST(ConvexMesh, ACombOfBoxesMakesNoGiantPolygon) {
+  std::vector<Rect> brackets;
+  const int per_row = 400;
+  for (int i = 0; i < per_row; ++i) {
+    const double x = 2 + 2 * i;
+    brackets.push_back({x, 1, x + 1, 2});
+    brackets.push_back({x, 10, x + 1, 11});
+  }
+  const double length = 2 * per_row + 4;
+  const FreeSpaceMesh rectangles(brackets, {0, 0, length, 12});
+  const ConvexMesh m(rectangles);
+  expect_sound(rectangles, m, "comb");
+  std::int32_t largest = 0;
+  for (std::int32_t p = 0; p < m.polygon_count(); ++p) largest = std::max(largest, m.size(p));
+  // Whole, the corridor would be one polygon of some 1,600 corners.
+  EXPECT_LE(largest, ConvexMesh::kMaxCorners);
+  EXPECT_LE(largest, 64);
+  EXPECT_GT(largest, 8) << "the corridor should still be cut into large polygons";
+
+  PolygonSearch polygons(m);
+  IntervalSearch cells(rectangles);
+  for (const auto& [from, to] : {std::pair{Vec2{1, 0.5}, Vec2{40.5, 11.5}}, std::pair{Vec2{30.5, 0.5}, Vec2{length - 1, 6}},
+                                 std::pair{Vec2{1.5, 6}, Vec2{length - 1.5, 11.5}}, std::pair{Vec2{99.5, 1.5}, Vec2{7.5, 10.5}}}) {
+    const IntervalPath a = polygons.find(from, to), b = cells.find(from, to);
+    ASSERT_TRUE(a.found) << from.x << " " << from.y << " -> " << to.x << " " << to.y;
+    ASSERT_TRUE(b.found);
+    const auto length_of = [](const IntervalPath& r) {
+      double sum = 0;
+      for (std::size_t i = 1; i < r.path.size(); ++i) sum += std::hypot(r.path[i].x - r.path[i - 1].x, r.path[i].y - r.path[i - 1].y);
+      return sum;
+    };
+    EXPECT_NEAR(length_of(a), length_of(b), 1e-9 * length_of(b)) << from.x << " " << from.y << " -> " << to.x << " " << to.y;
+  }
 }
 
 }  // namespace

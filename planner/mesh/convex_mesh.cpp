@@ -1,6 +1,7 @@
 // The convex mesh: walls from the rectangle mesh, CGAL's constrained Delaunay triangulation of
 // them, the free triangles kept, then merged across their shared edges, the pair whose union
-// is largest first, as long as the union stays convex (the "M-CDT" of Polyanya's authors).
+// is largest first, as long as the union stays convex and has at most kMaxCorners corners (the
+// "M-CDT" of Polyanya's authors, with a bound on a polygon's size theirs does not have).
 #include "planner/mesh/convex_mesh.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -105,6 +106,7 @@ class Merger {
     for (int k = 0; k < n; ++k)
       if (P.beyond[k] >= 0 && owner(P.beyond[k]) == b) i = k, ++shared;
     if (shared != 1) return false;  // none, or a boundary of several edges in a row: left apart
+    if (n + m - 2 > ConvexMesh::kMaxCorners) return false;
     const std::int32_t u = P.corner[i], v = P.corner[(i + 1) % n];
     int j = -1;
     for (int k = 0; k < m; ++k)

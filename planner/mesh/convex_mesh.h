@@ -17,6 +17,13 @@ namespace plantsim::planner {
 
 class ConvexMesh {
  public:
+  /// The most corners a merged polygon may have. Without a bound, a wall of many small
+  /// obstacles in a row (a comb: brackets along a tunnel) makes one polygon of thousands of
+  /// collinear corners: merging it is quadratic (8,000 rectangles: 104 s, 1.1 GB) and every
+  /// search step into it walks all its edges. At 32 the benchmark maps' polygons stay as they
+  /// were (BigGameHunters' largest has 47 corners; its search expands 0.1 % more nodes).
+  static constexpr int kMaxCorners = 32;
+
   /// The same free floor as `rectangles`, cut into convex polygons.
   explicit ConvexMesh(const FreeSpaceMesh& rectangles);
 
