@@ -61,6 +61,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     std::string inflation = "square";
     bool snap = false;
     int landmarks = 0;
+    int search_memory_mb = static_cast<int>(planner::kSearchMemoryBudgetBytes >> 20);
     std::string map, scen, goal;
   };
   auto opt = std::make_shared<Options>();
@@ -88,6 +89,11 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "landmarks x mesh cells may not pass " +
                       std::to_string(planner::kLandmarkCellBudget) + " (refused, with the most the map allows)")
       ->check(CLI::Range(0, 64));
+  cmd->add_option("--search-memory-mb", opt->search_memory_mb,
+                  "Planners vg, interval, polyanya: a query whose search holds more than this (MiB) stops with status "
+                  "\"search limit\" and exit 1 (default " +
+                      std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
+      ->check(CLI::Range(1, 1 << 20));
   cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
@@ -104,6 +110,7 @@ std::function<int()> add_plan_command(CLI::App& app) {
     input.corner_steps = opt->corner_steps;
     input.snap_to_free = opt->snap;
     input.landmarks = opt->landmarks;
+    input.search_budget_bytes = static_cast<std::size_t>(opt->search_memory_mb) << 20;
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     if (opt->inflation == "round") {
       if (opt->planner != "vg" && opt->planner != "vg-round")

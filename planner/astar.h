@@ -3,6 +3,7 @@
 // caller, so graphs whose edges are expensive to find are only explored where the search goes.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <algorithm>
 #include <functional>
@@ -21,6 +22,7 @@ struct SearchResult {
   bool found = false;
   double cost = std::numeric_limits<double>::infinity();
   std::vector<std::int32_t> nodes;  ///< start .. goal
+  std::size_t over_budget_bytes = 0;  ///< not 0: the search stopped there, past its memory budget
   SearchStats stats;
 };
 

@@ -19,6 +19,7 @@ std::string_view to_string(PlanStatus s) {
     case PlanStatus::kNoPath: return "no path";
     case PlanStatus::kStartBlocked: return "start blocked";
     case PlanStatus::kGoalBlocked: return "goal blocked";
+    case PlanStatus::kSearchLimit: return "search limit";
   }
   return "unknown";
 }

@@ -13,6 +13,7 @@
 
 #include "geometry/vec2.h"
 #include "planner/coverage/coverage_params.h"
+#include "planner/search_budget.h"
 #include "worlds/world.h"
 
 namespace plantsim::planner {
@@ -20,7 +21,8 @@ namespace plantsim::planner {
 using geom::Rect;
 using geom::Vec2;
 
-enum class PlanStatus { kOk, kNoPath, kStartBlocked, kGoalBlocked };
+/// kSearchLimit: the search outgrew its memory budget (planner/search_budget.h); the note says why.
+enum class PlanStatus { kOk, kNoPath, kStartBlocked, kGoalBlocked, kSearchLimit };
 std::string_view to_string(PlanStatus s);
 
 struct PlanStats {
@@ -67,6 +69,7 @@ struct PlannerInput {
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   int landmarks = 0;            ///< planner interval: landmarks for its ALT heuristic (0: none)
+  std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;  ///< vg, interval, polyanya: a query stops there (kSearchLimit)
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
   std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
   CoverageParams coverage;       ///< seed 004's cell size, weights and network constants

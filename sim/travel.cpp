@@ -23,7 +23,9 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
       if (re.start_snapped) path.insert(path.begin(), from.position());
       return path;
     }
-    if (re.status == planner::PlanStatus::kNoPath) return std::nullopt;
+    // No path, or a search past its budget (a rebuild would search as far): no replan.
+    if (re.status != planner::PlanStatus::kStartBlocked && re.status != planner::PlanStatus::kGoalBlocked)
+      return std::nullopt;
     // Start or goal blocked on the map itself (shoved into a margin): the rebuild snaps them.
   }
   planner::PlannerInput again = planner::planner_input(map, true);

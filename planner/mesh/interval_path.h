@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -16,7 +17,14 @@ struct IntervalPath {
   std::vector<geom::Vec2> path;  ///< start .. goal, the corners it turns at between
   std::int64_t expanded = 0;
   std::int64_t generated = 0;
+  std::size_t over_budget_bytes = 0;  ///< not 0: the search stopped there, past its memory budget
 };
+
+/// What a search's nodes and queue hold, in bytes (their capacity: what was allocated).
+template <typename Node, typename Entry>
+std::size_t held_bytes(const std::vector<Node>& nodes, const std::vector<Entry>& open) {
+  return nodes.capacity() * sizeof(Node) + open.capacity() * sizeof(Entry);
+}
 
 /// Fills `out` from the node `reached` (the goal's; -1: none was) back through its parents.
 template <typename Node>

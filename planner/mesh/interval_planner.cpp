@@ -33,7 +33,8 @@ void IntervalPlanner::check_landmark_budget(int landmarks, std::size_t cells) co
 IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     : build_start_(std::chrono::steady_clock::now()),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
-      snap_(input.snap_to_free) {
+      snap_(input.snap_to_free),
+      budget_bytes_(input.search_budget_bytes) {
   if (input.landmarks < 0 || input.landmarks > 64)
     throw std::invalid_argument(std::string(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval") +
                                 ": landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
@@ -42,6 +43,7 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     // Both sweeps have the same walls, so the polygons do not depend on which one is cut.
     convex_ = std::make_unique<ConvexMesh>(*mesh_);
     polygon_search_ = std::make_unique<PolygonSearch>(*convex_);
+    polygon_search_->set_memory_budget(budget_bytes_);
     check_landmark_budget(input.landmarks, static_cast<std::size_t>(convex_->polygon_count()));
     polygon_search_->add_landmarks(input.landmarks);
     build_ms_ = util::ms_since(build_start_);
@@ -56,6 +58,7 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     transposed_ = true;
   }
   search_ = std::make_unique<IntervalSearch>(*mesh_);
+  search_->set_memory_budget(budget_bytes_);
   check_landmark_budget(input.landmarks, mesh_->cells().size());
   search_->add_landmarks(input.landmarks);
   build_ms_ = util::ms_since(build_start_);
@@ -67,7 +70,8 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
   if (usable_endpoints(map_, snap_, start, goal, out)) {
     const Vec2 from = transposed_ ? swapped(start) : start, to = transposed_ ? swapped(goal) : goal;
     const IntervalPath found = convex_ ? polygon_search_->find(from, to) : search_->find(from, to);
-    out.status = found.found ? PlanStatus::kOk : PlanStatus::kNoPath;
+    out.status = found.found ? PlanStatus::kOk : found.over_budget_bytes > 0 ? PlanStatus::kSearchLimit : PlanStatus::kNoPath;
+    if (found.over_budget_bytes > 0) out.note = search_limit_note(name(), budget_bytes_, found.over_budget_bytes, "intervals and their queue");
     out.path = found.path;
     if (transposed_)
       for (Vec2& p : out.path) p = swapped(p);

@@ -48,6 +48,7 @@ class IntervalPlanner : public Planner {
   std::unique_ptr<PolygonSearch> polygon_search_;
   bool transposed_ = false;  // the mesh is of the world with x and y swapped
   bool snap_ = false;
+  std::size_t budget_bytes_;
   double build_ms_ = 0;
 };
 

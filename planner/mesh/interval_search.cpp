@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace plantsim::planner {
 namespace {
@@ -188,8 +189,12 @@ void IntervalSearch::expand(std::int32_t index) {
 }
 
 // A* until the goal is popped (its node's index) or the queue runs dry (-1).
-std::int32_t IntervalSearch::run(std::int64_t& expanded) {
+std::int32_t IntervalSearch::run(IntervalPath& out) {
   while (!open_.empty()) {
+    if (const std::size_t bytes = held_bytes(nodes_, open_); bytes > budget_bytes_) {
+      out.over_budget_bytes = bytes;
+      return -1;
+    }
     std::pop_heap(open_.begin(), open_.end());
     const Entry e = open_.back();
     open_.pop_back();
@@ -197,7 +202,7 @@ std::int32_t IntervalSearch::run(std::int64_t& expanded) {
     if (n.portal == -1) return e.node;
     // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
     if (n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g) continue;
-    expand_and_queue(e.node, expanded);
+    expand_and_queue(e.node, out.expanded);
   }
   return -1;
 }
@@ -243,7 +248,7 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
                                                                    goal_high_, mesh_.tolerance());
   }
   queue_source(start, first);  // the start, as the first root
-  const std::int32_t reached = run(out.expanded);
+  const std::int32_t reached = run(out);
   read_back(nodes_, reached, goal, out);
   return out;
 }
@@ -324,9 +329,12 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
   flood_ = &at_point;
   begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal in no cell
   queue_source(source, first);
-  std::int64_t expanded = 0;
-  run(expanded);
+  IntervalPath flood;
+  run(flood);
   flood_ = nullptr;
+  // Distances cut short would bound too high: the landmarks cannot be had on this map.
+  if (flood.over_budget_bytes > 0)
+    throw std::invalid_argument(search_limit_note("interval landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = at_point[point_of_corner_[i]];
   return out;
 }

@@ -13,6 +13,7 @@
 
 #include "planner/mesh/free_space_mesh.h"
 #include "planner/mesh/interval_path.h"
+#include "planner/search_budget.h"
 
 namespace plantsim::planner {
 
@@ -25,6 +26,8 @@ class IntervalSearch {
   /// also the landmarks' lower bound |d(L, goal) - d(L, root)| (ALT, Goldberg and Harrelson
   /// 2005), which sees the detours the straight line does not; answers are unchanged.
   void add_landmarks(int count);
+  /// A query whose nodes and queue pass this many bytes stops, unanswered (over_budget_bytes).
+  void set_memory_budget(std::size_t bytes) { budget_bytes_ = bytes; }
   int landmark_count() const { return landmarks_; }
   /// Exact shortest distance from `source` to every cell corner (4 per cell: x low y low, x high
   /// y low, x low y high, x high y high), infinity where unreachable: a search with no goal.
@@ -72,7 +75,9 @@ class IntervalSearch {
   void number_points();
   template <typename F>
   void for_each_point(std::int32_t cell, F&& f) const;
-  std::int32_t run(std::int64_t& expanded);
+  /// The goal's node, or -1: none reached, or the search passed its memory budget (then
+  /// `out.over_budget_bytes` says how far).
+  std::int32_t run(IntervalPath& out);
   std::int32_t other_side(std::int32_t portal, std::int32_t cell) const;
 
   const FreeSpaceMesh& mesh_;
@@ -87,6 +92,7 @@ class IntervalSearch {
   std::vector<Arrival> best_;          // per portal end (2 * portal + end)
   std::vector<std::uint32_t> stamp_;   // which search best_ holds
   std::uint32_t search_ = 0;
+  std::size_t budget_bytes_ = kSearchMemoryBudgetBytes;
   // Landmarks: distances from each to every cell corner and portal end, landmark-minor.
   int landmarks_ = 0;
   bool use_landmarks_ = false;  // this query: landmarks, and the goal not at a pinch

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace plantsim::planner {
 using geom::cross;
@@ -199,8 +200,13 @@ void PolygonSearch::queue_fresh() {
   }
 }
 
-std::int32_t PolygonSearch::run(std::int64_t& expanded) {
+std::int32_t PolygonSearch::run(IntervalPath& out) {
+  std::int64_t& expanded = out.expanded;
   while (!open_.empty()) {
+    if (const std::size_t bytes = held_bytes(nodes_, open_); bytes > budget_bytes_) {
+      out.over_budget_bytes = bytes;
+      return -1;
+    }
     std::pop_heap(open_.begin(), open_.end());
     const Entry e = open_.back();
     open_.pop_back();
@@ -257,7 +263,7 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   fresh_.clear();
   for (const std::int32_t p : first) expand_in_view(0, start, -1, 0, p, -1, true);
   queue_fresh();
-  const std::int32_t reached = run(out.expanded);
+  const std::int32_t reached = run(out);
   read_back(nodes_, reached, goal, out);
   return out;
 }
@@ -310,9 +316,12 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
   fresh_.clear();
   for (const std::int32_t p : first) expand_in_view(0, source, -1, 0, p, -1, true);
   queue_fresh();
-  std::int64_t expanded = 0;
-  run(expanded);
+  IntervalPath flood;
+  run(flood);
   flood_ = nullptr;
+  // Distances cut short would bound too high: the landmarks cannot be had on this map.
+  if (flood.over_budget_bytes > 0)
+    throw std::invalid_argument(search_limit_note("polyanya landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
   return out;
 }
 

@@ -12,6 +12,7 @@
 
 #include "planner/mesh/convex_mesh.h"
 #include "planner/mesh/interval_path.h"
+#include "planner/search_budget.h"
 
 namespace plantsim::planner {
 
@@ -23,6 +24,8 @@ class PolygonSearch {
   /// before), the exact distance from each to every mesh vertex stored, and their (ALT) lower
   /// bound taken in the heuristic as well. Answers are unchanged.
   void add_landmarks(int count);
+  /// A query whose nodes and queue pass this many bytes stops, unanswered (over_budget_bytes).
+  void set_memory_budget(std::size_t bytes) { budget_bytes_ = bytes; }
   int landmark_count() const { return landmarks_; }
   /// Exact shortest distance from `source` to every mesh vertex, infinity where unreachable: a
   /// search with no goal.
@@ -64,7 +67,9 @@ class PolygonSearch {
   void record_in_view(std::int32_t polygon, Vec2 r, double g);
   void begin(Vec2 goal);
   void queue_fresh();
-  std::int32_t run(std::int64_t& expanded);
+  /// The goal's node, or -1: none reached, or the search passed its memory budget (then
+  /// `out.over_budget_bytes` says how far).
+  std::int32_t run(IntervalPath& out);
 
   const ConvexMesh& mesh_;
   std::vector<std::int32_t> portals_of_;  // per polygon, its edges with a polygon beyond
@@ -82,6 +87,7 @@ class PolygonSearch {
   std::vector<double>* flood_ = nullptr;  // while measuring distances: per vertex
   std::vector<std::uint32_t> stamp_;
   std::uint32_t search_ = 0;
+  std::size_t budget_bytes_ = kSearchMemoryBudgetBytes;
 };
 
 }  // namespace plantsim::planner

@@ -7,6 +7,7 @@
 
 #include "geometry/polyline.h"
 #include "geometry/predicates.h"
+#include "planner/search_budget.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -108,7 +109,12 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
   open.push({geom::distance(start, goal), 0.0, s, -1, kUntested});
   std::vector<GraphEdge> from_point;
   std::int64_t expanded = 0;
+  std::size_t over_budget_bytes = 0;
   while (!open.empty()) {
+    if (const std::size_t bytes = graph.candidate_bytes() + open.size() * sizeof(Entry); bytes > base.input().search_budget_bytes) {
+      over_budget_bytes = bytes;
+      break;
+    }
     const Entry e = open.top();
     open.pop();
     if (closed[e.node]) continue;
@@ -154,7 +160,10 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
   }
   out.stats.expanded = expanded;
   out.stats.vertices = n + m;
-  if (!closed[g]) {
+  if (over_budget_bytes > 0) {
+    out.status = PlanStatus::kSearchLimit;
+    out.note = search_limit_note("vg (replanning round sensed obstacles)", base.input().search_budget_bytes, over_budget_bytes, "candidate edges and the queue");
+  } else if (!closed[g]) {
     out.status = PlanStatus::kNoPath;
   } else {
     out.status = PlanStatus::kOk;

@@ -14,6 +14,7 @@
 #include "planner/astar.h"
 #include "planner/free_point.h"
 #include "planner/inflation.h"
+#include "planner/search_budget.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -84,6 +85,10 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
     points.push_back(start);
     points.push_back(goal);
     fill_path(found, points, out);
+    if (found.over_budget_bytes > 0) {
+      out.status = PlanStatus::kSearchLimit;
+      out.note = search_limit_note(name(), input_.search_budget_bytes, found.over_budget_bytes, "candidate edges and the queue");
+    }
     out.stats.expanded = found.stats.expanded;
   }
   out.stats.build_ms = build_ms_;
@@ -135,6 +140,11 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   open.push({geom::distance(start, goal), 0.0, s, -1, kUntested});
   std::vector<GraphEdge> from_start;
   while (!open.empty()) {
+    // The graph kept across queries counts too: it is what this query's candidates grow.
+    if (const std::size_t bytes = graph_.candidate_bytes() + open.size() * sizeof(Entry); bytes > input_.search_budget_bytes) {
+      result.over_budget_bytes = bytes;
+      break;
+    }
     const Entry e = open.top();
     open.pop();
     if (closed[e.node]) continue;

@@ -82,6 +82,10 @@ class VisibilityGraph {
 
   std::int64_t edges_found() const { return edges_found_; }
   std::int64_t candidates_gathered() const { return candidates_gathered_; }
+  /// What the candidates gathered so far take (each edge and its verdict), in bytes.
+  std::size_t candidate_bytes() const {
+    return static_cast<std::size_t>(candidates_gathered_) * (sizeof(GraphEdge) + sizeof(std::int8_t));
+  }
   std::int64_t segment_tests() const { return segment_tests_; }
 
  private:
