@@ -17,11 +17,12 @@
 namespace plantsim::app {
 namespace {
 
-// One line per scenario: "sx sy gx gy length" (-1 when there is no path). The visibility
+// One line per scenario: "sx sy gx gy length" (-1 when there is no path; a query whose search
+// passed its memory budget also says so on stderr, and the command exits 1). The visibility
 // graph answers any-angle queries between lattice points (cell corners, the Polyanya
 // convention); the grid planner answers octile queries between cell centres (MovingAI's).
 int plan_scenarios(const std::string& map_path, const std::string& scen_path, const std::string& planner_name,
-                   int landmarks) {
+                   int landmarks, std::size_t search_budget_bytes) {
   const worlds::GridMap map = worlds::load_movingai_map(map_path);
   const auto scenarios = worlds::load_movingai_scenarios(scen_path);
   std::unique_ptr<planner::Planner> vg;
@@ -31,13 +32,19 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path, co
     in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
     in.inflation_m = 0;
     in.landmarks = landmarks;
+    in.search_budget_bytes = search_budget_bytes;
     vg = planner::make_planner(planner_name, in);
   }
+  int exit_code = kExitOk;
   for (const auto& s : scenarios) {
     double length = -1;
     if (vg) {
       const auto r = vg->plan(worlds::lattice_point(map, s.sx, s.sy), worlds::lattice_point(map, s.gx, s.gy));
       if (r.status == planner::PlanStatus::kOk) length = r.length;
+      if (r.status == planner::PlanStatus::kSearchLimit) {
+        std::fprintf(stderr, "plantsim: plan: query %d %d %d %d: %s\n", s.sx, s.sy, s.gx, s.gy, r.note.c_str());
+        exit_code = kExitFailed;
+      }
     } else {
       const auto r = planner::grid_astar(
           map.width, map.height, [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx,
@@ -46,7 +53,7 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path, co
     }
     std::printf("%d %d %d %d %.9g\n", s.sx, s.sy, s.gx, s.gy, length);
   }
-  return kExitOk;
+  return exit_code;
 }
 
 }  // namespace
@@ -103,7 +110,8 @@ std::function<int()> add_plan_command(CLI::App& app) {
   return [opt]() {
     if (opt->landmarks > 0 && opt->planner != "interval" && opt->planner != "polyanya")
       throw std::invalid_argument("plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
-    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks);
+    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks,
+                                                       static_cast<std::size_t>(opt->search_memory_mb) << 20);
     if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);
