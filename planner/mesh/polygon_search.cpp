@@ -39,7 +39,9 @@ PolygonSearch::PolygonSearch(const ConvexMesh& mesh)
       portals_of_(mesh.polygon_count(), 0),
       goal_stamp_(mesh.polygon_count(), 0),
       best_(mesh.points().size()),
-      stamp_(mesh.points().size(), 0) {
+      stamp_(mesh.points().size(), 0),
+      bound_(mesh.points().size()),
+      bound_stamp_(mesh.points().size(), 0) {
   for (std::int32_t p = 0; p < mesh.polygon_count(); ++p)
     for (std::int32_t k = 0; k < mesh.size(p); ++k) portals_of_[p] += mesh.neighbour(p, k) >= 0;
 }
@@ -235,6 +237,7 @@ void PolygonSearch::begin(Vec2 goal) {
   if (++search_ == 0) {  // the stamps wrapped: forget them all
     std::fill(stamp_.begin(), stamp_.end(), 0);
     std::fill(goal_stamp_.begin(), goal_stamp_.end(), 0);
+    std::fill(bound_stamp_.begin(), bound_stamp_.end(), 0);
     search_ = 1;
   }
 }
@@ -366,11 +369,13 @@ void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& po
 
 // max over landmarks of |d(L, goal) - d(L, root)|, bounded from below; a hair less, so that
 // rounding can never make it overestimate.
-double PolygonSearch::landmark_bound(std::int32_t root_vertex) const {
+double PolygonSearch::landmark_bound(std::int32_t root_vertex) {
   if (!use_landmarks_) return 0;
   if (root_vertex < 0) return start_bound_;
+  if (bound_stamp_[root_vertex] == search_) return bound_[root_vertex];
   const double* d = &vertex_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
-  return planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
+  bound_stamp_[root_vertex] = search_;
+  return bound_[root_vertex] = planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
 }
 
 }  // namespace plantsim::planner

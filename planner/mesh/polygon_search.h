@@ -56,7 +56,7 @@ class PolygonSearch {
   void push_goal(std::int32_t parent, Vec2 root, double g);
   bool corner_improves(std::int32_t vertex, double g);
   double heuristic(Vec2 left, Vec2 right, Vec2 root) const;
-  double landmark_bound(std::int32_t root_vertex) const;
+  double landmark_bound(std::int32_t root_vertex);
   bool at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) const;
   /// Bounds on each landmark's distance to p, from the vertices of the polygons holding it.
   void bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p, std::vector<double>& low,
@@ -86,6 +86,10 @@ class PolygonSearch {
   double start_bound_ = 0;                // the landmarks' bound for nodes rooted at the start
   std::vector<double>* flood_ = nullptr;  // while measuring distances: per vertex
   std::vector<std::uint32_t> stamp_;
+  // Per vertex, its landmark bound this search (many nodes share a root): valid where
+  // bound_stamp_ == search_.
+  std::vector<double> bound_;
+  std::vector<std::uint32_t> bound_stamp_;
   std::uint32_t search_ = 0;
   std::size_t budget_bytes_ = kSearchMemoryBudgetBytes;
 };
