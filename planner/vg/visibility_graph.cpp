@@ -93,6 +93,7 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& 
     candidates_[n] = std::move(kept);
     verdict_[n] = std::move(verdicts);
     candidates_ready_[n] = base.candidates_ready_[i];
+    candidate_bytes_ += bytes_of(n);
     scan_box_[n] = base.scan_box_[i];
     ++reused_;
   }
@@ -107,6 +108,7 @@ const std::vector<GraphEdge>& VisibilityGraph::candidates(std::int32_t v) const 
     scan(vertices_[v].p, &vertices_[v], v, candidates_[v]);
     verdict_[v].assign(candidates_[v].size(), -1);
     candidates_gathered_ += static_cast<std::int64_t>(candidates_[v].size());
+    candidate_bytes_ += bytes_of(static_cast<std::size_t>(v));
     candidates_ready_[v] = 1;
   }
   return candidates_[v];
@@ -123,11 +125,13 @@ bool VisibilityGraph::candidate_visible(std::int32_t v, std::size_t i) const {
 
 void VisibilityGraph::resolve(std::int32_t v) const {
   candidates(v);
+  candidate_bytes_ -= bytes_of(static_cast<std::size_t>(v));
   std::vector<GraphEdge> kept;
   for (std::size_t i = 0; i < candidates_[v].size(); ++i)
     if (candidate_visible(v, i)) kept.push_back(candidates_[v][i]);
   candidates_[v] = std::move(kept);
   verdict_[v].assign(candidates_[v].size(), 1);
+  candidate_bytes_ += bytes_of(static_cast<std::size_t>(v));
   candidates_ready_[v] = 2;
 }
 

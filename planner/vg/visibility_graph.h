@@ -82,16 +82,17 @@ class VisibilityGraph {
 
   std::int64_t edges_found() const { return edges_found_; }
   std::int64_t candidates_gathered() const { return candidates_gathered_; }
-  /// What the candidates gathered so far take (each edge and its verdict), in bytes.
-  std::size_t candidate_bytes() const {
-    return static_cast<std::size_t>(candidates_gathered_) * (sizeof(GraphEdge) + sizeof(std::int8_t));
-  }
+  /// What the candidates kept so far take (each edge and its verdict, as allocated), in bytes.
+  std::size_t candidate_bytes() const { return candidate_bytes_; }
   std::int64_t segment_tests() const { return segment_tests_; }
 
  private:
   void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index, std::vector<GraphEdge>& out) const;
   void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
   void drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const;
+  std::size_t bytes_of(std::size_t v) const {
+    return candidates_[v].capacity() * sizeof(GraphEdge) + verdict_[v].capacity() * sizeof(std::int8_t);
+  }
 
   struct Span {  // directions (lo, hi) a rectangle hides beyond `depth`, its farthest corner
     double depth, lo, hi;
@@ -106,6 +107,7 @@ class VisibilityGraph {
   mutable std::vector<Rect> scan_box_;  // per vertex, the square its scan covered
   std::int64_t reused_ = 0;
   mutable std::int64_t candidates_gathered_ = 0;
+  mutable std::size_t candidate_bytes_ = 0;
   mutable std::vector<std::uint32_t> rect_seen_;  // stamp per rectangle, for one scan
   mutable std::uint32_t scan_stamp_ = 0;
   mutable std::vector<std::int32_t> big_rects_;   // scratch: rectangles reaching past a ring
