@@ -21,8 +21,9 @@ namespace {
 // passed its memory budget also says so on stderr, and the command exits 1). The visibility
 // graph answers any-angle queries between lattice points (cell corners, the Polyanya
 // convention); the grid planner answers octile queries between cell centres (MovingAI's).
-int plan_scenarios(const std::string& map_path, const std::string& scen_path, const std::string& planner_name,
-                   int landmarks, std::size_t search_budget_bytes) {
+int plan_scenarios(const std::string& map_path, const std::string& scen_path,
+                   const std::string& planner_name, int landmarks,
+                   std::size_t search_budget_bytes) {
   const worlds::GridMap map = worlds::load_movingai_map(map_path);
   const auto scenarios = worlds::load_movingai_scenarios(scen_path);
   std::unique_ptr<planner::Planner> vg;
@@ -42,7 +43,8 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path, co
       const auto r = vg->plan(worlds::lattice_point(map, s.sx, s.sy), worlds::lattice_point(map, s.gx, s.gy));
       if (r.status == planner::PlanStatus::kOk) length = r.length;
       if (r.status == planner::PlanStatus::kSearchLimit) {
-        std::fprintf(stderr, "plantsim: plan: query %d %d %d %d: %s\n", s.sx, s.sy, s.gx, s.gy, r.note.c_str());
+        std::fprintf(stderr, "plantsim: plan: query %d %d %d %d: %s\n", s.sx, s.sy, s.gx, s.gy,
+                     r.note.c_str());
         exit_code = kExitFailed;
       }
     } else {
@@ -97,8 +99,8 @@ std::function<int()> add_plan_command(CLI::App& app) {
                       std::to_string(planner::kLandmarkCellBudget) + " (refused, with the most the map allows)")
       ->check(CLI::Range(0, 64));
   cmd->add_option("--search-memory-mb", opt->search_memory_mb,
-                  "Planners vg, interval, polyanya: a query whose search holds more than this (MiB) stops with status "
-                  "\"search limit\" and exit 1 (default " +
+                  "Planners vg, interval, polyanya: a query whose search holds more than this "
+                  "(MiB) stops with status \"search limit\" and exit 1 (default " +
                       std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
@@ -110,8 +112,9 @@ std::function<int()> add_plan_command(CLI::App& app) {
   return [opt]() {
     if (opt->landmarks > 0 && opt->planner != "interval" && opt->planner != "polyanya")
       throw std::invalid_argument("plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
-    if (!opt->map.empty()) return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks,
-                                                       static_cast<std::size_t>(opt->search_memory_mb) << 20);
+    if (!opt->map.empty())
+      return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks,
+                            static_cast<std::size_t>(opt->search_memory_mb) << 20);
     if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);

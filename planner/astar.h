@@ -3,9 +3,9 @@
 // caller, so graphs whose edges are expensive to find are only explored where the search goes.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
 #include <functional>
 #include <limits>
 #include <queue>

@@ -69,7 +69,8 @@ struct PlannerInput {
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
   bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
   int landmarks = 0;            ///< planner interval: landmarks for its ALT heuristic (0: none)
-  std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;  ///< vg, interval, polyanya: a query stops there (kSearchLimit)
+  /// vg, interval, polyanya: a query whose search holds more stops (kSearchLimit)
+  std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;
   double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
   std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
   CoverageParams coverage;       ///< seed 004's cell size, weights and network constants

@@ -16,16 +16,17 @@ namespace plantsim::planner {
 inline constexpr std::size_t kSearchMemoryBudgetBytes = std::size_t{2} << 30;
 
 /// Why a search stopped: what it held, in what, for the plan's note.
-inline std::string search_limit_note(const std::string& planner, std::size_t budget, std::size_t bytes,
-                                     const std::string& what) {
+inline std::string search_limit_note(const std::string& planner, std::size_t budget,
+                                     std::size_t bytes, const std::string& what) {
   const auto mib = [](std::size_t b) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(b) / (1 << 20));
     return std::string(text);
   };
-  return planner + ": the search passed its memory budget of " + mib(budget) + " (" + mib(bytes) + " in " + what +
-         "): too many corners of this map see each other for an exact search; coarsen the map (merge small "
-         "obstacles) or try another planner";
+  return planner + ": the search passed its memory budget of " + mib(budget) + " (" + mib(bytes) +
+         " in " + what +
+         "): too many corners of this map see each other for an exact search; coarsen the map "
+         "(merge small obstacles) or try another planner";
 }
 
 }  // namespace plantsim::planner

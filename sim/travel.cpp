@@ -24,7 +24,8 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
       return path;
     }
     // No path, or a search past its budget (a rebuild would search as far): no replan.
-    if (re.status != planner::PlanStatus::kStartBlocked && re.status != planner::PlanStatus::kGoalBlocked)
+    if (re.status != planner::PlanStatus::kStartBlocked &&
+        re.status != planner::PlanStatus::kGoalBlocked)
       return std::nullopt;
     // Start or goal blocked on the map itself (shoved into a margin): the rebuild snaps them.
   }

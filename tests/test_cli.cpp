@@ -294,23 +294,25 @@ TEST_F(Cli, PlanPastTheSearchMemoryBudgetFailsWithItsReason) {
   const int per_row = 300;
   const double length = 2 * per_row + 10;
   write("comb.json", world_json([&](nlohmann::json& j) {
-    j["floor"] = {{"xmin", 0}, {"ymin", 0}, {"xmax", length}, {"ymax", 12}};
-    j["obstacles"] = nlohmann::json::array();
-    for (int i = 0; i < per_row; ++i) {
-      const double x = 5 + 2 * i;
-      j["obstacles"].push_back({x, 1, x + 1, 2});
-      j["obstacles"].push_back({x, 10, x + 1, 11});
-    }
-    j["start"] = {{"x", 3}, {"y", 0.5}, {"yaw", 0}};
-    j["charger"] = {{"x", length - 3}, {"y", 11.5}, {"yaw", 0}};
-    j.erase("moving_obstacles");
-  }));
+          j["floor"] = {{"xmin", 0}, {"ymin", 0}, {"xmax", length}, {"ymax", 12}};
+          j["obstacles"] = nlohmann::json::array();
+          for (int i = 0; i < per_row; ++i) {
+            const double x = 5 + 2 * i;
+            j["obstacles"].push_back({x, 1, x + 1, 2});
+            j["obstacles"].push_back({x, 10, x + 1, 11});
+          }
+          j["start"] = {{"x", 3}, {"y", 0.5}, {"yaw", 0}};
+          j["charger"] = {{"x", length - 3}, {"y", 11.5}, {"yaw", 0}};
+          j.erase("moving_obstacles");
+        }));
   for (const std::string planner : {"vg", "polyanya"}) {
     Outcome o = run("plan comb.json --planner " + planner + " --search-memory-mb 1", 120);
     EXPECT_EQ(o.exit_code, 1) << planner << o.out << o.err;
     const auto stopped = nlohmann::json::parse(o.out);
     EXPECT_EQ(stopped["status"], "search limit") << planner;
-    EXPECT_NE(stopped["note"].get<std::string>().find("memory budget of 1.0 MiB"), std::string::npos) << o.out;
+    EXPECT_NE(stopped["note"].get<std::string>().find("memory budget of 1.0 MiB"),
+              std::string::npos)
+        << o.out;
     o = run("plan comb.json --planner " + planner, 120);
     EXPECT_EQ(o.exit_code, 0) << planner << o.out << o.err;
     EXPECT_EQ(nlohmann::json::parse(o.out)["status"], "ok") << planner;

@@ -142,17 +142,21 @@ TEST(ConvexMesh, ACombOfBoxesMakesNoGiantPolygon) {
 
   PolygonSearch polygons(m);
   IntervalSearch cells(rectangles);
-  for (const auto& [from, to] : {std::pair{Vec2{1, 0.5}, Vec2{40.5, 11.5}}, std::pair{Vec2{30.5, 0.5}, Vec2{length - 1, 6}},
-                                 std::pair{Vec2{1.5, 6}, Vec2{length - 1.5, 11.5}}, std::pair{Vec2{99.5, 1.5}, Vec2{7.5, 10.5}}}) {
+  for (const auto& [from, to] :
+       {std::pair{Vec2{1, 0.5}, Vec2{40.5, 11.5}}, std::pair{Vec2{30.5, 0.5}, Vec2{length - 1, 6}},
+        std::pair{Vec2{1.5, 6}, Vec2{length - 1.5, 11.5}},
+        std::pair{Vec2{99.5, 1.5}, Vec2{7.5, 10.5}}}) {
     const IntervalPath a = polygons.find(from, to), b = cells.find(from, to);
     ASSERT_TRUE(a.found) << from.x << " " << from.y << " -> " << to.x << " " << to.y;
     ASSERT_TRUE(b.found);
     const auto length_of = [](const IntervalPath& r) {
       double sum = 0;
-      for (std::size_t i = 1; i < r.path.size(); ++i) sum += std::hypot(r.path[i].x - r.path[i - 1].x, r.path[i].y - r.path[i - 1].y);
+      for (std::size_t i = 1; i < r.path.size(); ++i)
+        sum += std::hypot(r.path[i].x - r.path[i - 1].x, r.path[i].y - r.path[i - 1].y);
       return sum;
     };
-    EXPECT_NEAR(length_of(a), length_of(b), 1e-9 * length_of(b)) << from.x << " " << from.y << " -> " << to.x << " " << to.y;
+    EXPECT_NEAR(length_of(a), length_of(b), 1e-9 * length_of(b))
+        << from.x << " " << from.y << " -> " << to.x << " " << to.y;
   }
 }
 

@@ -119,7 +119,8 @@ TEST(PlannerStatus, ASearchPastItsMemoryBudgetStopsAndSaysSo) {
     const PlanResult stopped = make_planner(name, tight)->plan(start, goal);
     EXPECT_EQ(stopped.status, PlanStatus::kSearchLimit) << name;
     EXPECT_TRUE(stopped.path.empty()) << name;
-    EXPECT_NE(stopped.note.find("memory budget of 0.1 MiB"), std::string::npos) << name << ": " << stopped.note;
+    EXPECT_NE(stopped.note.find("memory budget of 0.1 MiB"), std::string::npos)
+        << name << ": " << stopped.note;
   }
 }
 

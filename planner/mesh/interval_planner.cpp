@@ -32,7 +32,8 @@ void IntervalPlanner::check_landmark_budget(int landmarks, std::size_t cells) co
 
 IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     : build_start_(std::chrono::steady_clock::now()),
-      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
+           input.inflation_m),
       snap_(input.snap_to_free),
       budget_bytes_(input.search_budget_bytes) {
   if (input.landmarks < 0 || input.landmarks > 64)
@@ -70,8 +71,12 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
   if (usable_endpoints(map_, snap_, start, goal, out)) {
     const Vec2 from = transposed_ ? swapped(start) : start, to = transposed_ ? swapped(goal) : goal;
     const IntervalPath found = convex_ ? polygon_search_->find(from, to) : search_->find(from, to);
-    out.status = found.found ? PlanStatus::kOk : found.over_budget_bytes > 0 ? PlanStatus::kSearchLimit : PlanStatus::kNoPath;
-    if (found.over_budget_bytes > 0) out.note = search_limit_note(name(), budget_bytes_, found.over_budget_bytes, "intervals and their queue");
+    out.status = found.found                   ? PlanStatus::kOk
+                 : found.over_budget_bytes > 0 ? PlanStatus::kSearchLimit
+                                               : PlanStatus::kNoPath;
+    if (found.over_budget_bytes > 0)
+      out.note = search_limit_note(name(), budget_bytes_, found.over_budget_bytes,
+                                   "intervals and their queue");
     out.path = found.path;
     if (transposed_)
       for (Vec2& p : out.path) p = swapped(p);

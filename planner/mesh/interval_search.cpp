@@ -2,12 +2,12 @@
 // on a line x = const and projecting it across a cell is one division per end.
 #include "planner/mesh/interval_search.h"
 
-#include "planner/mesh/landmarks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "planner/mesh/landmarks.h"
 
 namespace plantsim::planner {
 namespace {
@@ -334,7 +334,8 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
   flood_ = nullptr;
   // Distances cut short would bound too high: the landmarks cannot be had on this map.
   if (flood.over_budget_bytes > 0)
-    throw std::invalid_argument(search_limit_note("interval landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
+    throw std::invalid_argument(search_limit_note(
+        "interval landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = at_point[point_of_corner_[i]];
   return out;
 }

@@ -2,12 +2,12 @@
 // unit direction), so the one tolerance of the mesh, a length, decides every "on the line".
 #include "planner/mesh/polygon_search.h"
 
-#include "planner/mesh/landmarks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "planner/mesh/landmarks.h"
 
 namespace plantsim::planner {
 using geom::cross;
@@ -324,7 +324,8 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
   flood_ = nullptr;
   // Distances cut short would bound too high: the landmarks cannot be had on this map.
   if (flood.over_budget_bytes > 0)
-    throw std::invalid_argument(search_limit_note("polyanya landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
+    throw std::invalid_argument(search_limit_note(
+        "polyanya landmarks", budget_bytes_, flood.over_budget_bytes, "one landmark's search"));
   return out;
 }
 
@@ -375,7 +376,8 @@ double PolygonSearch::landmark_bound(std::int32_t root_vertex) {
   if (bound_stamp_[root_vertex] == search_) return bound_[root_vertex];
   const double* d = &vertex_distance_[static_cast<std::size_t>(root_vertex) * landmarks_];
   bound_stamp_[root_vertex] = search_;
-  return bound_[root_vertex] = planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
+  return bound_[root_vertex] =
+             planner::landmark_bound(d, d, goal_low_, goal_high_, mesh_.tolerance());
 }
 
 }  // namespace plantsim::planner

@@ -111,7 +111,8 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
   std::int64_t expanded = 0;
   std::size_t over_budget_bytes = 0;
   while (!open.empty()) {
-    if (const std::size_t bytes = graph.candidate_bytes() + open.size() * sizeof(Entry); bytes > base.input().search_budget_bytes) {
+    if (const std::size_t bytes = graph.candidate_bytes() + open.size() * sizeof(Entry);
+        bytes > base.input().search_budget_bytes) {
       over_budget_bytes = bytes;
       break;
     }
@@ -162,7 +163,9 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
   out.stats.vertices = n + m;
   if (over_budget_bytes > 0) {
     out.status = PlanStatus::kSearchLimit;
-    out.note = search_limit_note("vg (replanning round sensed obstacles)", base.input().search_budget_bytes, over_budget_bytes, "candidate edges and the queue");
+    out.note = search_limit_note("vg (replanning round sensed obstacles)",
+                                 base.input().search_budget_bytes, over_budget_bytes,
+                                 "candidate edges and the queue");
   } else if (!closed[g]) {
     out.status = PlanStatus::kNoPath;
   } else {

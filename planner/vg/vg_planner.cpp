@@ -87,7 +87,8 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
     fill_path(found, points, out);
     if (found.over_budget_bytes > 0) {
       out.status = PlanStatus::kSearchLimit;
-      out.note = search_limit_note(name(), input_.search_budget_bytes, found.over_budget_bytes, "candidate edges and the queue");
+      out.note = search_limit_note(name(), input_.search_budget_bytes, found.over_budget_bytes,
+                                   "candidate edges and the queue");
     }
     out.stats.expanded = found.stats.expanded;
   }
@@ -141,7 +142,8 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   std::vector<GraphEdge> from_start;
   while (!open.empty()) {
     // The graph kept across queries counts too: it is what this query's candidates grow.
-    if (const std::size_t bytes = graph_.candidate_bytes() + open.size() * sizeof(Entry); bytes > input_.search_budget_bytes) {
+    if (const std::size_t bytes = graph_.candidate_bytes() + open.size() * sizeof(Entry);
+        bytes > input_.search_budget_bytes) {
       result.over_budget_bytes = bytes;
       break;
     }

@@ -91,7 +91,8 @@ class VisibilityGraph {
   void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
   void drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const;
   std::size_t bytes_of(std::size_t v) const {
-    return candidates_[v].capacity() * sizeof(GraphEdge) + verdict_[v].capacity() * sizeof(std::int8_t);
+    return candidates_[v].capacity() * sizeof(GraphEdge) +
+           verdict_[v].capacity() * sizeof(std::int8_t);
   }
 
   struct Span {  // directions (lo, hi) a rectangle hides beyond `depth`, its farthest corner
