@@ -50,13 +50,15 @@ TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
   }
 }
 
-// What the landmarks are for: on a large map (BigGameHunters, every 4th reference query), the
-// same answers from fewer expanded intervals.
+// What the landmarks are for: on a large map (ArcticStation, every 4th reference query), the
+// same answers from fewer expanded intervals (measured: 543,641 with 8 landmarks against
+// 873,371 without). Not BigGameHunters: there the dead ends already keep the search near the
+// way (49,532 without landmarks; landmarks cut only 9 % more).
 TEST(AnyAngle, LandmarksKeepTheAnswersAndCutTheWork) {
-  const auto map = worlds::load_movingai_map(test::shared_data("anyangle/BigGameHunters.map"));
+  const auto map = worlds::load_movingai_map(test::shared_data("anyangle/ArcticStation.map"));
   auto plain = anyangle_planner(map, "interval");
   auto alt = anyangle_planner(map, "interval", 8);
-  std::ifstream ref(test::shared_data("anyangle/BigGameHunters_anyangle_ref.tsv"));
+  std::ifstream ref(test::shared_data("anyangle/ArcticStation_anyangle_ref.tsv"));
   std::string header;
   std::getline(ref, header);
   int sx, sy, gx, gy, line = 0;
@@ -72,13 +74,13 @@ TEST(AnyAngle, LandmarksKeepTheAnswersAndCutTheWork) {
     expanded_plain += a.stats.expanded, expanded_alt += b.stats.expanded;
   }
   EXPECT_GT(line, 400);
-  EXPECT_LT(expanded_alt, expanded_plain * 85 / 100) << expanded_alt << " with landmarks, " << expanded_plain << " without";
+  EXPECT_LT(expanded_alt, expanded_plain * 75 / 100) << expanded_alt << " with landmarks, " << expanded_plain << " without";
 }
 
 // What the convex polygons are for: on BigGameHunters (every 4th reference query) a path
 // crosses one polygon where it crossed many rectangles cut at each step of a staircase wall,
-// so polyanya reaches the same answers expanding under half the intervals (measured 225 against
-// 823 per query over all 447).
+// so polyanya reaches the same answers expanding under half the intervals (measured over all
+// 447: 88 against 468 per query; 225 against 823 before the dead ends were pruned).
 TEST(AnyAngle, ConvexPolygonsKeepTheAnswersAndHalveTheWork) {
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/BigGameHunters.map"));
   auto rectangles = anyangle_planner(map, "interval");

@@ -19,10 +19,21 @@ constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 // cost a third of a query's time.
 double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 
+DeadEnds dead_ends_of(const FreeSpaceMesh& mesh) {
+  std::vector<std::int32_t> first{0}, neighbour;
+  for (std::int32_t c = 0; c < static_cast<std::int32_t>(mesh.cells().size()); ++c) {
+    for (const auto side : {mesh.left_portals(c), mesh.right_portals(c)})
+      for (const std::int32_t q : side)
+        neighbour.push_back(mesh.portals()[q].left == c ? mesh.portals()[q].right : mesh.portals()[q].left);
+    first.push_back(static_cast<std::int32_t>(neighbour.size()));
+  }
+  return DeadEnds(first, neighbour);
+}
+
 }  // namespace
 
 IntervalSearch::IntervalSearch(const FreeSpaceMesh& mesh)
-    : mesh_(mesh), best_(2 * mesh.portals().size()), stamp_(2 * mesh.portals().size(), 0) {}
+    : mesh_(mesh), dead_ends_(dead_ends_of(mesh)), best_(2 * mesh.portals().size()), stamp_(2 * mesh.portals().size(), 0) {}
 
 std::int32_t IntervalSearch::other_side(std::int32_t portal, std::int32_t cell) const {
   const MeshPortal& p = mesh_.portals()[portal];
@@ -61,9 +72,7 @@ bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, V
 
 void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
                           std::int32_t root_vertex, double g) {
-  // A cell whose only portal is this one leads nowhere unless the goal is in it (a search
-  // measuring distances to every corner still enters it).
-  if (!flood_ && mesh_.portal_count(cell) == 1 && !mesh_.cell_holds(cell, goal_)) return;
+  if (dead_ends_.leads_nowhere(other_side(portal, cell), cell)) return;
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
@@ -229,6 +238,7 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
   begin(goal);
   const std::vector<std::int32_t> first = mesh_.cells_at(start), last = mesh_.cells_at(goal);
   if (first.empty() || last.empty()) return out;
+  dead_ends_.set_goal(last.data(), prune_dead_ends_ ? last.size() : 0);
   for (const std::int32_t c : first)
     if (mesh_.cell_holds(c, goal)) {
       out.found = true;
@@ -327,6 +337,7 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
   const std::vector<std::int32_t> first = mesh_.cells_at(source);
   if (first.empty()) return out;
   flood_ = &at_point;
+  dead_ends_.set_goal(nullptr, 0);
   begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal in no cell
   queue_source(source, first);
   IntervalPath flood;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "planner/mesh/dead_ends.h"
 #include "planner/mesh/free_space_mesh.h"
 #include "planner/mesh/interval_path.h"
 #include "planner/search_budget.h"
@@ -26,6 +27,8 @@ class IntervalSearch {
   /// also the landmarks' lower bound |d(L, goal) - d(L, root)| (ALT, Goldberg and Harrelson
   /// 2005), which sees the detours the straight line does not; answers are unchanged.
   void add_landmarks(int count);
+  /// Off: the search also enters the dead ends (DeadEnds), as a measure of what pruning them saves.
+  void set_dead_end_pruning(bool on) { prune_dead_ends_ = on; }
   /// A query whose nodes and queue pass this many bytes stops, unanswered (over_budget_bytes).
   void set_memory_budget(std::size_t bytes) { budget_bytes_ = bytes; }
   int landmark_count() const { return landmarks_; }
@@ -81,6 +84,8 @@ class IntervalSearch {
   std::int32_t other_side(std::int32_t portal, std::int32_t cell) const;
 
   const FreeSpaceMesh& mesh_;
+  DeadEnds dead_ends_;
+  bool prune_dead_ends_ = true;
   Vec2 goal_;
   std::vector<Node> nodes_;
   std::vector<Node> fresh_;  // the successors of the node being expanded

@@ -15,6 +15,15 @@ using geom::dot;
 
 namespace {
 
+DeadEnds dead_ends_of(const ConvexMesh& mesh) {
+  std::vector<std::int32_t> first{0}, neighbour;
+  for (std::int32_t p = 0; p < mesh.polygon_count(); ++p) {
+    neighbour.insert(neighbour.end(), mesh.neighbours(p), mesh.neighbours(p) + mesh.size(p));
+    first.push_back(static_cast<std::int32_t>(neighbour.size()));
+  }
+  return DeadEnds(first, neighbour);
+}
+
 double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
 // A range of an edge's parameter t in [0, 1]; empty when lo > hi.
 struct Range {
@@ -36,15 +45,12 @@ Vec2 along(Vec2 a, Vec2 b, double t) { return t <= 0 ? a : t >= 1 ? b : Vec2{a.x
 
 PolygonSearch::PolygonSearch(const ConvexMesh& mesh)
     : mesh_(mesh),
-      portals_of_(mesh.polygon_count(), 0),
+      dead_ends_(dead_ends_of(mesh)),
       goal_stamp_(mesh.polygon_count(), 0),
       best_(mesh.points().size()),
       stamp_(mesh.points().size(), 0),
       bound_(mesh.points().size()),
-      bound_stamp_(mesh.points().size(), 0) {
-  for (std::int32_t p = 0; p < mesh.polygon_count(); ++p)
-    for (std::int32_t k = 0; k < mesh.size(p); ++k) portals_of_[p] += mesh.neighbour(p, k) >= 0;
-}
+      bound_stamp_(mesh.points().size(), 0) {}
 
 // Root-level pruning: a turn at a vertex reached more dearly than before is dropped. One
 // reached as cheaply is kept: the same corner seen through another polygon opens other edges.
@@ -77,8 +83,7 @@ double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
 void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
                          std::int32_t root_vertex, double g) {
   const std::int32_t beyond = mesh_.neighbours(polygon)[k];
-  // A polygon whose only way in is this edge leads nowhere unless the goal is in it.
-  if (!flood_ && portals_of_[beyond] == 1 && goal_stamp_[beyond] != search_) return;
+  if (dead_ends_.leads_nowhere(polygon, beyond)) return;
   const std::int32_t entry = mesh_.twins(polygon)[k];
   const std::int32_t va = mesh_.corners(polygon)[k], vb = mesh_.corners(polygon)[k + 1 < mesh_.size(polygon) ? k + 1 : 0];
   const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
@@ -248,6 +253,7 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   const std::vector<std::int32_t> first = mesh_.polygons_at(start), last = mesh_.polygons_at(goal);
   if (first.empty() || last.empty()) return out;
   for (const std::int32_t p : last) goal_stamp_[p] = search_;
+  dead_ends_.set_goal(last.data(), prune_dead_ends_ ? last.size() : 0);
   for (const std::int32_t p : first)
     if (goal_stamp_[p] == search_) {
       out.found = true;
@@ -314,6 +320,7 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
   const std::vector<std::int32_t> first = mesh_.polygons_at(source);
   if (first.empty()) return out;
   flood_ = &out;
+  dead_ends_.set_goal(nullptr, 0);
   begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal nowhere
   nodes_.push_back({-1, -1, {}, {}, source, -1, -1, 0});
   fresh_.clear();

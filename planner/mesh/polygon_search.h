@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "planner/mesh/convex_mesh.h"
+#include "planner/mesh/dead_ends.h"
 #include "planner/mesh/interval_path.h"
 #include "planner/search_budget.h"
 
@@ -24,6 +25,8 @@ class PolygonSearch {
   /// before), the exact distance from each to every mesh vertex stored, and their (ALT) lower
   /// bound taken in the heuristic as well. Answers are unchanged.
   void add_landmarks(int count);
+  /// Off: the search also enters the dead ends (DeadEnds), as a measure of what pruning them saves.
+  void set_dead_end_pruning(bool on) { prune_dead_ends_ = on; }
   /// A query whose nodes and queue pass this many bytes stops, unanswered (over_budget_bytes).
   void set_memory_budget(std::size_t bytes) { budget_bytes_ = bytes; }
   int landmark_count() const { return landmarks_; }
@@ -72,7 +75,8 @@ class PolygonSearch {
   std::int32_t run(IntervalPath& out);
 
   const ConvexMesh& mesh_;
-  std::vector<std::int32_t> portals_of_;  // per polygon, its edges with a polygon beyond
+  DeadEnds dead_ends_;
+  bool prune_dead_ends_ = true;
   Vec2 goal_;
   std::vector<std::uint32_t> goal_stamp_;  // polygons holding the goal: == search_
   std::vector<Node> nodes_, fresh_;
