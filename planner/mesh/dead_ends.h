@@ -25,15 +25,17 @@ class DeadEnds {
   /// Crossing from node `from` into its neighbour `to` leads only away from every goal node.
   bool leads_nowhere(std::int32_t from, std::int32_t to) const {
     if (goal_.empty()) return false;
-    if (parent_[to] == from && bridge_to_parent_[to]) return !any_goal_under(to);
-    if (parent_[from] == to && bridge_to_parent_[from]) return !any_goal_above(from);
+    if (place_[to].bridge_parent == from) return !any_goal_under(to);
+    if (place_[from].bridge_parent == to) return !any_goal_above(from);
     return false;
   }
   /// Bridges found (each counted once).
   std::int64_t bridge_count() const { return bridges_; }
 
  private:
-  bool under(std::int32_t top, std::int32_t node) const { return enter_[top] <= enter_[node] && enter_[node] < leave_[top]; }
+  bool under(std::int32_t top, std::int32_t node) const {
+    return place_[top].enter <= place_[node].enter && place_[node].enter < place_[top].leave;
+  }
   bool any_goal_under(std::int32_t top) const {
     for (const std::int32_t g : goal_)
       if (under(top, g)) return true;
@@ -42,15 +44,19 @@ class DeadEnds {
   // In the node's component (under its tree's root) but not under the node.
   bool any_goal_above(std::int32_t top) const {
     for (const std::int32_t g : goal_)
-      if (under(root_[top], g) && !under(top, g)) return true;
+      if (under(place_[top].root, g) && !under(top, g)) return true;
     return false;
   }
 
-  // A depth-first forest of the dual graph: a node's subtree is the nodes entered in
-  // [enter_, leave_); the edge to its parent is a bridge when nothing in the subtree reaches
-  // above it by another edge.
-  std::vector<std::int32_t> parent_, root_, enter_, leave_;
-  std::vector<bool> bridge_to_parent_;
+  // Where a node is in a depth-first forest of the dual graph: its subtree is the nodes entered
+  // in [enter, leave); the edge to its parent is a bridge when nothing in the subtree reaches
+  // above it by another edge. One record per node: a search reads them together.
+  struct Place {
+    std::int32_t bridge_parent = -1;  ///< the parent, when the edge to it is a bridge; else -1
+    std::int32_t root = -1;           ///< the root of its tree (its connected component)
+    std::int32_t enter = -1, leave = 0;
+  };
+  std::vector<Place> place_;
   std::vector<std::int32_t> goal_;
   std::int64_t bridges_ = 0;
 };

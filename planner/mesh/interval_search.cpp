@@ -72,7 +72,6 @@ bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, V
 
 void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
                           std::int32_t root_vertex, double g) {
-  if (dead_ends_.leads_nowhere(other_side(portal, cell), cell)) return;
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
@@ -136,7 +135,7 @@ void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t
   if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + dist(root, goal_));
   for (const auto side : {mesh_.left_portals(cell), mesh_.right_portals(cell)})
     for (const std::int32_t q : side) {
-      if (q == except) continue;
+      if (q == except || dead_ends_.leads_nowhere(cell, other_side(q, cell))) continue;
       const MeshPortal& p = mesh_.portals()[q];
       if (std::fabs(root.x - p.x) > eps)
         push(parent, q, other_side(q, cell), p.y0, p.y1, root, root_vertex, g);
@@ -181,6 +180,7 @@ void IntervalSearch::expand(std::int32_t index) {
   for (const std::int32_t q : far_side) {
     const MeshPortal& Q = mesh_.portals()[q];
     const std::int32_t beyond = other_side(q, n.cell);
+    if (dead_ends_.leads_nowhere(n.cell, beyond)) continue;
     const double lo = std::max(Q.y0, ya_far), hi = std::min(Q.y1, yb_far);
     if (lo <= hi + eps) push(index, q, beyond, lo, hi, r, n.root_vertex, n.g);
     if (use_low && ya_far > Q.y0 + eps) push(index, q, beyond, Q.y0, std::min(Q.y1, ya_far), a, 2 * n.portal, ga);
@@ -190,7 +190,7 @@ void IntervalSearch::expand(std::int32_t index) {
   // Portals on the near side beyond the corner lie on the corner's own line.
   const auto near_side = rightward ? mesh_.left_portals(n.cell) : mesh_.right_portals(n.cell);
   for (const std::int32_t q : near_side) {
-    if (q == n.portal) continue;
+    if (q == n.portal || dead_ends_.leads_nowhere(n.cell, other_side(q, n.cell))) continue;
     const MeshPortal& Q = mesh_.portals()[q];
     if (use_low && Q.y1 <= P.y0 + eps) push_along_line(index, a, ga, q, other_side(q, n.cell));
     if (use_high && Q.y0 >= P.y1 - eps) push_along_line(index, b, gb, q, other_side(q, n.cell));

@@ -62,6 +62,7 @@ class IntervalSearch {
   /// The root lies in the closed cell: every portal of it is in view.
   void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
                       std::int32_t except);
+  /// A successor into `cell` (not a dead end: callers look first).
   void push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
             std::int32_t root_vertex, double g);
   /// A turn at a portal's end, reached from `from`: kept unless that corner was reached more

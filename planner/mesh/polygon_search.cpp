@@ -83,7 +83,6 @@ double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
 void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
                          std::int32_t root_vertex, double g) {
   const std::int32_t beyond = mesh_.neighbours(polygon)[k];
-  if (dead_ends_.leads_nowhere(polygon, beyond)) return;
   const std::int32_t entry = mesh_.twins(polygon)[k];
   const std::int32_t va = mesh_.corners(polygon)[k], vb = mesh_.corners(polygon)[k + 1 < mesh_.size(polygon) ? k + 1 : 0];
   const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
@@ -124,7 +123,8 @@ void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t 
   if (flood_) record_in_view(polygon, root, g);
   const double eps = mesh_.tolerance();
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
-    if (k == except || mesh_.neighbour(polygon, k) < 0) continue;
+    if (k == except || mesh_.neighbour(polygon, k) < 0 || dead_ends_.leads_nowhere(polygon, mesh_.neighbour(polygon, k)))
+      continue;
     const Vec2 a = mesh_.points()[mesh_.vertex(polygon, k)], b = mesh_.points()[mesh_.vertex(polygon, k + 1)];
     if (from_start) {  // the start on this edge: the polygon beyond holds it too and is searched from it
       const double len = dist(a, b), at = dot(root - a, b - a) / len;
@@ -178,8 +178,9 @@ void PolygonSearch::expand(std::int32_t index) {
     const std::int32_t next = k + 1 < count ? k + 1 : 0;
     const Vec2 b = mesh_.points()[corner[next]];
     const double rb = right_side(b), lb = left_side(b);
-    // Walls, and edges wholly right of the view with no turn there or wholly left: nothing.
-    if (beyond[k] >= 0 && (rb >= -eps || use_right) && (la <= eps || use_left)) {
+    // Walls, dead ends, and edges wholly right of the view with no turn there or wholly left:
+    // nothing.
+    if (beyond[k] >= 0 && (rb >= -eps || use_right) && (la <= eps || use_left) && !dead_ends_.leads_nowhere(Q, beyond[k])) {
       // The part in view: not right of the ray through R, not left of the ray through L. (Each
       // side is a range of the edge, though not always at its same end: a ray through an end
       // of the entry edge may run inside Q and meet the far side twice.)

@@ -53,7 +53,8 @@ class PolygonSearch {
   /// The root lies on the polygon's boundary: all of the polygon is in view.
   void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t polygon,
                       std::int32_t except, bool from_start);
-  /// A successor through edge k of `polygon`, the part of it from `right` to `left`.
+  /// A successor through edge k of `polygon`, the part of it from `right` to `left` (the
+  /// polygon beyond is not a dead end: callers look first).
   void push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
             std::int32_t root_vertex, double g);
   void push_goal(std::int32_t parent, Vec2 root, double g);
