@@ -238,6 +238,8 @@ void ConvexMesh::lay_out(const std::vector<Piece>& pieces, const std::vector<std
     corner_.insert(corner_.end(), p.corner.begin(), p.corner.end());
     for (const std::int32_t b : p.beyond) neighbour_.push_back(b >= 0 ? number[owner[b]] : -1);
   }
+  corner_point_.reserve(corner_.size());
+  for (const std::int32_t v : corner_) corner_point_.push_back(points_[v]);
   twin_.assign(corner_.size(), -1);
   for (std::int32_t p = 0; p < polygon_count(); ++p)
     for (std::int32_t k = 0; k < size(p); ++k) {
@@ -251,11 +253,11 @@ void ConvexMesh::lay_out(const std::vector<Piece>& pieces, const std::vector<std
 
 void ConvexMesh::mark_corners() {
   std::vector<std::uint8_t> wedges(points_.size(), 0);
-  pinch_flag_.assign(points_.size(), false);
+  pinch_flag_.assign(points_.size(), 0);
   // A corner: some wedge between consecutive walls around the vertex, on the free side, is
   // wider than a half-turn. Each polygon adds its angle at the vertex to the wedge it lies in;
   // wedges are found by walking round the vertex from a wall through the polygons.
-  corner_flag_.assign(points_.size(), false);
+  corner_flag_.assign(points_.size(), 0);
   for (std::int32_t p = 0; p < polygon_count(); ++p)
     for (std::int32_t k = 0; k < size(p); ++k) {
       if (neighbour(p, k - 1) >= 0) continue;  // start only where a wall ends at the vertex
@@ -274,7 +276,7 @@ void ConvexMesh::mark_corners() {
         q = next;
         if (q == p && i % size(q) == k) break;
       }
-      if (angle > std::numbers::pi + 1e-9) corner_flag_[v] = true;
+      if (angle > std::numbers::pi + 1e-9) corner_flag_[v] = 1;
       ++wedges[v];
     }
   for (std::size_t v = 0; v < points_.size(); ++v) pinch_flag_[v] = wedges[v] > 1;

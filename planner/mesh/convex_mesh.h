@@ -42,15 +42,18 @@ class ConvexMesh {
   const std::int32_t* corners(std::int32_t polygon) const { return corner_.data() + first_[polygon]; }
   const std::int32_t* neighbours(std::int32_t polygon) const { return neighbour_.data() + first_[polygon]; }
   const std::int32_t* twins(std::int32_t polygon) const { return twin_.data() + first_[polygon]; }
+  /// The polygon's corners' coordinates, in the same order (points()[corners(polygon)[k]],
+  /// stored beside each other: the search reads a polygon's corners in a row).
+  const Vec2* corner_points(std::int32_t polygon) const { return corner_point_.data() + first_[polygon]; }
   /// Edges with a polygon on both sides, each counted once.
   std::int64_t portal_count() const { return portals_; }
   const std::vector<Vec2>& points() const { return points_; }
   /// A vertex a shortest path may bend at: an obstacle's convex corner or a slit's tip (a wedge
   /// of free floor wider than a half-turn between two walls).
-  bool is_corner(std::int32_t vertex) const { return corner_flag_[vertex]; }
+  bool is_corner(std::int32_t vertex) const { return corner_flag_[vertex] != 0; }
   /// A vertex where free wedges meet that a path may not pass between (walls touching at a
   /// point): how far it is depends on the side it is reached from.
-  bool is_pinch(std::int32_t vertex) const { return pinch_flag_[vertex]; }
+  bool is_pinch(std::int32_t vertex) const { return pinch_flag_[vertex] != 0; }
   /// Every polygon whose closed area holds p (within the tolerance): two or more on a shared
   /// edge or vertex, none off the free floor.
   std::vector<std::int32_t> polygons_at(Vec2 p) const;
@@ -69,9 +72,10 @@ class ConvexMesh {
   void index_polygons();
 
   std::vector<Vec2> points_;
-  std::vector<bool> corner_flag_, pinch_flag_;
+  std::vector<std::uint8_t> corner_flag_, pinch_flag_;  // not vector<bool>: read on every search step
   std::vector<std::int32_t> first_;  // polygon p's corners are corner_[first_[p] .. first_[p + 1])
   std::vector<std::int32_t> corner_, neighbour_, twin_;
+  std::vector<Vec2> corner_point_;
   std::int64_t portals_ = 0;
   BoxBuckets buckets_;  // point location
   double eps_ = 1e-13;

@@ -83,9 +83,8 @@ double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
 void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
                          std::int32_t root_vertex, double g) {
   const std::int32_t beyond = mesh_.neighbours(polygon)[k];
-  const std::int32_t entry = mesh_.twins(polygon)[k];
-  const std::int32_t va = mesh_.corners(polygon)[k], vb = mesh_.corners(polygon)[k + 1 < mesh_.size(polygon) ? k + 1 : 0];
-  const Vec2 a = mesh_.points()[va], b = mesh_.points()[vb];
+  const std::int32_t entry = mesh_.twins(polygon)[k], k1 = k + 1 < mesh_.size(polygon) ? k + 1 : 0;
+  const Vec2 a = mesh_.corner_points(polygon)[k], b = mesh_.corner_points(polygon)[k1];
   const double eps = mesh_.tolerance(), side = cross(b - a, root - a), reach = eps * eps * dot(b - a, b - a);
   // A root beyond the edge would look back through it: a ray that only touches the edge at an
   // end, passing by. (Sides compared squared: no square root on the common way.)
@@ -97,7 +96,7 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
       return;
     }
     // On the edge's line, off the edge: along the line to its nearer end, turning there.
-    const std::int32_t near = at < 0 ? va : vb;
+    const std::int32_t near = mesh_.corners(polygon)[at < 0 ? k : k1];
     const Vec2 c = mesh_.points()[near];
     const double gc = g + dist(root, c);
     if (!corner_improves(near, gc)) return;
@@ -169,14 +168,14 @@ void PolygonSearch::expand(std::int32_t index) {
   }
   // Round the far side from the entry edge's right end, each vertex's sides measured once.
   const std::int32_t count = mesh_.size(Q);
-  const std::int32_t* corner = mesh_.corners(Q);
+  const Vec2* corner = mesh_.corner_points(Q);
   const std::int32_t* beyond = mesh_.neighbours(Q);
   std::int32_t k = j + 1 < count ? j + 1 : 0;
   Vec2 a = B;
   double ra = right_side(a), la = left_side(a);
   for (std::int32_t step = 1; step < count; ++step) {
     const std::int32_t next = k + 1 < count ? k + 1 : 0;
-    const Vec2 b = mesh_.points()[corner[next]];
+    const Vec2 b = corner[next];
     const double rb = right_side(b), lb = left_side(b);
     // Walls, dead ends, and edges wholly right of the view with no turn there or wholly left:
     // nothing.
