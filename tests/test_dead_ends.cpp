@@ -1,6 +1,7 @@
 // The dead ends of a mesh: bridges of its dual graph found exactly (against removing each edge
-// and looking), and the searches that skip the side of a bridge with no goal on it giving the
-// same answers as without, for far less work on a map whose mesh is nearly a tree.
+// and looking), the searches that skip the side of a bridge with no goal on it giving the same
+// answers as without, for far less work on a map whose mesh is nearly a tree, and the funnel
+// that pulls a path taut through a channel of bridges.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "planner/mesh/channel_funnel.h"
 #include "planner/mesh/convex_mesh.h"
 #include "planner/mesh/dead_ends.h"
 #include "planner/mesh/free_space_mesh.h"
@@ -108,6 +110,50 @@ TEST(DeadEnds, MatchRemovingEachEdgeAndLooking) {
     }
     EXPECT_EQ(d.bridge_count(), bridges) << "trial " << trial;
   }
+}
+
+TEST(DeadEnds, BridgePathIsTheRowOfBridgesOrNothing) {
+  // 0-1-2-3 a chain, 3-4-5-3 a ring, 5-6 a bridge.
+  const auto g = graph_of(7, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 3}, {5, 6}});
+  DeadEnds d(g.first, g.neighbour);
+  std::vector<std::int32_t> path;
+  ASSERT_TRUE(d.bridge_path(0, 3, path));
+  EXPECT_EQ(path, (std::vector<std::int32_t>{0, 1, 2, 3}));
+  ASSERT_TRUE(d.bridge_path(2, 0, path));
+  EXPECT_EQ(path, (std::vector<std::int32_t>{2, 1, 0}));
+  EXPECT_FALSE(d.bridge_path(0, 6, path)) << "across the ring: two ways round";
+  EXPECT_TRUE(d.beyond(1, 2, 3));
+  EXPECT_FALSE(d.beyond(2, 1, 3));
+  EXPECT_TRUE(d.beyond(2, 1, 0));
+}
+
+double polyline(const std::vector<Vec2>& p) {
+  double sum = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) sum += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
+  return sum;
+}
+
+TEST(ChannelFunnel, StraightWhereItCanBendAtACornerWhereItMust) {
+  // Along a corridor: no bend.
+  auto path = funnel_path({0, 0}, {{{1, 1}, {1, -1}}, {{2, 1}, {2, -1}}}, {3, 0.5}, 1e-12);
+  EXPECT_EQ(path, (std::vector<Vec2>{{0, 0}, {3, 0.5}}));
+  // East through x = 1, y in [0, 1], then south through y = 0, x in [1, 2]: round (1, 0).
+  path = funnel_path({0, 0.5}, {{{1, 1}, {1, 0}}, {{2, 0}, {1, 0}}}, {2, -3}, 1e-12);
+  EXPECT_EQ(path, (std::vector<Vec2>{{0, 0.5}, {1, 0}, {2, -3}}));
+  EXPECT_NEAR(polyline(path), std::hypot(1, 0.5) + std::hypot(1, 3), 1e-12);
+  // The same mirrored (west then north): round (-1, 0) on the other hand.
+  path = funnel_path({0, -0.5}, {{{-1, -1}, {-1, 0}}, {{-2, 0}, {-1, 0}}}, {-2, 3}, 1e-12);
+  EXPECT_EQ(path, (std::vector<Vec2>{{0, -0.5}, {-1, 0}, {-2, 3}}));
+}
+
+// Found by the random worlds: up a wall whose portals end on one line, the funnel closes to a
+// single ray with the right end (1, 4.5) nearer than the left (1, 7); the way then turns right,
+// round the nearer end. Bending at once at the left end went up to (1, 7) and back: 2.9 m longer.
+TEST(ChannelFunnel, AFunnelClosedToOneRayBendsAtTheEndTheWayTurnsRound) {
+  const std::vector<Portal> portals{{{1, 7}, {1, 4.5}}, {{1.5, 6.5}, {1, 4.5}}, {{3, 6.5}, {4, 4.5}}};
+  const Vec2 goal{3.762164, 5.288768};
+  const auto path = funnel_path({1, 1.5}, portals, goal, 1e-12);
+  EXPECT_EQ(path, (std::vector<Vec2>{{1, 1.5}, {1, 4.5}, goal}));
 }
 
 // BigGameHunters (every 4th reference query): its mesh is nearly a tree (2,282 polygons,

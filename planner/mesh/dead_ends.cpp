@@ -49,6 +49,25 @@ DeadEnds::DeadEnds(const std::vector<std::int32_t>& first, const std::vector<std
   }
 }
 
+bool DeadEnds::bridge_path(std::int32_t from, std::int32_t to, std::vector<std::int32_t>& path) const {
+  path.clear();
+  if (place_[from].root != place_[to].root) return false;
+  // Up the forest from each end to where the two meet, every step a bridge.
+  std::int32_t a = from;
+  for (; !under(a, to); a = place_[a].bridge_parent) {
+    if (place_[a].bridge_parent < 0) return false;
+    path.push_back(a);
+  }
+  path.push_back(a);
+  const std::size_t meet = path.size();
+  for (std::int32_t b = to; b != a; b = place_[b].bridge_parent) {
+    if (place_[b].bridge_parent < 0) return false;
+    path.push_back(b);
+  }
+  std::reverse(path.begin() + static_cast<std::ptrdiff_t>(meet), path.end());
+  return true;
+}
+
 void DeadEnds::set_goal(const std::int32_t* nodes, std::size_t count) { goal_.assign(nodes, nodes + count); }
 
 }  // namespace plantsim::planner

@@ -29,6 +29,15 @@ class DeadEnds {
     if (place_[from].bridge_parent == to) return !any_goal_above(from);
     return false;
   }
+  /// The nodes from `from` to `to` (both included) when every edge between them is a bridge:
+  /// then every way from one to the other crosses those edges, in that order. False (`path`
+  /// then holds nothing of use) when they are apart or some step between them is no bridge.
+  bool bridge_path(std::int32_t from, std::int32_t to, std::vector<std::int32_t>& path) const;
+  /// Whether `node` lies on `to`'s side of the bridge from `from` to `to`.
+  bool beyond(std::int32_t from, std::int32_t to, std::int32_t node) const {
+    if (place_[to].bridge_parent == from) return under(to, node);
+    return place_[node].root == place_[from].root && !under(from, node);
+  }
   /// Bridges found (each counted once).
   std::int64_t bridge_count() const { return bridges_; }
 

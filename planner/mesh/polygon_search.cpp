@@ -260,6 +260,7 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
       out.path = {start, goal};
       return out;
     }
+  if (prune_dead_ends_ && through_channel(first, last, start, goal, out)) return out;
   use_landmarks_ = landmarks_ > 0 && !at_pinch(last, goal);
   if (use_landmarks_) {
     bound_landmark_distances(last, goal, goal_low_, goal_high_);
@@ -275,6 +276,44 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   const std::int32_t reached = run(out);
   read_back(nodes_, reached, goal, out);
   return out;
+}
+
+// Every way from the start to the goal crosses each bridge between them once (crossing an edge
+// twice, the straight piece of it between is shorter) and, between two bridges, stays in the
+// convex polygon they bound (a way out of it and back in is longer than the straight one
+// across it): the shortest way is the taut string through that row of polygons, from the last
+// polygon on it holding the start to the first after it holding the goal. So only when no
+// polygon holding the start lies beyond the row's first bridge (the start would be on both its
+// sides) and none holding the goal before its last.
+bool PolygonSearch::through_channel(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& last,
+                                    Vec2 start, Vec2 goal, IntervalPath& out) {
+  if (!dead_ends_.bridge_path(first.front(), last.front(), channel_)) return false;
+  const auto length = static_cast<std::ptrdiff_t>(channel_.size());
+  const auto at = [&](std::int32_t polygon) {
+    return static_cast<std::ptrdiff_t>(std::find(channel_.begin(), channel_.end(), polygon) - channel_.begin());
+  };
+  std::ptrdiff_t from = 0, to = length - 1;
+  for (const std::int32_t p : first)
+    if (const std::ptrdiff_t i = at(p); i < length) from = std::max(from, i);
+  for (const std::int32_t p : last)
+    if (const std::ptrdiff_t i = at(p); i < length && i > from) to = std::min(to, i);
+  if (from >= to) return false;
+  for (const std::int32_t p : first)
+    if (dead_ends_.beyond(channel_[from], channel_[from + 1], p)) return false;
+  for (const std::int32_t p : last)
+    if (!dead_ends_.beyond(channel_[to - 1], channel_[to], p)) return false;
+  portals_.clear();
+  for (std::ptrdiff_t i = from; i < to; ++i) {
+    const std::int32_t p = channel_[i], q = channel_[i + 1], n = mesh_.size(p);
+    std::int32_t k = 0;
+    while (mesh_.neighbours(p)[k] != q) ++k;  // a bridge: the one edge they share
+    // Leaving p (left of its edge k, counter-clockwise), the edge's far corner is on the left.
+    portals_.push_back({mesh_.corner_points(p)[k + 1 < n ? k + 1 : 0], mesh_.corner_points(p)[k]});
+  }
+  out.found = true;
+  out.path = funnel_path(start, portals_, goal, mesh_.tolerance());
+  out.expanded = to - from;  // the polygons walked
+  return true;
 }
 
 // A point at a pinch is two points, one on each side: distances to it break the triangle

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "planner/mesh/channel_funnel.h"
 #include "planner/mesh/convex_mesh.h"
 #include "planner/mesh/dead_ends.h"
 #include "planner/mesh/interval_path.h"
@@ -25,7 +26,9 @@ class PolygonSearch {
   /// before), the exact distance from each to every mesh vertex stored, and their (ALT) lower
   /// bound taken in the heuristic as well. Answers are unchanged.
   void add_landmarks(int count);
-  /// Off: the search also enters the dead ends (DeadEnds), as a measure of what pruning them saves.
+  /// Off: the search also enters the dead ends (DeadEnds), and a query whose ends are joined by
+  /// bridges only is searched too, not pulled taut through its channel: a measure of what the
+  /// dead ends save.
   void set_dead_end_pruning(bool on) { prune_dead_ends_ = on; }
   /// A query whose nodes and queue pass this many bytes stops, unanswered (over_budget_bytes).
   void set_memory_budget(std::size_t bytes) { budget_bytes_ = bytes; }
@@ -69,6 +72,10 @@ class PolygonSearch {
   void record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B, double gR, bool left,
                    Vec2 A, double gL);
   void record_in_view(std::int32_t polygon, Vec2 r, double g);
+  /// When every way from the start to the goal crosses the same row of polygons (each step a
+  /// bridge), the path pulled taut through it (funnel_path) into `out`; else false.
+  bool through_channel(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& last, Vec2 start,
+                       Vec2 goal, IntervalPath& out);
   void begin(Vec2 goal);
   void queue_fresh();
   /// The goal's node, or -1: none reached, or the search passed its memory budget (then
@@ -78,6 +85,8 @@ class PolygonSearch {
   const ConvexMesh& mesh_;
   DeadEnds dead_ends_;
   bool prune_dead_ends_ = true;
+  std::vector<std::int32_t> channel_;  // the bridge path of a query, reused
+  std::vector<Portal> portals_;
   Vec2 goal_;
   std::vector<std::uint32_t> goal_stamp_;  // polygons holding the goal: == search_
   std::vector<Node> nodes_, fresh_;
