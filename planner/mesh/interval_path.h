@@ -18,6 +18,7 @@ struct IntervalPath {
   std::int64_t expanded = 0;
   std::int64_t generated = 0;
   std::size_t over_budget_bytes = 0;  ///< not 0: the search stopped there, past its memory budget
+  bool through_channel = false;       ///< answered by the funnel through a row of bridges, no search
 };
 
 /// What a search's nodes and queue hold, in bytes (their capacity: what was allocated).

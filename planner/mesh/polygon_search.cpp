@@ -310,7 +310,7 @@ bool PolygonSearch::through_channel(const std::vector<std::int32_t>& first, cons
     // Leaving p (left of its edge k, counter-clockwise), the edge's far corner is on the left.
     portals_.push_back({mesh_.corner_points(p)[k + 1 < n ? k + 1 : 0], mesh_.corner_points(p)[k]});
   }
-  out.found = true;
+  out.found = out.through_channel = true;
   out.path = funnel_path(start, portals_, goal, mesh_.tolerance());
   out.expanded = to - from;  // the polygons walked
   return true;
