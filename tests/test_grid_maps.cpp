@@ -80,7 +80,8 @@ TEST(AnyAngle, LandmarksKeepTheAnswersAndCutTheWork) {
 // What the convex polygons are for: on BigGameHunters (every 4th reference query) a path
 // crosses one polygon where it crossed many rectangles cut at each step of a staircase wall,
 // so polyanya reaches the same answers expanding under half the intervals (measured over all
-// 447: 88 against 468 per query; 225 against 823 before the dead ends were pruned).
+// 447, `test_dead_ends`: 79.6 against 468 per query, a query answered by the funnel counting
+// the polygons it walks; 225 against 823 before the dead ends were pruned).
 TEST(AnyAngle, ConvexPolygonsKeepTheAnswersAndHalveTheWork) {
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/BigGameHunters.map"));
   auto rectangles = anyangle_planner(map, "interval");
