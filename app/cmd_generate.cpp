@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "util/atomic_file.h"
+#include "worlds/plant_styles.h"
 #include "worlds/random_plant.h"
 
 namespace plantsim::app {
@@ -13,6 +14,13 @@ std::function<int()> add_generate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("generate", "Write a random plant world (JSON) to stdout or --out");
   auto opt = std::make_shared<worlds::RandomPlantOptions>();
   auto out = std::make_shared<std::string>();
+  auto style = std::make_shared<std::string>();
+  std::string styles;
+  for (const std::string& n : worlds::plant_style_names()) styles += (styles.empty() ? "" : ", ") + n;
+  cmd->add_option("--style", *style,
+                  "A plant of a named style (" + styles + "; docs/world_format.md#generated-plants) on --width x --height, "
+                  "from --seed; --count, --density, --min-gap and --overlap do not apply")
+      ->check(CLI::IsMember(worlds::plant_style_names()));
   cmd->add_option("--count", opt->rect_count, "Number of rectangles")->check(CLI::Range(0, 200000));
   cmd->add_option("--seed", opt->seed, "Random seed");
   cmd->add_option("--width", opt->width_m, "Floor width (m)")->check(CLI::Range(5.0, 10000.0));
@@ -21,8 +29,9 @@ std::function<int()> add_generate_command(CLI::App& app) {
   cmd->add_option("--min-gap", opt->min_gap_m, "Gap between rectangles (m)")->check(CLI::Range(0.0, 100.0));
   cmd->add_flag("--overlap", opt->allow_overlap, "Let rectangles overlap and touch");
   cmd->add_option("--out", *out, "Output file (default: stdout)");
-  return [opt, out]() {
-    const worlds::World w = worlds::random_plant(*opt);
+  return [opt, out, style]() {
+    const worlds::World w =
+        style->empty() ? worlds::random_plant(*opt) : worlds::styled_plant(*style, opt->seed, opt->width_m, opt->height_m);
     nlohmann::ordered_json j;
     j["name"] = w.name;
     j["floor"] = {{"xmin", w.floor.xmin}, {"ymin", w.floor.ymin}, {"xmax", w.floor.xmax}, {"ymax", w.floor.ymax}};

@@ -15,7 +15,7 @@ namespace {
 const char* statistic_name(GateStatistic s) { return s == GateStatistic::kWilsonLow ? "wilson_low" : "success_rate"; }
 
 bool matches(const GateRule& r, const ConfigurationVerdict& v) {
-  return (r.world.empty() || r.world == v.world) && (r.planner.empty() || r.planner == v.planner) &&
+  return (r.world.empty() || r.world == v.world || v.world == kAllWorlds) && (r.planner.empty() || r.planner == v.planner) &&
          (r.controller.empty() || r.controller == v.controller) && (r.fault.empty() || r.fault == v.fault);
 }
 
@@ -59,7 +59,8 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
   std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationVerdict> by_key;
   for (const std::string& line : lines) {
     const nlohmann::json j = nlohmann::json::parse(line);
-    const auto key = std::make_tuple(j.value("world", ""), j.value("planner", ""), j.value("controller", ""), j.value("fault", ""));
+    const auto key = std::make_tuple(gate.pool_worlds ? std::string(kAllWorlds) : j.value("world", ""), j.value("planner", ""),
+                                     j.value("controller", ""), j.value("fault", ""));
     ConfigurationVerdict& v = by_key[key];
     std::tie(v.world, v.planner, v.controller, v.fault) = key;
     ++v.episodes;

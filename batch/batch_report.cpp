@@ -55,7 +55,6 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
   std::size_t start = 0;
   bool first = true;
   std::vector<int> index;
-  std::size_t row = 0;
   while (start < csv.size()) {
     const std::size_t end = std::min(csv.find('\n', start), csv.size());
     const std::vector<std::string> cells = util::csv_split(csv.substr(start, end - start));
@@ -68,18 +67,31 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
         index.push_back(static_cast<int>(it - header.begin()));
         report.headers.push_back(title);
       }
+      report.headers.push_back("failures by reason");
       report.headers.push_back("gate");
       first = false;
       continue;
     }
     std::vector<std::string> out;
     for (int i : index) out.push_back(static_cast<std::size_t>(i) < cells.size() ? cells[i] : "");
+    // The failed_<reason> columns that are not zero, as "reason count, ...".
+    std::string failures;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) {
+      if (header[i].rfind("failed_", 0) != 0 || cells[i] == "0") continue;
+      failures += (failures.empty() ? "" : ", ") + header[i].substr(7) + " " + cells[i];
+    }
+    out.push_back(failures.empty() ? "-" : failures);
+    // The row's verdict: its own, or its planner x controller x fault's over all worlds.
     std::string verdict = "not gated";
-    if (row < verdicts.size() && verdicts[row].threshold)
-      verdict = (verdicts[row].passed ? "pass (>= " : "FAIL (< ") + fixed(*verdicts[row].threshold, 2) + ")";
+    const ConfigurationVerdict* v = nullptr;
+    if (cells.size() >= 4)
+      for (const ConfigurationVerdict& c : verdicts)
+        if ((c.world == cells[0] || c.world == kAllWorlds) && c.planner == cells[1] && c.controller == cells[2] && c.fault == cells[3])
+          v = &c;
+    if (v && v->threshold)
+      verdict = std::string(v->passed ? "pass (>= " : "FAIL (< ") + fixed(*v->threshold, 2) + (v->world == kAllWorlds ? ", all worlds)" : ")");
     out.push_back(verdict);
     report.rows.push_back(out);
-    ++row;
   }
 }
 
@@ -187,7 +199,11 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
       options.dock_tolerance_m = f.config.tolerance.position_m;
       render::write_png(render::draw_run_figure(f.plant, f.result, options), out_dir + "/" + file,
                         render::PngSettings::fast());
-      report.figures.push_back({file, "FAILED " + f.id + ": " + f.result.status + ". Re-run it alone: plantsim batch " +
+      std::string why = f.result.status;
+      if (f.result.failure)
+        why = std::string(sim::to_string(f.result.failure->reason)) + " at " + fixed(f.result.failure->time_s, 1) + " s (" +
+              f.result.failure->detail + ")";
+      report.figures.push_back({file, "FAILED " + f.id + ": " + why + ". Re-run it alone: plantsim batch " +
                                           scenario_path + " --episode '" + f.id + "' --out DIR"});
     }
   }

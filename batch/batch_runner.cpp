@@ -9,10 +9,12 @@
 #include <cerrno>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -354,6 +356,7 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     double localization_error_max = 0;
     double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0, wall_follows = 0;
     std::int64_t ratio_n = 0, driven_n = 0;
+    std::array<std::int64_t, sim::kAllFailureReasons.size()> failed{};  // per reason, in kAllFailureReasons' order
   };
   std::map<std::tuple<std::string, std::string, std::string, std::string>, Acc> acc;
   for (const std::string& line : lines) {
@@ -383,12 +386,20 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     a.replans += j.value("replans", 0);
     a.recoveries += j.value("recoveries", 0);
     a.charging += j.value("charging", false);
+    if (j.contains("failure") && j["failure"].is_string())
+      if (const auto reason = sim::failure_reason_from_string(j["failure"].get<std::string>()))
+        ++a.failed[static_cast<std::size_t>(*reason)];
   }
   std::string out =
       "world,planner,controller,fault,episodes,succeeded,success_rate,ci95_low,ci95_high,mean_time_s,"
       "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
       "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,collisions_robot_moving,"
-      "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,charging\n";
+      "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,charging";
+  for (sim::FailureReason reason : sim::kAllFailureReasons) {
+    out += ",failed_";
+    out += sim::to_string(reason);
+  }
+  out += "\n";
   for (const auto& [key, a] : acc) {
     const auto [lo, hi] = wilson_interval(a.succeeded, a.n);
     char row[800];
@@ -403,8 +414,15 @@ std::string summary_csv(const std::vector<std::string>& lines) {
                   static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
                   1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok), a.stops / a.n,
                   a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
+    std::string failed;
+    for (std::int64_t count : a.failed) {
+      failed += ',';
+      failed += std::to_string(count);
+    }
+    std::string line(row, std::strlen(row) - 1);  // without its newline
+    line += failed + "\n";
     out += util::csv_field(std::get<0>(key)) + "," + util::csv_field(std::get<1>(key)) + "," + util::csv_field(std::get<2>(key)) + "," +
-           util::csv_field(std::get<3>(key)) + row;
+           util::csv_field(std::get<3>(key)) + line;
   }
   return out;
 }

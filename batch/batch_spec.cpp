@@ -180,19 +180,25 @@ double fraction(const YAML::Node& n, const std::string& path, const std::string&
   return v;
 }
 
-// gate: {min_success: R, statistic: success_rate | wilson_low, configurations: [{planner: gcr, min_success: R}, ...]}
+// gate: {min_success: R, statistic: success_rate | wilson_low, pool: worlds,
+//        configurations: [{planner: gcr, min_success: R}, ...]}
 Gate read_gate(const YAML::Node& node, const std::string& path) {
   Gate g;
   if (!node) return g;
-  if (!node.IsMap()) throw WorldError(path, "gate", "expected {min_success, statistic, configurations}");
+  if (!node.IsMap()) throw WorldError(path, "gate", "expected {min_success, statistic, pool, configurations}");
   for (const auto& kv : node) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
-    const std::vector<std::string> known = {"min_success", "statistic", "configurations"};
+    const std::vector<std::string> known = {"min_success", "statistic", "pool", "configurations"};
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, "gate." + key, worlds::unknown_key_problem(key, known));
   }
   if (node["min_success"]) g.min_success = fraction(node["min_success"], path, "gate.min_success");
   if (node["statistic"]) g.statistic = parse_gate_statistic(scalar_text(node, "statistic", path, ""), path + ": gate.statistic");
+  if (node["pool"]) {
+    const std::string pool = scalar_text(node, "pool", path, "");
+    if (pool != "worlds" && pool != "none") throw WorldError(path, "gate.pool", "expected 'worlds' or 'none', got '" + pool + "'");
+    g.pool_worlds = pool == "worlds";
+  }
   if (const YAML::Node list = node["configurations"]) {
     if (!list.IsSequence()) throw WorldError(path, "gate.configurations", "expected a list of {world, planner, controller, fault, min_success}");
     for (std::size_t i = 0; i < list.size(); ++i) {

@@ -44,6 +44,9 @@ struct GateRule {
 struct Gate {
   std::optional<double> min_success;
   GateStatistic statistic = GateStatistic::kSuccessRate;
+  /// `pool: worlds`: judge each planner x controller x fault over all worlds together (a
+  /// requirement on a kind of plant, not on each one), as world "all worlds".
+  bool pool_worlds = false;
   std::vector<GateRule> rules;
 };
 
@@ -73,6 +76,9 @@ struct BatchSpec {
   bool random_starts = true;          ///< each seed draws a free start; else the world's start
   Gate gate;
 };
+
+/// The world name pooled verdicts carry.
+inline constexpr const char* kAllWorlds = "all worlds";
 
 /// "success_rate" or "wilson_low"; throws std::invalid_argument naming `where`.
 GateStatistic parse_gate_statistic(const std::string& text, const std::string& where);

@@ -22,6 +22,30 @@ std::string_view to_string(DockPhase p) {
   return "unknown";
 }
 
+std::string_view to_string(DockFailure f) {
+  switch (f) {
+    case DockFailure::kNone: return "none";
+    case DockFailure::kRetriesExhausted: return "retries exhausted";
+    case DockFailure::kBlocked: return "back-off blocked";
+    case DockFailure::kUnsettled: return "never settled after a displacement";
+    case DockFailure::kNotLocalized: return "never localised again after a displacement";
+    case DockFailure::kUndockBlocked: return "undock blocked";
+  }
+  return "unknown";
+}
+
+double uncertainty_speed_fraction(const DockingParams& p, double position_sigma_m) {
+  if (!(position_sigma_m > p.confident_sigma_m)) return 1.0;
+  if (!(p.uncertain_sigma_m > p.confident_sigma_m) || position_sigma_m >= p.uncertain_sigma_m) return p.uncertain_speed_fraction;
+  const double share = (position_sigma_m - p.confident_sigma_m) / (p.uncertain_sigma_m - p.confident_sigma_m);
+  return 1.0 - share * (1.0 - p.uncertain_speed_fraction);
+}
+
+void DockingController::fail(DockFailure why) {
+  phase_ = DockPhase::kFailed;
+  failure_ = why;
+}
+
 DockingController::DockingController(PurePursuitParams tracking, DockingParams docking,
                                      std::vector<Vec2> path, Pose2 charger_on_map)
     : tracker_(tracking, std::move(path)), params_(docking), dock_map_(charger_on_map), dock_odom_(charger_on_map) {}
@@ -65,6 +89,7 @@ DockingCommand DockingController::recover(const DockingInput& in) {
   // Stopped until the estimate has settled: nothing touching, localised, for a while. A robot
   // that never settles gives up where it stands.
   const bool unsettled = in.displaced || in.bumper_front || in.bumper_rear || !in.localized;
+  if (unsettled) last_unsettled_by_localization_ = !in.localized && !in.bumper_front && !in.bumper_rear;
   settled_s_ = unsettled ? 0.0 : settled_s_ + in.dt_s;
   unsettled_s_ += in.dt_s;
   if (settled_s_ >= params_.settle_s) {
@@ -80,8 +105,13 @@ DockingCommand DockingController::recover(const DockingInput& in) {
     out.phase = phase_;
   } else if (unsettled_s_ > params_.stuck_timeout_s) {
     recovering_ = false;
-    phase_ = DockPhase::kFailed;
+    fail(last_unsettled_by_localization_ ? DockFailure::kNotLocalized : DockFailure::kUnsettled);
     out.phase = phase_;
+  } else if (!in.localized && !in.bumper_front && !in.bumper_rear) {
+    // Not knowing where it is: turn in place, so that the scans sweep all round for the
+    // global match (a disk turning in place sweeps nothing; the guard checks other footprints).
+    const Twist look_round{0.0, 0.4};
+    if (guard(in, look_round, false)) out.twist = look_round;
   }
   return out;
 }
@@ -145,7 +175,8 @@ bool DockingController::reverse_to_staging(const DockingInput& in, DockingComman
     out.twist = {};
     out.blocked = true;
     stuck_time_s_ += in.dt_s;
-    if (stuck_time_s_ > params_.stuck_timeout_s) phase_ = DockPhase::kFailed;
+    if (stuck_time_s_ > params_.stuck_timeout_s)
+      fail(phase_ == DockPhase::kUndock ? DockFailure::kUndockBlocked : DockFailure::kBlocked);
   } else {
     stuck_time_s_ = 0;
     note_clear(in.dt_s);
@@ -162,7 +193,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
   DockingCommand out;
   switch (phase_) {
     case DockPhase::kTravel: {
-      const TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
+      TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
+      // Slower when unsure where it is: the same arc, at a share of the speed.
+      const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
+      t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};
       out.cross_track_error_m = t.cross_track_error_m;
       out.twist = t.twist;
       // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
@@ -230,7 +264,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       out = approach(in);
       break;
     case DockPhase::kBackOff:
-      if (reverse_to_staging(in, out)) phase_ = giving_up_ ? DockPhase::kFailed : DockPhase::kAlign;
+      if (reverse_to_staging(in, out)) {
+        if (giving_up_) fail(DockFailure::kRetriesExhausted);
+        else phase_ = DockPhase::kAlign;
+      }
       break;
     case DockPhase::kUndock:
       if (reverse_to_staging(in, out)) phase_ = DockPhase::kUndocked;

@@ -21,6 +21,17 @@ namespace plantsim::controller {
 enum class DockPhase { kTravel, kAlign, kApproach, kBackOff, kDocked, kUndock, kUndocked, kFailed };
 std::string_view to_string(DockPhase p);
 
+/// Why the manoeuvre ended in kFailed, as the robot itself knows it.
+enum class DockFailure {
+  kNone,
+  kRetriesExhausted,  ///< the last allowed approach missed too
+  kBlocked,           ///< the back-off stayed blocked past stuck_timeout_s
+  kUnsettled,         ///< after a displacement it never settled (touching, displaced) within stuck_timeout_s
+  kNotLocalized,      ///< ... because the estimate never became healthy and tight again
+  kUndockBlocked,     ///< charging, but the way back to the staging pose stayed blocked
+};
+std::string_view to_string(DockFailure f);
+
 struct DockingParams {
   double staging_distance_m = 1.0;      ///< staging pose this far behind the docked pose
   double approach_speed_mps = 0.08;     ///< final approach speed
@@ -49,7 +60,14 @@ struct DockingParams {
   double replan_after_s = 3.0;          ///< blocked this long: ask for a new plan
   double yield_horizon_s = 3.0;         ///< something reaching the robot this soon: back away
   double yield_speed_mps = 0.6;         ///< reversing speed when backing away
+  // Travel slows as the estimate grows uncertain, instead of stopping.
+  double confident_sigma_m = 0.05;      ///< full speed up to this 1-sigma of the position estimate
+  double uncertain_sigma_m = 0.5;       ///< ... slowed linearly to uncertain_speed_fraction at this and beyond
+  double uncertain_speed_fraction = 0.6;
 };
+
+/// The share of travel speed an estimate of this 1-sigma allows (1 when confident).
+double uncertainty_speed_fraction(const DockingParams& p, double position_sigma_m);
 
 /// What the robot knows at one control step.
 struct DockingInput {
@@ -65,6 +83,7 @@ struct DockingInput {
   bool bumper_rear = false;        ///< ... or behind it
   bool displaced = false;          ///< moved without its wheels (shoved, slid) or touched something
   bool localized = true;           ///< the estimate is healthy and tight enough to plan from
+  double position_sigma_m = 0;     ///< 1-sigma of the position estimate (largest direction)
 };
 
 struct DockingCommand {
@@ -85,6 +104,8 @@ class DockingController {
   DockingCommand step(const DockingInput& in);
 
   DockPhase phase() const { return phase_; }
+  /// Why the phase is kFailed (kNone otherwise).
+  DockFailure failure() const { return failure_; }
   int retries() const { return retries_; }
   int stops() const { return stops_; }
   int recoveries() const { return recoveries_; }
@@ -108,6 +129,7 @@ class DockingController {
   /// what lies at the charger when `spare_charger`.
   bool guard(const DockingInput& in, const Twist& twist, bool spare_charger);
   void note_clear(double dt_s);
+  void fail(DockFailure why);
   /// Backs straight out along the axis (guarded); true once at the staging pose.
   bool reverse_to_staging(const DockingInput& in, DockingCommand& out);
 
@@ -117,6 +139,8 @@ class DockingController {
   Pose2 dock_odom_;  // the same in the odometry frame, refined by detections
   bool dock_placed_ = false;
   DockPhase phase_ = DockPhase::kTravel;
+  DockFailure failure_ = DockFailure::kNone;
+  bool last_unsettled_by_localization_ = false;  // the last unsettled step was only the estimate's
   int retries_ = 0;
   bool giving_up_ = false;  // the last back-off before failing
   double approach_time_s_ = 0;

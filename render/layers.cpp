@@ -257,6 +257,7 @@ Rgb event_colour(sim::EpisodeResult::Event::Kind kind) {
     case Kind::kRecovery: return palette::kRecoveryMark;
     case Kind::kCollision: return palette::kCollisionMark;
     case Kind::kRetry: return palette::kRetryMark;
+    case Kind::kFailure: return palette::kFailureMark;
   }
   return palette::kAxis;
 }
@@ -269,6 +270,10 @@ void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& even
       const Vec2 a{7 * px, 7 * px}, b{7 * px, -7 * px};
       c.polyline({e.at - a, e.at + a}, 3.0, palette::kCollisionMark);
       c.polyline({e.at - b, e.at + b}, 3.0, palette::kCollisionMark);
+      continue;
+    }
+    if (e.kind == Kind::kFailure) {  // a diamond, larger than every ring, drawn last of all
+      c.fill_box(e.at, 8 * px, 8 * px, M_PI / 4, palette::kFailureMark);
       continue;
     }
     // Nested sizes, so that a stop, a replan, a retry and a recovery at one place all show.

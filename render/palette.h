@@ -49,6 +49,7 @@ inline constexpr Rgb kReplanMark = kOkabeBlue;       ///< where it replanned (ri
 inline constexpr Rgb kRecoveryMark = kOkabeOrange;   ///< where it recovered after a displacement (ring)
 inline constexpr Rgb kCollisionMark{220, 0, 0};      ///< where a collision began (cross)
 inline constexpr Rgb kRetryMark = kOkabeReddishPurple;  ///< where the docking backed off to retry (ring)
+inline constexpr Rgb kFailureMark{150, 0, 200};      ///< where the episode failed (filled diamond)
 inline constexpr Rgb kTolerance = kOkabeBluishGreen;    ///< the docking tolerance box (inset)
 inline constexpr Rgb kPhaseTravel{235, 240, 250};    ///< time-plot shading by phase
 inline constexpr Rgb kPhaseDocking{232, 246, 238};

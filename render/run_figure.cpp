@@ -211,7 +211,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   draw_events(c, run.events);
   using Kind = sim::EpisodeResult::Event::Kind;
   for (const auto& named : {std::pair{Kind::kStop, "stop"}, {Kind::kReplan, "replan"}, {Kind::kRetry, "retry"},
-                            {Kind::kRecovery, "recovery"}, {Kind::kCollision, "collision"}}) {
+                            {Kind::kRecovery, "recovery"}, {Kind::kCollision, "collision"},
+                            {Kind::kFailure, "failure"}}) {
     const Kind kind = named.first;
     listed(std::any_of(run.events.begin(), run.events.end(), [&](const auto& e) { return e.kind == kind; }),
            event_colour(kind), named.second);
@@ -228,6 +229,12 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
 
   std::string title = world.name + "  |  " + method_label(run);
   if (!o.setting.empty()) title += "  |  " + o.setting;
+  if (run.failure) {
+    char failed[120];
+    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s", std::string(sim::to_string(run.failure->reason)).c_str(),
+                  run.failure->time_s);
+    title += failed;
+  }
   fig.text_fitted(o.title.empty() ? title : o.title, 70, 26, 18, palette::kAxis, o.width_px - 90.0, true);
   fig.text_fitted(result_line(run) + "  |  " + length_line(run), 70, 46, 13, palette::kAxis, o.width_px - 90.0);
   fig.colour_bar({column, 96, column + 240, 108}, 0.0, world.robot.max_speed_mps,
@@ -240,7 +247,9 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const bool near_dock =
       !run.trajectory.empty() &&
       (std::any_of(run.trajectory.begin(), run.trajectory.end(),
-                   [](const auto& s) { return s.phase != controller::DockPhase::kTravel; }) ||
+                   [](const auto& s) {
+                     return s.phase != controller::DockPhase::kTravel && s.phase != controller::DockPhase::kFailed;
+                   }) ||
        geom::distance(run.trajectory.back().truth.position(), world.charger.position()) < 3.0);
   if (near_dock && !world.target && inset_top + 150 < o.height_px)
     draw_docking_inset(fig, world, run, o, {column, inset_top, o.width_px - 20.0, o.height_px - 52.0});

@@ -66,10 +66,37 @@ void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double
 }
 
 void EkfLocalizer::update_health() {
-  // Five failed matches in a row (a third of a second at 15 Hz) is more than a passing crowd.
-  if (position_sigma_m() > p_.lost_position_sigma_m) health_ = LocalizationHealth::kLost;
-  else if (failed_matches_ >= 5) health_ = LocalizationHealth::kDegraded;
+  const double sigma = position_sigma_m();
+  if (sigma > p_.lost_position_sigma_m || failed_matches_ >= p_.lost_failed_matches) health_ = LocalizationHealth::kLost;
+  else if (sigma > p_.ok_position_sigma_m || inconsistent_ || failed_matches_ >= 5) health_ = LocalizationHealth::kDegraded;
   else health_ = LocalizationHealth::kOk;
+}
+
+void EkfLocalizer::record_nis(double nis, int dof) {
+  const std::size_t window = static_cast<std::size_t>(std::max(1, p_.nis_window));
+  if (nis_.size() < window) nis_.emplace_back(nis, dof);
+  else nis_[nis_next_] = {nis, dof};
+  nis_next_ = (nis_next_ + 1) % window;
+  double sum = 0;
+  int k = 0;
+  for (const auto& [v, d] : nis_) sum += v, k += d;
+  // Wilson-Hilferty: chi-square with k degrees of freedom is nearly k (1 - 2/9k + z sqrt(2/9k))^3.
+  const double a = 2.0 / (9.0 * std::max(k, 1));
+  const double bound = k * std::pow(1.0 - a + p_.nis_quantile_z * std::sqrt(a), 3);
+  // A window of a few scans judges nothing yet.
+  inconsistent_ = nis_.size() >= window / 2 && k > 0 && sum > bound;
+}
+
+void EkfLocalizer::reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance) {
+  x_.head<3>() << pose.x, pose.y, pose.yaw;
+  P_.topLeftCorner<3, 3>() = pose_covariance;
+  P_.block<3, 1>(0, 3).setZero();
+  P_.block<1, 3>(3, 0).setZero();
+  failed_matches_ = 0;
+  nis_.clear();
+  nis_next_ = 0;
+  inconsistent_ = false;
+  update_health();
 }
 
 void EkfLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
@@ -78,6 +105,38 @@ void EkfLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
   P_(2, 2) += yaw_sigma_rad * yaw_sigma_rad;
 }
 
+namespace {
+
+// Yaw is compared with positions at this lever arm: a yaw error of 1 rad moves a point this far
+// away by about 1 m.
+constexpr double kYawLever_m = 1.0;
+
+/// The scan's information and gradient restricted to the directions it constrains to within
+/// `sigma_m` (positions in metres, yaw at kYawLever_m); returns how many there are.
+int keep_constrained(Eigen::Matrix4d& info, Eigen::Vector4d& gradient, double sigma_m) {
+  const Eigen::Vector3d scale(1.0, 1.0, 1.0 / kYawLever_m);
+  const Eigen::Matrix3d scaled = scale.asDiagonal() * info.topLeftCorner<3, 3>() * scale.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(scaled);
+  Eigen::Matrix3d projector = Eigen::Matrix3d::Zero();
+  int kept = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (es.eigenvalues()(i) < 1.0 / (sigma_m * sigma_m)) continue;
+    projector += es.eigenvectors().col(i) * es.eigenvectors().col(i).transpose();
+    ++kept;
+  }
+  // Back to the state's units (the scaling is diagonal: info = D^-1 info' D^-1, g = D^-1 g').
+  const Eigen::Matrix3d kept_scaled = projector * scaled * projector;
+  info.setZero();
+  info.topLeftCorner<3, 3>() = scale.cwiseInverse().asDiagonal() * kept_scaled * scale.cwiseInverse().asDiagonal();
+  Eigen::Vector3d g = scale.asDiagonal() * gradient.head<3>();
+  g = projector * g;
+  gradient.setZero();
+  gradient.head<3>() = scale.cwiseInverse().asDiagonal() * g;
+  return kept;
+}
+
+}  // namespace
+
 double EkfLocalizer::correct(const LidarScan& scan) {
   // Beams spread evenly over the scan; the same ones in every iteration.
   std::vector<std::size_t> beams;
@@ -85,23 +144,23 @@ double EkfLocalizer::correct(const LidarScan& scan) {
   const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1, p_.beams_used)));
   for (std::size_t i = 0; i < n; i += stride)
     if (scan.valid(i)) beams.push_back(i);
-  if (beams.empty()) return 0.0;
 
   const State x0 = x_;
   const Covariance P0 = P_;
   const Covariance P0_inv = P0.inverse();
   const double r_var = p_.range_sigma_m * p_.range_sigma_m;
   State xi = x0;
-  Covariance info;
-  int used = 0;
+  Covariance scan_info = Covariance::Zero();
+  int used = 0, expected = 0, kept = 0;
   for (int iter = 0; iter < std::max(1, p_.iterations); ++iter) {
-    info = P0_inv;
     // Minimises the prior's and the beams' squared errors about this iterate:
-    // (P0^-1 + sum H'H/r) dx = P0^-1 (x0 - xi) + sum H' innovation / r.
+    // (P0^-1 + sum H'H/r) dx = P0^-1 (x0 - xi) + sum H' innovation / r,
+    // the beams' terms kept only along the directions they constrain.
     State dx = x0 - xi;
     dx(2) = geom::wrap_angle(dx(2));
-    State eta = P0_inv * dx;
-    used = 0;
+    scan_info.setZero();
+    State gradient = State::Zero();
+    used = expected = 0;
     const geom::Pose2 robot{xi(0), xi(1), xi(2)};
     const geom::Pose2 sensor = geom::compose(robot, scan.mount);
     const geom::Vec2 mount_world = geom::rotate({scan.mount.x, scan.mount.y}, robot.yaw);
@@ -112,6 +171,7 @@ double EkfLocalizer::correct(const LidarScan& scan) {
       const geom::Vec2 u = geom::unit_from_angle(phi);
       const double nu = geom::dot(hit->normal, u);
       if (-nu < p_.min_incidence_cos) continue;  // grazing: the range jumps with the pose
+      ++expected;
       // Point-to-line: r = n.(q - s) / (n.u); dr/ds = -n / (n.u), dr/dphi = -r (n.u') / (n.u).
       const geom::Vec2 dr_ds = (-1.0 / nu) * hit->normal;
       const geom::Vec2 u_perp{-u.y, u.x};
@@ -121,24 +181,49 @@ double EkfLocalizer::correct(const LidarScan& scan) {
       const double innovation = scan.ranges[i] - hit->range_m;
       // Gate against the prior's spread, moved to this iterate.
       const double s = (H * P0 * H.transpose())(0, 0) + r_var;
-      if (innovation * innovation > p_.gate_chi2 * s) continue;
-      info += H.transpose() * H / r_var;
-      eta += H.transpose() * innovation / r_var;
+      if (innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m)) continue;
+      scan_info += H.transpose() * H / r_var;
+      gradient += H.transpose() * innovation / r_var;
       ++used;
     }
-    if (used < 3) break;
-    const State step = info.ldlt().solve(eta);
+    if (expected < p_.min_informative_beams || used < 3) break;
+    kept = keep_constrained(scan_info, gradient, p_.constraint_sigma_m);
+    if (kept == 0) break;
+    const Covariance info = P0_inv + scan_info;
+    const State step = info.ldlt().solve(P0_inv * dx + gradient);
     xi += step;
     xi(2) = geom::wrap_angle(xi(2));
     if (step.head<2>().norm() < 1e-4 && std::fabs(step(2)) < 1e-5) break;
   }
-  const double inliers = static_cast<double>(used) / static_cast<double>(beams.size());
-  if (used >= 3 && inliers >= p_.degraded_inlier_fraction) {
+  informative_ = expected >= p_.min_informative_beams;
+  if (!informative_) {
+    // Open ground: nothing to match. Odometry and the gyro carry the estimate on.
+    constrained_ = 0;
+    update_health();
+    return 0.0;
+  }
+  const double inliers = static_cast<double>(used) / static_cast<double>(expected);
+  if (used >= 3 && kept > 0 && inliers >= p_.degraded_inlier_fraction) {
     x_ = xi;
-    P_ = info.inverse();
+    P_ = (P0_inv + scan_info).inverse();
     P_ = 0.5 * (P_ + P_.transpose());
+    constrained_ = kept;
     failed_matches_ = 0;
-  } else {
+    // Consistency: the correction against the spread the prior and the update predict for it,
+    // dx' (P0 - P1)^+ dx, chi-square with as many degrees of freedom as directions updated.
+    State correction = x_ - x0;
+    correction(2) = geom::wrap_angle(correction(2));
+    const Eigen::Matrix3d spread = (P0 - P_).topLeftCorner<3, 3>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(spread);
+    const Eigen::Vector3d along = es.eigenvectors().transpose() * correction.head<3>();
+    double nis = 0;
+    int dof = 0;
+    const double floor = 1e-9 * std::max(es.eigenvalues().maxCoeff(), 1e-12);
+    for (int i = 0; i < 3; ++i)
+      if (es.eigenvalues()(i) > floor) nis += along(i) * along(i) / es.eigenvalues()(i), ++dof;
+    dof = std::min(dof, kept);
+    if (dof > 0) record_nis(nis, dof);
+  } else if (kept > 0 || used < 3) {
     ++failed_matches_;
   }
   update_health();

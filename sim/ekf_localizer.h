@@ -3,13 +3,19 @@
 // rate, and corrects with each lidar scan matched to the map: every used beam's range is
 // compared with the range the map predicts from the estimated pose (a ray cast through the
 // map), linearised point-to-line at the surface hit, gated by its innovation, and the update
-// is iterated (Gauss-Newton) from the prior. Health is judged from what the scans say:
-// the share of beams the map explains and the size of the covariance.
+// is iterated (Gauss-Newton) from the prior. The scan updates only the directions it
+// constrains (a corridor's walls say nothing along it: that direction keeps its prior and grows
+// with odometry). Health is statistical: the normalised innovation squared of the scan
+// updates over a window against chi-square bounds, the share of beams the map predicts that
+// the scan confirms, and the size of the covariance. A scan with too few beams on mapped
+// surfaces (open ground) is no evidence either way: the filter goes on with odometry and gyro.
 #pragma once
 
 #include <Eigen/Dense>
 
 #include <string>
+#include <utility>
+#include <vector>
 #include <string_view>
 
 #include "geometry/vec2.h"
@@ -28,11 +34,20 @@ struct EkfParams {
   double bias_walk_radps_per_sqrt_s = 0.0002;
   double range_sigma_m = 0.015;             ///< per beam (lidar noise plus map error)
   int beams_used = 60;                      ///< beams per scan in the update, spread evenly
-  double gate_chi2 = 9.0;                   ///< beams whose innovation exceeds this (normalised) are outliers
+  double gate_chi2 = 9.0;                   ///< beams whose innovation exceeds this (normalised) are outliers ...
+  double gate_floor_m = 0.25;               ///< ... unless within this of the map's range: an estimate too sure
+                                            ///< of itself (after a slip the wheels hid) must still be corrected
   double min_incidence_cos = 0.25;          ///< beams grazing a surface more than this are skipped
   int iterations = 3;
-  double degraded_inlier_fraction = 0.3;    ///< a scan the map explains less than this is a failed match
+  int min_informative_beams = 10;           ///< fewer beams with a mapped surface ahead: the scan is no evidence
+  double constraint_sigma_m = 0.05;         ///< a direction the scan alone pins down less tightly is not updated
+  double degraded_inlier_fraction = 0.3;    ///< a scan confirming less than this share of the beams the map
+                                            ///< predicts is a failed match
+  double ok_position_sigma_m = 0.04;        ///< health ok only within this 1-sigma (10 cm is then 2.5 sigma)
   double lost_position_sigma_m = 0.5;       ///< beyond this 1-sigma the localisation is lost
+  int nis_window = 15;                      ///< informative scans whose normalised innovations are summed
+  double nis_quantile_z = 3.09;             ///< that sum beyond the chi-square quantile of this z (0.999): inconsistent
+  int lost_failed_matches = 45;             ///< informative scans in a row the map contradicts (3 s at 15 Hz): lost
 };
 
 enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
@@ -62,15 +77,29 @@ class EkfLocalizer {
   double gyro_bias_radps() const { return x_(3); }
   LocalizationHealth health() const { return health_; }
   int failed_matches() const { return failed_matches_; }
+  /// The last scan had enough beams on mapped surfaces to say anything.
+  bool last_scan_informative() const { return informative_; }
+  /// Directions (of x, y, yaw) the last informative scan constrained, 0 to 3.
+  int constrained_directions() const { return constrained_; }
+  /// The normalised innovations of the window's scans are beyond their chi-square bound.
+  bool inconsistent() const { return inconsistent_; }
+  /// Replaces the estimate (a global relocalisation), with the given pose covariance.
+  void reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance);
 
  private:
   void update_health();
+  void record_nis(double nis, int dof);
   EkfParams p_;
   const MapRaycaster& map_;
   State x_;
   Covariance P_;
   LocalizationHealth health_ = LocalizationHealth::kOk;
-  int failed_matches_ = 0;       // scans in a row the map did not explain
+  int failed_matches_ = 0;       // informative scans in a row the map did not explain
+  bool informative_ = false;
+  int constrained_ = 0;
+  bool inconsistent_ = false;
+  std::vector<std::pair<double, int>> nis_;  // the window's normalised innovations and degrees of freedom
+  std::size_t nis_next_ = 0;                 // ring buffer position
 };
 
 }  // namespace plantsim::sim

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sim/episode_metrics.h"
+#include "sim/failure_watch.h"
 #include "sim/travel.h"
 
 namespace plantsim::sim {
@@ -58,6 +59,9 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     // The potential field needs no plan: without its reference it still drives.
     if (config.travel != TravelMode::kPotentialField) {
       result.status = std::string(planner::to_string(plan.status));
+      result.failure = Failure{FailureReason::kNoPath, 0.0, map.start,
+                               "the planner: " + result.status + (plan.note.empty() ? "" : " (" + plan.note + ")")};
+      result.events.push_back({EpisodeResult::Event::Kind::kFailure, 0.0, map.start.position()});
       return result;
     }
     result.plan_note = "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
@@ -100,6 +104,9 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   double next_track_s = 0;
   constexpr double kMovingTrackPeriod_s = 0.25;
   LocalizationHealth worst_health = LocalizationHealth::kOk;
+  FailureWatch watch;
+  bool kidnapped = false;
+  std::optional<GiveUp> give_up;
   result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
   // logging every control period, seeing the contacts latched since the last one.
@@ -131,6 +138,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       }
       const TravelCounts before = travel->counts();
       const Decision d = travel->decide(p);  // decide
+      watch.observe(t, truth, p.pose, p.health, d.blocked);
       const TravelCounts after = travel->counts();
       using Kind = EpisodeResult::Event::Kind;
       if (after.stops > before.stops) result.events.push_back({Kind::kStop, t, truth.position()});
@@ -156,10 +164,16 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         result.undocked = d.finished == "undocked";
         result.status = charged && !result.docked ? "docked_with_collision" : d.finished;
         if (!charged) metrics.measure_final_error(physics);
+        give_up = d.give_up;
         break;
       }
       const controller::Twist twist = governor.limit(d.twist, p.slipping, period * dt);
       drive.command(controller::to_wheels(twist, plant.robot.wheel_base_m), period * dt);  // actuate
+    }
+    if (config.kidnap.enabled() && !kidnapped && k * dt >= config.kidnap.at_s) {
+      kidnapped = true;
+      const Pose2 was = physics.robot_pose();
+      physics.place_robot({was.x + config.kidnap.dx_m, was.y + config.kidnap.dy_m, geom::wrap_angle(was.yaw + config.kidnap.dyaw_rad)});
     }
     drive.apply(physics, dt);
     physics.step(config.step);  // step
@@ -182,6 +196,13 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.last_scan = perceiver.last_scan();
   result.tracked_final = perceiver.tracker().boxes(result.time_s);
   result.layer_final = perceiver.current().layer;
+  if (!result.succeeded()) {
+    std::optional<std::pair<double, Vec2>> first_collision;
+    for (const EpisodeResult::Event& e : result.events)
+      if (e.kind == EpisodeResult::Event::Kind::kCollision && !first_collision) first_collision = {e.t_s, e.at};
+    result.failure = watch.judge(result.time_s, physics.robot_pose(), give_up, first_collision, pursuit);
+    result.events.push_back({EpisodeResult::Event::Kind::kFailure, result.failure->time_s, result.failure->pose.position()});
+  }
   return result;
 }
 

@@ -14,6 +14,7 @@
 #include "controller/potential_field.h"
 #include "controller/traction.h"
 #include "planner/planner.h"
+#include "sim/failure.h"
 #include "sim/perception.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"  // the parameter structs of every sensor
@@ -35,6 +36,15 @@ struct DockTolerance {
 enum class TravelMode { kPath, kPotentialField };
 std::string_view to_string(TravelMode m);
 
+/// A kidnap: at `at_s` the robot is lifted and set down moved by (dx, dy) and turned by dyaw
+/// (in the world frame), at rest; nothing it senses says so but the scans that follow. Off
+/// while at_s < 0.
+struct KidnapFault {
+  double at_s = -1;
+  double dx_m = 0, dy_m = 0, dyaw_rad = 0;
+  bool enabled() const { return at_s >= 0; }
+};
+
 struct EpisodeConfig {
   StepSettings step;
   DriveParams drive;
@@ -53,6 +63,7 @@ struct EpisodeConfig {
   double catch_distance_m = 0.1;        ///< a moving target is caught this close (edge to edge)
   double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
   DockTolerance tolerance;
+  KidnapFault kidnap;
   double timeout_s = 600.0;
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
   double scan_log_period_s = 0;  ///< keep the scan and the tracks this often, for animations (0: only the last)
@@ -72,6 +83,7 @@ struct TrajectorySample {
 };
 
 struct EpisodeResult {
+  std::optional<Failure> failure;  ///< why it did not succeed (set exactly when !succeeded())
   std::string status;            ///< "docked", "docked_with_collision", "caught", "failed", "trapped", "timeout",
                                  ///< or a planner status
   bool docked = false;           ///< charging and no collision in the whole episode (success)
@@ -131,9 +143,9 @@ struct EpisodeResult {
   std::vector<controller::MovingBox> tracked_final;  ///< obstacles perception tracked at the end
   std::vector<geom::Rect> layer_final;               ///< the local obstacle layer at the end
   /// Where the robot stopped for something, replanned, recovered after a displacement, backed
-  /// off to retry the docking, or began a collision.
+  /// off to retry the docking, began a collision, or failed (failure's time and place).
   struct Event {
-    enum class Kind { kStop, kReplan, kRecovery, kCollision, kRetry };
+    enum class Kind { kStop, kReplan, kRecovery, kCollision, kRetry, kFailure };
     Kind kind;
     double t_s;
     Vec2 at;  ///< true position (for a collision, the robot's centre when contact began)

@@ -81,7 +81,11 @@ const std::vector<Field>& fields() {
       PS_POSITIVE("ekf", perception.ekf.range_sigma_m, "range_sigma_m"),
       PS_POSITIVE("ekf", perception.ekf.gate_chi2, "gate_chi2"),
       PS_PROBABILITY("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos"),
+      PS_FIELD("ekf", perception.ekf.gate_floor_m, "gate_floor_m"),
+      PS_POSITIVE("ekf", perception.ekf.constraint_sigma_m, "constraint_sigma_m"),
       PS_PROBABILITY("ekf", perception.ekf.degraded_inlier_fraction, "degraded_inlier_fraction"),
+      PS_POSITIVE("ekf", perception.ekf.ok_position_sigma_m, "ok_position_sigma_m"),
+      PS_POSITIVE("ekf", perception.ekf.nis_quantile_z, "nis_quantile_z"),
       PS_POSITIVE("ekf", perception.ekf.lost_position_sigma_m, "lost_position_sigma_m"),
       PS_FIELD("tracker", perception.tracker.unexplained_margin_m, "unexplained_margin_m"),
       PS_POSITIVE("tracker", perception.tracker.range_m, "range_m"),
@@ -125,6 +129,13 @@ const std::vector<Field>& fields() {
       PS_FIELD("docking", docking.replan_after_s, "replan_after_s"),
       PS_FIELD("docking", docking.yield_horizon_s, "yield_horizon_s"),
       PS_FIELD("docking", docking.yield_speed_mps, "yield_speed_mps"),
+      PS_RANGE("kidnap", kidnap.at_s, "at_s", -1.0, 86400.0, false),
+      PS_RANGE("kidnap", kidnap.dx_m, "dx_m", -1000.0, 1000.0, false),
+      PS_RANGE("kidnap", kidnap.dy_m, "dy_m", -1000.0, 1000.0, false),
+      PS_RANGE("kidnap", kidnap.dyaw_rad, "dyaw_rad", -M_PI, M_PI, false),
+      PS_FIELD("docking", docking.confident_sigma_m, "confident_sigma_m"),
+      PS_FIELD("docking", docking.uncertain_sigma_m, "uncertain_sigma_m"),
+      PS_PROBABILITY("docking", docking.uncertain_speed_fraction, "uncertain_speed_fraction"),
       PS_FIELD("potential_field", field.k_att, "k_att"),
       PS_RANGE("potential_field", field.m, "m", 0.0, 10.0, false),  // exponents
       PS_FIELD("potential_field", field.k_att_v, "k_att_v"),
@@ -175,6 +186,10 @@ const std::vector<Field>& fields() {
       PS_POSITIVE("perception", perception.slip_jump_m, "slip_jump_m"),
       PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
       PS_RANGE("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0, false),
+      PS_RANGE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0, true),
+      PS_RANGE("perception", perception.global_match_sigma_m, "global_match_sigma_m", 0.0, 100.0, true),
+      PS_RANGE("perception", perception.global_match_period_s, "global_match_period_s", 0.0, 100.0, false),
+      PS_RANGE("perception", perception.global_match_max_window_m, "global_match_max_window_m", 0.1, 100.0, false),
       PS_RANGE("", timeout_s, "timeout_s", 0.0, 86400.0, true),
   };
   return table;
@@ -201,6 +216,9 @@ const std::vector<IntField>& int_fields() {
       {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1, 10000},
       {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1, 10000},
       {"ekf", "iterations", [](EpisodeConfig& c) -> int& { return c.perception.ekf.iterations; }, 1, 20},
+      {"ekf", "min_informative_beams", [](EpisodeConfig& c) -> int& { return c.perception.ekf.min_informative_beams; }, 3, 10000},
+      {"ekf", "nis_window", [](EpisodeConfig& c) -> int& { return c.perception.ekf.nis_window; }, 1, 1000},
+      {"ekf", "lost_failed_matches", [](EpisodeConfig& c) -> int& { return c.perception.ekf.lost_failed_matches; }, 1, 100000},
   };
   return table;
 }

@@ -5,6 +5,14 @@ namespace plantsim::sim {
 
 void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["status"] = r.status;
+  if (r.failure) {
+    j["failure"] = std::string(to_string(r.failure->reason));
+    j["failure_time_s"] = r.failure->time_s;
+    j["failure_pose"] = {r.failure->pose.x, r.failure->pose.y, r.failure->pose.yaw};
+    j["failure_detail"] = r.failure->detail;
+  } else {
+    j["failure"] = nullptr;
+  }
   j["docked"] = r.docked;
   j["charging"] = r.charging;
   j["undocked"] = r.undocked;

@@ -2,6 +2,7 @@
 // knowledge as the readings hand it over (oracle).
 #include "sim/perception.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/predicates.h"
@@ -101,6 +102,30 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   }
 }
 
+bool Perceiver::relocalize(const LidarScan& scan) {
+  const double sigma = ekf_.position_sigma_m();
+  if (sigma <= p_.global_match_sigma_m) return true;
+  const bool local_ok = sigma <= p_.local_update_max_sigma_m;
+  if (scan.t_s + 1e-9 < next_match_s_) return local_ok;
+  next_match_s_ = scan.t_s + p_.global_match_period_s;
+  if (!matcher_) matcher_.emplace(map_, p_.matcher);
+  const MatchWindow window{std::clamp(3.0 * sigma, 0.5, p_.global_match_max_window_m),
+                           std::clamp(3.0 * ekf_.yaw_sigma_rad(), 0.05, M_PI)};
+  const std::optional<ScanMatch> m = matcher_->match(scan, ekf_.pose(), window);
+  if (!m) return local_ok;  // open ground: nothing to match
+  if (!m->accepted) {
+    // Returns, but no place that fits them alone: search wider next time.
+    if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);
+    return local_ok;
+  }
+  const double cell = matcher_->resolution_m();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  covariance.diagonal() << cell * cell, cell * cell, 0.01 * 0.01;
+  ekf_.reset(m->pose, covariance);
+  ++relocalizations_;
+  return true;  // the local update refines the match
+}
+
 const Perception& Perceiver::update(const SensorReadings& r) {
   now_.t_s = r.t_s;
   now_.dt_s = r.dt_s;
@@ -127,17 +152,33 @@ const Perception& Perceiver::update(const SensorReadings& r) {
 
   ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
   // Moved without the wheels: a contact (the robot never touches anything but the charger's
-  // pads, which are not on the bumper), or a scan that pulls the estimate far, or scans the
-  // map stops explaining. Widen the estimate so that the next scans can find where it went.
+  // pads, which are not on the bumper), or a scan that pulls the estimate further than its
+  // spread allows, or scans the map stops explaining. Widen the estimate so that the next
+  // scans can find where it went.
   const geom::Pose2 predicted = ekf_.pose();
+  const double predicted_sigma = ekf_.position_sigma_m();
   const int failed_before = ekf_.failed_matches();
-  if (r.scan) ekf_.correct(*r.scan);
+  if (r.scan && relocalize(*r.scan)) ekf_.correct(*r.scan);
   const double correction = geom::distance(predicted.position(), ekf_.pose().position());
-  const bool jumped = correction > p_.displaced_jump_m;
-  const double encoder_turn = r.dt_s > 0 ? geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_) / r.dt_s : 0.0;
+  // A correction within three sigmas of the prediction is the filter doing its work.
+  const bool jumped = correction > std::max(p_.displaced_jump_m, 3.0 * predicted_sigma);
+  // Slip: the encoders' turn against the gyro's, averaged over a window so that the encoders'
+  // noise does not pass for it; or a scan correction beyond what the prediction allows.
+  const double encoder_turn = geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_);
   odom_yaw_before_ = r.odom_pose.yaw;
-  now_.slipping = correction > p_.slip_jump_m ||
-                  (r.dt_s > 0 && std::fabs(encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps())) > p_.slip_turn_radps);
+  if (r.dt_s > 0) {
+    const double gap = encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps()) * r.dt_s;
+    turn_gap_.emplace_back(r.dt_s, gap);
+    turn_gap_sum_ += gap;
+    turn_gap_time_ += r.dt_s;
+    while (turn_gap_time_ > p_.slip_window_s + 1e-9 && turn_gap_.size() > 1) {
+      turn_gap_sum_ -= turn_gap_.front().second;
+      turn_gap_time_ -= turn_gap_.front().first;
+      turn_gap_.pop_front();
+    }
+  }
+  const bool turn_slip = turn_gap_time_ >= 0.5 * p_.slip_window_s && std::fabs(turn_gap_sum_) > p_.slip_turn_radps * turn_gap_time_;
+  now_.slipping = correction > std::max(p_.slip_jump_m, 3.0 * predicted_sigma) || turn_slip;
   const bool unexplained = ekf_.failed_matches() >= 2;
   const bool became_unexplained = unexplained && failed_before < 2;
   const bool touched = r.bumper.front || r.bumper.rear;

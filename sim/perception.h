@@ -18,6 +18,7 @@
 #include "sim/local_obstacle_layer.h"
 #include "sim/map_raycaster.h"
 #include "sim/obstacle_tracker.h"
+#include "sim/scan_matcher.h"
 #include "sim/sensor_readings.h"
 
 namespace plantsim::sim {
@@ -37,8 +38,22 @@ struct PerceptionParams {
   double moving_speed_mps = 0.3;     ///< tracks faster than this do not mark the layer (they move on)
   double displaced_jump_m = 0.05;    ///< one scan moving the estimate this far means the wheels missed a motion
   double slip_jump_m = 0.02;         ///< ... this far, that the wheels slipped
-  double slip_turn_radps = 0.15;     ///< encoders' turn rate this far from the gyro's: the wheels slip
+  double slip_turn_radps = 0.15;     ///< encoders' turn rate this far from the gyro's, on average over
+                                     ///< slip_window_s: the wheels slip (single readings are noise)
+  double slip_window_s = 0.5;
   double relocalize_sigma_m = 0.3;   ///< a displacement widens the estimate by this, so scans can catch it
+  /// Beyond this 1-sigma a local scan update could lock onto the nearest look-alike: the scan is
+  /// matched globally (scan_matcher.h) within three sigmas instead, at most every
+  /// global_match_period_s, and the filter restarts from an unambiguous match.
+  double global_match_sigma_m = 0.15;
+  double global_match_period_s = 0.5;
+  double global_match_max_window_m = 10.0;
+  /// Up to this 1-sigma the local update still runs when no unambiguous global match is found
+  /// (a corridor matches all along itself, yet pins the estimate across it); beyond it only a
+  /// global match may move the estimate, and each informative scan that finds none widens the
+  /// window by half (a growing search, up to global_match_max_window_m).
+  double local_update_max_sigma_m = 0.3;
+  ScanMatcherParams matcher;
 };
 
 struct Perception {
@@ -78,15 +93,22 @@ class Perceiver {
   const Perception& current() const { return now_; }
   const ScanView& last_scan() const { return scan_view_; }
   const ObstacleTracker& tracker() const { return tracker_; }
+  /// Times the estimate was restarted from a global scan match.
+  int relocalizations() const { return relocalizations_; }
 
  private:
   void interpret_scan(const LidarScan& scan);
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
+  /// Wide estimate: match the scan globally; true when the filter may also update locally.
+  bool relocalize(const LidarScan& scan);
 
   const worlds::World& map_;
   PerceptionParams p_;
   MapRaycaster raycaster_;
   EkfLocalizer ekf_;
+  std::optional<ScanMatcher> matcher_;  // built the first time it is needed
+  double next_match_s_ = 0;
+  int relocalizations_ = 0;
   ObstacleTracker tracker_;
   LocalObstacleLayer layer_;
   Perception now_;
@@ -97,6 +119,8 @@ class Perceiver {
   std::optional<geom::Vec2> last_target_;
   bool touched_before_ = false;  // the bumper at the last reading
   double odom_yaw_before_ = 0;   // for the encoders' turn rate
+  std::deque<std::pair<double, double>> turn_gap_;  // (dt, encoders' turn minus the gyro's) over the slip window
+  double turn_gap_sum_ = 0, turn_gap_time_ = 0;
 };
 
 }  // namespace plantsim::sim

@@ -135,6 +135,12 @@ void PhysicsWorld::set_robot_velocity(Vec2 v, double w) {
   robot_->SetAngularVelocity(static_cast<float>(w));
 }
 
+void PhysicsWorld::place_robot(const Pose2& pose) {
+  robot_->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  robot_->SetLinearVelocity(b2Vec2(0, 0));
+  robot_->SetAngularVelocity(0);
+}
+
 double PhysicsWorld::robot_yaw_rate() const { return robot_->GetAngularVelocity(); }
 double PhysicsWorld::robot_mass() const { return robot_->GetMass(); }
 double PhysicsWorld::robot_inertia() const { return robot_->GetInertia(); }

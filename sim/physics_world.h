@@ -63,6 +63,8 @@ class PhysicsWorld {
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
   /// Sets the robot's velocity directly (no tyre model): for baselines and tests.
   void set_robot_velocity(Vec2 linear_mps, double angular_radps);
+  /// Moves the robot to `pose` at rest (a kidnap: carried off by hand, wheels off the floor).
+  void place_robot(const Pose2& pose);
   double robot_mass() const;
   double robot_inertia() const;
 

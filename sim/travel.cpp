@@ -52,15 +52,37 @@ controller::DockingInput docking_input(const Perception& p) {
   in.bumper_front = p.bumper.front;
   in.bumper_rear = p.bumper.rear;
   in.displaced = p.displaced;
-  in.localized = p.health == LocalizationHealth::kOk && p.position_sigma_m <= 0.05;
+  // Settled enough to plan a new way from: not lost, and tight enough to keep its margins.
+  in.localized = p.health != LocalizationHealth::kLost && p.position_sigma_m <= 0.15;
+  in.position_sigma_m = p.position_sigma_m;
   return in;
 }
 
-Decision decision_of(const controller::DockingCommand& cmd) {
-  Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, ""};
+namespace {
+
+FailureReason reason_of(controller::DockFailure why) {
+  using controller::DockFailure;
+  switch (why) {
+    case DockFailure::kRetriesExhausted: return FailureReason::kDockRetriesExhausted;
+    case DockFailure::kBlocked: return FailureReason::kBlocked;
+    case DockFailure::kUnsettled: return FailureReason::kStuck;
+    case DockFailure::kNotLocalized: return FailureReason::kLocalizationLost;
+    case DockFailure::kUndockBlocked: return FailureReason::kUndockFailed;
+    case DockFailure::kNone: break;
+  }
+  return FailureReason::kStuck;
+}
+
+}  // namespace
+
+Decision decision_of(const controller::DockingCommand& cmd, controller::DockFailure why) {
+  Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked, std::nullopt};
   if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
   if (cmd.phase == controller::DockPhase::kUndocked) d.finished = "undocked";
-  if (cmd.phase == controller::DockPhase::kFailed) d.finished = "failed";
+  if (cmd.phase == controller::DockPhase::kFailed) {
+    d.finished = "failed";
+    d.give_up = GiveUp{reason_of(why), "the docking controller: " + std::string(controller::to_string(why))};
+  }
   return d;
 }
 

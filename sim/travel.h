@@ -13,6 +13,7 @@
 #include "controller/docking.h"
 #include "controller/potential_field.h"
 #include "planner/planner.h"
+#include "sim/failure.h"
 #include "sim/perception.h"
 #include "worlds/world.h"
 
@@ -34,6 +35,8 @@ struct Decision {
   double cross_track_m = 0;
   bool wall_following = false;
   std::string finished;  ///< "docked", "failed" or "trapped" when the travel has ended
+  bool blocked = false;  ///< holding still because the way ahead is not clear
+  std::optional<GiveUp> give_up;  ///< why, when it ended without success
 };
 
 /// What a travel mode has counted.
@@ -61,8 +64,9 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
 /// The docking controller's input from a perception.
 controller::DockingInput docking_input(const Perception& p);
 
-/// A docking command as a decision; `finished` when it reports docked or failed.
-Decision decision_of(const controller::DockingCommand& cmd);
+/// A docking command as a decision; `finished` when it reports docked or failed (`why`: the
+/// controller's own account of a failure).
+Decision decision_of(const controller::DockingCommand& cmd, controller::DockFailure why = controller::DockFailure::kNone);
 
 std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
                                          const TravelSettings& s, std::vector<geom::Vec2> path);

@@ -24,6 +24,7 @@ class FieldTravel : public Travel {
     d.wall_following = fc.state == controller::FieldState::kWallFollowing;
     if (fc.trapped) {
       d.finished = "trapped";
+      d.give_up = GiveUp{FailureReason::kTrapped, "the potential field met " + std::to_string(minima_) + " local minima"};
       return d;
     }
     if (fc.arrived && !pursuit_) {

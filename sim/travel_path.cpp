@@ -22,7 +22,11 @@ class PathTravel : public Travel {
         plan_ = std::move(*path);
         need_plan_ = false;
       }
-      if (need_plan_) return decision_of({{}, cmd.phase, 0, true, false, false});  // no way yet: wait
+      if (need_plan_) {  // no way yet: wait
+        Decision wait = decision_of({{}, cmd.phase, 0, true, false, false});
+        wait.blocked = true;
+        return wait;
+      }
     }
     if (cmd.replan_requested) {
       // Plan again with what blocks the way as extra obstacles, from the nearest free point
@@ -33,7 +37,7 @@ class PathTravel : public Travel {
         ++replans_;
       }
     }
-    return decision_of(cmd);
+    return decision_of(cmd, control_.failure());
   }
   TravelCounts counts() const override {
     return {control_.retries(), control_.stops(), replans_, 0, 0, control_.recoveries()};

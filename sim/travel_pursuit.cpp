@@ -21,7 +21,7 @@ class PursuitTravel : public Travel {
       }
     }
     const controller::DockingCommand cmd = control_.step(docking_input(p));
-    Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, ""};
+    Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked, std::nullopt};
     if (cmd.phase != controller::DockPhase::kTravel) d.twist = {};  // at the path's end: wait for the next plan
     return d;
   }

@@ -51,9 +51,16 @@ World random_plant(const RandomPlantOptions& o) {
         }
     if (ok) w.obstacles.push_back(r);
   }
+  place_start_and_charger(w, rng);
+  return w;
+}
+
+void place_start_and_charger(World& w, std::mt19937_64& rng) {
+  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  const double width = w.floor.xmax - w.floor.xmin, height = w.floor.ymax - w.floor.ymin;
   auto free_point = [&](double xlo, double xhi) {
     for (int k = 0; k < 100000; ++k) {
-      const Vec2 p{uniform(xlo, xhi), uniform(1.0, o.height_m - 1.0)};
+      const Vec2 p{uniform(xlo, xhi), uniform(1.0, height - 1.0)};
       bool clear = true;
       for (const Rect& q : w.obstacles)
         if (q.xmin - 0.5 < p.x && p.x < q.xmax + 0.5 && q.ymin - 0.5 < p.y && p.y < q.ymax + 0.5) {
@@ -65,14 +72,14 @@ World random_plant(const RandomPlantOptions& o) {
     throw std::invalid_argument("random plant: no free point for the start or the charger");
   };
   for (int attempt = 0; attempt < 1000; ++attempt) {
-    const Vec2 s = free_point(1.0, std::min(6.0, o.width_m / 4));
-    const Vec2 c = free_point(std::max(o.width_m - 6.0, 3 * o.width_m / 4), o.width_m - 1.0);
+    const Vec2 s = free_point(1.0, std::min(6.0, width / 4));
+    const Vec2 c = free_point(std::max(width - 6.0, 3 * width / 4), width - 1.0);
     w.start = {s.x, s.y, std::atan2(c.y - s.y, c.x - s.x)};
     const auto yaw = choose_docking_heading(w, c);
     if (!yaw) continue;
     w.charger = {c.x, c.y, *yaw};
     validate_world(w);
-    return w;
+    return;
   }
   throw std::invalid_argument("random plant: no charger position leaves room to dock");
 }

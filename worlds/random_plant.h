@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <random>
 
 #include "worlds/world.h"
 
@@ -28,5 +29,10 @@ RandomPlantOptions as_dense_as_n1000(int rect_count, std::uint64_t seed);
 /// Throws std::invalid_argument when the options are out of range or the rectangles cannot
 /// be placed.
 World random_plant(const RandomPlantOptions& options);
+
+/// Places the start (near the left wall, x < min(6, width / 4)) and the charger (near the
+/// right one) in free space with room to dock, as random_plant does, drawing from `rng`.
+/// Throws std::invalid_argument when no such places exist.
+void place_start_and_charger(World& w, std::mt19937_64& rng);
 
 }  // namespace plantsim::worlds

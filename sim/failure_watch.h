@@ -1,0 +1,52 @@
+// The referee's verdict on a failed episode: it watches the truth (where the robot really is,
+// how far its estimate is off) and the robot's side (its localisation health, whether it says
+// it is blocked, why it gave up), and names one reason of sim/failure.h. Nothing here feeds
+// back into sensing or control.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "sim/ekf_localizer.h"
+#include "sim/failure.h"
+
+namespace plantsim::sim {
+
+struct FailureWatchParams {
+  double stall_window_s = 30.0;  ///< no progress this long before the time ran out: stuck or blocked
+  double progress_m = 0.5;       ///< moving this far from where it last progressed is progress
+  double lost_error_m = 0.25;    ///< an estimate this far from the truth is lost, whatever it says
+};
+
+class FailureWatch {
+ public:
+  explicit FailureWatch(FailureWatchParams params = {}) : p_(params) {}
+  /// Every control step: the truth, the estimate, its health, and whether the robot holds
+  /// still because its way is blocked.
+  void observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, LocalizationHealth health, bool blocked);
+
+  /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
+  /// account when it stopped trying; `first_collision`: when and where the first contact
+  /// began, if any; `pursuit`: the episode chased a moving target.
+  Failure judge(double end_s, const geom::Pose2& end_pose, const std::optional<GiveUp>& give_up,
+                const std::optional<std::pair<double, geom::Vec2>>& first_collision, bool pursuit) const;
+
+ private:
+  struct Localisation {
+    double error_m = 0;
+    LocalizationHealth health = LocalizationHealth::kOk;
+  };
+  /// The estimate was lost, or far from the truth: say so in `detail`.
+  bool lost(const Localisation& l, std::string& detail) const;
+
+  FailureWatchParams p_;
+  bool started_ = false;
+  double anchor_s_ = 0;          // when it last progressed
+  geom::Pose2 anchor_pose_;      // where
+  Localisation at_anchor_;
+  double blocked_since_anchor_s_ = 0;
+  double last_s_ = 0;
+  Localisation now_;
+};
+
+}  // namespace plantsim::sim

@@ -1,0 +1,193 @@
+// The likelihood grid (an exact Euclidean distance transform of the mapped surfaces), its
+// block maxima, and the windowed branch-and-bound search.
+#include "sim/scan_matcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace plantsim::sim {
+namespace {
+
+/// Squared distance to the nearest zero of f along one row (Felzenszwalb and Huttenlocher's
+/// lower envelope of parabolas), in cells.
+void distance_1d(const std::vector<double>& f, std::vector<double>& d, std::vector<long>& v, std::vector<double>& z) {
+  const long n = static_cast<long>(f.size());
+  auto at = [](const auto& a, long i) -> decltype(auto) { return a[static_cast<std::size_t>(i)]; };
+  auto meet = [&](long q, long p) { return ((at(f, q) + double(q) * q) - (at(f, p) + double(p) * p)) / (2.0 * (q - p)); };
+  long k = 0;
+  v[0] = 0;
+  z[0] = -std::numeric_limits<double>::infinity();
+  z[1] = std::numeric_limits<double>::infinity();
+  for (long q = 1; q < n; ++q) {
+    double s = meet(q, at(v, k));
+    while (s <= at(z, k)) {
+      --k;
+      s = meet(q, at(v, k));
+    }
+    ++k;
+    v[static_cast<std::size_t>(k)] = q;
+    z[static_cast<std::size_t>(k)] = s;
+    z[static_cast<std::size_t>(k + 1)] = std::numeric_limits<double>::infinity();
+  }
+  k = 0;
+  for (long q = 0; q < n; ++q) {
+    while (at(z, k + 1) < q) ++k;
+    const long p = at(v, k);
+    d[static_cast<std::size_t>(q)] = double(q - p) * (q - p) + at(f, p);
+  }
+}
+
+}  // namespace
+
+ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p_(params) {
+  const geom::Rect area = map.floor.inflated(1.0);
+  res_ = std::max(p_.resolution_m, std::sqrt(area.width() * area.height() / static_cast<double>(std::max(1L, p_.max_cells))));
+  origin_ = {area.xmin, area.ymin};
+  nx_ = std::max(1L, static_cast<long>(std::ceil(area.width() / res_)));
+  ny_ = std::max(1L, static_cast<long>(std::ceil(area.height() / res_)));
+  const std::size_t cells = static_cast<std::size_t>(nx_ * ny_);
+  // Surfaces: every cell whose centre lies in a mapped rectangle, a wall or the charger.
+  const double far = 1e12;  // squared cells: far beyond any floor, and exact in the sums below
+  std::vector<double> grid(cells, far);
+  auto mark = [&](const geom::Rect& r) {
+    const long i0 = std::max(0L, static_cast<long>(std::ceil((r.xmin - origin_.x) / res_ - 0.5)));
+    const long i1 = std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5)));
+    const long j0 = std::max(0L, static_cast<long>(std::ceil((r.ymin - origin_.y) / res_ - 0.5)));
+    const long j1 = std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5)));
+    for (long j = j0; j <= j1; ++j)
+      for (long i = i0; i <= i1; ++i) grid[static_cast<std::size_t>(j * nx_ + i)] = 0;
+  };
+  for (const geom::Rect& r : map.obstacles) mark(r);
+  for (const geom::Rect& r : geom::surrounding_walls(map.floor, 1.0)) mark(r);
+  mark(worlds::charger_body(map).bounding_box());
+  // Exact squared distances in cells: columns, then rows.
+  const long longest = std::max(nx_, ny_);
+  std::vector<double> f(static_cast<std::size_t>(longest)), d(static_cast<std::size_t>(longest));
+  std::vector<long> v(static_cast<std::size_t>(longest));
+  std::vector<double> z(static_cast<std::size_t>(longest) + 1);
+  for (long i = 0; i < nx_; ++i) {
+    f.resize(static_cast<std::size_t>(ny_));
+    d.resize(static_cast<std::size_t>(ny_));
+    for (long j = 0; j < ny_; ++j) f[static_cast<std::size_t>(j)] = grid[static_cast<std::size_t>(j * nx_ + i)];
+    distance_1d(f, d, v, z);
+    for (long j = 0; j < ny_; ++j) grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(j)];
+  }
+  f.resize(static_cast<std::size_t>(nx_));
+  d.resize(static_cast<std::size_t>(nx_));
+  for (long j = 0; j < ny_; ++j) {
+    for (long i = 0; i < nx_; ++i) f[static_cast<std::size_t>(i)] = grid[static_cast<std::size_t>(j * nx_ + i)];
+    distance_1d(f, d, v, z);
+    for (long i = 0; i < nx_; ++i) grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(i)];
+  }
+  fine_.resize(cells);
+  const double k = res_ * res_ / (2.0 * p_.hit_sigma_m * p_.hit_sigma_m);
+  for (std::size_t c = 0; c < cells; ++c) fine_[c] = std::exp(-k * grid[c]);
+  // Block maxima: max over [i, i + b) first along x, then along y.
+  const long b = std::max(1, p_.block);
+  std::vector<double> along_x(cells);
+  for (long j = 0; j < ny_; ++j)
+    for (long i = 0; i < nx_; ++i) {
+      double m = 0;
+      for (long a = 0; a < b && i + a < nx_; ++a) m = std::max(m, fine_[static_cast<std::size_t>(j * nx_ + i + a)]);
+      along_x[static_cast<std::size_t>(j * nx_ + i)] = m;
+    }
+  coarse_.resize(cells);
+  for (long j = 0; j < ny_; ++j)
+    for (long i = 0; i < nx_; ++i) {
+      double m = 0;
+      for (long a = 0; a < b && j + a < ny_; ++a) m = std::max(m, along_x[static_cast<std::size_t>((j + a) * nx_ + i)]);
+      coarse_[static_cast<std::size_t>(j * nx_ + i)] = m;
+    }
+}
+
+double ScanMatcher::likelihood(geom::Vec2 p) const {
+  return fine(static_cast<long>(std::floor((p.x - origin_.x) / res_)), static_cast<long>(std::floor((p.y - origin_.y) / res_)));
+}
+
+std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior, const MatchWindow& window) const {
+  // The returns in the robot frame, spread evenly over the scan.
+  std::vector<geom::Vec2> points;
+  std::vector<std::size_t> valid;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i)
+    if (scan.valid(i)) valid.push_back(i);
+  if (valid.size() < 10) return std::nullopt;
+  const std::size_t stride = std::max<std::size_t>(1, valid.size() / static_cast<std::size_t>(std::max(1, p_.max_points)));
+  double reach = 0;
+  for (std::size_t k = 0; k < valid.size(); k += stride) {
+    const std::size_t i = valid[k];
+    const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
+    points.push_back(geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
+    reach = std::max(reach, geom::norm(points.back()));
+  }
+  const double n_points = static_cast<double>(points.size());
+  // Rotation steps that move the farthest return by about one cell.
+  const double dyaw = std::clamp(res_ / std::max(reach, 1.0), 0.002, 0.05);
+  const long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
+  const long n_xy = static_cast<long>(std::ceil(window.xy_m / res_));
+  const long b = std::max(1, p_.block);
+
+  struct Candidate {
+    double bound;
+    long yaw_step, i, j;  // block's first translation
+  };
+  std::vector<Candidate> candidates;
+  std::vector<std::vector<std::pair<long, long>>> cells_by_yaw(static_cast<std::size_t>(2 * n_yaw + 1));
+  for (long s = -n_yaw; s <= n_yaw; ++s) {
+    const double yaw = prior.yaw + s * dyaw;
+    auto& cells = cells_by_yaw[static_cast<std::size_t>(s + n_yaw)];
+    cells.reserve(points.size());
+    for (const geom::Vec2& p : points) {
+      const geom::Vec2 q = prior.position() + geom::rotate(p, yaw);
+      cells.emplace_back(static_cast<long>(std::floor((q.x - origin_.x) / res_)),
+                         static_cast<long>(std::floor((q.y - origin_.y) / res_)));
+    }
+    for (long i = -n_xy; i <= n_xy; i += b)
+      for (long j = -n_xy; j <= n_xy; j += b) {
+        double bound = 0;
+        for (const auto& [ci, cj] : cells) bound += coarse(ci + i, cj + j);
+        candidates.push_back({bound / n_points, s, i, j});
+      }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& c) { return a.bound > c.bound; });
+
+  ScanMatch best;
+  best.score = -1;
+  struct Scored {
+    double score;
+    long s, i, j;
+  };
+  std::vector<Scored> good;  // every exact score close enough to the best to matter for ambiguity
+  for (const Candidate& c : candidates) {
+    // Nothing left can beat the best, or come close enough to make it ambiguous.
+    if (c.bound < p_.max_ambiguity * std::max(best.score, p_.min_score)) break;
+    const auto& cells = cells_by_yaw[static_cast<std::size_t>(c.yaw_step + n_yaw)];
+    for (long i = c.i; i < c.i + b && i <= n_xy; ++i)
+      for (long j = c.j; j < c.j + b && j <= n_xy; ++j) {
+        double score = 0;
+        for (const auto& [ci, cj] : cells) score += fine(ci + i, cj + j);
+        score /= n_points;
+        ++best.scored;
+        if (score >= p_.max_ambiguity * std::max(best.score, p_.min_score)) good.push_back({score, c.yaw_step, i, j});
+        if (score > best.score) {
+          best.score = score;
+          best.pose = {prior.x + i * res_, prior.y + j * res_, geom::wrap_angle(prior.yaw + c.yaw_step * dyaw)};
+        }
+      }
+  }
+  if (best.score < 0) {
+    best.score = 0;
+    best.pose = prior;
+    return best;
+  }
+  for (const Scored& g : good) {
+    const geom::Pose2 at{prior.x + g.i * res_, prior.y + g.j * res_, geom::wrap_angle(prior.yaw + g.s * dyaw)};
+    const bool apart = geom::distance(at.position(), best.pose.position()) > p_.apart_m ||
+                       std::fabs(geom::wrap_angle(at.yaw - best.pose.yaw)) > p_.apart_rad;
+    if (apart) best.runner_up = std::max(best.runner_up, g.score);
+  }
+  best.accepted = best.score >= p_.min_score && best.runner_up < p_.max_ambiguity * best.score;
+  return best;
+}
+
+}  // namespace plantsim::sim

@@ -1,0 +1,191 @@
+// Why episodes fail: the referee's rules on made-up timelines (sim/failure_watch.h), and one real
+// episode provoking each reason of the closed set (docs/failures.md).
+#include <gtest/gtest.h>
+
+#include "planner/planner.h"
+#include "sim/episode.h"
+#include "sim/failure_watch.h"
+#include "test_paths.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::sim {
+namespace {
+
+// The referee on timelines: 30 Hz observations of a robot standing or driving.
+TEST(FailureWatch, StandingStillIsStuckUnlessItsWayIsBlocked) {
+  for (bool blocked : {false, true}) {
+    FailureWatch w;
+    for (int k = 0; k <= 30 * 60; ++k) {
+      const double t = k / 30.0;
+      const double x = std::min(t, 10.0) * 0.5;  // drives 5 m, then stands for 50 s
+      w.observe(t, {x, 0, 0}, {x, 0, 0}, LocalizationHealth::kOk, blocked && t > 10);
+    }
+    const Failure f = w.judge(60.0, {5, 0, 0}, std::nullopt, std::nullopt, false);
+    EXPECT_EQ(f.reason, blocked ? FailureReason::kBlocked : FailureReason::kStuck);
+    EXPECT_NEAR(f.time_s, 10.0, 1.1);  // when it last progressed (0.5 m before the end of its drive)
+    EXPECT_NEAR(f.pose.x, 5.0, 0.6);
+  }
+}
+
+TEST(FailureWatch, ARobotStillMovingWhenTimeRunsOutTimedOut) {
+  FailureWatch w;
+  for (int k = 0; k <= 30 * 60; ++k) w.observe(k / 30.0, {0.1 * k / 30.0, 0, 0}, {0.1 * k / 30.0, 0, 0}, LocalizationHealth::kOk, false);
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, false).reason, FailureReason::kTimeout);
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, true).reason, FailureReason::kTargetLost);
+}
+
+TEST(FailureWatch, AFarEstimateOrALostOneOverridesWhatTheRobotSaid) {
+  FailureWatch far;
+  far.observe(1.0, {1, 0, 0}, {1.4, 0, 0}, LocalizationHealth::kOk, false);
+  const Failure f = far.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kDockRetriesExhausted, "missed"}, std::nullopt, false);
+  EXPECT_EQ(f.reason, FailureReason::kLocalizationLost);
+  EXPECT_NE(f.detail.find("0.40 m"), std::string::npos) << f.detail;
+  FailureWatch lost;
+  lost.observe(1.0, {1, 0, 0}, {1, 0, 0}, LocalizationHealth::kLost, false);
+  EXPECT_EQ(lost.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
+            FailureReason::kLocalizationLost);
+  FailureWatch near;
+  near.observe(1.0, {1, 0, 0}, {1.1, 0, 0}, LocalizationHealth::kDegraded, false);
+  EXPECT_EQ(near.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
+            FailureReason::kBlocked);
+}
+
+TEST(FailureWatch, AnyCollisionIsTheReasonAtItsFirstContact) {
+  FailureWatch w;
+  w.observe(1.0, {1, 0, 0}, {3, 0, 0}, LocalizationHealth::kLost, false);
+  const Failure f = w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Vec2{2, 3}}, false);
+  EXPECT_EQ(f.reason, FailureReason::kCollision);
+  EXPECT_DOUBLE_EQ(f.time_s, 4.5);
+  EXPECT_DOUBLE_EQ(f.pose.y, 3.0);
+}
+
+TEST(FailureReasons, NamesRoundTrip) {
+  for (FailureReason r : kAllFailureReasons) EXPECT_EQ(failure_reason_from_string(to_string(r)), r);
+  EXPECT_FALSE(failure_reason_from_string("failed"));
+}
+
+// Real episodes, one per reason.
+worlds::World room() {
+  worlds::World w;
+  w.name = "room";
+  w.floor = {0, 0, 12, 8};
+  w.start = {1, 4, 0};
+  w.charger = {11.5, 4, 0};
+  w.inflation_margin_m = 0.1;
+  return w;
+}
+
+EpisodeResult run(const worlds::World& w, EpisodeConfig c, const std::string& planner = "vg") {
+  auto p = planner::make_planner(planner, planner::planner_input(w, true));
+  return run_episode(w, *p, c);
+}
+
+void expect_reason(const EpisodeResult& r, FailureReason reason) {
+  EXPECT_FALSE(r.succeeded()) << r.status;
+  ASSERT_TRUE(r.failure.has_value()) << r.status;
+  EXPECT_EQ(to_string(r.failure->reason), to_string(reason)) << r.status << ": " << r.failure->detail;
+  EXPECT_GE(r.failure->time_s, 0.0);
+  EXPECT_LE(r.failure->time_s, r.time_s + 1e-9);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, EpisodeResult::Event::Kind::kFailure);
+  std::printf("%s at %.1f s (episode %.1f s): %s\n", std::string(to_string(r.failure->reason)).c_str(), r.failure->time_s,
+              r.time_s, r.failure->detail.c_str());
+}
+
+TEST(FailureEpisodes, ASuccessHasNoFailure) {
+  const EpisodeResult r = run(room(), {});
+  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_FALSE(r.failure.has_value());
+}
+
+TEST(FailureEpisodes, NoPath) {
+  worlds::World w = room();
+  w.obstacles = {{5.8, 0, 6.2, 8}};  // a wall from side to side
+  const EpisodeResult r = run(w, {});
+  expect_reason(r, FailureReason::kNoPath);
+  EXPECT_NE(r.failure->detail.find("no path"), std::string::npos) << r.failure->detail;
+}
+
+TEST(FailureEpisodes, CollisionWithSomethingCatchingUpFromBehind) {
+  worlds::World w = room();
+  worlds::MovingObstacle runner;
+  runner.width_m = runner.height_m = 0.4;
+  runner.waypoints = {{0.3, 4}, {11, 4}};
+  runner.speed_mps = 2.0;  // faster than the robot: it runs into its back
+  runner.start_time_s = 3.0;
+  w.moving = {runner};
+  expect_reason(run(w, {}), FailureReason::kCollision);
+}
+
+TEST(FailureEpisodes, DockRetriesExhaustedWhenThePadsNeverAcceptTheRobot) {
+  EpisodeConfig c;
+  c.tolerance.position_m = 1e-5;  // no approach is ever this exact
+  c.tolerance.heading_rad = 1e-5;
+  expect_reason(run(room(), c), FailureReason::kDockRetriesExhausted);
+}
+
+TEST(FailureEpisodes, BlockedByAnUnmappedBoxInTheOnlyGap) {
+  worlds::World w = room();
+  w.obstacles = {{5.8, 0, 6.2, 3.2}, {5.8, 4.8, 6.2, 8}};  // a wall with a 1.6 m gap
+  w.unmapped = {{5.6, 3.0, 6.4, 5.0}};                     // closed by a box the map lacks
+  EpisodeConfig c;
+  c.timeout_s = 90;
+  expect_reason(run(w, c), FailureReason::kBlocked);
+}
+
+TEST(FailureEpisodes, StuckWhenTheWheelsFindNoGrip) {
+  EpisodeConfig c;
+  c.drive.tyre_friction = 0.002;  // ice: the wheels spin, the robot hardly moves
+  c.timeout_s = 60;
+  expect_reason(run(room(), c), FailureReason::kStuck);
+}
+
+TEST(FailureEpisodes, LocalizationLostWhenBlindWithABiasedGyro) {
+  EpisodeConfig c;
+  c.lidar.enabled = false;
+  c.detection.enabled = false;
+  c.imu.bias_radps = 0.02;  // the estimate turns away from the truth and nothing corrects it
+  c.timeout_s = 120;
+  expect_reason(run(room(), c), FailureReason::kLocalizationLost);
+}
+
+TEST(FailureEpisodes, UndockFailedWhenSomethingParksBehindTheRobot) {
+  worlds::World w = room();
+  worlds::MovingObstacle cart;
+  cart.width_m = cart.height_m = 0.6;
+  cart.waypoints = {{10.3, 7.5}, {10.3, 4}};  // comes down to stand behind the docked robot
+  cart.speed_mps = 0.2;
+  cart.start_time_s = 25;
+  w.moving = {cart};
+  EpisodeConfig c;
+  c.docking.undock = true;
+  c.timeout_s = 120;
+  const EpisodeResult r = run(w, c);
+  EXPECT_TRUE(r.charging);
+  expect_reason(r, FailureReason::kUndockFailed);
+}
+
+TEST(FailureEpisodes, TargetLostWhenThePursuitRunsOutOfTime) {
+  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/seed001_target_moves_on.json"));
+  EpisodeConfig c;
+  c.timeout_s = 5;
+  expect_reason(run(w, c), FailureReason::kTargetLost);
+}
+
+TEST(FailureEpisodes, TrappedWhenThePotentialFieldGivesUp) {
+  worlds::World w = room();
+  w.obstacles = {{5.8, 1.5, 6.2, 6.5}};
+  EpisodeConfig c;
+  c.travel = TravelMode::kPotentialField;
+  c.field.max_wall_follows = 0;  // the first local minimum ends it
+  expect_reason(run(w, c), FailureReason::kTrapped);
+}
+
+TEST(FailureEpisodes, TimeoutWhileStillDriving) {
+  EpisodeConfig c;
+  c.timeout_s = 6;
+  expect_reason(run(room(), c), FailureReason::kTimeout);
+}
+
+}  // namespace
+}  // namespace plantsim::sim
