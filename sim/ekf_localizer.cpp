@@ -85,6 +85,19 @@ void EkfLocalizer::record_nis(double nis, int dof) {
   const double bound = k * std::pow(1.0 - a + p_.nis_quantile_z * std::sqrt(a), 3);
   // A window of a few scans judges nothing yet.
   inconsistent_ = nis_.size() >= window / 2 && k > 0 && sum > bound;
+  if (inconsistent_ && position_sigma_m() < 0.5 * p_.ok_position_sigma_m) {
+    // The filter is surer than the scans allow (a gyro bias past its prior, a slip): widen the
+    // pose and the bias so that the scans can pull them, and judge afresh. Only a tight
+    // estimate is widened: innovations that stay inconsistent because the lidar is noisier than
+    // the filter assumes must not inflate it without end (the status says degraded instead).
+    P_.topLeftCorner<3, 3>() *= 2.0;
+    P_.block<3, 1>(0, 3) *= 2.0;
+    P_.block<1, 3>(3, 0) *= 2.0;
+    P_(3, 3) *= 4.0;
+    nis_.clear();
+    nis_next_ = 0;
+    ++inflations_;
+  }
 }
 
 void EkfLocalizer::reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance) {

@@ -83,6 +83,8 @@ class EkfLocalizer {
   int constrained_directions() const { return constrained_; }
   /// The normalised innovations of the window's scans are beyond their chi-square bound.
   bool inconsistent() const { return inconsistent_; }
+  /// Times an inconsistent window widened the covariance (adaptive fading).
+  int inflations() const { return inflations_; }
   /// Replaces the estimate (a global relocalisation), with the given pose covariance.
   void reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance);
 
@@ -98,6 +100,7 @@ class EkfLocalizer {
   bool informative_ = false;
   int constrained_ = 0;
   bool inconsistent_ = false;
+  int inflations_ = 0;
   std::vector<std::pair<double, int>> nis_;  // the window's normalised innovations and degrees of freedom
   std::size_t nis_next_ = 0;                 // ring buffer position
 };

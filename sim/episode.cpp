@@ -194,6 +194,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.slips = governor.slips();
   if (auto final_plan = travel->final_plan()) result.plan = *final_plan;
   result.last_scan = perceiver.last_scan();
+  result.relocalizations = perceiver.relocalizations();
   result.tracked_final = perceiver.tracker().boxes(result.time_s);
   result.layer_final = perceiver.current().layer;
   if (!result.succeeded()) {

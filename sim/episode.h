@@ -130,6 +130,7 @@ struct EpisodeResult {
   std::string perception_mode = "sensors";
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
   std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
+  int relocalizations = 0;                 ///< times the estimate restarted from a global scan match
   int unmapped_seen = 0;                   ///< unmapped obstacles perception marked at some time (of the plant's)
   ScanView last_scan;                      ///< the last scan as perception placed it
   /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.

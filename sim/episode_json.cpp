@@ -37,6 +37,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["perception_mode"] = r.perception_mode;
   j["localization_error_max_m"] = r.localization_error_max_m;
   j["localization_status"] = r.localization_status;
+  j["relocalizations"] = r.relocalizations;
   j["unmapped_seen"] = r.unmapped_seen;
 }
 

@@ -102,18 +102,39 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   }
 }
 
+double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) const {
+  const geom::Pose2 sensor = geom::compose(pose, scan.mount);
+  const std::size_t n = scan.ranges.size(), stride = std::max<std::size_t>(1, n / 90);
+  int agree = 0, beams = 0;
+  for (std::size_t i = 0; i < n; i += stride) {
+    if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
+    ++beams;
+    const auto hit = raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
+    if (!scan.valid(i)) agree += !hit;  // no return: right where the map has nothing in range
+    else if (hit) agree += std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
+  }
+  return beams > 0 ? static_cast<double>(agree) / beams : 0.0;
+}
+
 bool Perceiver::relocalize(const LidarScan& scan) {
   const double sigma = ekf_.position_sigma_m();
-  if (sigma <= p_.global_match_sigma_m) return true;
+  if (sigma <= p_.global_match_sigma_m) {
+    unmatched_ = false;
+    return true;
+  }
   const bool local_ok = sigma <= p_.local_update_max_sigma_m;
   if (scan.t_s + 1e-9 < next_match_s_) return local_ok;
   next_match_s_ = scan.t_s + p_.global_match_period_s;
   if (!matcher_) matcher_.emplace(map_, p_.matcher);
   const MatchWindow window{std::clamp(3.0 * sigma, 0.5, p_.global_match_max_window_m),
                            std::clamp(3.0 * ekf_.yaw_sigma_rad(), 0.05, M_PI)};
+  int returns = 0;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) returns += scan.valid(i);
+  if (returns < p_.global_match_min_returns) return local_ok;  // open ground: nothing to match
   const std::optional<ScanMatch> m = matcher_->match(scan, ekf_.pose(), window);
-  if (!m) return local_ok;  // open ground: nothing to match
-  if (!m->accepted) {
+  if (!m) return local_ok;
+  unmatched_ = !m->accepted || agreement(scan, m->pose) < p_.verify_agreement;
+  if (unmatched_) {
     // Returns, but no place that fits them alone: search wider next time.
     if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);
     return local_ok;
@@ -186,7 +207,10 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   if ((touched && !touched_before_) || became_unexplained)
     ekf_.widen(p_.relocalize_sigma_m * (became_unexplained ? 1.0 : 0.3), 0.1);
   touched_before_ = touched;
-  now_.displaced = touched || jumped || unexplained;
+  // Lost where the scans see the plant but fit it nowhere: stop, look round, match again. (Lost
+  // on open ground, with nothing in range, it goes on slowly on odometry towards what it will see.)
+  const bool lost_in_view = ekf_.health() == LocalizationHealth::kLost && unmatched_;
+  now_.displaced = touched || jumped || unexplained || lost_in_view;
   now_.pose = ekf_.pose();
   now_.position_sigma_m = ekf_.position_sigma_m();
   now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();

@@ -53,6 +53,13 @@ struct PerceptionParams {
   /// global match may move the estimate, and each informative scan that finds none widens the
   /// window by half (a growing search, up to global_match_max_window_m).
   double local_update_max_sigma_m = 0.3;
+  /// A global match must also be confirmed beam by beam: ray cast through the map from it, at
+  /// least this share of the scan's beams must read what the map predicts (within
+  /// verify_tolerance_m, a beam with no return where the map has no surface in range counting
+  /// as agreeing). The matcher scores only where returns fall; this adds what they pass through.
+  double verify_agreement = 0.8;
+  double verify_tolerance_m = 0.2;
+  int global_match_min_returns = 30;  ///< fewer returns: too little to place the robot anywhere
   ScanMatcherParams matcher;
 };
 
@@ -101,6 +108,8 @@ class Perceiver {
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
   /// Wide estimate: match the scan globally; true when the filter may also update locally.
   bool relocalize(const LidarScan& scan);
+  /// Share of the scan's beams that read, from `pose`, what the map predicts.
+  double agreement(const LidarScan& scan, const geom::Pose2& pose) const;
 
   const worlds::World& map_;
   PerceptionParams p_;
@@ -109,6 +118,7 @@ class Perceiver {
   std::optional<ScanMatcher> matcher_;  // built the first time it is needed
   double next_match_s_ = 0;
   int relocalizations_ = 0;
+  bool unmatched_ = false;  // lost, and the last scan with enough returns matched nowhere
   ObstacleTracker tracker_;
   LocalObstacleLayer layer_;
   Perception now_;

@@ -122,10 +122,15 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
   }
   const double n_points = static_cast<double>(points.size());
   // Rotation steps that move the farthest return by about one cell.
-  const double dyaw = std::clamp(res_ / std::max(reach, 1.0), 0.002, 0.05);
-  const long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
-  const long n_xy = static_cast<long>(std::ceil(window.xy_m / res_));
   const long b = std::max(1, p_.block);
+  long n_xy = static_cast<long>(std::ceil(window.xy_m / res_));
+  auto blocks = [&](long n) { return (2 * n / b + 1) * (2 * n / b + 1); };
+  // The work is bounded: coarser rotation steps for wide windows, then a narrower window.
+  double dyaw = std::clamp(res_ / std::max(reach, 1.0), 0.002, p_.max_yaw_step_rad);
+  const long budget = std::max(1L, p_.max_candidates);
+  dyaw = std::min(p_.max_yaw_step_rad, std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, double(budget) / blocks(n_xy))));
+  long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
+  while ((2 * n_yaw + 1) * blocks(n_xy) > budget && n_xy > b) n_xy = n_xy * 3 / 4;
 
   struct Candidate {
     double bound;

@@ -28,6 +28,9 @@ struct ScanMatcherParams {
   double max_ambiguity = 0.9;     ///< the best pose apart from the match must score below this share of it
   double apart_m = 1.0;           ///< poses this far apart (or apart_rad) are different answers
   double apart_rad = 0.3;
+  long max_candidates = 40'000;   ///< rotations x translation blocks bounded per match: wide windows are
+                                  ///< searched in coarser rotation steps (at most max_yaw_step_rad), then narrower
+  double max_yaw_step_rad = 0.03;
 };
 
 /// The search window around a prior pose: translations within +-xy_m, rotations within +-yaw_rad.
