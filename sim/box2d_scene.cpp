@@ -48,6 +48,37 @@ class NearestHit : public b2RayCastCallback {
 
 }  // namespace
 
+namespace {
+
+// The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
+// travel, so that the robot's centre stops half the travel past the docked pose.
+geom::OrientedBox charger_block(const worlds::World& plant) {
+  const worlds::ChargerBody cb = worlds::charger_body(plant);
+  const geom::Vec2 center = cb.center + (b2_polygonRadius + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
+  return {center, cb.half_depth_m, cb.half_width_m, cb.yaw};
+}
+
+std::vector<geom::Rect> static_rects(const worlds::World& plant) {
+  std::vector<geom::Rect> rects = plant.obstacles;
+  rects.insert(rects.end(), plant.unmapped.begin(), plant.unmapped.end());
+  for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) rects.push_back(wall);
+  return rects;
+}
+
+}  // namespace
+
+StaticScene::StaticScene(const worlds::World& plant) : grid(static_rects(plant), {charger_block(plant)}) {
+  kinds.assign(plant.obstacles.size() + plant.unmapped.size(), SurfaceKind::kObstacle);
+  kinds.insert(kinds.end(), 4, SurfaceKind::kWall);
+  kinds.push_back(SurfaceKind::kCharger);
+}
+
+std::optional<RayHit> StaticScene::cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const {
+  const auto hit = grid.cast(from, direction, max_range_m);
+  if (!hit) return std::nullopt;
+  return RayHit{from + hit->range_m * direction, hit->normal, hit->range_m, kinds[static_cast<std::size_t>(hit->box)]};
+}
+
 void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);
@@ -55,16 +86,13 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   for (const geom::Rect& r : plant.unmapped) add_box(statics, r, kObstacle);  // absent from a map's World
   for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) add_box(statics, wall, kWall);
 
-  // The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
-  // travel, so that the robot's centre stops half the travel past the docked pose.
-  const worlds::ChargerBody cb = worlds::charger_body(plant);
-  const geom::Vec2 center = cb.center + (b2_polygonRadius + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
+  const geom::OrientedBox block = charger_block(plant);
   b2BodyDef charger_def;
-  charger_def.position.Set(static_cast<float>(center.x), static_cast<float>(center.y));
-  charger_def.angle = static_cast<float>(cb.yaw);
+  charger_def.position.Set(static_cast<float>(block.center.x), static_cast<float>(block.center.y));
+  charger_def.angle = static_cast<float>(block.yaw);
   b2Body* body = world.CreateBody(&charger_def);
   b2PolygonShape plate;
-  plate.SetAsBox(static_cast<float>(cb.half_depth_m), static_cast<float>(cb.half_width_m));
+  plate.SetAsBox(static_cast<float>(block.hx), static_cast<float>(block.hy));
   b2FixtureDef plate_fd;
   plate_fd.shape = &plate;
   plate_fd.friction = 0.3f;

@@ -6,6 +6,9 @@
 #include <box2d/box2d.h>
 
 #include <optional>
+#include <vector>
+
+#include "geometry/ray_grid.h"
 
 #include "sim/ray_hit.h"
 #include "worlds/world.h"
@@ -22,5 +25,15 @@ void add_static_scene(b2World& world, const worlds::World& plant);
 
 /// Nearest hit along the segment from `from` to `to`, ignoring the robot's own fixture.
 std::optional<RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2 to);
+
+/// The same static parts as add_static_scene (obstacles, unmapped obstacles, floor walls, the
+/// charger block where the physics holds it) for exact ray casts by geometry (geometry/ray_grid.h),
+/// each box with the kind of surface it is.
+struct StaticScene {
+  explicit StaticScene(const worlds::World& plant);
+  std::optional<RayHit> cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const;
+  geom::RayGrid grid;
+  std::vector<SurfaceKind> kinds;  // per box, in the grid's order
+};
 
 }  // namespace plantsim::sim::detail

@@ -1,7 +1,7 @@
 // The robot's map as something to cast rays through: the mapped obstacle rectangles, floor
-// walls and the charger at its mapped pose, in a Box2D scene of their own (never the physics
-// world). The estimator predicts lidar ranges with it; perception asks it which returns the
-// map explains.
+// walls and the charger at its mapped pose, in a grid of their own (box2d_scene.h's
+// StaticScene, exact ray casts by geometry; never the physics world). The estimator predicts
+// lidar ranges with it; perception asks it which returns the map explains.
 #pragma once
 
 #include <memory>
@@ -10,9 +10,10 @@
 #include "sim/ray_hit.h"
 #include "worlds/world.h"
 
-class b2World;
-
 namespace plantsim::sim {
+namespace detail {
+struct StaticScene;
+}
 
 class MapRaycaster {
  public:
@@ -28,7 +29,7 @@ class MapRaycaster {
   bool surface_near(geom::Vec2 point, double margin_m) const;
 
  private:
-  std::unique_ptr<b2World> world_;
+  std::unique_ptr<detail::StaticScene> scene_;
 };
 
 }  // namespace plantsim::sim

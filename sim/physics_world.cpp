@@ -18,7 +18,9 @@ using detail::kWall;
 using detail::tag_of;
 
 PhysicsWorld::PhysicsWorld(const worlds::World& w)
-    : world_(std::make_unique<b2World>(b2Vec2(0, 0))), robot_radius_m_(w.robot.radius_m) {
+    : world_(std::make_unique<b2World>(b2Vec2(0, 0))),
+      scene_(std::make_unique<detail::StaticScene>(w)),
+      robot_radius_m_(w.robot.radius_m) {
   detail::add_static_scene(*world_, w);
 
   for (const worlds::MovingObstacle& m : w.moving) moving_.push_back(make_actor(m, false));
@@ -168,6 +170,19 @@ ContactState PhysicsWorld::contacts() const {
 
 namespace plantsim::sim {
 
-std::optional<RayHit> PhysicsWorld::ray_cast(Vec2 from, Vec2 to) const { return detail::cast_ray(*world_, from, to); }
+std::optional<RayHit> PhysicsWorld::ray_cast(Vec2 from, Vec2 to) const {
+  const double length = geom::distance(from, to);
+  if (!(length > 0)) return std::nullopt;
+  const Vec2 direction = (1.0 / length) * (to - from);
+  std::optional<RayHit> best = scene_->cast(from, direction, length);
+  auto consider = [&](const Actor& a, SurfaceKind kind) {
+    const auto e = geom::ray_enters_rect(state_of(a).box, from, direction);
+    if (e && e->first <= length && (!best || e->first < best->range_m))
+      best = RayHit{from + e->first * direction, e->second, e->first, kind};
+  };
+  for (const Actor& a : moving_) consider(a, SurfaceKind::kMoving);
+  if (target_) consider(*target_, SurfaceKind::kTarget);
+  return best;
+}
 
 }  // namespace plantsim::sim

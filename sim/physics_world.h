@@ -18,6 +18,9 @@ class b2World;
 class b2Body;
 
 namespace plantsim::sim {
+namespace detail {
+struct StaticScene;
+}
 
 using geom::Pose2;
 using geom::Vec2;
@@ -57,7 +60,10 @@ class PhysicsWorld {
   double robot_yaw_rate() const;        ///< rad/s
   ContactState contacts() const;
   /// Nearest surface along the segment (obstacles, walls, charger, moving obstacles and the
-  /// target; never the robot itself), through Box2D's broad phase. For the sensors.
+  /// target; never the robot itself). For the sensors. The static parts are cast exactly by
+  /// geometry through a grid built once (box2d_scene.h's StaticScene: the same boxes Box2D
+  /// holds, in double precision), the moving bodies against their boxes as the physics has
+  /// them now: no Box2D tree walk per beam.
   std::optional<RayHit> ray_cast(Vec2 from, Vec2 to) const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
@@ -70,6 +76,7 @@ class PhysicsWorld {
 
  private:
   std::unique_ptr<b2World> world_;
+  std::unique_ptr<detail::StaticScene> scene_;  // the static parts, for ray casts
   b2Body* robot_ = nullptr;
   double robot_radius_m_;  // circumscribed, for actors deciding whether the robot is in their way
   struct Actor {

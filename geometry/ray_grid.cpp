@@ -1,0 +1,166 @@
+// The grid of box lists, the cell walk and the box entry tests.
+#include "geometry/ray_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace plantsim::geom {
+namespace {
+
+Rect bounds_of(const OrientedBox& b) {
+  const double c = std::fabs(std::cos(b.yaw)), s = std::fabs(std::sin(b.yaw));
+  const double ex = c * b.hx + s * b.hy, ey = s * b.hx + c * b.hy;
+  return {b.center.x - ex, b.center.y - ey, b.center.x + ex, b.center.y + ey};
+}
+
+}  // namespace
+
+std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 o, Vec2 d) {
+  double t_in = -std::numeric_limits<double>::infinity(), t_out = std::numeric_limits<double>::infinity();
+  Vec2 normal{0, 0};
+  const double lo[2] = {r.xmin, r.ymin}, hi[2] = {r.xmax, r.ymax}, org[2] = {o.x, o.y}, dir[2] = {d.x, d.y};
+  for (int a = 0; a < 2; ++a) {
+    if (dir[a] == 0) {
+      if (org[a] < lo[a] || org[a] > hi[a]) return std::nullopt;
+      continue;
+    }
+    double t0 = (lo[a] - org[a]) / dir[a], t1 = (hi[a] - org[a]) / dir[a];
+    double side = -1;  // entering through the low face when moving up the axis
+    if (t0 > t1) std::swap(t0, t1), side = 1;
+    if (t0 > t_in) {
+      t_in = t0;
+      normal = a == 0 ? Vec2{side, 0} : Vec2{0, side};
+    }
+    t_out = std::min(t_out, t1);
+  }
+  // Starting inside (or on the face, leaving): no entry, as Box2D's polygons.
+  if (!(t_in > 0) || t_in > t_out) return std::nullopt;
+  return std::pair{t_in, normal};
+}
+
+RayGrid::RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, double cell_m, long max_cells)
+    : rects_(std::move(rects)), oriented_(std::move(oriented)) {
+  for (const Rect& r : rects_) bounds_.push_back(r);
+  for (const OrientedBox& b : oriented_) bounds_.push_back(bounds_of(b));
+  area_ = bounds_.empty() ? Rect{0, 0, 1, 1} : bounds_.front();
+  for (const Rect& b : bounds_)
+    area_ = {std::min(area_.xmin, b.xmin), std::min(area_.ymin, b.ymin), std::max(area_.xmax, b.xmax), std::max(area_.ymax, b.ymax)};
+  const double w = std::max(area_.width(), 1e-6), h = std::max(area_.height(), 1e-6);
+  // About two boxes' worth of area per cell, never so fine that the grid passes max_cells.
+  cell_ = cell_m > 0 ? cell_m : std::max(0.5, std::sqrt(2.0 * w * h / std::max<std::size_t>(bounds_.size(), 1)));
+  cell_ = std::max(cell_, std::sqrt(w * h / static_cast<double>(std::max(1L, max_cells))));
+  nx_ = std::max(1L, static_cast<long>(std::ceil(w / cell_)));
+  ny_ = std::max(1L, static_cast<long>(std::ceil(h / cell_)));
+  // Counting sort of (cell, box) pairs into one array.
+  std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
+  auto span = [&](const Rect& b, auto&& visit) {
+    const long i0 = std::clamp(static_cast<long>(std::floor((b.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
+    const long i1 = std::clamp(static_cast<long>(std::floor((b.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
+    const long j0 = std::clamp(static_cast<long>(std::floor((b.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
+    const long j1 = std::clamp(static_cast<long>(std::floor((b.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
+    for (long j = j0; j <= j1; ++j)
+      for (long i = i0; i <= i1; ++i) visit(static_cast<std::size_t>(j * nx_ + i));
+  };
+  for (const Rect& b : bounds_) span(b, [&](std::size_t c) { ++count[c + 1]; });
+  for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+  first_ = count;
+  members_.resize(first_.back());
+  for (std::size_t k = 0; k < bounds_.size(); ++k) span(bounds_[k], [&](std::size_t c) { members_[count[c]++] = static_cast<int>(k); });
+  stamp_.assign(bounds_.size(), 0);
+}
+
+std::optional<std::pair<double, Vec2>> RayGrid::enter(int i, Vec2 origin, Vec2 direction) const {
+  const std::size_t k = static_cast<std::size_t>(i);
+  if (k < rects_.size()) return ray_enters_rect(rects_[k], origin, direction);
+  // An oriented box: the ray in the box's own frame, then the normal turned back.
+  const OrientedBox& b = oriented_[k - rects_.size()];
+  const Vec2 o = rotate(origin - b.center, -b.yaw), d = rotate(direction, -b.yaw);
+  const auto e = ray_enters_rect({-b.hx, -b.hy, b.hx, b.hy}, o, d);
+  if (!e) return std::nullopt;
+  return std::pair{e->first, rotate(e->second, b.yaw)};
+}
+
+std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_range_m) const {
+  if (bounds_.empty() || !(max_range_m > 0)) return std::nullopt;
+  if (++query_ == 0) {  // the stamps wrapped: start them afresh
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    query_ = 1;
+  }
+  // Clip the ray to the grid's extent; a ray that misses it hits nothing.
+  double t = 0, t_end = max_range_m;
+  {
+    const double lo[2] = {area_.xmin, area_.ymin}, hi[2] = {area_.xmax, area_.ymax};
+    const double org[2] = {origin.x, origin.y}, dir[2] = {direction.x, direction.y};
+    for (int a = 0; a < 2; ++a) {
+      if (dir[a] == 0) {
+        if (org[a] < lo[a] || org[a] > hi[a]) return std::nullopt;
+        continue;
+      }
+      double t0 = (lo[a] - org[a]) / dir[a], t1 = (hi[a] - org[a]) / dir[a];
+      if (t0 > t1) std::swap(t0, t1);
+      t = std::max(t, t0);
+      t_end = std::min(t_end, t1);
+    }
+    if (t > t_end) return std::nullopt;
+  }
+  const Vec2 start = origin + t * direction;
+  long i = std::clamp(static_cast<long>(std::floor((start.x - area_.xmin) / cell_)), 0L, nx_ - 1);
+  long j = std::clamp(static_cast<long>(std::floor((start.y - area_.ymin) / cell_)), 0L, ny_ - 1);
+  const long step_i = direction.x > 0 ? 1 : -1, step_j = direction.y > 0 ? 1 : -1;
+  const double inf = std::numeric_limits<double>::infinity();
+  // Distance along the ray to the next vertical and horizontal cell boundary, and between them.
+  auto boundary = [&](long cell, double lo, double o, double d, long step) {
+    if (d == 0) return inf;
+    const double edge = lo + (cell + (step > 0 ? 1 : 0)) * cell_;
+    return (edge - o) / d;
+  };
+  double next_x = boundary(i, area_.xmin, origin.x, direction.x, step_i);
+  double next_y = boundary(j, area_.ymin, origin.y, direction.y, step_j);
+  const double delta_x = direction.x != 0 ? cell_ / std::fabs(direction.x) : inf;
+  const double delta_y = direction.y != 0 ? cell_ / std::fabs(direction.y) : inf;
+  std::optional<RayGridHit> best;
+  while (true) {
+    const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
+    for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
+      const int k = members_[m];
+      if (stamp_[static_cast<std::size_t>(k)] == query_) continue;  // tested in an earlier cell
+      stamp_[static_cast<std::size_t>(k)] = query_;
+      const auto e = enter(k, origin, direction);
+      if (e && e->first <= max_range_m && (!best || e->first < best->range_m)) best = RayGridHit{e->first, e->second, k};
+    }
+    const double cell_exit = std::min(next_x, next_y);
+    // A hit within this cell is nearer than anything a later cell can hold.
+    if ((best && best->range_m <= cell_exit) || cell_exit > t_end) break;
+    if (next_x < next_y) {
+      i += step_i;
+      next_x += delta_x;
+      if (i < 0 || i >= nx_) break;
+    } else {
+      j += step_j;
+      next_y += delta_y;
+      if (j < 0 || j >= ny_) break;
+    }
+  }
+  return best;
+}
+
+bool RayGrid::near(Vec2 p, double margin_m) const {
+  const Rect q{p.x - margin_m, p.y - margin_m, p.x + margin_m, p.y + margin_m};
+  if (q.xmax < area_.xmin || q.xmin > area_.xmax || q.ymax < area_.ymin || q.ymin > area_.ymax) return false;
+  const long i0 = std::clamp(static_cast<long>(std::floor((q.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
+  const long i1 = std::clamp(static_cast<long>(std::floor((q.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
+  const long j0 = std::clamp(static_cast<long>(std::floor((q.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
+  const long j1 = std::clamp(static_cast<long>(std::floor((q.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
+  for (long j = j0; j <= j1; ++j)
+    for (long i = i0; i <= i1; ++i) {
+      const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
+      for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
+        const Rect& b = bounds_[static_cast<std::size_t>(members_[m])];
+        if (b.xmin <= q.xmax && q.xmin <= b.xmax && b.ymin <= q.ymax && q.ymin <= b.ymax) return true;
+      }
+    }
+  return false;
+}
+
+}  // namespace plantsim::geom
