@@ -198,9 +198,15 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   result.tracked_final = perceiver.tracker().boxes(result.time_s);
   result.layer_final = perceiver.current().layer;
   if (!result.succeeded()) {
-    std::optional<std::pair<double, Vec2>> first_collision;
-    for (const EpisodeResult::Event& e : result.events)
-      if (e.kind == EpisodeResult::Event::Kind::kCollision && !first_collision) first_collision = {e.t_s, e.at};
+    std::optional<std::pair<double, Pose2>> first_collision;
+    for (const EpisodeResult::Event& e : result.events) {
+      if (e.kind != EpisodeResult::Event::Kind::kCollision || first_collision) continue;
+      // The heading from the last logged sample at or before the contact (the event keeps a position).
+      double yaw = physics.robot_pose().yaw;
+      for (const TrajectorySample& s : result.trajectory)
+        if (s.t_s <= e.t_s) yaw = s.truth.yaw;
+      first_collision = {e.t_s, Pose2{e.at.x, e.at.y, yaw}};
+    }
     result.failure = watch.judge(result.time_s, physics.robot_pose(), give_up, first_collision, pursuit);
     result.events.push_back({EpisodeResult::Event::Kind::kFailure, result.failure->time_s, result.failure->pose.position()});
   }

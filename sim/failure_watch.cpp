@@ -30,13 +30,13 @@ bool FailureWatch::lost(const Localisation& l, std::string& detail) const {
 }
 
 Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose, const std::optional<GiveUp>& give_up,
-                            const std::optional<std::pair<double, geom::Vec2>>& first_collision, bool pursuit) const {
+                            const std::optional<std::pair<double, geom::Pose2>>& first_collision, bool pursuit) const {
   Failure f;
   if (first_collision) {
     // Success needs an episode without contact, whatever happened after it.
     f.reason = FailureReason::kCollision;
     f.time_s = first_collision->first;
-    f.pose = {first_collision->second.x, first_collision->second.y, end_pose.yaw};
+    f.pose = first_collision->second;
     f.detail = "the first contact with an obstacle or a wall";
     return f;
   }

@@ -27,9 +27,9 @@ class FailureWatch {
 
   /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
   /// account when it stopped trying; `first_collision`: when and where the first contact
-  /// began, if any; `pursuit`: the episode chased a moving target.
+  /// began (true pose), if any; `pursuit`: the episode chased a moving target.
   Failure judge(double end_s, const geom::Pose2& end_pose, const std::optional<GiveUp>& give_up,
-                const std::optional<std::pair<double, geom::Vec2>>& first_collision, bool pursuit) const;
+                const std::optional<std::pair<double, geom::Pose2>>& first_collision, bool pursuit) const;
 
  private:
   struct Localisation {

@@ -53,10 +53,11 @@ TEST(FailureWatch, AFarEstimateOrALostOneOverridesWhatTheRobotSaid) {
 TEST(FailureWatch, AnyCollisionIsTheReasonAtItsFirstContact) {
   FailureWatch w;
   w.observe(1.0, {1, 0, 0}, {3, 0, 0}, LocalizationHealth::kLost, false);
-  const Failure f = w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Vec2{2, 3}}, false);
+  const Failure f = w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}}, false);
   EXPECT_EQ(f.reason, FailureReason::kCollision);
   EXPECT_DOUBLE_EQ(f.time_s, 4.5);
   EXPECT_DOUBLE_EQ(f.pose.y, 3.0);
+  EXPECT_DOUBLE_EQ(f.pose.yaw, 0.7);
 }
 
 TEST(FailureReasons, NamesRoundTrip) {
