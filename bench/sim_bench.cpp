@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
+#include <optional>
+#include <vector>
 
 #include "bench/bench_report.h"
 #include "planner/planner.h"
@@ -39,6 +42,45 @@ double replay_steps_per_s(const worlds::World& w, const sim::EpisodeResult& e, c
     bare.step(step);
   }
   return static_cast<double>(e.physics_steps) / seconds_since(t0);
+}
+
+// The cost of one lidar beam: a 360-beam fan cast exactly through the grid (what the lidar does)
+// against Box2D's own ray cast per beam over the same beams, from poses along the episode.
+struct BeamCost {
+  double fan_ns = 0, box2d_ns = 0;
+};
+
+BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e, const sim::LidarParams& lidar) {
+  const sim::PhysicsWorld physics(w);
+  const int n = lidar.beam_count;
+  const double increment = n > 1 ? lidar.field_of_view_rad / (n - 1) : 0.0, first = -0.5 * lidar.field_of_view_rad;
+  std::vector<geom::Pose2> poses;
+  const std::size_t stride = std::max<std::size_t>(1, e.trajectory.size() / 200);
+  for (std::size_t i = 0; i < e.trajectory.size(); i += stride) poses.push_back(e.trajectory[i].truth);
+  std::vector<geom::Vec2> directions(static_cast<std::size_t>(n));
+  std::vector<std::optional<sim::RayHit>> hits;
+  double checksum = 0;  // keeps the casts from being optimised away; compared below
+  BeamCost cost;
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto t0 = Clock::now();
+    double sum = 0;
+    for (const geom::Pose2& p : poses) {
+      for (int k = 0; k < n; ++k) directions[static_cast<std::size_t>(k)] = geom::unit_from_angle(p.yaw + first + k * increment);
+      if (pass == 0) {
+        physics.ray_fan(p.position(), directions, p.yaw + first, increment, lidar.max_range_m, hits);
+        for (const auto& h : hits) sum += h ? h->range_m : 0.0;
+      } else {
+        for (const geom::Vec2& d : directions)
+          if (const auto h = physics.box2d_ray_cast(p.position(), p.position() + lidar.max_range_m * d)) sum += h->range_m;
+      }
+    }
+    const double ns = 1e9 * seconds_since(t0) / static_cast<double>(poses.size() * static_cast<std::size_t>(n));
+    (pass == 0 ? cost.fan_ns : cost.box2d_ns) = ns;
+    if (pass == 0) checksum = sum;
+    else if (std::fabs(sum - checksum) > 1e-3 * static_cast<double>(poses.size() * static_cast<std::size_t>(n)))
+      std::cerr << "bench sim: fan and Box2D ranges differ (sum " << checksum << " vs " << sum << ")\n";
+  }
+  return cost;
 }
 
 struct EpisodeTiming {
@@ -79,6 +121,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
 
     // Best of the repetitions for each (the least disturbed by the machine).
     double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0, best_drive = 0;
+    BeamCost best_beam{1e300, 1e300};
     for (int r = 0; r < reps; ++r) {
       const EpisodeTiming e = time_episode(w, config);
       if (!e.result.docked) {
@@ -90,6 +133,8 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
       best_no_lidar = std::max(best_no_lidar, time_episode(w, no_lidar).steps_per_s);
       best_oracle = std::max(best_oracle, time_episode(w, oracle).steps_per_s);
       best_bare = std::max(best_bare, replay_steps_per_s(w, e.result, config.step));
+      const BeamCost beam = beam_cost(w, e.result, config.lidar);
+      best_beam = {std::min(best_beam.fan_ns, beam.fan_ns), std::min(best_beam.box2d_ns, beam.box2d_ns)};
       // The same replay length with the tyre model driving a slow circle instead.
       sim::PhysicsWorld driven(w);
       sim::WheelDrive drive(w.robot, config.drive);
@@ -111,6 +156,9 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     // the episode with it against the same episode without it.
     report("sim", {name + "/episode_steps_per_s_with_lidar", best_full, "steps/s"},
            Measure{name + "/episode_steps_per_s_lidar_off", best_no_lidar, "steps/s"});
+    // One beam of a scan, cast exactly as the lidar casts it, against Box2D's ray cast (ratio < 1: cheaper).
+    report("sim", {name + "/scan_ns_per_beam", best_beam.fan_ns, "ns"},
+           Measure{name + "/box2d_ray_cast_ns_per_beam", best_beam.box2d_ns, "ns"});
   }
   return 0;
 }

@@ -81,12 +81,24 @@ std::optional<std::pair<double, Vec2>> RayGrid::enter(int i, Vec2 origin, Vec2 d
   return std::pair{e->first, rotate(e->second, b.yaw)};
 }
 
-std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_range_m) const {
-  if (bounds_.empty() || !(max_range_m > 0)) return std::nullopt;
+std::uint32_t RayGrid::next_query() const {
   if (++query_ == 0) {  // the stamps wrapped: start them afresh
     std::fill(stamp_.begin(), stamp_.end(), 0);
     query_ = 1;
   }
+  return query_;
+}
+
+void RayGrid::cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const {
+  i0 = std::clamp(static_cast<long>(std::floor((q.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
+  i1 = std::clamp(static_cast<long>(std::floor((q.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
+  j0 = std::clamp(static_cast<long>(std::floor((q.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
+  j1 = std::clamp(static_cast<long>(std::floor((q.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
+}
+
+std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_range_m) const {
+  if (bounds_.empty() || !(max_range_m > 0)) return std::nullopt;
+  next_query();
   // Clip the ray to the grid's extent; a ray that misses it hits nothing.
   double t = 0, t_end = max_range_m;
   {
@@ -145,13 +157,141 @@ std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_
   return best;
 }
 
+std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 origin) const {
+  // Corners as enter() sees the box; an origin within 1e-6 m of it is left to every ray (the
+  // corners' angles would carry rounding far beyond the fan's tolerance).
+  constexpr double kClearance = 1e-6;
+  const std::size_t k = static_cast<std::size_t>(i);
+  Vec2 corners[4];
+  if (k < rects_.size()) {
+    const Rect& r = rects_[k];
+    if (r.xmin - kClearance <= origin.x && origin.x <= r.xmax + kClearance && r.ymin - kClearance <= origin.y &&
+        origin.y <= r.ymax + kClearance)
+      return std::nullopt;
+    corners[0] = {r.xmin, r.ymin}, corners[1] = {r.xmax, r.ymin}, corners[2] = {r.xmax, r.ymax}, corners[3] = {r.xmin, r.ymax};
+  } else {
+    const OrientedBox& b = oriented_[k - rects_.size()];
+    const Vec2 o = rotate(origin - b.center, -b.yaw);
+    if (std::fabs(o.x) <= b.hx + kClearance && std::fabs(o.y) <= b.hy + kClearance) return std::nullopt;
+    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int c = 0; c < 4; ++c) corners[c] = b.center + rotate({sx[c] * b.hx, sy[c] * b.hy}, b.yaw);
+  }
+  // Seen from outside, a convex box's extent runs from the corner every other lies
+  // counter-clockwise of to the one every other lies clockwise of, less than half a turn.
+  const Vec2* first = nullptr;
+  const Vec2* last = nullptr;
+  for (const Vec2& c : corners) {
+    bool all_ccw = true, all_cw = true;
+    for (const Vec2& other : corners) {
+      const double turn = cross(c - origin, other - origin);
+      all_ccw &= turn >= 0, all_cw &= turn <= 0;
+    }
+    if (all_ccw && !first) first = &c;
+    if (all_cw && !last) last = &c;
+  }
+  if (!first || !last) return std::nullopt;
+  const double lo = std::atan2(first->y - origin.y, first->x - origin.x);
+  double hi = std::atan2(last->y - origin.y, last->x - origin.x);
+  if (hi < lo) hi += 2 * M_PI;
+  return std::pair{lo, hi};
+}
+
+void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
+                       std::vector<std::optional<RayGridHit>>& hits) const {
+  const long n = static_cast<long>(directions.size());
+  hits.assign(directions.size(), std::nullopt);
+  if (bounds_.empty() || !(max_range_m > 0) || n == 0) return;
+  constexpr double kAngleTolerance = 1e-6;
+  // A ray cast singly walks a few cells of a few boxes each; the rings' remaining boxes each cost
+  // an angular extent. Past this many boxes left per open ray, the open rays are cast singly.
+  constexpr long kBoxesPerOpenRay = 2;
+  const bool spread = n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
+  auto try_ray = [&](long r, int box) {
+    const auto e = enter(box, origin, directions[static_cast<std::size_t>(r)]);
+    auto& best = hits[static_cast<std::size_t>(r)];
+    if (e && e->first <= max_range_m && (!best || e->first < best->range_m)) best = RayGridHit{e->first, e->second, box};
+  };
+  // Each box within reach, once, against the rays whose angles its extent covers; cells in rings
+  // about the origin's, near to far, so that a ray's hit is usually known before the boxes
+  // behind it come up (a box no nearer than a ray's hit cannot change it).
+  const Rect reach{origin.x - max_range_m, origin.y - max_range_m, origin.x + max_range_m, origin.y + max_range_m};
+  if (reach.xmax < area_.xmin || reach.xmin > area_.xmax || reach.ymax < area_.ymin || reach.ymin > area_.ymax) return;
+  long i0, i1, j0, j1;
+  cells_of(reach, i0, i1, j0, j1);
+  long ci, cj, unused_i, unused_j;
+  cells_of({origin.x, origin.y, origin.x, origin.y}, ci, unused_i, cj, unused_j);
+  const std::uint32_t query = next_query();
+  const double turn = 2 * M_PI, last = static_cast<double>(n - 1) * increment;
+  long unvisited = 0;  // cell entries (a box counts once per cell it spans) not yet visited
+  for (long j = j0; j <= j1; ++j) unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] - first_[static_cast<std::size_t>(j * nx_ + i0)];
+  auto visit_cell = [&](long i, long j) {
+    const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
+    unvisited -= first_[c + 1] - first_[c];
+    for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
+      const int box = members_[m];
+      if (stamp_[static_cast<std::size_t>(box)] == query) continue;
+      stamp_[static_cast<std::size_t>(box)] = query;
+      const Rect& b = bounds_[static_cast<std::size_t>(box)];
+      const double gap_x = std::max({b.xmin - origin.x, origin.x - b.xmax, 0.0});
+      const double gap_y = std::max({b.ymin - origin.y, origin.y - b.ymax, 0.0});
+      const double nearest = std::hypot(gap_x, gap_y);
+      if (nearest > max_range_m) continue;
+      auto try_unless_nearer = [&](long r) {
+        const auto& best = hits[static_cast<std::size_t>(r)];
+        if (!best || best->range_m > nearest) try_ray(r, box);
+      };
+      const auto extent = spread ? angular_extent(box, origin) : std::nullopt;
+      if (!extent) {
+        for (long r = 0; r < n; ++r) try_unless_nearer(r);
+        continue;
+      }
+      // The extent relative to the first ray, its start brought into [0, 2 pi); then the rays
+      // it covers at each whole turn that can hold some.
+      double lo = extent->first - first_angle - kAngleTolerance, hi = extent->second - first_angle + kAngleTolerance;
+      const double turns = std::floor(lo / turn) * turn;
+      lo -= turns, hi -= turns;
+      for (double shift = -turn; lo + shift <= last + kAngleTolerance; shift += turn) {
+        const long r0 = std::max(0L, static_cast<long>(std::ceil((lo + shift) / increment)));
+        const long r1 = std::min(n - 1, static_cast<long>(std::floor((hi + shift) / increment)));
+        for (long r = r0; r <= r1; ++r) try_unless_nearer(r);
+      }
+    }
+  };
+  const long rings = std::max({ci - i0, i1 - ci, cj - j0, j1 - cj});
+  std::vector<long>& open = open_rays_;
+  for (long k = 0; k <= rings; ++k) {
+    // Every cell of ring k lies at least (k - 1) cells from the origin: a ray with a hit that
+    // near is settled. When few rays remain open (they pass through gaps into the distance), each
+    // walks its own cells (cast()) rather than the rings visiting every box out to the range.
+    if (k >= 2) {
+      const double ring_near = static_cast<double>(k - 1) * cell_;
+      open.clear();
+      for (long r = 0; r < n; ++r) {
+        const auto& h = hits[static_cast<std::size_t>(r)];
+        if (!h || h->range_m > ring_near) open.push_back(r);
+      }
+      if (open.empty()) return;
+      if (static_cast<long>(open.size()) * kBoxesPerOpenRay < unvisited) {
+        for (long r : open) hits[static_cast<std::size_t>(r)] = cast(origin, directions[static_cast<std::size_t>(r)], max_range_m);
+        return;
+      }
+    }
+    for (long i = std::max(i0, ci - k); i <= std::min(i1, ci + k); ++i) {
+      if (cj - k >= j0) visit_cell(i, cj - k);
+      if (k > 0 && cj + k <= j1) visit_cell(i, cj + k);
+    }
+    for (long j = std::max(j0, cj - k + 1); j <= std::min(j1, cj + k - 1); ++j) {
+      if (ci - k >= i0) visit_cell(ci - k, j);
+      if (k > 0 && ci + k <= i1) visit_cell(ci + k, j);
+    }
+  }
+}
+
 bool RayGrid::near(Vec2 p, double margin_m) const {
   const Rect q{p.x - margin_m, p.y - margin_m, p.x + margin_m, p.y + margin_m};
   if (q.xmax < area_.xmin || q.xmin > area_.xmax || q.ymax < area_.ymin || q.ymin > area_.ymax) return false;
-  const long i0 = std::clamp(static_cast<long>(std::floor((q.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
-  const long i1 = std::clamp(static_cast<long>(std::floor((q.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
-  const long j0 = std::clamp(static_cast<long>(std::floor((q.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
-  const long j1 = std::clamp(static_cast<long>(std::floor((q.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
+  long i0, i1, j0, j1;
+  cells_of(q, i0, i1, j0, j1);
   for (long j = j0; j <= j1; ++j)
     for (long i = i0; i <= i1; ++i) {
       const std::size_t c = static_cast<std::size_t>(j * nx_ + i);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -38,15 +39,33 @@ class RayGrid {
 
   /// The nearest box face the ray from `origin` along unit `direction` meets within `max_range_m`.
   std::optional<RayGridHit> cast(Vec2 origin, Vec2 direction, double max_range_m) const;
+  /// A fan of rays from one origin: ray k along unit `directions[k]`, whose angle lies within
+  /// 1e-6 rad of `first_angle + k * increment`. hits[k] is what cast() finds for it (the same
+  /// range; where two faces tie exactly either may be named). One pass over the boxes within
+  /// reach, each tried only on the rays its angular extent covers: a lidar scan without a walk
+  /// per beam.
+  void cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
+                std::vector<std::optional<RayGridHit>>& hits) const;
   /// True when some box comes within `margin_m` per axis of `p` (its bounding box, for oriented ones).
   bool near(Vec2 p, double margin_m) const;
 
   std::size_t box_count() const { return bounds_.size(); }
+  /// Each box's axis-aligned bounds, in the order given; and the extent of them all.
+  const std::vector<Rect>& bounds() const { return bounds_; }
+  const Rect& area() const { return area_; }
   double cell_m() const { return cell_; }
 
  private:
   /// The ray's entry into box i: distance and normal; none if it misses or starts inside.
   std::optional<std::pair<double, Vec2>> enter(int i, Vec2 origin, Vec2 direction) const;
+
+  /// The cells [i0, i1] x [j0, j1] that `q` overlaps, clamped to the grid.
+  void cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const;
+  /// A fresh stamp for a query that must visit each box once.
+  std::uint32_t next_query() const;
+  /// The angular extent [lo, hi] (radians, hi - lo < pi) box i covers seen from `origin`; none
+  /// when the origin lies in the box or so near it that the extent is ill-conditioned.
+  std::optional<std::pair<double, double>> angular_extent(int i, Vec2 origin) const;
 
   std::vector<Rect> rects_;
   std::vector<OrientedBox> oriented_;
@@ -58,6 +77,7 @@ class RayGrid {
   std::vector<int> members_;
   mutable std::vector<std::uint32_t> stamp_;  // per box: the query that last tested it
   mutable std::uint32_t query_ = 0;
+  mutable std::vector<long> open_rays_;  // cast_fan's scratch
 };
 
 }  // namespace plantsim::geom

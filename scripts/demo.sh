@@ -3,8 +3,19 @@
 # results/<world>/{summary.json,trajectory.csv,run.png,timeplots.png,report.html}; the
 # comparisons write results/<name>/{comparison.png,report.html}; results/summary.md and
 # results/index.html gather them.
+#
+# By default a representative set that answers in a few minutes after the build: runs with a
+# replay, a planner comparison, one batch with its charts, the planner-time chart and the
+# dashboard. --full adds every other run, comparison, batch and study (what the demo ran
+# before issue 35).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+full=0
+case "${1:-}" in
+  --full) full=1 ;;
+  "") ;;
+  *) echo "usage: $0 [--full]" >&2; exit 2 ;;
+esac
 ./scripts/install_deps.sh
 ./scripts/build.sh build -DCMAKE_BUILD_TYPE=Release
 mkdir -p results
@@ -15,21 +26,43 @@ run() {  # run NAME WORLD [options...]: results/NAME
   ./build/plantsim run "$w" --out "results/$name" "$@" || status=1
   dirs+=("results/$name")
 }
+links=()
+# --- The representative set ---
 run small_plant worlds/examples/small_plant.json --animate
-run small_plant_rect_robot worlds/examples/small_plant_rect_robot.json
 run corridor_crossing worlds/examples/corridor_crossing.json
-run parked_cart worlds/examples/parked_cart.json
-run world_N10 ../shared/data/worlds/world_N10.json
-run world_N50 ../shared/data/worlds/world_N50.json
 run world_N200 ../shared/data/worlds/world_N200.json
 run world_N50_noisy ../shared/data/worlds/world_N50.json --config configs/noisy_sensing.json
-# The same world with the old idealised sensing (perception mode oracle) at its noisy level, for comparison.
-run world_N50_oracle_noisy ../shared/data/worlds/world_N50.json --config configs/oracle_noisy.json
-
-run depot ../shared/data/ros_maps/depot.yaml
 run desulfurization_plant worlds/scenarios/desulfurization_plant.json
 # Plants that differ from their maps: unmapped boxes (hatched) and a charger off its mapped pose.
 run small_plant_mismatch worlds/examples/small_plant_mismatch.json --animate
+# The source document's comparison (its Fig. 5 and Fig. 6) on its own desulfurization plant:
+# both graphs are exact, so the paths are equally long; the figure says what differs (vertices,
+# edges, segment tests, time).
+./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,vg-traditional --graph --plan-only \
+  --title "Seed 000, Fig. 5 vs Fig. 6 on the desulfurization plant: this algorithm vs the traditional visibility graph" \
+  --out results/fig5_vs_fig6 || status=1
+links+=(--link results/fig5_vs_fig6/report.html)
+# Batches start afresh (--fresh: the results reflect this build) and are gates: each scenario's
+# `gate:` sets the success each configuration must reach, and a batch below it exits 1.
+# A batch over every plant and both ROS maps, ideal and noisy sensing.
+./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet --fresh --junit results/batch_plants/junit.xml || status=1
+links+=(--link results/batch_plants/report.html)
+# Planning time against the number of obstacles (log-log) for the visibility graph, the
+# traditional one, the grid and the interval search, from the planner benchmark (its JSON lines
+# kept beside it).
+mkdir -p results/planner_scaling
+./build/plantsim bench planner --quick --chart results/planner_scaling/planner_time.png \
+  > results/planner_scaling/bench_planner.jsonl || status=1
+links+=(--link results/planner_scaling/planner_time.png)
+
+if [ "$full" = 1 ]; then
+run small_plant_rect_robot worlds/examples/small_plant_rect_robot.json
+run parked_cart worlds/examples/parked_cart.json
+run world_N10 ../shared/data/worlds/world_N10.json
+run world_N50 ../shared/data/worlds/world_N50.json
+# The same world with the old idealised sensing (perception mode oracle) at its noisy level, for comparison.
+run world_N50_oracle_noisy ../shared/data/worlds/world_N50.json --config configs/oracle_noisy.json
+run depot ../shared/data/ros_maps/depot.yaml
 run desulfurization_plant_mismatch worlds/scenarios/desulfurization_plant_mismatch.json
 run substation_yard worlds/scenarios/substation_yard.json
 run cable_tunnel_maze worlds/scenarios/cable_tunnel_maze.json
@@ -54,20 +87,11 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 # obstacle shares, every method on each, the document's claims counted map by map.
 ./build/plantsim coverage-study --maps 15 --shares 0.1,0.25 --out results/coverage_study || status=1
 
-# Batches start afresh (--fresh: the results reflect this build) and are gates: each scenario's
-# `gate:` sets the success each configuration must reach, and a batch below it exits 1.
-# A batch over every plant and both ROS maps, ideal and noisy sensing.
-./build/plantsim batch scenarios/plants.yaml --out results/batch_plants --quiet --fresh --junit results/batch_plants/junit.xml || status=1
 # The five plants' mismatch variants with a wet floor and a person at the dock; a friction sweep.
 ./build/plantsim batch scenarios/plant_mismatch.yaml --out results/batch_plant_mismatch --quiet --fresh || status=1
 ./build/plantsim batch scenarios/wet_floor_sweep.yaml --out results/batch_wet_floor_sweep --quiet --fresh || status=1
 
-# The source document's comparison (its Fig. 5 and Fig. 6) on its own desulfurization plant:
-# both graphs are exact, so the paths are equally long; the figure says what differs (vertices,
-# edges, segment tests, time). Then every planner driven.
-./build/plantsim compare worlds/scenarios/desulfurization_plant.json --planners vg,vg-traditional --graph --plan-only \
-  --title "Seed 000, Fig. 5 vs Fig. 6 on the desulfurization plant: this algorithm vs the traditional visibility graph" \
-  --out results/fig5_vs_fig6 || status=1
+# Every planner driven.
 ./build/plantsim compare ../shared/data/worlds/world_N50.json --planners vg,vg-traditional,grid,gcr \
   --title "world_N50: every planner, driven and docked" --out results/planners_N50 || status=1
 # Not in any source document: the disk robot's true optimum (obstacles grown by a disk, segments
@@ -96,22 +120,16 @@ done
 ./build/plantsim batch scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
-# Planning time against the number of obstacles (log-log) for the visibility graph, the
-# traditional one, the grid and the interval search, from the planner benchmark (its JSON lines
-# kept beside it).
-mkdir -p results/planner_scaling
-./build/plantsim bench planner --quick --chart results/planner_scaling/planner_time.png \
-  > results/planner_scaling/bench_planner.jsonl || status=1
-
-./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html \
-  --link results/fig5_vs_fig6/report.html --link results/planners_N50/report.html --link results/round_vs_square/report.html \
-  --link results/batch_plants/report.html \
+links+=(--link results/planners_N50/report.html --link results/round_vs_square/report.html \
   --link results/batch_plant_mismatch/report.html --link results/batch_wet_floor_sweep/report.html \
-  --link results/planner_scaling/planner_time.png \
   --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
   --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html \
   --link results/coverage_study/report.html \
   --link results/pursuit_seed001_slow_target/report.html --link results/pursuit_seed001_target_behind_wall/report.html \
-  --link results/pursuit_seed001_target_moves_on/report.html --link results/batch_seed001_pursuit/report.html
+  --link results/pursuit_seed001_target_moves_on/report.html --link results/batch_seed001_pursuit/report.html)
+fi
+
+./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html "${links[@]}" || status=1
 echo "demo: figures and reports in results/ (open results/index.html; overview in results/summary.md)"
+[ "$full" = 1 ] || echo "demo: the representative set; ./scripts/demo.sh --full runs every run, comparison, batch and study"
 exit $status

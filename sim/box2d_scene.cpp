@@ -79,6 +79,16 @@ std::optional<RayHit> StaticScene::cast(geom::Vec2 from, geom::Vec2 direction, d
   return RayHit{from + hit->range_m * direction, hit->normal, hit->range_m, kinds[static_cast<std::size_t>(hit->box)]};
 }
 
+void StaticScene::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
+                           double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
+  thread_local std::vector<std::optional<geom::RayGridHit>> grid_hits;
+  grid.cast_fan(from, directions, first_angle, increment, max_range_m, grid_hits);
+  hits.assign(directions.size(), std::nullopt);
+  for (std::size_t k = 0; k < directions.size(); ++k)
+    if (const auto& h = grid_hits[k])
+      hits[k] = RayHit{from + h->range_m * directions[k], h->normal, h->range_m, kinds[static_cast<std::size_t>(h->box)]};
+}
+
 void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);

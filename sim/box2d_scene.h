@@ -6,6 +6,7 @@
 #include <box2d/box2d.h>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/ray_grid.h"
@@ -32,6 +33,9 @@ std::optional<RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2
 struct StaticScene {
   explicit StaticScene(const worlds::World& plant);
   std::optional<RayHit> cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const;
+  /// A fan of rays at once (geom::RayGrid::cast_fan): hits[k] as cast(from, directions[k], ...).
+  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
+                double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
   geom::RayGrid grid;
   std::vector<SurfaceKind> kinds;  // per box, in the grid's order
 };

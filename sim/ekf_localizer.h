@@ -103,6 +103,9 @@ class EkfLocalizer {
   int inflations_ = 0;
   std::vector<std::pair<double, int>> nis_;  // the window's normalised innovations and degrees of freedom
   std::size_t nis_next_ = 0;                 // ring buffer position
+  BeamDirections directions_;                // scratch, reused scan to scan
+  std::vector<geom::Vec2> fan_;
+  std::vector<std::optional<RayHit>> hits_;
 };
 
 }  // namespace plantsim::sim

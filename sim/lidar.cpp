@@ -11,6 +11,22 @@ namespace plantsim::sim {
 
 Lidar::Lidar(LidarParams params, std::uint64_t seed) : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
 
+std::span<const geom::Vec2> BeamDirections::in_world(const LidarScan& scan, double sensor_yaw) {
+  const std::size_t n = scan.ranges.size();
+  if (sensor_frame_.size() != n || angle_min_ != scan.angle_min_rad || increment_ != scan.angle_increment_rad) {
+    sensor_frame_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) sensor_frame_[i] = geom::unit_from_angle(scan.angle(i));
+    angle_min_ = scan.angle_min_rad, increment_ = scan.angle_increment_rad;
+  }
+  world_.resize(n);
+  const double c = std::cos(sensor_yaw), s = std::sin(sensor_yaw);
+  for (std::size_t i = 0; i < n; ++i) {
+    const geom::Vec2 u = sensor_frame_[i];
+    world_[i] = {c * u.x - s * u.y, s * u.x + c * u.y};
+  }
+  return world_;
+}
+
 LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s) {
   next_scan_s_ = t_s + 1.0 / params_.rate_hz;
   LidarScan s;
@@ -24,20 +40,20 @@ LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_trut
   s.ranges.resize(static_cast<std::size_t>(n));
   const geom::Pose2 sensor = geom::compose(robot_truth, s.mount);
   const double no_return = params_.max_range_returns ? params_.max_range_m : std::numeric_limits<double>::infinity();
-  for (int i = 0; i < n; ++i) {
-    const double a = sensor.yaw + s.angle(static_cast<std::size_t>(i));
-    const geom::Vec2 dir = geom::unit_from_angle(a);
+  const std::span<const geom::Vec2> directions = directions_.in_world(s, sensor.yaw);
+  physics.ray_fan(sensor.position(), directions, sensor.yaw + s.angle(0), s.angle_increment_rad, params_.max_range_m, hits_);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
     // Noise and dropout are drawn for every beam, hit or not, so that one beam's outcome
     // never shifts the random stream of the others (scans stay comparable across worlds).
     const double noise = params_.range_noise_m * gauss_(rng_);
     const bool dropped = uniform_(rng_) < params_.dropout_probability;
     double r = no_return;
-    if (const auto hit = physics.ray_cast(sensor.position(), sensor.position() + params_.max_range_m * dir)) {
+    if (const auto& hit = hits_[i]) {
       if (hit->range_m >= params_.min_range_m)
         r = std::clamp(hit->range_m + noise, params_.min_range_m, params_.max_range_m);
     }
     if (dropped) r = std::numeric_limits<double>::quiet_NaN();
-    s.ranges[static_cast<std::size_t>(i)] = r;
+    s.ranges[i] = r;
   }
   return s;
 }

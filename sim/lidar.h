@@ -5,10 +5,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "sim/ray_hit.h"
 
 namespace plantsim::sim {
 
@@ -45,6 +48,18 @@ struct LidarScan {
   bool valid(std::size_t i) const { return std::isfinite(ranges[i]) && ranges[i] >= min_range_m && ranges[i] < max_range_m; }
 };
 
+/// The beams' unit directions in the world for a sensor heading: the sensor-frame table is made
+/// once per scan geometry and turned by the heading, one rotation per beam where a sine and a
+/// cosine per beam would cost several times more. Reused scan to scan by its owner.
+class BeamDirections {
+ public:
+  std::span<const geom::Vec2> in_world(const LidarScan& scan, double sensor_yaw);
+
+ private:
+  double angle_min_ = 0, increment_ = 0;
+  std::vector<geom::Vec2> sensor_frame_, world_;
+};
+
 class Lidar {
  public:
   Lidar(LidarParams params, std::uint64_t seed);
@@ -60,6 +75,8 @@ class Lidar {
   std::normal_distribution<double> gauss_{0.0, 1.0};
   std::uniform_real_distribution<double> uniform_{0.0, 1.0};
   double next_scan_s_ = 0;
+  BeamDirections directions_;
+  std::vector<std::optional<RayHit>> hits_;  // likewise
 };
 
 }  // namespace plantsim::sim

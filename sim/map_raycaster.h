@@ -6,7 +6,10 @@
 
 #include <memory>
 #include <optional>
+#include <span>
+#include <vector>
 
+#include "geometry/near_raster.h"
 #include "sim/ray_hit.h"
 #include "worlds/world.h"
 
@@ -25,11 +28,16 @@ class MapRaycaster {
 
   /// Nearest mapped surface along the ray from `from` in direction `angle_rad`, within `max_range_m`.
   std::optional<RayHit> cast(geom::Vec2 from, double angle_rad, double max_range_m) const;
+  /// A fan of rays from `from` (unit directions[k] at angle first_angle + k * increment, to 1e-6
+  /// rad): hits[k] as cast() finds along it, the boxes within reach visited once.
+  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
+                double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
   /// True when some mapped surface lies within `margin_m` (per axis) of `point`.
   bool surface_near(geom::Vec2 point, double margin_m) const;
 
  private:
   std::unique_ptr<detail::StaticScene> scene_;
+  mutable std::unique_ptr<geom::NearRaster> near_;  // for the last margin asked, built on first use
 };
 
 }  // namespace plantsim::sim

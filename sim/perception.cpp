@@ -65,10 +65,11 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   const geom::Pose2 sensor = geom::compose(now_.pose, scan.mount);
   scan_view_ = {now_.pose, {}, {}};
   std::vector<geom::Vec2> unexplained, near_static;
+  const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
-    const double r = scan.ranges[i], phi = sensor.yaw + scan.angle(i);
-    const geom::Vec2 point = sensor.position() + r * geom::unit_from_angle(phi);
+    const double r = scan.ranges[i];
+    const geom::Vec2 point = sensor.position() + r * directions[i];
     if (now_.target && geom::distance(point, *now_.target) < p_.target_exclusion_m) continue;
     // The map explains a return when one of its surfaces lies that close to it. A return short
     // of the map's surface, or one that passes a mapped surface and meets something beyond it,

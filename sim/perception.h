@@ -125,6 +125,7 @@ class Perceiver {
   ScanView scan_view_;
   std::vector<controller::FieldObstacle> static_field_;  // from the last scan
   std::vector<geom::Rect> layer_rects_;                  // the layer after the last scan
+  BeamDirections directions_;                            // scratch for interpret_scan
   std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
   std::optional<geom::Vec2> last_target_;
   bool touched_before_ = false;  // the bumper at the last reading

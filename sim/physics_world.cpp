@@ -185,4 +185,24 @@ std::optional<RayHit> PhysicsWorld::ray_cast(Vec2 from, Vec2 to) const {
   return best;
 }
 
+std::optional<RayHit> PhysicsWorld::box2d_ray_cast(Vec2 from, Vec2 to) const {
+  return detail::cast_ray(*world_, from, to);
+}
+
+void PhysicsWorld::ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment,
+                           double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
+  scene_->cast_fan(from, directions, first_angle, increment, max_range_m, hits);
+  auto consider = [&](const Actor& a, SurfaceKind kind) {
+    const geom::Rect box = state_of(a).box;
+    for (std::size_t k = 0; k < directions.size(); ++k) {
+      const auto e = geom::ray_enters_rect(box, from, directions[k]);
+      auto& best = hits[k];
+      if (e && e->first <= max_range_m && (!best || e->first < best->range_m))
+        best = RayHit{from + e->first * directions[k], e->second, e->first, kind};
+    }
+  };
+  for (const Actor& a : moving_) consider(a, SurfaceKind::kMoving);
+  if (target_) consider(*target_, SurfaceKind::kTarget);
+}
+
 }  // namespace plantsim::sim

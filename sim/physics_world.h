@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,14 @@ class PhysicsWorld {
   /// holds, in double precision), the moving bodies against their boxes as the physics has
   /// them now: no Box2D tree walk per beam.
   std::optional<RayHit> ray_cast(Vec2 from, Vec2 to) const;
+  /// Box2D's own ray cast through its broad phase (single precision), the reference the exact
+  /// casts are compared with in tests and `plantsim bench sim`; the sensors never use it.
+  std::optional<RayHit> box2d_ray_cast(Vec2 from, Vec2 to) const;
+  /// A lidar's fan: ray k from `from` along unit directions[k], whose angle is within 1e-6 rad of
+  /// first_angle + k * increment, to `max_range_m`. hits[k] has the range ray_cast finds along
+  /// that direction; the static parts are met in one pass over the boxes within reach.
+  void ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
+               std::vector<std::optional<RayHit>>& hits) const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
   /// Sets the robot's velocity directly (no tyre model): for baselines and tests.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/near_raster.h"
 #include "geometry/ray_grid.h"
 #include "sim/physics_world.h"
 #include "worlds/random_plant.h"
@@ -106,6 +107,86 @@ TEST(RayGrid, OrientedBoxesAndNormals) {
   EXPECT_FALSE(grid.near({5, 3}, 0.1));
 }
 
+// A fan is an optimisation of single casts: every ray of it must find the very range cast()
+// finds, whatever the fan's start, spread and count, from origins on faces, at corners, by
+// turned boxes and far outside the grid.
+TEST(RayGrid, FanEqualsSingleCastsExactly) {
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> u(0, 1);
+  long rays = 0, hits = 0;
+  for (int plant = 0; plant < 12; ++plant) {
+    std::vector<Rect> rects;
+    std::vector<OrientedBox> turned;
+    for (int k = 0; k < 10 + plant * 40; ++k) {
+      const double x = 100 * u(rng), y = 60 * u(rng), w = 0.2 + 4 * u(rng), h = 0.2 + 4 * u(rng);
+      rects.push_back({x, y, x + w, y + h});
+    }
+    for (int k = 0; k < 5; ++k) turned.push_back({{100 * u(rng), 60 * u(rng)}, 0.3 + u(rng), 0.2 + u(rng), 2 * M_PI * u(rng)});
+    const RayGrid grid(rects, turned);
+    for (int fan = 0; fan < 60; ++fan) {
+      Vec2 o{-10 + 120 * u(rng), -10 + 80 * u(rng)};
+      const Rect& r = rects[static_cast<std::size_t>(fan) % rects.size()];
+      if (fan % 5 == 1) o = {r.xmin, r.ymax};                          // on a corner
+      if (fan % 5 == 2) o = {r.xmin - 2.0, r.ymin};                    // on a face's line
+      if (fan % 5 == 3) o = {0.5 * (r.xmin + r.xmax), r.ymax + 1e-7};  // a hair off a face
+      const int n = fan % 3 == 0 ? 360 : (fan % 3 == 1 ? 7 : 1);
+      const double first = -20 + 40 * u(rng);
+      const double fov = fan % 2 == 0 ? 2 * M_PI : 4 * u(rng);
+      const double increment = n > 1 ? fov / (n - 1) : 0.0;
+      std::vector<Vec2> directions;
+      for (int k = 0; k < n; ++k) directions.push_back(unit_from_angle(first + k * increment));
+      const double max_range = 5 + 40 * u(rng);
+      std::vector<std::optional<RayGridHit>> fanned;
+      grid.cast_fan(o, directions, first, increment, max_range, fanned);
+      ASSERT_EQ(fanned.size(), directions.size());
+      for (int k = 0; k < n; ++k) {
+        const auto single = grid.cast(o, directions[static_cast<std::size_t>(k)], max_range);
+        const auto& got = fanned[static_cast<std::size_t>(k)];
+        ++rays;
+        ASSERT_EQ(single.has_value(), got.has_value()) << "plant " << plant << " fan " << fan << " ray " << k;
+        if (single) {
+          ++hits;
+          EXPECT_EQ(single->range_m, got->range_m) << "plant " << plant << " fan " << fan << " ray " << k;
+        }
+      }
+    }
+  }
+  EXPECT_GT(rays, 10000);
+  EXPECT_GT(hits, rays / 3);
+}
+
+// The raster's yes and no must be the grid's answer wherever it gives one, on random points and
+// on points exactly on grown boxes' edges and corners.
+TEST(NearRaster, AgreesWithTheGridWhereverItAnswers) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  long decided = 0, asked = 0;
+  for (int plant = 0; plant < 10; ++plant) {
+    std::vector<Rect> rects;
+    for (int k = 0; k < 20 + 50 * plant; ++k) {
+      const double x = 100 * u(rng), y = 60 * u(rng);
+      rects.push_back({x, y, x + 0.1 + 3 * u(rng), y + 0.1 + 3 * u(rng)});
+    }
+    const RayGrid grid(rects, {{{50, 30}, 1.0, 0.4, 0.7}});
+    const double margin = 0.05 + 0.3 * u(rng);
+    const Rect& a = grid.area();
+    const NearRaster raster(grid.bounds(), margin, {a.xmin - 1, a.ymin - 1, a.xmax + 1, a.ymax + 1}, 0.5 * margin);
+    for (int k = 0; k < 20000; ++k) {
+      Vec2 p{-2 + 104 * u(rng), -2 + 64 * u(rng)};
+      if (k % 4 == 1) {  // on a grown box's edge or corner
+        const Rect& r = rects[static_cast<std::size_t>(k) % rects.size()];
+        p = {k % 8 == 1 ? r.xmax + margin : r.xmin - margin + (r.width() + 2 * margin) * u(rng), r.ymin - margin};
+      }
+      const auto answer = raster.at(p);
+      if (k % 4 != 1) ++asked;
+      if (answer == NearRaster::Answer::kDepends) continue;
+      if (k % 4 != 1) ++decided;
+      EXPECT_EQ(answer == NearRaster::Answer::kYes, grid.near(p, margin)) << "plant " << plant << " point " << p.x << "," << p.y;
+    }
+  }
+  EXPECT_GT(decided, asked * 9 / 10);  // the raster answers most random points by itself
+}
+
 TEST(RayGrid, AgreesWithBox2dThroughThePhysics) {
   worlds::RandomPlantOptions o;
   o.rect_count = 200;
@@ -121,7 +202,7 @@ TEST(RayGrid, AgreesWithBox2dThroughThePhysics) {
   for (int k = 0; k < 3000; ++k) {
     const Vec2 from{w.floor.xmin + w.floor.width() * u(rng), w.floor.ymin + w.floor.height() * u(rng)};
     const Vec2 d = unit_from_angle(2 * M_PI * u(rng));
-    const auto box2d = physics.ray_cast(from, from + 20.0 * d);
+    const auto box2d = physics.box2d_ray_cast(from, from + 20.0 * d);
     const auto ours = grid.cast(from, d, 20.0);
     if (!box2d || box2d->kind == sim::SurfaceKind::kCharger || !ours) continue;  // the charger is not in `rects`
     ++compared;
