@@ -201,7 +201,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                         render::PngSettings::fast());
       std::string why = f.result.status;
       if (f.result.failure)
-        why = std::string(sim::to_string(f.result.failure->reason)) + " at " + fixed(f.result.failure->time_s, 1) + " s (" +
+        why = std::string(robot::to_string(f.result.failure->reason)) + " at " + fixed(f.result.failure->time_s, 1) + " s (" +
               f.result.failure->detail + ")";
       report.figures.push_back({file, "FAILED " + f.id + ": " + why + ". Re-run it alone: plantsim batch " +
                                           scenario_path + " --episode '" + f.id + "' --out DIR"});

@@ -356,7 +356,7 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     double localization_error_max = 0;
     double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0, wall_follows = 0;
     std::int64_t ratio_n = 0, driven_n = 0;
-    std::array<std::int64_t, sim::kAllFailureReasons.size()> failed{};  // per reason, in kAllFailureReasons' order
+    std::array<std::int64_t, robot::kAllFailureReasons.size()> failed{};  // per reason, in kAllFailureReasons' order
   };
   std::map<std::tuple<std::string, std::string, std::string, std::string>, Acc> acc;
   for (const std::string& line : lines) {
@@ -387,7 +387,7 @@ std::string summary_csv(const std::vector<std::string>& lines) {
     a.recoveries += j.value("recoveries", 0);
     a.charging += j.value("charging", false);
     if (j.contains("failure") && j["failure"].is_string())
-      if (const auto reason = sim::failure_reason_from_string(j["failure"].get<std::string>()))
+      if (const auto reason = robot::failure_reason_from_string(j["failure"].get<std::string>()))
         ++a.failed[static_cast<std::size_t>(*reason)];
   }
   std::string out =
@@ -395,9 +395,9 @@ std::string summary_csv(const std::vector<std::string>& lines) {
       "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
       "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,collisions_robot_moving,"
       "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,charging";
-  for (sim::FailureReason reason : sim::kAllFailureReasons) {
+  for (robot::FailureReason reason : robot::kAllFailureReasons) {
     out += ",failed_";
-    out += sim::to_string(reason);
+    out += robot::to_string(reason);
   }
   out += "\n";
   for (const auto& [key, a] : acc) {

@@ -117,7 +117,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     sim::EpisodeConfig no_lidar = config;
     no_lidar.lidar.enabled = false;
     sim::EpisodeConfig oracle = config;
-    oracle.perception.mode = sim::PerceptionMode::kOracle;
+    oracle.perception.mode = robot::PerceptionMode::kOracle;
 
     // Best of the repetitions for each (the least disturbed by the machine).
     double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0, best_drive = 0;

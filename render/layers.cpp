@@ -166,7 +166,7 @@ bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, dou
   return true;
 }
 
-std::pair<bool, bool> draw_scan(GlCanvas& c, const sim::ScanView& scan) {
+std::pair<bool, bool> draw_scan(GlCanvas& c, const robot::ScanView& scan) {
   // Dots of a few pixels whatever the scale.
   const Vec2 half_px{0.75, 0};
   for (const Vec2& p : scan.explained) {

@@ -41,7 +41,7 @@ bool draw_plan(GlCanvas& c, const std::vector<Vec2>& plan, Rgb colour, double wi
 bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, double dash_px, Rgb colour);
 /// The last lidar scan as perception placed it: returns the map explains and those it does not.
 /// Returns {explained drawn, unexplained drawn}.
-std::pair<bool, bool> draw_scan(GlCanvas& c, const sim::ScanView& scan);
+std::pair<bool, bool> draw_scan(GlCanvas& c, const robot::ScanView& scan);
 /// Outlines of the obstacles perception tracked, and their velocity (1 s ahead).
 bool draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes);
 /// The estimated path as a band wider than the true path, drawn under it.

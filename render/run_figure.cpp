@@ -231,7 +231,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!o.setting.empty()) title += "  |  " + o.setting;
   if (run.failure) {
     char failed[120];
-    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s", std::string(sim::to_string(run.failure->reason)).c_str(),
+    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s", std::string(robot::to_string(run.failure->reason)).c_str(),
                   run.failure->time_s);
     title += failed;
   }

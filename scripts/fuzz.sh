@@ -41,17 +41,28 @@ printf 'worlds: [w.json]\nplanners: [vg]\nfaults: {a: {lidar: {range_noise_m: 0.
 } > "$corpus/ros_map/depot_cut.txt"
 { cat "$data/anyangle/arena.map"; printf '\n--8<--\n'; head -5 "$data/anyangle/arena.scen"; } > "$corpus/movingai/arena.txt"
 
-status=0
-for h in "${harnesses[@]}"; do
-  bin=build-fuzz/fuzz/fuzz_$h
+# Two harnesses at a time (one per core of the development machine; FUZZ_JOBS to change it).
+jobs=${FUZZ_JOBS:-$(nproc)}
+rm -f build-fuzz/*.status
+fuzz_one() {  # fuzz_one HARNESS: its regression fixtures, then SECONDS of fuzzing; status in build-fuzz/HARNESS.status
+  local h=$1 bin=build-fuzz/fuzz/fuzz_$1 st=0
   if [ -d "fuzz/regressions/$h" ] && [ -n "$(ls -A "fuzz/regressions/$h")" ]; then
     "$bin" -runs=0 "fuzz/regressions/$h"/* > "build-fuzz/$h.regressions.log" 2>&1 \
-      || { echo "fuzz: $h: a regression fixture fails again"; tail -30 "build-fuzz/$h.regressions.log"; status=1; }
+      || { echo "fuzz: $h: a regression fixture fails again"; tail -30 "build-fuzz/$h.regressions.log"; st=1; }
   fi
   "$bin" "$corpus/$h" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
     -artifact_prefix="build-fuzz/artifacts/${h}-" -print_final_stats=1 > "build-fuzz/$h.log" 2>&1 || {
-    echo "fuzz: $h FOUND A PROBLEM (input in build-fuzz/artifacts/):"; grep -A25 "ERROR\|==ERROR\|runtime error\|deadly signal\|timeout" "build-fuzz/$h.log" | head -40; status=1; }
+    echo "fuzz: $h FOUND A PROBLEM (input in build-fuzz/artifacts/):"; grep -A25 "ERROR\|==ERROR\|runtime error\|deadly signal\|timeout" "build-fuzz/$h.log" | head -40; st=1; }
+  local runs
   runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "build-fuzz/$h.log" | grep -o "[0-9]*$" || echo "?")
   echo "fuzz: $h: $runs executions in $seconds s"
+  echo "$st" > "build-fuzz/$h.status"
+}
+for h in "${harnesses[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  fuzz_one "$h" &
 done
+wait
+status=0
+for h in "${harnesses[@]}"; do [ "$(cat "build-fuzz/$h.status" 2>/dev/null)" = 0 ] || status=1; done
 exit $status

@@ -3,6 +3,9 @@
 
 #include <cmath>
 
+static_assert(plantsim::worlds::kContactSkinM == static_cast<double>(b2_polygonRadius),
+              "worlds/surfaces.h's contact skin must be Box2D's polygon radius");
+
 namespace plantsim::sim::detail {
 namespace {
 
@@ -17,6 +20,8 @@ void add_box(b2Body* body, const geom::Rect& r, FixtureTag tag) {
   fd.userData.pointer = tag;
   body->CreateFixture(&fd);
 }
+
+using worlds::SurfaceKind;
 
 SurfaceKind kind_of(FixtureTag t) {
   switch (t) {
@@ -48,47 +53,6 @@ class NearestHit : public b2RayCastCallback {
 
 }  // namespace
 
-namespace {
-
-// The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
-// travel, so that the robot's centre stops half the travel past the docked pose.
-geom::OrientedBox charger_block(const worlds::World& plant) {
-  const worlds::ChargerBody cb = worlds::charger_body(plant);
-  const geom::Vec2 center = cb.center + (b2_polygonRadius + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
-  return {center, cb.half_depth_m, cb.half_width_m, cb.yaw};
-}
-
-std::vector<geom::Rect> static_rects(const worlds::World& plant) {
-  std::vector<geom::Rect> rects = plant.obstacles;
-  rects.insert(rects.end(), plant.unmapped.begin(), plant.unmapped.end());
-  for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) rects.push_back(wall);
-  return rects;
-}
-
-}  // namespace
-
-StaticScene::StaticScene(const worlds::World& plant) : grid(static_rects(plant), {charger_block(plant)}) {
-  kinds.assign(plant.obstacles.size() + plant.unmapped.size(), SurfaceKind::kObstacle);
-  kinds.insert(kinds.end(), 4, SurfaceKind::kWall);
-  kinds.push_back(SurfaceKind::kCharger);
-}
-
-std::optional<RayHit> StaticScene::cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const {
-  const auto hit = grid.cast(from, direction, max_range_m);
-  if (!hit) return std::nullopt;
-  return RayHit{from + hit->range_m * direction, hit->normal, hit->range_m, kinds[static_cast<std::size_t>(hit->box)]};
-}
-
-void StaticScene::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
-                           double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
-  thread_local std::vector<std::optional<geom::RayGridHit>> grid_hits;
-  grid.cast_fan(from, directions, first_angle, increment, max_range_m, grid_hits);
-  hits.assign(directions.size(), std::nullopt);
-  for (std::size_t k = 0; k < directions.size(); ++k)
-    if (const auto& h = grid_hits[k])
-      hits[k] = RayHit{from + h->range_m * directions[k], h->normal, h->range_m, kinds[static_cast<std::size_t>(h->box)]};
-}
-
 void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);
@@ -96,7 +60,9 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   for (const geom::Rect& r : plant.unmapped) add_box(statics, r, kObstacle);  // absent from a map's World
   for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) add_box(statics, wall, kWall);
 
-  const geom::OrientedBox block = charger_block(plant);
+  // The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
+  // travel, so that the robot's centre stops half the travel past the docked pose.
+  const geom::OrientedBox block = worlds::charger_block(plant);
   b2BodyDef charger_def;
   charger_def.position.Set(static_cast<float>(block.center.x), static_cast<float>(block.center.y));
   charger_def.angle = static_cast<float>(block.yaw);
@@ -110,7 +76,7 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   body->CreateFixture(&plate_fd);
 }
 
-std::optional<RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2 to) {
+std::optional<worlds::RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2 to) {
   const double length = geom::distance(from, to);
   if (!(length > 0)) return std::nullopt;
   NearestHit cb;
@@ -121,7 +87,7 @@ std::optional<RayHit> cast_ray(const b2World& world, geom::Vec2 from, geom::Vec2
   // far from the origin on large floors.
   const double range = cb.fraction_ * length;
   const geom::Vec2 dir = (1.0 / length) * (to - from);
-  return RayHit{from + range * dir, {cb.normal_.x, cb.normal_.y}, range, kind_of(cb.tag_)};
+  return worlds::RayHit{from + range * dir, {cb.normal_.x, cb.normal_.y}, range, kind_of(cb.tag_)};
 }
 
 }  // namespace plantsim::sim::detail

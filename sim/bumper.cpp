@@ -3,6 +3,8 @@
 
 namespace plantsim::sim {
 
+using robot::BumperReading;
+
 BumperReading read_bumper(const std::vector<geom::Vec2>& contact_points, const geom::Pose2& robot_truth) {
   BumperReading b;
   for (const geom::Vec2& p : contact_points) {

@@ -6,14 +6,11 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "robot/readings.h"
 
 namespace plantsim::sim {
 
-struct BumperReading {
-  bool front = false;
-  bool rear = false;
-  bool pressed() const { return front || rear; }
-};
+using robot::BumperReading;
 
 /// From the contact points (world frame) and the robot's true pose.
 BumperReading read_bumper(const std::vector<geom::Vec2>& contact_points, const geom::Pose2& robot_truth);

@@ -7,6 +7,8 @@
 
 namespace plantsim::sim {
 
+using robot::ChargerDetection;
+
 ChargerDetector::ChargerDetector(DetectionParams params, std::uint64_t seed)
     : p_(params), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
 

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "geometry/vec2.h"
+#include "robot/readings.h"
 
 namespace plantsim::sim {
 
@@ -32,11 +33,7 @@ struct DetectionParams {
   bool occlusion = true;                   ///< the line of sight must be free (oracle mode: off)
 };
 
-/// A detection: the docked pose in the robot frame at the time the image was taken.
-struct ChargerDetection {
-  double captured_s;
-  geom::Pose2 dock_in_robot;
-};
+using robot::ChargerDetection;
 
 class ChargerDetector {
  public:

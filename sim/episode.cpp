@@ -6,9 +6,25 @@
 
 #include "sim/episode_metrics.h"
 #include "sim/failure_watch.h"
-#include "sim/travel.h"
+#include "robot/travel.h"
 
 namespace plantsim::sim {
+
+using robot::TravelCounts;
+using robot::Decision;
+using robot::Perception;
+using robot::Perceiver;
+using robot::PerceptionParams;
+using robot::PerceptionMode;
+using robot::LocalizationHealth;
+using robot::Failure;
+using robot::GiveUp;
+using robot::Travel;
+using robot::TravelSettings;
+using robot::FailureReason;
+using robot::SensorReadings;
+using robot::ActorState;
+
 namespace {
 
 SensorParams sensor_params(const EpisodeConfig& c) {

@@ -14,8 +14,8 @@
 #include "controller/potential_field.h"
 #include "controller/traction.h"
 #include "planner/planner.h"
-#include "sim/failure.h"
-#include "sim/perception.h"
+#include "robot/failure.h"
+#include "robot/perception.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"  // the parameter structs of every sensor
 #include "sim/wheel_drive.h"
@@ -54,7 +54,7 @@ struct EpisodeConfig {
   LidarParams lidar;
   ImuParams imu;
   BeaconParams beacon;
-  PerceptionParams perception;      ///< mode, EKF and tracker
+  robot::PerceptionParams perception;      ///< mode, EKF and tracker
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
   controller::TractionParams traction;
@@ -83,7 +83,7 @@ struct TrajectorySample {
 };
 
 struct EpisodeResult {
-  std::optional<Failure> failure;  ///< why it did not succeed (set exactly when !succeeded())
+  std::optional<robot::Failure> failure;  ///< why it did not succeed (set exactly when !succeeded())
   std::string status;            ///< "docked", "docked_with_collision", "caught", "failed", "trapped", "timeout",
                                  ///< or a planner status
   bool docked = false;           ///< charging and no collision in the whole episode (success)
@@ -132,11 +132,11 @@ struct EpisodeResult {
   std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
   int relocalizations = 0;                 ///< times the estimate restarted from a global scan match
   int unmapped_seen = 0;                   ///< unmapped obstacles perception marked at some time (of the plant's)
-  ScanView last_scan;                      ///< the last scan as perception placed it
+  robot::ScanView last_scan;                      ///< the last scan as perception placed it
   /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.
   struct PerceptionSnapshot {
     double t_s;
-    ScanView scan;
+    robot::ScanView scan;
     std::vector<controller::MovingBox> tracked;
     std::vector<geom::Rect> layer;
   };

@@ -14,6 +14,9 @@
 #include "worlds/world_error.h"
 
 namespace plantsim::sim {
+
+using robot::PerceptionMode;
+
 namespace {
 
 using nlohmann::json;

@@ -7,6 +7,8 @@
 
 namespace plantsim::sim {
 
+using robot::ActorState;
+
 EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s)
     : plant_(plant),
       r_(result),

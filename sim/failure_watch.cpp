@@ -5,6 +5,11 @@
 
 namespace plantsim::sim {
 
+using robot::LocalizationHealth;
+using robot::Failure;
+using robot::GiveUp;
+using robot::FailureReason;
+
 void FailureWatch::observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, LocalizationHealth health,
                            bool blocked) {
   now_ = {geom::distance(truth.position(), estimate.position()), health};

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "sim/ekf_localizer.h"
-#include "sim/failure.h"
+#include "robot/ekf_localizer.h"
+#include "robot/failure.h"
 
 namespace plantsim::sim {
 
@@ -23,18 +23,18 @@ class FailureWatch {
   explicit FailureWatch(FailureWatchParams params = {}) : p_(params) {}
   /// Every control step: the truth, the estimate, its health, and whether the robot holds
   /// still because its way is blocked.
-  void observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, LocalizationHealth health, bool blocked);
+  void observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, robot::LocalizationHealth health, bool blocked);
 
   /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
   /// account when it stopped trying; `first_collision`: when and where the first contact
   /// began (true pose), if any; `pursuit`: the episode chased a moving target.
-  Failure judge(double end_s, const geom::Pose2& end_pose, const std::optional<GiveUp>& give_up,
+  robot::Failure judge(double end_s, const geom::Pose2& end_pose, const std::optional<robot::GiveUp>& give_up,
                 const std::optional<std::pair<double, geom::Pose2>>& first_collision, bool pursuit) const;
 
  private:
   struct Localisation {
     double error_m = 0;
-    LocalizationHealth health = LocalizationHealth::kOk;
+    robot::LocalizationHealth health = robot::LocalizationHealth::kOk;
   };
   /// The estimate was lost, or far from the truth: say so in `detail`.
   bool lost(const Localisation& l, std::string& detail) const;

@@ -11,25 +11,9 @@ namespace plantsim::sim {
 
 Lidar::Lidar(LidarParams params, std::uint64_t seed) : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
 
-std::span<const geom::Vec2> BeamDirections::in_world(const LidarScan& scan, double sensor_yaw) {
-  const std::size_t n = scan.ranges.size();
-  if (sensor_frame_.size() != n || angle_min_ != scan.angle_min_rad || increment_ != scan.angle_increment_rad) {
-    sensor_frame_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) sensor_frame_[i] = geom::unit_from_angle(scan.angle(i));
-    angle_min_ = scan.angle_min_rad, increment_ = scan.angle_increment_rad;
-  }
-  world_.resize(n);
-  const double c = std::cos(sensor_yaw), s = std::sin(sensor_yaw);
-  for (std::size_t i = 0; i < n; ++i) {
-    const geom::Vec2 u = sensor_frame_[i];
-    world_[i] = {c * u.x - s * u.y, s * u.x + c * u.y};
-  }
-  return world_;
-}
-
-LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s) {
+robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s) {
   next_scan_s_ = t_s + 1.0 / params_.rate_hz;
-  LidarScan s;
+  robot::LidarScan s;
   s.t_s = t_s;
   s.mount = {params_.mount_x_m, params_.mount_y_m, params_.mount_yaw_rad};
   const int n = params_.beam_count;

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "sim/ray_hit.h"
+#include "robot/beam_directions.h"
+#include "robot/readings.h"
+#include "worlds/surfaces.h"
 
 namespace plantsim::sim {
 
@@ -33,40 +35,13 @@ struct LidarParams {
   bool max_range_returns = true;         ///< no-return beams read max_range_m (else +inf)
 };
 
-/// One scan in the sensor frame. ranges[i] is along angle_min + i * angle_increment (sensor
-/// frame); a dropout is NaN; a beam with no surface within range reads max_range_m (or +inf).
-struct LidarScan {
-  double t_s = 0;
-  geom::Pose2 mount;  ///< sensor in the robot frame
-  double angle_min_rad = 0;
-  double angle_increment_rad = 0;
-  double min_range_m = 0, max_range_m = 0;
-  std::vector<double> ranges;
-
-  double angle(std::size_t i) const { return angle_min_rad + static_cast<double>(i) * angle_increment_rad; }
-  /// A real return: finite, within [min, max) (a max-range reading is no surface).
-  bool valid(std::size_t i) const { return std::isfinite(ranges[i]) && ranges[i] >= min_range_m && ranges[i] < max_range_m; }
-};
-
-/// The beams' unit directions in the world for a sensor heading: the sensor-frame table is made
-/// once per scan geometry and turned by the heading, one rotation per beam where a sine and a
-/// cosine per beam would cost several times more. Reused scan to scan by its owner.
-class BeamDirections {
- public:
-  std::span<const geom::Vec2> in_world(const LidarScan& scan, double sensor_yaw);
-
- private:
-  double angle_min_ = 0, increment_ = 0;
-  std::vector<geom::Vec2> sensor_frame_, world_;
-};
-
 class Lidar {
  public:
   Lidar(LidarParams params, std::uint64_t seed);
   /// True when a scan is due at time t (the first at t = 0).
   bool due(double t_s) const { return params_.enabled && t_s + 1e-9 >= next_scan_s_; }
   /// Scans from the robot's true pose (sensors see the real plant).
-  LidarScan scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s);
+  robot::LidarScan scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s);
   const LidarParams& params() const { return params_; }
 
  private:
@@ -75,8 +50,8 @@ class Lidar {
   std::normal_distribution<double> gauss_{0.0, 1.0};
   std::uniform_real_distribution<double> uniform_{0.0, 1.0};
   double next_scan_s_ = 0;
-  BeamDirections directions_;
-  std::vector<std::optional<RayHit>> hits_;  // likewise
+  robot::BeamDirections directions_;
+  std::vector<std::optional<worlds::RayHit>> hits_;  // likewise
 };
 
 }  // namespace plantsim::sim

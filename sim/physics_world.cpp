@@ -8,6 +8,9 @@
 #include <cmath>
 
 namespace plantsim::sim {
+
+using robot::ActorState;
+
 using detail::FixtureTag;
 using detail::kCharger;
 using detail::kMoving;
@@ -19,7 +22,7 @@ using detail::tag_of;
 
 PhysicsWorld::PhysicsWorld(const worlds::World& w)
     : world_(std::make_unique<b2World>(b2Vec2(0, 0))),
-      scene_(std::make_unique<detail::StaticScene>(w)),
+      surfaces_(w),
       robot_radius_m_(w.robot.radius_m) {
   detail::add_static_scene(*world_, w);
 
@@ -174,7 +177,7 @@ std::optional<RayHit> PhysicsWorld::ray_cast(Vec2 from, Vec2 to) const {
   const double length = geom::distance(from, to);
   if (!(length > 0)) return std::nullopt;
   const Vec2 direction = (1.0 / length) * (to - from);
-  std::optional<RayHit> best = scene_->cast(from, direction, length);
+  std::optional<RayHit> best = surfaces_.cast(from, direction, length);
   auto consider = [&](const Actor& a, SurfaceKind kind) {
     const auto e = geom::ray_enters_rect(state_of(a).box, from, direction);
     if (e && e->first <= length && (!best || e->first < best->range_m))
@@ -191,7 +194,7 @@ std::optional<RayHit> PhysicsWorld::box2d_ray_cast(Vec2 from, Vec2 to) const {
 
 void PhysicsWorld::ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment,
                            double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
-  scene_->cast_fan(from, directions, first_angle, increment, max_range_m, hits);
+  surfaces_.cast_fan(from, directions, first_angle, increment, max_range_m, hits);
   auto consider = [&](const Actor& a, SurfaceKind kind) {
     const geom::Rect box = state_of(a).box;
     for (std::size_t k = 0; k < directions.size(); ++k) {

@@ -11,17 +11,18 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "sim/actor_state.h"
-#include "sim/ray_hit.h"
+#include "robot/readings.h"
+#include "worlds/surfaces.h"
 #include "worlds/world.h"
 
 class b2World;
 class b2Body;
 
 namespace plantsim::sim {
-namespace detail {
-struct StaticScene;
-}
+
+using robot::ActorState;
+using worlds::RayHit;
+using worlds::SurfaceKind;
 
 using geom::Pose2;
 using geom::Vec2;
@@ -62,7 +63,7 @@ class PhysicsWorld {
   ContactState contacts() const;
   /// Nearest surface along the segment (obstacles, walls, charger, moving obstacles and the
   /// target; never the robot itself). For the sensors. The static parts are cast exactly by
-  /// geometry through a grid built once (box2d_scene.h's StaticScene: the same boxes Box2D
+  /// geometry through a grid built once (worlds/surfaces.h: the same boxes Box2D
   /// holds, in double precision), the moving bodies against their boxes as the physics has
   /// them now: no Box2D tree walk per beam.
   std::optional<RayHit> ray_cast(Vec2 from, Vec2 to) const;
@@ -85,7 +86,7 @@ class PhysicsWorld {
 
  private:
   std::unique_ptr<b2World> world_;
-  std::unique_ptr<detail::StaticScene> scene_;  // the static parts, for ray casts
+  worlds::SurfaceGrid surfaces_;  // the static parts, for ray casts
   b2Body* robot_ = nullptr;
   double robot_radius_m_;  // circumscribed, for actors deciding whether the robot is in their way
   struct Actor {

@@ -4,6 +4,10 @@
 #include <cmath>
 
 namespace plantsim::sim {
+
+using robot::SensorReadings;
+using robot::OracleReadings;
+
 namespace {
 
 SensorParams effective(SensorParams p) {

@@ -1,6 +1,6 @@
 // The suite that reads every sensor from the physics at each control step. With the metrics,
 // this is the only place where the simulator's truth is read; what leaves it is a reading a
-// real robot would have (sensor_readings.h).
+// real robot would have (robot/readings.h).
 #pragma once
 
 #include <cstdint>
@@ -8,16 +8,27 @@
 #include <random>
 #include <vector>
 
+#include "sim/bumper.h"
+#include "sim/charger_detector.h"
 #include "sim/charger_pads.h"
+#include "sim/lidar.h"
 #include "sim/imu.h"
 #include "sim/localization.h"
 #include "sim/odometry.h"
 #include "sim/physics_world.h"
-#include "sim/sensor_readings.h"
+#include "robot/readings.h"
 #include "sim/wheel_drive.h"
 #include "worlds/world.h"
 
 namespace plantsim::sim {
+
+using robot::OracleReadings;
+using robot::SensorReadings;
+
+/// The moving target's beacon (a UWB tag it carries): its centre relative to the robot.
+struct BeaconParams {
+  double position_noise_m = 0.05;  ///< std-dev per axis
+};
 
 struct SensorParams {
   bool oracle = false;  ///< perception mode "oracle"

@@ -12,6 +12,8 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+
+using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
 
 struct SuiteResult {

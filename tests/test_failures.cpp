@@ -9,6 +9,8 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+
+using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
 
 // The referee on timelines: 30 Hz observations of a robot standing or driving.

@@ -8,11 +8,13 @@
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"
-#include "sim/scan_matcher.h"
+#include "robot/scan_matcher.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+
+using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
 
 // An exact scan of `world` from `pose` (rays against its rectangles and walls), 360 beams over

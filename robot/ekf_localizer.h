@@ -19,10 +19,11 @@
 #include <string_view>
 
 #include "geometry/vec2.h"
-#include "sim/lidar.h"
-#include "sim/map_raycaster.h"
+#include "robot/beam_directions.h"
+#include "robot/readings.h"
+#include "robot/map_raycaster.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 struct EkfParams {
   double initial_position_sigma_m = 0.05;   ///< uncertainty of the start pose the robot is given
@@ -108,4 +109,4 @@ class EkfLocalizer {
   std::vector<std::optional<RayHit>> hits_;
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

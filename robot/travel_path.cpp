@@ -1,8 +1,8 @@
 // Path travel: the docking controller along the plan; a blocked way asks for a plan around
 // what the robot senses.
-#include "sim/travel.h"
+#include "robot/travel.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 class PathTravel : public Travel {
@@ -65,4 +65,4 @@ std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::st
   return std::make_unique<PathTravel>(map, planner_name, s, std::move(path));
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

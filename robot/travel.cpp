@@ -1,12 +1,12 @@
 // The helpers every travel mode shares: replanning around what is sensed, and the docking
 // controller's input.
-#include "sim/travel.h"
+#include "robot/travel.h"
 
 #include <algorithm>
 
 #include "planner/vg/vg_overlay.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
                                                    const controller::DockingParams& docking, const geom::Pose2& from,
@@ -86,4 +86,4 @@ Decision decision_of(const controller::DockingCommand& cmd, controller::DockFail
   return d;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

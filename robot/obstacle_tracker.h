@@ -10,7 +10,7 @@
 #include "controller/collision_check.h"
 #include "geometry/vec2.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 struct TrackerParams {
   double unexplained_margin_m = 0.15;  ///< a return this much shorter than the map predicts is not the map
@@ -55,4 +55,4 @@ class ObstacleTracker {
 /// Splits points in beam order into clusters wherever neighbours are more than `gap_m` apart.
 std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points, double gap_m);
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -1,8 +1,8 @@
 // Pursuit along plans: travel as to a charger, but the path's end follows the target, planned
 // again every period from where the beacon says it is; never docks.
-#include "sim/travel.h"
+#include "robot/travel.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 class PursuitTravel : public Travel {
@@ -43,4 +43,4 @@ std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map, const std:
   return std::make_unique<PursuitTravel>(map, planner_name, s, std::move(path));
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

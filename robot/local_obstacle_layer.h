@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "sim/lidar.h"
+#include "robot/readings.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 struct ObstacleLayerParams {
   bool enabled = true;
@@ -53,4 +53,4 @@ class LocalObstacleLayer {
   std::unordered_map<Key, Cell> evidence_;
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -1,12 +1,12 @@
 // The likelihood grid (an exact Euclidean distance transform of the mapped surfaces), its
 // block maxima, and the windowed branch-and-bound search.
-#include "sim/scan_matcher.h"
+#include "robot/scan_matcher.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 /// Squared distance to the nearest zero of f along one row (Felzenszwalb and Huttenlocher's
@@ -195,4 +195,4 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
   return best;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

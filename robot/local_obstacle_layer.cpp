@@ -1,12 +1,12 @@
 // Marking, clearing and merging the layer's cells.
-#include "sim/local_obstacle_layer.h"
+#include "robot/local_obstacle_layer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_set>
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 std::int32_t cell_of(double x, double cell_m) { return static_cast<std::int32_t>(std::floor(x / cell_m)); }
@@ -104,4 +104,4 @@ std::vector<geom::Rect> LocalObstacleLayer::occupied() const {
   return out;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

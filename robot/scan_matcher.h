@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "sim/lidar.h"
+#include "robot/readings.h"
 #include "worlds/world.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 struct ScanMatcherParams {
   double resolution_m = 0.1;      ///< likelihood grid cell (coarser on maps past max_cells)
@@ -70,4 +70,4 @@ class ScanMatcher {
   std::vector<double> coarse_;  // max of fine_ over [i, i + block) x [j, j + block)
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -10,7 +10,7 @@
 
 #include "geometry/vec2.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 enum class FailureReason {
   kCollision,             ///< touched an obstacle or a wall (success needs none)
@@ -48,4 +48,4 @@ struct Failure {
   std::string detail;      ///< one sentence more (the planner's status, the robot's own account)
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

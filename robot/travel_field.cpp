@@ -1,8 +1,8 @@
 // Seed 001's potential field with wall following, fed what perception senses; at the staging
 // area the docking manoeuvre takes over (to a moving target it never docks).
-#include "sim/travel.h"
+#include "robot/travel.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 class FieldTravel : public Travel {
@@ -60,4 +60,4 @@ std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::s
   return std::make_unique<FieldTravel>(map, planner_name, s, pursuit, robot_radius_m);
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

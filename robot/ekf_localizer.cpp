@@ -1,11 +1,11 @@
 // Prediction, the iterated scan update and health.
-#include "sim/ekf_localizer.h"
+#include "robot/ekf_localizer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 std::string_view to_string(LocalizationHealth h) {
   switch (h) {
@@ -262,4 +262,4 @@ double EkfLocalizer::correct(const LidarScan& scan) {
   return inliers;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -1,6 +1,6 @@
 // The robot's map as something to cast rays through: the mapped obstacle rectangles, floor
-// walls and the charger at its mapped pose, in a grid of their own (box2d_scene.h's
-// StaticScene, exact ray casts by geometry; never the physics world). The estimator predicts
+// walls and the charger at its mapped pose, in a grid of their own (worlds/surfaces.h, exact
+// ray casts by geometry; never the physics world). The estimator predicts
 // lidar ranges with it; perception asks it which returns the map explains.
 #pragma once
 
@@ -10,19 +10,16 @@
 #include <vector>
 
 #include "geometry/near_raster.h"
-#include "sim/ray_hit.h"
+#include "worlds/surfaces.h"
 #include "worlds/world.h"
 
-namespace plantsim::sim {
-namespace detail {
-struct StaticScene;
-}
+namespace plantsim::robot {
+using worlds::RayHit;
 
 class MapRaycaster {
  public:
   /// `map` is the plant as the robot knows it (its obstacles, floor and charger pose).
   explicit MapRaycaster(const worlds::World& map);
-  ~MapRaycaster();
   MapRaycaster(const MapRaycaster&) = delete;
   MapRaycaster& operator=(const MapRaycaster&) = delete;
 
@@ -36,8 +33,8 @@ class MapRaycaster {
   bool surface_near(geom::Vec2 point, double margin_m) const;
 
  private:
-  std::unique_ptr<detail::StaticScene> scene_;
+  worlds::SurfaceGrid surfaces_;
   mutable std::unique_ptr<geom::NearRaster> near_;  // for the last margin asked, built on first use
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -13,11 +13,11 @@
 #include "controller/docking.h"
 #include "controller/potential_field.h"
 #include "planner/planner.h"
-#include "sim/failure.h"
-#include "sim/perception.h"
+#include "robot/failure.h"
+#include "robot/perception.h"
 #include "worlds/world.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 struct TravelSettings {
   controller::PurePursuitParams tracking;
@@ -75,4 +75,4 @@ std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::s
 std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map, const std::string& planner_name,
                                             const TravelSettings& s, std::vector<geom::Vec2> path);
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -1,11 +1,11 @@
 // Clustering, association and the alpha-beta filter.
-#include "sim/obstacle_tracker.h"
+#include "robot/obstacle_tracker.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points, double gap_m) {
   std::vector<std::vector<geom::Vec2>> out;
@@ -83,4 +83,4 @@ std::vector<controller::MovingBox> ObstacleTracker::boxes(double t_s) const {
   return out;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -1,13 +1,13 @@
 // Building the perception from readings: the EKF and the tracker (sensors), or the simulator's
 // knowledge as the readings hand it over (oracle).
-#include "sim/perception.h"
+#include "robot/perception.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/predicates.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 namespace {
 
 // Oracle mode: moving obstacles within range, as boxes in the map frame, placed with the
@@ -243,4 +243,4 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   return now_;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot

@@ -14,14 +14,15 @@
 
 #include "controller/collision_check.h"
 #include "controller/potential_field.h"
-#include "sim/ekf_localizer.h"
-#include "sim/local_obstacle_layer.h"
-#include "sim/map_raycaster.h"
-#include "sim/obstacle_tracker.h"
-#include "sim/scan_matcher.h"
-#include "sim/sensor_readings.h"
+#include "robot/ekf_localizer.h"
+#include "robot/local_obstacle_layer.h"
+#include "robot/map_raycaster.h"
+#include "robot/obstacle_tracker.h"
+#include "robot/scan_matcher.h"
+#include "robot/beam_directions.h"
+#include "robot/readings.h"
 
-namespace plantsim::sim {
+namespace plantsim::robot {
 
 enum class PerceptionMode { kSensors, kOracle };
 std::string_view to_string(PerceptionMode m);
@@ -134,4 +135,4 @@ class Perceiver {
   double turn_gap_sum_ = 0, turn_gap_time_ = 0;
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::robot
