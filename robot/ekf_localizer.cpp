@@ -150,6 +150,18 @@ int keep_constrained(Eigen::Matrix4d& info, Eigen::Vector4d& gradient, double si
 
 }  // namespace
 
+void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
+  // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading.
+  const double r = p_.gyro_noise_radps * p_.gyro_noise_radps;
+  const double s = P_(3, 3) + r;
+  if (!(s > 0)) return;
+  const State k = P_.col(3) / s;
+  x_ += k * (gyro_yaw_rate_radps - x_(3));
+  x_(2) = geom::wrap_angle(x_(2));
+  P_ -= k * P_.row(3);
+  P_ = 0.5 * (P_ + P_.transpose());
+}
+
 double EkfLocalizer::correct(const LidarScan& scan) {
   // Beams spread evenly over the scan, each matched to the mapped face it meets from the prior
   // pose by one fan of ray casts; the iterations move the pose against those faces' lines, as a

@@ -86,6 +86,9 @@ class EkfLocalizer {
   bool inconsistent() const { return inconsistent_; }
   /// Times an inconsistent window widened the covariance (adaptive fading).
   int inflations() const { return inflations_; }
+  /// The wheels did not turn since the last reading: the robot stands still, so the gyro's rate
+  /// is its bias plus noise (a zero-velocity update, as inertial navigation does at rest).
+  void standstill(double gyro_yaw_rate_radps);
   /// Replaces the estimate (a global relocalisation), with the given pose covariance.
   void reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance);
 

@@ -66,6 +66,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   scan_view_ = {now_.pose, {}, {}};
   std::vector<geom::Vec2> unexplained, near_static;
   const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
+  const double explained_margin = std::max(p_.tracker.unexplained_margin_m, p_.explained_sigmas * p_.ekf.range_sigma_m);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i];
@@ -75,7 +76,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
     // of the map's surface, or one that passes a mapped surface and meets something beyond it,
     // is a thing the map does not have, and is tracked. (No ray cast needed: the nearness test
     // is a broad-phase box query.)
-    const bool explained = raycaster_.surface_near(point, p_.tracker.unexplained_margin_m);
+    const bool explained = raycaster_.surface_near(point, explained_margin);
     (explained ? scan_view_.explained : scan_view_.unexplained).push_back(point);
     if (!explained && r <= p_.tracker.range_m) unexplained.push_back(point);
     if (explained && r <= p_.field_range_m) near_static.push_back(point);
@@ -109,8 +110,12 @@ double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) cons
   int agree = 0, beams = 0;
   for (std::size_t i = 0; i < n; i += stride) {
     if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
-    ++beams;
     const auto hit = raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
+    // A return short of the mapped surface may be something the map lacks standing in front of
+    // it (a box, a person): it neither confirms nor contradicts the pose. Only a beam that
+    // passes where the map has a surface, or meets one where the map has none, contradicts.
+    if (scan.valid(i) && hit && scan.ranges[i] < hit->range_m - p_.verify_tolerance_m) continue;
+    ++beams;
     if (!scan.valid(i)) agree += !hit;  // no return: right where the map has nothing in range
     else if (hit) agree += std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
   }
@@ -134,6 +139,21 @@ bool Perceiver::relocalize(const LidarScan& scan) {
   if (returns < p_.global_match_min_returns) return local_ok;  // open ground: nothing to match
   const std::optional<ScanMatch> m = matcher_->match(scan, ekf_.pose(), window);
   if (!m) return local_ok;
+  if (m->score * returns < p_.global_match_min_returns) {
+    // Even at its best pose the scan has too few returns on the map to judge by (what it sees
+    // is mostly things the map lacks: unmapped boxes, people, on open ground): no evidence
+    // either way. It goes on, as on open ground.
+    unmatched_ = false;
+    return local_ok;
+  }
+  if (m->score >= p_.matcher.min_score && !m->accepted) {
+    // The returns fit the map well in more than one place of the window (a long wall seen
+    // alone): nothing contradicts the estimate, there is only too little to place the robot.
+    // It goes on (slowly, by its uncertainty) towards what will tell the places apart, and the
+    // window is not widened, which would only add look-alikes.
+    unmatched_ = false;
+    return local_ok;
+  }
   unmatched_ = !m->accepted || agreement(scan, m->pose) < p_.verify_agreement;
   if (unmatched_) {
     // Returns, but no place that fits them alone: search wider next time.
@@ -172,7 +192,10 @@ const Perception& Perceiver::update(const SensorReadings& r) {
     return now_;
   }
 
+  // Wheels that did not turn at all: the robot stands still and the gyro reads its own bias.
+  const bool wheels_still = r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
   ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
+  if (wheels_still) ekf_.standstill(r.gyro_yaw_rate_radps);
   // Moved without the wheels: a contact (the robot never touches anything but the charger's
   // pads, which are not on the bumper), or a scan that pulls the estimate further than its
   // spread allows, or scans the map stops explaining. Widen the estimate so that the next

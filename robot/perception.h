@@ -37,6 +37,13 @@ struct PerceptionParams {
   TrackerParams tracker;
   ObstacleLayerParams layer;
   double moving_speed_mps = 0.3;     ///< tracks faster than this do not mark the layer (they move on)
+  /// A return lies off the map when it is farther from every mapped surface than the tracker's
+  /// margin or this many of the range noise the estimator assumes (ekf.range_sigma_m), whichever
+  /// is more: a noisier lidar must not turn its own scatter into obstacles that move.
+  double explained_sigmas = 3.0;
+  /// The robot holds still this long at the start (sensors mode), so that the gyro's bias is
+  /// measured at rest before it has to carry the heading across open ground.
+  double gyro_calibration_s = 1.0;
   double displaced_jump_m = 0.05;    ///< one scan moving the estimate this far means the wheels missed a motion
   double slip_jump_m = 0.02;         ///< ... this far, that the wheels slipped
   double slip_turn_radps = 0.15;     ///< encoders' turn rate this far from the gyro's, on average over

@@ -74,5 +74,7 @@ std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::s
                                           const TravelSettings& s, bool pursuit, double robot_radius_m);
 std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map, const std::string& planner_name,
                                             const TravelSettings& s, std::vector<geom::Vec2> path);
+/// `travel`, after holding still for the first `still_s` seconds (the gyro measured at rest).
+std::unique_ptr<Travel> hold_still_first(std::unique_ptr<Travel> travel, double still_s);
 
 }  // namespace plantsim::robot

@@ -97,6 +97,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       config.travel == TravelMode::kPotentialField ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
       : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
                 : make_path_travel(map, planner.name(), settings, first_path);
+  if (config.perception.mode == PerceptionMode::kSensors) travel = hold_still_first(std::move(travel), config.perception.gyro_calibration_s);
 
   PhysicsWorld physics(plant);
   WheelDrive drive(plant.robot, config.drive);

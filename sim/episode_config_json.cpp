@@ -185,6 +185,8 @@ const std::vector<Field>& fields() {
       PS_POSITIVE("layer", perception.layer.cell_m, "cell_m"),
       PS_POSITIVE("layer", perception.layer.clear_range_m, "clear_range_m"),
       PS_FIELD("perception", perception.moving_speed_mps, "moving_speed_mps"),
+      PS_FIELD("perception", perception.explained_sigmas, "explained_sigmas"),
+      PS_FIELD("perception", perception.gyro_calibration_s, "gyro_calibration_s"),
       PS_POSITIVE("perception", perception.displaced_jump_m, "displaced_jump_m"),
       PS_POSITIVE("perception", perception.slip_jump_m, "slip_jump_m"),
       PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
