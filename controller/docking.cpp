@@ -220,8 +220,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         // Stopped in something's way (it does not yield): back out along the stretch just driven.
         const bool threatened = position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
                                                     in.nearby_obstacles, params_.yield_horizon_s);
-        if (straight_run_m_ > 0.05 && threatened) {
-          out.twist = {-params_.yield_speed_mps, 0.0};
+        const Twist back{-params_.yield_speed_mps, 0.0};
+        if (straight_run_m_ > 0.05 && threatened && guard(in, back, false)) {
+          // ... only while what it senses leaves that stretch clear (a person may be behind too).
+          out.twist = back;
           straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
         } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
           // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
