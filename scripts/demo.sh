@@ -89,6 +89,7 @@ run depot_pit_coverage worlds/scenarios/depot_pit_coverage.json --planner covera
 
 # The five plants' mismatch variants with a wet floor and a person at the dock; a friction sweep.
 ./build/plantsim batch scenarios/plant_mismatch.yaml --out results/batch_plant_mismatch --quiet --fresh || status=1
+./build/plantsim batch scenarios/plant_mismatch_person.yaml --out results/batch_plant_mismatch_person --quiet --fresh || status=1
 ./build/plantsim batch scenarios/wet_floor_sweep.yaml --out results/batch_wet_floor_sweep --quiet --fresh || status=1
 
 # Every planner driven.
@@ -121,7 +122,8 @@ done
 ./build/plantsim batch scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
 
 links+=(--link results/planners_N50/report.html --link results/round_vs_square/report.html \
-  --link results/batch_plant_mismatch/report.html --link results/batch_wet_floor_sweep/report.html \
+  --link results/batch_plant_mismatch/report.html --link results/batch_plant_mismatch_person/report.html \
+  --link results/batch_wet_floor_sweep/report.html \
   --link results/maze_ring/report.html --link results/coverage_depot_pit/report.html --link results/baselines_desulfurization/report.html --link results/batch_seed_baselines/report.html \
   --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html \
   --link results/coverage_study/report.html \

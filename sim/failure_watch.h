@@ -1,6 +1,6 @@
 // The referee's verdict on a failed episode: it watches the truth (where the robot really is,
 // how far its estimate is off) and the robot's side (its localisation health, whether it says
-// it is blocked, why it gave up), and names one reason of sim/failure.h. Nothing here feeds
+// it is blocked, why it gave up), and names one reason of robot/failure.h. Nothing here feeds
 // back into sensing or control.
 #pragma once
 
