@@ -40,17 +40,23 @@ std::optional<double> brute_force(const std::vector<Rect>& rects, Vec2 o, Vec2 d
   return best;
 }
 
+// `count` boxes on a 100 x 60 m floor, each side min_side plus up to `spread` more.
+std::vector<Rect> random_rects(std::mt19937_64& rng, int count, double min_side, double spread) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Rect> rects;
+  for (int k = 0; k < count; ++k) {
+    const double x = 100 * u(rng), y = 60 * u(rng), w = min_side + spread * u(rng), h = min_side + spread * u(rng);
+    rects.push_back({x, y, x + w, y + h});
+  }
+  return rects;
+}
+
 TEST(RayGrid, MatchesEveryBoxTestedOnRandomRays) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0, 1);
   int rays = 0, hits = 0, grazing = 0, corner_touches = 0;
   for (int plant = 0; plant < 20; ++plant) {
-    std::vector<Rect> rects;
-    const int n = 5 + plant * 20;
-    for (int k = 0; k < n; ++k) {
-      const double x = 100 * u(rng), y = 60 * u(rng), w = 0.2 + 5 * u(rng), h = 0.2 + 5 * u(rng);
-      rects.push_back({x, y, x + w, y + h});
-    }
+    const std::vector<Rect> rects = random_rects(rng, 5 + plant * 20, 0.2, 5);
     const RayGrid grid(rects, {});
     for (int k = 0; k < 500; ++k) {
       Vec2 o{100 * u(rng), 60 * u(rng)};
@@ -115,12 +121,8 @@ TEST(RayGrid, FanEqualsSingleCastsExactly) {
   std::uniform_real_distribution<double> u(0, 1);
   long rays = 0, hits = 0;
   for (int plant = 0; plant < 12; ++plant) {
-    std::vector<Rect> rects;
+    const std::vector<Rect> rects = random_rects(rng, 10 + plant * 40, 0.2, 4);
     std::vector<OrientedBox> turned;
-    for (int k = 0; k < 10 + plant * 40; ++k) {
-      const double x = 100 * u(rng), y = 60 * u(rng), w = 0.2 + 4 * u(rng), h = 0.2 + 4 * u(rng);
-      rects.push_back({x, y, x + w, y + h});
-    }
     for (int k = 0; k < 5; ++k) turned.push_back({{100 * u(rng), 60 * u(rng)}, 0.3 + u(rng), 0.2 + u(rng), 2 * M_PI * u(rng)});
     const RayGrid grid(rects, turned);
     for (int fan = 0; fan < 60; ++fan) {
@@ -162,11 +164,7 @@ TEST(NearRaster, AgreesWithTheGridWhereverItAnswers) {
   std::uniform_real_distribution<double> u(0, 1);
   long decided = 0, asked = 0;
   for (int plant = 0; plant < 10; ++plant) {
-    std::vector<Rect> rects;
-    for (int k = 0; k < 20 + 50 * plant; ++k) {
-      const double x = 100 * u(rng), y = 60 * u(rng);
-      rects.push_back({x, y, x + 0.1 + 3 * u(rng), y + 0.1 + 3 * u(rng)});
-    }
+    const std::vector<Rect> rects = random_rects(rng, 20 + 50 * plant, 0.1, 3);
     const RayGrid grid(rects, {{{50, 30}, 1.0, 0.4, 0.7}});
     const double margin = 0.05 + 0.3 * u(rng);
     const Rect& a = grid.area();
