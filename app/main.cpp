@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_merge_command(app));
   remember(plantsim::app::add_generate_command(app));
   remember(plantsim::app::add_vary_command(app));
+  remember(plantsim::app::add_nav2_import_command(app));
   remember(plantsim::app::add_coverage_command(app));
   remember(plantsim::app::add_coverage_study_command(app));
   // An unknown command is named, with the known ones (CLI11 would say "A subcommand is required").

@@ -243,8 +243,8 @@ class Progress {
 class EpisodeRunner {
  public:
   EpisodeRunner(const BatchSpec& spec, const std::vector<worlds::World>& worlds, const std::vector<std::uint64_t>& contents,
-                const std::vector<sim::EpisodeConfig>& configs)
-      : spec_(spec), worlds_(worlds), contents_(contents), configs_(configs) {}
+                const std::vector<sim::EpisodeConfig>& configs, const sim::EpisodeSteering& steering = {})
+      : spec_(spec), worlds_(worlds), contents_(contents), configs_(configs), steering_(steering) {}
 
   struct Run {
     worlds::World plant;
@@ -275,7 +275,7 @@ class EpisodeRunner {
       if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
     }
     out.optimal_m = optimal.length;
-    out.result = sim::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault), out.config);
+    out.result = sim::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault), out.config, steering_);
     return out;
   }
 
@@ -293,6 +293,7 @@ class EpisodeRunner {
   const std::vector<worlds::World>& worlds_;
   const std::vector<std::uint64_t>& contents_;
   const std::vector<sim::EpisodeConfig>& configs_;
+  const sim::EpisodeSteering& steering_;
   std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>> planners_;
 };
 
@@ -492,7 +493,9 @@ std::vector<std::string> read_episode_records(const std::string& dir) { return r
 
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   // Everything that can be wrong is found before the first episode.
-  const BatchSpec spec = load_batch_spec(scenario_path);
+  BatchSpec spec = load_batch_spec(scenario_path);
+  if (o.steering)
+    for (NamedConfig& c : spec.controllers) c.name += "+" + o.steering.name;
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     throw std::invalid_argument("--shard i/n needs 0 <= i < n");
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
@@ -567,7 +570,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   std::exception_ptr failure;
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   auto worker = [&]() {
-    EpisodeRunner runner(spec, worlds, contents, configs);
+    EpisodeRunner runner(spec, worlds, contents, configs, o.steering);
     try {
       for (std::size_t k = next++; k < todo.size(); k = next++) {
         const Episode& e = todo[k];

@@ -23,6 +23,9 @@ struct RunOptions {
   bool progress = true;   ///< progress bar with rate and ETA on stderr
   bool figures = true;    ///< comparison figures in the report
   GateOverride gate;      ///< the command line's changes to the scenario's gate (drawn in the charts)
+  /// An outside controller for every episode (the Python module's); its name joins each
+  /// controller's, so the ids and the scenario's fingerprint tell its episodes apart.
+  sim::EpisodeSteering steering;
 };
 
 struct BatchOutcome {

@@ -173,9 +173,11 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   now_.dt_s = r.dt_s;
   now_.odom_pose = r.odom_pose;
   now_.speed_mps = r.odom_speed_mps;
+  now_.yaw_rate_radps = r.gyro_yaw_rate_radps;
   now_.charger_contact = r.charger_contact;
   now_.charging = r.charging;
   now_.bumper = r.bumper;
+  if (r.scan) now_.scan = r.scan;
   odom_history_.emplace_back(r.t_s, r.odom_pose);
   while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0) odom_history_.pop_front();
 
@@ -239,6 +241,9 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   now_.position_sigma_m = ekf_.position_sigma_m();
   now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();
   now_.health = ekf_.health();
+  const Eigen::Matrix3d covariance = ekf_.pose_covariance();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) now_.pose_covariance[static_cast<std::size_t>(3 * i + j)] = covariance(i, j);
   if (r.target_in_robot) {
     // The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
     const geom::Vec2 seen = geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0}).position();

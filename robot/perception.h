@@ -6,6 +6,7 @@
 // odometry. Mode "oracle" keeps the old idealised sensing for comparison.
 #pragma once
 
+#include <array>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -80,6 +81,7 @@ struct Perception {
   LocalizationHealth health = LocalizationHealth::kOk;
   geom::Pose2 odom_pose;            ///< continuous odometry frame
   double speed_mps = 0;
+  double yaw_rate_radps = 0;        ///< the gyro's reading
   bool charger_contact = false;
   bool charging = false;
   BumperReading bumper;
@@ -92,6 +94,8 @@ struct Perception {
   std::vector<controller::FieldObstacle> field;    ///< what the potential field feels
   std::optional<geom::Vec2> target;                ///< a moving target's centre (map frame)
   geom::Vec2 target_velocity;
+  std::optional<LidarScan> scan;                   ///< the newest scan as read (sensor frame), for outside controllers
+  std::array<double, 9> pose_covariance{};          ///< the estimate's (x, y, yaw) covariance, row-major; zeros in oracle mode
 };
 
 /// The last scan as perception interpreted it, for figures.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses with clang under ASan + UBSan (tree build-fuzz) and runs each
+# Builds the libFuzzer harnesses with clang under ASan + UBSan (in the tree build-sanitize) and runs each
 # for SECONDS (default 60) on a seed corpus made from the shipped files, after replaying the
 # regression fixtures of fuzz/regressions/<harness>/ (inputs that once crashed). Prints the
 # executions each harness reached; exits 1 on any crash, leak or timeout (the input is kept in
@@ -13,10 +13,8 @@ harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params)
 data=$(cd ../shared/data && pwd)
 
+./scripts/sanitize_tree.sh  # the harnesses are built in the sanitizer tree
 mkdir -p build-fuzz
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPLANTSIM_FUZZ=ON \
-  > build-fuzz/configure.log 2>&1 || { cat build-fuzz/configure.log; exit 1; }
-cmake --build build-fuzz --parallel "$(nproc)"
 
 corpus=build-fuzz/corpus
 rm -rf "$corpus"
@@ -45,7 +43,7 @@ printf 'worlds: [w.json]\nplanners: [vg]\nfaults: {a: {lidar: {range_noise_m: 0.
 jobs=${FUZZ_JOBS:-$(nproc)}
 rm -f build-fuzz/*.status
 fuzz_one() {  # fuzz_one HARNESS: its regression fixtures, then SECONDS of fuzzing; status in build-fuzz/HARNESS.status
-  local h=$1 bin=build-fuzz/fuzz/fuzz_$1 st=0
+  local h=$1 bin=build-sanitize/fuzz/fuzz_$1 st=0
   if [ -d "fuzz/regressions/$h" ] && [ -n "$(ls -A "fuzz/regressions/$h")" ]; then
     "$bin" -runs=0 "fuzz/regressions/$h"/* > "build-fuzz/$h.regressions.log" 2>&1 \
       || { echo "fuzz: $h: a regression fixture fails again"; tail -30 "build-fuzz/$h.regressions.log"; st=1; }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages plantsim builds with, only those that are missing; with
 # `test`, also what the tests need (a single-node Slurm cluster, clang's libFuzzer, Chromium for
-# the browser test of the reports).
+# the browser test of the reports, pytest and matplotlib for the Python module's tests).
 # Safe to run again: it does nothing when everything is present.
 set -euo pipefail
 
@@ -11,9 +11,10 @@ packages=(
   libgtest-dev libgmock-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libfreetype-dev fonts-dejavu-core libglpk-dev libcgal-dev
+  python3 python3-dev pybind11-dev python3-numpy
 )
 if [ "${1:-}" = test ]; then
-  packages+=(slurm-wlm munge clang libclang-rt-14-dev chromium)
+  packages+=(slurm-wlm munge clang libclang-rt-14-dev chromium python3-pytest python3-matplotlib)
 fi
 
 missing=()

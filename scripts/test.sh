@@ -2,7 +2,7 @@
 # Every test: installs what is missing, builds the normal tree and an ASan + UBSan tree, runs
 # the whole GoogleTest suite (and, in the normal tree, the single-node Slurm cluster test and the
 # headless Chromium test of the reports) through ctest in both, then fuzzes each input loader for
-# 60 s, two at a time.
+# 60 s, two at a time, from the sanitizer tree.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -11,10 +11,11 @@ root=$PWD
 (cd build && ctest --output-on-failure --parallel "$(nproc)")
 # The sanitizer tree is built with clang: three times faster to compile under ASan + UBSan than
 # g++ here (one app file: 23 s against 75 s at -O2 -g), so the whole test command fits its time.
-CC=clang CXX=clang++ ./scripts/build.sh build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPLANTSIM_SANITIZE=ON
-# The docking suites run at a tenth of their size there (tests/test_docking_suite.cpp): enough to
+# The same tree holds the fuzzers (scripts/sanitize_tree.sh).
+./scripts/sanitize_tree.sh
+# The docking suites run at a twentieth of their size there (at least 10 episodes each) (tests/test_docking_suite.cpp): enough to
 # exercise every path under the sanitizers; the statistics are the Release tree's.
-(cd build-sanitize && PLANTSIM_SUITE_SCALE=0.1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+(cd build-sanitize && PLANTSIM_SUITE_SCALE=0.05 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS="suppressions=$root/tests/lsan.supp" \
    ctest --output-on-failure --parallel "$(nproc)")
 # libFuzzer on every loader of untrusted input, 60 s each under ASan + UBSan (scripts/fuzz.sh).

@@ -47,7 +47,8 @@ SensorParams sensor_params(const EpisodeConfig& c) {
 
 std::string_view to_string(TravelMode m) { return m == TravelMode::kPath ? "path" : "potential-field"; }
 
-EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner, const EpisodeConfig& config) {
+EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner, const EpisodeConfig& config,
+                          const EpisodeSteering& steering) {
   EpisodeResult result;
   result.planner = planner.name();
   result.travel = std::string(to_string(config.travel));
@@ -97,6 +98,10 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       config.travel == TravelMode::kPotentialField ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
       : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
                 : make_path_travel(map, planner.name(), settings, first_path);
+  if (steering) {
+    travel = steering.wrap(std::move(travel), map, first_path);
+    result.steered_by = steering.name;
+  }
   if (config.perception.mode == PerceptionMode::kSensors) travel = hold_still_first(std::move(travel), config.perception.gyro_calibration_s);
 
   PhysicsWorld physics(plant);

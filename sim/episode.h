@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "planner/planner.h"
 #include "robot/failure.h"
 #include "robot/perception.h"
+#include "robot/travel.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"  // the parameter structs of every sensor
 #include "sim/wheel_drive.h"
@@ -107,6 +110,7 @@ struct EpisodeResult {
   double max_cross_track_m = 0;
   std::string planner;
   std::string travel = "path";   ///< to_string(TravelMode)
+  std::string steered_by;        ///< an outside controller's name (EpisodeSteering), or empty
   int local_minima = 0;          ///< potential-field travel: local minima met
   int wall_follows = 0;          ///< ... and wall-following episodes begun
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
@@ -154,11 +158,22 @@ struct EpisodeResult {
   std::vector<Event> events;
 };
 
+/// A controller from outside plantsim in the loop (the Python module's): `wrap` receives the
+/// travel plantsim built, the robot's map and the first plan, and returns the travel to drive with (one made by
+/// robot::steered_by). `name` is recorded in the result. Empty: plantsim's own controller.
+struct EpisodeSteering {
+  std::string name;
+  std::function<std::unique_ptr<robot::Travel>(std::unique_ptr<robot::Travel> builtin, const worlds::World& map,
+                                               const std::vector<Vec2>& first_plan)>
+      wrap;
+  explicit operator bool() const { return static_cast<bool>(wrap); }
+};
+
 /// `planner` plans the initial path; replans build fresh planners of the same name with the
 /// sensed obstacles added. The loop: sense (sensor readings from the physics), estimate
 /// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world with a moving target the episode is a pursuit: the plan
 /// goes to where the target will park, and success is reaching the target.
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
-                          const EpisodeConfig& config);
+                          const EpisodeConfig& config, const EpisodeSteering& steering = {});
 
 }  // namespace plantsim::sim

@@ -18,6 +18,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["undocked"] = r.undocked;
   j["caught"] = r.caught;
   j["travel"] = r.travel;
+  if (!r.steered_by.empty()) j["steered_by"] = r.steered_by;  // an outside controller drove the travel
   j["local_minima"] = r.local_minima;
   j["wall_follows"] = r.wall_follows;
   j["position_error_m"] = r.position_error_m;

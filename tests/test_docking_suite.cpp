@@ -45,16 +45,8 @@ std::vector<geom::Pose2> random_starts(const worlds::World& w, int count, std::u
   return out;
 }
 
-// The sanitizer tree runs the suites at a fraction of their size (PLANTSIM_SUITE_SCALE, set by
-// scripts/test.sh): it looks for memory errors, the Release tree for the success rates.
-int scaled(int count) {
-  const char* env = std::getenv("PLANTSIM_SUITE_SCALE");
-  const double scale = env ? std::atof(env) : 1.0;
-  return scale > 0 && scale < 1 ? std::max(10, static_cast<int>(count * scale)) : count;
-}
-
 SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& base, std::uint64_t seed) {
-  count = scaled(count);
+  count = test::scaled(count, 10);  // a tenth in the sanitizer tree (tests/test_paths.h)
   worlds::World w = worlds::load_world(test::shared_data(file));
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
   SuiteResult s;

@@ -42,10 +42,10 @@ std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   std::string s = text.str();
   const std::string from = "$data/", to = test::shared_data("");
   for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
-  if (const char* env = std::getenv("PLANTSIM_SUITE_SCALE"); env && std::atof(env) > 0 && std::atof(env) < 1) {
+  if (!test::full_size()) {
     const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
     if (list != std::string::npos && end != std::string::npos)
-      s.replace(list, end + 1 - list, "seeds: " + std::to_string(std::max(5, static_cast<int>(150 * std::atof(env)))));
+      s.replace(list, end + 1 - list, "seeds: " + std::to_string(test::scaled(150, 5)));
   }
   const fs::path p = dir / fs::path(rel).filename();
   std::ofstream(p) << s;

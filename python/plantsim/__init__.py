@@ -1,0 +1,70 @@
+"""plantsim from Python: load worlds, plan, run episodes (with your own controller in the
+loop) and batches, and import Nav2 parameters. Built into build/python by the README's set-up;
+
+    PYTHONPATH=build/python /usr/bin/python3 -c "import plantsim"
+
+Everything here runs the same C++ as the command line: the same loaders (and error messages,
+raised as plantsim.InputError, a ValueError), the same episode, the same batch records.
+A controller you pass to run() or batch() sees only the robot's perception (plantsim.Observation),
+never the simulator's truth. docs/python.md has the whole guide.
+"""
+import csv
+import io
+import json
+import os
+import tempfile
+
+from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, load_world, nav2_import, plan,
+                        planners, run)
+from ._plantsim import _batch
+
+__all__ = ["PHASES", "InputError", "Observation", "Plan", "Run", "World", "batch", "load_world", "nav2_import",
+           "plan", "planners", "run"]
+
+
+def _number(text):
+    for kind in (int, float):
+        try:
+            return kind(text)
+        except ValueError:
+            pass
+    return text
+
+
+def _absolute_worlds(scenario):
+    """A scenario dict's relative world paths made absolute from the working folder."""
+    scenario = dict(scenario)
+    worlds = scenario.get("worlds")
+    if isinstance(worlds, list):
+        scenario["worlds"] = [os.path.abspath(w) if isinstance(w, str) and not w.startswith("$data/") else w
+                              for w in worlds]
+    return scenario
+
+
+def batch(scenario, out=None, *, controller=None, docking=None, controller_name="", threads=0, figures=True,
+          fresh=False, progress=False):
+    """Runs a scenario as `plantsim batch SCENARIO --out OUT` does; returns its summary.
+
+    scenario: a scenario file's path, or a dict with the same keys (docs/batch.md); a dict's
+    relative world paths are taken from the working folder.
+    out: the output folder (episodes.jsonl, summary.csv, report.html); None: a temporary folder,
+    removed afterwards. An existing folder of the same scenario is resumed unless fresh=True.
+    controller, docking, controller_name: as for run(); with a controller every episode is steered
+    by it, on one thread, and its name joins each controller's name in the episode ids.
+    threads: 0 for one per core. figures: draw the report's charts.
+    Returns a dict: "rows" (one dict per configuration, the columns of summary.csv), "episodes",
+    "ran", "skipped", "succeeded", "collisions", "fingerprint", "out".
+    """
+    with tempfile.TemporaryDirectory(prefix="plantsim_batch_") as scratch:
+        if isinstance(scenario, dict):
+            path = os.path.join(scratch, "scenario.yaml")
+            with open(path, "w", encoding="utf-8") as f:
+                json.dump(_absolute_worlds(scenario), f)  # JSON is YAML
+        else:
+            path = os.fspath(scenario)
+        folder = os.fspath(out) if out is not None else os.path.join(scratch, "out")
+        result = _batch(path, folder, controller, docking, controller_name, threads, figures, fresh, progress)
+        rows = [{k: _number(v) for k, v in row.items()} for row in csv.DictReader(io.StringIO(result.pop("summary_csv")))]
+        result["rows"] = rows
+        result["out"] = folder if out is not None else None
+        return result

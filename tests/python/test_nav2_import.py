@@ -1,0 +1,59 @@
+"""Nav2 parameter files as plantsim configs: the documented examples written as fixtures."""
+import json
+import subprocess
+
+import pytest
+
+import plantsim
+
+
+def test_regulated_pure_pursuit_readme(source):
+    im = plantsim.nav2_import(str(source / "tests/fixtures/nav2/rpp_readme.yaml"))
+    t = im["config"]["tracking"]
+    assert t["max_linear_speed_mps"] == 0.5
+    assert t["lookahead_min_m"] == t["lookahead_max_m"] == 0.6  # use_velocity_scaled_lookahead_dist: false
+    assert t["rotate_in_place_threshold_rad"] == 0.785 and t["regulated_min_radius_m"] == 0.9
+    assert im["config"]["step"]["control_period_steps"] == 3  # 20 Hz of 60 Hz physics
+    assert im["config"]["traction"]["max_angular_accel_radps2"] == 3.2
+    why = {p["nav2"].split(".")[-1]: p["note"] for p in im["not_mapped"]}
+    assert "costmap" in why["use_cost_regulated_linear_velocity_scaling"]
+    assert "allow_reversing" in why and "transform_tolerance" in why
+    assert not im["plugins_not_implemented"]
+
+
+def test_an_mppi_controller_is_named_not_failed(source):
+    im = plantsim.nav2_import(str(source / "tests/fixtures/nav2/nav2_bringup_mppi.yaml"))
+    assert im["plugins_not_implemented"] == ["FollowPath: nav2_mppi_controller::MPPIController"]
+    assert any(p["nav2"].endswith("FollowPath.vx_max") and "MPPIController" in p["note"] for p in im["not_mapped"])
+    fields = {p["nav2"]: p for p in im["world_fields"]}
+    assert fields["local_costmap.robot_radius"]["plantsim"] == "world file: robot.radius_m"
+    assert "inflation_radius" in " ".join(fields)
+
+
+def test_opennav_docking(source):
+    im = plantsim.nav2_import(str(source / "tests/fixtures/nav2/opennav_docking.yaml"))
+    c = im["config"]
+    assert c["docking"]["approach_speed_mps"] == 0.15 and c["docking"]["max_retries"] == 3
+    assert c["tolerance"]["position_m"] == 0.05 and c["detection"]["enabled"] is True
+    assert any(p["plantsim"] == "world file: charger.staging_distance_m" for p in im["world_fields"])
+
+
+def test_the_imported_config_drives_and_the_command_writes_it(source, binary, tmp_path):
+    out = tmp_path / "rpp.json"
+    cli = subprocess.run([binary, "nav2-import", str(source / "tests/fixtures/nav2/rpp_readme.yaml"), "--out", str(out)],
+                         capture_output=True, text=True)
+    assert cli.returncode == 0 and "mapped (13)" in cli.stderr and "not mapped" in cli.stderr
+    config = json.loads(out.read_text())
+    assert config == plantsim.nav2_import(str(source / "tests/fixtures/nav2/rpp_readme.yaml"))["config"]
+    r = plantsim.run(source / "worlds/examples/corridor_crossing.json", config=str(out))
+    assert r.docked, r.summary["failure"]
+
+
+def test_not_a_nav2_file(tmp_path, binary):
+    f = tmp_path / "x.yaml"
+    f.write_text("just: [a, list]\n")
+    with pytest.raises(plantsim.InputError, match="no controller_server"):
+        plantsim.nav2_import(str(f))
+    f.write_text("controller_server:\n  ros__parameters:\n    FollowPath:\n      plugin: nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController\n      desired_linear_vel: fast\n")
+    cli = subprocess.run([binary, "nav2-import", str(f)], capture_output=True, text=True)
+    assert cli.returncode == 2 and "desired_linear_vel" in cli.stderr
