@@ -40,6 +40,20 @@ struct GateOptions {
     cmd->add_option("--junit", junit, "Also write a JUnit XML report, one test case per configuration");
   }
 
+  // Before any episode runs: a report that could not be written would waste the batch. A
+  // report inside the output folder (made by the batch) is one of the folder's own files.
+  std::vector<std::string> check_outputs(const std::string& out_dir) const {
+    if (junit.empty()) return {};
+    namespace fs = std::filesystem;
+    const fs::path report = fs::path(junit).lexically_normal();
+    if (fs::path(report).remove_filename().lexically_normal() == (fs::path(out_dir) / "").lexically_normal()) {
+      if (fs::exists(fs::symlink_status(junit))) util::check_output_file(junit, "--junit");
+      return {report.filename().string()};
+    }
+    util::check_output_file(junit, "--junit");
+    return {};
+  }
+
   // Judges the records; prints failures; returns the exit code.
   batch::GateOverride as_override() const {
     batch::GateOverride o;
@@ -99,6 +113,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
     batch::RunOptions o;
     std::tie(o.shard_index, o.shard_count) = parse_shard(opt->shard);
     o.out_dir = opt->out.empty() ? "results/batch_" + std::filesystem::path(opt->scenario).stem().string() : opt->out;
+    o.own_files = opt->gate.check_outputs(o.out_dir);
     o.threads = opt->threads;
     o.progress = !opt->quiet;
     o.figures = !opt->no_figures;
@@ -134,6 +149,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
   opt->gate.add_to(cmd);
   return [opt]() {
     batch::MergeOptions m;
+    m.own_files = opt->gate.check_outputs(opt->out);
     m.allow_partial = opt->allow_partial;
     m.gate = opt->gate.as_override();
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);

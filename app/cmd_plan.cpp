@@ -12,6 +12,7 @@
 #include "planner/grid/grid_astar.h"
 #include "planner/mesh/interval_planner.h"
 #include "worlds/grid_map.h"
+#include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::app {
@@ -26,6 +27,13 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
                    std::size_t search_budget_bytes) {
   const worlds::GridMap map = worlds::load_movingai_map(map_path);
   const auto scenarios = worlds::load_movingai_scenarios(scen_path);
+  // As `plantsim run --scen`: queries made for another map are refused, not answered with -1.
+  for (std::size_t i = 0; i < scenarios.size(); ++i)
+    if (scenarios[i].map_width != map.width || scenarios[i].map_height != map.height)
+      throw worlds::WorldError(scen_path, "query " + std::to_string(i),
+                               "a query for a " + std::to_string(scenarios[i].map_width) + " x " +
+                                   std::to_string(scenarios[i].map_height) + " map, but " + map_path + " is " +
+                                   std::to_string(map.width) + " x " + std::to_string(map.height));
   std::unique_ptr<planner::Planner> vg;
   if (planner_name != "grid") {
     planner::PlannerInput in;

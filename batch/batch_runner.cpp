@@ -4,6 +4,7 @@
 #include "geometry/predicates.h"
 
 #include <nlohmann/json.hpp>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -31,6 +32,7 @@
 #include "sim/episode_json.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
+#include "batch/episode_records.h"
 #include "util/fingerprint.h"
 #include "util/folder_lock.h"
 #include "util/input_file.h"
@@ -43,44 +45,6 @@ namespace plantsim::batch {
 namespace {
 
 using nlohmann::json;
-
-// A record the batch can use: a JSON object with a string id and the scenario fingerprint.
-bool usable_record(const std::string& line) {
-  const json j = json::parse(line, nullptr, false);
-  return j.is_object() && j.contains("id") && j["id"].is_string() && j.contains("scenario") && j["scenario"].is_string() &&
-         j.contains("index") && j["index"].is_number_integer() && j.contains("world") && j["world"].is_string() &&
-         j.contains("docked") && j["docked"].is_boolean();
-}
-
-struct JsonlContents {
-  std::vector<std::string> records;  // usable lines
-  std::int64_t bad_lines = 0;        // malformed or foreign-looking complete lines
-  bool torn_tail = false;            // a last line without its newline (a killed run)
-};
-
-// The lines of a JSONL file, sorted into usable records and the rest.
-JsonlContents read_jsonl(const std::string& path) {
-  JsonlContents c;
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return c;
-  std::string text;
-  try {
-    text = util::read_input_file(path, 1ull << 34);
-  } catch (const util::InputFileError& e) {
-    throw std::invalid_argument(path + ": " + e.what());
-  }
-  std::size_t start = 0;
-  for (; start < text.size();) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) break;
-    std::string line = text.substr(start, end - start);
-    if (usable_record(line)) c.records.push_back(std::move(line));
-    else if (line.find_first_not_of(" \t\r") != std::string::npos) ++c.bad_lines;
-    start = end + 1;
-  }
-  c.torn_tail = start < text.size();
-  return c;
-}
 
 // A free start for this world and seed: uniform over the floor, outside inflated obstacles,
 // with a path to the staging pose, not right at the charger.
@@ -157,7 +121,14 @@ ScenarioWorlds load_scenario_worlds(const BatchSpec& spec) {
       if (s.names[k] == s.names[i])
         throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
                                  "a second world named '" + s.names[i] + "' (episode ids name the world; rename one)");
+    if (s.names[i].find('|') != std::string::npos)
+      throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
+                               "the world's name '" + s.names[i] + "' holds '|', which separates the parts of an episode id");
   }
+  for (std::size_t i = 0; i < spec.gate.rules.size(); ++i)
+    if (const std::string& w = spec.gate.rules[i].world; !w.empty() && std::find(s.names.begin(), s.names.end(), w) == s.names.end())
+      throw worlds::WorldError(spec.source, "gate.configurations[" + std::to_string(i) + "].world",
+                               "'" + w + "' is not one of the scenario's worlds: the rule would judge nothing");
   return s;
 }
 
@@ -489,7 +460,7 @@ std::string sweep_csv(const std::vector<std::string>& lines) {
   return out;
 }
 
-std::vector<std::string> read_episode_records(const std::string& dir) { return read_jsonl(dir + "/episodes.jsonl").records; }
+std::vector<std::string> read_episode_records(const std::string& dir) { return read_records(dir + "/episodes.jsonl"); }
 
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   // Everything that can be wrong is found before the first episode.
@@ -517,6 +488,16 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
   const std::vector<Episode> all = all_episodes(spec, names);
   const ScenarioIdentity scenario = scenario_identity(spec, contents, names, static_cast<std::int64_t>(all.size()));
+  // The work is bounded before it starts: the physics steps this shard may ask for.
+  double steps = 0;
+  for (const Episode& e : shard(all, o.shard_index, o.shard_count)) {
+    const sim::EpisodeConfig& c = configs[e.controller * spec.faults.size() + e.fault];
+    steps += std::ceil(c.timeout_s / c.step.dt_s);
+  }
+  if (steps > kMaxBatchSteps)
+    throw std::invalid_argument(scenario_path + ": this run asks for " + std::to_string(static_cast<long long>(steps)) +
+                                " physics steps (timeout_s / step.dt_s summed over its episodes), more than the limit of 1e10 "
+                                "(docs/batch.md): fewer episodes, shorter timeouts, or shards (--shard i/n)");
   if (o.check_only) {
     BatchOutcome checked;
     checked.episodes = static_cast<std::int64_t>(shard(all, o.shard_index, o.shard_count).size());
@@ -525,45 +506,64 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
     return checked;
   }
 
+  check_batch_output_folder(o.out_dir, o.own_files);
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   if (ec || !std::filesystem::is_directory(o.out_dir))
     throw std::invalid_argument("output folder '" + o.out_dir + "' cannot be created" + (ec ? ": " + ec.message() : ""));
   const util::FolderLock lock(o.out_dir);  // one batch per folder, or both run every episode
+  check_batch_output_folder(o.out_dir, o.own_files);  // again, now that no other plantsim writes here
   const std::string jsonl = o.out_dir + "/episodes.jsonl";
   if (o.fresh) std::filesystem::remove(jsonl, ec);
-  JsonlContents existing = read_jsonl(jsonl);
-  for (const std::string& line : existing.records) {
-    const std::string theirs = json::parse(line)["scenario"].get<std::string>();
+  // Resume keeps the records of this scenario's episodes, once each; the rest run again. Read
+  // as a stream: memory grows with the records kept, not with the file.
+  // By id: an episode's index depends on the order of the scenario's lists, its id does not.
+  std::set<std::string_view> ids;
+  for (const Episode& e : all) ids.insert(e.id);
+  std::vector<std::string> existing;
+  std::set<std::string> done;
+  std::int64_t foreign = 0;
+  const JsonlScan scan = scan_jsonl(jsonl, [&](std::string&& line) {
+    const json j = json::parse(line);
+    const std::string theirs = j["scenario"].get<std::string>();
     if (theirs != scenario.fingerprint)
       throw std::invalid_argument("output folder '" + o.out_dir + "' holds episodes of another scenario (fingerprint " +
                                   theirs + ", this one " + scenario.fingerprint +
                                   "): choose another --out, or --fresh to discard them");
-  }
+    const std::string id = j["id"].get<std::string>();
+    if (!ids.count(id) || !done.insert(id).second) {
+      ++foreign;  // not one of this scenario's episodes, or a second copy
+      return;
+    }
+    existing.push_back(std::move(line));
+  });
   BatchOutcome outcome;
   outcome.gate = spec.gate;
   outcome.scenario_fingerprint = scenario.fingerprint;
-  if (existing.bad_lines > 0 || existing.torn_tail) {
+  if (scan.bad_lines > 0 || scan.torn_tail || foreign > 0) {
     // Resume keeps what it can use and reruns the rest; the file is rewritten without them.
-    outcome.malformed_lines_cut = existing.bad_lines + existing.torn_tail;
+    outcome.malformed_lines_cut = scan.bad_lines + scan.torn_tail + foreign;
     std::string kept;
-    for (const std::string& line : existing.records) kept += line + "\n";
+    for (const std::string& line : existing) kept += line + "\n";
     util::write_file_atomically(jsonl, kept);
-    std::fprintf(stderr, "batch: warning: cut %lld malformed or unfinished line(s) from %s; their episodes run again\n",
+    std::fprintf(stderr, "batch: warning: cut %lld malformed, unfinished, repeated or foreign line(s) from %s; their episodes run again\n",
                  static_cast<long long>(outcome.malformed_lines_cut), jsonl.c_str());
   }
 
   const std::vector<Episode> mine = shard(all, o.shard_index, o.shard_count);
-  std::set<std::string> done;
-  for (const std::string& line : existing.records) done.insert(json::parse(line)["id"].get<std::string>());
   std::vector<Episode> todo;
   for (const Episode& e : mine)
     if (!done.count(e.id)) todo.push_back(e);
 
   outcome.episodes = static_cast<std::int64_t>(mine.size());
   outcome.skipped = outcome.episodes - static_cast<std::int64_t>(todo.size());
-  std::FILE* out = std::fopen(jsonl.c_str(), "ab");
-  if (!out) throw std::invalid_argument(util::system_error_text("cannot append to " + jsonl));
+  // Appended to, never through a link (the folder was checked; O_NOFOLLOW closes the race).
+  const int out_fd = ::open(jsonl.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  std::FILE* out = out_fd >= 0 ? ::fdopen(out_fd, "ab") : nullptr;
+  if (!out) {
+    if (out_fd >= 0) ::close(out_fd);
+    throw std::invalid_argument(util::system_error_text("cannot append to " + jsonl));
+  }
   std::mutex write_mutex;
   std::atomic<std::size_t> next{0};
   Progress progress(static_cast<std::int64_t>(todo.size()), o.progress);
@@ -604,7 +604,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   if (failure) std::rethrow_exception(failure);
   if (!synced) throw std::runtime_error(sync_error);
 
-  const std::vector<std::string> records = read_jsonl(jsonl).records;
+  const std::vector<std::string> records = read_records(jsonl);
   const std::vector<FailedEpisode> failures =
       o.figures ? failure_gallery(records, spec, loaded, configs, kGalleryEpisodes) : std::vector<FailedEpisode>{};
   write_batch_report(records, o.out_dir, "plantsim batch: " + spec.name,
@@ -616,17 +616,14 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
 }
 
 MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir, const MergeOptions& options) {
+  check_batch_output_folder(out_dir, options.own_files);  // before any work: never a user's folder, never through a link
   std::map<std::string, std::pair<std::int64_t, std::string>> by_id;  // id -> (index, line)
   std::string fingerprint, first_dir, scenario_file;
   std::int64_t expected = 0;
   for (const std::string& d : dirs) {
     const std::string path = d + "/episodes.jsonl";
-    if (!std::filesystem::exists(path)) throw std::invalid_argument(d + ": no episodes.jsonl to merge");
-    const JsonlContents c = read_jsonl(path);
-    if (c.bad_lines > 0)
-      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out\n", path.c_str(),
-                   static_cast<long long>(c.bad_lines));
-    for (const std::string& line : c.records) {
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path))) throw std::invalid_argument(d + ": no episodes.jsonl to merge");
+    const JsonlScan scan = scan_jsonl(path, [&](std::string&& line) {
       const json j = json::parse(line);
       const std::string theirs = j["scenario"].get<std::string>();
       if (fingerprint.empty()) {
@@ -637,17 +634,71 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
         throw std::invalid_argument("cannot merge episodes of different scenarios: " + first_dir + " holds scenario " +
                                     fingerprint + ", " + d + " holds " + theirs);
       }
-      by_id.try_emplace(j["id"].get<std::string>(), j["index"].get<std::int64_t>(), line);
-    }
+      const std::string id = j["id"].get<std::string>();
+      const std::int64_t index = j["index"].get<std::int64_t>();
+      if (index < 0 || index >= expected)
+        throw std::invalid_argument("merge: " + path + " holds episode '" + id + "' with index " + std::to_string(index) +
+                                    ", outside the scenario's " + std::to_string(expected) + " episodes");
+      const auto [at, fresh] = by_id.try_emplace(id, index, line);
+      // The same episode from a run whose lists were ordered otherwise differs in its index and
+      // scenario file only; anything else is a different result.
+      auto result_of = [](const std::string& record) {
+        json r = json::parse(record);
+        r.erase("index"), r.erase("scenario_file");
+        return r;
+      };
+      if (!fresh && at->second.second != line && result_of(at->second.second) != result_of(line))
+        throw std::invalid_argument("merge: episode '" + id + "' appears twice with different results (" + path +
+                                    " and an earlier folder); shards of one batch never disagree: merge each run's shards apart");
+    });
+    if (scan.bad_lines > 0)
+      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out\n", path.c_str(),
+                   static_cast<long long>(scan.bad_lines));
   }
   if (by_id.empty()) throw std::invalid_argument("nothing to merge: the folders hold no episodes");
   const auto merged = static_cast<std::int64_t>(by_id.size());
-  if (merged < expected && !options.allow_partial)
+  // The figures need the worlds, and the ids are checked against the scenario's own: both from
+  // the scenario file when it is still there and unchanged.
+  std::vector<worlds::World> worlds;
+  std::vector<std::string> planners;
+  MergeOutcome outcome;
+  std::vector<Episode> scenario_episodes;
+  std::error_code ec;
+  if (!scenario_file.empty() && std::filesystem::exists(scenario_file, ec)) {
+    try {
+      const BatchSpec spec = load_batch_spec(scenario_file);
+      ScenarioWorlds loaded = load_scenario_worlds(spec);
+      if (scenario_identity(spec, loaded.contents, loaded.names, expected).fingerprint == fingerprint) {
+        worlds = std::move(loaded.worlds);
+        planners = spec.planners;
+        outcome.gate = spec.gate;
+        scenario_episodes = all_episodes(spec, loaded.names);
+      }
+    } catch (const std::exception&) {
+      worlds.clear();
+    }
+  }
+  // Ids are checked against the scenario's own when its file is there (else only their count).
+  std::set<std::string_view> scenario_ids;
+  for (const Episode& e : scenario_episodes) scenario_ids.insert(e.id);
+  if (!scenario_ids.empty())
+    for (const auto& [id, entry] : by_id)
+      if (!scenario_ids.count(id))
+        throw std::invalid_argument("merge: episode '" + id + "' is not one of the scenario's episodes (" + scenario_file +
+                                    "): a record of another run");
+  if (worlds.empty())
+    std::fprintf(stderr, "merge: note: the scenario file %s is gone or changed; the report has no plan figures\n",
+                 scenario_file.c_str());
+  if (merged < expected && !options.allow_partial) {
+    std::string missing;
+    int named = 0;
+    for (const Episode& e : scenario_episodes)
+      if (named < 5 && !by_id.count(e.id)) missing += (named++ ? ", " : " (") + e.id;
+    if (named > 0) missing += expected - merged > named ? ", ...)" : ")";
     throw IncompleteBatch("merge: " + std::to_string(expected - merged) + " of the scenario's " + std::to_string(expected) +
-                          " episodes are missing (a shard not run or not finished?); rerun them, or pass --allow-partial");
-  if (merged > expected)
-    throw std::invalid_argument("merge: " + std::to_string(merged) + " distinct episodes but the scenario has " +
-                                std::to_string(expected) + " (records of another plantsim version?)");
+                          " episodes are missing" + missing +
+                          " (a shard not run or not finished?); rerun them, or pass --allow-partial");
+  }
   std::vector<std::pair<std::int64_t, std::string>> ordered;
   for (auto& [id, entry] : by_id) ordered.push_back(entry);
   std::sort(ordered.begin(), ordered.end());
@@ -657,31 +708,8 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
     text += line + "\n";
     lines.push_back(line);
   }
-  MergeOutcome outcome;
   outcome.episodes = merged;
   outcome.expected = expected;
-  // The figures need the worlds: from the scenario file when it is still there and unchanged.
-  std::vector<worlds::World> worlds;
-  std::vector<std::string> planners;
-  std::error_code ec;
-  if (!scenario_file.empty() && std::filesystem::exists(scenario_file, ec)) {
-    try {
-      const BatchSpec spec = load_batch_spec(scenario_file);
-      ScenarioWorlds loaded = load_scenario_worlds(spec);
-      worlds = std::move(loaded.worlds);
-      if (scenario_identity(spec, loaded.contents, loaded.names, expected).fingerprint == fingerprint) {
-        planners = spec.planners;
-        outcome.gate = spec.gate;
-      } else {
-        worlds.clear();
-      }
-    } catch (const std::exception&) {
-      worlds.clear();
-    }
-  }
-  if (worlds.empty())
-    std::fprintf(stderr, "merge: note: the scenario file %s is gone or changed; the report has no plan figures\n",
-                 scenario_file.c_str());
   std::filesystem::create_directories(out_dir, ec);
   if (ec || !std::filesystem::is_directory(out_dir)) throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
   const util::FolderLock lock(out_dir);

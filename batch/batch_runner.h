@@ -26,6 +26,8 @@ struct RunOptions {
   /// An outside controller for every episode (the Python module's); its name joins each
   /// controller's, so the ids and the scenario's fingerprint tell its episodes apart.
   sim::EpisodeSteering steering;
+  /// Further files of this run in the output folder (a --junit report written there).
+  std::vector<std::string> own_files;
 };
 
 struct BatchOutcome {
@@ -37,6 +39,7 @@ struct BatchOutcome {
 
 struct MergeOptions {
   bool allow_partial = false;  ///< merge even when episodes of the scenario are missing
+  std::vector<std::string> own_files;  ///< further files of this merge in its output folder
   GateOverride gate;
 };
 

@@ -170,6 +170,8 @@ std::string checked_name(const YAML::Node& key, const std::string& path, const s
   if (name.empty() || name.size() > 100 || !worlds::valid_utf8(name) ||
       std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
     throw WorldError(path, field, "names must be 1 to 100 characters of printable UTF-8");
+  if (name.find('|') != std::string::npos)
+    throw WorldError(path, field + "." + name, "a name may not hold '|': it separates the parts of an episode id");
   return name;
 }
 
@@ -288,8 +290,11 @@ BatchSpec read_batch_spec(const std::string& path) {
   for (std::size_t i = 0; i < s.planners.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (s.planners[i] == s.planners[j]) throw WorldError(path, "planners", "'" + s.planners[i] + "' is listed twice");
+  if (s.planners.empty()) throw WorldError(path, "planners", "an empty list: no episode would run (leave the key out for vg)");
   if (doc["controllers"]) {
     if (!doc["controllers"].IsMap()) throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
+    if (doc["controllers"].size() == 0)
+      throw WorldError(path, "controllers", "empty: no episode would run (leave the key out for the default settings)");
     for (const auto& kv : doc["controllers"]) {
       const std::string name = checked_name(kv.first, path, "controllers");
       s.controllers.push_back({name, overrides_json(kv.second, path, "controllers." + name)});
@@ -300,6 +305,8 @@ BatchSpec read_batch_spec(const std::string& path) {
   std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
   if (doc["faults"]) {
     if (!doc["faults"].IsMap()) throw WorldError(path, "faults", "expected a mapping name: {overrides}");
+    if (doc["faults"].size() == 0)
+      throw WorldError(path, "faults", "empty: no episode would run (leave the key out for no fault)");
     for (const auto& kv : doc["faults"]) bodies.emplace_back(checked_name(kv.first, path, "faults"), YAML::Clone(kv.second));
   }
   if (doc["sweep"]) {
@@ -385,6 +392,21 @@ BatchSpec read_batch_spec(const std::string& path) {
     s.random_starts = v == "random";
   }
   s.gate = read_gate(doc["gate"], path);
+  // A gate rule that matches no configuration judges nothing: a typo, refused (worlds are named
+  // by their files' contents: checked once they are loaded, batch_runner.cpp).
+  for (std::size_t i = 0; i < s.gate.rules.size(); ++i) {
+    const GateRule& r = s.gate.rules[i];
+    const std::string field = "gate.configurations[" + std::to_string(i) + "]";
+    auto listed = [](const std::string& name, const auto& items, auto name_of) {
+      return name.empty() || std::any_of(items.begin(), items.end(), [&](const auto& x) { return name_of(x) == name; });
+    };
+    if (!listed(r.planner, s.planners, [](const std::string& p) { return p; }))
+      throw WorldError(path, field + ".planner", "'" + r.planner + "' is not one of the scenario's planners: the rule would judge nothing");
+    if (!listed(r.controller, s.controllers, [](const NamedConfig& c) { return c.name; }))
+      throw WorldError(path, field + ".controller", "'" + r.controller + "' is not one of the scenario's controllers: the rule would judge nothing");
+    if (!listed(r.fault, s.faults, [](const FaultSetting& f) { return f.name; }))
+      throw WorldError(path, field + ".fault", "'" + r.fault + "' is not one of the scenario's faults: the rule would judge nothing");
+  }
   // Episodes are counted before any is made: a cross product of 1e9 is a typo, not a batch.
   const double total = static_cast<double>(s.world_files.size()) * s.planners.size() * s.controllers.size() *
                        s.faults.size() * s.seeds.size();

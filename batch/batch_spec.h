@@ -61,8 +61,12 @@ struct GateOverride {
   }
 };
 
-/// Episodes a scenario may make (worlds x planners x controllers x faults x seeds).
-inline constexpr std::int64_t kMaxEpisodes = 10000000;
+/// Episodes a scenario may make (worlds x planners x controllers x faults x seeds): their list
+/// and ids are held in memory (about 200 MB at the limit).
+inline constexpr std::int64_t kMaxEpisodes = 1000000;
+/// Physics steps one batch run (a shard) may ask for, the sum over its episodes of timeout_s /
+/// step.dt_s: 1e10 is about two days of this 2-core machine; split larger batches into shards.
+inline constexpr double kMaxBatchSteps = 1e10;
 
 struct BatchSpec {
   std::string name;

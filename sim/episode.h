@@ -48,6 +48,10 @@ struct KidnapFault {
   bool enabled() const { return at_s >= 0; }
 };
 
+/// Physics steps one episode may ask for (timeout_s / step.dt_s): 5,000,000 is 23 hours of
+/// simulated time at 60 Hz, about two minutes of computing at this machine's 50,000 steps/s.
+inline constexpr std::int64_t kMaxEpisodeSteps = 5000000;
+
 struct EpisodeConfig {
   StepSettings step;
   DriveParams drive;

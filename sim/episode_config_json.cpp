@@ -216,7 +216,7 @@ const std::vector<IntField>& int_fields() {
       {"step", "velocity_iterations", [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
       {"step", "position_iterations", [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
       {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
-      {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }},
+      {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }, 1, 1000},
       {"potential_field", "max_wall_follows", [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
       {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1, 10000},
       {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1, 10000},
@@ -338,6 +338,12 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
     throw worlds::WorldError(source, "tracking.lookahead_min_m", "must not exceed lookahead_max_m");
+  // Each value in range can still ask for too much together: work is bounded, not only input.
+  if (const double steps = std::ceil(c.timeout_s / c.step.dt_s); steps > static_cast<double>(kMaxEpisodeSteps))
+    throw worlds::WorldError(source, "timeout_s",
+                             "timeout_s / step.dt_s asks for " + std::to_string(static_cast<long long>(steps)) +
+                                 " physics steps, more than the limit of " + std::to_string(kMaxEpisodeSteps) +
+                                 " (docs/config.md): shorten the timeout or lengthen the step");
   return c;
 }
 

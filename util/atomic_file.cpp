@@ -2,10 +2,12 @@
 #include "util/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -35,10 +37,48 @@ void sync_path(const std::string& path) {
   if (!ok) throw std::runtime_error(system_error_text("cannot sync " + path));
 }
 
+namespace {
+
+/// What stands at `path` when it is not a regular file (empty when missing or regular).
+std::string not_a_regular_file(const std::string& path) {
+  struct stat st{};
+  if (::lstat(path.c_str(), &st) != 0) return "";
+  if (S_ISREG(st.st_mode)) return "";
+  if (S_ISLNK(st.st_mode)) return "a symbolic link";
+  if (S_ISDIR(st.st_mode)) return "a folder";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "a device";
+  if (S_ISFIFO(st.st_mode)) return "a FIFO";
+  return "not a regular file";
+}
+
+/// A new temporary file beside `path`, created exclusively (never an existing file or link).
+std::pair<int, std::string> exclusive_temporary(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd >= 0) return {fd, tmp};
+    if (errno != EEXIST) throw std::runtime_error(system_error_text("cannot write " + path + " (creating " + tmp + ")"));
+  }
+  throw std::runtime_error("cannot write " + path + ": 100 temporary names beside it are taken");
+}
+
+}  // namespace
+
+void check_output_file(const std::string& path, const std::string& option) {
+  const std::string what = not_a_regular_file(path);
+  if (!what.empty()) throw std::invalid_argument(option + " " + path + " is " + what + "; plantsim writes only new or regular files");
+  const std::string folder = parent_or_dot(path);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) throw std::invalid_argument(option + " " + path + ": the folder " + folder + " does not exist");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw std::invalid_argument(system_error_text(option + " " + path + ": cannot write into " + folder));
+}
+
 void write_file_atomically(const std::string& path, std::string_view bytes) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(system_error_text("cannot write " + path + " (creating " + tmp + ")"));
+  if (const std::string what = not_a_regular_file(path); !what.empty())
+    throw std::invalid_argument("will not replace " + path + ": it is " + what + " (plantsim writes only new or regular files)");
+  const auto [fd, tmp] = exclusive_temporary(path);
   auto fail = [&](const std::string& step) {
     const std::string text = system_error_text("cannot write " + path + " (" + step + ")");
     ::close(fd);

@@ -9,8 +9,17 @@
 
 namespace plantsim::util {
 
-/// Throws std::runtime_error naming the path and the system's reason ("No space left on device").
+/// Writes through a temporary file made in the target's folder with O_EXCL | O_NOFOLLOW (a
+/// planted file or link of that name is never opened) and renamed over the target. The target
+/// must be missing or a regular file: a link, a device, a FIFO or a folder is refused with
+/// std::invalid_argument, never replaced or followed. Throws std::runtime_error naming the path
+/// and the system's reason ("No space left on device").
 void write_file_atomically(const std::string& path, std::string_view bytes);
+
+/// Checks, before any work, that write_file_atomically(path, ...) can succeed as far as can be
+/// known: the folder exists and is writable, the target is missing or a regular file.
+/// Throws std::invalid_argument naming `option` (e.g. "--junit") and the problem.
+void check_output_file(const std::string& path, const std::string& option);
 
 /// Flushes a file or folder to the disk; throws std::runtime_error naming it and the reason.
 void sync_path(const std::string& path);

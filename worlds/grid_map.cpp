@@ -90,6 +90,11 @@ std::vector<Rect> merge_blocked_cells(const GridMap& m, bool (*blocked)(char)) {
   std::vector<Rect> out;
   std::map<std::pair<int, int>, Open> open;  // run [x0, x1) -> rows so far
   auto close = [&](std::pair<int, int> run, int y0, int y_end) {
+    // The one obstacle limit of every world, checked as the rectangles are made: a 5 kB
+    // checkerboard image must not become two million obstacles before anyone counts them.
+    if (out.size() >= kMaxObstacles)
+      throw WorldError(m.source, "", "its blocked cells make more than " + std::to_string(kMaxObstacles) +
+                                         " rectangles, the limit for any world (docs/world_format.md)");
     // Rows y0 .. y_end-1 (grid, downward) become world y from height - y_end to height - y0.
     out.push_back({static_cast<double>(run.first), static_cast<double>(m.height - y_end),
                    static_cast<double>(run.second), static_cast<double>(m.height - y0)});

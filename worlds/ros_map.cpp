@@ -217,15 +217,20 @@ Pose2 farthest_start(const RosMap& map, const Regions& r, const World& w) {
   const int region = label_at(map, r, staging_pose(w).position());
   if (region <= 0) throw WorldError(map.grid.source, "start", "the charger's staging pose is not in free space; give --start");
   const GridMap& g = map.grid;
+  const Rect inner = w.floor.inflated(-w.planning_inflation_m());
   Vec2 best;
   double best_d = -1;
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       if (r.label[static_cast<std::size_t>(y) * g.width + x] != region) continue;
       const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5), map.origin.y + map.resolution_m * (g.height - y - 0.5)};
+      // The floor's edge is a wall too: a map drawn without border walls has free pixels there.
+      if (!geom::in_closed_rect(inner, c)) continue;
       const double d = geom::distance(c, w.charger.position());
       if (d > best_d) best_d = d, best = c;
     }
+  if (best_d < 0)
+    throw WorldError(map.grid.source, "start", "no start was given and no free pixel of the charger's region keeps the robot off the map's edge; give --start");
   const Vec2 to_charger = w.charger.position() - best;
   return {best.x, best.y, std::atan2(to_charger.y, to_charger.x)};
 }

@@ -7,7 +7,9 @@ namespace plantsim::worlds {
 
 inline constexpr double kMaxFloorSide_m = 10000.0;
 inline constexpr std::size_t kMaxObstacles = 200000;
-inline constexpr std::size_t kMaxWorldFileBytes = 256u * 1024u * 1024u;
+/// A world JSON file: 200,000 rectangles written out with indentation take about 16 MiB, so a
+/// larger file is refused before it is parsed (a 200 MB file once took 3 GB and 10 s to refuse).
+inline constexpr std::size_t kMaxWorldFileBytes = 32u * 1024u * 1024u;
 /// Metres per pixel of a ROS map.
 inline constexpr double kMinResolution_m = 0.001;
 inline constexpr double kMaxResolution_m = 10.0;

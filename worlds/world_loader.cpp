@@ -209,6 +209,9 @@ void read_map_mismatch(const json& doc, const FieldReader& in, World& w) {
     if (!o.is_array() || o.size() != 3) in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
     w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"), in.number(o[1], "charger_map_offset[1]"),
                             in.number(o[2], "charger_map_offset[2]")};
+    // As in scenarios (docs/batch.md): beyond this it is another charger, not an error of the map.
+    if (std::hypot(w.charger_map_offset.x, w.charger_map_offset.y) > 0.5 || std::fabs(w.charger_map_offset.yaw) > 0.5)
+      in.fail("charger_map_offset", "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
   }
 }
 

@@ -1,0 +1,220 @@
+// Hostile inputs, second round (issue 36), each as a user would meet it through the command
+// line: limits that bound the work (obstacles from any map, an episode's and a batch's steps,
+// file sizes), merges that refuse conflicts and foreign or missing episodes, names that cannot
+// make ids collide, gates over nothing, outputs checked before the work and never written
+// through links or over devices, FIFOs or a user's own files.
+#include <chrono>
+
+#include "cli_fixture.h"
+
+namespace plantsim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+
+TEST_F(Cli, ACheckerboardMapIsRefusedAtTheObstacleLimitWhileItIsRead) {
+  // 2000 x 2000 pixels at 1 m, alternating: two million one-pixel obstacles if nobody counts.
+  std::string pgm = "P5\n2000 2000\n255\n";
+  pgm.reserve(pgm.size() + 4000000);
+  for (int y = 0; y < 2000; ++y)
+    for (int x = 0; x < 2000; ++x) pgm.push_back((x + y) % 2 ? '\xfe' : '\0');
+  write("board.pgm", pgm);
+  write("board.yaml", "image: board.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const auto t0 = Clock::now();
+  const Outcome o = run("plan board.yaml");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("more than 200000 rectangles"), std::string::npos) << o.err;
+  EXPECT_LT(seconds_since(t0), 15.0);
+}
+
+TEST_F(Cli, AConfigAskingForTooManyStepsIsRefusedBeforeRunning) {
+  write("c.json", R"({"step": {"dt_s": 0.0001}, "timeout_s": 86400, "tracking": {"max_linear_speed_mps": 0.05}})");
+  const auto t0 = Clock::now();
+  const Outcome o = run("run " + kCorridor + " --config c.json --out out");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("timeout_s"), std::string::npos);
+  EXPECT_NE(o.err.find("physics steps"), std::string::npos);
+  EXPECT_LT(seconds_since(t0), 5.0);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  write("p.json", R"({"step": {"control_period_steps": 0}})");
+  EXPECT_EQ(run("run " + kCorridor + " --config p.json --out out").exit_code, 2);
+}
+
+TEST_F(Cli, AHugeWorldFileIsRefusedBeforeItIsParsed) {
+  std::string big = "{\"obstacles\": [";
+  while (big.size() < (33u << 20)) big += "[1.0, 1.0, 2.0, 2.0],";
+  big += "[1, 1, 2, 2]]}";
+  write("big.json", big);
+  const auto t0 = Clock::now();
+  const Outcome o = run("plan big.json");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("more than the"), std::string::npos) << o.err;
+  EXPECT_LT(seconds_since(t0), 3.0);
+}
+
+TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {
+  const std::string head = "worlds: [" + kCorridor + "]\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {head + "controllers: {}\nseeds: 1\ngate: {min_success: 1.0}\n", "controllers"},
+      {head + "planners: []\nseeds: 1\ngate: {min_success: 1.0}\n", "planners"},
+      {head + "faults: {}\nseeds: 1\n", "faults"},
+      {head + "controllers: {'a|b': {}}\nseeds: 1\n", "'|'"},
+      {head + "faults: {'x|1': {}}\nseeds: 1\n", "'|'"},
+      {head + "seeds: 1\ngate: {configurations: [{fault: wet, min_success: 0.9}]}\n", "judge nothing"},
+      {head + "seeds: 1\ngate: {configurations: [{world: nowhere, min_success: 0.9}]}\n", "judge nothing"},
+      {head + "planners: [vg, grid]\nseeds: 600000\n", "more than the limit of 1000000"},
+      {head + "controllers: {slow: {timeout_s: 86400, step: {dt_s: 0.001}}}\nseeds: 200\n", "physics steps"},
+  };
+  for (const auto& [text, message] : cases) {
+    write("s.yaml", text);
+    const auto t0 = Clock::now();
+    const Outcome o = run("batch s.yaml --check --quiet");
+    EXPECT_EQ(o.exit_code, 2) << text << o.err;
+    EXPECT_NE(o.err.find(message), std::string::npos) << text << "\n" << o.err;
+    EXPECT_LT(seconds_since(t0), 10.0) << text;
+  }
+}
+
+TEST_F(Cli, AMapsQueriesMustBeForThatMap) {
+  write("one.map", "type octile\nheight 1\nwidth 1\nmap\n.\n");
+  const Outcome o = run("plan --map one.map --scen " + test::shared_data("anyangle/arena.scen"));
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.err.find("49 x 49"), std::string::npos) << o.err;
+  EXPECT_TRUE(o.out.empty());
+}
+
+TEST_F(Cli, AMappedChargerFarFromTheRealOneIsAnotherCharger) {
+  write("w.json", world_json([](nlohmann::json& j) { j["charger_map_offset"] = {0.0, 0.0, 1000.0}; }));
+  const Outcome o = run("run w.json --out out");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("charger_map_offset"), std::string::npos) << o.err;
+}
+
+TEST_F(Cli, AMapWithoutBorderWallsGetsAStartInsideIt) {
+  // 40 x 30 free pixels with one block: nothing walls the edges.
+  std::string pgm = "P2\n40 30\n255\n";
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 0; x < 40; ++x) pgm += (x >= 18 && x < 22 && y >= 10 && y < 20) ? "0 " : "254 ";
+    pgm += "\n";
+  }
+  write("open.pgm", pgm);
+  write("open.yaml", "image: open.pgm\nresolution: 0.25\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const Outcome o = run("plan open.yaml");
+  EXPECT_EQ(o.err.find("crosses the floor boundary"), std::string::npos) << o.err;
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+}
+
+class ShardFolders : public Cli {
+ protected:
+  // A small finished batch in two shards, and its scenario.
+  void SetUp() override {
+    Cli::SetUp();
+    scenario_ = write("s.yaml", "name: two\nworlds: [" + kCorridor + "]\nseeds: 4\n");
+    ASSERT_EQ(run("batch s.yaml --shard 0/2 --out a --quiet --no-figures", 300).exit_code, 0);
+    ASSERT_EQ(run("batch s.yaml --shard 1/2 --out b --quiet --no-figures", 300).exit_code, 0);
+  }
+  std::vector<std::string> lines(const std::string& folder) {
+    std::ifstream in(dir_ / folder / "episodes.jsonl");
+    std::vector<std::string> out;
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  }
+  void put(const std::string& folder, const std::vector<std::string>& ls) {
+    std::ofstream out(dir_ / folder / "episodes.jsonl");
+    for (const auto& l : ls) out << l << "\n";
+  }
+  std::string scenario_;
+};
+
+TEST_F(ShardFolders, AMergeRefusesConflictingCopiesAndForeignOrMissingEpisodes) {
+  ASSERT_EQ(run("merge a b --out m").exit_code, 0);
+  // The same id in both shards with a different result.
+  auto a = lines("a"), b = lines("b");
+  ASSERT_EQ(a.size() + b.size(), 4u);
+  nlohmann::json changed = nlohmann::json::parse(a[0]);
+  changed["time_s"] = changed["time_s"].get<double>() + 1;
+  put("b", {b[0], b[1], changed.dump()});
+  Outcome o = run("merge a b --out m2");
+  EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
+  EXPECT_NE(o.err.find("twice with different results"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find(changed["id"].get<std::string>()), std::string::npos);
+  // An exact copy is the same episode: merged once.
+  put("b", {b[0], b[1], a[0]});
+  EXPECT_EQ(run("merge a b --out m3").exit_code, 0);
+  // One missing and a foreign id in its place (same fingerprint, index in range).
+  nlohmann::json foreign = nlohmann::json::parse(b[1]);
+  foreign["id"] = foreign["id"].get<std::string>().substr(0, foreign["id"].get<std::string>().rfind('|')) + "|999";
+  put("b", {b[0], foreign.dump()});
+  o = run("merge a b --out m4");
+  EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
+  EXPECT_NE(o.err.find("|999"), std::string::npos) << o.err;
+  EXPECT_EQ(o.out.find("4 of 4"), std::string::npos);
+  // Only missing: exit 1 naming the missing episode's index.
+  put("b", {b[0]});
+  o = run("merge a b --out m5");
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.err.find("are missing ("), std::string::npos) << o.err;
+}
+
+TEST_F(ShardFolders, OutputFoldersAreNeverAUsersNorReachedThroughLinks) {
+  // A folder holding a user's own report.html and notes: refused, both untouched.
+  fs::create_directories(dir_ / "mine");
+  write("mine/report.html", "my report");
+  write("mine/notes.txt", "my notes");
+  Outcome o = run("batch s.yaml --out mine --quiet --no-figures");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("notes.txt"), std::string::npos) << o.err;
+  o = run("merge a b --out mine");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_EQ(read(dir_ / "mine/report.html"), "my report");
+  fs::remove(dir_ / "mine/notes.txt");
+  EXPECT_EQ(run("batch s.yaml --out mine --quiet --no-figures").exit_code, 2);  // report.html but no episodes
+  EXPECT_EQ(read(dir_ / "mine/report.html"), "my report");
+  // A symlinked episodes.jsonl: refused, its target untouched.
+  write("elsewhere.jsonl", "");
+  fs::create_directories(dir_ / "linked");
+  fs::create_symlink(dir_ / "elsewhere.jsonl", dir_ / "linked/episodes.jsonl");
+  o = run("batch s.yaml --out linked --quiet --no-figures");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("symbolic link"), std::string::npos) << o.err;
+  EXPECT_EQ(read(dir_ / "elsewhere.jsonl"), "");
+  // Resuming its own folder still works.
+  EXPECT_EQ(run("batch s.yaml --shard 0/2 --out a --quiet --no-figures").exit_code, 0);
+}
+
+TEST_F(ShardFolders, ReportsThatCannotBeWrittenAreRefusedBeforeTheEpisodes) {
+  Outcome o = run("batch s.yaml --out c --junit missing/j.xml --quiet");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("--junit"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "c/episodes.jsonl"));
+  ::mkfifo((dir_ / "fifo").c_str(), 0644);
+  o = run("batch s.yaml --out c --junit fifo --quiet");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("a FIFO"), std::string::npos) << o.err;
+  o = run("generate --style sparse --out fifo");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  struct stat st{};
+  ASSERT_EQ(::lstat((dir_ / "fifo").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));  // never replaced by a regular file
+  write("target.json", "mine");
+  fs::create_symlink(dir_ / "target.json", dir_ / "link.json");
+  EXPECT_EQ(run("generate --style sparse --out link.json").exit_code, 2);
+  EXPECT_EQ(read(dir_ / "target.json"), "mine");
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.json"));
+}
+
+TEST_F(ShardFolders, AResumeReadsRecordsAsAStreamAndCutsLinesNoRecordIsAsLongAs) {
+  auto a = lines("a");
+  std::ofstream(dir_ / "a/episodes.jsonl", std::ios::app) << std::string(3u << 20, 'x') << "\n";
+  const Outcome o = run("batch s.yaml --shard 0/2 --out a --quiet --no-figures");
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("cut 1"), std::string::npos) << o.err;
+  EXPECT_EQ(lines("a"), a);
+}
+
+}  // namespace
+}  // namespace plantsim
