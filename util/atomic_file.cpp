@@ -78,7 +78,10 @@ void check_output_file(const std::string& path, const std::string& option) {
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   if (const std::string what = not_a_regular_file(path); !what.empty())
     throw std::invalid_argument("will not replace " + path + ": it is " + what + " (plantsim writes only new or regular files)");
-  const auto [fd, tmp] = exclusive_temporary(path);
+  // Plain names, not a structured binding: clang 14 cannot capture one in the lambda below.
+  const std::pair<int, std::string> temporary = exclusive_temporary(path);
+  const int fd = temporary.first;
+  const std::string& tmp = temporary.second;
   auto fail = [&](const std::string& step) {
     const std::string text = system_error_text("cannot write " + path + " (" + step + ")");
     ::close(fd);

@@ -57,6 +57,23 @@ def test_a_controller_that_returns_plantsims_command_changes_nothing(source):
     assert set(seen) == {"travel"}  # docking stays plantsim's
 
 
+def test_a_docking_callable_steers_the_docking_phases(source):
+    world = plantsim.load_world(source / "worlds/examples/corridor_crossing.json")
+    alone = plantsim.run(world, seed=4)
+    phases = set()
+
+    def dock(obs):
+        phases.add(obs.phase)
+        return obs.builtin
+
+    steered = plantsim.run(world, seed=4, docking=dock, controller_name="dock-echo")
+    assert np.array_equal(alone.trajectory, steered.trajectory)
+    assert "approach" in phases and "travel" not in phases
+    # A docking callable that never moves: plantsim, still the referee, ends it without a dock.
+    stalled = plantsim.run(world, seed=4, docking=lambda o: (0.0, 0.0), config={"timeout_s": 120})
+    assert not stalled.docked and stalled.summary["failure"] is not None
+
+
 def test_the_observation_holds_perception_only(source):
     world = plantsim.load_world(source / "worlds/examples/corridor_crossing.json")
     got = {}
