@@ -8,8 +8,13 @@
 
 namespace plantsim::test {
 
-inline std::string shared_data(const std::string& rel) { return std::string(PLANTSIM_SHARED_DATA) + "/" + rel; }
-inline std::string source_file(const std::string& rel) { return std::string(PLANTSIM_SOURCE_DIR) + "/" + rel; }
+inline std::string joined(std::string folder, const std::string& rel) {
+  folder += '/';
+  folder += rel;
+  return folder;
+}
+inline std::string shared_data(const std::string& rel) { return joined(PLANTSIM_SHARED_DATA, rel); }
+inline std::string source_file(const std::string& rel) { return joined(PLANTSIM_SOURCE_DIR, rel); }
 
 /// PLANTSIM_SUITE_SCALE in (0, 1) (scripts/test.sh sets 0.1 in the sanitizer tree, where each
 /// episode costs several times more): the share of their size the suites and the long searches
