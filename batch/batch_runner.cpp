@@ -95,6 +95,7 @@ ScenarioIdentity scenario_identity(const BatchSpec& spec, const std::vector<std:
   for (const FaultSetting& x : spec.faults) {
     f.add(x.name).add(x.json).add(static_cast<std::uint64_t>(x.crossing_obstacle * 4 + x.crossing_final_approach * 2));
     f.add(static_cast<std::uint64_t>(x.unmapped_obstacles));
+    if (x.standing_at_dock_s > 0) f.add(std::string_view("standing_at_dock_s")).add(x.standing_at_dock_s);
     if (x.charger_map_offset) f.add(x.charger_map_offset->x).add(x.charger_map_offset->y).add(x.charger_map_offset->yaw);
   }
   for (std::uint64_t seed : spec.seeds) f.add(seed);
@@ -244,6 +245,7 @@ class EpisodeRunner {
                                           util::Fingerprint().add(contents_[e.world]).add(e.seed).add(std::uint64_t{7919}).value());
       if (fault.crossing_obstacle) w.moving.push_back(crossing_person(w, optimal.path));
       if (fault.crossing_final_approach) w.moving.push_back(final_approach_crosser(w, optimal.length));
+      if (fault.standing_at_dock_s > 0) w.moving.push_back(person_standing_at_dock(w, optimal.length, fault.standing_at_dock_s));
     }
     out.optimal_m = optimal.length;
     out.result = sim::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault), out.config, steering_);
@@ -264,7 +266,8 @@ class EpisodeRunner {
   const std::vector<worlds::World>& worlds_;
   const std::vector<std::uint64_t>& contents_;
   const std::vector<sim::EpisodeConfig>& configs_;
-  const sim::EpisodeSteering& steering_;
+  // A copy: the gallery and the replay pass the default, a temporary that a reference would outlive.
+  const sim::EpisodeSteering steering_;
   std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>> planners_;
 };
 

@@ -92,6 +92,16 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
   };
   flag("crossing_obstacle", f.crossing_obstacle);
   flag("crossing_final_approach", f.crossing_final_approach);
+  if (body["standing_at_dock_s"]) {
+    double t = -1;
+    try {
+      t = body["standing_at_dock_s"].as<double>();
+    } catch (const YAML::Exception&) {
+    }
+    if (!(t >= 0 && t <= 3600)) throw WorldError(source, field + ".standing_at_dock_s", "expected seconds from 0 to 3600");
+    f.standing_at_dock_s = t;
+    body.remove("standing_at_dock_s");
+  }
   if (body["unmapped_obstacles"]) {
     long n = -1;
     try {

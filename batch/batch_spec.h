@@ -24,6 +24,8 @@ struct FaultSetting {
   std::string json;              ///< episode-config overrides (noise, slip, detection noise)
   bool crossing_obstacle = false;  ///< a person crosses the planned path as the robot arrives
   bool crossing_final_approach = false;  ///< a person crosses the final approach as the robot docks
+  double standing_at_dock_s = 0;  ///< a person stands on the final approach until this long after the
+                                  ///< robot could reach the staging pose (0: nobody)
   int unmapped_obstacles = 0;    ///< boxes the map lacks, placed across the optimal path
   std::optional<geom::Pose2> charger_map_offset;  ///< the charger's mapped pose minus its real one
   std::string sweep_parameter, sweep_value;  ///< when the fault is one value of a sweep

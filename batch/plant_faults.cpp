@@ -96,17 +96,22 @@ worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector
 }
 
 
-worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double plan_length_m) {
+namespace {
+
+// Where a person meets the final approach (halfway between the staging pose and the charger),
+// and the farthest free points up to 3 m to either side of it, across the approach.
+struct AcrossFinalApproach {
+  geom::Vec2 at, left, right;
+};
+
+AcrossFinalApproach across_final_approach(const worlds::World& w, double person_size_m) {
   const geom::Pose2 staging = worlds::staging_pose(w);
   const geom::Vec2 at = staging.position() + (0.5 * w.charger_spec.staging_distance_m) * staging.heading();
   const geom::Vec2 across{-staging.heading().y, staging.heading().x};
-  worlds::MovingObstacle m;
-  m.name = "person crossing the final approach";
-  m.width_m = m.height_m = 0.5;
   auto free_at = [&](geom::Vec2 c) {
-    if (!geom::in_closed_rect(w.floor.inflated(-0.5 * m.width_m), c)) return false;
+    if (!geom::in_closed_rect(w.floor.inflated(-0.5 * person_size_m), c)) return false;
     for (const geom::Rect& r : w.obstacles)
-      if (geom::in_open_rect(r.inflated(0.5 * m.width_m), c)) return false;
+      if (geom::in_open_rect(r.inflated(0.5 * person_size_m), c)) return false;
     return true;
   };
   auto reach = [&](double side) {
@@ -114,12 +119,35 @@ worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double pla
     while (s < 3.0 && free_at(at + (side * (s + 0.05)) * across)) s += 0.05;
     return at + (side * s) * across;
   };
-  m.waypoints = {reach(-1.0), reach(1.0)};
+  return {at, reach(-1.0), reach(1.0)};
+}
+
+// When a robot driving the plan at a steady 0.5 m/s reaches the staging pose and has turned.
+double robot_at_staging_s(double plan_length_m) { return plan_length_m / 0.5 + 3.0; }
+
+}  // namespace
+
+worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double plan_length_m) {
+  worlds::MovingObstacle m;
+  m.name = "person crossing the final approach";
+  m.width_m = m.height_m = 0.5;
+  const AcrossFinalApproach a = across_final_approach(w, m.width_m);
+  m.waypoints = {a.left, a.right};
   m.speed_mps = 0.8;
-  // The robot reaches the staging pose after about the plan at 0.5 m/s, turns (a few seconds)
-  // and approaches at 0.08 m/s: the person arrives when the robot is a quarter of the way in.
-  const double robot_there_s = plan_length_m / 0.5 + 3.0 + 0.25 * w.charger_spec.staging_distance_m / 0.08;
-  m.start_time_s = std::max(0.0, robot_there_s - geom::distance(m.waypoints[0], at) / m.speed_mps);
+  // The robot approaches at 0.08 m/s: the person arrives when it is a quarter of the way in.
+  const double robot_there_s = robot_at_staging_s(plan_length_m) + 0.25 * w.charger_spec.staging_distance_m / 0.08;
+  m.start_time_s = std::max(0.0, robot_there_s - geom::distance(m.waypoints[0], a.at) / m.speed_mps);
+  return m;
+}
+
+worlds::MovingObstacle person_standing_at_dock(const worlds::World& w, double plan_length_m, double standing_s) {
+  worlds::MovingObstacle m;
+  m.name = "person standing at the dock";
+  m.width_m = m.height_m = 0.5;
+  const AcrossFinalApproach a = across_final_approach(w, m.width_m);
+  m.waypoints = {a.at, geom::distance(a.at, a.right) >= geom::distance(a.at, a.left) ? a.right : a.left};
+  m.speed_mps = 0.8;
+  m.start_time_s = robot_at_staging_s(plan_length_m) + standing_s;  // stands until then, then walks off
   return m;
 }
 

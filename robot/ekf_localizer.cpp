@@ -215,7 +215,6 @@ double EkfLocalizer::correct(const LidarScan& scan) {
       if (-nu < p_.min_incidence_cos) continue;  // grazing: the range jumps with the pose
       const double predicted = geom::dot(f.normal, f.point - sensor.position()) / nu;
       if (!(predicted > 0)) continue;
-      ++expected;
       // Point-to-line: r = n.(q - s) / (n.u); dr/ds = -n / (n.u), dr/dphi = -r (n.u') / (n.u).
       const geom::Vec2 dr_ds = (-1.0 / nu) * f.normal;
       const geom::Vec2 u_perp{-u.y, u.x};
@@ -225,7 +224,14 @@ double EkfLocalizer::correct(const LidarScan& scan) {
       const double innovation = scan.ranges[f.beam] - predicted;
       // Gate against the prior's spread, moved to this iterate.
       const double s = (H * P0 * H.transpose())(0, 0) + r_var;
-      if (innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m)) continue;
+      const bool outlier = innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m);
+      // A return short of the mapped face: something the map lacks stands in front of it (a
+      // box, a person). It neither confirms the map nor contradicts it (the beam model's
+      // "unexpected object"); only a return from beyond a mapped face contradicts it. Counted
+      // against the match, a box beside the robot in an open yard would fail every scan.
+      if (outlier && innovation < 0) continue;
+      ++expected;
+      if (outlier) continue;
       scan_info += H.transpose() * H / r_var;
       gradient += H.transpose() * innovation / r_var;
       ++used;

@@ -146,15 +146,18 @@ bool Perceiver::relocalize(const LidarScan& scan) {
     unmatched_ = false;
     return local_ok;
   }
-  if (m->score >= p_.matcher.min_score && !m->accepted) {
-    // The returns fit the map well in more than one place of the window (a long wall seen
-    // alone): nothing contradicts the estimate, there is only too little to place the robot.
-    // It goes on (slowly, by its uncertainty) towards what will tell the places apart, and the
-    // window is not widened, which would only add look-alikes.
+  const double agree = agreement(scan, m->pose);
+  if (!m->accepted && (m->score >= p_.matcher.min_score || agree >= p_.verify_agreement)) {
+    // Not placed, yet nothing contradicts the estimate: the returns fit the map well in more
+    // than one place of the window (a long wall seen alone), or their fit is weak only because
+    // many fall on things the map lacks while the best pose reads, beam by beam, what the map
+    // predicts (boxes beside the robot in an open yard). There is only too little to place the
+    // robot: it goes on (slowly, by its uncertainty) towards what will tell the places apart,
+    // and the window is not widened, which would only add look-alikes.
     unmatched_ = false;
     return local_ok;
   }
-  unmatched_ = !m->accepted || agreement(scan, m->pose) < p_.verify_agreement;
+  unmatched_ = !m->accepted || agree < p_.verify_agreement;
   if (unmatched_) {
     // Returns, but no place that fits them alone: search wider next time.
     if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);

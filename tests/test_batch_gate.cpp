@@ -16,6 +16,7 @@
 #include "batch_folder_test.h"
 #include "test_paths.h"
 #include "util/folder_lock.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::batch {
@@ -198,6 +199,21 @@ TEST_F(BatchFolders, ResumeCutsMalformedLinesAndRerunsTheirEpisodes) {
   EXPECT_EQ(r.skipped, 2);
   EXPECT_EQ(r.ran, 2);
   EXPECT_EQ(starts_by_id((dir_ / "damaged").string()), whole);
+}
+
+// The failure gallery replays each failed episode for its figure, outside the batch's workers:
+// the replay must run the same episode (a failure drawn from a dangling controller crashed it).
+TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
+  const std::string scenario =
+      write("fail.yaml", "worlds: [" + test::source_file("worlds/examples/small_plant.json") +
+                             "]\nplanners: [vg]\nfaults: {short: {timeout_s: 2}}\nseeds: 1\n");
+  RunOptions o = options("fail");
+  o.figures = true;
+  const BatchOutcome r = run_batch(scenario, o);
+  ASSERT_EQ(r.ran, 1);
+  EXPECT_EQ(r.succeeded, 0);
+  const std::string id = nlohmann::json::parse(read_episode_records((dir_ / "fail").string()).at(0))["id"];
+  EXPECT_TRUE(fs::exists(dir_ / "fail" / "failures" / (worlds::file_name_component(id) + ".png"))) << id;
 }
 
 TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {

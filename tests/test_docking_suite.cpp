@@ -46,7 +46,7 @@ std::vector<geom::Pose2> random_starts(const worlds::World& w, int count, std::u
 }
 
 SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& base, std::uint64_t seed) {
-  count = test::scaled(count, 10);  // smaller in the sanitizer tree (tests/test_paths.h)
+  count = test::scaled(count, 6);  // smaller in the sanitizer tree (tests/test_paths.h)
   worlds::World w = worlds::load_world(test::shared_data(file));
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
   SuiteResult s;

@@ -173,7 +173,8 @@ TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
 
 TEST(FigureLayout, LongNamesAreShortenedInsideTheCanvas) {
   Case c = simulate(test::shared_data("worlds/world_N10.json"));
-  c.world.name = std::string(120, 'w') + "_\u4e2d\u6587";
+  c.world.name = std::string(120, 'w');
+  c.world.name += "_\u4e2d\u6587";  // appended in place: GCC 12 misreads the move of a `+` temporary
   RunFigureOptions o;
   o.setting = "episode " + std::string(200, 's');
   FigureLayout layout;
