@@ -36,6 +36,31 @@ std::string setting_of(const std::string& command) {
   return out.empty() ? "defaults" : out;
 }
 
+/// A batch folder in one line from its summary.json: episodes, failures by reason, the gate.
+std::string batch_line(const std::string& dir, std::string& verdict) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+  } catch (const std::exception&) {
+    return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
+  }
+  verdict = j.value("verdict", "");
+  std::string line = std::to_string(j.value("succeeded", 0LL)) + " of " + std::to_string(j.value("episodes", 0LL)) +
+                     " episodes succeeded";
+  std::string reasons;
+  const nlohmann::json by_reason = j.value("failures_by_reason", nlohmann::json::object());  // a local: items() does not keep it alive
+  for (const auto& [reason, count] : by_reason.items())
+    reasons += (reasons.empty() ? "" : ", ") + reason + " " + std::to_string(count.get<long long>());
+  if (!reasons.empty()) line += "; failures: " + reasons;
+  const nlohmann::json gate = j.value("gate", nlohmann::json::object());
+  const long long gated = gate.value("gated_configurations", 0LL);
+  if (gated > 0)
+    line += "; " + std::to_string(gate.value("below_threshold", 0LL)) + " of " + std::to_string(gated) +
+            " gated configurations below their threshold by " + gate.value("statistic", std::string("?")) + ", " +
+            std::to_string(gate.value("lower_bound_below_threshold", 0LL)) + " with the 95 % lower bound below it";
+  return line;
+}
+
 /// A linked report, its kind told by what its folder holds, with the figure that shows it best.
 render::DashboardLink link_to(const std::string& report, const std::string& base) {
   namespace fs = std::filesystem;
@@ -55,11 +80,7 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
   } else if (fs::exists(dir / "summary.csv")) {
     l.kind = "batch";
     if (fs::exists(dir / "chart_success.png")) l.thumbnail = rel("chart_success.png");
-    std::ifstream csv(dir / "summary.csv");
-    std::string line;
-    long long rows = -1;
-    while (std::getline(csv, line)) ++rows;
-    l.line = std::to_string(std::max(rows, 0LL)) + " configurations (summary.csv)";
+    l.line = batch_line(dir.string(), l.verdict);
   } else if (fs::exists(dir / "coverage.png")) {
     l.kind = "coverage";
     l.thumbnail = rel("coverage.png");

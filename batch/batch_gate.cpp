@@ -10,9 +10,9 @@
 #include "batch/batch_runner.h"
 
 namespace plantsim::batch {
-namespace {
-
 const char* statistic_name(GateStatistic s) { return s == GateStatistic::kWilsonLow ? "wilson_low" : "success_rate"; }
+
+namespace {
 
 bool matches(const GateRule& r, const ConfigurationVerdict& v) {
   return (r.world.empty() || r.world == v.world || v.world == kAllWorlds) && (r.planner.empty() || r.planner == v.planner) &&

@@ -27,8 +27,13 @@ struct ConfigurationVerdict {
   double success_rate = 0, wilson_low = 0, wilson_high = 0;
   std::optional<double> threshold;  ///< none: not gated
   bool passed = true;
+  /// The 95 % Wilson lower bound clears the threshold: the verdict holds beyond sampling luck.
+  bool lower_bound_clears() const { return threshold && wilson_low >= *threshold; }
   std::string name() const { return world + " / " + planner + " / " + controller + " / " + fault; }
 };
+
+/// "success_rate" or "wilson_low", as scenarios name them.
+const char* statistic_name(GateStatistic s);
 
 /// One verdict per configuration in the records, in the summary's order. `gate` from the
 /// scenario; `min_success` (the command line's --min-success) replaces its default threshold.

@@ -10,6 +10,7 @@
 
 #include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
+#include "batch/batch_summary.h"
 #include "planner/planner.h"
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
@@ -88,11 +89,46 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
       for (const ConfigurationVerdict& c : verdicts)
         if ((c.world == cells[0] || c.world == kAllWorlds) && c.planner == cells[1] && c.controller == cells[2] && c.fault == cells[3])
           v = &c;
+    // The verdict by the gate's statistic, and whether the 95 % lower bound clears the threshold
+    // too (10 of 10 passes a 0.9 gate by its point estimate; its lower bound, 0.72, does not).
     if (v && v->threshold)
-      verdict = std::string(v->passed ? "pass (>= " : "FAIL (< ") + fixed(*v->threshold, 2) + (v->world == kAllWorlds ? ", all worlds)" : ")");
+      verdict = std::string(v->passed ? "pass (>= " : "FAIL (< ") + fixed(*v->threshold, 3) +
+                (v->world == kAllWorlds ? ", all worlds" : "") + "); 95 % low " + fixed(v->wilson_low, 3) +
+                (v->lower_bound_clears() ? " clears it" : " does not");
     out.push_back(verdict);
     report.rows.push_back(out);
   }
+}
+
+/// Every failed episode in one table (reason, when, why, the command that re-runs it), and how
+/// many of them the gallery below draws.
+std::string failure_table_html(const std::vector<std::string>& lines, std::size_t drawn, const std::string& scenario_path) {
+  constexpr std::size_t kMaxRows = 2000;
+  std::string rows;
+  std::size_t failed = 0;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    if (record_succeeded(j)) continue;
+    if (++failed > kMaxRows) continue;
+    const auto text = [&](const char* key) {
+      const auto it = j.find(key);
+      return it != j.end() && it->is_string() ? it->get<std::string>() : std::string("-");
+    };
+    const auto at = j.find("failure_time_s");
+    const std::string id = text("id");
+    rows += "<tr><td class=\"l\">" + render::html_escape(id) + "</td><td class=\"l\">" + render::html_escape(text("failure")) +
+            "</td><td>" + (at != j.end() && at->is_number() ? fixed(at->get<double>(), 1) : "-") + "</td><td class=\"l\">" +
+            render::html_escape(text("failure_detail")) + "</td><td class=\"l\"><code>plantsim batch " +
+            render::html_escape(scenario_path) + " --episode '" + render::html_escape(id) + "' --out DIR</code></td></tr>\n";
+  }
+  if (failed == 0) return "<h2>Failures</h2>\n<p>None: every episode succeeded.</p>\n";
+  std::string h = "<h2>Failures (" + std::to_string(failed) + ")</h2>\n<p>Every failed episode with its reason "
+                  "(docs/failures.md); " + std::to_string(drawn) + " of " + std::to_string(failed) +
+                  " drawn below, one of each reason first" +
+                  (failed > kMaxRows ? "; the first " + std::to_string(kMaxRows) + " listed here, all in episodes.jsonl" : "") +
+                  ".</p>\n<table><tr><th class=\"l\">episode</th><th class=\"l\">reason</th><th>at (s)</th>"
+                  "<th class=\"l\">detail</th><th class=\"l\">re-run it alone</th></tr>\n";
+  return h + rows + "</table>\n";
 }
 
 }  // namespace
@@ -106,6 +142,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   const std::string sweep = sweep_csv(lines);
   if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
   const std::vector<ConfigurationVerdict> verdicts = judge_configurations(lines, gate);
+  util::write_file_atomically(out_dir + "/summary.json", batch_summary_json(lines, verdicts, gate, title, command).dump(1) + "\n");
   render::Report report;
   report.title = title;
   report.command = command;
@@ -113,8 +150,9 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   report.notes = "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
                  "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
                  "summary.csv has every column.";
-  report.files = {"episodes.jsonl", "summary.csv"};
+  report.files = {"episodes.jsonl", "summary.csv", "summary.json"};
   if (!sweep.empty()) report.files.push_back("sweep.csv");
+  report.body_html = failure_table_html(lines, failures.size(), scenario_path);
 
   // Charts, from the same records the table sums.
   std::vector<render::RateRow> rates;

@@ -283,10 +283,21 @@ std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec) {
 std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines, const BatchSpec& spec,
                                            const ScenarioWorlds& loaded, const std::vector<sim::EpisodeConfig>& configs,
                                            std::size_t limit) {
-  std::set<std::string> failed;
+  // One failure of each reason first, then a second of each, ...: every reason is drawn before
+  // any is drawn twice (the report lists every failure).
+  std::map<std::string, std::vector<std::string>> by_reason;
   for (const std::string& line : lines) {
     const json j = json::parse(line);
-    if (!record_succeeded(j) && failed.size() < limit) failed.insert(j["id"].get<std::string>());
+    if (record_succeeded(j)) continue;
+    const auto reason = j.find("failure");
+    by_reason[reason != j.end() && reason->is_string() ? reason->get<std::string>() : ""].push_back(j["id"].get<std::string>());
+  }
+  std::set<std::string> failed;
+  for (std::size_t round = 0; failed.size() < limit; ++round) {
+    bool any = false;
+    for (const auto& [reason, ids] : by_reason)
+      if (round < ids.size() && failed.size() < limit) failed.insert(ids[round]), any = true;
+    if (!any) break;
   }
   std::vector<FailedEpisode> out;
   if (failed.empty()) return out;

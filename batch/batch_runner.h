@@ -84,7 +84,7 @@ struct ReplayedEpisode {
 using FailedEpisode = ReplayedEpisode;
 
 /// Failed episodes a batch report draws (replayed, each with its run figure).
-inline constexpr std::size_t kGalleryEpisodes = 6;
+inline constexpr std::size_t kGalleryEpisodes = 12;
 
 /// Throws std::invalid_argument naming the scenario when it has no episode `id`.
 ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std::string& id);

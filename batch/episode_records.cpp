@@ -98,7 +98,7 @@ std::vector<std::string> read_records(const std::string& path) {
 }
 
 bool is_batch_output_name(const std::string& name) {
-  static const char* const exact[] = {"episodes.jsonl", "summary.csv", "sweep.csv", "report.html", ".plantsim.lock", "failures"};
+  static const char* const exact[] = {"episodes.jsonl", "summary.csv", "summary.json", "sweep.csv", "report.html", ".plantsim.lock", "failures"};
   for (const char* e : exact)
     if (name == e) return true;
   auto png_with_prefix = [&](const std::string& prefix) {

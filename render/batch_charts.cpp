@@ -118,15 +118,20 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   const Axes a{box, 0, 1, 0, 1};
   axis(fig, a, true, "success rate", 100.0, " %");
   GlCanvas& c = fig.canvas();
-  bool any_gate = false, any_below = false, any_pass = false;
+  bool any_gate = false, any_below = false, any_pass = false, any_unsure = false;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RateRow& r = rows[i];
     const double y = box.top + (i + 0.5) * row_h;
     const double rate = r.episodes ? static_cast<double>(r.successes) / r.episodes : 0.0;
     const bool below = r.gate >= 0 && rate < r.gate;
+    // At or above its gate by the point estimate, yet the interval's lower bound is below it: the
+    // sample cannot tell that it meets the gate (10 of 10 against 0.9: lower bound 0.72).
+    const bool unsure = r.gate >= 0 && !below && r.low < r.gate;
     any_below = any_below || below;
-    any_pass = any_pass || !below;
-    if (rate > 0) c.pixel_line({a.px(0), y}, {a.px(rate), y}, row_h * 0.6, below ? palette::kFailure : palette::kCharger);
+    any_unsure = any_unsure || unsure;
+    any_pass = any_pass || (!below && !unsure);
+    const Rgb bar = below ? palette::kFailure : unsure ? palette::kOkabeOrange : palette::kCharger;
+    if (rate > 0) c.pixel_line({a.px(0), y}, {a.px(rate), y}, row_h * 0.6, bar);
     c.pixel_line({a.px(r.low), y}, {a.px(r.high), y}, 1.6, palette::kAxis);
     c.pixel_line({a.px(r.low), y - 5}, {a.px(r.low), y + 5}, 1.6, palette::kAxis);
     c.pixel_line({a.px(r.high), y - 5}, {a.px(r.high), y + 5}, 1.6, palette::kAxis);
@@ -139,6 +144,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   }
   std::vector<LegendEntry> legend;
   if (any_pass) legend.push_back({palette::kCharger, any_gate ? "success rate (meets gate)" : "success rate"});
+  if (any_unsure) legend.push_back({palette::kOkabeOrange, "meets gate, 95 % low below it"});
   if (any_below) legend.push_back({palette::kFailure, "success rate (below gate)"});
   legend.push_back({palette::kAxis, "Wilson 95 %"});
   if (any_gate) legend.push_back({palette::kOkabeBlack, "gate"});

@@ -22,8 +22,17 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
                   ".bad{color:#c03c00;font-weight:bold}</style></head><body>\n";
   int ok = 0;
   for (const auto& r : runs) ok += r.succeeded;
+  // Runs and batches are counted apart: a batch's failures are its episodes', judged by its gate.
+  int batches = 0, passed = 0, failed = 0;
+  for (const auto& l : links)
+    if (l.kind == "batch") ++batches, passed += l.verdict == "passed", failed += l.verdict == "failed";
   h += "<h1>" + html_escape(title) + "</h1>\n<p>" + std::to_string(ok) + " of " + std::to_string(runs.size()) +
-       " runs succeeded. Click a thumbnail for the run's report (figures, replay, files).</p>\n";
+       " single runs succeeded";
+  if (batches > 0)
+    h += "; of " + std::to_string(batches) + " batches, " + std::to_string(passed) + " passed their gates, <span class=\"" +
+         (failed ? "bad" : "ok") + "\">" + std::to_string(failed) + " failed</span>, " + std::to_string(batches - passed - failed) +
+         " not gated (below: each batch's episodes, failures by reason and gate)";
+  h += ". Click a thumbnail for its report (figures, replay, files).</p>\n";
   h += "<h2>Runs</h2>\n<table><tr><th class=\"l\">figure</th><th class=\"l\">world</th><th class=\"l\">setting</th>"
        "<th class=\"l\">status</th>";
   for (const auto& c : headers) h += "<th>" + html_escape(c) + "</th>";
@@ -52,8 +61,11 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       if (!l.thumbnail.empty())
         rows += "<a href=\"" + html_escape(l.report) + "\"><img class=\"thumb\" src=\"" + html_escape(l.thumbnail) +
                 "\" alt=\"" + html_escape(l.title) + "\"></a>";
-      rows += "</td><td class=\"l\"><a href=\"" + html_escape(l.report) + "\">" + html_escape(l.title) + "</a></td><td class=\"l\">" +
-              html_escape(l.line) + "</td></tr>\n";
+      rows += "</td><td class=\"l\"><a href=\"" + html_escape(l.report) + "\">" + html_escape(l.title) + "</a></td>";
+      if (kind == std::string("batch"))
+        rows += "<td class=\"l " + std::string(l.verdict == "passed" ? "ok" : l.verdict == "failed" ? "bad" : "") + "\">" +
+                html_escape(l.verdict.empty() ? "no verdict" : "gate " + l.verdict) + "</td>";
+      rows += "<td class=\"l\">" + html_escape(l.line) + "</td></tr>\n";
     }
     if (rows.empty()) continue;
     const std::string heading = kind == "comparison" ? "Comparisons" : kind == "batch" ? "Batches"

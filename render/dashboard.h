@@ -23,6 +23,7 @@ struct DashboardLink {
   std::string report;                 ///< relative to the dashboard
   std::string thumbnail;              ///< relative to the dashboard, may be empty
   std::string line;                   ///< one line said about it (from its files)
+  std::string verdict;                ///< a batch's: "passed", "failed" or "not gated" (summary.json)
 };
 
 std::string dashboard_html(const std::string& title, const std::vector<std::string>& metric_headers,

@@ -31,7 +31,7 @@ std::string report_html(const Report& r) {
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html_escape(r.title) +
                   "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
                   "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
-                  "text-align:right}th{background:#eee}td:first-child,th:first-child{text-align:left}"
+                  "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
                   "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px 4px}"
                   "figure{margin:16px 0}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";

@@ -332,5 +332,43 @@ TEST_F(Cli, BatchExitsOneWhenAConfigurationIsBelowItsGate) {
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
 }
 
+// A batch below its gate says so as data (summary.json: the verdict, failures by reason, each
+// configuration's point verdict and whether its Wilson lower bound clears the threshold), and the
+// dashboard shows that verdict beside the single runs instead of counting only the runs.
+TEST_F(Cli, ABatchBelowItsGateIsShownFailedOnTheDashboard) {
+  write("s.yaml", "name: short\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg]\n"
+                  "faults:\n  none: {}\n  hurried: {timeout_s: 3}\nseeds: 3\ngate: {min_success: 0.9}\n");
+  Outcome o = run("batch s.yaml --out b --quiet --no-figures", 300);
+  EXPECT_EQ(o.exit_code, 1) << o.out << o.err;
+  const auto summary = nlohmann::json::parse(read(dir_ / "b" / "summary.json"));
+  EXPECT_EQ(summary["verdict"], "failed");
+  EXPECT_EQ(summary["episodes"], 6);
+  EXPECT_EQ(summary["succeeded"], 3);
+  std::int64_t failed = 0;
+  for (const auto& [reason, count] : summary["failures_by_reason"].items()) failed += count.get<std::int64_t>();
+  EXPECT_EQ(failed, 3) << summary.dump();
+  EXPECT_EQ(summary["gate"]["below_threshold"], 1);
+  for (const auto& c : summary["configurations"]) {
+    const bool hurried = c["fault"] == "hurried";
+    EXPECT_EQ(c["passed"], !hurried) << c.dump();
+    // 3 of 3 passes 0.9 by its point estimate; its 95 % lower bound (0.44) does not clear it.
+    EXPECT_FALSE(c["lower_bound_clears"].get<bool>()) << c.dump();
+  }
+  EXPECT_EQ(summary["gate"]["lower_bound_below_threshold"], 2);
+  // The report lists every failure with its reason and the command that re-runs it.
+  const std::string report = read(dir_ / "b" / "report.html");
+  EXPECT_NE(report.find("<h2>Failures (3)</h2>"), std::string::npos) << report;
+  for (int seed = 1; seed <= 3; ++seed)
+    EXPECT_NE(report.find("--episode 'world_N10|vg|default|hurried|" + std::to_string(seed) + "'"), std::string::npos)
+        << report;
+  o = run("run " + test::shared_data("worlds/world_N10.json") + " --out r", 120);
+  ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
+  o = run("summarize r --html index.html --link b/report.html", 60);
+  const std::string html = read(dir_ / "index.html");
+  EXPECT_NE(html.find("1 of 1 single runs succeeded; of 1 batches, 0 passed their gates"), std::string::npos) << html;
+  EXPECT_NE(html.find("gate failed"), std::string::npos) << html;
+  EXPECT_NE(html.find("3 of 6 episodes succeeded; failures: "), std::string::npos) << html;
+}
+
 }  // namespace
 }  // namespace plantsim

@@ -293,8 +293,10 @@ TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
 }
 
 TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
-  // Two configurations, one below its gate; two methods with docked and failed episodes.
-  const std::vector<RateRow> rates = {{"w / vg / pp / dry", 19, 20, 0.76, 0.99, 0.9},
+  // Three configurations: one meeting its gate with its lower bound too, one meeting it by the
+  // point estimate only, one below it; two methods with docked and failed episodes.
+  const std::vector<RateRow> rates = {{"w / vg / pp / dry", 200, 200, 0.981, 1.0, 0.9},
+                                      {"w / vg / pp / damp", 19, 20, 0.76, 0.99, 0.9},
                                       {"w / vg / pp / wet", 12, 20, 0.39, 0.78, 0.9}};
   FigureLayout layout;
   Image img = draw_success_chart(rates, "test batch", 1400, &layout);
@@ -302,6 +304,7 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   test::expect_sound_layout(img, layout, "success chart");
   EXPECT_TRUE(test::has_legend(layout, "success rate (below gate)"));
   EXPECT_TRUE(test::has_legend(layout, "success rate (meets gate)"));
+  EXPECT_TRUE(test::has_legend(layout, "meets gate, 95 % low below it"));
   EXPECT_TRUE(test::has_legend(layout, "gate"));
   EXPECT_TRUE(test::has_legend(layout, "Wilson 95 %"));
 
