@@ -125,6 +125,31 @@ void Figure::colour_bar(const PixelBox& box, double lo, double hi, const std::st
   layout_.legend_boxes.push_back({box.left, box.top - 20, box.right, box.bottom + 20});
 }
 
+void Figure::draw_swatch(double x, double y, const LegendEntry& e) {
+  const Rgb c = e.colour;
+  switch (e.swatch) {
+    case Swatch::kBar:
+      canvas_.pixel_line({x, y}, {x + 22, y}, 5.0, c);
+      break;
+    case Swatch::kDashed:
+      for (double a = x; a < x + 22; a += 8) canvas_.pixel_line({a, y}, {std::min(a + 5, x + 22), y}, 2.5, c);
+      break;
+    case Swatch::kRing: {
+      std::vector<Vec2> circle;
+      for (int k = 0; k <= 16; ++k)
+        circle.push_back({x + 11 + 6 * std::cos(k * M_PI / 8), y + 6 * std::sin(k * M_PI / 8)});
+      canvas_.pixel_polyline(circle, 2.0, c);
+      break;
+    }
+    case Swatch::kDot:
+      canvas_.pixel_line({x + 7, y}, {x + 15, y}, 8.0, c);
+      break;
+    case Swatch::kOutline:
+      canvas_.pixel_polyline({{x + 3, y - 6}, {x + 19, y - 6}, {x + 19, y + 6}, {x + 3, y + 6}, {x + 3, y - 6}}, 1.8, c);
+      break;
+  }
+}
+
 PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entries, int columns,
                         double column_width_px) {
   columns = std::max(1, columns);
@@ -132,7 +157,7 @@ PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entr
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const double cx = x + column_width_px * static_cast<double>(i / std::max<std::size_t>(rows, 1));
     const double row = y + 19.0 * static_cast<double>(i % std::max<std::size_t>(rows, 1));
-    canvas_.pixel_line({cx, row - 4}, {cx + 22, row - 4}, 5.0, entries[i].colour);
+    draw_swatch(cx, row - 4, entries[i]);
     text(fit(entries[i].label, 13, column_width_px - 34), cx + 28, row + 1, 13, palette::kAxis);
     layout_.legend.push_back(entries[i]);
   }

@@ -19,9 +19,14 @@ struct PixelBox {
   double height() const { return bottom - top; }
 };
 
+/// How a legend entry's swatch is drawn: like the mark it names, so that two entries of one colour
+/// (the charger and where the map puts it; a stop and the first plan) are still told apart.
+enum class Swatch { kBar, kDashed, kRing, kDot, kOutline };
+
 struct LegendEntry {
   Rgb colour;
   std::string label;
+  Swatch swatch = Swatch::kBar;
 };
 
 /// What a finished figure put where, for tests: every text's box, every legend entry and the
@@ -119,6 +124,7 @@ class Figure {
   const FigureLayout& layout() const { return layout_; }
 
  private:
+  void draw_swatch(double x, double y, const LegendEntry& e);
   struct QueuedText {
     std::string s;
     double x, y;

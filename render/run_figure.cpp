@@ -175,8 +175,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   fig.clip_to_world(world.floor, t);
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
-  auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
-    if (drawn) legend.push_back({colour, label});
+  auto listed = [&](bool drawn, Rgb colour, const std::string& label, Swatch swatch = Swatch::kBar) {
+    if (drawn) legend.push_back({colour, label, swatch});
   };
   draw_floor(c, world);
   const MarginShape shape = margin_shape(run.planner);
@@ -195,19 +195,19 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(draw_target(c, world, run.trajectory), palette::kTarget, "target");
   listed(draw_wall_following(c, run.trajectory), palette::kWallFollow, "wall following");
   listed(draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s), palette::kFootprint,
-         "robot, every " + std::to_string(static_cast<int>(o.footprint_every_s)) + " s");
+         "robot / " + std::to_string(static_cast<int>(o.footprint_every_s)) + " s", Swatch::kRing);
   listed(draw_estimate(c, run.trajectory), palette::kEstimate, "estimated");
   if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps))
     legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
   // The plans over the driven path, thin, so that neither hides the other.
   const bool replanned = run.replans > 0 && run.plan != run.first_plan;
-  listed(replanned && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan), palette::kFirstPlan, "first plan");
+  listed(replanned && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan), palette::kFirstPlan, "first plan", Swatch::kDashed);
   listed(draw_plan(c, run.plan, palette::kPlan), palette::kPlan, replanned ? "final plan" : "plan");
   const auto [scan, scan_off] = draw_scan(c, run.last_scan);
   listed(scan, palette::kScan, "last scan");
   listed(scan_off, palette::kScanOffMap, "scan off map");
-  listed(draw_layer(c, run.layer_final), palette::kLayer, "sensed layer");
-  listed(draw_tracked(c, run.tracked_final), palette::kTracked, "tracked");
+  listed(draw_layer(c, run.layer_final), palette::kLayer, "sensed layer", Swatch::kOutline);
+  listed(draw_tracked(c, run.tracked_final), palette::kTracked, "tracked", Swatch::kOutline);
   draw_events(c, run.events);
   using Kind = sim::EpisodeResult::Event::Kind;
   for (const auto& named : {std::pair{Kind::kStop, "stop"}, {Kind::kReplan, "replan"}, {Kind::kRetry, "retry"},
@@ -215,14 +215,14 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                             {Kind::kFailure, "failure"}}) {
     const Kind kind = named.first;
     listed(std::any_of(run.events.begin(), run.events.end(), [&](const auto& e) { return e.kind == kind; }),
-           event_colour(kind), named.second);
+           event_colour(kind), named.second, Swatch::kRing);
   }
   draw_start(c, world);
-  listed(true, palette::kStart, "start");
+  listed(true, palette::kStart, "start", Swatch::kDot);
   if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot, 2.0);
   draw_charger(c, world);
   listed(true, palette::kCharger, "charger");
-  listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger");
+  listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger", Swatch::kOutline);
   for (const LegendEntry& e : draw_plan_marks(fig, t, run.marks)) legend.push_back(e);
   if (!world.moving.empty()) draw_time_ticks(fig, run, t);
   fig.world_axes(world.floor, t);

@@ -84,6 +84,16 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   // Absent things are not listed.
   for (const char* label : {"wall following", "target", "collision", "not on map", "plan", "explored", "graph"})
     EXPECT_FALSE(test::has_legend(layout, label)) << label;
+  // No two entries look alike: the same colour is drawn as a different swatch (a stop's black
+  // ring, the first plan's black dashes, a tracked box's black outline).
+  for (std::size_t i = 0; i < layout.legend.size(); ++i)
+    for (std::size_t j = i + 1; j < layout.legend.size(); ++j) {
+      const LegendEntry &a = layout.legend[i], &b = layout.legend[j];
+      EXPECT_FALSE(a.colour.r == b.colour.r && a.colour.g == b.colour.g && a.colour.b == b.colour.b && a.swatch == b.swatch)
+          << "'" << a.label << "' and '" << b.label << "' share one swatch";
+    }
+  // The footprint's entry fits its legend column (it was cut to "robot, every 1...").
+  EXPECT_TRUE(test::has_legend(layout, "robot / 10 s") || test::has_legend(layout, "robot / 5 s")) << "footprint entry";
   // The final plan shows over the driven path along its length (it is drawn on top).
   int seen = 0, checked = 0;
   for (std::size_t i = 0; i + 1 < c.run.plan.size(); ++i)
