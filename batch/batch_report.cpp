@@ -174,6 +174,9 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     const double optimum = j.value("optimal_length_m", 0.0);
     if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
     e.time_s = j.value("time_s", 0.0);
+    if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())
+      e.localization_error_max_m = j["localization_error_max_m"].get<double>();
+    e.localization_ok = j.value("localization_status", std::string("ok")) == "ok";
     episodes.push_back(e);
     render::EpisodePath path;
     path.succeeded = record_succeeded(j);
@@ -206,6 +209,9 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
         "Success rate per configuration with its Wilson 95 % interval; the black tick is the gate");
   chart(render::draw_error_strips(episodes, {}), "chart_errors.png",
         "Position and heading error of every docked episode against the 2 cm / 2 degree gates");
+  chart(render::draw_localization_chart(episodes), "chart_localization.png",
+        "Each episode's worst localisation error (true against estimated) per method, against 10 cm, and how many "
+        "episodes' estimator reported worse than ok");
   chart(render::draw_efficiency_chart(episodes), "chart_efficiency.png",
         "Driven length over the exact optimum (ECDF) and time to dock, per method");
   if (!sweep_counts.empty()) {

@@ -188,6 +188,42 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   return img;
 }
 
+Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px, FigureLayout* layout_out) {
+  constexpr double kShownUpTo_m = 1.0;  // a few lost episodes tens of metres off must not squash the rest
+  const std::vector<std::string> methods = methods_of(episodes);
+  std::vector<std::vector<double>> worst(methods.size());
+  std::vector<std::size_t> counts(methods.size(), 0), not_ok(methods.size(), 0), beyond(methods.size(), 0);
+  for (const auto& e : episodes) {
+    if (e.localization_error_max_m < 0) continue;
+    const std::size_t m = method_index(methods, e.method);
+    worst[m].push_back(std::min(e.localization_error_max_m, kShownUpTo_m));
+    beyond[m] += e.localization_error_max_m > kShownUpTo_m;
+    not_ok[m] += !e.localization_ok;
+    ++counts[m];
+  }
+  const double row_h = 60;
+  const int height = static_cast<int>(130 + row_h * std::max<std::size_t>(methods.size(), 1) + 60);
+  Figure fig(width_px, height);
+  fig.text("Localisation: each episode's worst error, true against estimated", 20, 28, 18, palette::kAxis, Anchor::kLeft,
+           true);
+  fig.text("one dot per episode, docked or not (spread vertically to be seen); errors past 1 m drawn at 1 m; "
+           "right: episodes whose estimator reported worse than ok",
+           20, 48, 13, palette::kAxis);
+  const double label_w = 260, right_w = 300;
+  const PixelBox box{label_w, 110, width_px - right_w, 110 + row_h * std::max<std::size_t>(methods.size(), 1)};
+  method_labels(fig, box, methods, counts);
+  strip_panel(fig, box, methods, worst, 0.10, "Worst position error (red line: 10 cm)", "mm", 1000.0);
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    std::string note = std::to_string(not_ok[m]) + " of " + std::to_string(counts[m]) + " not ok";
+    if (beyond[m]) note += ", " + std::to_string(beyond[m]) + " past 1 m";
+    fig.text(note, box.right + 16, box.top + (m + 0.5) * row_h + 4, 12, palette::kAxis);
+  }
+  fig.legend(20, 76, {{palette::kCollisionMark, "10 cm"}}, 1, 200);
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
 Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px, FigureLayout* layout_out) {
   const std::vector<std::string> methods = methods_of(episodes);
   std::vector<std::vector<double>> ratio(methods.size()), times(methods.size());

@@ -28,6 +28,8 @@ struct EpisodeOutcome {
   double heading_error_deg = 0;
   double driven_over_optimum = -1;  ///< driven length over the exact optimum (< 0: unknown)
   double time_s = 0;
+  double localization_error_max_m = -1;  ///< worst true-vs-estimated position error (< 0: unknown)
+  bool localization_ok = true;           ///< the estimator never reported worse than `ok`
 };
 
 /// One episode's driven path (thinned) and whether it succeeded.
@@ -47,6 +49,10 @@ Image draw_success_chart(const std::vector<RateRow>& rows, const std::string& ti
 /// Position and heading errors of docked episodes, one strip per method, gates as lines.
 Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates, int width_px = 1400,
                         FigureLayout* layout = nullptr);
+/// Localisation per method: each episode's worst position error (docked or not) against the 10 cm
+/// line `ok` must never stand beside, and how many episodes' estimator reported worse than `ok`.
+Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
+                              FigureLayout* layout = nullptr);
 /// ECDF of driven length over the optimum (docked episodes) and time to dock, per method.
 Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
                             FigureLayout* layout = nullptr);

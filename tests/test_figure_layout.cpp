@@ -339,6 +339,18 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_TRUE(has_text("vg / pure-pursuit / dry (17)"));
   EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (17)"));
   EXPECT_TRUE(test::has_legend(layout, "gate"));
+  // Localisation: every episode's worst error, docked or not; the ones past 1 m are counted.
+  for (std::size_t i = 0; i < episodes.size(); ++i) {
+    episodes[i].localization_error_max_m = i == 3 ? 12.0 : 0.002 * static_cast<double>(i % 9);
+    episodes[i].localization_ok = i % 10 != 0;
+  }
+  img = draw_localization_chart(episodes, 1400, &layout);
+  keep(img, "layout_localization");
+  test::expect_sound_layout(img, layout, "localisation chart");
+  EXPECT_TRUE(test::has_legend(layout, "10 cm"));
+  EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (20)"));  // every episode, not only the docked
+  EXPECT_TRUE(has_text("4 of 20 not ok"));               // gcr: episodes 0, 10, 20, 30
+  EXPECT_TRUE(has_text("0 of 20 not ok, 1 past 1 m"));   // vg: episode 3, 12 m off
   img = draw_efficiency_chart(episodes, 1400, &layout);
   keep(img, "layout_efficiency");
   test::expect_sound_layout(img, layout, "efficiency chart");
