@@ -171,7 +171,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     e.docked = j["docked"].get<bool>();
     e.position_error_m = j.value("position_error_m", 0.0);
     e.heading_error_deg = j.value("heading_error_deg", 0.0);
-    const double optimum = j.value("optimal_length_m", 0.0);
+    const double optimum = j.value("optimal_driven_m", j.value("optimal_length_m", 0.0));
     if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
     e.time_s = j.value("time_s", 0.0);
     if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())

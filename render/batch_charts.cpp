@@ -243,7 +243,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   const int height = static_cast<int>(560 + top - 110);
   Figure fig(width_px, height);
   fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
-  fig.text("left: share of episodes driving at most x times the exact optimum; right: time to dock", 20, 48, 13,
+  fig.text("left: share of episodes driving at most x times the exact optimum (to the staging pose, then the straight approach); right: time to dock", 20, 48, 13,
            palette::kAxis);
   const double half = (width_px - 120) / 2.0;
   const PixelBox left{80, top, 80 + half - 40, height - 60.0};
