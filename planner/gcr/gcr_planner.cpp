@@ -170,15 +170,24 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
       out.status = PlanStatus::kNoPath;
       out.note = raw.failure;
     } else {
-      std::vector<Vec2> best = optimise(raw, 3);
+      // The document's optimisation recurses into the walks between a rotation's ends; plantsim
+      // caps that at depth 3 (the document sets no cap; deeper levels changed nothing on the
+      // plants measured, docs/seeds.md).
+      std::vector<Vec2> best = optimise(raw, kOptimisationDepth);
       const double raw_length = polyline_length(raw.points);
-      if (polyline_length(best) > raw_length * (1 + 1e-12)) best = raw.points;  // never longer than the walk (to rounding)
+      // As written, the optimisation can return a path longer than the walk it started from; gcr
+      // keeps it. Only plantsim's variant (gcr-shortcut) falls back to the walk then.
+      const bool longer = polyline_length(best) > raw_length * (1 + 1e-12);
+      if (shortcut_pass_ && longer) best = raw.points;
       out.status = PlanStatus::kOk;
       out.path = best;
       out.length = polyline_length(best);
-      char note[160];
-      std::snprintf(note, sizeof note, "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s", raw_length,
-                    raw.rotations, out.length, shortcut_pass_ ? " (with plantsim's shortcut pass)" : "");
+      char note[200];
+      std::snprintf(note, sizeof note, "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s%s", raw_length,
+                    raw.rotations, out.length, longer && !shortcut_pass_ ? " (longer than the walk, as written)" : "",
+                    shortcut_pass_ ? (longer ? " (plantsim's variant: the walk, shorter than the optimisation)"
+                                             : " (with plantsim's shortcut pass)")
+                                   : "");
       out.note = note;
     }
   }

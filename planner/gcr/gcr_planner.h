@@ -25,7 +25,8 @@ namespace plantsim::planner {
 
 class GcrPlanner : public Planner {
  public:
-  /// `shortcut_pass`: plantsim's extra pass after the document's optimisation ("gcr-shortcut").
+  /// `shortcut_pass`: plantsim's variant ("gcr-shortcut"): an extra shortcut pass after the
+  /// document's optimisation, and the raw walk kept when the optimisation came out longer.
   explicit GcrPlanner(const PlannerInput& input, bool shortcut_pass = false);
   std::string name() const override { return shortcut_pass_ ? "gcr-shortcut" : "gcr"; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
@@ -33,6 +34,8 @@ class GcrPlanner : public Planner {
   /// The document's gradient step from p towards goal: `unit` along the axis on which the goal
   /// is nearer, proportionally more along the other; the whole way when that is shorter.
   static Vec2 gradient_step(Vec2 p, Vec2 goal, double unit);
+  /// How deep the optimisation recurses into the walks between a rotation's ends.
+  static constexpr int kOptimisationDepth = 3;
 
   struct Walk {
     bool reached = false;
