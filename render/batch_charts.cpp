@@ -127,9 +127,10 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
     // At or above its gate by the point estimate, yet the interval's lower bound is below it: the
     // sample cannot tell that it meets the gate (10 of 10 against 0.9: lower bound 0.72).
     const bool unsure = r.gate >= 0 && !below && r.low < r.gate;
-    any_below = any_below || below;
-    any_unsure = any_unsure || unsure;
-    any_pass = any_pass || (!below && !unsure);
+    // Listed only when a bar is drawn (a rate of 0 draws none).
+    any_below = any_below || (below && rate > 0);
+    any_unsure = any_unsure || (unsure && rate > 0);
+    any_pass = any_pass || (!below && !unsure && rate > 0);
     const Rgb bar = below ? palette::kFailure : unsure ? palette::kOkabeOrange : palette::kCharger;
     if (rate > 0) c.pixel_line({a.px(0), y}, {a.px(rate), y}, row_h * 0.6, bar);
     c.pixel_line({a.px(r.low), y}, {a.px(r.high), y}, 1.6, palette::kAxis);
@@ -148,7 +149,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   if (any_below) legend.push_back({palette::kFailure, "success rate (below gate)"});
   legend.push_back({palette::kAxis, "Wilson 95 %"});
   if (any_gate) legend.push_back({palette::kOkabeBlack, "gate"});
-  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 230);
+  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 270);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;
