@@ -43,7 +43,7 @@ struct EkfParams {
   int min_informative_beams = 10;           ///< fewer beams with a mapped surface ahead: the scan is no evidence
   double constraint_sigma_m = 0.05;         ///< a direction the scan alone pins down less tightly is not updated
   double degraded_inlier_fraction = 0.3;    ///< a scan confirming less than this share of the beams the map
-                                            ///< predicts is a failed match
+                                            ///< predicts (those read short of their face left out) is a failed match
   double ok_position_sigma_m = 0.04;        ///< health ok only within this 1-sigma (10 cm is then 2.5 sigma)
   double lost_position_sigma_m = 0.5;       ///< beyond this 1-sigma the localisation is lost
   int nis_window = 15;                      ///< informative scans whose normalised innovations are summed
