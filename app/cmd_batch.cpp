@@ -33,11 +33,14 @@ struct GateOptions {
 
   void add_to(CLI::App* cmd) {
     cmd->add_option("--min-success", min_success,
-                    "Exit 1 when a configuration's success is below R (0..1); replaces the scenario's gate.min_success")
+                    "Exit 1 when a configuration's success is below R (0..1); replaces the "
+                    "scenario's gate.min_success")
         ->check(CLI::Range(0.0, 1.0));
-    cmd->add_option("--gate-statistic", statistic, "success_rate (default) or wilson_low (the 95 % Wilson lower bound)")
+    cmd->add_option("--gate-statistic", statistic,
+                    "success_rate (default) or wilson_low (the 95 % Wilson lower bound)")
         ->check(CLI::IsMember({"success_rate", "wilson_low"}));
-    cmd->add_option("--junit", junit, "Also write a JUnit XML report, one test case per configuration");
+    cmd->add_option("--junit", junit,
+                    "Also write a JUnit XML report, one test case per configuration");
   }
 
   // Before any episode runs: a report that could not be written would waste the batch. A
@@ -46,7 +49,8 @@ struct GateOptions {
     if (junit.empty()) return {};
     namespace fs = std::filesystem;
     const fs::path report = fs::path(junit).lexically_normal();
-    if (fs::path(report).remove_filename().lexically_normal() == (fs::path(out_dir) / "").lexically_normal()) {
+    if (fs::path(report).remove_filename().lexically_normal() ==
+        (fs::path(out_dir) / "").lexically_normal()) {
       if (fs::exists(fs::symlink_status(junit))) util::check_output_file(junit, "--junit");
       return {report.filename().string()};
     }
@@ -58,21 +62,23 @@ struct GateOptions {
   batch::GateOverride as_override() const {
     batch::GateOverride o;
     o.min_success = min_success;
-    if (!statistic.empty()) o.statistic = batch::parse_gate_statistic(statistic, "--gate-statistic");
+    if (!statistic.empty())
+      o.statistic = batch::parse_gate_statistic(statistic, "--gate-statistic");
     return o;
   }
 
-  int judge(const std::vector<std::string>& records, const batch::Gate& scenario_gate, const std::string& suite,
-            const char* who) const {
+  int judge(const std::vector<std::string>& records, const batch::Gate& scenario_gate,
+            const std::string& suite, const char* who) const {
     const batch::Gate gate = as_override().applied_to(scenario_gate);
     const auto verdicts = batch::judge_configurations(records, gate);
-    if (!junit.empty()) util::write_file_atomically(junit, batch::junit_xml(suite, verdicts, gate.statistic));
+    if (!junit.empty())
+      util::write_file_atomically(junit, batch::junit_xml(suite, verdicts, gate.statistic));
     int gated = 0, failed = 0;
     for (const auto& v : verdicts) gated += v.threshold.has_value(), failed += !v.passed;
     if (gated == 0) return kExitOk;
     std::cerr << batch::gate_failures_text(verdicts, gate.statistic);
-    std::cout << who << ": gate " << (failed ? "FAILED" : "passed") << ": " << gated - failed << " of " << gated
-              << " gated configurations at or above their threshold\n";
+    std::cout << who << ": gate " << (failed ? "FAILED" : "passed") << ": " << gated - failed
+              << " of " << gated << " gated configurations at or above their threshold\n";
     return failed ? kExitFailed : kExitOk;
   }
 };
@@ -80,7 +86,9 @@ struct GateOptions {
 }  // namespace
 
 std::function<int()> add_batch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("batch", "Run a scenario's episodes on all cores; resumable, splittable into shards, a gate for CI");
+  auto* cmd = app.add_subcommand(
+      "batch",
+      "Run a scenario's episodes on all cores; resumable, splittable into shards, a gate for CI");
   struct Options {
     std::string scenario, out, shard = "0/1", episode;
     int threads = 0;
@@ -91,28 +99,36 @@ std::function<int()> add_batch_command(CLI::App& app) {
   cmd->add_option("scenario", opt->scenario, "Scenario YAML (docs/batch.md)")->required();
   cmd->add_option("--out", opt->out, "Output folder (default results/batch_<scenario name>)");
   cmd->add_option("--shard", opt->shard, "Run only shard i of n (i/n, from 0)");
-  cmd->add_option("--threads", opt->threads, "Worker threads (default: one per core)")->check(CLI::Range(0, 256));
+  cmd->add_option("--threads", opt->threads, "Worker threads (default: one per core)")
+      ->check(CLI::Range(0, 256));
   cmd->add_flag("--quiet", opt->quiet, "No progress bar");
   cmd->add_flag("--no-figures", opt->no_figures, "Skip the report's figures");
   cmd->add_flag("--fresh", opt->fresh, "Discard the folder's earlier episodes instead of resuming");
-  cmd->add_flag("--check", opt->check, "Validate the scenario and count its episodes; run and write nothing");
+  cmd->add_flag("--check", opt->check,
+                "Validate the scenario and count its episodes; run and write nothing");
   cmd->add_option("--episode", opt->episode,
-                  "Run only this episode (its id in episodes.jsonl) and write its run folder (figures, replay)");
+                  "Run only this episode (its id in episodes.jsonl) and write its run folder "
+                  "(figures, replay)");
   opt->gate.add_to(cmd);
   return [opt, cmd]() {
     if (!opt->episode.empty()) {
       // One episode, exactly as the batch runs it, with the outputs of `plantsim run`.
       const batch::ReplayedEpisode e = batch::replay_batch_episode(opt->scenario, opt->episode);
-      util::StagedFolder staged(
-          opt->out.empty() ? "results/episode_" + worlds::file_name_component(opt->episode) : opt->out, run_folder_names());
-      write_run_folder(e.plant, e.result, e.config, staged.path(), command_line(cmd), "episode " + e.id, false);
+      util::StagedFolder staged(opt->out.empty()
+                                    ? "results/episode_" + worlds::file_name_component(opt->episode)
+                                    : opt->out,
+                                run_folder_names());
+      write_run_folder(e.plant, e.result, e.config, staged.path(), command_line(cmd),
+                       "episode " + e.id, false);
       staged.commit();
       std::cout << e.id << ": " << e.result.status << " -> " << staged.destination() << "\n";
       return e.result.succeeded() ? kExitOk : kExitFailed;
     }
     batch::RunOptions o;
     std::tie(o.shard_index, o.shard_count) = parse_shard(opt->shard);
-    o.out_dir = opt->out.empty() ? "results/batch_" + std::filesystem::path(opt->scenario).stem().string() : opt->out;
+    o.out_dir = opt->out.empty()
+                    ? "results/batch_" + std::filesystem::path(opt->scenario).stem().string()
+                    : opt->out;
     o.own_files = opt->gate.check_outputs(o.out_dir);
     o.threads = opt->threads;
     o.progress = !opt->quiet;
@@ -122,20 +138,23 @@ std::function<int()> add_batch_command(CLI::App& app) {
     o.gate = opt->gate.as_override();
     const batch::BatchOutcome r = batch::run_batch(opt->scenario, o);
     if (opt->check) {
-      std::cout << "batch: " << opt->scenario << " is valid: " << r.episodes << " episodes in this shard, scenario "
-                << r.scenario_fingerprint << "\n";
+      std::cout << "batch: " << opt->scenario << " is valid: " << r.episodes
+                << " episodes in this shard, scenario " << r.scenario_fingerprint << "\n";
       return kExitOk;
     }
-    std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, " << r.skipped
-              << " already done; " << r.succeeded << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions << " collisions -> "
-              << o.out_dir << "\n";
+    std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, "
+              << r.skipped << " already done; " << r.succeeded
+              << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
+              << " collisions -> " << o.out_dir << "\n";
     return opt->gate.judge(batch::read_episode_records(o.out_dir), r.gate,
                            std::filesystem::path(opt->scenario).stem().string(), "batch");
   };
 }
 
 std::function<int()> add_merge_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("merge", "Join shard folders of one batch into one (refuses mixed scenarios and missing shards)");
+  auto* cmd = app.add_subcommand(
+      "merge",
+      "Join shard folders of one batch into one (refuses mixed scenarios and missing shards)");
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
@@ -143,9 +162,12 @@ std::function<int()> add_merge_command(CLI::App& app) {
     GateOptions gate;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("dirs", opt->dirs, "Shard output folders")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("dirs", opt->dirs, "Shard output folders")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Merged output folder")->required();
-  cmd->add_flag("--allow-partial", opt->allow_partial, "Merge even when some of the scenario's episodes are missing");
+  cmd->add_flag("--allow-partial", opt->allow_partial,
+                "Merge even when some of the scenario's episodes are missing");
   opt->gate.add_to(cmd);
   return [opt]() {
     batch::MergeOptions m;
@@ -153,7 +175,8 @@ std::function<int()> add_merge_command(CLI::App& app) {
     m.allow_partial = opt->allow_partial;
     m.gate = opt->gate.as_override();
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
-    std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out << "\n";
+    std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out
+              << "\n";
     return opt->gate.judge(batch::read_episode_records(opt->out), r.gate, "merge", "merge");
   };
 }

@@ -11,19 +11,25 @@
 namespace plantsim::app {
 
 std::function<int()> add_bench_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("bench", "Benchmarks, one JSON line per case with a same-run baseline");
+  auto* cmd =
+      app.add_subcommand("bench", "Benchmarks, one JSON line per case with a same-run baseline");
   struct Options {
     std::string target;
     bool quick = false;
     std::string chart;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("target", opt->target, "What to measure")->required()->check(CLI::IsMember({"planner", "sim", "render", "batch"}));
+  cmd->add_option("target", opt->target, "What to measure")
+      ->required()
+      ->check(CLI::IsMember({"planner", "sim", "render", "batch"}));
   cmd->add_flag("--quick", opt->quick, "Fewer repetitions and no slow baselines");
-  cmd->add_option("--chart", opt->chart, "planner: also time the grid and draw the log-log time chart into this PNG");
+  cmd->add_option("--chart", opt->chart,
+                  "planner: also time the grid and draw the log-log time chart into this PNG");
   return [opt]() {
-    // The shared data from --data (given before or after the subcommand), or found beside the checkout.
-    const std::string data = std::filesystem::absolute(util::data_dir()).lexically_normal().string();
+    // The shared data from --data (given before or after the subcommand), or found beside the
+    // checkout.
+    const std::string data =
+        std::filesystem::absolute(util::data_dir()).lexically_normal().string();
     if (!opt->chart.empty() && opt->target != "planner")
       throw std::invalid_argument("--chart is for `bench planner` only");
     if (opt->target == "sim") return bench::run_sim_bench(data, opt->quick);

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "worlds/known_keys.h"
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
 #include "render/comparison_figure.h"
@@ -15,6 +14,7 @@
 #include "render/report.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::app {
@@ -22,7 +22,8 @@ namespace plantsim::app {
 constexpr const char* kFieldEntry = "potential-field";
 
 std::function<int()> add_compare_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
+  auto* cmd =
+      app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
   struct Options {
     std::string scen;
     int query = 0;
@@ -35,13 +36,19 @@ std::function<int()> add_compare_command(CLI::App& app) {
     bool plan_only = false;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("world", opt->world, "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")->required();
-  cmd->add_option("--scen", opt->scen, "For a MovingAI .map: the .scen file whose query gives the start and the charger");
-  cmd->add_option("--query", opt->query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
+  cmd->add_option("world", opt->world,
+                  "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
+      ->required();
+  cmd->add_option(
+      "--scen", opt->scen,
+      "For a MovingAI .map: the .scen file whose query gives the start and the charger");
+  cmd->add_option("--query", opt->query, "That query's number, from 0")
+      ->check(CLI::Range(0, 100000000));
   std::vector<std::string> choices = planner::planner_names();
   choices.push_back(kFieldEntry);
   cmd->add_option("--planners", opt->planners,
-                  "Planners to compare (comma separated); potential-field drives by seed 001's field instead")
+                  "Planners to compare (comma separated); potential-field drives by seed 001's "
+                  "field instead")
       ->delimiter(',')
       ->check(CLI::IsMember(choices));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>_compare)");
@@ -54,9 +61,12 @@ std::function<int()> add_compare_command(CLI::App& app) {
     poses.movingai_scen = opt->scen;
     poses.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, poses);
-    const sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare" : opt->out,
-                              {"comparison.png", "comparison.json", "report.html"});
+    const sim::EpisodeConfig config =
+        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    util::StagedFolder staged(
+        opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare"
+                         : opt->out,
+        {"comparison.png", "comparison.json", "report.html"});
     const std::string& out_dir = staged.path();
     std::vector<render::ComparisonPanel> panels;
     render::Report report;
@@ -73,7 +83,8 @@ std::function<int()> add_compare_command(CLI::App& app) {
         const std::string ext = std::filesystem::path(opt->world).extension().string();
         const bool ros_map = ext == ".yaml" || ext == ".yml";
         const planner::PlanResult r =
-            p->plan(world.start.position(), ros_map ? worlds::staging_pose(world).position() : world.charger.position());
+            p->plan(world.start.position(),
+                    ros_map ? worlds::staging_pose(world).position() : world.charger.position());
         panel.run.planner = name;
         panel.run.status = std::string(planner::to_string(r.status));
         panel.run.plan = r.path;
@@ -92,8 +103,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
         if (opt->graph) panel.graph_edges = p->graph_edges();
       }
       report.rows.push_back(metric_row(panel.run, world.name));
-      std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m << " m, plan "
-                << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms << " ms\n";
+      std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m
+                << " m, plan " << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms
+                << " ms\n";
       panels.push_back(std::move(panel));
     }
     const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;
@@ -122,8 +134,10 @@ std::function<int()> add_compare_command(CLI::App& app) {
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};
     report.files = {"comparison.json"};
-    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position (the staging pose on ROS maps); nothing driven."
-                                  : "Each planner plans to the staging pose; the robot drives and docks in the simulation.";
+    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position (the "
+                                    "staging pose on ROS maps); nothing driven."
+                                  : "Each planner plans to the staging pose; the robot drives and "
+                                    "docks in the simulation.";
     render::write_report(report, out_dir + "/report.html");
     staged.commit();
     return all_ok ? kExitOk : kExitFailed;

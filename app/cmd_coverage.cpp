@@ -6,7 +6,6 @@
 // uncovered (or, with --drive, does not dock).
 #include <filesystem>
 #include <iostream>
-
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -24,13 +23,15 @@ namespace plantsim::app {
 namespace {
 
 // Reachable cells the robot's centre passed through.
-double driven_coverage(const planner::CoverageGrid& g, const std::vector<geom::Vec2>& trajectory, planner::Cell start) {
+double driven_coverage(const planner::CoverageGrid& g, const std::vector<geom::Vec2>& trajectory,
+                       planner::Cell start) {
   const std::vector<bool> reach = g.reachable(start);
   std::vector<bool> seen(reach.size(), false);
   for (const geom::Vec2& p : trajectory)
     if (const auto c = g.cell_at(p)) seen[g.index(*c)] = true;
   int reachable = 0, covered = 0;
-  for (std::size_t i = 0; i < reach.size(); ++i) reachable += reach[i], covered += reach[i] && seen[i];
+  for (std::size_t i = 0; i < reach.size(); ++i)
+    reachable += reach[i], covered += reach[i] && seen[i];
   return reachable ? static_cast<double>(covered) / reachable : 0.0;
 }
 
@@ -43,7 +44,8 @@ std::string percent(double share) {
 }  // namespace
 
 std::function<int()> add_coverage_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("coverage", "Seed 004: full-coverage methods compared on one work area");
+  auto* cmd =
+      app.add_subcommand("coverage", "Seed 004: full-coverage methods compared on one work area");
   struct Options {
     std::string world, out, config, params;
     double cell_m = 0;
@@ -52,17 +54,24 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   cmd->add_option("world", opt->world, "World file")->required();
   cmd->add_option("--out", opt->out, "Output folder (default results/<world>_coverage)");
-  cmd->add_option("--params", opt->params, "Coverage parameters (JSON; defaults: configs/coverage_params.json)");
-  cmd->add_option("--cell", opt->cell_m, "Cell size (m), over the parameters' cell_m")->check(CLI::Range(0.2, 100.0));
+  cmd->add_option("--params", opt->params,
+                  "Coverage parameters (JSON; defaults: configs/coverage_params.json)");
+  cmd->add_option("--cell", opt->cell_m, "Cell size (m), over the parameters' cell_m")
+      ->check(CLI::Range(0.2, 100.0));
   cmd->add_option("--config", opt->config, "Episode parameters for --drive (JSON)");
   cmd->add_flag("--drive", opt->drive, "Also sweep and dock in the simulation");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
-    planner::CoverageParams params = opt->params.empty() ? planner::CoverageParams{} : planner::load_coverage_params(opt->params);
+    sim::EpisodeConfig config =
+        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    planner::CoverageParams params = opt->params.empty()
+                                         ? planner::CoverageParams{}
+                                         : planner::load_coverage_params(opt->params);
     if (opt->cell_m > 0) params.cell_m = opt->cell_m;
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_coverage" : opt->out,
-                              {"coverage.png", "coverage.json", "report.html"});
+    util::StagedFolder staged(
+        opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_coverage"
+                         : opt->out,
+        {"coverage.png", "coverage.json", "report.html"});
     const std::string& out_dir = staged.path();
 
     std::vector<CoverageRun> runs = plan_coverage_methods(world, params);
@@ -73,10 +82,19 @@ std::function<int()> add_coverage_command(CLI::App& app) {
     summary["parameters"] = nlohmann::ordered_json::parse(planner::coverage_params_json(params));
     bool all_covered = true;
     render::Report report;
-    report.headers = {"method", "regions", "coverage (%)", "repetition (%)", "turns", "dead ends", "path (m)",
-                      "how the order was found", "driven coverage (%)", "episode"};
+    report.headers = {"method",
+                      "regions",
+                      "coverage (%)",
+                      "repetition (%)",
+                      "turns",
+                      "dead ends",
+                      "path (m)",
+                      "how the order was found",
+                      "driven coverage (%)",
+                      "episode"};
     for (CoverageRun& run : runs) {
-      render::CoveragePanel panel{run.method, &run.planner->grid(), run.planner->last_plan(), {}, ""};
+      render::CoveragePanel panel{
+          run.method, &run.planner->grid(), run.planner->last_plan(), {}, ""};
       const planner::CoverageMetrics& m = panel.plan.metrics;
       all_covered = all_covered && run.planned() && m.covered_cells == m.reachable_cells;
       nlohmann::ordered_json j = coverage_plan_json(run);
@@ -85,12 +103,17 @@ std::function<int()> add_coverage_command(CLI::App& app) {
         const sim::EpisodeResult e = sim::run_episode(world, *run.planner, config);
         for (const auto& s : e.trajectory) panel.driven.push_back(s.truth.position());
         const auto start_cell = run.planner->grid().nearest_free(world.start.position());
-        const double dc = start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
+        const double dc =
+            start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
         char buf[160];
-        std::snprintf(buf, sizeof buf, "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions", e.status.c_str(),
-                      e.time_s, 100 * dc, e.collisions);
+        std::snprintf(buf, sizeof buf,
+                      "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
+                      e.status.c_str(), e.time_s, 100 * dc, e.collisions);
         panel.extra = buf;
-        j["driven"] = {{"status", e.status}, {"time_s", e.time_s}, {"driven_coverage", dc}, {"collisions", e.collisions},
+        j["driven"] = {{"status", e.status},
+                       {"time_s", e.time_s},
+                       {"driven_coverage", dc},
+                       {"collisions", e.collisions},
                        {"driven_length_m", e.driven_length_m}};
         std::snprintf(buf, sizeof buf, "%.1f", 100 * dc);
         driven = buf;
@@ -102,32 +125,46 @@ std::function<int()> add_coverage_command(CLI::App& app) {
       std::snprintf(f[0], 32, "%.2f", 100 * m.coverage);
       std::snprintf(f[1], 32, "%.2f", 100 * m.repetition);
       std::snprintf(f[2], 32, "%.1f", m.length_m);
-      report.rows.push_back({run.method, std::to_string(panel.plan.regions.size()), run.planned() ? f[0] : "-",
-                             run.planned() ? f[1] : "-", std::to_string(m.turns), std::to_string(m.dead_ends), f[2],
+      report.rows.push_back({run.method, std::to_string(panel.plan.regions.size()),
+                             run.planned() ? f[0] : "-", run.planned() ? f[1] : "-",
+                             std::to_string(m.turns), std::to_string(m.dead_ends), f[2],
                              render::describe_order(panel.plan), driven, status});
-      std::cout << run.method << ": " << run.result.note << (panel.extra.empty() ? "" : "; " + panel.extra) << "\n";
+      std::cout << run.method << ": " << run.result.note
+                << (panel.extra.empty() ? "" : "; " + panel.extra) << "\n";
       panels.push_back(std::move(panel));
     }
     // The document's two numbers beside ours: its map is not published, so this is the same
     // measure on this work area, not the same experiment.
     const planner::CoveragePlan& chnn = runs[0].planner->last_plan();
     const planner::CoveragePlan& cells = runs.back().planner->last_plan();
-    summary["document"] = {{"repetition_chnn", kDocumentRepetitionChnn}, {"repetition_cells", kDocumentRepetitionCells}};
-    const std::string subtitle = "Repetition, document (its own 40 x 20 m map) vs here: CHNN " +
-                                 percent(kDocumentRepetitionChnn) + " vs " +
-                                 (chnn.ok ? percent(chnn.metrics.repetition) : std::string("no plan")) + "; cell by cell " +
-                                 percent(kDocumentRepetitionCells) + " vs " + percent(cells.metrics.repetition);
-    const std::string title = world.name + ": full coverage by sub-regions (CHNN, Potts, proven optimum, greedy) and cell by cell";
-    render::write_png(render::draw_coverage(world, panels, title, subtitle), out_dir + "/coverage.png");
+    summary["document"] = {{"repetition_chnn", kDocumentRepetitionChnn},
+                           {"repetition_cells", kDocumentRepetitionCells}};
+    const std::string subtitle =
+        "Repetition, document (its own 40 x 20 m map) vs here: CHNN " +
+        percent(kDocumentRepetitionChnn) + " vs " +
+        (chnn.ok ? percent(chnn.metrics.repetition) : std::string("no plan")) + "; cell by cell " +
+        percent(kDocumentRepetitionCells) + " vs " + percent(cells.metrics.repetition);
+    const std::string title =
+        world.name +
+        ": full coverage by sub-regions (CHNN, Potts, proven optimum, greedy) and cell by cell";
+    render::write_png(render::draw_coverage(world, panels, title, subtitle),
+                      out_dir + "/coverage.png");
     util::write_file_atomically(out_dir + "/coverage.json", summary.dump(2) + "\n");
     report.title = title;
     report.command = command_line(cmd);
-    report.figures = {{"coverage.png", "Cells by visits (blue once, orange twice, purple more), sub-regions numbered in visiting order, "
-                                       "green dots where each sweep starts. " + subtitle}};
+    report.figures = {{"coverage.png",
+                       "Cells by visits (blue once, orange twice, purple more), sub-regions "
+                       "numbered in visiting order, "
+                       "green dots where each sweep starts. " +
+                           subtitle}};
     report.files = {"coverage.json"};
-    report.notes = "Repetition = visits beyond the first / reachable cells, the way from the start to the charger's cell "
-                   "included; order cost = sum of D = w1 cells + w2 turns from each sweep's end to the next sweep's start and "
-                   "through it (w1 = 0.8, w2 = 0.2, the document's). docs/seeds.md says what is the document's and what is not.";
+    report.notes =
+        "Repetition = visits beyond the first / reachable cells, the way from the start to the "
+        "charger's cell "
+        "included; order cost = sum of D = w1 cells + w2 turns from each sweep's end to the next "
+        "sweep's start and "
+        "through it (w1 = 0.8, w2 = 0.2, the document's). docs/seeds.md says what is the "
+        "document's and what is not.";
     render::write_report(report, out_dir + "/report.html");
     staged.commit();
     return all_covered ? kExitOk : kExitFailed;

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
-
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -45,7 +44,8 @@ double mean(const std::vector<double>& v) {
 }  // namespace
 
 std::function<int()> add_coverage_study_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("coverage-study", "Seed 004's experiment on generated 40 x 20 m work areas");
+  auto* cmd = app.add_subcommand("coverage-study",
+                                 "Seed 004's experiment on generated 40 x 20 m work areas");
   struct Options {
     int maps = 15;
     std::vector<double> shares{0.1, 0.25};
@@ -54,43 +54,53 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("--maps", opt->maps, "Maps per obstacle share")->check(CLI::Range(1, 1000));
-  cmd->add_option("--shares", opt->shares, "Shares of blocked cells")->check(CLI::Range(0.0, 0.5))->delimiter(',');
+  cmd->add_option("--shares", opt->shares, "Shares of blocked cells")
+      ->check(CLI::Range(0.0, 0.5))
+      ->delimiter(',');
   cmd->add_option("--seed", opt->seed, "Seed of the first map");
   cmd->add_option("--params", opt->params, "Coverage parameters (JSON)");
   cmd->add_option("--out", opt->out, "Output folder");
   return [opt, cmd]() {
-    const planner::CoverageParams params =
-        opt->params.empty() ? planner::CoverageParams{} : planner::load_coverage_params(opt->params);
+    const planner::CoverageParams params = opt->params.empty()
+                                               ? planner::CoverageParams{}
+                                               : planner::load_coverage_params(opt->params);
     util::StagedFolder staged(opt->out, {"study.png", "study.json", "report.html"});
     nlohmann::ordered_json summary;
     summary["command"] = command_line(cmd);
     summary["parameters"] = nlohmann::ordered_json::parse(planner::coverage_params_json(params));
-    summary["document"] = {{"repetition_chnn", kDocumentRepetitionChnn}, {"repetition_cells", kDocumentRepetitionCells}};
+    summary["document"] = {{"repetition_chnn", kDocumentRepetitionChnn},
+                           {"repetition_cells", kDocumentRepetitionCells}};
     std::vector<render::StudyShare> figure_rows;
     std::vector<std::string> verdicts{
-        "Document (its own map, not published): repetition CHNN 1.72 %, cell by cell 2.87 %; on a more crowded map the CHNN has "
+        "Document (its own map, not published): repetition CHNN 1.72 %, cell by cell 2.87 %; on a "
+        "more crowded map the CHNN has "
         "fewer dead zones and less repetition (its Table 1)."};
     render::Report report;
-    report.headers = {"blocked", "method", "maps planned", "mean repetition (%)", "mean turns", "mean dead ends", "note"};
+    report.headers = {"blocked",    "method",         "maps planned", "mean repetition (%)",
+                      "mean turns", "mean dead ends", "note"};
     bool all_covered = true;
     for (double share : opt->shares) {
       render::StudyShare row{share, {}};
-      for (const std::string& name : coverage_method_names()) row.methods.push_back({name, method_colour(name), {}, {}, {}});
-      int chnn_below_cells = 0, chnn_fewer_dead_ends = 0, chnn_fewer_turns = 0, chnn_planned = 0, valid = 0, restarts = 0,
-          proven = 0, compared = 0;
+      for (const std::string& name : coverage_method_names())
+        row.methods.push_back({name, method_colour(name), {}, {}, {}});
+      int chnn_below_cells = 0, chnn_fewer_dead_ends = 0, chnn_fewer_turns = 0, chnn_planned = 0,
+          valid = 0, restarts = 0, proven = 0, compared = 0;
       nlohmann::ordered_json maps = nlohmann::ordered_json::array();
       for (int k = 0; k < opt->maps; ++k) {
-        const worlds::World world = worlds::cell_block_world({share, opt->seed + static_cast<std::uint64_t>(k)});
+        const worlds::World world =
+            worlds::cell_block_world({share, opt->seed + static_cast<std::uint64_t>(k)});
         std::vector<CoverageRun> runs = plan_coverage_methods(world, params);
         nlohmann::ordered_json m;
         m["world"] = world.name;
         for (std::size_t i = 0; i < runs.size(); ++i) {
           const planner::CoveragePlan& p = runs[i].planner->last_plan();
           const double nan = std::numeric_limits<double>::quiet_NaN();
-          row.methods[i].repetition_percent.push_back(runs[i].planned() ? 100 * p.metrics.repetition : nan);
+          row.methods[i].repetition_percent.push_back(runs[i].planned() ? 100 * p.metrics.repetition
+                                                                        : nan);
           row.methods[i].turns.push_back(runs[i].planned() ? p.metrics.turns : nan);
           row.methods[i].dead_ends.push_back(runs[i].planned() ? p.metrics.dead_ends : nan);
-          all_covered = all_covered && (!runs[i].planned() || p.metrics.covered_cells == p.metrics.reachable_cells);
+          all_covered = all_covered && (!runs[i].planned() ||
+                                        p.metrics.covered_cells == p.metrics.reachable_cells);
           m["methods"][runs[i].method] = coverage_plan_json(runs[i]);
         }
         const planner::CoveragePlan& chnn = runs.front().planner->last_plan();
@@ -104,23 +114,28 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
           chnn_fewer_turns += chnn.metrics.turns < cells.metrics.turns;
         }
         maps.push_back(m);
-        std::cout << world.name << ": repetition chnn " << (runs.front().planned() ? 100 * chnn.metrics.repetition : -1)
-                  << " %, exact " << 100 * runs[2].planner->last_plan().metrics.repetition << " %, cells "
+        std::cout << world.name << ": repetition chnn "
+                  << (runs.front().planned() ? 100 * chnn.metrics.repetition : -1) << " %, exact "
+                  << 100 * runs[2].planner->last_plan().metrics.repetition << " %, cells "
                   << 100 * cells.metrics.repetition << " %\n";
       }
       char line[600];
-      std::snprintf(line, sizeof line,
-                    "Here, %.0f %% of cells blocked, %d maps: mean repetition CHNN %.2f %%, Potts %.2f %%, optimum %.2f %%, "
-                    "greedy %.2f %%, cells %.2f %%;",
-                    100 * share, opt->maps, mean(row.methods[0].repetition_percent), mean(row.methods[1].repetition_percent),
-                    mean(row.methods[2].repetition_percent), mean(row.methods[3].repetition_percent),
-                    mean(row.methods[4].repetition_percent));
+      std::snprintf(
+          line, sizeof line,
+          "Here, %.0f %% of cells blocked, %d maps: mean repetition CHNN %.2f %%, Potts %.2f %%, "
+          "optimum %.2f %%, "
+          "greedy %.2f %%, cells %.2f %%;",
+          100 * share, opt->maps, mean(row.methods[0].repetition_percent),
+          mean(row.methods[1].repetition_percent), mean(row.methods[2].repetition_percent),
+          mean(row.methods[3].repetition_percent), mean(row.methods[4].repetition_percent));
       verdicts.push_back(line);
       std::cout << line << "\n";
       std::snprintf(line, sizeof line,
-                    "    the CHNN repeats less than cells on %d of %d maps, has fewer dead ends on %d, fewer turns on %d; "
+                    "    the CHNN repeats less than cells on %d of %d maps, has fewer dead ends on "
+                    "%d, fewer turns on %d; "
                     "valid order in %d of %d restarts; optimum proven on %d of %d maps.",
-                    chnn_below_cells, compared, chnn_fewer_dead_ends, chnn_fewer_turns, valid, restarts, proven, opt->maps);
+                    chnn_below_cells, compared, chnn_fewer_dead_ends, chnn_fewer_turns, valid,
+                    restarts, proven, opt->maps);
       verdicts.push_back(line);
       std::cout << line << "\n";
       nlohmann::ordered_json s;
@@ -137,11 +152,16 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
         std::snprintf(f[1], 32, "%.1f", mean(m.turns));
         std::snprintf(f[2], 32, "%.1f", mean(m.dead_ends));
         std::string note;
-        if (m.name == "coverage-chnn") note = std::to_string(valid) + " of " + std::to_string(restarts) + " restarts valid";
-        if (m.name == "coverage-exact") note = "proven on " + std::to_string(proven) + " of " + std::to_string(opt->maps) + " maps";
+        if (m.name == "coverage-chnn")
+          note = std::to_string(valid) + " of " + std::to_string(restarts) + " restarts valid";
+        if (m.name == "coverage-exact")
+          note =
+              "proven on " + std::to_string(proven) + " of " + std::to_string(opt->maps) + " maps";
         char b[16];
         std::snprintf(b, sizeof b, "%.0f %%", 100 * share);
-        report.rows.push_back({b, m.name, std::to_string(planned) + " of " + std::to_string(opt->maps), f[0], f[1], f[2], note});
+        report.rows.push_back({b, m.name,
+                               std::to_string(planned) + " of " + std::to_string(opt->maps), f[0],
+                               f[1], f[2], note});
       }
       s["chnn_repeats_less_than_cells"] = chnn_below_cells;
       s["chnn_fewer_dead_ends_than_cells"] = chnn_fewer_dead_ends;
@@ -154,8 +174,11 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
       summary["shares"].push_back(s);
       figure_rows.push_back(std::move(row));
     }
-    const std::string title = "Seed 004's experiment on generated 40 x 20 m work areas, 2 m cells: every method on every map";
-    render::write_png(render::draw_coverage_study(figure_rows, title, verdicts), staged.path() + "/study.png");
+    const std::string title =
+        "Seed 004's experiment on generated 40 x 20 m work areas, 2 m cells: every method on every "
+        "map";
+    render::write_png(render::draw_coverage_study(figure_rows, title, verdicts),
+                      staged.path() + "/study.png");
     util::write_file_atomically(staged.path() + "/study.json", summary.dump(2) + "\n");
     report.title = title;
     report.command = command_line(cmd);
@@ -163,9 +186,12 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
     for (const std::string& v : verdicts) caption += v + " ";
     report.figures = {{"study.png", caption}};
     report.files = {"study.json"};
-    report.notes = "Maps: worlds/cell_block_world.h (blocks of 1-3 by 1-2 cells until the share is blocked; start bottom-left, "
-                   "charger top-left). Repetition counts the whole path from the start to the charger's cell. docs/seeds.md "
-                   "discusses where the numbers match the document and where not.";
+    report.notes =
+        "Maps: worlds/cell_block_world.h (blocks of 1-3 by 1-2 cells until the share is blocked; "
+        "start bottom-left, "
+        "charger top-left). Repetition counts the whole path from the start to the charger's cell. "
+        "docs/seeds.md "
+        "discusses where the numbers match the document and where not.";
     render::write_report(report, staged.path() + "/report.html");
     staged.commit();
     return all_covered ? kExitOk : kExitFailed;

@@ -18,7 +18,8 @@ std::function<int()> add_planners_command(CLI::App& app) {
 }
 
 std::function<int()> add_config_command(CLI::App& app) {
-  app.add_subcommand("config", "Print every episode parameter with its default, as a --config file");
+  app.add_subcommand("config",
+                     "Print every episode parameter with its default, as a --config file");
   return []() {
     std::cout << sim::default_config_json();
     return kExitOk;

@@ -9,9 +9,10 @@
 namespace plantsim::app {
 
 std::function<int()> add_nav2_import_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("nav2-import",
-                                 "Read a Nav2 parameter file (Regulated Pure Pursuit, opennav_docking, costmap footprint) "
-                                 "into a plantsim config; lists every parameter mapped and not mapped (docs/nav2.md)");
+  auto* cmd = app.add_subcommand(
+      "nav2-import",
+      "Read a Nav2 parameter file (Regulated Pure Pursuit, opennav_docking, costmap footprint) "
+      "into a plantsim config; lists every parameter mapped and not mapped (docs/nav2.md)");
   auto params = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   cmd->add_option("params", *params, "Nav2 parameter YAML (e.g. nav2_params.yaml)")->required();
@@ -20,8 +21,10 @@ std::function<int()> add_nav2_import_command(CLI::App& app) {
     const Nav2Import im = import_nav2_params(*params);
     const std::string text = im.config.dump(2) + "\n";
     std::cerr << nav2_report(im);
-    if (out->empty()) std::cout << text;
-    else util::write_file_atomically(*out, text);
+    if (out->empty())
+      std::cout << text;
+    else
+      util::write_file_atomically(*out, text);
     return kExitOk;
   };
 }

@@ -1,16 +1,14 @@
 // `plantsim plan WORLD`: plan from the world's start to its charger and print JSON.
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
-
-#include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "planner/planner.h"
 #include "planner/grid/grid_astar.h"
 #include "planner/mesh/interval_planner.h"
+#include "planner/planner.h"
 #include "worlds/grid_map.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -32,8 +30,9 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
     if (scenarios[i].map_width != map.width || scenarios[i].map_height != map.height)
       throw worlds::WorldError(scen_path, "query " + std::to_string(i),
                                "a query for a " + std::to_string(scenarios[i].map_width) + " x " +
-                                   std::to_string(scenarios[i].map_height) + " map, but " + map_path + " is " +
-                                   std::to_string(map.width) + " x " + std::to_string(map.height));
+                                   std::to_string(scenarios[i].map_height) + " map, but " +
+                                   map_path + " is " + std::to_string(map.width) + " x " +
+                                   std::to_string(map.height));
   std::unique_ptr<planner::Planner> vg;
   if (planner_name != "grid") {
     planner::PlannerInput in;
@@ -48,7 +47,8 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
   for (const auto& s : scenarios) {
     double length = -1;
     if (vg) {
-      const auto r = vg->plan(worlds::lattice_point(map, s.sx, s.sy), worlds::lattice_point(map, s.gx, s.gy));
+      const auto r =
+          vg->plan(worlds::lattice_point(map, s.sx, s.sy), worlds::lattice_point(map, s.gx, s.gy));
       if (r.status == planner::PlanStatus::kOk) length = r.length;
       if (r.status == planner::PlanStatus::kSearchLimit) {
         std::fprintf(stderr, "plantsim: plan: query %d %d %d %d: %s\n", s.sx, s.sy, s.gx, s.gy,
@@ -57,8 +57,9 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
       }
     } else {
       const auto r = planner::grid_astar(
-          map.width, map.height, [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx,
-          s.sy, s.gx, s.gy);
+          map.width, map.height,
+          [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx, s.sy, s.gx,
+          s.gy);
       if (r.found) length = r.length;
     }
     std::printf("%d %d %d %d %.9g\n", s.sx, s.sy, s.gx, s.gy, length);
@@ -69,7 +70,8 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
 }  // namespace
 
 std::function<int()> add_plan_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("plan", "Plan a path from the start to the charger; JSON on stdout");
+  auto* cmd =
+      app.add_subcommand("plan", "Plan a path from the start to the charger; JSON on stdout");
   struct Options {
     std::string world;
     std::string planner = "vg";
@@ -82,9 +84,11 @@ std::function<int()> add_plan_command(CLI::App& app) {
     std::string map, scen, goal;
   };
   auto opt = std::make_shared<Options>();
-  auto* world_opt = cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)");
+  auto* world_opt =
+      cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)");
   auto* map_opt = cmd->add_option("--map", opt->map, "MovingAI .map file (with --scen)");
-  auto* scen_opt = cmd->add_option("--scen", opt->scen, "MovingAI .scen file: one output line per query");
+  auto* scen_opt =
+      cmd->add_option("--scen", opt->scen, "MovingAI .scen file: one output line per query");
   map_opt->needs(scen_opt);
   scen_opt->needs(map_opt);
   world_opt->excludes(map_opt);
@@ -92,26 +96,34 @@ std::function<int()> add_plan_command(CLI::App& app) {
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
       ->check(CLI::Range(1, 16));
   cmd->add_option("--inflation", opt->inflation,
-                  "square (rectangles grown to rectangles, the document's; see --corner-steps) or round (grown by a "
-                  "disk, rounded corners: the disk robot's true optimum, segments and arcs; planner vg-round)")
+                  "square (rectangles grown to rectangles, the document's; see --corner-steps) or "
+                  "round (grown by a "
+                  "disk, rounded corners: the disk robot's true optimum, segments and arcs; "
+                  "planner vg-round)")
       ->check(CLI::IsMember({"square", "round"}));
   cmd->add_option("--goal", opt->goal,
-                  "docked (the charger's docked position; default for world files) or staging (the staging pose "
-                  "`run` plans to; default for ROS maps, whose charger stands against a wall inside the planning inflation)")
+                  "docked (the charger's docked position; default for world files) or staging (the "
+                  "staging pose "
+                  "`run` plans to; default for ROS maps, whose charger stands against a wall "
+                  "inside the planning inflation)")
       ->check(CLI::IsMember({"docked", "staging"}));
   cmd->add_option("--landmarks", opt->landmarks,
-                  "Planners interval and polyanya: this many landmarks for a stronger heuristic (the same answers, fewer "
+                  "Planners interval and polyanya: this many landmarks for a stronger heuristic "
+                  "(the same answers, fewer "
                   "nodes); "
-                  "each costs one search over the whole map when the planner is built, so it pays on many queries; "
+                  "each costs one search over the whole map when the planner is built, so it pays "
+                  "on many queries; "
                   "landmarks x mesh cells may not pass " +
-                      std::to_string(planner::kLandmarkCellBudget) + " (refused, with the most the map allows)")
+                      std::to_string(planner::kLandmarkCellBudget) +
+                      " (refused, with the most the map allows)")
       ->check(CLI::Range(0, 64));
   cmd->add_option("--search-memory-mb", opt->search_memory_mb,
                   "Planners vg, interval, polyanya: a query whose search holds more than this "
                   "(MiB) stops with status \"search limit\" and exit 1 (default " +
                       std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
       ->check(CLI::Range(1, 1 << 20));
-  cmd->add_flag("--snap", opt->snap, "Move a blocked start or charger to the nearest free point (reported)");
+  cmd->add_flag("--snap", opt->snap,
+                "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--inflate", opt->inflate,
@@ -119,11 +131,13 @@ std::function<int()> add_plan_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   return [opt]() {
     if (opt->landmarks > 0 && opt->planner != "interval" && opt->planner != "polyanya")
-      throw std::invalid_argument("plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
+      throw std::invalid_argument(
+          "plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
     if (!opt->map.empty())
       return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks,
                             static_cast<std::size_t>(opt->search_memory_mb) << 20);
-    if (opt->world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
+    if (opt->world.empty())
+      throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
     const worlds::World world = worlds::load_world(opt->world);
     planner::PlannerInput input = planner::planner_input(world, false);
     input.corner_steps = opt->corner_steps;
@@ -133,15 +147,19 @@ std::function<int()> add_plan_command(CLI::App& app) {
     if (opt->inflate >= 0) input.inflation_m = opt->inflate;
     if (opt->inflation == "round") {
       if (opt->planner != "vg" && opt->planner != "vg-round")
-        throw std::invalid_argument("plan: --inflation round is the visibility graph's (planner vg), not " + opt->planner + "'s");
-      if (opt->corner_steps != 1) throw std::invalid_argument("plan: --corner-steps is for --inflation square");
+        throw std::invalid_argument(
+            "plan: --inflation round is the visibility graph's (planner vg), not " + opt->planner +
+            "'s");
+      if (opt->corner_steps != 1)
+        throw std::invalid_argument("plan: --corner-steps is for --inflation square");
       opt->planner = "vg-round";
     }
     auto p = planner::make_planner(opt->planner, input);
     const std::string ext = std::filesystem::path(opt->world).extension().string();
     const bool ros_map = ext == ".yaml" || ext == ".yml";
     const std::string goal_kind = opt->goal.empty() ? (ros_map ? "staging" : "docked") : opt->goal;
-    const geom::Vec2 goal = goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
+    const geom::Vec2 goal =
+        goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
     const planner::PlanResult r = p->plan(world.start.position(), goal);
     nlohmann::json out;
     out["status"] = std::string(planner::to_string(r.status));
@@ -160,9 +178,9 @@ std::function<int()> add_plan_command(CLI::App& app) {
       for (const auto& v : r.drive_path) drive.push_back({v.x, v.y});
       out["drive_path"] = drive;
     }
-    out["stats"] = {{"build_ms", r.stats.build_ms},     {"query_ms", r.stats.query_ms},
-                    {"vertices", r.stats.vertices},     {"edges", r.stats.edges},
-                    {"expanded", r.stats.expanded},     {"segment_tests", r.stats.segment_tests}};
+    out["stats"] = {{"build_ms", r.stats.build_ms}, {"query_ms", r.stats.query_ms},
+                    {"vertices", r.stats.vertices}, {"edges", r.stats.edges},
+                    {"expanded", r.stats.expanded}, {"segment_tests", r.stats.segment_tests}};
     std::cout << std::setprecision(12) << out.dump() << "\n";
     return r.status == planner::PlanStatus::kOk ? kExitOk : kExitFailed;
   };

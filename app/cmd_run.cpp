@@ -6,8 +6,8 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
-#include "render/animation.h"
 #include "planner/planner.h"
+#include "render/animation.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
@@ -22,7 +22,8 @@ geom::Pose2 parse_pose(const std::string& text, const std::string& option) {
   std::istringstream in(text);
   if (!(in >> p.x >> c1 >> p.y >> c2 >> p.yaw) || c1 != ',' || c2 != ',' || !in.eof() ||
       !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw))
-    throw std::invalid_argument(option + " expects x,y,yaw (metres, metres, radians), got '" + text + "'");
+    throw std::invalid_argument(option + " expects x,y,yaw (metres, metres, radians), got '" +
+                                text + "'");
   return p;
 }
 
@@ -45,21 +46,30 @@ std::function<int()> add_run_command(CLI::App& app) {
     int query = 0;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("world", opt->world, "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")->required();
-  cmd->add_option("--scen", opt->scen, "For a MovingAI .map: the .scen file whose query gives the start and the charger");
-  cmd->add_option("--query", opt->query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
+  cmd->add_option("world", opt->world,
+                  "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
+      ->required();
+  cmd->add_option(
+      "--scen", opt->scen,
+      "For a MovingAI .map: the .scen file whose query gives the start and the charger");
+  cmd->add_option("--query", opt->query, "That query's number, from 0")
+      ->check(CLI::Range(0, 100000000));
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");
   cmd->add_option("--seed", opt->seed, "Random seed for noise");
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
   cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
-  cmd->add_option("--config", opt->config, "Controller, drive and sensing parameters (JSON, see docs/config.md)");
+  cmd->add_option("--config", opt->config,
+                  "Controller, drive and sensing parameters (JSON, see docs/config.md)");
   cmd->add_option("--travel", opt->travel,
-                  "path (follow the planner's path) or potential-field (seed 001; the plan is the reference)")
+                  "path (follow the planner's path) or potential-field (seed 001; the plan is the "
+                  "reference)")
       ->check(CLI::IsMember({"path", "potential-field"}));
-  cmd->add_flag("--undock", opt->undock, "After charging starts, reverse to the staging pose (docking.undock)");
-  cmd->add_flag("--animate", opt->animate, "Also write animation frames (and an MP4 when ffmpeg is installed)");
+  cmd->add_flag("--undock", opt->undock,
+                "After charging starts, reverse to the staging pose (docking.undock)");
+  cmd->add_flag("--animate", opt->animate,
+                "Also write animation frames (and an MP4 when ffmpeg is installed)");
   return [opt, cmd]() {
     worlds::PoseOverrides overrides;
     if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
@@ -67,30 +77,36 @@ std::function<int()> add_run_command(CLI::App& app) {
     overrides.movingai_scen = opt->scen;
     overrides.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, overrides);
-    sim::EpisodeConfig config = opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+    sim::EpisodeConfig config =
+        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
     auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
     // Every input is valid by now. The outputs are written into a staging folder beside the
     // destination (an unwritable place fails here, before the simulation) and moved into place
     // as a set: a rerun never mixes files of two runs.
-    util::StagedFolder staged(opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out,
-                              run_folder_names());
+    util::StagedFolder staged(
+        opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out,
+        run_folder_names());
     const std::string& out_dir = staged.path();
     config.seed = opt->seed;
     if (!opt->travel.empty())
-      config.travel = opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
+      config.travel =
+          opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
     if (opt->undock) config.docking.undock = true;
     if (opt->animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
     const sim::EpisodeResult r = sim::run_episode(world, *p, config);
 
     const std::string line = command_line(cmd);
     std::string setting;
-    if (!opt->config.empty()) setting = "config " + std::filesystem::path(opt->config).filename().string();
-    if (opt->seed != 1) setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt->seed);
+    if (!opt->config.empty())
+      setting = "config " + std::filesystem::path(opt->config).filename().string();
+    if (opt->seed != 1)
+      setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt->seed);
     write_run_folder(world, r, config, out_dir, line, setting, opt->animate);
     staged.commit();
     std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
               << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
-              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
+              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans
+              << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
     return r.succeeded() ? kExitOk : kExitFailed;
   };
 }

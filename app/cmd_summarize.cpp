@@ -1,19 +1,18 @@
 // `plantsim summarize DIR...`: gathers the summary.json of several runs into one Markdown
 // table, and with --html into a dashboard (render/dashboard.h) that also lists the comparisons,
 // batches and coverage reports given with --link.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "util/input_file.h"
 #include "render/dashboard.h"
 #include "util/atomic_file.h"
+#include "util/input_file.h"
 
 namespace plantsim::app {
 namespace {
@@ -21,14 +20,17 @@ namespace {
 /// What a run's command changed from the defaults: "config noisy_sensing.json, seed 3".
 std::string setting_of(const std::string& command) {
   std::string out;
-  for (const char* option : {"--config", "--seed", "--travel", "--start", "--charger", "--undock"}) {
+  for (const char* option :
+       {"--config", "--seed", "--travel", "--start", "--charger", "--undock"}) {
     const std::size_t at = command.find(std::string(option));
     if (at == std::string::npos) continue;
     std::size_t begin = at + std::strlen(option);
-    while (begin < command.size() && (command[begin] == ' ' || command[begin] == '=' || command[begin] == '\''))
+    while (begin < command.size() &&
+           (command[begin] == ' ' || command[begin] == '=' || command[begin] == '\''))
       ++begin;
     std::size_t end = command.find_first_of(" '", begin);
-    std::string value = command.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    std::string value =
+        command.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
     if (std::string(option) == "--undock") value.clear();
     if (std::string(option) == "--config") value = std::filesystem::path(value).filename().string();
     out += (out.empty() ? "" : ", ") + std::string(option + 2) + (value.empty() ? "" : " " + value);
@@ -45,19 +47,23 @@ std::string batch_line(const std::string& dir, std::string& verdict) {
     return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
   }
   verdict = j.value("verdict", "");
-  std::string line = std::to_string(j.value("succeeded", 0LL)) + " of " + std::to_string(j.value("episodes", 0LL)) +
-                     " episodes succeeded";
+  std::string line = std::to_string(j.value("succeeded", 0LL)) + " of " +
+                     std::to_string(j.value("episodes", 0LL)) + " episodes succeeded";
   std::string reasons;
-  const nlohmann::json by_reason = j.value("failures_by_reason", nlohmann::json::object());  // a local: items() does not keep it alive
+  const nlohmann::json by_reason = j.value(
+      "failures_by_reason", nlohmann::json::object());  // a local: items() does not keep it alive
   for (const auto& [reason, count] : by_reason.items())
-    reasons += (reasons.empty() ? "" : ", ") + reason + " " + std::to_string(count.get<long long>());
+    reasons +=
+        (reasons.empty() ? "" : ", ") + reason + " " + std::to_string(count.get<long long>());
   if (!reasons.empty()) line += "; failures: " + reasons;
   const nlohmann::json gate = j.value("gate", nlohmann::json::object());
   const long long gated = gate.value("gated_configurations", 0LL);
   if (gated > 0)
-    line += "; " + std::to_string(gate.value("below_threshold", 0LL)) + " of " + std::to_string(gated) +
-            " gated configurations below their threshold by " + gate.value("statistic", std::string("?")) + ", " +
-            std::to_string(gate.value("lower_bound_below_threshold", 0LL)) + " with the 95 % lower bound below it";
+    line += "; " + std::to_string(gate.value("below_threshold", 0LL)) + " of " +
+            std::to_string(gated) + " gated configurations below their threshold by " +
+            gate.value("statistic", std::string("?")) + ", " +
+            std::to_string(gate.value("lower_bound_below_threshold", 0LL)) +
+            " with the 95 % lower bound below it";
   return line;
 }
 
@@ -96,7 +102,8 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
 }  // namespace
 
 std::function<int()> add_summarize_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
+  auto* cmd =
+      app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
@@ -104,20 +111,35 @@ std::function<int()> add_summarize_command(CLI::App& app) {
     std::vector<std::string> links;
   };
   auto opt = std::make_shared<Options>();
-  cmd->add_option("dirs", opt->dirs, "Run output folders")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("dirs", opt->dirs, "Run output folders")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Write here instead of stdout");
-  cmd->add_option("--html", opt->html, "Also write an HTML dashboard: every run's thumbnail, status and figures, and the linked reports");
-  cmd->add_option("--link", opt->links, "Further reports (or PNG charts) to link from the dashboard");
+  cmd->add_option("--html", opt->html,
+                  "Also write an HTML dashboard: every run's thumbnail, status and figures, and "
+                  "the linked reports");
+  cmd->add_option("--link", opt->links,
+                  "Further reports (or PNG charts) to link from the dashboard");
   return [opt]() {
     std::string md =
-        "# plantsim results\n\n| world | planner | travel | status | position error (cm) | heading error (deg) | "
+        "# plantsim results\n\n| world | planner | travel | status | position error (cm) | heading "
+        "error (deg) | "
         "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     bool all_docked = true;
     std::vector<render::DashboardRun> runs;
-    const std::vector<std::string> headers = {"planner", "position error (cm)", "heading error (deg)", "collisions",
-                                              "retries", "stops", "replans", "time (s)", "planned (m)", "driven (m)"};
-    const std::string html_base = opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
+    const std::vector<std::string> headers = {"planner",
+                                              "position error (cm)",
+                                              "heading error (deg)",
+                                              "collisions",
+                                              "retries",
+                                              "stops",
+                                              "replans",
+                                              "time (s)",
+                                              "planned (m)",
+                                              "driven (m)"};
+    const std::string html_base =
+        opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
     for (const auto& d : opt->dirs) {
       nlohmann::json j;
       try {
@@ -128,15 +150,18 @@ std::function<int()> add_summarize_command(CLI::App& app) {
         throw std::invalid_argument(d + "/summary.json: malformed JSON: " + e.what());
       }
       // Links relative to where the table is written, so they work when it is opened.
-      const std::string base = opt->out.empty() ? "." : std::filesystem::path(opt->out).parent_path().string();
+      const std::string base =
+          opt->out.empty() ? "." : std::filesystem::path(opt->out).parent_path().string();
       const std::string link = std::filesystem::relative(d, base.empty() ? "." : base).string();
       char row[512];
-      std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | [run.png](%s/run.png) |\n",
-                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(), j.value("travel", "path").c_str(),
-                    j.value("status", "?").c_str(), 100.0 * j.value("position_error_m", 0.0),
-                    j.value("heading_error_deg", 0.0), j.value("collisions", 0), j.value("retries", 0),
-                    j.value("time_s", 0.0), j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0),
-                    link.c_str());
+      std::snprintf(row, sizeof row,
+                    "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | "
+                    "[run.png](%s/run.png) |\n",
+                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
+                    j.value("travel", "path").c_str(), j.value("status", "?").c_str(),
+                    100.0 * j.value("position_error_m", 0.0), j.value("heading_error_deg", 0.0),
+                    j.value("collisions", 0), j.value("retries", 0), j.value("time_s", 0.0),
+                    j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0), link.c_str());
       md += row;
       auto fmt = [](double v, int d) {
         char b[64];
@@ -150,13 +175,18 @@ std::function<int()> add_summarize_command(CLI::App& app) {
       run.setting = setting_of(j.value("command", ""));
       run.status = j.value("status", "?");
       run.succeeded = j.value("docked", false) || j.value("caught", false);
-      run.cells = {j.value("planner", "?") + (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
-                   measured ? fmt(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
-                   measured ? fmt(j.value("heading_error_deg", 0.0), 2) : "n/a",
-                   std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
-                   std::to_string(j.value("stops", 0)), std::to_string(j.value("replans", 0)),
-                   fmt(j.value("time_s", 0.0), 1), fmt(j.value("path_length_m", 0.0), 2),
-                   fmt(j.value("driven_length_m", 0.0), 2)};
+      run.cells = {
+          j.value("planner", "?") +
+              (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
+          measured ? fmt(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
+          measured ? fmt(j.value("heading_error_deg", 0.0), 2) : "n/a",
+          std::to_string(j.value("collisions", 0)),
+          std::to_string(j.value("retries", 0)),
+          std::to_string(j.value("stops", 0)),
+          std::to_string(j.value("replans", 0)),
+          fmt(j.value("time_s", 0.0), 1),
+          fmt(j.value("path_length_m", 0.0), 2),
+          fmt(j.value("driven_length_m", 0.0), 2)};
       for (const char* f : {"run.png", "timeplots.png"})
         if (std::filesystem::exists(d + "/" + f)) run.figures.push_back(f);
       runs.push_back(run);
@@ -164,8 +194,10 @@ std::function<int()> add_summarize_command(CLI::App& app) {
     }
     if (!opt->html.empty()) {
       std::vector<render::DashboardLink> links;
-      for (const auto& l : opt->links) links.push_back(link_to(l, html_base.empty() ? "." : html_base));
-      util::write_file_atomically(opt->html, render::dashboard_html("plantsim results", headers, runs, links));
+      for (const auto& l : opt->links)
+        links.push_back(link_to(l, html_base.empty() ? "." : html_base));
+      util::write_file_atomically(opt->html,
+                                  render::dashboard_html("plantsim results", headers, runs, links));
     }
     if (opt->out.empty()) {
       std::cout << md;
@@ -177,4 +209,3 @@ std::function<int()> add_summarize_command(CLI::App& app) {
 }
 
 }  // namespace plantsim::app
-

@@ -3,10 +3,9 @@
 #pragma once
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "planner/coverage/coverage_planner.h"
 #include "worlds/world.h"
@@ -19,8 +18,8 @@ inline constexpr double kDocumentRepetitionCells = 0.0287;
 
 /// In the order figures show them.
 inline const std::vector<std::string>& coverage_method_names() {
-  static const std::vector<std::string> names{"coverage-chnn", "coverage-potts", "coverage-exact", "coverage-greedy",
-                                              "coverage-cells"};
+  static const std::vector<std::string> names{"coverage-chnn", "coverage-potts", "coverage-exact",
+                                              "coverage-greedy", "coverage-cells"};
   return names;
 }
 
@@ -34,7 +33,8 @@ struct CoverageRun {
 /// Plans every method from the world's start to its charger's staging pose. A method that finds
 /// no order (the network settling on none) is a run without a path; a goal that cannot be
 /// reached throws std::invalid_argument naming the world.
-std::vector<CoverageRun> plan_coverage_methods(const worlds::World& world, const planner::CoverageParams& params);
+std::vector<CoverageRun> plan_coverage_methods(const worlds::World& world,
+                                               const planner::CoverageParams& params);
 
 /// A method's plan in JSON: regions, order, costs, the network's share, the search's account,
 /// the document's metrics.

@@ -1,20 +1,18 @@
 // Serialising an episode's metrics and trajectory.
 #include "app/episode_outputs.h"
 
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
 #include "render/animation.h"
 #include "render/png_io.h"
 #include "render/replay_html.h"
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "sim/episode_json.h"
-
-#include <cmath>
 #include "util/atomic_file.h"
-
-#include <nlohmann/json.hpp>
-
-#include <cstdio>
-#include <sstream>
 
 namespace plantsim::app {
 
@@ -33,8 +31,23 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
 }
 
 std::vector<std::string> metric_headers() {
-  return {"world", "planner", "travel", "status", "position error (cm)", "heading error (deg)", "collisions", "retries",
-          "stops", "replans", "local minima", "wall follows", "time (s)", "plan (ms)", "planned (m)", "driven (m)", "max cross-track (cm)"};
+  return {"world",
+          "planner",
+          "travel",
+          "status",
+          "position error (cm)",
+          "heading error (deg)",
+          "collisions",
+          "retries",
+          "stops",
+          "replans",
+          "local minima",
+          "wall follows",
+          "time (s)",
+          "plan (ms)",
+          "planned (m)",
+          "driven (m)",
+          "max cross-track (cm)"};
 }
 
 std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name) {
@@ -43,27 +56,45 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
     return std::string(buf);
   };
-  return {world_name, r.planner, r.travel, r.status, f(100 * r.position_error_m, 2), f(r.heading_error_deg, 2),
-          std::to_string(r.collisions), std::to_string(r.retries), std::to_string(r.stops), std::to_string(r.replans),
-          std::to_string(r.local_minima), std::to_string(r.wall_follows), f(r.time_s, 1), f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2), f(r.path_length_m, 2),
-          f(r.driven_length_m, 2), f(100 * r.max_cross_track_m, 1)};
+  return {world_name,
+          r.planner,
+          r.travel,
+          r.status,
+          f(100 * r.position_error_m, 2),
+          f(r.heading_error_deg, 2),
+          std::to_string(r.collisions),
+          std::to_string(r.retries),
+          std::to_string(r.stops),
+          std::to_string(r.replans),
+          std::to_string(r.local_minima),
+          std::to_string(r.wall_follows),
+          f(r.time_s, 1),
+          f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2),
+          f(r.path_length_m, 2),
+          f(r.driven_length_m, 2),
+          f(100 * r.max_cross_track_m, 1)};
 }
 
 std::string trajectory_csv(const sim::EpisodeResult& r) {
-  std::string out = "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,wall_following,target_x_m,target_y_m\n";
+  std::string out =
+      "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,"
+      "wall_following,target_x_m,target_y_m\n";
   char line[256];
   for (const auto& s : r.trajectory) {
-    std::snprintf(line, sizeof line, "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f\n", s.t_s,
-                  s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw, s.position_sigma_m,
-                  s.speed_mps, s.cross_track_m, std::string(controller::to_string(s.phase)).c_str(),
-                  s.wall_following ? 1 : 0, s.target.x, s.target.y);
+    std::snprintf(line, sizeof line,
+                  "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f\n", s.t_s,
+                  s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw,
+                  s.position_sigma_m, s.speed_mps, s.cross_track_m,
+                  std::string(controller::to_string(s.phase)).c_str(), s.wall_following ? 1 : 0,
+                  s.target.x, s.target.y);
     out += line;
   }
   return out;
 }
 
-void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r, const sim::EpisodeConfig& config,
-                      const std::string& out_dir, const std::string& line, const std::string& setting, bool animate) {
+void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
+                      const sim::EpisodeConfig& config, const std::string& out_dir,
+                      const std::string& line, const std::string& setting, bool animate) {
   util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, line));
   util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
   render::RunFigureOptions figure;
@@ -73,22 +104,33 @@ void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r, c
   render::write_run_figure(world, r, out_dir + "/run.png", figure);
   render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
   std::vector<render::ReportFigure> figures = {
-      {"run.png", "The run: first and final plans over the driven path (coloured by speed), events, footprints, "
-                  "docking close-up"},
-      {"timeplots.png", "Cross-track error, speed, distance to the charger, localisation error, shaded by phase"}};
+      {"run.png",
+       "The run: first and final plans over the driven path (coloured by speed), events, "
+       "footprints, "
+       "docking close-up"},
+      {"timeplots.png",
+       "Cross-track error, speed, distance to the charger, localisation error, shaded by phase"}};
   std::vector<std::string> files = {"summary.json", "trajectory.csv"};
   if (animate) {
     const std::string movie = render::write_animation(world, r, out_dir);
     files.push_back("frames/frame_0000.png");
     if (!movie.empty()) files.push_back(movie);
   }
-  render::write_report({"plantsim run: " + world.name + (setting.empty() ? "" : " (" + setting + ")"), line,
-                        metric_headers(), {metric_row(r, world.name)}, figures, files, "", render::replay_html(world, r)},
-                       out_dir + "/report.html");
+  render::write_report(
+      {"plantsim run: " + world.name + (setting.empty() ? "" : " (" + setting + ")"),
+       line,
+       metric_headers(),
+       {metric_row(r, world.name)},
+       figures,
+       files,
+       "",
+       render::replay_html(world, r)},
+      out_dir + "/report.html");
 }
 
 std::vector<std::string> run_folder_names() {
-  return {"summary.json", "trajectory.csv", "run.png", "timeplots.png", "report.html", "frames", "animation.mp4"};
+  return {"summary.json", "trajectory.csv", "run.png",      "timeplots.png",
+          "report.html",  "frames",         "animation.mp4"};
 }
 
 }  // namespace plantsim::app

@@ -20,9 +20,9 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
 
 /// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run
 /// figure's title; `animate` adds frames/ (and animation.mp4 when ffmpeg is installed).
-void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r, const sim::EpisodeConfig& config,
-                      const std::string& out_dir, const std::string& command_line, const std::string& setting,
-                      bool animate);
+void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
+                      const sim::EpisodeConfig& config, const std::string& out_dir,
+                      const std::string& command_line, const std::string& setting, bool animate);
 
 /// The names write_run_folder may write, for util::StagedFolder.
 std::vector<std::string> run_folder_names();

@@ -15,8 +15,9 @@ namespace {
 
 // A word as a POSIX shell reads it back: quoted when it holds anything but safe characters.
 std::string shell_word(const std::string& word) {
-  const bool safe = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-                                                             "0123456789_-./,:=+@%") == std::string::npos;
+  const bool safe = !word.empty() && word.find_first_not_of(
+                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                         "0123456789_-./,:=+@%") == std::string::npos;
   if (safe) return word;
   std::string quoted = "'";
   for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -38,12 +39,12 @@ std::string command_line(const CLI::App* sub) {
     } else if (o->get_expected_max() == 0) {
       line += " --" + o->get_lnames().front();
     } else {
-      for (const std::string& v : o->results()) line += " --" + o->get_lnames().front() + " " + shell_word(v);
+      for (const std::string& v : o->results())
+        line += " --" + o->get_lnames().front() + " " + shell_word(v);
     }
   }
   return line;
 }
-
 
 }  // namespace plantsim::app
 
@@ -51,9 +52,12 @@ int main(int argc, char** argv) {
   CLI::App app{"plantsim: drive a wheeled robot through a plant to its charger, in Box2D"};
   app.require_subcommand(1);
   app.fallthrough();  // --data may follow the subcommand
-  app.set_version_flag("--version", std::string("plantsim ") + PLANTSIM_VERSION + " (commit " + PLANTSIM_GIT_COMMIT + ")");
+  app.set_version_flag("--version", std::string("plantsim ") + PLANTSIM_VERSION + " (commit " +
+                                        PLANTSIM_GIT_COMMIT + ")");
   std::string data_dir;
-  app.add_option("--data", data_dir, "Folder of the shared data (default: $PLANTSIM_DATA, else ../shared/data beside the checkout)");
+  app.add_option("--data", data_dir,
+                 "Folder of the shared data (default: $PLANTSIM_DATA, else ../shared/data beside "
+                 "the checkout)");
   std::vector<std::pair<CLI::App*, std::function<int()>>> commands;
   auto remember = [&](std::function<int()> action) {
     commands.emplace_back(app.get_subcommands({}).back(), std::move(action));
@@ -87,7 +91,8 @@ int main(int argc, char** argv) {
       found |= sub->get_name() == word;
     }
     if (!found) {
-      std::cerr << "plantsim: unknown command '" << word << "' (commands: " << known << "; plantsim --help)\n";
+      std::cerr << "plantsim: unknown command '" << word << "' (commands: " << known
+                << "; plantsim --help)\n";
       return plantsim::app::kExitBadInput;
     }
     break;

@@ -50,8 +50,9 @@ class Importer {
   }
 
   /// `key` of `block` (named `where`) into config `path` (a.b), converted by `convert`.
-  void map(const YAML::Node& block, const std::string& where, const std::string& key, const std::string& path,
-           const std::string& note = "", const std::function<double(double)>& convert = {}) {
+  void map(const YAML::Node& block, const std::string& where, const std::string& key,
+           const std::string& path, const std::string& note = "",
+           const std::function<double(double)>& convert = {}) {
     const YAML::Node n = block[key];
     if (!n) return;
     seen(where, key);
@@ -59,12 +60,14 @@ class Importer {
     double v = number(n, name);
     if (convert) v = convert(v);
     const auto dot = path.find('.');
-    if (dot == std::string::npos) out_.config[path] = v;
-    else out_.config[path.substr(0, dot)][path.substr(dot + 1)] = v;
+    if (dot == std::string::npos)
+      out_.config[path] = v;
+    else
+      out_.config[path.substr(0, dot)][path.substr(dot + 1)] = v;
     out_.mapped.push_back({name, text(n), path, note});
   }
-  void map_flag(const YAML::Node& block, const std::string& where, const std::string& key, const std::string& path,
-                const std::string& note) {
+  void map_flag(const YAML::Node& block, const std::string& where, const std::string& key,
+                const std::string& path, const std::string& note) {
     const YAML::Node n = block[key];
     if (!n) return;
     seen(where, key);
@@ -72,14 +75,15 @@ class Importer {
     out_.config[path.substr(0, dot)][path.substr(dot + 1)] = flag(n, where + "." + key);
     out_.mapped.push_back({where + "." + key, text(n), path, note});
   }
-  void world_field(const YAML::Node& block, const std::string& where, const std::string& key, const std::string& field,
-                   const std::string& note) {
+  void world_field(const YAML::Node& block, const std::string& where, const std::string& key,
+                   const std::string& field, const std::string& note) {
     const YAML::Node n = block[key];
     if (!n) return;
     seen(where, key);
     out_.world_fields.push_back({where + "." + key, text(n), "world file: " + field, note});
   }
-  void not_mapped(const YAML::Node& block, const std::string& where, const std::string& key, const std::string& why) {
+  void not_mapped(const YAML::Node& block, const std::string& where, const std::string& key,
+                  const std::string& why) {
     const YAML::Node n = block[key];
     if (!n) return;
     seen(where, key);
@@ -109,17 +113,22 @@ class Importer {
   std::set<std::string> done_;
 };
 
-constexpr const char* kRpp = "nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController";
+constexpr const char* kRpp =
+    "nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController";
 
 void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string& w) {
-  // Without velocity-scaled lookahead RPP uses the fixed lookahead_dist: plantsim's band closes on it.
-  const bool scaled = !c["use_velocity_scaled_lookahead_dist"] || im.flag(c["use_velocity_scaled_lookahead_dist"], w + ".use_velocity_scaled_lookahead_dist");
+  // Without velocity-scaled lookahead RPP uses the fixed lookahead_dist: plantsim's band closes on
+  // it.
+  const bool scaled =
+      !c["use_velocity_scaled_lookahead_dist"] ||
+      im.flag(c["use_velocity_scaled_lookahead_dist"], w + ".use_velocity_scaled_lookahead_dist");
   im.map(c, w, "desired_linear_vel", "tracking.max_linear_speed_mps");
   if (scaled) {
     im.map(c, w, "lookahead_time", "tracking.lookahead_time_s");
     im.map(c, w, "min_lookahead_dist", "tracking.lookahead_min_m");
     im.map(c, w, "max_lookahead_dist", "tracking.lookahead_max_m");
-    im.not_mapped(c, w, "lookahead_dist", "velocity-scaled lookahead is on: the band min..max is used");
+    im.not_mapped(c, w, "lookahead_dist",
+                  "velocity-scaled lookahead is on: the band min..max is used");
   } else {
     im.map(c, w, "lookahead_dist", "tracking.lookahead_min_m", "fixed lookahead: min = max");
     im.map(c, w, "lookahead_dist", "tracking.lookahead_max_m", "fixed lookahead: min = max");
@@ -127,28 +136,47 @@ void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string
     im.not_mapped(c, w, "min_lookahead_dist", "velocity-scaled lookahead is off");
     im.not_mapped(c, w, "max_lookahead_dist", "velocity-scaled lookahead is off");
   }
-  im.not_mapped(c, w, "use_velocity_scaled_lookahead_dist", "decides which lookahead keys are used (above)");
+  im.not_mapped(c, w, "use_velocity_scaled_lookahead_dist",
+                "decides which lookahead keys are used (above)");
   im.map(c, w, "min_approach_linear_velocity", "tracking.min_approach_speed_mps");
   im.map(c, w, "approach_velocity_scaling_dist", "tracking.approach_slowdown_distance_m");
   const bool regulated = !c["use_regulated_linear_velocity_scaling"] ||
-                         im.flag(c["use_regulated_linear_velocity_scaling"], w + ".use_regulated_linear_velocity_scaling");
-  if (regulated) im.map(c, w, "regulated_linear_scaling_min_radius", "tracking.regulated_min_radius_m");
-  else im.out().config["tracking"]["regulated_min_radius_m"] = 0.0;
+                         im.flag(c["use_regulated_linear_velocity_scaling"],
+                                 w + ".use_regulated_linear_velocity_scaling");
+  if (regulated)
+    im.map(c, w, "regulated_linear_scaling_min_radius", "tracking.regulated_min_radius_m");
+  else
+    im.out().config["tracking"]["regulated_min_radius_m"] = 0.0;
   im.not_mapped(c, w, "use_regulated_linear_velocity_scaling",
-                regulated ? "on: regulated_linear_scaling_min_radius is used" : "off: tracking.regulated_min_radius_m set to 0");
-  im.not_mapped(c, w, "regulated_linear_scaling_min_speed", "plantsim's curvature regulation has no speed floor (min_approach_linear_velocity bounds the approach)");
-  const bool rotate = !c["use_rotate_to_heading"] || im.flag(c["use_rotate_to_heading"], w + ".use_rotate_to_heading");
-  if (rotate) im.map(c, w, "rotate_to_heading_min_angle", "tracking.rotate_in_place_threshold_rad");
-  else im.out().config["tracking"]["rotate_in_place_threshold_rad"] = std::numbers::pi;
-  im.not_mapped(c, w, "use_rotate_to_heading", rotate ? "on: rotate_to_heading_min_angle is used" : "off: the threshold is set to pi (never rotates in place)");
+                regulated ? "on: regulated_linear_scaling_min_radius is used"
+                          : "off: tracking.regulated_min_radius_m set to 0");
+  im.not_mapped(c, w, "regulated_linear_scaling_min_speed",
+                "plantsim's curvature regulation has no speed floor (min_approach_linear_velocity "
+                "bounds the approach)");
+  const bool rotate = !c["use_rotate_to_heading"] ||
+                      im.flag(c["use_rotate_to_heading"], w + ".use_rotate_to_heading");
+  if (rotate)
+    im.map(c, w, "rotate_to_heading_min_angle", "tracking.rotate_in_place_threshold_rad");
+  else
+    im.out().config["tracking"]["rotate_in_place_threshold_rad"] = std::numbers::pi;
+  im.not_mapped(c, w, "use_rotate_to_heading",
+                rotate ? "on: rotate_to_heading_min_angle is used"
+                       : "off: the threshold is set to pi (never rotates in place)");
   im.map(c, w, "rotate_to_heading_angular_vel", "tracking.rotate_in_place_speed_radps");
   im.map(c, w, "max_angular_accel", "traction.max_angular_accel_radps2");
   im.map(c, w, "max_robot_pose_search_dist", "tracking.progress_window_m");
-  for (const char* k : {"use_cost_regulated_linear_velocity_scaling", "cost_scaling_dist", "cost_scaling_gain", "inflation_cost_scaling_factor"})
-    im.not_mapped(c, w, k, "plantsim has no costmap costs: it slows with curvature, uncertainty and the arc check");
+  for (const char* k : {"use_cost_regulated_linear_velocity_scaling", "cost_scaling_dist",
+                        "cost_scaling_gain", "inflation_cost_scaling_factor"})
+    im.not_mapped(
+        c, w, k,
+        "plantsim has no costmap costs: it slows with curvature, uncertainty and the arc check");
   for (const char* k : {"use_collision_detection", "max_allowed_time_to_collision_up_to_carrot"})
-    im.not_mapped(c, w, k, "plantsim's arc check is always on (docking.check_extra_m, docking.max_decel_mps2)");
-  im.not_mapped(c, w, "allow_reversing", "plantsim's path following drives forwards (it reverses only to back off in docking)");
+    im.not_mapped(
+        c, w, k,
+        "plantsim's arc check is always on (docking.check_extra_m, docking.max_decel_mps2)");
+  im.not_mapped(
+      c, w, "allow_reversing",
+      "plantsim's path following drives forwards (it reverses only to back off in docking)");
   im.not_mapped(c, w, "transform_tolerance", "no transforms in the simulation");
   im.rest(c, w, "no counterpart in plantsim's pure pursuit");
 }
@@ -170,24 +198,31 @@ void controller_server(Importer& im, const YAML::Node& root) {
     const YAML::Node c = s[id];
     if (!c) continue;
     const std::string plugin = c["plugin"] ? c["plugin"].Scalar() : "";
-    if (plugin == kRpp) regulated_pure_pursuit(im, c, w + "." + id);
+    if (plugin == kRpp)
+      regulated_pure_pursuit(im, c, w + "." + id);
     else {
       im.out().plugins_not_implemented.push_back(id + ": " + plugin);
-      im.rest(c, w + "." + id, "a parameter of " + plugin + ", which plantsim does not implement (its pure pursuit drives)");
+      im.rest(c, w + "." + id,
+              "a parameter of " + plugin +
+                  ", which plantsim does not implement (its pure pursuit drives)");
     }
   }
   for (const char* checker : {"general_goal_checker", "goal_checker"}) {
     const YAML::Node g = s[checker];
     if (!g) continue;
     const std::string gw = w + "." + checker;
-    im.map(g, gw, "xy_goal_tolerance", "tracking.goal_tolerance_m", "the tolerance at the staging pose, where docking begins");
-    im.not_mapped(g, gw, "yaw_goal_tolerance", "plantsim aligns at the staging pose to docking.align_tolerance_rad");
+    im.map(g, gw, "xy_goal_tolerance", "tracking.goal_tolerance_m",
+           "the tolerance at the staging pose, where docking begins");
+    im.not_mapped(g, gw, "yaw_goal_tolerance",
+                  "plantsim aligns at the staging pose to docking.align_tolerance_rad");
     im.not_mapped(g, gw, "stateful", "plantsim's goal check is stateless");
   }
   if (const YAML::Node p = s["progress_checker"]) {
     const std::string pw = w + ".progress_checker";
-    im.map(p, pw, "movement_time_allowance", "docking.stuck_timeout_s", "the time without progress before a failure (stuck)");
-    im.not_mapped(p, pw, "required_movement_radius", "plantsim measures progress along the plan, not a radius");
+    im.map(p, pw, "movement_time_allowance", "docking.stuck_timeout_s",
+           "the time without progress before a failure (stuck)");
+    im.not_mapped(p, pw, "required_movement_radius",
+                  "plantsim measures progress along the plan, not a radius");
   }
   im.rest(s, w, "a controller_server setting plantsim does not model");
 }
@@ -198,18 +233,26 @@ void docking_server(Importer& im, const YAML::Node& root) {
   const std::string w = "docking_server";
   im.map(s, w, "dock_approach_timeout", "docking.approach_timeout_s");
   im.map(s, w, "max_retries", "docking.max_retries");
-  im.map(s, w, "wait_charge_timeout", "docking.press_timeout_s", "how long it presses on the pads for the charger's signal");
+  im.map(s, w, "wait_charge_timeout", "docking.press_timeout_s",
+         "how long it presses on the pads for the charger's signal");
   if (s["dock_backwards"] && im.flag(s["dock_backwards"], w + ".dock_backwards"))
-    im.not_mapped(s, w, "dock_backwards", "true is not supported: plantsim docks facing the charger");
-  else im.not_mapped(s, w, "dock_backwards", "false: plantsim docks facing the charger, as here");
-  for (const char* k : {"base_frame", "fixed_frame", "controller_frequency", "initial_perception_timeout", "undock_linear_tolerance",
-                        "undock_angular_tolerance", "dock_prestaging_tolerance", "dock_plugins", "docks", "dock_database"})
-    im.not_mapped(s, w, k, "no counterpart (frames, timing and undock tolerances are fixed in plantsim)");
+    im.not_mapped(s, w, "dock_backwards",
+                  "true is not supported: plantsim docks facing the charger");
+  else
+    im.not_mapped(s, w, "dock_backwards", "false: plantsim docks facing the charger, as here");
+  for (const char* k :
+       {"base_frame", "fixed_frame", "controller_frequency", "initial_perception_timeout",
+        "undock_linear_tolerance", "undock_angular_tolerance", "dock_prestaging_tolerance",
+        "dock_plugins", "docks", "dock_database"})
+    im.not_mapped(s, w, k,
+                  "no counterpart (frames, timing and undock tolerances are fixed in plantsim)");
   if (const YAML::Node c = s["controller"]) {
     const std::string cw = w + ".controller";
     im.map(c, cw, "v_linear_max", "docking.approach_speed_mps", "the approach speed onto the pads");
     im.map(c, cw, "v_angular_max", "docking.align_speed_radps");
-    im.rest(c, cw, "plantsim's approach is pure pursuit along the dock axis, not the graceful controller's law");
+    im.rest(c, cw,
+            "plantsim's approach is pure pursuit along the dock axis, not the graceful "
+            "controller's law");
   }
   std::vector<std::string> docks;
   if (s["dock_plugins"])
@@ -218,9 +261,12 @@ void docking_server(Importer& im, const YAML::Node& root) {
     const YAML::Node d = s[id];
     if (!d) continue;
     const std::string dw = w + "." + id;
-    im.map(d, dw, "docking_threshold", "tolerance.position_m", "docked when the pose is within this of the docked pose");
-    im.world_field(d, dw, "staging_x_offset", "charger.staging_distance_m", "its magnitude: the staging pose this far in front of the dock");
-    im.map_flag(d, dw, "use_external_detection_pose", "detection.enabled", "the charger detector on or off");
+    im.map(d, dw, "docking_threshold", "tolerance.position_m",
+           "docked when the pose is within this of the docked pose");
+    im.world_field(d, dw, "staging_x_offset", "charger.staging_distance_m",
+                   "its magnitude: the staging pose this far in front of the dock");
+    im.map_flag(d, dw, "use_external_detection_pose", "detection.enabled",
+                "the charger detector on or off");
     im.rest(d, dw, "no counterpart in plantsim's charger model");
   }
   im.rest(s, w, "a docking_server setting plantsim does not model");
@@ -233,11 +279,15 @@ void costmaps(Importer& im, const YAML::Node& root) {
     const YAML::Node s = Importer::params(node);
     if (!s) continue;
     const std::string w = std::string(name);
-    im.world_field(s, w, "robot_radius", "robot.radius_m", "plantsim keeps the robot in the world file");
-    im.world_field(s, w, "footprint", "robot.length_m / robot.width_m", "a rectangle's length and width (plantsim's footprints are disks or rectangles)");
+    im.world_field(s, w, "robot_radius", "robot.radius_m",
+                   "plantsim keeps the robot in the world file");
+    im.world_field(
+        s, w, "footprint", "robot.length_m / robot.width_m",
+        "a rectangle's length and width (plantsim's footprints are disks or rectangles)");
     if (const YAML::Node inflation = s["inflation_layer"])
-      im.world_field(inflation, w + ".inflation_layer", "inflation_radius", "inflation_margin_m",
-                     "minus the robot radius: the clearance plantsim plans with beyond the footprint");
+      im.world_field(
+          inflation, w + ".inflation_layer", "inflation_radius", "inflation_margin_m",
+          "minus the robot radius: the clearance plantsim plans with beyond the footprint");
   }
 }
 
@@ -245,10 +295,13 @@ void costmaps(Importer& im, const YAML::Node& root) {
 
 Nav2Import import_nav2_params(const std::string& path) {
   const YAML::Node root = worlds::load_yaml_input(path);
-  if (!root.IsMap()) throw worlds::WorldError(path, "", "expected a Nav2 parameter file (a mapping of node names)");
+  if (!root.IsMap())
+    throw worlds::WorldError(path, "", "expected a Nav2 parameter file (a mapping of node names)");
   Importer im(path);
-  if (!root["controller_server"] && !root["docking_server"] && !root["local_costmap"] && !root["global_costmap"])
-    throw worlds::WorldError(path, "", "no controller_server, docking_server, local_costmap or global_costmap section");
+  if (!root["controller_server"] && !root["docking_server"] && !root["local_costmap"] &&
+      !root["global_costmap"])
+    throw worlds::WorldError(
+        path, "", "no controller_server, docking_server, local_costmap or global_costmap section");
   try {
     controller_server(im, root);
     docking_server(im, root);
@@ -258,21 +311,26 @@ Nav2Import import_nav2_params(const std::string& path) {
   }
   Nav2Import out = im.out();
   if (out.config.contains("docking") && out.config["docking"].contains("max_retries"))
-    out.config["docking"]["max_retries"] = static_cast<int>(out.config["docking"]["max_retries"].get<double>());
+    out.config["docking"]["max_retries"] =
+        static_cast<int>(out.config["docking"]["max_retries"].get<double>());
   if (out.config.contains("step") && out.config["step"].contains("control_period_steps"))
-    out.config["step"]["control_period_steps"] = static_cast<int>(out.config["step"]["control_period_steps"].get<double>());
-  sim::parse_episode_config(out.config.dump(), path + " (as a plantsim config)");  // throws naming the field
+    out.config["step"]["control_period_steps"] =
+        static_cast<int>(out.config["step"]["control_period_steps"].get<double>());
+  sim::parse_episode_config(out.config.dump(),
+                            path + " (as a plantsim config)");  // throws naming the field
   return out;
 }
 
 std::string nav2_report(const Nav2Import& im) {
   std::string s;
   auto line = [&s](const Nav2Parameter& p, const std::string& arrow) {
-    s += "  " + p.nav2 + " = " + p.value + arrow + (p.note.empty() ? "" : "  (" + p.note + ")") + "\n";
+    s += "  " + p.nav2 + " = " + p.value + arrow + (p.note.empty() ? "" : "  (" + p.note + ")") +
+         "\n";
   };
   s += "mapped (" + std::to_string(im.mapped.size()) + "):\n";
   for (const auto& p : im.mapped) line(p, " -> " + p.plantsim);
-  s += "world file fields (" + std::to_string(im.world_fields.size()) + "; plantsim keeps these in the world, not the config):\n";
+  s += "world file fields (" + std::to_string(im.world_fields.size()) +
+       "; plantsim keeps these in the world, not the config):\n";
   for (const auto& p : im.world_fields) line(p, " -> " + p.plantsim);
   s += "not mapped (" + std::to_string(im.not_mapped.size()) + "):\n";
   for (const auto& p : im.not_mapped) line(p, "");

@@ -6,23 +6,24 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-
 #include <string>
 #include <vector>
 
 namespace plantsim::app {
 
 struct Nav2Parameter {
-  std::string nav2;      ///< e.g. controller_server.FollowPath.desired_linear_vel
-  std::string value;     ///< as written
-  std::string plantsim;  ///< the config key (or "world file: robot.radius_m"); empty when not mapped
-  std::string note;      ///< how it was converted, or why it has no counterpart
+  std::string nav2;   ///< e.g. controller_server.FollowPath.desired_linear_vel
+  std::string value;  ///< as written
+  std::string
+      plantsim;      ///< the config key (or "world file: robot.radius_m"); empty when not mapped
+  std::string note;  ///< how it was converted, or why it has no counterpart
 };
 
 struct Nav2Import {
   nlohmann::ordered_json config = nlohmann::ordered_json::object();  ///< only the keys mapped
   std::vector<Nav2Parameter> mapped, world_fields, not_mapped;
-  std::vector<std::string> plugins_not_implemented;  ///< "FollowPath: nav2_mppi_controller::MPPIController"
+  std::vector<std::string>
+      plugins_not_implemented;  ///< "FollowPath: nav2_mppi_controller::MPPIController"
 };
 
 /// Throws worlds::WorldError naming the file and the parameter on a malformed file or a value

@@ -1,34 +1,48 @@
 // Gate verdicts and the JUnit report.
 #include "batch/batch_gate.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <tuple>
 
 #include "batch/batch_runner.h"
 
 namespace plantsim::batch {
-const char* statistic_name(GateStatistic s) { return s == GateStatistic::kWilsonLow ? "wilson_low" : "success_rate"; }
+const char* statistic_name(GateStatistic s) {
+  return s == GateStatistic::kWilsonLow ? "wilson_low" : "success_rate";
+}
 
 namespace {
 
 bool matches(const GateRule& r, const ConfigurationVerdict& v) {
-  return (r.world.empty() || r.world == v.world || v.world == kAllWorlds) && (r.planner.empty() || r.planner == v.planner) &&
-         (r.controller.empty() || r.controller == v.controller) && (r.fault.empty() || r.fault == v.fault);
+  return (r.world.empty() || r.world == v.world || v.world == kAllWorlds) &&
+         (r.planner.empty() || r.planner == v.planner) &&
+         (r.controller.empty() || r.controller == v.controller) &&
+         (r.fault.empty() || r.fault == v.fault);
 }
 
 std::string xml_escaped(const std::string& s) {
   std::string out;
   for (unsigned char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c < 0x20 && c != '\n' && c != '\t' ? '?' : static_cast<char>(c);
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c < 0x20 && c != '\n' && c != '\t' ? '?' : static_cast<char>(c);
     }
   }
   return out;
@@ -42,25 +56,32 @@ std::string fixed(double v, int digits = 3) {
 
 std::string verdict_line(const ConfigurationVerdict& v, GateStatistic statistic) {
   const double value = statistic == GateStatistic::kWilsonLow ? v.wilson_low : v.success_rate;
-  return v.name() + ": " + std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " + v.outcome() + ", " +
-         statistic_name(statistic) + " " + fixed(value) + (v.passed ? " >= " : " < ") + fixed(*v.threshold);
+  return v.name() + ": " + std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " +
+         v.outcome() + ", " + statistic_name(statistic) + " " + fixed(value) +
+         (v.passed ? " >= " : " < ") + fixed(*v.threshold);
 }
 
 }  // namespace
 
 bool record_succeeded(const nlohmann::json& record) {
-  if (record.contains("succeeded") && record["succeeded"].is_boolean()) return record["succeeded"].get<bool>();
+  if (record.contains("succeeded") && record["succeeded"].is_boolean())
+    return record["succeeded"].get<bool>();
   return record.value("docked", false);
 }
 
-bool record_is_pursuit(const nlohmann::json& record) { return record.value("goal", std::string("dock")) == "catch"; }
+bool record_is_pursuit(const nlohmann::json& record) {
+  return record.value("goal", std::string("dock")) == "catch";
+}
 
-std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& lines, const Gate& gate) {
-  std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationVerdict> by_key;
+std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& lines,
+                                                       const Gate& gate) {
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationVerdict>
+      by_key;
   for (const std::string& line : lines) {
     const nlohmann::json j = nlohmann::json::parse(line);
-    const auto key = std::make_tuple(gate.pool_worlds ? std::string(kAllWorlds) : j.value("world", ""), j.value("planner", ""),
-                                     j.value("controller", ""), j.value("fault", ""));
+    const auto key =
+        std::make_tuple(gate.pool_worlds ? std::string(kAllWorlds) : j.value("world", ""),
+                        j.value("planner", ""), j.value("controller", ""), j.value("fault", ""));
     ConfigurationVerdict& v = by_key[key];
     std::tie(v.world, v.planner, v.controller, v.fault) = key;
     ++v.episodes;
@@ -74,7 +95,8 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
     v.threshold = gate.min_success;
     for (const GateRule& r : gate.rules)
       if (matches(r, v)) v.threshold = r.min_success;
-    const double value = gate.statistic == GateStatistic::kWilsonLow ? v.wilson_low : v.success_rate;
+    const double value =
+        gate.statistic == GateStatistic::kWilsonLow ? v.wilson_low : v.success_rate;
     // A hair below the threshold from rounding (0.9 of 10 computed as 0.8999...) still passes.
     v.passed = !v.threshold || value >= *v.threshold - 1e-12;
     out.push_back(v);
@@ -82,34 +104,40 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
   return out;
 }
 
-std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic) {
+std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts,
+                               GateStatistic statistic) {
   std::string text;
   for (const ConfigurationVerdict& v : verdicts)
     if (!v.passed) text += "FAIL " + verdict_line(v, statistic) + "\n";
   return text;
 }
 
-std::string junit_xml(const std::string& suite_name, const std::vector<ConfigurationVerdict>& verdicts,
-                      GateStatistic statistic) {
+std::string junit_xml(const std::string& suite_name,
+                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic) {
   int failures = 0;
   for (const ConfigurationVerdict& v : verdicts) failures += !v.passed;
-  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n  <testsuite name=\"" +
-                    xml_escaped(suite_name) + "\" tests=\"" + std::to_string(verdicts.size()) + "\" failures=\"" +
-                    std::to_string(failures) + "\" errors=\"0\">\n";
+  std::string xml =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n  <testsuite name=\"" +
+      xml_escaped(suite_name) + "\" tests=\"" + std::to_string(verdicts.size()) + "\" failures=\"" +
+      std::to_string(failures) + "\" errors=\"0\">\n";
   for (const ConfigurationVerdict& v : verdicts) {
     xml += "    <testcase classname=\"" + xml_escaped(suite_name + "." + v.world) + "\" name=\"" +
            xml_escaped(v.planner + " / " + v.controller + " / " + v.fault) + "\">\n";
-    xml += "      <properties><property name=\"episodes\" value=\"" + std::to_string(v.episodes) +
-           "\"/><property name=\"" + v.outcome() + "\" value=\"" + std::to_string(v.succeeded) +
-           "\"/><property name=\"success_rate\" value=\"" +
-           fixed(v.success_rate, 4) + "\"/><property name=\"wilson_low\" value=\"" + fixed(v.wilson_low, 4) + "\"/>" +
-           (v.threshold ? "<property name=\"min_success\" value=\"" + fixed(*v.threshold, 4) + "\"/>" : std::string()) +
-           "</properties>\n";
+    xml +=
+        "      <properties><property name=\"episodes\" value=\"" + std::to_string(v.episodes) +
+        "\"/><property name=\"" + v.outcome() + "\" value=\"" + std::to_string(v.succeeded) +
+        "\"/><property name=\"success_rate\" value=\"" + fixed(v.success_rate, 4) +
+        "\"/><property name=\"wilson_low\" value=\"" + fixed(v.wilson_low, 4) + "\"/>" +
+        (v.threshold ? "<property name=\"min_success\" value=\"" + fixed(*v.threshold, 4) + "\"/>"
+                     : std::string()) +
+        "</properties>\n";
     if (!v.passed)
-      xml += "      <failure message=\"" + xml_escaped(verdict_line(v, statistic)) + "\" type=\"success_below_threshold\"/>\n";
+      xml += "      <failure message=\"" + xml_escaped(verdict_line(v, statistic)) +
+             "\" type=\"success_below_threshold\"/>\n";
     else if (!v.threshold)
       xml += "      <system-out>" +
-             xml_escaped(std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " + v.outcome() + " (not gated)") +
+             xml_escaped(std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " +
+                         v.outcome() + " (not gated)") +
              "</system-out>\n";
     xml += "    </testcase>\n";
   }

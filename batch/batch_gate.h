@@ -37,14 +37,16 @@ const char* statistic_name(GateStatistic s);
 
 /// One verdict per configuration in the records, in the summary's order. `gate` from the
 /// scenario; `min_success` (the command line's --min-success) replaces its default threshold.
-std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& jsonl_lines, const Gate& gate);
+std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::string>& jsonl_lines,
+                                                       const Gate& gate);
 
 /// "FAIL world_N50 / vg / default / wet: 41/50 docked, success_rate 0.820 < 0.900" per failure
 /// ("caught" in a pursuit world).
-std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic);
+std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts,
+                               GateStatistic statistic);
 
 /// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold).
-std::string junit_xml(const std::string& suite_name, const std::vector<ConfigurationVerdict>& verdicts,
-                      GateStatistic statistic);
+std::string junit_xml(const std::string& suite_name,
+                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic);
 
 }  // namespace plantsim::batch

@@ -1,12 +1,11 @@
 // Records into the report's table, chart data and figures.
 #include "batch/batch_report.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
@@ -34,7 +33,8 @@ std::string fixed(double v, int decimals) {
 
 /// The columns of summary.csv a reader looks at first, with readable headers; all of them stay
 /// in summary.csv.
-void fill_table(render::Report& report, const std::string& csv, const std::vector<ConfigurationVerdict>& verdicts) {
+void fill_table(render::Report& report, const std::string& csv,
+                const std::vector<ConfigurationVerdict>& verdicts) {
   const std::vector<std::pair<std::string, std::string>> shown = {
       {"world", "world"},
       {"planner", "planner"},
@@ -87,14 +87,15 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
     const ConfigurationVerdict* v = nullptr;
     if (cells.size() >= 4)
       for (const ConfigurationVerdict& c : verdicts)
-        if ((c.world == cells[0] || c.world == kAllWorlds) && c.planner == cells[1] && c.controller == cells[2] && c.fault == cells[3])
+        if ((c.world == cells[0] || c.world == kAllWorlds) && c.planner == cells[1] &&
+            c.controller == cells[2] && c.fault == cells[3])
           v = &c;
     // The verdict by the gate's statistic, and whether the 95 % lower bound clears the threshold
     // too (10 of 10 passes a 0.9 gate by its point estimate; its lower bound, 0.72, does not).
     if (v && v->threshold)
       verdict = std::string(v->passed ? "pass (>= " : "FAIL (< ") + fixed(*v->threshold, 3) +
-                (v->world == kAllWorlds ? ", all worlds" : "") + "); 95 % low " + fixed(v->wilson_low, 3) +
-                (v->lower_bound_clears() ? " clears it" : " does not");
+                (v->world == kAllWorlds ? ", all worlds" : "") + "); 95 % low " +
+                fixed(v->wilson_low, 3) + (v->lower_bound_clears() ? " clears it" : " does not");
     out.push_back(verdict);
     report.rows.push_back(out);
   }
@@ -102,7 +103,8 @@ void fill_table(render::Report& report, const std::string& csv, const std::vecto
 
 /// Every failed episode in one table (reason, when, why, the command that re-runs it), and how
 /// many of them the gallery below draws.
-std::string failure_table_html(const std::vector<std::string>& lines, std::size_t drawn, const std::string& scenario_path) {
+std::string failure_table_html(const std::vector<std::string>& lines, std::size_t drawn,
+                               const std::string& scenario_path) {
   constexpr std::size_t kMaxRows = 2000;
   std::string rows;
   std::size_t failed = 0;
@@ -116,40 +118,52 @@ std::string failure_table_html(const std::vector<std::string>& lines, std::size_
     };
     const auto at = j.find("failure_time_s");
     const std::string id = text("id");
-    rows += "<tr><td class=\"l\">" + render::html_escape(id) + "</td><td class=\"l\">" + render::html_escape(text("failure")) +
-            "</td><td>" + (at != j.end() && at->is_number() ? fixed(at->get<double>(), 1) : "-") + "</td><td class=\"l\">" +
-            render::html_escape(text("failure_detail")) + "</td><td class=\"l\"><code>plantsim batch " +
-            render::html_escape(scenario_path) + " --episode '" + render::html_escape(id) + "' --out DIR</code></td></tr>\n";
+    rows += "<tr><td class=\"l\">" + render::html_escape(id) + "</td><td class=\"l\">" +
+            render::html_escape(text("failure")) + "</td><td>" +
+            (at != j.end() && at->is_number() ? fixed(at->get<double>(), 1) : "-") +
+            "</td><td class=\"l\">" + render::html_escape(text("failure_detail")) +
+            "</td><td class=\"l\"><code>plantsim batch " + render::html_escape(scenario_path) +
+            " --episode '" + render::html_escape(id) + "' --out DIR</code></td></tr>\n";
   }
   if (failed == 0) return "<h2>Failures</h2>\n<p>None: every episode succeeded.</p>\n";
-  std::string h = "<h2>Failures (" + std::to_string(failed) + ")</h2>\n<p>Every failed episode with its reason "
-                  "(docs/failures.md); " + std::to_string(drawn) + " of " + std::to_string(failed) +
-                  " drawn below, one of each reason first" +
-                  (failed > kMaxRows ? "; the first " + std::to_string(kMaxRows) + " listed here, all in episodes.jsonl" : "") +
-                  ".</p>\n<table><tr><th class=\"l\">episode</th><th class=\"l\">reason</th><th>at (s)</th>"
-                  "<th class=\"l\">detail</th><th class=\"l\">re-run it alone</th></tr>\n";
+  std::string h =
+      "<h2>Failures (" + std::to_string(failed) +
+      ")</h2>\n<p>Every failed episode with its reason "
+      "(docs/failures.md); " +
+      std::to_string(drawn) + " of " + std::to_string(failed) +
+      " drawn below, one of each reason first" +
+      (failed > kMaxRows
+           ? "; the first " + std::to_string(kMaxRows) + " listed here, all in episodes.jsonl"
+           : "") +
+      ".</p>\n<table><tr><th class=\"l\">episode</th><th class=\"l\">reason</th><th>at (s)</th>"
+      "<th class=\"l\">detail</th><th class=\"l\">re-run it alone</th></tr>\n";
   return h + rows + "</table>\n";
 }
 
 }  // namespace
 
-void write_batch_report(const std::vector<std::string>& lines, const std::string& out_dir, const std::string& title,
-                        const std::string& command, const std::vector<worlds::World>* worlds_for_figures,
+void write_batch_report(const std::vector<std::string>& lines, const std::string& out_dir,
+                        const std::string& title, const std::string& command,
+                        const std::vector<worlds::World>* worlds_for_figures,
                         const std::vector<std::string>& planners, const Gate& gate, bool charts,
-                        const std::vector<FailedEpisode>& failures, const std::string& scenario_path) {
+                        const std::vector<FailedEpisode>& failures,
+                        const std::string& scenario_path) {
   const std::string csv = summary_csv(lines);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
   const std::string sweep = sweep_csv(lines);
   if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
   const std::vector<ConfigurationVerdict> verdicts = judge_configurations(lines, gate);
-  util::write_file_atomically(out_dir + "/summary.json", batch_summary_json(lines, verdicts, gate, title, command).dump(1) + "\n");
+  util::write_file_atomically(
+      out_dir + "/summary.json",
+      batch_summary_json(lines, verdicts, gate, title, command).dump(1) + "\n");
   render::Report report;
   report.title = title;
   report.command = command;
   fill_table(report, csv, verdicts);
-  report.notes = "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
-                 "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
-                 "summary.csv has every column.";
+  report.notes =
+      "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
+      "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
+      "summary.csv has every column.";
   report.files = {"episodes.jsonl", "summary.csv", "summary.json"};
   if (!sweep.empty()) report.files.push_back("sweep.csv");
   report.body_html = failure_table_html(lines, failures.size(), scenario_path);
@@ -157,7 +171,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   // Charts, from the same records the table sums.
   std::vector<render::RateRow> rates;
   for (const ConfigurationVerdict& v : verdicts)
-    rates.push_back({v.name(), v.succeeded, v.episodes, v.wilson_low, v.wilson_high, v.threshold.value_or(-1.0)});
+    rates.push_back({v.name(), v.succeeded, v.episodes, v.wilson_low, v.wilson_high,
+                     v.threshold.value_or(-1.0)});
   std::vector<render::EpisodeOutcome> episodes;
   std::map<std::string, std::vector<render::EpisodePath>> paths;  // by world name
   std::map<double, std::pair<long long, long long>> sweep_counts;
@@ -166,8 +181,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   for (const std::string& line : lines) {
     const json j = json::parse(line);
     render::EpisodeOutcome e;
-    e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() + " / " +
-               j["fault"].get<std::string>();
+    e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() +
+               " / " + j["fault"].get<std::string>();
     e.docked = j["docked"].get<bool>();
     e.position_error_m = j.value("position_error_m", 0.0);
     e.heading_error_deg = j.value("heading_error_deg", 0.0);
@@ -183,7 +198,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     pursuit = pursuit || record_is_pursuit(j);
     if (j.contains("path_mm") && j["path_mm"].is_array())
       for (std::size_t k = 0; k + 1 < j["path_mm"].size(); k += 2)
-        path.points.push_back({0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
+        path.points.push_back(
+            {0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
     paths[j["world"].get<std::string>()].push_back(std::move(path));
     if (j.contains("sweep_parameter")) {
       sweep_parameter = j["sweep_parameter"].get<std::string>();
@@ -210,7 +226,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   chart(render::draw_error_strips(episodes, {}), "chart_errors.png",
         "Position and heading error of every docked episode against the 2 cm / 2 degree gates");
   chart(render::draw_localization_chart(episodes), "chart_localization.png",
-        "Each episode's worst localisation error (true against estimated) per method, against 10 cm, and how many "
+        "Each episode's worst localisation error (true against estimated) per method, against 10 "
+        "cm, and how many "
         "episodes' estimator reported worse than ok");
   chart(render::draw_efficiency_chart(episodes), "chart_efficiency.png",
         "Driven length over the exact optimum (ECDF) and time to dock, per method");
@@ -229,9 +246,11 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
     for (const worlds::World& w : *worlds_for_figures) {
       const auto it = paths.find(w.name);
       if (it == paths.end()) continue;
-      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path", pursuit ? "caught" : "docked"),
+      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path",
+                                       pursuit ? "caught" : "docked"),
             "paths_" + worlds::file_name_component(w.name) + ".png",
-            w.name + ": every episode's driven path from its own start; failures in vermillion, on top");
+            w.name +
+                ": every episode's driven path from its own start; failures in vermillion, on top");
     }
   }
   if (!failures.empty()) {
@@ -245,10 +264,11 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                         render::PngSettings::fast());
       std::string why = f.result.status;
       if (f.result.failure)
-        why = std::string(robot::to_string(f.result.failure->reason)) + " at " + fixed(f.result.failure->time_s, 1) + " s (" +
-              f.result.failure->detail + ")";
-      report.figures.push_back({file, "FAILED " + f.id + ": " + why + ". Re-run it alone: plantsim batch " +
-                                          scenario_path + " --episode '" + f.id + "' --out DIR"});
+        why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
+              fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
+      report.figures.push_back({file, "FAILED " + f.id + ": " + why +
+                                          ". Re-run it alone: plantsim batch " + scenario_path +
+                                          " --episode '" + f.id + "' --out DIR"});
     }
   }
   if (worlds_for_figures) {
@@ -256,7 +276,8 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
       std::vector<render::ComparisonPanel> panels;
       for (const std::string& name : planners) {
         auto p = planner::make_planner(name, planner::planner_input(w, true));
-        const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+        const planner::PlanResult r =
+            p->plan(w.start.position(), worlds::staging_pose(w).position());
         render::ComparisonPanel panel{name, {}, {}, false};
         panel.run.planner = name;
         panel.run.status = std::string(planner::to_string(r.status));
@@ -268,11 +289,13 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
       const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
       // One panel needs no 1800-pixel canvas.
       const int width = panels.size() == 1 ? 1000 : panels.size() == 2 ? 1500 : 1800;
-      render::write_png(render::draw_comparison(w, panels, w.name + ": plans from the world file's start (not an episode's)",
-                                                width),
-                        out_dir + "/" + file, render::PngSettings::fast());
-      report.figures.push_back({file, w.name + ": each planner's plan from the world file's start to the staging pose "
-                                               "(episodes start from random poses)"});
+      render::write_png(
+          render::draw_comparison(
+              w, panels, w.name + ": plans from the world file's start (not an episode's)", width),
+          out_dir + "/" + file, render::PngSettings::fast());
+      report.figures.push_back(
+          {file, w.name + ": each planner's plan from the world file's start to the staging pose "
+                          "(episodes start from random poses)"});
     }
   }
   render::write_report(report, out_dir + "/report.html");

@@ -15,14 +15,15 @@ namespace plantsim::batch {
 
 struct RunOptions {
   std::string out_dir;
-  bool fresh = false;     ///< discard the folder's earlier episodes instead of resuming
-  bool check_only = false;  ///< validate everything and count the episodes; run nothing, write nothing
+  bool fresh = false;  ///< discard the folder's earlier episodes instead of resuming
+  bool check_only =
+      false;  ///< validate everything and count the episodes; run nothing, write nothing
   int shard_index = 0;
   int shard_count = 1;
-  int threads = 0;        ///< 0: one per core
-  bool progress = true;   ///< progress bar with rate and ETA on stderr
-  bool figures = true;    ///< comparison figures in the report
-  GateOverride gate;      ///< the command line's changes to the scenario's gate (drawn in the charts)
+  int threads = 0;       ///< 0: one per core
+  bool progress = true;  ///< progress bar with rate and ETA on stderr
+  bool figures = true;   ///< comparison figures in the report
+  GateOverride gate;  ///< the command line's changes to the scenario's gate (drawn in the charts)
   /// An outside controller for every episode (the Python module's); its name joins each
   /// controller's, so the ids and the scenario's fingerprint tell its episodes apart.
   sim::EpisodeSteering steering;
@@ -31,14 +32,15 @@ struct RunOptions {
 };
 
 struct BatchOutcome {
-  std::int64_t episodes = 0, ran = 0, skipped = 0, succeeded = 0, collisions = 0;  ///< succeeded: docked or caught
+  std::int64_t episodes = 0, ran = 0, skipped = 0, succeeded = 0,
+               collisions = 0;           ///< succeeded: docked or caught
   std::int64_t malformed_lines_cut = 0;  ///< resume found lines it could not use; rerun
   Gate gate;                             ///< the scenario's gate
   std::string scenario_fingerprint;
 };
 
 struct MergeOptions {
-  bool allow_partial = false;  ///< merge even when episodes of the scenario are missing
+  bool allow_partial = false;          ///< merge even when episodes of the scenario are missing
   std::vector<std::string> own_files;  ///< further files of this merge in its output folder
   GateOverride gate;
 };

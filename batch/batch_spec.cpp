@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-
 #include <set>
 
 #include "planner/planner.h"
@@ -45,8 +44,10 @@ bool decimal_number(const std::string& s) {
 }
 
 // A YAML mapping of overrides as JSON text, validated by the episode-config reader.
-std::string overrides_json(const YAML::Node& node, const std::string& source, const std::string& field) {
-  std::function<nlohmann::json(const YAML::Node&)> convert = [&](const YAML::Node& n) -> nlohmann::json {
+std::string overrides_json(const YAML::Node& node, const std::string& source,
+                           const std::string& field) {
+  std::function<nlohmann::json(const YAML::Node&)> convert =
+      [&](const YAML::Node& n) -> nlohmann::json {
     if (n.IsMap()) {
       nlohmann::json j = nlohmann::json::object();
       for (const auto& kv : n) j[kv.first.as<std::string>()] = convert(kv.second);
@@ -79,7 +80,8 @@ std::string overrides_json(const YAML::Node& node, const std::string& source, co
 
 // The keys of a fault that change the plant rather than the episode config; removed from
 // `body` as they are read.
-void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& source, const std::string& field) {
+void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& source,
+                     const std::string& field) {
   if (!body.IsMap()) return;
   auto flag = [&](const char* key, bool& out) {
     if (!body[key]) return;
@@ -98,7 +100,8 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
       t = body["standing_at_dock_s"].as<double>();
     } catch (const YAML::Exception&) {
     }
-    if (!(t >= 0 && t <= 3600)) throw WorldError(source, field + ".standing_at_dock_s", "expected seconds from 0 to 3600");
+    if (!(t >= 0 && t <= 3600))
+      throw WorldError(source, field + ".standing_at_dock_s", "expected seconds from 0 to 3600");
     f.standing_at_dock_s = t;
     body.remove("standing_at_dock_s");
   }
@@ -108,14 +111,17 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
       n = body["unmapped_obstacles"].as<long>();
     } catch (const YAML::Exception&) {
     }
-    if (n < 0 || n > 50) throw WorldError(source, field + ".unmapped_obstacles", "expected a whole number from 0 to 50");
+    if (n < 0 || n > 50)
+      throw WorldError(source, field + ".unmapped_obstacles",
+                       "expected a whole number from 0 to 50");
     f.unmapped_obstacles = static_cast<int>(n);
     body.remove("unmapped_obstacles");
   }
   if (body["charger_map_offset"]) {
     const YAML::Node o = body["charger_map_offset"];
     const std::string where = field + ".charger_map_offset";
-    if (!o.IsSequence() || o.size() != 3) throw WorldError(source, where, "expected [dx, dy, dyaw] (m, m, rad)");
+    if (!o.IsSequence() || o.size() != 3)
+      throw WorldError(source, where, "expected [dx, dy, dyaw] (m, m, rad)");
     double v[3];
     for (int i = 0; i < 3; ++i) {
       try {
@@ -123,10 +129,12 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
       } catch (const YAML::Exception&) {
         throw WorldError(source, where + "[" + std::to_string(i) + "]", "expected a number");
       }
-      if (!std::isfinite(v[i])) throw WorldError(source, where + "[" + std::to_string(i) + "]", "must be finite");
+      if (!std::isfinite(v[i]))
+        throw WorldError(source, where + "[" + std::to_string(i) + "]", "must be finite");
     }
     if (std::hypot(v[0], v[1]) > 0.5 || std::fabs(v[2]) > 0.5)
-      throw WorldError(source, where, "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
+      throw WorldError(source, where,
+                       "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
     f.charger_map_offset = geom::Pose2{v[0], v[1], v[2]};
     body.remove("charger_map_offset");
   }
@@ -160,13 +168,16 @@ YAML::Node merged(const YAML::Node& a, const YAML::Node& b) {
   if (!b.IsMap()) return out;
   for (const auto& kv : b) {
     const std::string key = kv.first.as<std::string>();
-    if (kv.second.IsMap() && out[key] && out[key].IsMap()) out[key] = merged(out[key], kv.second);
-    else out[key] = YAML::Clone(kv.second);
+    if (kv.second.IsMap() && out[key] && out[key].IsMap())
+      out[key] = merged(out[key], kv.second);
+    else
+      out[key] = YAML::Clone(kv.second);
   }
   return out;
 }
 
-std::string scalar_text(const YAML::Node& doc, const char* key, const std::string& path, const std::string& fallback) {
+std::string scalar_text(const YAML::Node& doc, const char* key, const std::string& path,
+                        const std::string& fallback) {
   if (!doc[key]) return fallback;
   if (!doc[key].IsScalar()) throw WorldError(path, key, "expected a single value");
   if (!worlds::valid_utf8(doc[key].Scalar())) throw WorldError(path, key, "is not valid UTF-8");
@@ -178,15 +189,18 @@ std::string checked_name(const YAML::Node& key, const std::string& path, const s
   if (!key.IsScalar()) throw WorldError(path, field, "expected names as keys");
   const std::string name = key.Scalar();
   if (name.empty() || name.size() > 100 || !worlds::valid_utf8(name) ||
-      std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+      std::any_of(name.begin(), name.end(),
+                  [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
     throw WorldError(path, field, "names must be 1 to 100 characters of printable UTF-8");
   if (name.find('|') != std::string::npos)
-    throw WorldError(path, field + "." + name, "a name may not hold '|': it separates the parts of an episode id");
+    throw WorldError(path, field + "." + name,
+                     "a name may not hold '|': it separates the parts of an episode id");
   return name;
 }
 
 double fraction(const YAML::Node& n, const std::string& path, const std::string& field) {
-  if (!n.IsScalar() || !decimal_number(n.Scalar())) throw WorldError(path, field, "expected a number from 0 to 1");
+  if (!n.IsScalar() || !decimal_number(n.Scalar()))
+    throw WorldError(path, field, "expected a number from 0 to 1");
   const double v = std::strtod(n.Scalar().c_str(), nullptr);
   if (!(v >= 0 && v <= 1)) throw WorldError(path, field, "expected a number from 0 to 1");
   return v;
@@ -197,7 +211,8 @@ double fraction(const YAML::Node& n, const std::string& path, const std::string&
 Gate read_gate(const YAML::Node& node, const std::string& path) {
   Gate g;
   if (!node) return g;
-  if (!node.IsMap()) throw WorldError(path, "gate", "expected {min_success, statistic, pool, configurations}");
+  if (!node.IsMap())
+    throw WorldError(path, "gate", "expected {min_success, statistic, pool, configurations}");
   for (const auto& kv : node) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     const std::vector<std::string> known = {"min_success", "statistic", "pool", "configurations"};
@@ -205,28 +220,43 @@ Gate read_gate(const YAML::Node& node, const std::string& path) {
       throw WorldError(path, "gate." + key, worlds::unknown_key_problem(key, known));
   }
   if (node["min_success"]) g.min_success = fraction(node["min_success"], path, "gate.min_success");
-  if (node["statistic"]) g.statistic = parse_gate_statistic(scalar_text(node, "statistic", path, ""), path + ": gate.statistic");
+  if (node["statistic"])
+    g.statistic =
+        parse_gate_statistic(scalar_text(node, "statistic", path, ""), path + ": gate.statistic");
   if (node["pool"]) {
     const std::string pool = scalar_text(node, "pool", path, "");
-    if (pool != "worlds" && pool != "none") throw WorldError(path, "gate.pool", "expected 'worlds' or 'none', got '" + pool + "'");
+    if (pool != "worlds" && pool != "none")
+      throw WorldError(path, "gate.pool", "expected 'worlds' or 'none', got '" + pool + "'");
     g.pool_worlds = pool == "worlds";
   }
   if (const YAML::Node list = node["configurations"]) {
-    if (!list.IsSequence()) throw WorldError(path, "gate.configurations", "expected a list of {world, planner, controller, fault, min_success}");
+    if (!list.IsSequence())
+      throw WorldError(path, "gate.configurations",
+                       "expected a list of {world, planner, controller, fault, min_success}");
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string field = "gate.configurations[" + std::to_string(i) + "]";
       const YAML::Node item = list[i];
-      if (!item.IsMap() || !item["min_success"]) throw WorldError(path, field, "expected {planner: ..., min_success: R} (any of world, planner, controller, fault)");
+      if (!item.IsMap() || !item["min_success"])
+        throw WorldError(
+            path, field,
+            "expected {planner: ..., min_success: R} (any of world, planner, controller, fault)");
       GateRule rule;
       for (const auto& kv : item) {
         const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
         if (key == "min_success") continue;
         if (!kv.second.IsScalar()) throw WorldError(path, field + "." + key, "expected a name");
-        if (key == "world") rule.world = kv.second.Scalar();
-        else if (key == "planner") rule.planner = kv.second.Scalar();
-        else if (key == "controller") rule.controller = kv.second.Scalar();
-        else if (key == "fault") rule.fault = kv.second.Scalar();
-        else throw WorldError(path, field + "." + key, worlds::unknown_key_problem(key, {"world", "planner", "controller", "fault", "min_success"}));
+        if (key == "world")
+          rule.world = kv.second.Scalar();
+        else if (key == "planner")
+          rule.planner = kv.second.Scalar();
+        else if (key == "controller")
+          rule.controller = kv.second.Scalar();
+        else if (key == "fault")
+          rule.fault = kv.second.Scalar();
+        else
+          throw WorldError(path, field + "." + key,
+                           worlds::unknown_key_problem(
+                               key, {"world", "planner", "controller", "fault", "min_success"}));
       }
       rule.min_success = fraction(item["min_success"], path, field + ".min_success");
       g.rules.push_back(rule);
@@ -258,11 +288,12 @@ namespace {
 
 BatchSpec read_batch_spec(const std::string& path) {
   const YAML::Node doc = worlds::load_yaml_input(path);
-  if (!doc.IsMap()) throw WorldError(path, "", "expected a mapping with worlds, planners, seeds ...");
+  if (!doc.IsMap())
+    throw WorldError(path, "", "expected a mapping with worlds, planners, seeds ...");
   for (const auto& kv : doc) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
-    const std::vector<std::string> known = {"name", "worlds", "planners", "controllers", "faults", "sweep", "seeds",
-                                            "starts", "gate"};
+    const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers", "faults",
+                                            "sweep", "seeds",  "starts",   "gate"};
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, key, worlds::unknown_key_problem(key, known));
   }
@@ -286,7 +317,8 @@ BatchSpec read_batch_spec(const std::string& path) {
     s.world_files.push_back(resolved);
   }
   if (doc["planners"]) {
-    if (!doc["planners"].IsSequence()) throw WorldError(path, "planners", "expected a list of planner names");
+    if (!doc["planners"].IsSequence())
+      throw WorldError(path, "planners", "expected a list of planner names");
     for (const auto& p : doc["planners"]) {
       if (!p.IsScalar()) throw WorldError(path, "planners", "expected a list of planner names");
       s.planners.push_back(p.Scalar());
@@ -296,15 +328,21 @@ BatchSpec read_batch_spec(const std::string& path) {
   }
   const auto known = planner::planner_names();
   for (const auto& p : s.planners)
-    if (std::find(known.begin(), known.end(), p) == known.end()) throw WorldError(path, "planners", "unknown planner '" + p + "'");
+    if (std::find(known.begin(), known.end(), p) == known.end())
+      throw WorldError(path, "planners", "unknown planner '" + p + "'");
   for (std::size_t i = 0; i < s.planners.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (s.planners[i] == s.planners[j]) throw WorldError(path, "planners", "'" + s.planners[i] + "' is listed twice");
-  if (s.planners.empty()) throw WorldError(path, "planners", "an empty list: no episode would run (leave the key out for vg)");
+      if (s.planners[i] == s.planners[j])
+        throw WorldError(path, "planners", "'" + s.planners[i] + "' is listed twice");
+  if (s.planners.empty())
+    throw WorldError(path, "planners",
+                     "an empty list: no episode would run (leave the key out for vg)");
   if (doc["controllers"]) {
-    if (!doc["controllers"].IsMap()) throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
+    if (!doc["controllers"].IsMap())
+      throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
     if (doc["controllers"].size() == 0)
-      throw WorldError(path, "controllers", "empty: no episode would run (leave the key out for the default settings)");
+      throw WorldError(path, "controllers",
+                       "empty: no episode would run (leave the key out for the default settings)");
     for (const auto& kv : doc["controllers"]) {
       const std::string name = checked_name(kv.first, path, "controllers");
       s.controllers.push_back({name, overrides_json(kv.second, path, "controllers." + name)});
@@ -314,10 +352,13 @@ BatchSpec read_batch_spec(const std::string& path) {
   }
   std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
   if (doc["faults"]) {
-    if (!doc["faults"].IsMap()) throw WorldError(path, "faults", "expected a mapping name: {overrides}");
+    if (!doc["faults"].IsMap())
+      throw WorldError(path, "faults", "expected a mapping name: {overrides}");
     if (doc["faults"].size() == 0)
-      throw WorldError(path, "faults", "empty: no episode would run (leave the key out for no fault)");
-    for (const auto& kv : doc["faults"]) bodies.emplace_back(checked_name(kv.first, path, "faults"), YAML::Clone(kv.second));
+      throw WorldError(path, "faults",
+                       "empty: no episode would run (leave the key out for no fault)");
+    for (const auto& kv : doc["faults"])
+      bodies.emplace_back(checked_name(kv.first, path, "faults"), YAML::Clone(kv.second));
   }
   if (doc["sweep"]) {
     // One fault per value (per fault, when faults are given too): success-rate curves.
@@ -325,7 +366,8 @@ BatchSpec read_batch_spec(const std::string& path) {
     if (!sw.IsMap() || !sw["parameter"] || !sw["parameter"].IsScalar())
       throw WorldError(path, "sweep", "expected {parameter: <name>, values: [...]}");
     const std::string parameter = sw["parameter"].Scalar();
-    if (!worlds::valid_utf8(parameter) || parameter.size() > 100) throw WorldError(path, "sweep.parameter", "expected a parameter name");
+    if (!worlds::valid_utf8(parameter) || parameter.size() > 100)
+      throw WorldError(path, "sweep.parameter", "expected a parameter name");
     if (!sw["values"] || !sw["values"].IsSequence() || sw["values"].size() == 0)
       throw WorldError(path, "sweep.values", "expected a non-empty list of values");
     if (sw["values"].size() > 100) throw WorldError(path, "sweep.values", "more than 100 values");
@@ -351,7 +393,8 @@ BatchSpec read_batch_spec(const std::string& path) {
       take_plant_keys(probe, f, path, "sweep.values[0]");
       overrides_json(probe, path, "sweep");
     } catch (const WorldError& e) {
-      throw WorldError(path, "sweep.parameter", "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
+      throw WorldError(path, "sweep.parameter",
+                       "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
     }
   }
   for (auto& [name, body] : bodies) {
@@ -383,11 +426,15 @@ BatchSpec read_batch_spec(const std::string& path) {
       if (seeds.size() > 1000000) throw WorldError(path, "seeds", "more than 1000000 seeds");
       std::set<std::uint64_t> seen;
       for (const auto& v : seeds) {
-        if (!v.IsScalar() || !decimal_number(v.Scalar()) || v.Scalar().find_first_of("-.eE") != std::string::npos)
-          throw WorldError(path, "seeds", "expected whole numbers, got '" + (v.IsScalar() ? v.Scalar() : "a list") + "'");
+        if (!v.IsScalar() || !decimal_number(v.Scalar()) ||
+            v.Scalar().find_first_of("-.eE") != std::string::npos)
+          throw WorldError(
+              path, "seeds",
+              "expected whole numbers, got '" + (v.IsScalar() ? v.Scalar() : "a list") + "'");
         s.seeds.push_back(v.as<std::uint64_t>());
         if (!seen.insert(s.seeds.back()).second)
-          throw WorldError(path, "seeds", "seed " + v.Scalar() + " is listed twice (one episode id each)");
+          throw WorldError(path, "seeds",
+                           "seed " + v.Scalar() + " is listed twice (one episode id each)");
       }
       if (s.seeds.empty()) throw WorldError(path, "seeds", "expected a count or a non-empty list");
     } else {
@@ -398,7 +445,8 @@ BatchSpec read_batch_spec(const std::string& path) {
   }
   if (doc["starts"]) {
     const std::string v = scalar_text(doc, "starts", path, "");
-    if (v != "random" && v != "world") throw WorldError(path, "starts", "must be 'random' or 'world'");
+    if (v != "random" && v != "world")
+      throw WorldError(path, "starts", "must be 'random' or 'world'");
     s.random_starts = v == "random";
   }
   s.gate = read_gate(doc["gate"], path);
@@ -408,27 +456,37 @@ BatchSpec read_batch_spec(const std::string& path) {
     const GateRule& r = s.gate.rules[i];
     const std::string field = "gate.configurations[" + std::to_string(i) + "]";
     auto listed = [](const std::string& name, const auto& items, auto name_of) {
-      return name.empty() || std::any_of(items.begin(), items.end(), [&](const auto& x) { return name_of(x) == name; });
+      return name.empty() || std::any_of(items.begin(), items.end(),
+                                         [&](const auto& x) { return name_of(x) == name; });
     };
     if (!listed(r.planner, s.planners, [](const std::string& p) { return p; }))
-      throw WorldError(path, field + ".planner", "'" + r.planner + "' is not one of the scenario's planners: the rule would judge nothing");
+      throw WorldError(path, field + ".planner",
+                       "'" + r.planner +
+                           "' is not one of the scenario's planners: the rule would judge nothing");
     if (!listed(r.controller, s.controllers, [](const NamedConfig& c) { return c.name; }))
-      throw WorldError(path, field + ".controller", "'" + r.controller + "' is not one of the scenario's controllers: the rule would judge nothing");
+      throw WorldError(
+          path, field + ".controller",
+          "'" + r.controller +
+              "' is not one of the scenario's controllers: the rule would judge nothing");
     if (!listed(r.fault, s.faults, [](const FaultSetting& f) { return f.name; }))
-      throw WorldError(path, field + ".fault", "'" + r.fault + "' is not one of the scenario's faults: the rule would judge nothing");
+      throw WorldError(
+          path, field + ".fault",
+          "'" + r.fault + "' is not one of the scenario's faults: the rule would judge nothing");
   }
   // Episodes are counted before any is made: a cross product of 1e9 is a typo, not a batch.
-  const double total = static_cast<double>(s.world_files.size()) * s.planners.size() * s.controllers.size() *
-                       s.faults.size() * s.seeds.size();
+  const double total = static_cast<double>(s.world_files.size()) * s.planners.size() *
+                       s.controllers.size() * s.faults.size() * s.seeds.size();
   if (total > static_cast<double>(kMaxEpisodes))
-    throw WorldError(path, "seeds", "the scenario makes " + std::to_string(static_cast<long long>(total)) +
-                                        " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
+    throw WorldError(path, "seeds",
+                     "the scenario makes " + std::to_string(static_cast<long long>(total)) +
+                         " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
   return s;
 }
 
 }  // namespace
 
-std::vector<Episode> all_episodes(const BatchSpec& spec, const std::vector<std::string>& world_names) {
+std::vector<Episode> all_episodes(const BatchSpec& spec,
+                                  const std::vector<std::string>& world_names) {
   std::vector<Episode> out;
   std::int64_t index = 0;
   for (std::size_t w = 0; w < spec.world_files.size(); ++w)
@@ -436,9 +494,14 @@ std::vector<Episode> all_episodes(const BatchSpec& spec, const std::vector<std::
       for (std::size_t c = 0; c < spec.controllers.size(); ++c)
         for (std::size_t f = 0; f < spec.faults.size(); ++f)
           for (std::uint64_t seed : spec.seeds) {
-            Episode e{index++, world_names[w] + "|" + spec.planners[p] + "|" + spec.controllers[c].name + "|" +
-                                   spec.faults[f].name + "|" + std::to_string(seed),
-                      w, p, c, f, seed};
+            Episode e{index++,
+                      world_names[w] + "|" + spec.planners[p] + "|" + spec.controllers[c].name +
+                          "|" + spec.faults[f].name + "|" + std::to_string(seed),
+                      w,
+                      p,
+                      c,
+                      f,
+                      seed};
             out.push_back(e);
           }
   return out;

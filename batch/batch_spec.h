@@ -21,14 +21,14 @@ struct NamedConfig {
 /// A fault: episode-config overrides, and changes to the plant that make it differ from the map.
 struct FaultSetting {
   std::string name;
-  std::string json;              ///< episode-config overrides (noise, slip, detection noise)
+  std::string json;                ///< episode-config overrides (noise, slip, detection noise)
   bool crossing_obstacle = false;  ///< a person crosses the planned path as the robot arrives
   bool crossing_final_approach = false;  ///< a person crosses the final approach as the robot docks
-  double standing_at_dock_s = 0;  ///< a person stands on the final approach until this long after the
-                                  ///< robot could reach the staging pose (0: nobody)
-  int unmapped_obstacles = 0;    ///< boxes the map lacks, placed across the optimal path
+  double standing_at_dock_s = 0;  ///< a person stands on the final approach until this long after
+                                  ///< the robot could reach the staging pose (0: nobody)
+  int unmapped_obstacles = 0;     ///< boxes the map lacks, placed across the optimal path
   std::optional<geom::Pose2> charger_map_offset;  ///< the charger's mapped pose minus its real one
-  std::string sweep_parameter, sweep_value;  ///< when the fault is one value of a sweep
+  std::string sweep_parameter, sweep_value;       ///< when the fault is one value of a sweep
 };
 
 /// What a configuration's success is judged by: its success rate, or the lower end of its 95 %
@@ -72,14 +72,15 @@ inline constexpr double kMaxBatchSteps = 1e10;
 
 struct BatchSpec {
   std::string name;
-  std::string source;                 ///< the YAML file
+  std::string source;  ///< the YAML file
   std::vector<std::string> world_files;
   std::vector<std::string> planners;
   std::vector<NamedConfig> controllers;
-  std::vector<FaultSetting> faults;   ///< after expanding the sweep, if any (one per value and fault)
-  std::string sweep_parameter;        ///< the swept parameter, or empty
+  std::vector<FaultSetting>
+      faults;                   ///< after expanding the sweep, if any (one per value and fault)
+  std::string sweep_parameter;  ///< the swept parameter, or empty
   std::vector<std::uint64_t> seeds;
-  bool random_starts = true;          ///< each seed draws a free start; else the world's start
+  bool random_starts = true;  ///< each seed draws a free start; else the world's start
   Gate gate;
 };
 
@@ -90,15 +91,16 @@ inline constexpr const char* kAllWorlds = "all worlds";
 GateStatistic parse_gate_statistic(const std::string& text, const std::string& where);
 
 struct Episode {
-  std::int64_t index = 0;             ///< position in the full cross product
-  std::string id;                     ///< "world|planner|controller|fault|seed"
+  std::int64_t index = 0;  ///< position in the full cross product
+  std::string id;          ///< "world|planner|controller|fault|seed"
   std::size_t world = 0, planner = 0, controller = 0, fault = 0;
   std::uint64_t seed = 0;
 };
 
 /// Throws worlds::WorldError naming the file and field.
 BatchSpec load_batch_spec(const std::string& path);
-std::vector<Episode> all_episodes(const BatchSpec& spec, const std::vector<std::string>& world_names);
+std::vector<Episode> all_episodes(const BatchSpec& spec,
+                                  const std::vector<std::string>& world_names);
 
 /// Episodes of shard i of n (index modulo n), deterministic.
 std::vector<Episode> shard(const std::vector<Episode>& all, int i, int n);

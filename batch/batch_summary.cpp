@@ -14,8 +14,9 @@ std::string batch_verdict(const std::vector<ConfigurationVerdict>& verdicts) {
   return !gated ? "not gated" : passed ? "passed" : "failed";
 }
 
-json batch_summary_json(const std::vector<std::string>& lines, const std::vector<ConfigurationVerdict>& verdicts,
-                        const Gate& gate, const std::string& title, const std::string& command) {
+json batch_summary_json(const std::vector<std::string>& lines,
+                        const std::vector<ConfigurationVerdict>& verdicts, const Gate& gate,
+                        const std::string& title, const std::string& command) {
   std::int64_t episodes = 0, succeeded = 0;
   std::map<std::string, std::int64_t> by_reason;
   for (const std::string& line : lines) {
@@ -26,7 +27,8 @@ json batch_summary_json(const std::vector<std::string>& lines, const std::vector
       continue;
     }
     const auto reason = j.find("failure");
-    ++by_reason[reason != j.end() && reason->is_string() ? reason->get<std::string>() : "unrecorded"];
+    ++by_reason[reason != j.end() && reason->is_string() ? reason->get<std::string>()
+                                                         : "unrecorded"];
   }
   json configurations = json::array();
   std::int64_t gated = 0, below = 0, not_cleared = 0;

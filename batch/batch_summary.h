@@ -4,10 +4,9 @@
 // dashboard (plantsim summarize --html) reads it; so can CI scripts.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "batch/batch_gate.h"
 
@@ -16,7 +15,9 @@ namespace plantsim::batch {
 /// "passed" (every gated configuration at or above its threshold), "failed", or "not gated".
 std::string batch_verdict(const std::vector<ConfigurationVerdict>& verdicts);
 
-nlohmann::json batch_summary_json(const std::vector<std::string>& jsonl_lines, const std::vector<ConfigurationVerdict>& verdicts,
-                                  const Gate& gate, const std::string& title, const std::string& command);
+nlohmann::json batch_summary_json(const std::vector<std::string>& jsonl_lines,
+                                  const std::vector<ConfigurationVerdict>& verdicts,
+                                  const Gate& gate, const std::string& title,
+                                  const std::string& command);
 
 }  // namespace plantsim::batch

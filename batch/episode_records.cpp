@@ -5,9 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -22,9 +22,10 @@ using nlohmann::json;
 
 bool usable_record(const std::string& line) {
   const json j = json::parse(line, nullptr, false);
-  return j.is_object() && j.contains("id") && j["id"].is_string() && j.contains("scenario") && j["scenario"].is_string() &&
-         j.contains("index") && j["index"].is_number_integer() && j.contains("world") && j["world"].is_string() &&
-         j.contains("docked") && j["docked"].is_boolean();
+  return j.is_object() && j.contains("id") && j["id"].is_string() && j.contains("scenario") &&
+         j["scenario"].is_string() && j.contains("index") && j["index"].is_number_integer() &&
+         j.contains("world") && j["world"].is_string() && j.contains("docked") &&
+         j["docked"].is_boolean();
 }
 
 /// Closes the descriptor on every way out.
@@ -53,17 +54,23 @@ JsonlScan scan_jsonl(const std::string& path, const std::function<void(std::stri
   const Fd f{::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC)};
   if (f.fd < 0) {
     if (errno == ENOENT) return scan;
-    if (errno == ELOOP) throw std::invalid_argument(path + " is a symbolic link; plantsim neither follows nor replaces links");
+    if (errno == ELOOP)
+      throw std::invalid_argument(
+          path + " is a symbolic link; plantsim neither follows nor replaces links");
     throw std::invalid_argument(util::system_error_text("cannot read " + path));
   }
-  struct stat st{};
-  if (::fstat(f.fd, &st) != 0 || !S_ISREG(st.st_mode)) throw std::invalid_argument(path + " is not a regular file");
+  struct stat st {};
+  if (::fstat(f.fd, &st) != 0 || !S_ISREG(st.st_mode))
+    throw std::invalid_argument(path + " is not a regular file");
   std::string line, chunk(1 << 16, '\0');
   bool too_long = false;
   auto finish_line = [&]() {
-    if (too_long) ++scan.bad_lines;
-    else if (usable_record(line)) each(std::move(line));
-    else if (line.find_first_not_of(" \t\r") != std::string::npos) ++scan.bad_lines;
+    if (too_long)
+      ++scan.bad_lines;
+    else if (usable_record(line))
+      each(std::move(line));
+    else if (line.find_first_not_of(" \t\r") != std::string::npos)
+      ++scan.bad_lines;
     line.clear();
     too_long = false;
   };
@@ -75,10 +82,13 @@ JsonlScan scan_jsonl(const std::string& path, const std::function<void(std::stri
     for (std::size_t at = 0; at < static_cast<std::size_t>(n);) {
       const char* begin = chunk.data() + at;
       const void* newline = std::memchr(begin, '\n', static_cast<std::size_t>(n) - at);
-      const std::size_t len = newline ? static_cast<const char*>(newline) - begin : static_cast<std::size_t>(n) - at;
+      const std::size_t len =
+          newline ? static_cast<const char*>(newline) - begin : static_cast<std::size_t>(n) - at;
       if (!too_long) {
-        if (line.size() + len > kMaxRecordBytes) too_long = true, line.clear(), line.shrink_to_fit();
-        else line.append(begin, len);
+        if (line.size() + len > kMaxRecordBytes)
+          too_long = true, line.clear(), line.shrink_to_fit();
+        else
+          line.append(begin, len);
       }
       at += len;
       if (newline) {
@@ -98,11 +108,14 @@ std::vector<std::string> read_records(const std::string& path) {
 }
 
 bool is_batch_output_name(const std::string& name) {
-  static const char* const exact[] = {"episodes.jsonl", "summary.csv", "summary.json", "sweep.csv", "report.html", ".plantsim.lock", "failures"};
+  static const char* const exact[] = {"episodes.jsonl", "summary.csv", "summary.json",
+                                      "sweep.csv",      "report.html", ".plantsim.lock",
+                                      "failures"};
   for (const char* e : exact)
     if (name == e) return true;
   auto png_with_prefix = [&](const std::string& prefix) {
-    return name.rfind(prefix, 0) == 0 && name.size() > prefix.size() + 4 && name.compare(name.size() - 4, 4, ".png") == 0;
+    return name.rfind(prefix, 0) == 0 && name.size() > prefix.size() + 4 &&
+           name.compare(name.size() - 4, 4, ".png") == 0;
   };
   return png_with_prefix("chart_") || png_with_prefix("paths_");
 }
@@ -111,27 +124,37 @@ void check_batch_output_folder(const std::string& dir, const std::vector<std::st
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status top = fs::symlink_status(dir, ec);
-  if (fs::is_symlink(top)) throw std::invalid_argument("output folder '" + dir + "' is a symbolic link; name the folder itself");
+  if (fs::is_symlink(top))
+    throw std::invalid_argument("output folder '" + dir +
+                                "' is a symbolic link; name the folder itself");
   if (!fs::exists(top)) return;
-  if (!fs::is_directory(top)) throw std::invalid_argument("output folder '" + dir + "' is not a folder");
+  if (!fs::is_directory(top))
+    throw std::invalid_argument("output folder '" + dir + "' is not a folder");
   bool has_records = false, has_other_outputs = false;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
     if (e.is_symlink(ec))
-      throw std::invalid_argument("output folder '" + dir + "' holds the symbolic link '" + name +
-                                  "'; plantsim neither follows nor replaces links in its output folders");
-    if (!is_batch_output_name(name) && std::find(own.begin(), own.end(), name) == own.end() && !junit_report(e))
+      throw std::invalid_argument(
+          "output folder '" + dir + "' holds the symbolic link '" + name +
+          "'; plantsim neither follows nor replaces links in its output folders");
+    if (!is_batch_output_name(name) && std::find(own.begin(), own.end(), name) == own.end() &&
+        !junit_report(e))
       throw std::invalid_argument("output folder '" + dir + "' holds '" + name +
-                                  "', not a batch output; choose a new or empty folder (a batch resumes only its own folder)");
+                                  "', not a batch output; choose a new or empty folder (a batch "
+                                  "resumes only its own folder)");
     (name == "episodes.jsonl" ? has_records : has_other_outputs) |= name != ".plantsim.lock";
   }
   if (has_other_outputs && !has_records)
-    throw std::invalid_argument("output folder '" + dir + "' holds report files but no episodes.jsonl: not a batch's folder "
-                                "(or one whose records were removed); choose a new or empty folder");
-  if (const fs::path failures = fs::path(dir) / "failures"; fs::exists(fs::symlink_status(failures, ec)))
+    throw std::invalid_argument(
+        "output folder '" + dir +
+        "' holds report files but no episodes.jsonl: not a batch's folder "
+        "(or one whose records were removed); choose a new or empty folder");
+  if (const fs::path failures = fs::path(dir) / "failures";
+      fs::exists(fs::symlink_status(failures, ec)))
     for (const fs::directory_entry& e : fs::directory_iterator(failures, ec))
       if (e.is_symlink(ec) || !e.is_regular_file(ec))
-        throw std::invalid_argument("output folder '" + dir + "' holds " + e.path().string() + ", not a figure a batch wrote");
+        throw std::invalid_argument("output folder '" + dir + "' holds " + e.path().string() +
+                                    ", not a figure a batch wrote");
 }
 
 }  // namespace plantsim::batch

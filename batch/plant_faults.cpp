@@ -33,7 +33,8 @@ double length_of(const std::vector<geom::Vec2>& plan) {
 
 // The plant with these unmapped boxes still lets a robot that knows them reach the staging
 // pose from the start, keeping the clearance its replanning keeps, and dock.
-bool still_dockable(const worlds::World& w, const std::vector<geom::Rect>& boxes, double clearance_m) {
+bool still_dockable(const worlds::World& w, const std::vector<geom::Rect>& boxes,
+                    double clearance_m) {
   worlds::World plant = w;
   plant.obstacles.insert(plant.obstacles.end(), boxes.begin(), boxes.end());
   if (!worlds::docking_area_clear(plant)) return false;
@@ -41,19 +42,24 @@ bool still_dockable(const worlds::World& w, const std::vector<geom::Rect>& boxes
   in.inflation_m += clearance_m;
   in.snap_to_free = true;  // the start may sit within the extra clearance, not in the box
   const auto vg = planner::make_planner("vg", in);
-  return vg->plan(w.start.position(), worlds::staging_pose(w).position()).status == planner::PlanStatus::kOk;
+  return vg->plan(w.start.position(), worlds::staging_pose(w).position()).status ==
+         planner::PlanStatus::kOk;
 }
 
 bool leaves_poses_free(const worlds::World& w, const geom::Rect& box) {
   const double r = w.robot.radius_m + 0.3;  // not right against the start or the docked pose
   for (const geom::Pose2& p : {w.start, w.charger})
-    if (std::hypot(std::max({box.xmin - p.x, 0.0, p.x - box.xmax}), std::max({box.ymin - p.y, 0.0, p.y - box.ymax})) < r) return false;
-  return geom::in_closed_rect(w.floor, {box.xmin, box.ymin}) && geom::in_closed_rect(w.floor, {box.xmax, box.ymax});
+    if (std::hypot(std::max({box.xmin - p.x, 0.0, p.x - box.xmax}),
+                   std::max({box.ymin - p.y, 0.0, p.y - box.ymax})) < r)
+      return false;
+  return geom::in_closed_rect(w.floor, {box.xmin, box.ymin}) &&
+         geom::in_closed_rect(w.floor, {box.xmax, box.ymax});
 }
 
 }  // namespace
 
-worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector<geom::Vec2>& plan) {
+worlds::MovingObstacle crossing_person(const worlds::World& w,
+                                       const std::vector<geom::Vec2>& plan) {
   double total = 0;
   for (std::size_t i = 1; i < plan.size(); ++i) total += geom::distance(plan[i - 1], plan[i]);
   double left = 0.5 * total;
@@ -69,7 +75,8 @@ worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector
   }
   const geom::Vec2 across{-dir.y, dir.x};
   auto clamp = [&](geom::Vec2 p) {
-    return geom::Vec2{std::clamp(p.x, w.floor.xmin + 0.3, w.floor.xmax - 0.3), std::clamp(p.y, w.floor.ymin + 0.3, w.floor.ymax - 0.3)};
+    return geom::Vec2{std::clamp(p.x, w.floor.xmin + 0.3, w.floor.xmax - 0.3),
+                      std::clamp(p.y, w.floor.ymin + 0.3, w.floor.ymax - 0.3)};
   };
   worlds::MovingObstacle m;
   m.name = "crossing person";
@@ -95,7 +102,6 @@ worlds::MovingObstacle crossing_person(const worlds::World& w, const std::vector
   return m;
 }
 
-
 namespace {
 
 // Where a person meets the final approach (halfway between the staging pose and the charger),
@@ -106,7 +112,8 @@ struct AcrossFinalApproach {
 
 AcrossFinalApproach across_final_approach(const worlds::World& w, double person_size_m) {
   const geom::Pose2 staging = worlds::staging_pose(w);
-  const geom::Vec2 at = staging.position() + (0.5 * w.charger_spec.staging_distance_m) * staging.heading();
+  const geom::Vec2 at =
+      staging.position() + (0.5 * w.charger_spec.staging_distance_m) * staging.heading();
   const geom::Vec2 across{-staging.heading().y, staging.heading().x};
   auto free_at = [&](geom::Vec2 c) {
     if (!geom::in_closed_rect(w.floor.inflated(-0.5 * person_size_m), c)) return false;
@@ -135,23 +142,29 @@ worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double pla
   m.waypoints = {a.left, a.right};
   m.speed_mps = 0.8;
   // The robot approaches at 0.08 m/s: the person arrives when it is a quarter of the way in.
-  const double robot_there_s = robot_at_staging_s(plan_length_m) + 0.25 * w.charger_spec.staging_distance_m / 0.08;
-  m.start_time_s = std::max(0.0, robot_there_s - geom::distance(m.waypoints[0], a.at) / m.speed_mps);
+  const double robot_there_s =
+      robot_at_staging_s(plan_length_m) + 0.25 * w.charger_spec.staging_distance_m / 0.08;
+  m.start_time_s =
+      std::max(0.0, robot_there_s - geom::distance(m.waypoints[0], a.at) / m.speed_mps);
   return m;
 }
 
-worlds::MovingObstacle person_standing_at_dock(const worlds::World& w, double plan_length_m, double standing_s) {
+worlds::MovingObstacle person_standing_at_dock(const worlds::World& w, double plan_length_m,
+                                               double standing_s) {
   worlds::MovingObstacle m;
   m.name = "person standing at the dock";
   m.width_m = m.height_m = 0.5;
   const AcrossFinalApproach a = across_final_approach(w, m.width_m);
-  m.waypoints = {a.at, geom::distance(a.at, a.right) >= geom::distance(a.at, a.left) ? a.right : a.left};
+  m.waypoints = {a.at,
+                 geom::distance(a.at, a.right) >= geom::distance(a.at, a.left) ? a.right : a.left};
   m.speed_mps = 0.8;
-  m.start_time_s = robot_at_staging_s(plan_length_m) + standing_s;  // stands until then, then walks off
+  m.start_time_s =
+      robot_at_staging_s(plan_length_m) + standing_s;  // stands until then, then walks off
   return m;
 }
 
-std::vector<geom::Rect> unmapped_across_path(const worlds::World& w, const std::vector<geom::Vec2>& plan, int count,
+std::vector<geom::Rect> unmapped_across_path(const worlds::World& w,
+                                             const std::vector<geom::Vec2>& plan, int count,
                                              std::uint64_t seed, double replan_clearance_m) {
   std::vector<geom::Rect> boxes;
   const double length = length_of(plan), keep_clear = 1.5;
@@ -165,7 +178,8 @@ std::vector<geom::Rect> unmapped_across_path(const worlds::World& w, const std::
     const geom::Vec2 centre = at + offset(rng) * normal;
     double a = side(rng), b = side(rng);
     for (int attempt = 0; attempt < 4; ++attempt, a *= 0.7, b *= 0.7) {
-      const geom::Rect box{centre.x - 0.5 * a, centre.y - 0.5 * b, centre.x + 0.5 * a, centre.y + 0.5 * b};
+      const geom::Rect box{centre.x - 0.5 * a, centre.y - 0.5 * b, centre.x + 0.5 * a,
+                           centre.y + 0.5 * b};
       if (!leaves_poses_free(w, box)) continue;
       std::vector<geom::Rect> with = boxes;
       with.push_back(box);

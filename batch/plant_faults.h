@@ -21,13 +21,15 @@ worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double pla
 /// A person standing on the final approach, halfway between the staging pose and the charger,
 /// from the start until `standing_s` after a robot driving the plan at a steady pace would
 /// reach the staging pose; then they walk off to the side with more room.
-worlds::MovingObstacle person_standing_at_dock(const worlds::World& w, double plan_length_m, double standing_s);
+worlds::MovingObstacle person_standing_at_dock(const worlds::World& w, double plan_length_m,
+                                               double standing_s);
 
 /// `count` boxes the map lacks, spread along the optimal `plan` (start to staging pose), each
 /// 0.4-0.9 m a side and straddling the path, away from the start and the final approach.
 /// A box is shrunk, then dropped, when the plant would no longer leave a way to the charger
 /// at the clearance the robot's replanning keeps (`replan_clearance_m` beyond its inflation).
-std::vector<geom::Rect> unmapped_across_path(const worlds::World& w, const std::vector<geom::Vec2>& plan, int count,
+std::vector<geom::Rect> unmapped_across_path(const worlds::World& w,
+                                             const std::vector<geom::Vec2>& plan, int count,
                                              std::uint64_t seed, double replan_clearance_m = 0.1);
 
 }  // namespace plantsim::batch

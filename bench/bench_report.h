@@ -3,10 +3,9 @@
 #pragma once
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 namespace plantsim::bench {
 
@@ -16,7 +15,8 @@ struct Measure {
   std::string unit;
 };
 
-inline void report(const std::string& bench, const Measure& m, const std::optional<Measure>& baseline = {}) {
+inline void report(const std::string& bench, const Measure& m,
+                   const std::optional<Measure>& baseline = {}) {
   nlohmann::ordered_json j;
   j["bench"] = bench;
   j["case"] = m.case_name;

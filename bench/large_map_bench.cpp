@@ -29,7 +29,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double us_since(Clock::time_point t0) { return std::chrono::duration<double, std::micro>(Clock::now() - t0).count(); }
+double us_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+}
 
 // Polyanya's mean and median time per query, as ../shared/data/README.md records them (measured
 // there on this machine kind, 2026-11-29, mesh loading excluded): a recorded figure, not one
@@ -66,12 +68,16 @@ Spread spread(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   double sum = 0;
   for (double x : v) sum += x;
-  const auto at = [&](double q) { return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))]; };
+  const auto at = [&](double q) {
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())))];
+  };
   return {sum / static_cast<double>(v.size()), at(0.5), at(0.99), v.back()};
 }
 
 // Memory the process grew by during a phase: its peak since the reset above where it started.
-double grown_mb(double before_mb) { return std::max(0.0, peak_memory_mb().value_or(before_mb) - before_mb); }
+double grown_mb(double before_mb) {
+  return std::max(0.0, peak_memory_mb().value_or(before_mb) - before_mb);
+}
 
 using geom::Vec2;
 
@@ -86,9 +92,10 @@ struct AnsweredQuery {
 // reaches each of them as a root or inside a root's interval. Their mean count per query (d from
 // a search of the whole mesh from the start) is work no tuning of such a search removes; only a
 // stronger bound (landmarks) or a distance oracle does.
-double mean_unavoidable_corners(const planner::PlannerInput& in, const std::vector<AnsweredQuery>& queries) {
-  const planner::ObstacleMap map(planner::inflate(in.obstacles, in.inflation_m, in.corner_steps), in.floor,
-                                 in.inflation_m);
+double mean_unavoidable_corners(const planner::PlannerInput& in,
+                                const std::vector<AnsweredQuery>& queries) {
+  const planner::ObstacleMap map(planner::inflate(in.obstacles, in.inflation_m, in.corner_steps),
+                                 in.floor, in.inflation_m);
   const planner::FreeSpaceMesh rectangles(map.rects(), map.free_floor());
   const planner::ConvexMesh mesh(rectangles);
   planner::PolygonSearch search(mesh);
@@ -122,9 +129,10 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       const char* planner;
       int landmarks;
     };
-    for (const Method& m : {Method{"vg", "vg", 0}, Method{"interval", "interval", 0},
-                            Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0},
-                            Method{"polyanya_16_landmarks", "polyanya", 16}}) {
+    for (const Method& m :
+         {Method{"vg", "vg", 0}, Method{"interval", "interval", 0},
+          Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0},
+          Method{"polyanya_16_landmarks", "polyanya", 16}}) {
       const std::string method = m.label;
       in.landmarks = m.landmarks;
       reset_peak_memory();
@@ -143,13 +151,16 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       for (int pass = 0; pass < 2; ++pass)
         for (const Query& q : queries) {
           const auto t = Clock::now();
-          const planner::PlanResult r =
-              planner->plan(worlds::lattice_point(map, q.sx, q.sy), worlds::lattice_point(map, q.gx, q.gy));
+          const planner::PlanResult r = planner->plan(worlds::lattice_point(map, q.sx, q.sy),
+                                                      worlds::lattice_point(map, q.gx, q.gy));
           (pass == 0 ? cold : warm).push_back(us_since(t));
-          if (pass == 0) expanded += static_cast<double>(r.stats.expanded) / static_cast<double>(queries.size());
-          if (r.status != planner::PlanStatus::kOk || std::abs(r.length - q.reference) > 5e-6 * q.reference + 1e-5) {
-            std::cerr << "bench: " << name << " " << method << " query " << q.sx << " " << q.sy << " -> " << q.gx << " "
-                      << q.gy << ": length " << r.length << ", reference " << q.reference << "\n";
+          if (pass == 0)
+            expanded += static_cast<double>(r.stats.expanded) / static_cast<double>(queries.size());
+          if (r.status != planner::PlanStatus::kOk ||
+              std::abs(r.length - q.reference) > 5e-6 * q.reference + 1e-5) {
+            std::cerr << "bench: " << name << " " << method << " query " << q.sx << " " << q.sy
+                      << " -> " << q.gx << " " << q.gy << ": length " << r.length << ", reference "
+                      << q.reference << "\n";
             ++failures;
           }
         }
@@ -160,12 +171,16 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
       const std::string at = name + "/" + method + "/";
       report("planner", {at + "preprocess", preprocess_ms, "ms"});
       report("planner", {at + "preprocess_peak_memory", preprocess_mb, "MB"});
-      report("planner", {at + q + "_cold_queries/mean", c.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
-      report("planner", {at + q + "_cold_queries/median", c.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
+      report("planner", {at + q + "_cold_queries/mean", c.mean, "us"},
+             Measure{pre + "mean", ref.mean_us, "us"});
+      report("planner", {at + q + "_cold_queries/median", c.median, "us"},
+             Measure{pre + "median", ref.median_us, "us"});
       report("planner", {at + q + "_cold_queries/p99", c.p99, "us"});
       report("planner", {at + q + "_cold_queries/max", c.max, "us"});
-      report("planner", {at + q + "_warm_queries/mean", w.mean, "us"}, Measure{pre + "mean", ref.mean_us, "us"});
-      report("planner", {at + q + "_warm_queries/median", w.median, "us"}, Measure{pre + "median", ref.median_us, "us"});
+      report("planner", {at + q + "_warm_queries/mean", w.mean, "us"},
+             Measure{pre + "mean", ref.mean_us, "us"});
+      report("planner", {at + q + "_warm_queries/median", w.median, "us"},
+             Measure{pre + "median", ref.median_us, "us"});
       report("planner", {at + "queries_peak_memory_growth", queries_mb, "MB"});
       report("planner", {at + q + "_cold_queries/expanded_mean", expanded, "nodes"});
     }
@@ -196,11 +211,13 @@ int run_random_plant_scaling(bool quick) {
       const planner::PlanResult first = planner->plan(w.start.position(), w.charger.position());
       const double total_ms = us_since(t0) / 1000;
       if (first.status != planner::PlanStatus::kOk) {
-        std::cerr << "bench: random plant of " << n << " rectangles: no path from start to charger\n";
+        std::cerr << "bench: random plant of " << n
+                  << " rectangles: no path from start to charger\n";
         return 1;
       }
       std::mt19937_64 rng(99);
-      std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
+      std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
+          uy(w.floor.ymin, w.floor.ymax);
       std::vector<double> random_ms;
       std::vector<AnsweredQuery> answered;
       double random_expanded = 0;
@@ -217,7 +234,8 @@ int run_random_plant_scaling(bool quick) {
       planner.reset();
       const std::string name = "plant_" + std::to_string(n) + "/" + method + "/";
       const Measure first_query{name + "build_plus_first_query", total_ms, "ms"};
-      const Measure random{name + "random_query_mean", random_ms.empty() ? 0 : spread(random_ms).mean, "ms"};
+      const Measure random{name + "random_query_mean",
+                           random_ms.empty() ? 0 : spread(random_ms).mean, "ms"};
       report("planner", {name + "build", build_ms, "ms"});
       if (method == "vg") {
         report("planner", first_query, smallest);
@@ -229,9 +247,11 @@ int run_random_plant_scaling(bool quick) {
         // time to find them, on a fresh planner. Not on 200,000 rectangles (about a minute).
         if (n <= 50000) {
           const auto t = Clock::now();
-          const std::size_t edges = planner::make_planner("vg", planner::planner_input(w, false))->graph_edges().size();
+          const std::size_t edges =
+              planner::make_planner("vg", planner::planner_input(w, false))->graph_edges().size();
           const double whole_ms = us_since(t) / 1000;
-          report("planner", {name + "whole_reduced_graph_edges", static_cast<double>(edges), "edges"});
+          report("planner",
+                 {name + "whole_reduced_graph_edges", static_cast<double>(edges), "edges"});
           report("planner", {name + "whole_reduced_graph_build", whole_ms, "ms"}, first_query);
         }
       } else {
@@ -246,13 +266,15 @@ int run_random_plant_scaling(bool quick) {
       if (method == "polyanya" && !random_ms.empty() && n <= 50000) {
         const double queries = static_cast<double>(random_ms.size());
         const Measure floor{name + "random_query_unavoidable_corners",
-                            mean_unavoidable_corners(planner::planner_input(w, false), answered), "corners"};
+                            mean_unavoidable_corners(planner::planner_input(w, false), answered),
+                            "corners"};
         const double expanded = random_expanded / queries;
         report("planner", floor);
         report("planner", {name + "random_query_expanded_mean", expanded, "intervals"}, floor);
         const double per_interval_ms = random.value / expanded;
         report("planner",
-               {name + "random_query_one_expansion_per_unavoidable_corner", floor.value * per_interval_ms, "ms"},
+               {name + "random_query_one_expansion_per_unavoidable_corner",
+                floor.value * per_interval_ms, "ms"},
                random);
       }
       if (!smallest) smallest = first_query;
@@ -264,9 +286,10 @@ int run_random_plant_scaling(bool quick) {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (std::size_t i = 0; i < log_n.size(); ++i)
       sx += log_n[i], sy += log_ms[i], sxx += log_n[i] * log_n[i], sxy += log_n[i] * log_ms[i];
-    report("planner", {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) + "/" + method +
-                           "/build_plus_first_query_growth_exponent",
-                       (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
+    report("planner",
+           {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) + "/" +
+                method + "/build_plus_first_query_growth_exponent",
+            (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
   }
   return 0;
 }

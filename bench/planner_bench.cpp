@@ -11,10 +11,10 @@
 #include "bench/bench_report.h"
 #include "bench/large_map_bench.h"
 #include "geometry/clearance.h"
-#include "render/png_io.h"
-#include "render/scaling_chart.h"
 #include "planner/planner.h"
 #include "planner/vg/vg_overlay.h"
+#include "render/png_io.h"
+#include "render/scaling_chart.h"
 #include "worlds/random_plant.h"
 #include "worlds/world_loader.h"
 
@@ -78,7 +78,8 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
   const int reps = quick ? 3 : 7;
   std::optional<Measure> previous_first;
   render::ScalingSeries vg_series{"vg (visibility graph, A*)", {}, {}},
-      trad_series{"vg-traditional (all pairs tested)", {}, {}}, grid_series{"grid (0.1 m cells, A*)", {}, {}},
+      trad_series{"vg-traditional (all pairs tested)", {}, {}},
+      grid_series{"grid (0.1 m cells, A*)", {}, {}},
       interval_series{"interval (mesh, interval search)", {}, {}};
   for (const Named& nw : worlds) {
     const FirstQuery fast = build_and_query("vg", nw.world, reps);
@@ -91,7 +92,8 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       return 1;
     }
     std::optional<FirstQuery> trad;
-    if (nw.traditional) trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
+    if (nw.traditional)
+      trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
     const double obstacles = static_cast<double>(nw.world.obstacles.size());
     vg_series.size.push_back(obstacles);
     vg_series.cost.push_back(fast.total_ms);
@@ -109,22 +111,32 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       if (!trad) return std::nullopt;
       return Measure{nw.name + "/vg-traditional/" + metric, v, "ms"};
     };
-    report("planner", {nw.name + "/vg/build", fast.build_ms, "ms"}, base("build", trad ? trad->build_ms : 0));
+    report("planner", {nw.name + "/vg/build", fast.build_ms, "ms"},
+           base("build", trad ? trad->build_ms : 0));
     const Measure first{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"};
     // Without a traditional run (N5000), growth against the previous world size.
-    report("planner", first, trad ? base("build_plus_first_query", trad->total_ms) : previous_first);
+    report("planner", first,
+           trad ? base("build_plus_first_query", trad->total_ms) : previous_first);
     previous_first = first;
-    report("planner", {nw.name + "/vg/vertices", static_cast<double>(fast.result.stats.vertices), "count"},
+    report("planner",
+           {nw.name + "/vg/vertices", static_cast<double>(fast.result.stats.vertices), "count"},
            trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/vertices",
-                                                 static_cast<double>(trad->result.stats.vertices), "count"})
+                                                 static_cast<double>(trad->result.stats.vertices),
+                                                 "count"})
                 : std::nullopt);
-    report("planner", {nw.name + "/vg/edges_tested_visible", static_cast<double>(fast.result.stats.edges), "count"},
+    report("planner",
+           {nw.name + "/vg/edges_tested_visible", static_cast<double>(fast.result.stats.edges),
+            "count"},
            trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/edges",
-                                                 static_cast<double>(trad->result.stats.edges), "count"})
+                                                 static_cast<double>(trad->result.stats.edges),
+                                                 "count"})
                 : std::nullopt);
-    report("planner", {nw.name + "/vg/segment_tests", static_cast<double>(fast.result.stats.segment_tests), "count"},
-           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/segment_tests",
-                                                 static_cast<double>(trad->result.stats.segment_tests), "count"})
+    report("planner",
+           {nw.name + "/vg/segment_tests", static_cast<double>(fast.result.stats.segment_tests),
+            "count"},
+           trad ? std::optional<Measure>(
+                      Measure{nw.name + "/vg-traditional/segment_tests",
+                              static_cast<double>(trad->result.stats.segment_tests), "count"})
                 : std::nullopt);
     if (trad && std::abs(trad->result.length - fast.result.length) > 1e-9) {
       std::cerr << "bench: length mismatch on " << nw.name << "\n";
@@ -167,7 +179,8 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       std::vector<geom::Rect> raw, grown;
       for (int k = 1; k <= boxes; ++k) {
         const double f = static_cast<double>(k) / (boxes + 1);
-        const std::size_t i = std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
+        const std::size_t i =
+            std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
         const geom::Vec2 c = way.path[i] + 0.5 * (way.path[i + 1] - way.path[i]);
         raw.push_back({c.x - 0.3, c.y - 0.3, c.x + 0.3, c.y + 0.3});
         grown.push_back(raw.back().inflated(in.inflation_m));
@@ -179,17 +192,23 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       double rebuild_len = 0, overlay_len = 0;
       for (int r = 0; r < reps; ++r) {
         auto t0 = Clock::now();
-        rebuild_len = planner::make_planner("vg", with)->plan(nw.world.start.position(), nw.world.charger.position()).length;
+        rebuild_len = planner::make_planner("vg", with)
+                          ->plan(nw.world.start.position(), nw.world.charger.position())
+                          .length;
         rebuild_ms.push_back(ms_since(t0));
         t0 = Clock::now();
-        overlay_len = planner::plan_with_added(*vg, grown, nw.world.start.position(), nw.world.charger.position()).length;
+        overlay_len = planner::plan_with_added(*vg, grown, nw.world.start.position(),
+                                               nw.world.charger.position())
+                          .length;
         overlay_ms.push_back(ms_since(t0));
       }
       if (std::abs(rebuild_len - overlay_len) > 1e-9 * std::max(1.0, rebuild_len)) {
-        std::cerr << "bench: replan length mismatch on " << nw.name << " with " << boxes << " boxes\n";
+        std::cerr << "bench: replan length mismatch on " << nw.name << " with " << boxes
+                  << " boxes\n";
         return 1;
       }
-      const std::string what = "/vg/replan_" + std::to_string(boxes) + (boxes == 1 ? "_box" : "_boxes");
+      const std::string what =
+          "/vg/replan_" + std::to_string(boxes) + (boxes == 1 ? "_box" : "_boxes");
       report("planner", {nw.name + what + "_on_map_graph", median(overlay_ms), "ms"},
              Measure{nw.name + what + "_rebuilt", median(rebuild_ms), "ms"});
     }
@@ -199,7 +218,9 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
       const geom::Vec2 mid = way.path[way.path.size() / 2];
       std::size_t gone = 0;
       for (std::size_t i = 1; i < in.obstacles.size(); ++i)
-        if (geom::distance_to_rect(mid, in.obstacles[i]) < geom::distance_to_rect(mid, in.obstacles[gone])) gone = i;
+        if (geom::distance_to_rect(mid, in.obstacles[i]) <
+            geom::distance_to_rect(mid, in.obstacles[gone]))
+          gone = i;
       std::vector<double> changed_ms, rebuild_ms;
       double changed_len = 0, rebuild_len = 0;
       for (int r = 0; r < reps; ++r) {
@@ -208,22 +229,29 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
         changed_len = changed->plan(nw.world.start.position(), nw.world.charger.position()).length;
         changed_ms.push_back(ms_since(t0));
         t0 = Clock::now();
-        rebuild_len = planner::make_planner("vg", changed->input())->plan(nw.world.start.position(), nw.world.charger.position()).length;
+        rebuild_len = planner::make_planner("vg", changed->input())
+                          ->plan(nw.world.start.position(), nw.world.charger.position())
+                          .length;
         rebuild_ms.push_back(ms_since(t0));
       }
       if (std::abs(rebuild_len - changed_len) > 1e-9 * std::max(1.0, rebuild_len)) {
-        std::cerr << "bench: replan length mismatch on " << nw.name << " with an obstacle removed\n";
+        std::cerr << "bench: replan length mismatch on " << nw.name
+                  << " with an obstacle removed\n";
         return 1;
       }
-      report("planner", {nw.name + "/vg/replan_1_removed_on_changed_graph", median(changed_ms), "ms"},
+      report("planner",
+             {nw.name + "/vg/replan_1_removed_on_changed_graph", median(changed_ms), "ms"},
              Measure{nw.name + "/vg/replan_1_removed_rebuilt", median(rebuild_ms), "ms"});
     }
   }
   if (!chart_png.empty()) {
     const render::Image img = render::draw_scaling_chart(
-        {vg_series, trad_series, grid_series, interval_series}, "Planning time against the number of obstacles",
-        "build plus first query, median of " + std::to_string(reps) + " runs (grid and vg-traditional fewer), on world_N10..N1000 "
-        "and a random N5000; vg-traditional " + std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
+        {vg_series, trad_series, grid_series, interval_series},
+        "Planning time against the number of obstacles",
+        "build plus first query, median of " + std::to_string(reps) +
+            " runs (grid and vg-traditional fewer), on world_N10..N1000 "
+            "and a random N5000; vg-traditional " +
+            std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
         "obstacles (rectangles)", "time (ms)");
     render::write_png(img, chart_png);
     std::cerr << "bench: chart -> " << chart_png << "\n";

@@ -44,7 +44,15 @@ int run_render_bench(const std::string& shared_data, bool quick) {
     const double f = i / 1999.0;
     const geom::Vec2 p = w.start.position() + f * (w.charger.position() - w.start.position()) +
                          geom::Vec2{0, 3.0 * std::sin(12 * f)};
-    traj.push_back({0.1 * i, {p.x, p.y, 0}, {p.x, p.y, 0}, 0, 0.6 * std::fabs(std::sin(5 * f)), 0, controller::DockPhase::kTravel, false, {}});
+    traj.push_back({0.1 * i,
+                    {p.x, p.y, 0},
+                    {p.x, p.y, 0},
+                    0,
+                    0.6 * std::fabs(std::sin(5 * f)),
+                    0,
+                    controller::DockPhase::kTravel,
+                    false,
+                    {}});
     if (i % 100 == 0) plan.push_back(p);
   }
   const int frames = quick ? 10 : 40;
@@ -63,26 +71,47 @@ int run_render_bench(const std::string& shared_data, bool quick) {
     };
     auto fps = [&](auto&& body) { return best_fps(frames, body); };
     const std::string tag = "1280x720_N1000_2000pts_ss" + std::to_string(ss);
-    const Measure render_only{tag + "/render_only_fps", fps([&] { draw(); canvas.finish(); }), "frames/s"};
+    const Measure render_only{tag + "/render_only_fps", fps([&] {
+                                draw();
+                                canvas.finish();
+                              }),
+                              "frames/s"};
     report("render", render_only);
-    report("render", {tag + "/render_readback_fps", fps([&] { draw(); (void)canvas.read(); }), "frames/s"}, render_only);
-    report("render", {tag + "/render_png_default_fps", fps([&] { draw(); (void)render::encode_png(canvas.read()); }), "frames/s"},
+    report("render",
+           {tag + "/render_readback_fps", fps([&] {
+              draw();
+              (void)canvas.read();
+            }),
+            "frames/s"},
            render_only);
     report("render",
-           {tag + "/render_png_fast_fps", fps([&] { draw(); (void)render::encode_png(canvas.read(), render::PngSettings::fast()); }),
+           {tag + "/render_png_default_fps", fps([&] {
+              draw();
+              (void)render::encode_png(canvas.read());
+            }),
+            "frames/s"},
+           render_only);
+    report("render",
+           {tag + "/render_png_fast_fps", fps([&] {
+              draw();
+              (void)render::encode_png(canvas.read(), render::PngSettings::fast());
+            }),
             "frames/s"},
            render_only);
     // Frame sequences (animations): the next frame is drawn while the last is encoded.
     {
       auto pipelined = [&] {
-        render::PngPipeline pipe(render::PngSettings::fast(), 2, [](const std::string&, const std::string&) {});
+        render::PngPipeline pipe(render::PngSettings::fast(), 2,
+                                 [](const std::string&, const std::string&) {});
         for (int i = 0; i < frames; ++i) {
           draw();
           pipe.push(canvas.read(), "");
         }
         pipe.close();
       };
-      report("render", {tag + "/render_png_fast_pipelined_fps", frames * best_fps(1, pipelined), "frames/s"}, render_only);
+      report("render",
+             {tag + "/render_png_fast_pipelined_fps", frames * best_fps(1, pipelined), "frames/s"},
+             render_only);
     }
   }
   // The whole run figure as `plantsim run` writes it (layers, legend, text, docking close-up),
@@ -99,21 +128,29 @@ int run_render_bench(const std::string& shared_data, bool quick) {
     o.width_px = 1280;
     o.height_px = 720;
     auto figures = [&] {
-      render::PngPipeline pipe(render::PngSettings::fast(), 2, [](const std::string&, const std::string&) {});
+      render::PngPipeline pipe(render::PngSettings::fast(), 2,
+                               [](const std::string&, const std::string&) {});
       for (int i = 0; i < frames; ++i) pipe.push(render::draw_run_figure(w, run, o), "");
       pipe.close();
     };
     const Measure target{"target_fps", 100.0, "frames/s"};
-    report("render", {"1280x720_N1000_2000pts/run_figure_png_fast_pipelined_fps", frames * best_fps(1, figures), "frames/s"}, target);
+    report("render",
+           {"1280x720_N1000_2000pts/run_figure_png_fast_pipelined_fps",
+            frames * best_fps(1, figures), "frames/s"},
+           target);
     // The two halves the pipeline overlaps, each alone: the pipeline cannot beat the slower,
     // and on two cores both share them with llvmpipe's rasterizer threads.
     const render::Image figure = render::draw_run_figure(w, run, o);
-    report("render", {"1280x720_N1000_2000pts/run_figure_draw_only_fps", best_fps(frames, [&] { (void)render::draw_run_figure(w, run, o); }), "frames/s"},
-           target);
     report("render",
-           {"1280x720_N1000_2000pts/run_figure_png_fast_encode_only_fps",
-            best_fps(frames, [&] { (void)render::encode_png(figure, render::PngSettings::fast()); }), "frames/s"},
+           {"1280x720_N1000_2000pts/run_figure_draw_only_fps",
+            best_fps(frames, [&] { (void)render::draw_run_figure(w, run, o); }), "frames/s"},
            target);
+    report(
+        "render",
+        {"1280x720_N1000_2000pts/run_figure_png_fast_encode_only_fps",
+         best_fps(frames, [&] { (void)render::encode_png(figure, render::PngSettings::fast()); }),
+         "frames/s"},
+        target);
   }
   return 0;
 }

@@ -20,13 +20,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 // Bare Box2D, the ceiling an episode is measured against: the same bodies (obstacles, walls,
 // charger, moving obstacles, robot) stepped over the same number of steps, the robot moved
 // along the episode's own true trajectory by setting its velocity, with no sensing, no
 // estimation and no control.
-double replay_steps_per_s(const worlds::World& w, const sim::EpisodeResult& e, const sim::StepSettings& step) {
+double replay_steps_per_s(const worlds::World& w, const sim::EpisodeResult& e,
+                          const sim::StepSettings& step) {
   sim::PhysicsWorld bare(w);
   const auto& t = e.trajectory;
   const auto t0 = Clock::now();
@@ -50,13 +53,16 @@ struct BeamCost {
   double fan_ns = 0, box2d_ns = 0;
 };
 
-BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e, const sim::LidarParams& lidar) {
+BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e,
+                   const sim::LidarParams& lidar) {
   const sim::PhysicsWorld physics(w);
   const int n = lidar.beam_count;
-  const double increment = n > 1 ? lidar.field_of_view_rad / (n - 1) : 0.0, first = -0.5 * lidar.field_of_view_rad;
+  const double increment = n > 1 ? lidar.field_of_view_rad / (n - 1) : 0.0,
+               first = -0.5 * lidar.field_of_view_rad;
   std::vector<geom::Pose2> poses;
   const std::size_t stride = std::max<std::size_t>(1, e.trajectory.size() / 200);
-  for (std::size_t i = 0; i < e.trajectory.size(); i += stride) poses.push_back(e.trajectory[i].truth);
+  for (std::size_t i = 0; i < e.trajectory.size(); i += stride)
+    poses.push_back(e.trajectory[i].truth);
   std::vector<geom::Vec2> directions(static_cast<std::size_t>(n));
   std::vector<std::optional<sim::RayHit>> hits;
   double checksum = 0;  // keeps the casts from being optimised away; compared below
@@ -65,20 +71,29 @@ BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e, const si
     const auto t0 = Clock::now();
     double sum = 0;
     for (const geom::Pose2& p : poses) {
-      for (int k = 0; k < n; ++k) directions[static_cast<std::size_t>(k)] = geom::unit_from_angle(p.yaw + first + k * increment);
+      for (int k = 0; k < n; ++k)
+        directions[static_cast<std::size_t>(k)] =
+            geom::unit_from_angle(p.yaw + first + k * increment);
       if (pass == 0) {
-        physics.ray_fan(p.position(), directions, p.yaw + first, increment, lidar.max_range_m, hits);
+        physics.ray_fan(p.position(), directions, p.yaw + first, increment, lidar.max_range_m,
+                        hits);
         for (const auto& h : hits) sum += h ? h->range_m : 0.0;
       } else {
         for (const geom::Vec2& d : directions)
-          if (const auto h = physics.box2d_ray_cast(p.position(), p.position() + lidar.max_range_m * d)) sum += h->range_m;
+          if (const auto h =
+                  physics.box2d_ray_cast(p.position(), p.position() + lidar.max_range_m * d))
+            sum += h->range_m;
       }
     }
-    const double ns = 1e9 * seconds_since(t0) / static_cast<double>(poses.size() * static_cast<std::size_t>(n));
+    const double ns =
+        1e9 * seconds_since(t0) / static_cast<double>(poses.size() * static_cast<std::size_t>(n));
     (pass == 0 ? cost.fan_ns : cost.box2d_ns) = ns;
-    if (pass == 0) checksum = sum;
-    else if (std::fabs(sum - checksum) > 1e-3 * static_cast<double>(poses.size() * static_cast<std::size_t>(n)))
-      std::cerr << "bench sim: fan and Box2D ranges differ (sum " << checksum << " vs " << sum << ")\n";
+    if (pass == 0)
+      checksum = sum;
+    else if (std::fabs(sum - checksum) >
+             1e-3 * static_cast<double>(poses.size() * static_cast<std::size_t>(n)))
+      std::cerr << "bench sim: fan and Box2D ranges differ (sum " << checksum << " vs " << sum
+                << ")\n";
   }
   return cost;
 }
@@ -120,7 +135,8 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     oracle.perception.mode = robot::PerceptionMode::kOracle;
 
     // Best of the repetitions for each (the least disturbed by the machine).
-    double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0, best_drive = 0;
+    double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0,
+           best_drive = 0;
     BeamCost best_beam{1e300, 1e300};
     for (int r = 0; r < reps; ++r) {
       const EpisodeTiming e = time_episode(w, config);
@@ -134,29 +150,34 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
       best_oracle = std::max(best_oracle, time_episode(w, oracle).steps_per_s);
       best_bare = std::max(best_bare, replay_steps_per_s(w, e.result, config.step));
       const BeamCost beam = beam_cost(w, e.result, config.lidar);
-      best_beam = {std::min(best_beam.fan_ns, beam.fan_ns), std::min(best_beam.box2d_ns, beam.box2d_ns)};
+      best_beam = {std::min(best_beam.fan_ns, beam.fan_ns),
+                   std::min(best_beam.box2d_ns, beam.box2d_ns)};
       // The same replay length with the tyre model driving a slow circle instead.
       sim::PhysicsWorld driven(w);
       sim::WheelDrive drive(w.robot, config.drive);
       const auto t1 = Clock::now();
       for (std::int64_t k = 0; k < e.result.physics_steps; ++k) {
-        drive.command({0.1 - 0.1 * w.robot.wheel_base_m, 0.1 + 0.1 * w.robot.wheel_base_m}, config.step.dt_s);
+        drive.command({0.1 - 0.1 * w.robot.wheel_base_m, 0.1 + 0.1 * w.robot.wheel_base_m},
+                      config.step.dt_s);
         drive.apply(driven, config.step.dt_s);
         driven.step(config.step);
       }
-      best_drive = std::max(best_drive, static_cast<double>(e.result.physics_steps) / seconds_since(t1));
+      best_drive =
+          std::max(best_drive, static_cast<double>(e.result.physics_steps) / seconds_since(t1));
     }
     const Measure bare{name + "/bare_box2d_replay_steps_per_s", best_bare, "steps/s"};
     report("sim", bare);
     report("sim", {name + "/box2d_with_wheel_model_steps_per_s", best_drive, "steps/s"}, bare);
     report("sim", {name + "/episode_steps_per_s", best_full, "steps/s"}, bare);
     report("sim", {name + "/episode_oracle_perception_steps_per_s", best_oracle, "steps/s"}, bare);
-    report("sim", {name + "/episode_steps_per_s_including_planning", best_with_plan, "steps/s"}, bare);
+    report("sim", {name + "/episode_steps_per_s_including_planning", best_with_plan, "steps/s"},
+           bare);
     // What the lidar pipeline (360 beams at 15 Hz, the scan update and the tracker) costs:
     // the episode with it against the same episode without it.
     report("sim", {name + "/episode_steps_per_s_with_lidar", best_full, "steps/s"},
            Measure{name + "/episode_steps_per_s_lidar_off", best_no_lidar, "steps/s"});
-    // One beam of a scan, cast exactly as the lidar casts it, against Box2D's ray cast (ratio < 1: cheaper).
+    // One beam of a scan, cast exactly as the lidar casts it, against Box2D's ray cast (ratio < 1:
+    // cheaper).
     report("sim", {name + "/scan_ns_per_beam", best_beam.fan_ns, "ns"},
            Measure{name + "/box2d_ray_cast_ns_per_beam", best_beam.box2d_ns, "ns"});
   }

@@ -6,14 +6,18 @@
 
 namespace plantsim::controller {
 
-double distance_to_box(geom::Vec2 p, const geom::Rect& r) { return geom::distance(p, geom::closest_point(r, p)); }
+double distance_to_box(geom::Vec2 p, const geom::Rect& r) {
+  return geom::distance(p, geom::closest_point(r, p));
+}
 
-bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
-               const std::vector<MovingBox>& boxes, double horizon_s, double step_m) {
+bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m,
+               double radius_m, const std::vector<MovingBox>& boxes, double horizon_s,
+               double step_m) {
   if (boxes.empty()) return true;
   const double direction = twist.v_mps >= 0 ? 1.0 : -1.0;
   const double curvature = std::fabs(twist.v_mps) > 1e-9 ? twist.omega_radps / twist.v_mps : 0.0;
-  const int samples = std::fabs(twist.v_mps) > 1e-9 ? static_cast<int>(std::ceil(distance_m / step_m)) : 0;
+  const int samples =
+      std::fabs(twist.v_mps) > 1e-9 ? static_cast<int>(std::ceil(distance_m / step_m)) : 0;
   // A box already inside the margin does not forbid every motion: one that moves away from it
   // (never closer than now) is how the robot gets out.
   std::vector<double> allowed(boxes.size());
@@ -26,14 +30,17 @@ bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, do
       p = pose.position() + s * pose.heading();
     } else {
       const double dtheta = s * curvature;
-      p = pose.position() + (1.0 / curvature) * geom::Vec2{std::sin(pose.yaw + dtheta) - std::sin(pose.yaw),
-                                                          -std::cos(pose.yaw + dtheta) + std::cos(pose.yaw)};
+      p = pose.position() +
+          (1.0 / curvature) * geom::Vec2{std::sin(pose.yaw + dtheta) - std::sin(pose.yaw),
+                                         -std::cos(pose.yaw + dtheta) + std::cos(pose.yaw)};
     }
-    const double t = std::min(horizon_s, travel_speed_mps > 0 ? std::fabs(s) / travel_speed_mps : 0.0);
+    const double t =
+        std::min(horizon_s, travel_speed_mps > 0 ? std::fabs(s) / travel_speed_mps : 0.0);
     for (std::size_t j = 0; j < boxes.size(); ++j) {
       const MovingBox& b = boxes[j];
       const geom::Vec2 d = t * b.velocity;
-      const geom::Rect moved{b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x, b.box.ymax + d.y};
+      const geom::Rect moved{b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x,
+                             b.box.ymax + d.y};
       if (distance_to_box(p, moved) < allowed[j]) return false;
     }
   }
@@ -45,7 +52,8 @@ bool position_threatened(geom::Vec2 position, double radius_m, const std::vector
   for (const MovingBox& b : boxes)
     for (double t = 0; t <= horizon_s; t += step_s) {
       const geom::Vec2 d = t * b.velocity;
-      if (distance_to_box(position, {b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x, b.box.ymax + d.y}) < radius_m)
+      if (distance_to_box(position, {b.box.xmin + d.x, b.box.ymin + d.y, b.box.xmax + d.x,
+                                     b.box.ymax + d.y}) < radius_m)
         return true;
     }
   return false;

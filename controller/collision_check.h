@@ -25,8 +25,9 @@ struct MovingBox {
 /// at `travel_speed_mps` and each box moving on at its velocity (for at most `horizon_s`).
 /// A twist with no forward motion checks the current position only. A box already closer
 /// than `radius_m` only forbids coming closer still (so the robot can move away from it).
-bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m, double radius_m,
-               const std::vector<MovingBox>& boxes, double horizon_s = 3.0, double step_m = 0.05);
+bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m,
+               double radius_m, const std::vector<MovingBox>& boxes, double horizon_s = 3.0,
+               double step_m = 0.05);
 
 /// True when some box, moving on at its velocity, comes within `radius_m` of `position` in
 /// the next `horizon_s` seconds (sampled every `step_s`).

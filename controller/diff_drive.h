@@ -18,7 +18,8 @@ struct WheelSpeeds {
 };
 
 inline WheelSpeeds to_wheels(Twist t, double wheel_base_m) {
-  return {t.v_mps - 0.5 * wheel_base_m * t.omega_radps, t.v_mps + 0.5 * wheel_base_m * t.omega_radps};
+  return {t.v_mps - 0.5 * wheel_base_m * t.omega_radps,
+          t.v_mps + 0.5 * wheel_base_m * t.omega_radps};
 }
 
 inline Twist to_twist(WheelSpeeds w, double wheel_base_m) {

@@ -10,34 +10,50 @@ namespace plantsim::controller {
 
 std::string_view to_string(DockPhase p) {
   switch (p) {
-    case DockPhase::kTravel: return "travel";
-    case DockPhase::kAlign: return "align";
-    case DockPhase::kApproach: return "approach";
-    case DockPhase::kBackOff: return "back_off";
-    case DockPhase::kDocked: return "docked";
-    case DockPhase::kUndock: return "undock";
-    case DockPhase::kUndocked: return "undocked";
-    case DockPhase::kFailed: return "failed";
+    case DockPhase::kTravel:
+      return "travel";
+    case DockPhase::kAlign:
+      return "align";
+    case DockPhase::kApproach:
+      return "approach";
+    case DockPhase::kBackOff:
+      return "back_off";
+    case DockPhase::kDocked:
+      return "docked";
+    case DockPhase::kUndock:
+      return "undock";
+    case DockPhase::kUndocked:
+      return "undocked";
+    case DockPhase::kFailed:
+      return "failed";
   }
   return "unknown";
 }
 
 std::string_view to_string(DockFailure f) {
   switch (f) {
-    case DockFailure::kNone: return "none";
-    case DockFailure::kRetriesExhausted: return "retries exhausted";
-    case DockFailure::kBlocked: return "back-off blocked";
-    case DockFailure::kUnsettled: return "never settled after a displacement";
-    case DockFailure::kNotLocalized: return "never localised again after a displacement";
-    case DockFailure::kUndockBlocked: return "undock blocked";
+    case DockFailure::kNone:
+      return "none";
+    case DockFailure::kRetriesExhausted:
+      return "retries exhausted";
+    case DockFailure::kBlocked:
+      return "back-off blocked";
+    case DockFailure::kUnsettled:
+      return "never settled after a displacement";
+    case DockFailure::kNotLocalized:
+      return "never localised again after a displacement";
+    case DockFailure::kUndockBlocked:
+      return "undock blocked";
   }
   return "unknown";
 }
 
 double uncertainty_speed_fraction(const DockingParams& p, double position_sigma_m) {
   if (!(position_sigma_m > p.confident_sigma_m)) return 1.0;
-  if (!(p.uncertain_sigma_m > p.confident_sigma_m) || position_sigma_m >= p.uncertain_sigma_m) return p.uncertain_speed_fraction;
-  const double share = (position_sigma_m - p.confident_sigma_m) / (p.uncertain_sigma_m - p.confident_sigma_m);
+  if (!(p.uncertain_sigma_m > p.confident_sigma_m) || position_sigma_m >= p.uncertain_sigma_m)
+    return p.uncertain_speed_fraction;
+  const double share =
+      (position_sigma_m - p.confident_sigma_m) / (p.uncertain_sigma_m - p.confident_sigma_m);
   return 1.0 - share * (1.0 - p.uncertain_speed_fraction);
 }
 
@@ -48,7 +64,10 @@ void DockingController::fail(DockFailure why) {
 
 DockingController::DockingController(PurePursuitParams tracking, DockingParams docking,
                                      std::vector<Vec2> path, Pose2 charger_on_map)
-    : tracker_(tracking, std::move(path)), params_(docking), dock_map_(charger_on_map), dock_odom_(charger_on_map) {}
+    : tracker_(tracking, std::move(path)),
+      params_(docking),
+      dock_map_(charger_on_map),
+      dock_odom_(charger_on_map) {}
 
 Vec2 DockingController::in_dock_frame(Vec2 p) const { return to_robot_frame(dock_odom_, p); }
 
@@ -58,8 +77,10 @@ void DockingController::replace_path(std::vector<Vec2> path) {
 
 void DockingController::miss() {
   // Always back away from the charger first; after the last allowed retry, fail there.
-  if (retries_ >= params_.max_retries) giving_up_ = true;
-  else ++retries_;
+  if (retries_ >= params_.max_retries)
+    giving_up_ = true;
+  else
+    ++retries_;
   phase_ = DockPhase::kBackOff;
 }
 
@@ -68,7 +89,8 @@ void DockingController::use_detection(const Pose2& seen) {
   // placement that was off is corrected by two agreeing detections).
   auto near = [&](const Pose2& a, const Pose2& b) {
     return geom::distance(a.position(), b.position()) <= params_.detection_gate_m &&
-           std::fabs(geom::wrap_angle(a.yaw - b.yaw)) <= params_.detection_gate_m / params_.staging_distance_m;
+           std::fabs(geom::wrap_angle(a.yaw - b.yaw)) <=
+               params_.detection_gate_m / params_.staging_distance_m;
   };
   if (!near(seen, dock_odom_)) {
     const bool confirmed = rejected_detection_ && near(seen, *rejected_detection_);
@@ -79,7 +101,8 @@ void DockingController::use_detection(const Pose2& seen) {
   const double a = params_.detection_blend;
   dock_odom_.x += a * (seen.x - dock_odom_.x);
   dock_odom_.y += a * (seen.y - dock_odom_.y);
-  dock_odom_.yaw = geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
+  dock_odom_.yaw =
+      geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
 }
 
 DockingCommand DockingController::recover(const DockingInput& in) {
@@ -89,7 +112,8 @@ DockingCommand DockingController::recover(const DockingInput& in) {
   // Stopped until the estimate has settled: nothing touching, localised, for a while. A robot
   // that never settles gives up where it stands.
   const bool unsettled = in.displaced || in.bumper_front || in.bumper_rear || !in.localized;
-  if (unsettled) last_unsettled_by_localization_ = !in.localized && !in.bumper_front && !in.bumper_rear;
+  if (unsettled)
+    last_unsettled_by_localization_ = !in.localized && !in.bumper_front && !in.bumper_rear;
   settled_s_ = unsettled ? 0.0 : settled_s_ + in.dt_s;
   unsettled_s_ += in.dt_s;
   if (settled_s_ >= params_.settle_s) {
@@ -120,8 +144,10 @@ bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
   std::vector<MovingBox> movers;
   for (const MovingBox& b : in.nearby_obstacles)
     if (geom::norm(b.velocity) > 0.2) movers.push_back(b);
-  if (movers.empty() || !position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
-                                             movers, params_.yield_horizon_s))
+  if (movers.empty() ||
+      !position_threatened(in.pose.position(),
+                           params_.footprint_radius_m + 0.5 * params_.safety_margin_m, movers,
+                           params_.yield_horizon_s))
     return false;
   const Twist back{-params_.yield_speed_mps, 0.0};
   out.twist = guard(in, back, false) ? back : Twist{};
@@ -130,18 +156,20 @@ bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {
-  const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed && phase_ != DockPhase::kUndock &&
-                       phase_ != DockPhase::kUndocked;
+  const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed &&
+                       phase_ != DockPhase::kUndock && phase_ != DockPhase::kUndocked;
   if (in.displaced && docking && !pressing_ && !recovering_) {
     recovering_ = true;
     settled_s_ = unsettled_s_ = 0;
   }
   if (recovering_) return recover(in);
   // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
-  if (in.charger_in_robot && dock_placed_) use_detection(geom::compose(in.odom_pose, *in.charger_in_robot));
+  if (in.charger_in_robot && dock_placed_)
+    use_detection(geom::compose(in.odom_pose, *in.charger_in_robot));
   DockingCommand out = decide(in);
   // The bumper overrides every phase: never push on into what it touches.
-  if ((in.bumper_front && out.twist.v_mps > 0) || (in.bumper_rear && out.twist.v_mps < 0)) out.twist.v_mps = 0;
+  if ((in.bumper_front && out.twist.v_mps > 0) || (in.bumper_rear && out.twist.v_mps < 0))
+    out.twist.v_mps = 0;
   return out;
 }
 
@@ -150,13 +178,16 @@ bool DockingController::guard(const DockingInput& in, const Twist& twist, bool s
   boxes.reserve(in.nearby_obstacles.size());
   // The charger's block as the dock estimate places it in the map frame: what is sensed
   // there is the charger (a charger off its mapped pose returns off the map), not a hazard.
-  const Pose2 dock_in_map = geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
-  const Vec2 charger_at = dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
+  const Pose2 dock_in_map =
+      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
+  const Vec2 charger_at =
+      dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
   for (const MovingBox& b : in.nearby_obstacles)
     if (!spare_charger || distance_to_box(charger_at, b.box) > 0.25) boxes.push_back(b);
   const double v = std::max(std::fabs(twist.v_mps), std::fabs(in.speed_mps));
   const double ahead = v * v / (2.0 * params_.max_decel_mps2) + params_.check_extra_m;
-  if (arc_clear(in.pose, twist, std::max(v, 0.1), ahead, params_.footprint_radius_m + params_.safety_margin_m, boxes))
+  if (arc_clear(in.pose, twist, std::max(v, 0.1), ahead,
+                params_.footprint_radius_m + params_.safety_margin_m, boxes))
     return true;
   if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
   was_blocked_ = true;
@@ -204,12 +235,14 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       // Never beyond the corner where it will stop and turn in place: a straight arc past it
       // would clip what the path itself turns away from.
       const double braking = v * v / (2.0 * params_.max_decel_mps2);
-      const double ahead = std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
+      const double ahead =
+          std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
       // Slow (starting or slowing) robots take longer to get there: never assume less than
       // a walking pace's worth of time for the obstacles to move.
-      const double travel_speed = std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
-      if (!arc_clear(in.pose, t.twist, travel_speed, ahead, params_.footprint_radius_m + params_.safety_margin_m,
-                     in.nearby_obstacles)) {
+      const double travel_speed =
+          std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
+      if (!arc_clear(in.pose, t.twist, travel_speed, ahead,
+                     params_.footprint_radius_m + params_.safety_margin_m, in.nearby_obstacles)) {
         // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
         // check with it; a go of less than a second between two blocks is the same stop.
         if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
@@ -218,8 +251,9 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         out.twist = {};
         out.blocked = true;
         // Stopped in something's way (it does not yield): back out along the stretch just driven.
-        const bool threatened = position_threatened(in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
-                                                    in.nearby_obstacles, params_.yield_horizon_s);
+        const bool threatened = position_threatened(
+            in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
+            in.nearby_obstacles, params_.yield_horizon_s);
         const Twist back{-params_.yield_speed_mps, 0.0};
         if (straight_run_m_ > 0.05 && threatened && guard(in, back, false)) {
           // ... only while what it senses leaves that stretch clear (a person may be behind too).
@@ -228,7 +262,8 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
           // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
           // so that the next arc is straight, not one that bulges into what blocked the curve.
-          out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps, params_.align_speed_radps)};
+          out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps,
+                                       params_.align_speed_radps)};
         }
         blocked_time_s_ += in.dt_s;
         if (blocked_time_s_ >= params_.replan_after_s) {
@@ -240,8 +275,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       blocked_time_s_ = 0;
       was_blocked_ = false;
       clear_time_s_ += in.dt_s;
-      if (std::fabs(t.twist.omega_radps) < 0.05) straight_run_m_ += t.twist.v_mps * in.dt_s;
-      else straight_run_m_ = 0;
+      if (std::fabs(t.twist.omega_radps) < 0.05)
+        straight_run_m_ += t.twist.v_mps * in.dt_s;
+      else
+        straight_run_m_ = 0;
       if (t.goal_reached) {
         // At the staging pose the map's charger is placed in the odometry frame, once.
         dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
@@ -258,7 +295,8 @@ DockingCommand DockingController::decide(const DockingInput& in) {
         phase_ = DockPhase::kApproach;
         approach_time_s_ = 0;
       } else {
-        out.twist = {0.0, std::clamp(2.0 * err, -params_.align_speed_radps, params_.align_speed_radps)};
+        out.twist = {0.0,
+                     std::clamp(2.0 * err, -params_.align_speed_radps, params_.align_speed_radps)};
       }
       break;
     }
@@ -267,8 +305,10 @@ DockingCommand DockingController::decide(const DockingInput& in) {
       break;
     case DockPhase::kBackOff:
       if (reverse_to_staging(in, out)) {
-        if (giving_up_) fail(DockFailure::kRetriesExhausted);
-        else phase_ = DockPhase::kAlign;
+        if (giving_up_)
+          fail(DockFailure::kRetriesExhausted);
+        else
+          phase_ = DockPhase::kAlign;
       }
       break;
     case DockPhase::kUndock:

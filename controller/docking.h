@@ -3,10 +3,10 @@
 // and when the pads touch, hold them pressed until the charger says it is charging (docked),
 // or back off to the staging pose and retry. The arc check and the bumper guard every phase:
 // the approach and the back-off stop for what they sense (the charger itself excepted), and
-// the bumper forbids pushing on into anything but the pads. Travel follows the plan in the map frame (localised pose); from the
-// staging pose on, everything happens in the odometry frame, which never jumps: the dock is
-// placed there from the map once, then re-anchored by every charger detection, which removes
-// localisation error and odometry drift from the final approach.
+// the bumper forbids pushing on into anything but the pads. Travel follows the plan in the map
+// frame (localised pose); from the staging pose on, everything happens in the odometry frame, which
+// never jumps: the dock is placed there from the map once, then re-anchored by every charger
+// detection, which removes localisation error and odometry drift from the final approach.
 #pragma once
 
 #include <optional>
@@ -26,43 +26,45 @@ enum class DockFailure {
   kNone,
   kRetriesExhausted,  ///< the last allowed approach missed too
   kBlocked,           ///< the back-off stayed blocked past stuck_timeout_s
-  kUnsettled,         ///< after a displacement it never settled (touching, displaced) within stuck_timeout_s
+  kUnsettled,         ///< after a displacement it never settled (touching, displaced) within
+                      ///< stuck_timeout_s
   kNotLocalized,      ///< ... because the estimate never became healthy and tight again
   kUndockBlocked,     ///< charging, but the way back to the staging pose stayed blocked
 };
 std::string_view to_string(DockFailure f);
 
 struct DockingParams {
-  double staging_distance_m = 1.0;      ///< staging pose this far behind the docked pose
-  double approach_speed_mps = 0.08;     ///< final approach speed
-  double approach_lookahead_m = 0.35;   ///< pure-pursuit carrot distance on the approach axis
-  double align_tolerance_rad = 0.01;    ///< turn at staging until within this of the axis
+  double staging_distance_m = 1.0;     ///< staging pose this far behind the docked pose
+  double approach_speed_mps = 0.08;    ///< final approach speed
+  double approach_lookahead_m = 0.35;  ///< pure-pursuit carrot distance on the approach axis
+  double align_tolerance_rad = 0.01;   ///< turn at staging until within this of the axis
   double align_speed_radps = 0.8;
   double backoff_speed_mps = 0.15;
-  double overshoot_limit_m = 0.05;      ///< passing the dock this far without contact = miss
+  double overshoot_limit_m = 0.05;  ///< passing the dock this far without contact = miss
   int max_retries = 3;
-  double detection_blend = 0.3;         ///< weight of each new detection in the dock estimate
-  double detection_gate_m = 0.1;        ///< a detection further than this from the dock estimate is
-                                        ///< used only when the one before it agrees (outliers are single)
-  double approach_timeout_s = 40.0;     ///< an approach lasting longer counts as a miss
-  double press_speed_mps = 0.02;        ///< creep into the pads while they are touched, until charging
-  double press_timeout_s = 1.5;         ///< pressed this long without charging: a miss
-  double stuck_timeout_s = 20.0;        ///< approach or back-off blocked (or unsettled after a shove) this
-                                        ///< long: give up, stopped
-  bool undock = false;                  ///< after charging starts, reverse to the staging pose (guarded)
-  double settle_s = 1.0;                ///< after a displacement: stopped, localised and untouched this long
-                                        ///< before recovering (a new way to the staging pose)
+  double detection_blend = 0.3;   ///< weight of each new detection in the dock estimate
+  double detection_gate_m = 0.1;  ///< a detection further than this from the dock estimate is
+                                  ///< used only when the one before it agrees (outliers are single)
+  double approach_timeout_s = 40.0;  ///< an approach lasting longer counts as a miss
+  double press_speed_mps = 0.02;     ///< creep into the pads while they are touched, until charging
+  double press_timeout_s = 1.5;      ///< pressed this long without charging: a miss
+  double stuck_timeout_s = 20.0;     ///< approach or back-off blocked (or unsettled after a shove)
+                                     ///< this long: give up, stopped
+  bool undock = false;    ///< after charging starts, reverse to the staging pose (guarded)
+  double settle_s = 1.0;  ///< after a displacement: stopped, localised and untouched this long
+                          ///< before recovering (a new way to the staging pose)
   // Moving obstacles met while travelling.
-  double footprint_radius_m = 0.2;      ///< robot disk, for the arc check (set from the world)
-  double safety_margin_m = 0.15;        ///< extra clearance the arc must keep
-  double max_decel_mps2 = 1.0;          ///< braking, to size the arc checked ahead
-  double check_extra_m = 0.4;           ///< checked beyond the braking distance
-  double replan_after_s = 3.0;          ///< blocked this long: ask for a new plan
-  double yield_horizon_s = 3.0;         ///< something reaching the robot this soon: back away
-  double yield_speed_mps = 0.6;         ///< reversing speed when backing away
+  double footprint_radius_m = 0.2;  ///< robot disk, for the arc check (set from the world)
+  double safety_margin_m = 0.15;    ///< extra clearance the arc must keep
+  double max_decel_mps2 = 1.0;      ///< braking, to size the arc checked ahead
+  double check_extra_m = 0.4;       ///< checked beyond the braking distance
+  double replan_after_s = 3.0;      ///< blocked this long: ask for a new plan
+  double yield_horizon_s = 3.0;     ///< something reaching the robot this soon: back away
+  double yield_speed_mps = 0.6;     ///< reversing speed when backing away
   // Travel slows as the estimate grows uncertain, instead of stopping.
-  double confident_sigma_m = 0.05;      ///< full speed up to this 1-sigma of the position estimate
-  double uncertain_sigma_m = 0.5;       ///< ... slowed linearly to uncertain_speed_fraction at this and beyond
+  double confident_sigma_m = 0.05;  ///< full speed up to this 1-sigma of the position estimate
+  double uncertain_sigma_m =
+      0.5;  ///< ... slowed linearly to uncertain_speed_fraction at this and beyond
   double uncertain_speed_fraction = 0.6;
 };
 
@@ -71,19 +73,19 @@ double uncertainty_speed_fraction(const DockingParams& p, double position_sigma_
 
 /// What the robot knows at one control step.
 struct DockingInput {
-  Pose2 pose;                      ///< estimated pose in the map frame (localisation)
-  Pose2 odom_pose;                 ///< pose in the continuous odometry frame
-  double speed_mps = 0;            ///< estimated forward speed
-  double dt_s = 0;                 ///< control period
-  bool charger_contact = false;    ///< the charger's pads touch the robot's contacts
-  bool charging = false;           ///< the charger reports a good connection
-  std::optional<Pose2> charger_in_robot;  ///< detected docked pose, robot frame, if seen
+  Pose2 pose;                               ///< estimated pose in the map frame (localisation)
+  Pose2 odom_pose;                          ///< pose in the continuous odometry frame
+  double speed_mps = 0;                     ///< estimated forward speed
+  double dt_s = 0;                          ///< control period
+  bool charger_contact = false;             ///< the charger's pads touch the robot's contacts
+  bool charging = false;                    ///< the charger reports a good connection
+  std::optional<Pose2> charger_in_robot;    ///< detected docked pose, robot frame, if seen
   std::vector<MovingBox> nearby_obstacles;  ///< sensed moving obstacles, map frame
-  bool bumper_front = false;       ///< the bumper is pressed ahead of the axle ...
-  bool bumper_rear = false;        ///< ... or behind it
-  bool displaced = false;          ///< moved without its wheels (shoved, slid) or touched something
-  bool localized = true;           ///< the estimate is healthy and tight enough to plan from
-  double position_sigma_m = 0;     ///< 1-sigma of the position estimate (largest direction)
+  bool bumper_front = false;                ///< the bumper is pressed ahead of the axle ...
+  bool bumper_rear = false;                 ///< ... or behind it
+  bool displaced = false;       ///< moved without its wheels (shoved, slid) or touched something
+  bool localized = true;        ///< the estimate is healthy and tight enough to plan from
+  double position_sigma_m = 0;  ///< 1-sigma of the position estimate (largest direction)
 };
 
 struct DockingCommand {
@@ -92,8 +94,8 @@ struct DockingCommand {
   double cross_track_error_m = 0;  ///< while travelling
   bool blocked = false;            ///< stopped because the arc ahead is not clear
   bool replan_requested = false;   ///< blocked long enough: plan again around what is seen
-  bool recover_requested = false;  ///< settled after a displacement: plan a new way to the staging pose
-                                   ///< (the controller is travelling again; give it the path)
+  bool recover_requested = false;  ///< settled after a displacement: plan a new way to the staging
+                                   ///< pose (the controller is travelling again; give it the path)
 };
 
 class DockingController {
@@ -144,17 +146,18 @@ class DockingController {
   int retries_ = 0;
   bool giving_up_ = false;  // the last back-off before failing
   double approach_time_s_ = 0;
-  double press_time_s_ = 0;   // holding the pads
+  double press_time_s_ = 0;  // holding the pads
   bool pressing_ = false;
-  double stuck_time_s_ = 0;   // approach or back-off blocked
-  bool recovering_ = false;   // stopped after a displacement, waiting to settle
+  double stuck_time_s_ = 0;  // approach or back-off blocked
+  bool recovering_ = false;  // stopped after a displacement, waiting to settle
   double settled_s_ = 0;
   double unsettled_s_ = 0;
   int recoveries_ = 0;
   double blocked_time_s_ = 0;
   bool was_blocked_ = false;
   double clear_time_s_ = 1e9;  // driven unblocked since the last block
-  double straight_run_m_ = 0;  // driven straight ahead since the last turn: known free to reverse into
+  double straight_run_m_ =
+      0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
   std::optional<Pose2> rejected_detection_;  // the last detection the gate held back
 };

@@ -43,8 +43,8 @@ bool sharp_vertex(const std::vector<Vec2>& path, std::size_t vertex, double shar
   return vertex > 0 && vertex + 1 < path.size() && turn_at(path, vertex) > sharp_turn_rad;
 }
 
-Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m, double sharp_turn_rad,
-                 double corner_release_m) {
+Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ahead_m,
+                 double sharp_turn_rad, double corner_release_m) {
   if (path.size() < 2) return path.front();
   Vec2 cur = from.point;
   double left = ahead_m, walked = 0;
@@ -54,13 +54,14 @@ Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ah
     left -= seg;
     walked += seg;
     cur = path[i + 1];
-    if (i + 2 < path.size() && turn_at(path, i + 1) > sharp_turn_rad && walked > corner_release_m) return cur;
+    if (i + 2 < path.size() && turn_at(path, i + 1) > sharp_turn_rad && walked > corner_release_m)
+      return cur;
   }
   return path.back();
 }
 
-double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from, double sharp_turn_rad,
-                                double horizon_m) {
+double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from,
+                                double sharp_turn_rad, double horizon_m) {
   if (path.size() < 2) return 0;
   Vec2 cur = from.point;
   double walked = 0;
@@ -74,11 +75,13 @@ double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& 
 
 std::vector<double> lengths_to_end(const std::vector<Vec2>& path) {
   std::vector<double> out(path.size(), 0.0);
-  for (std::size_t i = path.size(); i-- > 1;) out[i - 1] = out[i] + geom::distance(path[i - 1], path[i]);
+  for (std::size_t i = path.size(); i-- > 1;)
+    out[i - 1] = out[i] + geom::distance(path[i - 1], path[i]);
   return out;
 }
 
-double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end, const PathPoint& from) {
+double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end,
+                        const PathPoint& from) {
   if (path.size() < 2) return 0;
   return geom::distance(from.point, path[from.segment + 1]) + to_end[from.segment + 1];
 }

@@ -17,7 +17,7 @@ struct PathPoint {
   std::size_t segment = 0;  ///< index i of segment [path[i], path[i+1]]
   double t = 0;             ///< fraction along that segment, 0..1
   Vec2 point;
-  double distance = 0;      ///< from the query point
+  double distance = 0;  ///< from the query point
 };
 
 /// Closest point on the path at or after `from_segment` (progress never goes back), looking
@@ -37,15 +37,15 @@ Vec2 point_ahead(const std::vector<Vec2>& path, const PathPoint& from, double ah
 
 /// Path length from `from` to the next vertex turning by more than `sharp_turn_rad` (or to the
 /// end), looking at most `horizon_m` ahead.
-double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from, double sharp_turn_rad,
-                                double horizon_m);
+double distance_to_sharp_corner(const std::vector<Vec2>& path, const PathPoint& from,
+                                double sharp_turn_rad, double horizon_m);
 
 /// For each vertex i, the path length from it to the end (computed once per path).
 std::vector<double> lengths_to_end(const std::vector<Vec2>& path);
 
 /// Path length from `from` to the end, given lengths_to_end(path).
-double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end, const PathPoint& from);
-
+double remaining_length(const std::vector<Vec2>& path, const std::vector<double>& to_end,
+                        const PathPoint& from);
 
 /// Expresses world point p in the frame of pose (x forward, y left).
 Vec2 to_robot_frame(const Pose2& pose, Vec2 p);

@@ -34,18 +34,18 @@ using geom::Pose2;
 using geom::Vec2;
 
 struct PotentialFieldParams {
-  double k_att = 1.0;        ///< position attraction gain (N-like units; forces are unitless)
-  double m = 1.0;            ///< exponent of the position attraction (1: constant pull)
-  double k_att_v = 0.5;      ///< velocity attraction gain: match the target's velocity
+  double k_att = 1.0;    ///< position attraction gain (N-like units; forces are unitless)
+  double m = 1.0;        ///< exponent of the position attraction (1: constant pull)
+  double k_att_v = 0.5;  ///< velocity attraction gain: match the target's velocity
   double m_v = 2.0;
-  double k_rep = 0.02;       ///< repulsion gain
-  double n = 1.0;            ///< repulsion scales with |x - x_g|^n: vanishes at the target
-  double rho0_m = 1.0;       ///< obstacles further than this (from the robot's edge) do not repel
-  double k_rep_v = 0.1;      ///< extra repulsion while closing in on an obstacle
+  double k_rep = 0.02;   ///< repulsion gain
+  double n = 1.0;        ///< repulsion scales with |x - x_g|^n: vanishes at the target
+  double rho0_m = 1.0;   ///< obstacles further than this (from the robot's edge) do not repel
+  double k_rep_v = 0.1;  ///< extra repulsion while closing in on an obstacle
   double n_v = 2.0;
-  double rho_min_m = 0.02;   ///< distances are clamped here so forces stay finite
-  double max_speed_mps = 0.5;     ///< v_max
-  double turn_gain = 2.0;         ///< omega_max of the document: yaw rate per radian of heading error
+  double rho_min_m = 0.02;     ///< distances are clamped here so forces stay finite
+  double max_speed_mps = 0.5;  ///< v_max
+  double turn_gain = 2.0;      ///< omega_max of the document: yaw rate per radian of heading error
   double max_angular_speed_radps = 1.5;
   double max_decel_mps2 = 0.5;    ///< slow down to stop at a standing target
   double arrive_radius_m = 0.1;   ///< done within this of the target
@@ -53,12 +53,13 @@ struct PotentialFieldParams {
   double balance_ratio = 0.1;     ///< |F_sum| <= this * k_att: local minimum
   double stall_window_s = 4.0;    ///< moved less than stall_distance in this long: local minimum
   double stall_distance_m = 0.1;
-  double wall_distance_m = 0.35;  ///< d_s: kept from the wall (robot edge to wall)
-  double wall_gain = 2.0;         ///< omega_d: yaw rate per metre of distance error
+  double wall_distance_m = 0.35;                 ///< d_s: kept from the wall (robot edge to wall)
+  double wall_gain = 2.0;                        ///< omega_d: yaw rate per metre of distance error
   double follow_angle_rad = 1.5707963267948966;  ///< alpha: heading relative to the wall normal
-  double leave_margin_m = 0.5;    ///< d_now must be this much below d_last (more than the wall-distance wobble)
-  double sensor_range_m = 3.0;    ///< a wall further than this is lost while following
-  int max_wall_follows = 20;      ///< more local minima than this: trapped, give up
+  double leave_margin_m =
+      0.5;  ///< d_now must be this much below d_last (more than the wall-distance wobble)
+  double sensor_range_m = 3.0;  ///< a wall further than this is lost while following
+  int max_wall_follows = 20;    ///< more local minima than this: trapped, give up
 };
 
 /// An obstacle as the field sees it: a rectangle and its velocity (zero for static ones).
@@ -74,14 +75,14 @@ struct FieldForces {
 };
 
 /// The forces on a disk robot of `radius_m` at x moving with v, towards target x_g moving with v_g.
-FieldForces field_forces(const PotentialFieldParams& p, double radius_m, Vec2 x, Vec2 v, Vec2 x_g, Vec2 v_g,
-                         const std::vector<FieldObstacle>& obstacles);
+FieldForces field_forces(const PotentialFieldParams& p, double radius_m, Vec2 x, Vec2 v, Vec2 x_g,
+                         Vec2 v_g, const std::vector<FieldObstacle>& obstacles);
 
 enum class FieldState { kPotentialField, kWallFollowing };
 
 struct FieldInput {
-  Pose2 pose;           ///< estimated
-  Vec2 velocity;        ///< estimated, world frame
+  Pose2 pose;     ///< estimated
+  Vec2 velocity;  ///< estimated, world frame
   Vec2 target;
   Vec2 target_velocity;
   double dt_s = 0;
@@ -117,8 +118,9 @@ class PotentialFieldController {
   int local_minima_ = 0;
   int wall_follows_ = 0;
   bool trapped_ = false;
-  Vec2 trap_point_;         // where the last local minimum was met
-  double wall_side_ = 1.0;  // +1: wall on the right (theta_exp = theta_rep - alpha); -1: on the left
+  Vec2 trap_point_;  // where the last local minimum was met
+  double wall_side_ =
+      1.0;  // +1: wall on the right (theta_exp = theta_rep - alpha); -1: on the left
   Vec2 last_normal_{1, 0};  // wall to robot, as last seen while following
   double clock_s_ = 0;
   std::deque<std::pair<double, Vec2>> history_;  // (time, position) while in the field state

@@ -17,7 +17,9 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   // release moved progress on, a robot turning in place just short of the corner is on the
   // path, not off the next leg.
   const double off_path =
-      segment_ > 0 ? closest_point(path_, pose.position(), segment_ - 1, p.progress_window_m).distance : near.distance;
+      segment_ > 0
+          ? closest_point(path_, pose.position(), segment_ - 1, p.progress_window_m).distance
+          : near.distance;
   // Within the release distance of a sharp vertex the corner counts as reached: progress moves
   // on to the next leg. Otherwise, where the path doubles back on itself (a dead end, a lane
   // swept twice), the closest point would stay on the leg behind and the robot would turn to
@@ -33,8 +35,7 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   // Done when at the end, or when the end lies behind the robot within the tolerance band
   // (never turn around for the last centimetres).
   const Vec2 end_in_robot = to_robot_frame(pose, path_.back());
-  if (to_end <= p.goal_tolerance_m ||
-      (remaining <= p.goal_tolerance_m && end_in_robot.x <= 0)) {
+  if (to_end <= p.goal_tolerance_m || (remaining <= p.goal_tolerance_m && end_in_robot.x <= 0)) {
     out.goal_reached = true;
     return out;
   }
@@ -59,9 +60,11 @@ TrackingCommand PurePursuit::step(const Pose2& pose, double current_speed_mps) {
   const double radius = std::fabs(curvature) > 0 ? 1.0 / std::fabs(curvature) : INFINITY;
   if (radius < p.regulated_min_radius_m) v *= radius / p.regulated_min_radius_m;
   // Slow down for the path's end and for sharp corners, where the robot turns in place.
-  const double to_stop = std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad,
-                                                                      p.approach_slowdown_distance_m));
-  out.straight_ahead_m = std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad, 5.0));
+  const double to_stop = std::min(
+      remaining,
+      distance_to_sharp_corner(path_, near, p.sharp_turn_rad, p.approach_slowdown_distance_m));
+  out.straight_ahead_m =
+      std::min(remaining, distance_to_sharp_corner(path_, near, p.sharp_turn_rad, 5.0));
   if (to_stop < p.approach_slowdown_distance_m)
     v = std::min(v, p.max_linear_speed_mps * to_stop / p.approach_slowdown_distance_m);
   v = std::max(v, p.min_approach_speed_mps);

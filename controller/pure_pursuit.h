@@ -14,28 +14,28 @@ namespace plantsim::controller {
 struct PurePursuitParams {
   double lookahead_min_m = 0.25;
   double lookahead_max_m = 0.9;
-  double lookahead_time_s = 1.2;            ///< lookahead = speed * this, clamped
-  double sharp_turn_rad = 0.5;              ///< the carrot stops at a vertex turning more than this ...
-  double corner_release_m = 0.1;            ///< ... until the robot is this close to it
+  double lookahead_time_s = 1.2;  ///< lookahead = speed * this, clamped
+  double sharp_turn_rad = 0.5;    ///< the carrot stops at a vertex turning more than this ...
+  double corner_release_m = 0.1;  ///< ... until the robot is this close to it
   double max_linear_speed_mps = 0.6;
   double max_angular_speed_radps = 1.5;
-  double min_approach_speed_mps = 0.05;     ///< floor of the goal slow-down
-  double approach_slowdown_distance_m = 0.8;  ///< start slowing this far from the end
-  double regulated_min_radius_m = 0.9;      ///< slow down below this turning radius
+  double min_approach_speed_mps = 0.05;        ///< floor of the goal slow-down
+  double approach_slowdown_distance_m = 0.8;   ///< start slowing this far from the end
+  double regulated_min_radius_m = 0.9;         ///< slow down below this turning radius
   double rotate_in_place_threshold_rad = 0.7;  ///< turn in place above this heading error ...
   double rotate_in_place_exit_rad = 0.1;       ///< ... until it is below this (no bulging arcs)
   double rotate_in_place_speed_radps = 1.0;
-  double goal_tolerance_m = 0.03;           ///< done within this of the end
-  double progress_window_m = 2.0;           ///< how far ahead the closest-point search looks
+  double goal_tolerance_m = 0.03;  ///< done within this of the end
+  double progress_window_m = 2.0;  ///< how far ahead the closest-point search looks
 };
 
 struct TrackingCommand {
   Twist twist;
   bool goal_reached = false;
-  double cross_track_error_m = 0;  ///< distance from the path (estimated pose)
-  double carrot_bearing_rad = 0;   ///< where the carrot lies, robot frame (0: dead ahead)
-  double straight_ahead_m = INFINITY;  ///< how far it drives on before it stops (the path's end or a
-                                       ///< sharp corner, where it turns in place)
+  double cross_track_error_m = 0;      ///< distance from the path (estimated pose)
+  double carrot_bearing_rad = 0;       ///< where the carrot lies, robot frame (0: dead ahead)
+  double straight_ahead_m = INFINITY;  ///< how far it drives on before it stops (the path's end or
+                                       ///< a sharp corner, where it turns in place)
 };
 
 class PurePursuit {
@@ -52,8 +52,8 @@ class PurePursuit {
   PurePursuitParams params_;
   std::vector<Vec2> path_;
   std::vector<double> to_end_;  // path length from each vertex to the end
-  std::size_t segment_ = 0;  // progress: never moves back
-  bool rotating_ = false;    // turning in place, until aligned
+  std::size_t segment_ = 0;     // progress: never moves back
+  bool rotating_ = false;       // turning in place, until aligned
 };
 
 }  // namespace plantsim::controller

@@ -10,7 +10,7 @@ namespace {
 // Moves `from` toward `to`, growing in magnitude by at most `rise`; shrinking is free (braking).
 double ramp(double from, double to, double rise) {
   if (std::fabs(to) <= std::fabs(from) && to * from >= 0) return to;  // slowing down or stopping
-  const double base = to * from >= 0 ? from : 0.0;                     // reversing: through zero, at once
+  const double base = to * from >= 0 ? from : 0.0;  // reversing: through zero, at once
   return std::clamp(to, base - rise, base + rise);
 }
 
@@ -33,10 +33,12 @@ Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s) {
   auto scaled = [&](double x, double creep) {
     return std::copysign(std::max(std::min(std::fabs(x), creep), std::fabs(x) * scale_), x);
   };
-  const Twist capped{scaled(wanted.v_mps, p_.creep_mps), scaled(wanted.omega_radps, p_.creep_radps)};
+  const Twist capped{scaled(wanted.v_mps, p_.creep_mps),
+                     scaled(wanted.omega_radps, p_.creep_radps)};
   Twist out;
   out.v_mps = ramp(last_.v_mps, capped.v_mps, scale_ * p_.max_accel_mps2 * dt_s);
-  out.omega_radps = ramp(last_.omega_radps, capped.omega_radps, scale_ * p_.max_angular_accel_radps2 * dt_s);
+  out.omega_radps =
+      ramp(last_.omega_radps, capped.omega_radps, scale_ * p_.max_angular_accel_radps2 * dt_s);
   last_ = out;
   return out;
 }

@@ -13,13 +13,13 @@ namespace plantsim::controller {
 
 struct TractionParams {
   bool enabled = true;
-  double max_accel_mps2 = 1.0;           ///< forward speed may grow this fast (scaled; at most the robot's)
-  double max_angular_accel_radps2 = 3.0; ///< turning rate may grow this fast (scaled)
-  double slip_scale_factor = 0.6;        ///< each slip multiplies the scale by this ...
-  double min_scale = 0.15;               ///< ... down to this
-  double slip_hold_s = 0.5;              ///< slips closer together than this are one
-  double recover_per_s = 0.03;           ///< scale regained per second without slip
-  double creep_mps = 0.1;                ///< speeds up to this are never scaled down (docking, pressing)
+  double max_accel_mps2 = 1.0;  ///< forward speed may grow this fast (scaled; at most the robot's)
+  double max_angular_accel_radps2 = 3.0;  ///< turning rate may grow this fast (scaled)
+  double slip_scale_factor = 0.6;         ///< each slip multiplies the scale by this ...
+  double min_scale = 0.15;                ///< ... down to this
+  double slip_hold_s = 0.5;               ///< slips closer together than this are one
+  double recover_per_s = 0.03;            ///< scale regained per second without slip
+  double creep_mps = 0.1;  ///< speeds up to this are never scaled down (docking, pressing)
   double creep_radps = 0.3;
 };
 

@@ -35,8 +35,12 @@ bool arc_enters_disk(Vec2 c, double radius, double from, double sweep, Vec2 q, d
 // True when some point of the arc lies strictly inside the open rectangle e.
 bool arc_enters_open_rect(Vec2 c, double radius, double from, double sweep, const Rect& e) {
   if (!(e.xmin < e.xmax && e.ymin < e.ymax)) return false;
-  auto inside = [&](Vec2 p) { return e.xmin < p.x && p.x < e.xmax && e.ymin < p.y && p.y < e.ymax; };
-  if (inside(c + radius * unit_from_angle(from)) || inside(c + radius * unit_from_angle(from + sweep))) return true;
+  auto inside = [&](Vec2 p) {
+    return e.xmin < p.x && p.x < e.xmax && e.ymin < p.y && p.y < e.ymax;
+  };
+  if (inside(c + radius * unit_from_angle(from)) ||
+      inside(c + radius * unit_from_angle(from + sweep)))
+    return true;
   // Otherwise the arc enters only by crossing an edge: where the circle meets an edge's line
   // inside the edge and on the arc (a tangent touch does not enter).
   auto crosses_vertical = [&](double x) {
@@ -59,7 +63,8 @@ bool arc_enters_open_rect(Vec2 c, double radius, double from, double sweep, cons
     }
     return false;
   };
-  return crosses_vertical(e.xmin) || crosses_vertical(e.xmax) || crosses_horizontal(e.ymin) || crosses_horizontal(e.ymax);
+  return crosses_vertical(e.xmin) || crosses_vertical(e.xmax) || crosses_horizontal(e.ymin) ||
+         crosses_horizontal(e.ymax);
 }
 
 }  // namespace
@@ -73,23 +78,28 @@ double segment_rect_distance(Vec2 p, Vec2 q, const Rect& r) {
   auto clip = [&](double denom, double num) {  // keeps t with denom * t <= num
     if (denom == 0) return num >= 0;
     const double t = num / denom;
-    if (denom > 0) t1 = std::min(t1, t);
-    else t0 = std::max(t0, t);
+    if (denom > 0)
+      t1 = std::min(t1, t);
+    else
+      t0 = std::max(t0, t);
     return t0 <= t1;
   };
-  if (clip(-d.x, p.x - r.xmin) && clip(d.x, r.xmax - p.x) && clip(-d.y, p.y - r.ymin) && clip(d.y, r.ymax - p.y))
+  if (clip(-d.x, p.x - r.xmin) && clip(d.x, r.xmax - p.x) && clip(-d.y, p.y - r.ymin) &&
+      clip(d.y, r.ymax - p.y))
     return 0;
   // Apart, a convex rectangle and a segment are nearest at an endpoint of one of them.
   double best = std::min(distance_to_rect(p, r), distance_to_rect(q, r));
   const double dd = dot(d, d);
-  for (Vec2 k : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}}) {
+  for (Vec2 k :
+       {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}}) {
     const double t = dd > 0 ? std::clamp(dot(k - p, d) / dd, 0.0, 1.0) : 0.0;
     best = std::min(best, distance(k, p + t * d));
   }
   return best;
 }
 
-bool arc_keeps_clearance(Vec2 c, double radius, double from, double sweep, const Rect& r, double clearance) {
+bool arc_keeps_clearance(Vec2 c, double radius, double from, double sweep, const Rect& r,
+                         double clearance) {
   const double d = clearance - kClearanceTolerance_m;
   if (d <= 0) return true;
   // Far apart: the whole circle keeps the clearance.
@@ -97,7 +107,8 @@ bool arc_keeps_clearance(Vec2 c, double radius, double from, double sweep, const
   if (arc_enters_open_rect(c, radius, from, sweep, {r.xmin - d, r.ymin, r.xmax + d, r.ymax}) ||
       arc_enters_open_rect(c, radius, from, sweep, {r.xmin, r.ymin - d, r.xmax, r.ymax + d}))
     return false;
-  for (Vec2 k : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
+  for (Vec2 k :
+       {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
     if (arc_enters_disk(c, radius, from, sweep, k, d)) return false;
   return true;
 }

@@ -21,6 +21,7 @@ double segment_rect_distance(Vec2 p, Vec2 q, const Rect& r);
 /// True when every point of the arc of the circle (center c, radius `radius`) from angle `from`
 /// counter-clockwise through `sweep` (0 <= sweep <= 2 pi) is at least `clearance` from the
 /// rectangle, up to the tolerance.
-bool arc_keeps_clearance(Vec2 c, double radius, double from, double sweep, const Rect& r, double clearance);
+bool arc_keeps_clearance(Vec2 c, double radius, double from, double sweep, const Rect& r,
+                         double clearance);
 
 }  // namespace plantsim::geom

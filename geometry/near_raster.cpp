@@ -7,7 +7,8 @@
 
 namespace plantsim::geom {
 
-NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect area, double cell_m, long max_cells)
+NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect area, double cell_m,
+                       long max_cells)
     : margin_(margin_m), area_(area) {
   const double w = std::max(area.width(), 1e-6), h = std::max(area.height(), 1e-6);
   cell_ = std::max(cell_m, std::sqrt(w * h / static_cast<double>(std::max(1L, max_cells))));
@@ -18,19 +19,24 @@ NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect are
     const Rect grown{b.xmin - margin_m, b.ymin - margin_m, b.xmax + margin_m, b.ymax + margin_m};
     // Cells the grown box touches, and one more on each side: a point on a cell's edge, or a
     // division rounded across one, must never find a "no" beside a box.
-    const long i0 = std::max(0L, static_cast<long>(std::floor((grown.xmin - area_.xmin) / cell_)) - 1);
-    const long i1 = std::min(nx_ - 1, static_cast<long>(std::floor((grown.xmax - area_.xmin) / cell_)) + 1);
-    const long j0 = std::max(0L, static_cast<long>(std::floor((grown.ymin - area_.ymin) / cell_)) - 1);
-    const long j1 = std::min(ny_ - 1, static_cast<long>(std::floor((grown.ymax - area_.ymin) / cell_)) + 1);
+    const long i0 =
+        std::max(0L, static_cast<long>(std::floor((grown.xmin - area_.xmin) / cell_)) - 1);
+    const long i1 =
+        std::min(nx_ - 1, static_cast<long>(std::floor((grown.xmax - area_.xmin) / cell_)) + 1);
+    const long j0 =
+        std::max(0L, static_cast<long>(std::floor((grown.ymin - area_.ymin) / cell_)) - 1);
+    const long j1 =
+        std::min(ny_ - 1, static_cast<long>(std::floor((grown.ymax - area_.ymin) / cell_)) + 1);
     for (long j = j0; j <= j1; ++j)
       for (long i = i0; i <= i1; ++i) {
         Answer& a = cells_[static_cast<std::size_t>(j * nx_ + i)];
         if (a == Answer::kYes) continue;
         // Wholly inside, with a cell's rounding to spare on each side.
-        const double x0 = area_.xmin + static_cast<double>(i) * cell_, y0 = area_.ymin + static_cast<double>(j) * cell_;
+        const double x0 = area_.xmin + static_cast<double>(i) * cell_,
+                     y0 = area_.ymin + static_cast<double>(j) * cell_;
         const double slack = 1e-9 * (1.0 + std::fabs(x0) + std::fabs(y0) + cell_);
-        const bool inside = grown.xmin <= x0 - slack && x0 + cell_ + slack <= grown.xmax && grown.ymin <= y0 - slack &&
-                            y0 + cell_ + slack <= grown.ymax;
+        const bool inside = grown.xmin <= x0 - slack && x0 + cell_ + slack <= grown.xmax &&
+                            grown.ymin <= y0 - slack && y0 + cell_ + slack <= grown.ymax;
         a = inside ? Answer::kYes : Answer::kDepends;
       }
   }
@@ -38,7 +44,8 @@ NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect are
 
 NearRaster::Answer NearRaster::at(Vec2 p) const {
   const double fx = (p.x - area_.xmin) / cell_, fy = (p.y - area_.ymin) / cell_;
-  if (!(fx >= 0 && fy >= 0 && fx < static_cast<double>(nx_) && fy < static_cast<double>(ny_))) return Answer::kDepends;
+  if (!(fx >= 0 && fy >= 0 && fx < static_cast<double>(nx_) && fy < static_cast<double>(ny_)))
+    return Answer::kDepends;
   const long i = static_cast<long>(fx), j = static_cast<long>(fy);
   return cells_[static_cast<std::size_t>(j * nx_ + i)];
 }

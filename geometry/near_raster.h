@@ -17,7 +17,8 @@ class NearRaster {
 
   /// The answer for "within `margin_m` per axis of one of `boxes`" over `area`, in cells of
   /// `cell_m`, made coarser when the area would need more than `max_cells`.
-  NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect area, double cell_m, long max_cells = 8'000'000);
+  NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect area, double cell_m,
+             long max_cells = 8'000'000);
 
   /// kDepends outside the raster's area (the caller tests exactly).
   Answer at(Vec2 p) const;

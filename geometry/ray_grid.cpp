@@ -17,9 +17,11 @@ Rect bounds_of(const OrientedBox& b) {
 }  // namespace
 
 std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 o, Vec2 d) {
-  double t_in = -std::numeric_limits<double>::infinity(), t_out = std::numeric_limits<double>::infinity();
+  double t_in = -std::numeric_limits<double>::infinity(),
+         t_out = std::numeric_limits<double>::infinity();
   Vec2 normal{0, 0};
-  const double lo[2] = {r.xmin, r.ymin}, hi[2] = {r.xmax, r.ymax}, org[2] = {o.x, o.y}, dir[2] = {d.x, d.y};
+  const double lo[2] = {r.xmin, r.ymin}, hi[2] = {r.xmax, r.ymax}, org[2] = {o.x, o.y},
+               dir[2] = {d.x, d.y};
   for (int a = 0; a < 2; ++a) {
     if (dir[a] == 0) {
       if (org[a] < lo[a] || org[a] > hi[a]) return std::nullopt;
@@ -39,26 +41,34 @@ std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 o, Ve
   return std::pair{t_in, normal};
 }
 
-RayGrid::RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, double cell_m, long max_cells)
+RayGrid::RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, double cell_m,
+                 long max_cells)
     : rects_(std::move(rects)), oriented_(std::move(oriented)) {
   for (const Rect& r : rects_) bounds_.push_back(r);
   for (const OrientedBox& b : oriented_) bounds_.push_back(bounds_of(b));
   area_ = bounds_.empty() ? Rect{0, 0, 1, 1} : bounds_.front();
   for (const Rect& b : bounds_)
-    area_ = {std::min(area_.xmin, b.xmin), std::min(area_.ymin, b.ymin), std::max(area_.xmax, b.xmax), std::max(area_.ymax, b.ymax)};
+    area_ = {std::min(area_.xmin, b.xmin), std::min(area_.ymin, b.ymin),
+             std::max(area_.xmax, b.xmax), std::max(area_.ymax, b.ymax)};
   const double w = std::max(area_.width(), 1e-6), h = std::max(area_.height(), 1e-6);
   // About two boxes' worth of area per cell, never so fine that the grid passes max_cells.
-  cell_ = cell_m > 0 ? cell_m : std::max(0.5, std::sqrt(2.0 * w * h / std::max<std::size_t>(bounds_.size(), 1)));
+  cell_ = cell_m > 0
+              ? cell_m
+              : std::max(0.5, std::sqrt(2.0 * w * h / std::max<std::size_t>(bounds_.size(), 1)));
   cell_ = std::max(cell_, std::sqrt(w * h / static_cast<double>(std::max(1L, max_cells))));
   nx_ = std::max(1L, static_cast<long>(std::ceil(w / cell_)));
   ny_ = std::max(1L, static_cast<long>(std::ceil(h / cell_)));
   // Counting sort of (cell, box) pairs into one array.
   std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_ * ny_) + 1, 0);
   auto span = [&](const Rect& b, auto&& visit) {
-    const long i0 = std::clamp(static_cast<long>(std::floor((b.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
-    const long i1 = std::clamp(static_cast<long>(std::floor((b.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
-    const long j0 = std::clamp(static_cast<long>(std::floor((b.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
-    const long j1 = std::clamp(static_cast<long>(std::floor((b.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
+    const long i0 =
+        std::clamp(static_cast<long>(std::floor((b.xmin - area_.xmin) / cell_)), 0L, nx_ - 1);
+    const long i1 =
+        std::clamp(static_cast<long>(std::floor((b.xmax - area_.xmin) / cell_)), 0L, nx_ - 1);
+    const long j0 =
+        std::clamp(static_cast<long>(std::floor((b.ymin - area_.ymin) / cell_)), 0L, ny_ - 1);
+    const long j1 =
+        std::clamp(static_cast<long>(std::floor((b.ymax - area_.ymin) / cell_)), 0L, ny_ - 1);
     for (long j = j0; j <= j1; ++j)
       for (long i = i0; i <= i1; ++i) visit(static_cast<std::size_t>(j * nx_ + i));
   };
@@ -66,7 +76,8 @@ RayGrid::RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, dou
   for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
   first_ = count;
   members_.resize(first_.back());
-  for (std::size_t k = 0; k < bounds_.size(); ++k) span(bounds_[k], [&](std::size_t c) { members_[count[c]++] = static_cast<int>(k); });
+  for (std::size_t k = 0; k < bounds_.size(); ++k)
+    span(bounds_[k], [&](std::size_t c) { members_[count[c]++] = static_cast<int>(k); });
   stamp_.assign(bounds_.size(), 0);
 }
 
@@ -139,7 +150,8 @@ std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_
       if (stamp_[static_cast<std::size_t>(k)] == query_) continue;  // tested in an earlier cell
       stamp_[static_cast<std::size_t>(k)] = query_;
       const auto e = enter(k, origin, direction);
-      if (e && e->first <= max_range_m && (!best || e->first < best->range_m)) best = RayGridHit{e->first, e->second, k};
+      if (e && e->first <= max_range_m && (!best || e->first < best->range_m))
+        best = RayGridHit{e->first, e->second, k};
     }
     const double cell_exit = std::min(next_x, next_y);
     // A hit within this cell is nearer than anything a later cell can hold.
@@ -165,14 +177,16 @@ std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 ori
   Vec2 corners[4];
   if (k < rects_.size()) {
     const Rect& r = rects_[k];
-    if (r.xmin - kClearance <= origin.x && origin.x <= r.xmax + kClearance && r.ymin - kClearance <= origin.y &&
-        origin.y <= r.ymax + kClearance)
+    if (r.xmin - kClearance <= origin.x && origin.x <= r.xmax + kClearance &&
+        r.ymin - kClearance <= origin.y && origin.y <= r.ymax + kClearance)
       return std::nullopt;
-    corners[0] = {r.xmin, r.ymin}, corners[1] = {r.xmax, r.ymin}, corners[2] = {r.xmax, r.ymax}, corners[3] = {r.xmin, r.ymax};
+    corners[0] = {r.xmin, r.ymin}, corners[1] = {r.xmax, r.ymin}, corners[2] = {r.xmax, r.ymax},
+    corners[3] = {r.xmin, r.ymax};
   } else {
     const OrientedBox& b = oriented_[k - rects_.size()];
     const Vec2 o = rotate(origin - b.center, -b.yaw);
-    if (std::fabs(o.x) <= b.hx + kClearance && std::fabs(o.y) <= b.hy + kClearance) return std::nullopt;
+    if (std::fabs(o.x) <= b.hx + kClearance && std::fabs(o.y) <= b.hy + kClearance)
+      return std::nullopt;
     const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int c = 0; c < 4; ++c) corners[c] = b.center + rotate({sx[c] * b.hx, sy[c] * b.hy}, b.yaw);
   }
@@ -196,7 +210,8 @@ std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 ori
   return std::pair{lo, hi};
 }
 
-void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
+void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle,
+                       double increment, double max_range_m,
                        std::vector<std::optional<RayGridHit>>& hits) const {
   const long n = static_cast<long>(directions.size());
   hits.assign(directions.size(), std::nullopt);
@@ -205,17 +220,22 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
   // A ray cast singly walks a few cells of a few boxes each; the rings' remaining boxes each cost
   // an angular extent. Past this many boxes left per open ray, the open rays are cast singly.
   constexpr long kBoxesPerOpenRay = 2;
-  const bool spread = n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
+  const bool spread =
+      n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
   auto try_ray = [&](long r, int box) {
     const auto e = enter(box, origin, directions[static_cast<std::size_t>(r)]);
     auto& best = hits[static_cast<std::size_t>(r)];
-    if (e && e->first <= max_range_m && (!best || e->first < best->range_m)) best = RayGridHit{e->first, e->second, box};
+    if (e && e->first <= max_range_m && (!best || e->first < best->range_m))
+      best = RayGridHit{e->first, e->second, box};
   };
   // Each box within reach, once, against the rays whose angles its extent covers; cells in rings
   // about the origin's, near to far, so that a ray's hit is usually known before the boxes
   // behind it come up (a box no nearer than a ray's hit cannot change it).
-  const Rect reach{origin.x - max_range_m, origin.y - max_range_m, origin.x + max_range_m, origin.y + max_range_m};
-  if (reach.xmax < area_.xmin || reach.xmin > area_.xmax || reach.ymax < area_.ymin || reach.ymin > area_.ymax) return;
+  const Rect reach{origin.x - max_range_m, origin.y - max_range_m, origin.x + max_range_m,
+                   origin.y + max_range_m};
+  if (reach.xmax < area_.xmin || reach.xmin > area_.xmax || reach.ymax < area_.ymin ||
+      reach.ymin > area_.ymax)
+    return;
   long i0, i1, j0, j1;
   cells_of(reach, i0, i1, j0, j1);
   long ci, cj, unused_i, unused_j;
@@ -223,7 +243,9 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
   const std::uint32_t query = next_query();
   const double turn = 2 * M_PI, last = static_cast<double>(n - 1) * increment;
   long unvisited = 0;  // cell entries (a box counts once per cell it spans) not yet visited
-  for (long j = j0; j <= j1; ++j) unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] - first_[static_cast<std::size_t>(j * nx_ + i0)];
+  for (long j = j0; j <= j1; ++j)
+    unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] -
+                 first_[static_cast<std::size_t>(j * nx_ + i0)];
   auto visit_cell = [&](long i, long j) {
     const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
     unvisited -= first_[c + 1] - first_[c];
@@ -247,7 +269,8 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
       }
       // The extent relative to the first ray, its start brought into [0, 2 pi); then the rays
       // it covers at each whole turn that can hold some.
-      double lo = extent->first - first_angle - kAngleTolerance, hi = extent->second - first_angle + kAngleTolerance;
+      double lo = extent->first - first_angle - kAngleTolerance,
+             hi = extent->second - first_angle + kAngleTolerance;
       const double turns = std::floor(lo / turn) * turn;
       lo -= turns, hi -= turns;
       for (double shift = -turn; lo + shift <= last + kAngleTolerance; shift += turn) {
@@ -272,7 +295,9 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
       }
       if (open.empty()) return;
       if (static_cast<long>(open.size()) * kBoxesPerOpenRay < unvisited) {
-        for (long r : open) hits[static_cast<std::size_t>(r)] = cast(origin, directions[static_cast<std::size_t>(r)], max_range_m);
+        for (long r : open)
+          hits[static_cast<std::size_t>(r)] =
+              cast(origin, directions[static_cast<std::size_t>(r)], max_range_m);
         return;
       }
     }
@@ -289,7 +314,8 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
 
 bool RayGrid::near(Vec2 p, double margin_m) const {
   const Rect q{p.x - margin_m, p.y - margin_m, p.x + margin_m, p.y + margin_m};
-  if (q.xmax < area_.xmin || q.xmin > area_.xmax || q.ymax < area_.ymin || q.ymin > area_.ymax) return false;
+  if (q.xmax < area_.xmin || q.xmin > area_.xmax || q.ymax < area_.ymin || q.ymin > area_.ymax)
+    return false;
   long i0, i1, j0, j1;
   cells_of(q, i0, i1, j0, j1);
   for (long j = j0; j <= j1; ++j)
@@ -297,7 +323,8 @@ bool RayGrid::near(Vec2 p, double margin_m) const {
       const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
       for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
         const Rect& b = bounds_[static_cast<std::size_t>(members_[m])];
-        if (b.xmin <= q.xmax && q.xmin <= b.xmax && b.ymin <= q.ymax && q.ymin <= b.ymax) return true;
+        if (b.xmin <= q.xmax && q.xmin <= b.xmax && b.ymin <= q.ymax && q.ymin <= b.ymax)
+          return true;
       }
     }
   return false;

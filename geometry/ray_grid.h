@@ -23,9 +23,9 @@ struct OrientedBox {
 };
 
 struct RayGridHit {
-  double range_m;   ///< along the unit direction from the origin
-  Vec2 normal;      ///< unit, out of the face hit
-  int box;          ///< index in the order the boxes were given (rectangles first, then oriented)
+  double range_m;  ///< along the unit direction from the origin
+  Vec2 normal;     ///< unit, out of the face hit
+  int box;         ///< index in the order the boxes were given (rectangles first, then oriented)
 };
 
 /// Where the ray from `origin` along unit `direction` enters `r`: the distance and the outward
@@ -35,7 +35,8 @@ std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 origi
 class RayGrid {
  public:
   /// `cell_m` 0: chosen from the boxes' number and extent (a few per cell; at most max_cells).
-  RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, double cell_m = 0, long max_cells = 4'000'000);
+  RayGrid(std::vector<Rect> rects, std::vector<OrientedBox> oriented, double cell_m = 0,
+          long max_cells = 4'000'000);
 
   /// The nearest box face the ray from `origin` along unit `direction` meets within `max_range_m`.
   std::optional<RayGridHit> cast(Vec2 origin, Vec2 direction, double max_range_m) const;
@@ -44,9 +45,10 @@ class RayGrid {
   /// range; where two faces tie exactly either may be named). One pass over the boxes within
   /// reach, each tried only on the rays its angular extent covers: a lidar scan without a walk
   /// per beam.
-  void cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
-                std::vector<std::optional<RayGridHit>>& hits) const;
-  /// True when some box comes within `margin_m` per axis of `p` (its bounding box, for oriented ones).
+  void cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment,
+                double max_range_m, std::vector<std::optional<RayGridHit>>& hits) const;
+  /// True when some box comes within `margin_m` per axis of `p` (its bounding box, for oriented
+  /// ones).
   bool near(Vec2 p, double margin_m) const;
 
   std::size_t box_count() const { return bounds_.size(); }

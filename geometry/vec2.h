@@ -73,7 +73,8 @@ struct Rect {
 
 /// The point of the closed rectangle nearest to p (p itself when inside).
 inline Vec2 closest_point(const Rect& r, Vec2 p) {
-  return {p.x < r.xmin ? r.xmin : (p.x > r.xmax ? r.xmax : p.x), p.y < r.ymin ? r.ymin : (p.y > r.ymax ? r.ymax : p.y)};
+  return {p.x < r.xmin ? r.xmin : (p.x > r.xmax ? r.xmax : p.x),
+          p.y < r.ymin ? r.ymin : (p.y > r.ymax ? r.ymax : p.y)};
 }
 
 /// Four rectangles of the given thickness surrounding `inner` (left, right, bottom, top),
@@ -81,8 +82,10 @@ inline Vec2 closest_point(const Rect& r, Vec2 p) {
 inline std::array<Rect, 4> surrounding_walls(const Rect& inner, double thickness) {
   const Rect& f = inner;
   const double t = thickness;
-  return {Rect{f.xmin - t, f.ymin - t, f.xmin, f.ymax + t}, Rect{f.xmax, f.ymin - t, f.xmax + t, f.ymax + t},
-          Rect{f.xmin - t, f.ymin - t, f.xmax + t, f.ymin}, Rect{f.xmin - t, f.ymax, f.xmax + t, f.ymax + t}};
+  return {Rect{f.xmin - t, f.ymin - t, f.xmin, f.ymax + t},
+          Rect{f.xmax, f.ymin - t, f.xmax + t, f.ymax + t},
+          Rect{f.xmin - t, f.ymin - t, f.xmax + t, f.ymin},
+          Rect{f.xmin - t, f.ymax, f.xmax + t, f.ymax + t}};
 }
 
 }  // namespace plantsim::geom

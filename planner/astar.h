@@ -21,7 +21,7 @@ struct SearchStats {
 struct SearchResult {
   bool found = false;
   double cost = std::numeric_limits<double>::infinity();
-  std::vector<std::int32_t> nodes;  ///< start .. goal
+  std::vector<std::int32_t> nodes;    ///< start .. goal
   std::size_t over_budget_bytes = 0;  ///< not 0: the search stopped there, past its memory budget
   SearchStats stats;
 };

@@ -14,11 +14,13 @@ std::optional<Vec2> nearest_free_point(const ObstacleMap& map, Vec2 p) {
   // Off the floor: the clamped point is the first candidate, and the search starts there.
   const Vec2 clamped{std::clamp(p.x, f.xmin, f.xmax), std::clamp(p.y, f.ymin, f.ymax)};
   const double limit = 2.0 * (f.width() + f.height()) + geom::distance(p, clamped);
-  for (double radius = std::max(map.cell_size(), geom::distance(p, clamped)); radius <= 2 * limit; radius *= 2) {
+  for (double radius = std::max(map.cell_size(), geom::distance(p, clamped)); radius <= 2 * limit;
+       radius *= 2) {
     std::vector<double> xs = {p.x, f.xmin, f.xmax}, ys = {p.y, f.ymin, f.ymax};
     const Rect box{p.x - radius, p.y - radius, p.x + radius, p.y + radius};
     for (const Rect& r : map.rects()) {
-      if (r.xmax < box.xmin || r.xmin > box.xmax || r.ymax < box.ymin || r.ymin > box.ymax) continue;
+      if (r.xmax < box.xmin || r.xmin > box.xmax || r.ymax < box.ymin || r.ymin > box.ymax)
+        continue;
       xs.insert(xs.end(), {r.xmin, r.xmax});
       ys.insert(ys.end(), {r.ymin, r.ymax});
     }
@@ -33,7 +35,8 @@ std::optional<Vec2> nearest_free_point(const ObstacleMap& map, Vec2 p) {
         const Vec2 c{x, y};
         const double d = geom::distance(p, c);
         if (d > best_d || !map.point_free(c) || map.is_pinch_point(c)) continue;
-        if (!best || d < best_d || (d == best_d && (c.x < best->x || (c.x == best->x && c.y < best->y)))) {
+        if (!best || d < best_d ||
+            (d == best_d && (c.x < best->x || (c.x == best->x && c.y < best->y)))) {
           best = c;
           best_d = d;
         }
@@ -57,7 +60,8 @@ bool usable_endpoints(const ObstacleMap& map, bool snap, Vec2& start, Vec2& goal
     snapped = true;
     return true;
   };
-  return usable(start, out.start_snapped, PlanStatus::kStartBlocked) && usable(goal, out.goal_snapped, PlanStatus::kGoalBlocked);
+  return usable(start, out.start_snapped, PlanStatus::kStartBlocked) &&
+         usable(goal, out.goal_snapped, PlanStatus::kGoalBlocked);
 }
 
 }  // namespace plantsim::planner

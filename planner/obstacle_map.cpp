@@ -46,7 +46,8 @@ ObstacleMap::ObstacleMap(std::vector<Rect> inflated, const Rect& floor, double w
     if (r.xmax < f.xmin || r.xmin > f.xmax || r.ymax < f.ymin || r.ymin > f.ymax) continue;
     for (int cy = cell_y(r.ymin); cy <= cell_y(r.ymax); ++cy)
       for (int cx = cell_x(r.xmin); cx <= cell_x(r.xmax); ++cx)
-        cells_[static_cast<std::size_t>(cy) * nx_ + cx].rects.push_back(static_cast<std::int32_t>(i));
+        cells_[static_cast<std::size_t>(cy) * nx_ + cx].rects.push_back(
+            static_cast<std::int32_t>(i));
   }
   find_pinch_points();
 }
@@ -77,14 +78,16 @@ void ObstacleMap::find_pinch_points() {
   std::vector<Vec2> found;
   for (std::size_t i = 0; i < obstacle_count_; ++i) {
     const Rect& r = rects_[i];
-    const Vec2 corners[4] = {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
+    const Vec2 corners[4] = {
+        {r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
     for (const Vec2& c : corners) {
       const bool ne = quadrant_occupied(c, 1, 1, -1), sw = quadrant_occupied(c, -1, -1, -1);
       const bool nw = quadrant_occupied(c, -1, 1, -1), se = quadrant_occupied(c, 1, -1, -1);
       if ((ne && sw && !nw && !se) || (nw && se && !ne && !sw)) found.push_back(c);
     }
   }
-  std::sort(found.begin(), found.end(), [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
+  std::sort(found.begin(), found.end(),
+            [](Vec2 a, Vec2 b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
   found.erase(std::unique(found.begin(), found.end()), found.end());
   pinches_ = std::move(found);
   for (std::size_t k = 0; k < pinches_.size(); ++k)
@@ -104,7 +107,9 @@ bool ObstacleMap::sandwiched(Vec2 p, Vec2 q) const {
   const double line = horizontal ? p.y : p.x;
   const double lo = horizontal ? std::min(p.x, q.x) : std::min(p.y, q.y);
   const double hi = horizontal ? std::max(p.x, q.x) : std::max(p.y, q.y);
-  struct Span { double a, b; };
+  struct Span {
+    double a, b;
+  };
   std::vector<Span> below, above;  // rectangles whose edge lies on the line, by side
   walk_cells(p, q, [&](const Cell& c) {
     for (std::int32_t i : c.rects) {

@@ -47,7 +47,9 @@ class ObstacleMap {
     return {x0_ + cx * cell_size_, y0_ + cy * cell_size_, x0_ + (cx + 1) * cell_size_,
             y0_ + (cy + 1) * cell_size_};
   }
-  const std::vector<std::int32_t>& rects_in_cell(int cx, int cy) const { return cell(cx, cy).rects; }
+  const std::vector<std::int32_t>& rects_in_cell(int cx, int cy) const {
+    return cell(cx, cy).rects;
+  }
 
  private:
   struct Cell {

@@ -3,10 +3,10 @@
 
 #include <stdexcept>
 
-#include "planner/gcr/gcr_planner.h"
 #include "planner/coverage/coverage_planner.h"
-#include "planner/maze/maze_planner.h"
+#include "planner/gcr/gcr_planner.h"
 #include "planner/grid/grid_astar.h"
+#include "planner/maze/maze_planner.h"
 #include "planner/mesh/interval_planner.h"
 #include "planner/round/tangent_planner.h"
 #include "planner/vg/vg_planner.h"
@@ -15,11 +15,16 @@ namespace plantsim::planner {
 
 std::string_view to_string(PlanStatus s) {
   switch (s) {
-    case PlanStatus::kOk: return "ok";
-    case PlanStatus::kNoPath: return "no path";
-    case PlanStatus::kStartBlocked: return "start blocked";
-    case PlanStatus::kGoalBlocked: return "goal blocked";
-    case PlanStatus::kSearchLimit: return "search limit";
+    case PlanStatus::kOk:
+      return "ok";
+    case PlanStatus::kNoPath:
+      return "no path";
+    case PlanStatus::kStartBlocked:
+      return "start blocked";
+    case PlanStatus::kGoalBlocked:
+      return "goal blocked";
+    case PlanStatus::kSearchLimit:
+      return "search limit";
   }
   return "unknown";
 }
@@ -31,17 +36,33 @@ PlannerInput planner_input(const worlds::World& world, bool include_charger_body
   in.inflation_m = world.planning_inflation_m();
   // The charger where the map has it.
   if (include_charger_body)
-    in.obstacles.push_back(worlds::charger_body(world, worlds::robot_map_charger(world)).bounding_box());
+    in.obstacles.push_back(
+        worlds::charger_body(world, worlds::robot_map_charger(world)).bounding_box());
   in.maze = world.maze;
   return in;
 }
 
 std::vector<std::string> planner_names() {
-  return {"vg",        "vg-traditional",    "vg-round",    "interval",   "polyanya",   "grid",               "gcr",                "gcr-shortcut",
-          "maze-left", "maze-right",        "maze-left-explore",  "maze-right-explore",
-          "maze-left-resimplified", "maze-right-resimplified",
-          "coverage",  "coverage-chnn",     "coverage-potts",     "coverage-exact",
-          "coverage-greedy",    "coverage-cells"};
+  return {"vg",
+          "vg-traditional",
+          "vg-round",
+          "interval",
+          "polyanya",
+          "grid",
+          "gcr",
+          "gcr-shortcut",
+          "maze-left",
+          "maze-right",
+          "maze-left-explore",
+          "maze-right-explore",
+          "maze-left-resimplified",
+          "maze-right-resimplified",
+          "coverage",
+          "coverage-chnn",
+          "coverage-potts",
+          "coverage-exact",
+          "coverage-greedy",
+          "coverage-cells"};
 }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
@@ -49,7 +70,8 @@ std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput&
   if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
   if (name == "vg-round") return std::make_unique<RoundTangentPlanner>(input);
   if (name == "interval") return std::make_unique<IntervalPlanner>(input);
-  if (name == "polyanya") return std::make_unique<IntervalPlanner>(input, MeshKind::kConvexPolygons);
+  if (name == "polyanya")
+    return std::make_unique<IntervalPlanner>(input, MeshKind::kConvexPolygons);
   if (name == "grid") return std::make_unique<GridPlanner>(input, input.grid_resolution_m);
   if (name == "gcr") return std::make_unique<GcrPlanner>(input);
   if (name == "gcr-shortcut") return std::make_unique<GcrPlanner>(input, true);

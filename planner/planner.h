@@ -26,11 +26,11 @@ enum class PlanStatus { kOk, kNoPath, kStartBlocked, kGoalBlocked, kSearchLimit 
 std::string_view to_string(PlanStatus s);
 
 struct PlanStats {
-  double build_ms = 0;         ///< time to build the planner's structures (graph, grid)
-  double query_ms = 0;         ///< time of this query
-  std::int64_t vertices = 0;   ///< graph vertices (or free grid cells)
-  std::int64_t edges = 0;      ///< edges found so far (lazy graphs) or in total
-  std::int64_t expanded = 0;   ///< search nodes expanded by this query
+  double build_ms = 0;             ///< time to build the planner's structures (graph, grid)
+  double query_ms = 0;             ///< time of this query
+  std::int64_t vertices = 0;       ///< graph vertices (or free grid cells)
+  std::int64_t edges = 0;          ///< edges found so far (lazy graphs) or in total
+  std::int64_t expanded = 0;       ///< search nodes expanded by this query
   std::int64_t segment_tests = 0;  ///< exact visibility tests so far
 };
 
@@ -45,35 +45,37 @@ struct PlanMark {
 
 struct PlanResult {
   PlanStatus status = PlanStatus::kNoPath;
-  std::vector<Vec2> path;      ///< start .. goal, empty unless status is kOk
-  std::vector<Vec2> drive_path;  ///< what a controller should follow when not `path` itself
-                                 ///< (vg-round: arcs replaced by their tangents' corners); empty: `path`
-  double length = 0;           ///< metres, sum of segment lengths
+  std::vector<Vec2> path;  ///< start .. goal, empty unless status is kOk
+  std::vector<Vec2>
+      drive_path;     ///< what a controller should follow when not `path` itself
+                      ///< (vg-round: arcs replaced by their tangents' corners); empty: `path`
+  double length = 0;  ///< metres, sum of segment lengths
   PlanStats stats;
   bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start
   bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
   std::string note;            ///< why a baseline failed (trapped, oscillating...) or what it met
-  std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's exploration,
-                               ///< seed 002's raw walk)
+  std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's
+                               ///< exploration, seed 002's raw walk)
   std::string explored_label = "explored";  ///< what figures call it
-  std::vector<std::vector<Vec2>> tried;  ///< walks it tried and dropped or kept (seed 003's ring search)
-  std::vector<PlanMark> marks;           ///< labels for figures (seed 003's junction letters)
+  std::vector<std::vector<Vec2>>
+      tried;                    ///< walks it tried and dropped or kept (seed 003's ring search)
+  std::vector<PlanMark> marks;  ///< labels for figures (seed 003's junction letters)
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
 struct PlannerInput {
   Rect floor;
-  std::vector<Rect> obstacles;  ///< raw (not yet inflated)
-  double inflation_m = 0.3;     ///< applied to obstacles and walls
-  int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
+  std::vector<Rect> obstacles;     ///< raw (not yet inflated)
+  double inflation_m = 0.3;        ///< applied to obstacles and walls
+  int corner_steps = 1;            ///< 1: square corners (the document); more: tighter staircase
   double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
-  bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
-  int landmarks = 0;            ///< planner interval: landmarks for its ALT heuristic (0: none)
+  bool snap_to_free = false;       ///< move a blocked start or goal to the nearest free point
+  int landmarks = 0;               ///< planner interval: landmarks for its ALT heuristic (0: none)
   /// vg, interval, polyanya: a query whose search holds more stops (kSearchLimit)
   std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;
-  double gcr_step_m = 0.1;      ///< step of the gradient / coordinate-rotation walk
+  double gcr_step_m = 0.1;                 ///< step of the gradient / coordinate-rotation walk
   std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
-  CoverageParams coverage;       ///< seed 004's cell size, weights and network constants
+  CoverageParams coverage;                 ///< seed 004's cell size, weights and network constants
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

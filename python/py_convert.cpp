@@ -37,11 +37,15 @@ geom::Pose2 pose_from(const py::handle& value, const std::string& what) {
   return {v[0], v[1], v[2]};
 }
 
-py::object from_json_text(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+py::object from_json_text(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
 
 std::string to_json_text(const py::handle& value) {
   try {
-    return py::module_::import("json").attr("dumps")(value, py::arg("allow_nan") = false).cast<std::string>();
+    return py::module_::import("json")
+        .attr("dumps")(value, py::arg("allow_nan") = false)
+        .cast<std::string>();
   } catch (const py::error_already_set& e) {
     throw std::invalid_argument(std::string("not a JSON document: ") + e.what());
   }

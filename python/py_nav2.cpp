@@ -16,7 +16,9 @@ void bind_nav2(py::module_& m) {
         d["config"] = from_json_text(im.config.dump());
         auto rows = [](const std::vector<app::Nav2Parameter>& ps) {
           py::list l;
-          for (const auto& p : ps) l.append(py::dict(py::arg("nav2") = p.nav2, py::arg("value") = p.value, py::arg("plantsim") = p.plantsim, py::arg("note") = p.note));
+          for (const auto& p : ps)
+            l.append(py::dict(py::arg("nav2") = p.nav2, py::arg("value") = p.value,
+                              py::arg("plantsim") = p.plantsim, py::arg("note") = p.note));
           return l;
         };
         d["mapped"] = rows(im.mapped);

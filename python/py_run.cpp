@@ -7,8 +7,8 @@
 
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
-#include "python/py_bindings.h"
 #include "python/py_arguments.h"
+#include "python/py_bindings.h"
 #include "python/py_world.h"
 #include "robot/travel_steered.h"
 #include "sim/episode.h"
@@ -31,69 +31,111 @@ struct Observation {
 py::array_t<double> scan_angles(const robot::LidarScan& s) {
   py::array_t<double> a(static_cast<py::ssize_t>(s.ranges.size()));
   auto v = a.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < s.ranges.size(); ++i) v(static_cast<py::ssize_t>(i)) = s.mount.yaw + s.angle(i);
+  for (std::size_t i = 0; i < s.ranges.size(); ++i)
+    v(static_cast<py::ssize_t>(i)) = s.mount.yaw + s.angle(i);
   return a;
 }
 
 void bind_observation(py::module_& m) {
   py::class_<Observation, std::shared_ptr<Observation>>(
-      m, "Observation", "What the robot perceives at one control period (the estimate, never the truth).")
-      .def_property_readonly("time", [](const Observation& o) { return o.perception.t_s; }, "seconds since the start")
-      .def_property_readonly("pose", [](const Observation& o) { return pose_array(o.perception.pose); },
-                             "estimated [x, y, yaw] in the map frame")
-      .def_property_readonly("covariance", [](const Observation& o) {
-        py::array_t<double> a({3, 3});
-        auto v = a.mutable_unchecked<2>();
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) v(i, j) = o.perception.pose_covariance[static_cast<std::size_t>(3 * i + j)];
-        return a;
-      }, "3 x 3 covariance of (x, y, yaw)")
-      .def_property_readonly("position_sigma", [](const Observation& o) { return o.perception.position_sigma_m; })
-      .def_property_readonly("health", [](const Observation& o) { return std::string(robot::to_string(o.perception.health)); },
-                             "the estimator's own verdict: ok, degraded or lost")
-      .def_property_readonly("velocity", [](const Observation& o) {
-        return py::make_tuple(o.perception.speed_mps, o.perception.yaw_rate_radps);
-      }, "(forward speed from the encoders m/s, yaw rate from the gyro rad/s)")
-      .def_property_readonly("scan_ranges", [](const Observation& o) {
-        return o.perception.scan ? py::array_t<double>(py::cast(o.perception.scan->ranges)) : py::array_t<double>(0);
-      }, "the newest lidar scan's ranges (NaN: dropout; max range: nothing there)")
-      .def_property_readonly("scan_angles", [](const Observation& o) {
-        return o.perception.scan ? scan_angles(*o.perception.scan) : py::array_t<double>(0);
-      }, "each beam's angle in the robot frame, radians")
-      .def_property_readonly("scan_max_range", [](const Observation& o) { return o.perception.scan ? o.perception.scan->max_range_m : 0.0; })
-      .def_property_readonly("plan", [](const Observation& o) { return points_array(o.plan); },
-                             "N x 2 plan plantsim holds now (replanned around what was sensed)")
-      .def_property_readonly("staging", [](const Observation& o) { return pose_array(o.staging); },
-                             "the staging pose on the map: docking takes over within the goal tolerance of it")
-      .def_property_readonly("obstacles", [](const Observation& o) {
-        py::array_t<double> a({static_cast<py::ssize_t>(o.perception.obstacles.size()), py::ssize_t{6}});
-        auto v = a.mutable_unchecked<2>();
-        for (std::size_t i = 0; i < o.perception.obstacles.size(); ++i) {
-          const auto& b = o.perception.obstacles[i];
-          const auto k = static_cast<py::ssize_t>(i);
-          v(k, 0) = b.box.xmin, v(k, 1) = b.box.ymin, v(k, 2) = b.box.xmax, v(k, 3) = b.box.ymax;
-          v(k, 4) = b.velocity.x, v(k, 5) = b.velocity.y;
-        }
-        return a;
-      }, "N x 6 tracked obstacles off the map: [xmin, ymin, xmax, ymax, vx, vy]")
-      .def_property_readonly("charger", [](const Observation& o) -> py::object {
-        if (!o.perception.charger_in_robot) return py::none();
-        return pose_array(*o.perception.charger_in_robot);
-      }, "the docked pose as the charger detector saw it, robot frame [x, y, yaw], or None")
+      m, "Observation",
+      "What the robot perceives at one control period (the estimate, never the truth).")
+      .def_property_readonly(
+          "time", [](const Observation& o) { return o.perception.t_s; }, "seconds since the start")
+      .def_property_readonly(
+          "pose", [](const Observation& o) { return pose_array(o.perception.pose); },
+          "estimated [x, y, yaw] in the map frame")
+      .def_property_readonly(
+          "covariance",
+          [](const Observation& o) {
+            py::array_t<double> a({3, 3});
+            auto v = a.mutable_unchecked<2>();
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j)
+                v(i, j) = o.perception.pose_covariance[static_cast<std::size_t>(3 * i + j)];
+            return a;
+          },
+          "3 x 3 covariance of (x, y, yaw)")
+      .def_property_readonly("position_sigma",
+                             [](const Observation& o) { return o.perception.position_sigma_m; })
+      .def_property_readonly(
+          "health",
+          [](const Observation& o) { return std::string(robot::to_string(o.perception.health)); },
+          "the estimator's own verdict: ok, degraded or lost")
+      .def_property_readonly(
+          "velocity",
+          [](const Observation& o) {
+            return py::make_tuple(o.perception.speed_mps, o.perception.yaw_rate_radps);
+          },
+          "(forward speed from the encoders m/s, yaw rate from the gyro rad/s)")
+      .def_property_readonly(
+          "scan_ranges",
+          [](const Observation& o) {
+            return o.perception.scan ? py::array_t<double>(py::cast(o.perception.scan->ranges))
+                                     : py::array_t<double>(0);
+          },
+          "the newest lidar scan's ranges (NaN: dropout; max range: nothing there)")
+      .def_property_readonly(
+          "scan_angles",
+          [](const Observation& o) {
+            return o.perception.scan ? scan_angles(*o.perception.scan) : py::array_t<double>(0);
+          },
+          "each beam's angle in the robot frame, radians")
+      .def_property_readonly("scan_max_range",
+                             [](const Observation& o) {
+                               return o.perception.scan ? o.perception.scan->max_range_m : 0.0;
+                             })
+      .def_property_readonly(
+          "plan", [](const Observation& o) { return points_array(o.plan); },
+          "N x 2 plan plantsim holds now (replanned around what was sensed)")
+      .def_property_readonly(
+          "staging", [](const Observation& o) { return pose_array(o.staging); },
+          "the staging pose on the map: docking takes over within the goal tolerance of it")
+      .def_property_readonly(
+          "obstacles",
+          [](const Observation& o) {
+            py::array_t<double> a(
+                {static_cast<py::ssize_t>(o.perception.obstacles.size()), py::ssize_t{6}});
+            auto v = a.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < o.perception.obstacles.size(); ++i) {
+              const auto& b = o.perception.obstacles[i];
+              const auto k = static_cast<py::ssize_t>(i);
+              v(k, 0) = b.box.xmin, v(k, 1) = b.box.ymin, v(k, 2) = b.box.xmax,
+                   v(k, 3) = b.box.ymax;
+              v(k, 4) = b.velocity.x, v(k, 5) = b.velocity.y;
+            }
+            return a;
+          },
+          "N x 6 tracked obstacles off the map: [xmin, ymin, xmax, ymax, vx, vy]")
+      .def_property_readonly(
+          "charger",
+          [](const Observation& o) -> py::object {
+            if (!o.perception.charger_in_robot) return py::none();
+            return pose_array(*o.perception.charger_in_robot);
+          },
+          "the docked pose as the charger detector saw it, robot frame [x, y, yaw], or None")
       .def_property_readonly("charging", [](const Observation& o) { return o.perception.charging; })
-      .def_property_readonly("bumper", [](const Observation& o) { return o.perception.bumper.pressed(); })
-      .def_property_readonly("phase", [](const Observation& o) { return std::string(controller::to_string(o.phase)); },
-                             "plantsim's phase: travel, align, approach, back_off, ...")
-      .def_property_readonly("builtin", [](const Observation& o) { return py::make_tuple(o.builtin.v_mps, o.builtin.omega_radps); },
-                             "(v, omega) plantsim's own controller would command now");
+      .def_property_readonly("bumper",
+                             [](const Observation& o) { return o.perception.bumper.pressed(); })
+      .def_property_readonly(
+          "phase", [](const Observation& o) { return std::string(controller::to_string(o.phase)); },
+          "plantsim's phase: travel, align, approach, back_off, ...")
+      .def_property_readonly(
+          "builtin",
+          [](const Observation& o) {
+            return py::make_tuple(o.builtin.v_mps, o.builtin.omega_radps);
+          },
+          "(v, omega) plantsim's own controller would command now");
 }
 
 /// A Python callable as a steering: (v, omega) or None (plantsim's command this period).
 robot::Steering steering_of(py::object callable, const std::string& role) {
   if (callable.is_none()) return {};
-  if (!PyCallable_Check(callable.ptr())) throw std::invalid_argument(role + " must be callable: f(observation) -> (v, omega) or None");
+  if (!PyCallable_Check(callable.ptr()))
+    throw std::invalid_argument(role + " must be callable: f(observation) -> (v, omega) or None");
   return [callable, role](const robot::SteeringInput& in) -> std::optional<controller::Twist> {
-    auto o = std::make_shared<Observation>(Observation{in.perception, in.plan, in.phase, in.builtin.twist, in.staging});
+    auto o = std::make_shared<Observation>(
+        Observation{in.perception, in.plan, in.phase, in.builtin.twist, in.staging});
     const py::object out = callable(o);
     if (out.is_none()) return std::nullopt;
     double v = NAN, w = NAN;
@@ -101,9 +143,11 @@ robot::Steering steering_of(py::object callable, const std::string& role) {
       const auto pair = out.cast<std::pair<double, double>>();
       v = pair.first, w = pair.second;
     } catch (const py::cast_error&) {
-      throw std::invalid_argument(role + " returned " + py::repr(out).cast<std::string>() + "; expected (v m/s, omega rad/s) or None");
+      throw std::invalid_argument(role + " returned " + py::repr(out).cast<std::string>() +
+                                  "; expected (v m/s, omega rad/s) or None");
     }
-    if (!std::isfinite(v) || !std::isfinite(w)) throw std::invalid_argument(role + " returned a non-finite command");
+    if (!std::isfinite(v) || !std::isfinite(w))
+      throw std::invalid_argument(role + " returned a non-finite command");
     return controller::Twist{v, w};
   };
 }
@@ -117,21 +161,35 @@ struct PyRun {
 };
 
 const std::vector<std::string>& trajectory_columns() {
-  static const std::vector<std::string> c = {"t_s", "x_m", "y_m", "yaw_rad", "est_x_m", "est_y_m", "est_yaw_rad",
-                                             "est_sigma_m", "speed_mps", "cross_track_m", "phase", "wall_following",
-                                             "target_x_m", "target_y_m"};
+  static const std::vector<std::string> c = {
+      "t_s",         "x_m",         "y_m",       "yaw_rad",       "est_x_m", "est_y_m",
+      "est_yaw_rad", "est_sigma_m", "speed_mps", "cross_track_m", "phase",   "wall_following",
+      "target_x_m",  "target_y_m"};
   return c;
 }
 
 py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
-  py::array_t<double> a({static_cast<py::ssize_t>(r.trajectory.size()), static_cast<py::ssize_t>(trajectory_columns().size())});
+  py::array_t<double> a({static_cast<py::ssize_t>(r.trajectory.size()),
+                         static_cast<py::ssize_t>(trajectory_columns().size())});
   auto v = a.mutable_unchecked<2>();
   for (std::size_t i = 0; i < r.trajectory.size(); ++i) {
     const sim::TrajectorySample& s = r.trajectory[i];
-    const double row[] = {s.t_s, s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw,
-                          s.position_sigma_m, s.speed_mps, s.cross_track_m, static_cast<double>(s.phase),
-                          s.wall_following ? 1.0 : 0.0, s.target.x, s.target.y};
-    for (std::size_t c = 0; c < std::size(row); ++c) v(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = row[c];
+    const double row[] = {s.t_s,
+                          s.truth.x,
+                          s.truth.y,
+                          s.truth.yaw,
+                          s.estimate.x,
+                          s.estimate.y,
+                          s.estimate.yaw,
+                          s.position_sigma_m,
+                          s.speed_mps,
+                          s.cross_track_m,
+                          static_cast<double>(s.phase),
+                          s.wall_following ? 1.0 : 0.0,
+                          s.target.x,
+                          s.target.y};
+    for (std::size_t c = 0; c < std::size(row); ++c)
+      v(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = row[c];
   }
   return a;
 }
@@ -140,20 +198,26 @@ py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
 
 sim::EpisodeConfig config_argument(const py::handle& config) {
   if (config.is_none()) return {};
-  if (py::isinstance<py::dict>(config)) return sim::parse_episode_config(to_json_text(config), "<config dict>");
+  if (py::isinstance<py::dict>(config))
+    return sim::parse_episode_config(to_json_text(config), "<config dict>");
   if (py::isinstance<py::str>(config) || py::hasattr(config, "__fspath__"))
-    return sim::load_episode_config(py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
-  throw std::invalid_argument("config must be a dict or the path of a config file (docs/config.md)");
+    return sim::load_episode_config(
+        py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
+  throw std::invalid_argument(
+      "config must be a dict or the path of a config file (docs/config.md)");
 }
 
-sim::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking, const std::string& name) {
+sim::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
+                                       const std::string& name) {
   if (controller.is_none() && docking.is_none()) return {};
   if (name.empty() || name.find_first_of("|/\\\n\"") != std::string::npos)
-    throw std::invalid_argument("controller_name '" + name + "' must be non-empty, without | / \\ or quotes");
+    throw std::invalid_argument("controller_name '" + name +
+                                "' must be non-empty, without | / \\ or quotes");
   sim::EpisodeSteering s;
   s.name = name;
   s.wrap = [travel = steering_of(controller, "controller"), dock = steering_of(docking, "docking")](
-               std::unique_ptr<robot::Travel> builtin, const worlds::World& map, const std::vector<geom::Vec2>& first_plan) {
+               std::unique_ptr<robot::Travel> builtin, const worlds::World& map,
+               const std::vector<geom::Vec2>& first_plan) {
     return robot::steered_by(std::move(builtin), map, first_plan, travel, dock);
   };
   return s;
@@ -161,25 +225,32 @@ sim::EpisodeSteering steering_argument(const py::object& controller, const py::o
 
 std::string callable_name(const py::object& f) {
   if (f.is_none()) return "";
-  return py::hasattr(f, "__name__") ? py::str(f.attr("__name__")).cast<std::string>() : py::str(py::type::of(f).attr("__name__")).cast<std::string>();
+  return py::hasattr(f, "__name__") ? py::str(f.attr("__name__")).cast<std::string>()
+                                    : py::str(py::type::of(f).attr("__name__")).cast<std::string>();
 }
 
 namespace {
 
-PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& config_arg, const py::object& controller,
-          const py::object& docking, const std::string& planner_name, const py::object& out, const std::string& controller_name) {
+PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& config_arg,
+          const py::object& controller, const py::object& docking, const std::string& planner_name,
+          const py::object& out, const std::string& controller_name) {
   const PyWorld w = world_argument(world_arg);
   sim::EpisodeConfig config = config_argument(config_arg);
   config.seed = seed;
   const std::vector<std::string> names = planner::planner_names();
   if (std::find(names.begin(), names.end(), planner_name) == names.end())
-    throw std::invalid_argument("unknown planner '" + planner_name + "' (plantsim.planners() lists them)");
-  const std::string name = controller_name.empty() ? "python:" + callable_name(controller.is_none() ? docking : controller) : controller_name;
+    throw std::invalid_argument("unknown planner '" + planner_name +
+                                "' (plantsim.planners() lists them)");
+  const std::string name =
+      controller_name.empty()
+          ? "python:" + callable_name(controller.is_none() ? docking : controller)
+          : controller_name;
   const sim::EpisodeSteering steering = steering_argument(controller, docking, name);
   std::unique_ptr<util::StagedFolder> staged;  // checked before the run, as `plantsim run` does
   if (!out.is_none())
-    staged = std::make_unique<util::StagedFolder>(py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>(),
-                                                  app::run_folder_names());
+    staged = std::make_unique<util::StagedFolder>(
+        py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>(),
+        app::run_folder_names());
   auto p = planner::make_planner(planner_name, planner::planner_input(*w.world, true));
   sim::EpisodeResult r;
   if (steering) {
@@ -190,10 +261,11 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
   }
   const std::string line = "plantsim.run('" + w.world->source + "', seed=" + std::to_string(seed) +
                            (steering ? ", controller=" + steering.name : "") + ")";
-  PyRun result{from_json_text(app::summary_json(r, w.world->name, line)), trajectory_array(r), trajectory_columns(),
-               r.status, r.docked};
+  PyRun result{from_json_text(app::summary_json(r, w.world->name, line)), trajectory_array(r),
+               trajectory_columns(), r.status, r.docked};
   if (staged) {
-    app::write_run_folder(*w.world, r, config, staged->path(), line, steering ? "steered by " + steering.name : "", false);
+    app::write_run_folder(*w.world, r, config, staged->path(), line,
+                          steering ? "steered by " + steering.name : "", false);
     staged->commit();
   }
   return result;
@@ -203,17 +275,22 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
 
 void bind_run(py::module_& m) {
   bind_observation(m);
-  py::class_<PyRun>(m, "Run", "One episode: .summary (summary.json as a dict), .trajectory (rows of trajectory.csv).")
+  py::class_<PyRun>(
+      m, "Run",
+      "One episode: .summary (summary.json as a dict), .trajectory (rows of trajectory.csv).")
       .def_readonly("summary", &PyRun::summary)
-      .def_readonly("trajectory", &PyRun::trajectory, "one row per control period; phase as its index in PHASES")
+      .def_readonly("trajectory", &PyRun::trajectory,
+                    "one row per control period; phase as its index in PHASES")
       .def_readonly("columns", &PyRun::columns)
       .def_readonly("status", &PyRun::status)
       .def_readonly("docked", &PyRun::docked)
       .def("__repr__", [](const PyRun& r) { return "<plantsim.Run " + r.status + ">"; });
-  m.attr("PHASES") = py::make_tuple("travel", "align", "approach", "back_off", "docked", "undock", "undocked", "failed");
-  m.def("run", &run, py::arg("world"), py::kw_only(), py::arg("seed") = 1, py::arg("config") = py::none(),
-        py::arg("controller") = py::none(), py::arg("docking") = py::none(), py::arg("planner") = "vg",
-        py::arg("out") = py::none(), py::arg("controller_name") = "",
+  m.attr("PHASES") = py::make_tuple("travel", "align", "approach", "back_off", "docked", "undock",
+                                    "undocked", "failed");
+  m.def("run", &run, py::arg("world"), py::kw_only(), py::arg("seed") = 1,
+        py::arg("config") = py::none(), py::arg("controller") = py::none(),
+        py::arg("docking") = py::none(), py::arg("planner") = "vg", py::arg("out") = py::none(),
+        py::arg("controller_name") = "",
         R"(Simulates one docking episode, as `plantsim run WORLD` does.
 
 world: a World or a world file's path. seed: the noise seed. config: a dict or a JSON file with

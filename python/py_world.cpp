@@ -13,14 +13,16 @@ py::array_t<double> rects_array(const std::vector<geom::Rect>& rects) {
   auto v = a.mutable_unchecked<2>();
   for (std::size_t i = 0; i < rects.size(); ++i) {
     const auto k = static_cast<py::ssize_t>(i);
-    v(k, 0) = rects[i].xmin, v(k, 1) = rects[i].ymin, v(k, 2) = rects[i].xmax, v(k, 3) = rects[i].ymax;
+    v(k, 0) = rects[i].xmin, v(k, 1) = rects[i].ymin, v(k, 2) = rects[i].xmax,
+         v(k, 3) = rects[i].ymax;
   }
   return a;
 }
 
-PyWorld load(const py::object& path_arg, const py::object& start, const py::object& charger, const std::string& scen,
-             int query) {
-  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_arg)).cast<std::string>();
+PyWorld load(const py::object& path_arg, const py::object& start, const py::object& charger,
+             const std::string& scen, int query) {
+  const std::string path =
+      py::str(py::module_::import("os").attr("fspath")(path_arg)).cast<std::string>();
   worlds::PoseOverrides overrides;
   if (!start.is_none()) overrides.start = pose_from(start, "start");
   if (!charger.is_none()) overrides.charger = pose_from(charger, "charger");
@@ -40,29 +42,43 @@ PyWorld world_argument(const py::handle& value) {
 }
 
 void bind_world(py::module_& m) {
-  py::class_<PyWorld>(m, "World", "A plant: floor, rectangles, start and charger poses, robot (SI units, y up).")
+  py::class_<PyWorld>(
+      m, "World", "A plant: floor, rectangles, start and charger poses, robot (SI units, y up).")
       .def_property_readonly("name", [](const PyWorld& w) { return w.world->name; })
-      .def_property_readonly("source", [](const PyWorld& w) { return w.world->source; }, "the file it was loaded from")
-      .def_property_readonly("floor", [](const PyWorld& w) { return rects_array({w.world->floor}).attr("reshape")(4); },
-                             "[xmin, ymin, xmax, ymax] of the floor (its boundary is a wall)")
-      .def_property_readonly("obstacles", [](const PyWorld& w) { return rects_array(w.world->obstacles); },
-                             "N x 4 array of mapped rectangles [xmin, ymin, xmax, ymax]")
-      .def_property_readonly("unmapped", [](const PyWorld& w) { return rects_array(w.world->unmapped); },
-                             "rectangles in the plant but not on the robot's map")
-      .def_property_readonly("start", [](const PyWorld& w) { return pose_array(w.world->start); }, "[x, y, yaw]")
-      .def_property_readonly("charger", [](const PyWorld& w) { return pose_array(w.world->charger); },
-                             "the docked pose [x, y, yaw]")
-      .def_property_readonly("staging", [](const PyWorld& w) { return pose_array(worlds::staging_pose(*w.world)); },
-                             "the staging pose in front of the charger, where docking begins")
-      .def_property_readonly("robot_radius", [](const PyWorld& w) { return w.world->robot.radius_m; })
-      .def_property_readonly("wheel_base", [](const PyWorld& w) { return w.world->robot.wheel_base_m; })
-      .def_property_readonly("max_speed", [](const PyWorld& w) { return w.world->robot.max_speed_mps; })
+      .def_property_readonly(
+          "source", [](const PyWorld& w) { return w.world->source; }, "the file it was loaded from")
+      .def_property_readonly(
+          "floor",
+          [](const PyWorld& w) { return rects_array({w.world->floor}).attr("reshape")(4); },
+          "[xmin, ymin, xmax, ymax] of the floor (its boundary is a wall)")
+      .def_property_readonly(
+          "obstacles", [](const PyWorld& w) { return rects_array(w.world->obstacles); },
+          "N x 4 array of mapped rectangles [xmin, ymin, xmax, ymax]")
+      .def_property_readonly(
+          "unmapped", [](const PyWorld& w) { return rects_array(w.world->unmapped); },
+          "rectangles in the plant but not on the robot's map")
+      .def_property_readonly(
+          "start", [](const PyWorld& w) { return pose_array(w.world->start); }, "[x, y, yaw]")
+      .def_property_readonly(
+          "charger", [](const PyWorld& w) { return pose_array(w.world->charger); },
+          "the docked pose [x, y, yaw]")
+      .def_property_readonly(
+          "staging", [](const PyWorld& w) { return pose_array(worlds::staging_pose(*w.world)); },
+          "the staging pose in front of the charger, where docking begins")
+      .def_property_readonly("robot_radius",
+                             [](const PyWorld& w) { return w.world->robot.radius_m; })
+      .def_property_readonly("wheel_base",
+                             [](const PyWorld& w) { return w.world->robot.wheel_base_m; })
+      .def_property_readonly("max_speed",
+                             [](const PyWorld& w) { return w.world->robot.max_speed_mps; })
       .def("__repr__", [](const PyWorld& w) {
-        return "<plantsim.World '" + w.world->name + "': " + std::to_string(w.world->obstacles.size()) + " rectangles>";
+        return "<plantsim.World '" + w.world->name +
+               "': " + std::to_string(w.world->obstacles.size()) + " rectangles>";
       });
-  m.def("load_world", &load, py::arg("path"), py::kw_only(), py::arg("start") = py::none(), py::arg("charger") = py::none(),
-        py::arg("scen") = "", py::arg("query") = 0,
-        R"(Loads a world: plantsim JSON, a plain benchmark world, a ROS map_server YAML or a MovingAI .map.
+  m.def(
+      "load_world", &load, py::arg("path"), py::kw_only(), py::arg("start") = py::none(),
+      py::arg("charger") = py::none(), py::arg("scen") = "", py::arg("query") = 0,
+      R"(Loads a world: plantsim JSON, a plain benchmark world, a ROS map_server YAML or a MovingAI .map.
 
 start, charger: (x, y, yaw) overriding the file's poses. scen, query: for a MovingAI map, the
 .scen file and the query number that give the start and the charger. Raises plantsim.InputError

@@ -13,8 +13,8 @@
 
 namespace plantsim::render {
 
-std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run, const std::string& out_dir,
-                            const AnimationOptions& o) {
+std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run,
+                            const std::string& out_dir, const AnimationOptions& o) {
   const std::string frames = out_dir + "/frames";
   std::filesystem::create_directories(frames);
   int index = 0;
@@ -25,7 +25,8 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     if (run.trajectory[i].t_s < next && !last) continue;
     next = run.trajectory[i].t_s + o.frame_every_s;
     Figure fig(o.width_px, o.height_px);
-    const PixelTransform t = fig.world_panel(world.floor, {50, 40, o.width_px - 170.0, o.height_px - 40.0});
+    const PixelTransform t =
+        fig.world_panel(world.floor, {50, 40, o.width_px - 170.0, o.height_px - 40.0});
     GlCanvas& c = fig.canvas();
     std::vector<LegendEntry> legend;
     draw_floor(c, world);
@@ -38,7 +39,8 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
       while (k + 1 < track.t_s.size() && track.t_s[k + 1] <= run.trajectory[i].t_s) ++k;
       if (!track.boxes.empty()) boxes.push_back(track.boxes[k]);
     }
-    if (draw_moving(c, world, run.trajectory[i].t_s, boxes)) legend.push_back({palette::kMoving, "moving"});
+    if (draw_moving(c, world, run.trajectory[i].t_s, boxes))
+      legend.push_back({palette::kMoving, "moving"});
     if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1))
       legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
     if (draw_plan(c, run.plan, palette::kPlan)) legend.push_back({palette::kPlan, "plan"});
@@ -61,7 +63,8 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     fig.legend(o.width_px - 150.0, 60, legend);
     fig.world_axes(world.floor, t);
     char title[160];
-    std::snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(), run.trajectory[i].t_s,
+    std::snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(),
+                  run.trajectory[i].t_s,
                   std::string(controller::to_string(run.trajectory[i].phase)).c_str());
     fig.text(title, 50, 26, 16, palette::kAxis, Anchor::kLeft, true);
     char name[64];
@@ -70,10 +73,11 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
   }
   writer.close();
   if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) return "";
-  const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(o.frames_per_second) + " -i '" +
-                          frames + "/frame_%04d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" +
-                          out_dir + "/animation.mp4.tmp.mp4' && mv '" + out_dir + "/animation.mp4.tmp.mp4' '" + out_dir +
-                          "/animation.mp4'";
+  const std::string cmd =
+      "ffmpeg -y -loglevel error -framerate " + std::to_string(o.frames_per_second) + " -i '" +
+      frames + "/frame_%04d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + out_dir +
+      "/animation.mp4.tmp.mp4' && mv '" + out_dir + "/animation.mp4.tmp.mp4' '" + out_dir +
+      "/animation.mp4'";
   return std::system(cmd.c_str()) == 0 ? "animation.mp4" : "";
 }
 

@@ -13,12 +13,12 @@ namespace plantsim::render {
 struct AnimationOptions {
   int width_px = 960;
   int height_px = 600;
-  double frame_every_s = 1.0;   ///< simulated seconds between frames
-  int frames_per_second = 15;   ///< playback rate of the MP4
+  double frame_every_s = 1.0;  ///< simulated seconds between frames
+  int frames_per_second = 15;  ///< playback rate of the MP4
 };
 
 /// Returns the movie's file name (relative to out_dir), or "" when ffmpeg is not available.
-std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run, const std::string& out_dir,
-                            const AnimationOptions& options = {});
+std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run,
+                            const std::string& out_dir, const AnimationOptions& options = {});
 
 }  // namespace plantsim::render

@@ -25,12 +25,13 @@ struct Axes {
 
 /// The bottom (horizontal) or left axis of `a`: line, grid, ticks and numbers (value x scale,
 /// with a suffix such as " %"), and the label under a horizontal one.
-void axis(Figure& fig, const Axes& a, bool horizontal, const std::string& label = "", double scale = 1.0,
-          const std::string& suffix = "") {
+void axis(Figure& fig, const Axes& a, bool horizontal, const std::string& label = "",
+          double scale = 1.0, const std::string& suffix = "") {
   GlCanvas& c = fig.canvas();
   const PixelBox& b = a.box;
   const double lo = horizontal ? a.x0 : a.y0, hi = horizontal ? a.x1 : a.y1;
-  c.pixel_line({b.left, b.bottom}, horizontal ? Vec2{b.right, b.bottom} : Vec2{b.left, b.top}, 1.0, palette::kAxis);
+  c.pixel_line({b.left, b.bottom}, horizontal ? Vec2{b.right, b.bottom} : Vec2{b.left, b.top}, 1.0,
+               palette::kAxis);
   const auto ticks = nice_ticks(lo, hi, horizontal ? 6 : 5);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
   for (double v : ticks) {
@@ -45,7 +46,8 @@ void axis(Figure& fig, const Axes& a, bool horizontal, const std::string& label 
       fig.text(number, b.left - 7, a.py(v) + 4, 12, palette::kAxis, Anchor::kRight);
     }
   }
-  if (horizontal) fig.text(label, 0.5 * (b.left + b.right), b.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
+  if (horizontal)
+    fig.text(label, 0.5 * (b.left + b.right), b.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
 }
 
 /// The methods in first-met order, each with an Okabe-Ito colour.
@@ -57,23 +59,27 @@ std::vector<std::string> methods_of(const std::vector<EpisodeOutcome>& episodes)
 }
 
 std::size_t method_index(const std::vector<std::string>& methods, const std::string& method) {
-  return static_cast<std::size_t>(std::find(methods.begin(), methods.end(), method) - methods.begin());
+  return static_cast<std::size_t>(std::find(methods.begin(), methods.end(), method) -
+                                  methods.begin());
 }
 
 Rgb method_colour(std::size_t i) {
-  static const Rgb kCycle[] = {palette::kOkabeBlue,          palette::kOkabeVermillion, palette::kOkabeBluishGreen,
-                               palette::kOkabeReddishPurple, palette::kOkabeOrange,     palette::kOkabeSkyBlue,
+  static const Rgb kCycle[] = {palette::kOkabeBlue,        palette::kOkabeVermillion,
+                               palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
+                               palette::kOkabeOrange,      palette::kOkabeSkyBlue,
                                palette::kOkabeBlack};
   return kCycle[i % (sizeof kCycle / sizeof kCycle[0])];
 }
 
 /// A deterministic spread in [-1, 1] for the i-th dot of a strip.
-double jitter(std::size_t i) { return std::fmod(static_cast<double>(i) * 0.618033988749895, 1.0) * 2.0 - 1.0; }
+double jitter(std::size_t i) {
+  return std::fmod(static_cast<double>(i) * 0.618033988749895, 1.0) * 2.0 - 1.0;
+}
 
 /// Dots of one value per episode, a row per method, with a gate line; returns the axes.
 void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string>& methods,
-                 const std::vector<std::vector<double>>& values, double gate, const std::string& title,
-                 const std::string& label, double scale) {
+                 const std::vector<std::vector<double>>& values, double gate,
+                 const std::string& title, const std::string& label, double scale) {
   double hi = gate * 1.25;
   for (const auto& v : values)
     for (double x : v) hi = std::max(hi, x * 1.05);
@@ -88,7 +94,8 @@ void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string
       fig.canvas().pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
     }
   }
-  fig.canvas().pixel_line({a.px(gate), box.top}, {a.px(gate), box.bottom}, 2.0, palette::kCollisionMark);
+  fig.canvas().pixel_line({a.px(gate), box.top}, {a.px(gate), box.bottom}, 2.0,
+                          palette::kCollisionMark);
   fig.text(title, box.left, box.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
 }
 
@@ -96,25 +103,28 @@ void method_labels(Figure& fig, const PixelBox& box, const std::vector<std::stri
                    const std::vector<std::size_t>& counts) {
   const double row_h = box.height() / std::max<std::size_t>(methods.size(), 1);
   for (std::size_t m = 0; m < methods.size(); ++m)
-    fig.text(fig.fit(methods[m] + " (" + std::to_string(counts[m]) + ")", 12, box.left - 16), box.left - 8,
-             box.top + (m + 0.5) * row_h + 4, 12, method_colour(m), Anchor::kRight);
+    fig.text(fig.fit(methods[m] + " (" + std::to_string(counts[m]) + ")", 12, box.left - 16),
+             box.left - 8, box.top + (m + 0.5) * row_h + 4, 12, method_colour(m), Anchor::kRight);
 }
 
 }  // namespace
 
-Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string& title, int width_px,
-                         FigureLayout* layout_out) {
+Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string& title,
+                         int width_px, FigureLayout* layout_out) {
   constexpr std::size_t kMaxRows = 80;
-  const std::vector<RateRow> rows(all_rows.begin(), all_rows.begin() + std::min(all_rows.size(), kMaxRows));
+  const std::vector<RateRow> rows(all_rows.begin(),
+                                  all_rows.begin() + std::min(all_rows.size(), kMaxRows));
   const double row_h = 22;
   const int height = static_cast<int>(120 + row_h * std::max<std::size_t>(rows.size(), 1) + 60);
   Figure fig(width_px, height);
   fig.text_fitted(title, 20, 28, 18, palette::kAxis, width_px - 40.0, true);
   std::string sub = "success rate per configuration with its Wilson 95 % interval";
   if (all_rows.size() > rows.size())
-    sub += " (first " + std::to_string(rows.size()) + " of " + std::to_string(all_rows.size()) + " configurations)";
+    sub += " (first " + std::to_string(rows.size()) + " of " + std::to_string(all_rows.size()) +
+           " configurations)";
   fig.text(sub, 20, 48, 13, palette::kAxis);
-  const PixelBox box{520, 100, width_px - 110.0, 100 + row_h * std::max<std::size_t>(rows.size(), 1)};
+  const PixelBox box{520, 100, width_px - 110.0,
+                     100 + row_h * std::max<std::size_t>(rows.size(), 1)};
   const Axes a{box, 0, 1, 0, 1};
   axis(fig, a, true, "success rate", 100.0, " %");
   GlCanvas& c = fig.canvas();
@@ -138,13 +148,17 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
     c.pixel_line({a.px(r.high), y - 5}, {a.px(r.high), y + 5}, 1.6, palette::kAxis);
     if (r.gate >= 0) {
       any_gate = true;
-      c.pixel_line({a.px(r.gate), y - 0.5 * row_h}, {a.px(r.gate), y + 0.5 * row_h}, 2.0, palette::kOkabeBlack);
+      c.pixel_line({a.px(r.gate), y - 0.5 * row_h}, {a.px(r.gate), y + 0.5 * row_h}, 2.0,
+                   palette::kOkabeBlack);
     }
-    fig.text(fig.fit(r.label, 12, box.left - 20), box.left - 10, y + 4, 12, palette::kAxis, Anchor::kRight);
-    fig.text(std::to_string(r.successes) + "/" + std::to_string(r.episodes), box.right + 8, y + 4, 12, palette::kAxis);
+    fig.text(fig.fit(r.label, 12, box.left - 20), box.left - 10, y + 4, 12, palette::kAxis,
+             Anchor::kRight);
+    fig.text(std::to_string(r.successes) + "/" + std::to_string(r.episodes), box.right + 8, y + 4,
+             12, palette::kAxis);
   }
   std::vector<LegendEntry> legend;
-  if (any_pass) legend.push_back({palette::kCharger, any_gate ? "success rate (meets gate)" : "success rate"});
+  if (any_pass)
+    legend.push_back({palette::kCharger, any_gate ? "success rate (meets gate)" : "success rate"});
   if (any_unsure) legend.push_back({palette::kOkabeOrange, "meets gate, 95 % low below it"});
   if (any_below) legend.push_back({palette::kFailure, "success rate (below gate)"});
   legend.push_back({palette::kAxis, "Wilson 95 %"});
@@ -155,8 +169,8 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   return img;
 }
 
-Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates, int width_px,
-                        FigureLayout* layout_out) {
+Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates,
+                        int width_px, FigureLayout* layout_out) {
   const std::vector<std::string> methods = methods_of(episodes);
   std::vector<std::vector<double>> pos(methods.size()), heading(methods.size());
   std::vector<std::size_t> counts(methods.size(), 0);
@@ -170,11 +184,14 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   const double row_h = 60;
   const int height = static_cast<int>(130 + row_h * std::max<std::size_t>(methods.size(), 1) + 60);
   Figure fig(width_px, height);
-  fig.text("Docking errors of the docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
-  fig.text("one dot per episode (spread vertically to be seen); red lines: the gates", 20, 48, 13, palette::kAxis);
+  fig.text("Docking errors of the docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft,
+           true);
+  fig.text("one dot per episode (spread vertically to be seen); red lines: the gates", 20, 48, 13,
+           palette::kAxis);
   const double label_w = 260, gap = 60;
   const double panel_w = (width_px - label_w - gap - 40) / 2.0;
-  const PixelBox left{label_w, 110, label_w + panel_w, 110 + row_h * std::max<std::size_t>(methods.size(), 1)};
+  const PixelBox left{label_w, 110, label_w + panel_w,
+                      110 + row_h * std::max<std::size_t>(methods.size(), 1)};
   const PixelBox right{left.right + gap, left.top, left.right + gap + panel_w, left.bottom};
   method_labels(fig, left, methods, counts);
   char head[120];
@@ -189,11 +206,14 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   return img;
 }
 
-Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px, FigureLayout* layout_out) {
-  constexpr double kShownUpTo_m = 1.0;  // a few lost episodes tens of metres off must not squash the rest
+Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px,
+                              FigureLayout* layout_out) {
+  constexpr double kShownUpTo_m =
+      1.0;  // a few lost episodes tens of metres off must not squash the rest
   const std::vector<std::string> methods = methods_of(episodes);
   std::vector<std::vector<double>> worst(methods.size());
-  std::vector<std::size_t> counts(methods.size(), 0), not_ok(methods.size(), 0), beyond(methods.size(), 0);
+  std::vector<std::size_t> counts(methods.size(), 0), not_ok(methods.size(), 0),
+      beyond(methods.size(), 0);
   for (const auto& e : episodes) {
     if (e.localization_error_max_m < 0) continue;
     const std::size_t m = method_index(methods, e.method);
@@ -205,15 +225,19 @@ Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int w
   const double row_h = 60;
   const int height = static_cast<int>(130 + row_h * std::max<std::size_t>(methods.size(), 1) + 60);
   Figure fig(width_px, height);
-  fig.text("Localisation: each episode's worst error, true against estimated", 20, 28, 18, palette::kAxis, Anchor::kLeft,
-           true);
-  fig.text("one dot per episode, docked or not (spread vertically to be seen); errors past 1 m drawn at 1 m; "
-           "right: episodes whose estimator reported worse than ok",
-           20, 48, 13, palette::kAxis);
+  fig.text("Localisation: each episode's worst error, true against estimated", 20, 28, 18,
+           palette::kAxis, Anchor::kLeft, true);
+  fig.text(
+      "one dot per episode, docked or not (spread vertically to be seen); errors past 1 m drawn at "
+      "1 m; "
+      "right: episodes whose estimator reported worse than ok",
+      20, 48, 13, palette::kAxis);
   const double label_w = 260, right_w = 300;
-  const PixelBox box{label_w, 110, width_px - right_w, 110 + row_h * std::max<std::size_t>(methods.size(), 1)};
+  const PixelBox box{label_w, 110, width_px - right_w,
+                     110 + row_h * std::max<std::size_t>(methods.size(), 1)};
   method_labels(fig, box, methods, counts);
-  strip_panel(fig, box, methods, worst, 0.10, "Worst position error (red line: 10 cm)", "mm", 1000.0);
+  strip_panel(fig, box, methods, worst, 0.10, "Worst position error (red line: 10 cm)", "mm",
+              1000.0);
   for (std::size_t m = 0; m < methods.size(); ++m) {
     std::string note = std::to_string(not_ok[m]) + " of " + std::to_string(counts[m]) + " not ok";
     if (beyond[m]) note += ", " + std::to_string(beyond[m]) + " past 1 m";
@@ -225,7 +249,8 @@ Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int w
   return img;
 }
 
-Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px, FigureLayout* layout_out) {
+Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px,
+                            FigureLayout* layout_out) {
   const std::vector<std::string> methods = methods_of(episodes);
   std::vector<std::vector<double>> ratio(methods.size()), times(methods.size());
   std::vector<std::size_t> counts(methods.size(), 0);
@@ -243,9 +268,12 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   const double top = 110 + 19.0 * (legend_rows - 1);
   const int height = static_cast<int>(560 + top - 110);
   Figure fig(width_px, height);
-  fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
-  fig.text("left: share of episodes driving at most x times the exact optimum (to the staging pose, then the straight approach); right: time to dock", 20, 48, 13,
-           palette::kAxis);
+  fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft,
+           true);
+  fig.text(
+      "left: share of episodes driving at most x times the exact optimum (to the staging pose, "
+      "then the straight approach); right: time to dock",
+      20, 48, 13, palette::kAxis);
   const double half = (width_px - 120) / 2.0;
   const PixelBox left{80, top, 80 + half - 40, height - 60.0};
   double hi = 1.1;
@@ -269,7 +297,8 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
     c.pixel_polyline(steps, 2.2, method_colour(m));
     legend.push_back({method_colour(m), methods[m]});
   }
-  fig.text("ECDF of driven length over the optimum", left.left, left.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
+  fig.text("ECDF of driven length over the optimum", left.left, left.top - 10, 14, palette::kAxis,
+           Anchor::kLeft, true);
   const PixelBox right{80 + half + 180, top, width_px - 40.0, height - 60.0};
   method_labels(fig, right, methods, counts);
   double tmax = 1;
@@ -281,19 +310,21 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   c.pixel_line({right.left, right.bottom}, {right.left, right.top}, 1.0, palette::kAxis);
   for (std::size_t m = 0; m < methods.size(); ++m)
     for (std::size_t i = 0; i < times[m].size(); ++i) {
-      const double x = b.px(times[m][i]), y = right.top + (m + 0.5) * row_h + 0.3 * row_h * jitter(i);
+      const double x = b.px(times[m][i]),
+                   y = right.top + (m + 0.5) * row_h + 0.3 * row_h * jitter(i);
       c.pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
     }
   fig.text("Time to dock", right.left, right.top - 10, 14, palette::kAxis, Anchor::kLeft, true);
-  fig.legend(20, 76, legend, std::max(1, std::min(6, static_cast<int>(legend.size()))), (width_px - 40.0) / 6);
+  fig.legend(20, 76, legend, std::max(1, std::min(6, static_cast<int>(legend.size()))),
+             (width_px - 40.0) / 6);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;
 }
 
-Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
-                         const std::string& success_word,
-                         int width_px, int height_px, FigureLayout* layout_out) {
+Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths,
+                         const std::string& title, const std::string& success_word, int width_px,
+                         int height_px, FigureLayout* layout_out) {
   Figure fig(width_px, height_px);
   const double column = width_px - 230.0;
   const PixelTransform t = fig.world_panel(world.floor, {70, 76, column - 20, height_px - 50.0});
@@ -308,7 +339,8 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   auto chosen = [](const std::vector<const EpisodePath*>& all) {
     std::vector<const EpisodePath*> out;
     const std::size_t step = (all.size() + kMaxDrawn - 1) / kMaxDrawn;
-    for (std::size_t i = 0; i < all.size(); i += std::max<std::size_t>(step, 1)) out.push_back(all[i]);
+    for (std::size_t i = 0; i < all.size(); i += std::max<std::size_t>(step, 1))
+      out.push_back(all[i]);
     return out;
   };
   const std::vector<const EpisodePath*> ok_drawn = chosen(ok), bad_drawn = chosen(bad);
@@ -324,15 +356,16 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   draw_charger(c, world);
   fig.world_axes(world.floor, t);
   fig.text_fitted(title, 70, 26, 18, palette::kAxis, width_px - 90.0, true);
-  std::string sub = std::to_string(paths.size()) + " episodes: " + std::to_string(succeeded) + " " + success_word + ", " +
-                    std::to_string(failed) + " failed (drawn on top)";
+  std::string sub = std::to_string(paths.size()) + " episodes: " + std::to_string(succeeded) + " " +
+                    success_word + ", " + std::to_string(failed) + " failed (drawn on top)";
   if (ok_drawn.size() < ok.size() || bad_drawn.size() < bad.size())
-    sub += "; drawn: " + std::to_string(ok_drawn.size()) + " " + success_word + " and " + std::to_string(bad_drawn.size()) +
-           " failed, evenly chosen";
+    sub += "; drawn: " + std::to_string(ok_drawn.size()) + " " + success_word + " and " +
+           std::to_string(bad_drawn.size()) + " failed, evenly chosen";
   fig.text_fitted(sub, 70, 46, 13, palette::kAxis, width_px - 90.0);
   std::vector<LegendEntry> legend;
   if (obstacles) legend.push_back({palette::kObstacle, "obstacle"});
-  if (obstacles && world.planning_inflation_m() > 0) legend.push_back({palette::kInflation, "margin"});
+  if (obstacles && world.planning_inflation_m() > 0)
+    legend.push_back({palette::kInflation, "margin"});
   if (succeeded) legend.push_back({palette::kTrajectory, success_word});
   if (failed) legend.push_back({palette::kFailure, "failed"});
   if (!paths.empty()) legend.push_back({palette::kStart, "starts"});
@@ -343,12 +376,14 @@ Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePa
   return img;
 }
 
-Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values, const std::vector<RateRow>& rows,
-                       int width_px, FigureLayout* layout_out) {
+Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values,
+                       const std::vector<RateRow>& rows, int width_px, FigureLayout* layout_out) {
   const int height = 560;
   Figure fig(width_px, height);
-  fig.text_fitted("Success against " + parameter, 20, 28, 18, palette::kAxis, width_px - 40.0, true);
-  fig.text("every value's success rate, its Wilson 95 % band and the gate", 20, 48, 13, palette::kAxis);
+  fig.text_fitted("Success against " + parameter, 20, 28, 18, palette::kAxis, width_px - 40.0,
+                  true);
+  fig.text("every value's success rate, its Wilson 95 % band and the gate", 20, 48, 13,
+           palette::kAxis);
   const PixelBox box{90, 110, width_px - 40.0, height - 70.0};
   double lo = values.empty() ? 0 : *std::min_element(values.begin(), values.end());
   double hi = values.empty() ? 1 : *std::max_element(values.begin(), values.end());
@@ -361,7 +396,8 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
     const double x0 = a.px(values[i]), x1 = a.px(values[i + 1]);
     for (double x = x0; x < x1; x += 1.0) {
       const double f = (x - x0) / (x1 - x0);
-      const double l = rows[i].low + f * (rows[i + 1].low - rows[i].low), h = rows[i].high + f * (rows[i + 1].high - rows[i].high);
+      const double l = rows[i].low + f * (rows[i + 1].low - rows[i].low),
+                   h = rows[i].high + f * (rows[i + 1].high - rows[i].high);
       c.pixel_line({x + 0.5, a.py(l)}, {x + 0.5, a.py(h)}, 1.0, kBand);
     }
   }
@@ -370,13 +406,15 @@ Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& 
   std::vector<Vec2> line;
   double gate = -1;
   for (std::size_t i = 0; i < values.size() && i < rows.size(); ++i) {
-    const double rate = rows[i].episodes ? static_cast<double>(rows[i].successes) / rows[i].episodes : 0.0;
+    const double rate =
+        rows[i].episodes ? static_cast<double>(rows[i].successes) / rows[i].episodes : 0.0;
     line.push_back({a.px(values[i]), a.py(rate)});
     gate = std::max(gate, rows[i].gate);
   }
   c.pixel_polyline(line, 2.2, palette::kOkabeBlue);
   for (const Vec2& p : line) c.pixel_line({p.x - 3, p.y}, {p.x + 3, p.y}, 6.0, palette::kOkabeBlue);
-  std::vector<LegendEntry> legend = {{palette::kOkabeBlue, "success rate"}, {kBand, "Wilson 95 % band"}};
+  std::vector<LegendEntry> legend = {{palette::kOkabeBlue, "success rate"},
+                                     {kBand, "Wilson 95 % band"}};
   if (gate >= 0) {
     c.pixel_line({box.left, a.py(gate)}, {box.right, a.py(gate)}, 2.0, palette::kCollisionMark);
     legend.push_back({palette::kCollisionMark, "gate"});

@@ -22,7 +22,7 @@ struct RateRow {
 
 /// One episode, as the charts need it.
 struct EpisodeOutcome {
-  std::string method;            ///< planner / controller: the strip, ECDF line and time row it joins
+  std::string method;  ///< planner / controller: the strip, ECDF line and time row it joins
   bool docked = false;
   double position_error_m = 0;
   double heading_error_deg = 0;
@@ -44,11 +44,11 @@ struct DockingGates {
 };
 
 /// Horizontal bars of the success rate, whiskers for the interval, a tick at the gate.
-Image draw_success_chart(const std::vector<RateRow>& rows, const std::string& title, int width_px = 1400,
-                         FigureLayout* layout = nullptr);
+Image draw_success_chart(const std::vector<RateRow>& rows, const std::string& title,
+                         int width_px = 1400, FigureLayout* layout = nullptr);
 /// Position and heading errors of docked episodes, one strip per method, gates as lines.
-Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates, int width_px = 1400,
-                        FigureLayout* layout = nullptr);
+Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const DockingGates& gates,
+                        int width_px = 1400, FigureLayout* layout = nullptr);
 /// Localisation per method: each episode's worst position error (docked or not) against the 10 cm
 /// line `ok` must never stand beside, and how many episodes' estimator reported worse than `ok`.
 Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
@@ -59,11 +59,12 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
 /// Every episode's driven path over the world, those that succeeded thin in blue (named
 /// `success_word`: "docked", or "caught" in a pursuit), failed ones on top in vermillion, with
 /// their starts and the charger.
-Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths, const std::string& title,
-                         const std::string& success_word = "docked", int width_px = 1400, int height_px = 900,
-                         FigureLayout* layout = nullptr);
+Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths,
+                         const std::string& title, const std::string& success_word = "docked",
+                         int width_px = 1400, int height_px = 900, FigureLayout* layout = nullptr);
 /// Success rate against the swept parameter's values (rows in increasing order), with the band.
-Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values, const std::vector<RateRow>& rows,
-                       int width_px = 1000, FigureLayout* layout = nullptr);
+Image draw_sweep_chart(const std::string& parameter, const std::vector<double>& values,
+                       const std::vector<RateRow>& rows, int width_px = 1000,
+                       FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

@@ -15,7 +15,10 @@ Rgb cividis(double t) {
   t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 5.0;
   const int i = std::min(static_cast<int>(t), 4);
   const double f = t - i;
-  auto mix = [&](int c) { return static_cast<std::uint8_t>(std::lround(kPoints[i][c] + f * (kPoints[i + 1][c] - kPoints[i][c]))); };
+  auto mix = [&](int c) {
+    return static_cast<std::uint8_t>(
+        std::lround(kPoints[i][c] + f * (kPoints[i + 1][c] - kPoints[i][c])));
+  };
   return {mix(0), mix(1), mix(2)};
 }
 
@@ -30,7 +33,8 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
       step = m * mag;
       break;
     }
-  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+    out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
   return out;
 }
 

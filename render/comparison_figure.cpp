@@ -18,24 +18,28 @@ using planner::PlanStats;
 std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
   const PlanStats &x = a.run.plan_stats, &y = b.run.plan_stats;
   // Only two different graph planners: two ways of travelling on one plan share its numbers.
-  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty() || a.run.planner == b.run.planner ||
-      searches_a_mesh(a.run.planner) || searches_a_mesh(b.run.planner))  // cells and portals are no vertices and edges
+  if (x.vertices <= 0 || y.vertices <= 0 || a.run.plan.empty() || b.run.plan.empty() ||
+      a.run.planner == b.run.planner || searches_a_mesh(a.run.planner) ||
+      searches_a_mesh(b.run.planner))  // cells and portals are no vertices and edges
     return "";
   const double la = a.run.path_length_m, lb = b.run.path_length_m;
   const double ta = x.build_ms + x.query_ms, tb = y.build_ms + y.query_ms;
   char line[512];
-  std::snprintf(line, sizeof line,
-                "%s vs %s: path %.2f vs %.2f m (%s); vertices %lld vs %lld; edges evaluated %lld vs %lld; "
-                "segment tests %lld vs %lld; plan time %.2f vs %.2f ms",
-                a.label.c_str(), b.label.c_str(), la, lb, std::fabs(la - lb) < 5e-3 ? "the same length" : "lengths differ",
-                static_cast<long long>(x.vertices), static_cast<long long>(y.vertices), static_cast<long long>(x.edges),
-                static_cast<long long>(y.edges), static_cast<long long>(x.segment_tests),
-                static_cast<long long>(y.segment_tests), ta, tb);
+  std::snprintf(
+      line, sizeof line,
+      "%s vs %s: path %.2f vs %.2f m (%s); vertices %lld vs %lld; edges evaluated %lld vs %lld; "
+      "segment tests %lld vs %lld; plan time %.2f vs %.2f ms",
+      a.label.c_str(), b.label.c_str(), la, lb,
+      std::fabs(la - lb) < 5e-3 ? "the same length" : "lengths differ",
+      static_cast<long long>(x.vertices), static_cast<long long>(y.vertices),
+      static_cast<long long>(x.edges), static_cast<long long>(y.edges),
+      static_cast<long long>(x.segment_tests), static_cast<long long>(y.segment_tests), ta, tb);
   return line;
 }
 
-Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
-                      int width_px, int panel_height_px, FigureLayout* layout_out) {
+Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels,
+                      const std::string& title, int width_px, int panel_height_px,
+                      FigureLayout* layout_out) {
   const int columns = panels.size() == 4 ? 2 : 3;
   PanelGrid grid = panel_grid(panels.size(), columns, width_px, panel_height_px);
   // Two graph planners side by side (the document's Fig. 5 and Fig. 6): say under the title
@@ -45,11 +49,13 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
   grid.top_px = differences.empty() ? 110 : 126;
   Figure fig(width_px, grid.height_px());
   fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
-  if (!differences.empty()) fig.text_fitted(differences, 20, 54, 13, palette::kAxis, width_px - 40.0);
+  if (!differences.empty())
+    fig.text_fitted(differences, 20, 54, 13, palette::kAxis, width_px - 40.0);
   const double cell_w = grid.panel_width_px;
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
-    const bool known = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.label == label; });
+    const bool known = std::any_of(legend.begin(), legend.end(),
+                                   [&](const LegendEntry& e) { return e.label == label; });
     if (drawn && !known) legend.push_back({colour, label});
   };
   bool drove_any = false;
@@ -66,7 +72,8 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
            shape == MarginShape::kRound ? "rounded margin" : "planning margin");
-    listed(draw_graph(c, p.graph_edges), palette::kGraph, searches_a_mesh(p.run.planner) ? "mesh portals" : "graph");
+    listed(draw_graph(c, p.graph_edges), palette::kGraph,
+           searches_a_mesh(p.run.planner) ? "mesh portals" : "graph");
     for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
     if (p.drove) {
       listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving, "moving (swept)");
@@ -81,40 +88,49 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
         if (e.kind == sim::EpisodeResult::Event::Kind::kCollision) collisions.push_back(e);
       draw_events(c, collisions);
       listed(!collisions.empty(), palette::kCollisionMark, "collision");
-      if (!p.run.trajectory.empty()) draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot, 2.0);
+      if (!p.run.trajectory.empty())
+        draw_footprint(c, world.robot, p.run.trajectory.back().truth, palette::kRobot, 2.0);
       listed(!p.run.trajectory.empty(), palette::kRobot, "robot at the end");
     }
-    listed(draw_plan(c, p.run.plan, palette::kPlan), palette::kPlan, p.run.travel == "path" ? "plan" : "plan (reference)");
+    listed(draw_plan(c, p.run.plan, palette::kPlan), palette::kPlan,
+           p.run.travel == "path" ? "plan" : "plan (reference)");
     draw_start(c, world);
     draw_charger(c, world);
-    for (const LegendEntry& e : draw_plan_marks(fig, t, p.run.marks)) listed(true, e.colour, e.label);
+    for (const LegendEntry& e : draw_plan_marks(fig, t, p.run.marks))
+      listed(true, e.colour, e.label);
     fig.world_axes(world.floor, t);
     char line1[256], line2[256];
     if (p.run.travel == "path")
-      std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(), p.run.path_length_m,
-                    p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
+      std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(),
+                    p.run.path_length_m, p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
     else  // no plan of its own: the drawn plan is the reference
-      std::snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)", p.label.c_str(),
-                    p.run.driven_length_m, p.run.path_length_m);
+      std::snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)",
+                    p.label.c_str(), p.run.driven_length_m, p.run.path_length_m);
     const PlanStats& st = p.run.plan_stats;
     std::string structure;  // what the planner searched, in its own terms
     if (searches_a_mesh(p.run.planner))
-      structure = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals, " +
-                  std::to_string(st.expanded) + " intervals expanded";
+      structure = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) +
+                  " portals, " + std::to_string(st.expanded) + " intervals expanded";
     else if (p.run.planner.rfind("grid", 0) == 0)
-      structure = std::to_string(st.vertices) + " free cells, " + std::to_string(st.expanded) + " expanded";
+      structure =
+          std::to_string(st.vertices) + " free cells, " + std::to_string(st.expanded) + " expanded";
     else if (st.vertices > 0 && !p.graph_edges.empty())
-      structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(p.graph_edges.size()) +
-                  " edges drawn, " + std::to_string(st.edges) + " evaluated by the search";
+      structure = "graph " + std::to_string(st.vertices) + " vertices, " +
+                  std::to_string(p.graph_edges.size()) + " edges drawn, " +
+                  std::to_string(st.edges) + " evaluated by the search";
     else if (st.vertices > 0)
-      structure = "graph " + std::to_string(st.vertices) + " vertices, " + std::to_string(st.edges) + " edges evaluated";
+      structure = "graph " + std::to_string(st.vertices) + " vertices, " +
+                  std::to_string(st.edges) + " edges evaluated";
     else
       structure = "no graph (works on the obstacles directly)";
-    if (st.segment_tests > 0) structure += ", " + std::to_string(st.segment_tests) + " segment tests";
-    std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms, structure.c_str());
+    if (st.segment_tests > 0)
+      structure += ", " + std::to_string(st.segment_tests) + " segment tests";
+    std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms,
+                  structure.c_str());
     fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
     fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
-    fig.text_fitted(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
+    fig.text_fitted(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12,
+                    palette::kAxis, cell_w - 80);
   }
   listed(true, palette::kStart, "start");
   listed(true, palette::kCharger, "charger");
@@ -123,8 +139,11 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
   const int fitting = std::max(1, static_cast<int>(legend_width / 150.0));
   const int legend_rows = legend.size() > static_cast<std::size_t>(fitting) ? 2 : 1;
   const int legend_columns = static_cast<int>((legend.size() + legend_rows - 1) / legend_rows);
-  fig.legend(20, legend_y, legend, legend_columns, std::min(150.0, legend_width / std::max(1, legend_columns)));
-  if (drove_any) fig.colour_bar({width_px - 260.0, 78, width_px - 30.0, 88}, 0.0, world.robot.max_speed_mps, "speed (m/s)");
+  fig.legend(20, legend_y, legend, legend_columns,
+             std::min(150.0, legend_width / std::max(1, legend_columns)));
+  if (drove_any)
+    fig.colour_bar({width_px - 260.0, 78, width_px - 30.0, 88}, 0.0, world.robot.max_speed_mps,
+                   "speed (m/s)");
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

@@ -23,7 +23,8 @@ struct ComparisonPanel {
 /// vertices ...; edges evaluated ...; segment tests ...; plan time ..."; empty otherwise.
 std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b);
 
-Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels, const std::string& title,
-                      int width_px = 1800, int panel_height_px = 640, FigureLayout* layout = nullptr);
+Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPanel>& panels,
+                      const std::string& title, int width_px = 1800, int panel_height_px = 640,
+                      FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

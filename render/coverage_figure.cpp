@@ -11,7 +11,7 @@
 namespace plantsim::render {
 namespace {
 
-constexpr Rgb kCoveredOnce{190, 225, 245};   // tints of Okabe-Ito sky blue, orange, reddish purple
+constexpr Rgb kCoveredOnce{190, 225, 245};  // tints of Okabe-Ito sky blue, orange, reddish purple
 constexpr Rgb kCoveredTwice{245, 205, 120};
 constexpr Rgb kCoveredMore{215, 140, 185};
 constexpr Rgb kBlocked{180, 180, 185};
@@ -25,27 +25,34 @@ std::string describe_order(const planner::CoveragePlan& p) {
   char line[256];
   if (!p.ok) return p.failure;
   if (p.regions.empty()) {
-    std::snprintf(line, sizeof line, "cell by cell (no sub-regions); %d reachable cells", p.metrics.reachable_cells);
+    std::snprintf(line, sizeof line, "cell by cell (no sub-regions); %d reachable cells",
+                  p.metrics.reachable_cells);
     return line;
   }
-  std::snprintf(line, sizeof line, "%d sub-regions, order cost %.2f (greedy %.2f)", static_cast<int>(p.regions.size()),
-                p.order_cost, p.greedy_cost);
+  std::snprintf(line, sizeof line, "%d sub-regions, order cost %.2f (greedy %.2f)",
+                static_cast<int>(p.regions.size()), p.order_cost, p.greedy_cost);
   std::string s = line;
   if (p.network_restarts > 0) {
-    std::snprintf(line, sizeof line, "; valid order in %d of %d restarts", p.network_valid, p.network_restarts);
+    std::snprintf(line, sizeof line, "; valid order in %d of %d restarts", p.network_valid,
+                  p.network_restarts);
     s += line;
   }
   if (p.exact) {
-    if (!p.exact->searched) std::snprintf(line, sizeof line, "; NOT searched: the search handles at most 63 regions");
-    else if (p.exact->proven) std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
-    else std::snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)", p.exact->seconds, p.exact->lower_bound);
+    if (!p.exact->searched)
+      std::snprintf(line, sizeof line, "; NOT searched: the search handles at most 63 regions");
+    else if (p.exact->proven)
+      std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
+    else
+      std::snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)",
+                    p.exact->seconds, p.exact->lower_bound);
     s += line;
   }
   return s;
 }
 
-Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    const std::string& subtitle, int width_px, int panel_height_px, FigureLayout* layout_out) {
+Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels,
+                    const std::string& title, const std::string& subtitle, int width_px,
+                    int panel_height_px, FigureLayout* layout_out) {
   PanelGrid grid = panel_grid(panels.size(), 2, width_px, panel_height_px);
   // Room under the title and its subtitle for a legend of up to 12 entries in at most two rows.
   const int legend_columns = std::max(1, std::min(6, (width_px - 40) / 170));
@@ -53,7 +60,8 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
   Figure fig(width_px, grid.height_px());
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
-    const bool known = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) { return e.label == label; });
+    const bool known = std::any_of(legend.begin(), legend.end(),
+                                   [&](const LegendEntry& e) { return e.label == label; });
     if (drawn && !known) legend.push_back({colour, label});
   };
   fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
@@ -73,10 +81,14 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
       for (int col = 0; col < g.columns(); ++col) {
         const planner::Cell cell{col, r};
         const int v = visits[g.index(cell)];
-        if (!g.free(cell)) c.fill_rect(g.cell_rect(cell), kBlocked);
-        else if (v == 1) c.fill_rect(g.cell_rect(cell), kCoveredOnce);
-        else if (v == 2) c.fill_rect(g.cell_rect(cell), kCoveredTwice);
-        else if (v > 2) c.fill_rect(g.cell_rect(cell), kCoveredMore);
+        if (!g.free(cell))
+          c.fill_rect(g.cell_rect(cell), kBlocked);
+        else if (v == 1)
+          c.fill_rect(g.cell_rect(cell), kCoveredOnce);
+        else if (v == 2)
+          c.fill_rect(g.cell_rect(cell), kCoveredTwice);
+        else if (v > 2)
+          c.fill_rect(g.cell_rect(cell), kCoveredMore);
         listed(!g.free(cell), kBlocked, "blocked cell");
         listed(g.free(cell) && v == 1, kCoveredOnce, "covered once");
         listed(g.free(cell) && v == 2, kCoveredTwice, "covered twice");
@@ -86,16 +98,22 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "margin");
     for (const planner::CellRect& r : p.plan.regions) {
-      const geom::Rect a = g.cell_rect({r.column, r.row}), b = g.cell_rect({r.column + r.width - 1, r.row + r.height - 1});
-      c.polyline({{a.xmin, a.ymin}, {b.xmax, a.ymin}, {b.xmax, b.ymax}, {a.xmin, b.ymax}, {a.xmin, a.ymin}}, 2.0,
-                 kRegionOutline);
+      const geom::Rect a = g.cell_rect({r.column, r.row}),
+                       b = g.cell_rect({r.column + r.width - 1, r.row + r.height - 1});
+      c.polyline({{a.xmin, a.ymin},
+                  {b.xmax, a.ymin},
+                  {b.xmax, b.ymax},
+                  {a.xmin, b.ymax},
+                  {a.xmin, a.ymin}},
+                 2.0, kRegionOutline);
     }
     listed(!p.plan.regions.empty(), kRegionOutline, "sub-region, order");
     // Where each sweep starts: its lanes run from there.
     bool sweep_starts = false;
     for (const planner::Cell& first : p.plan.sweep_starts) {
       c.fill_disk(g.centre(first), 0.18 * g.cell_m(), kSweepStart);
-      c.ring(g.centre(first), 0.18 * g.cell_m(), 1.0, kCoveragePath);  // yellow needs an edge on pale tints
+      c.ring(g.centre(first), 0.18 * g.cell_m(), 1.0,
+             kCoveragePath);  // yellow needs an edge on pale tints
       sweep_starts = true;
     }
     listed(sweep_starts, kSweepStart, "sweep start");
@@ -111,20 +129,25 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     // The visiting order, numbered at each sub-region's centre.
     for (std::size_t k = 0; k < p.plan.order.size(); ++k) {
       const planner::CellRect& r = p.plan.regions[p.plan.order[k]];
-      const Vec2 centre = 0.5 * (g.centre({r.column, r.row}) + g.centre({r.column + r.width - 1, r.row + r.height - 1}));
+      const Vec2 centre = 0.5 * (g.centre({r.column, r.row}) +
+                                 g.centre({r.column + r.width - 1, r.row + r.height - 1}));
       const Vec2 px = t.to_pixel(centre);
       fig.text(std::to_string(k + 1), px.x, px.y + 6, 15, kRegionOutline, Anchor::kCenter, true);
     }
     const planner::CoverageMetrics& m = p.plan.metrics;
     char line1[256];
     if (p.plan.ok)
-      std::snprintf(line1, sizeof line1, "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
-                    p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends, m.length_m);
+      std::snprintf(line1, sizeof line1,
+                    "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
+                    p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends,
+                    m.length_m);
     else
       std::snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
-    fig.text_fitted(line1, x0 + 60, y0 + 20, 15, p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
+    fig.text_fitted(line1, x0 + 60, y0 + 20, 15,
+                    p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
     fig.text_fitted(describe_order(p.plan), x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
-    if (!p.extra.empty()) fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
+    if (!p.extra.empty())
+      fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
   }
   listed(true, palette::kStart, "start");
   listed(true, palette::kCharger, "charger");

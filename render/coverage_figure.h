@@ -17,8 +17,8 @@ struct CoveragePanel {
   std::string label;
   const planner::CoverageGrid* grid = nullptr;
   planner::CoveragePlan plan;
-  std::vector<Vec2> driven;   ///< the robot's trajectory, when the plan was driven
-  std::string extra;          ///< one more line of text (e.g. driven coverage)
+  std::vector<Vec2> driven;  ///< the robot's trajectory, when the plan was driven
+  std::string extra;         ///< one more line of text (e.g. driven coverage)
 };
 
 /// How a plan's order was found, in a line: sub-regions, order cost and the greedy one, the
@@ -26,8 +26,8 @@ struct CoveragePanel {
 std::string describe_order(const planner::CoveragePlan& plan);
 
 /// `subtitle`: a line under the title (the document's numbers beside these).
-Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels, const std::string& title,
-                    const std::string& subtitle, int width_px = 1600, int panel_height_px = 560,
-                    FigureLayout* layout = nullptr);
+Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels,
+                    const std::string& title, const std::string& subtitle, int width_px = 1600,
+                    int panel_height_px = 560, FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

@@ -8,7 +8,8 @@
 namespace plantsim::render {
 
 Image draw_coverage_study(const std::vector<StudyShare>& shares, const std::string& title,
-                          const std::vector<std::string>& verdict_lines, int width_px, FigureLayout* layout_out) {
+                          const std::vector<std::string>& verdict_lines, int width_px,
+                          FigureLayout* layout_out) {
   const int lines_px = 20 * static_cast<int>(verdict_lines.size());
   const int header_px = 50 + lines_px + 40, row_px = 330;
   Figure fig(width_px, header_px + row_px * static_cast<int>(shares.size()));
@@ -43,10 +44,11 @@ Image draw_coverage_study(const std::vector<StudyShare>& shares, const std::stri
       o.x_label = "map";
       o.legend = false;
       char plot_title[96];
-      std::snprintf(plot_title, sizeof plot_title, "%.0f %% of cells blocked: %s", 100 * s.blocked_share,
-                    measures[k].name);
+      std::snprintf(plot_title, sizeof plot_title, "%.0f %% of cells blocked: %s",
+                    100 * s.blocked_share, measures[k].name);
       const double left = 20 + plot_w * k + 55;
-      fig.plot({left, top + 40, left + plot_w - 75, top + row_px - 50}, series, plot_title, measures[k].unit, o);
+      fig.plot({left, top + 40, left + plot_w - 75, top + row_px - 50}, series, plot_title,
+               measures[k].unit, o);
     }
   }
   Image img = fig.finish();

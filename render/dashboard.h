@@ -10,23 +10,25 @@
 namespace plantsim::render {
 
 struct DashboardRun {
-  std::string folder;                 ///< relative to the dashboard
+  std::string folder;  ///< relative to the dashboard
   std::string world, setting, status;
   bool succeeded = false;
-  std::vector<std::string> cells;     ///< the metric cells, in the order of the headers
-  std::vector<std::string> figures;   ///< figure files inside the folder (the first is the thumbnail)
+  std::vector<std::string> cells;  ///< the metric cells, in the order of the headers
+  std::vector<std::string>
+      figures;  ///< figure files inside the folder (the first is the thumbnail)
 };
 
 struct DashboardLink {
-  std::string kind;                   ///< "comparison", "batch", "coverage", "chart", "report"
+  std::string kind;  ///< "comparison", "batch", "coverage", "chart", "report"
   std::string title;
-  std::string report;                 ///< relative to the dashboard
-  std::string thumbnail;              ///< relative to the dashboard, may be empty
-  std::string line;                   ///< one line said about it (from its files)
-  std::string verdict;                ///< a batch's: "passed", "failed" or "not gated" (summary.json)
+  std::string report;     ///< relative to the dashboard
+  std::string thumbnail;  ///< relative to the dashboard, may be empty
+  std::string line;       ///< one line said about it (from its files)
+  std::string verdict;    ///< a batch's: "passed", "failed" or "not gated" (summary.json)
 };
 
 std::string dashboard_html(const std::string& title, const std::vector<std::string>& metric_headers,
-                           const std::vector<DashboardRun>& runs, const std::vector<DashboardLink>& links);
+                           const std::vector<DashboardRun>& runs,
+                           const std::vector<DashboardLink>& links);
 
 }  // namespace plantsim::render

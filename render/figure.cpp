@@ -20,7 +20,6 @@ PanelGrid panel_grid(std::size_t panels, int max_columns, int width_px, int pane
   return g;
 }
 
-
 TextRenderer& shared_text_renderer() {
   static TextRenderer renderer;
   return renderer;
@@ -34,7 +33,8 @@ bool overlaps(const TextBox& a, const TextBox& b) {
   return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
-void Figure::text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor, bool bold) {
+void Figure::text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
+                  Anchor anchor, bool bold) {
   texts_.push_back({s, x, baseline_y, size_px, colour, anchor, bold});
 }
 
@@ -48,24 +48,27 @@ std::string Figure::fit(const std::string& s, int size_px, double max_width_px, 
   std::string fitted = s;
   while (!fitted.empty() && width(fitted + "...") > max_width_px) {
     fitted.pop_back();
-    while (!fitted.empty() && (static_cast<unsigned char>(fitted.back()) & 0xC0) == 0x80) fitted.pop_back();  // whole characters
+    while (!fitted.empty() && (static_cast<unsigned char>(fitted.back()) & 0xC0) == 0x80)
+      fitted.pop_back();  // whole characters
     if (!fitted.empty() && static_cast<unsigned char>(fitted.back()) >= 0xC0) fitted.pop_back();
   }
   return fitted + "...";
 }
 
-void Figure::text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
-                         bool bold) {
+void Figure::text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
+                         double max_width_px, bool bold) {
   text(fit(s, size_px, max_width_px, bold), x, baseline_y, size_px, colour, Anchor::kLeft, bold);
 }
 
-bool Figure::text_if_free(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor) {
+bool Figure::text_if_free(const std::string& s, double x, double baseline_y, int size_px,
+                          Rgb colour, Anchor anchor) {
   TextRenderer& tr = shared_text_renderer();
-  const TextBox box = tr.measure(s, static_cast<int>(std::lround(x)), static_cast<int>(std::lround(baseline_y)), size_px, anchor);
+  const TextBox box = tr.measure(s, static_cast<int>(std::lround(x)),
+                                 static_cast<int>(std::lround(baseline_y)), size_px, anchor);
   if (box.x0 < 0 || box.y0 < 0 || box.x1 > width() || box.y1 > height()) return false;
   for (const QueuedText& q : texts_) {
-    const TextBox other = tr.measure(q.s, static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)), q.size,
-                                     q.anchor, q.bold);
+    const TextBox other = tr.measure(q.s, static_cast<int>(std::lround(q.x)),
+                                     static_cast<int>(std::lround(q.y)), q.size, q.anchor, q.bold);
     if (overlaps(box, other)) return false;
   }
   text(s, x, baseline_y, size_px, colour, anchor);
@@ -73,8 +76,8 @@ bool Figure::text_if_free(const std::string& s, double x, double baseline_y, int
 }
 
 PixelTransform Figure::world_panel(const geom::Rect& view, const PixelBox& box) {
-  const PixelTransform t =
-      PixelTransform::fit(view, box.left, height() - box.bottom, box.right, height() - box.top, height());
+  const PixelTransform t = PixelTransform::fit(view, box.left, height() - box.bottom, box.right,
+                                               height() - box.top, height());
   canvas_.set_transform(t);
   return t;
 }
@@ -89,8 +92,10 @@ void Figure::world_axes(const geom::Rect& view, const PixelTransform& t) {
   const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
   const int target_x = std::max(2, static_cast<int>((hi.x - lo.x) / 90));
   const int target_y = std::max(2, static_cast<int>((lo.y - hi.y) / 70));
-  const auto xs = nice_ticks(view.xmin, view.xmax, target_x), ys = nice_ticks(view.ymin, view.ymax, target_y);
-  const double xstep = xs.size() > 1 ? xs[1] - xs[0] : 1.0, ystep = ys.size() > 1 ? ys[1] - ys[0] : 1.0;
+  const auto xs = nice_ticks(view.xmin, view.xmax, target_x),
+             ys = nice_ticks(view.ymin, view.ymax, target_y);
+  const double xstep = xs.size() > 1 ? xs[1] - xs[0] : 1.0,
+               ystep = ys.size() > 1 ? ys[1] - ys[0] : 1.0;
   canvas_.pixel_line({lo.x, lo.y}, {hi.x, lo.y}, 1.0, palette::kAxis);
   canvas_.pixel_line({lo.x, lo.y}, {lo.x, hi.y}, 1.0, palette::kAxis);
   for (double x : xs) {
@@ -110,9 +115,10 @@ void Figure::world_axes(const geom::Rect& view, const PixelTransform& t) {
 void Figure::colour_bar(const PixelBox& box, double lo, double hi, const std::string& label) {
   const int steps = 64;
   for (int i = 0; i < steps; ++i) {
-    const double x0 = box.left + box.width() * i / steps, x1 = box.left + box.width() * (i + 1) / steps;
-    canvas_.pixel_line({x0, 0.5 * (box.top + box.bottom)}, {x1, 0.5 * (box.top + box.bottom)}, box.height(),
-                       cividis((i + 0.5) / steps));
+    const double x0 = box.left + box.width() * i / steps,
+                 x1 = box.left + box.width() * (i + 1) / steps;
+    canvas_.pixel_line({x0, 0.5 * (box.top + box.bottom)}, {x1, 0.5 * (box.top + box.bottom)},
+                       box.height(), cividis((i + 0.5) / steps));
   }
   const auto ticks = nice_ticks(lo, hi, 4);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
@@ -132,7 +138,8 @@ void Figure::draw_swatch(double x, double y, const LegendEntry& e) {
       canvas_.pixel_line({x, y}, {x + 22, y}, 5.0, c);
       break;
     case Swatch::kDashed:
-      for (double a = x; a < x + 22; a += 8) canvas_.pixel_line({a, y}, {std::min(a + 5, x + 22), y}, 2.5, c);
+      for (double a = x; a < x + 22; a += 8)
+        canvas_.pixel_line({a, y}, {std::min(a + 5, x + 22), y}, 2.5, c);
       break;
     case Swatch::kRing: {
       std::vector<Vec2> circle;
@@ -145,7 +152,9 @@ void Figure::draw_swatch(double x, double y, const LegendEntry& e) {
       canvas_.pixel_line({x + 7, y}, {x + 15, y}, 8.0, c);
       break;
     case Swatch::kOutline:
-      canvas_.pixel_polyline({{x + 3, y - 6}, {x + 19, y - 6}, {x + 19, y + 6}, {x + 3, y + 6}, {x + 3, y - 6}}, 1.8, c);
+      canvas_.pixel_polyline(
+          {{x + 3, y - 6}, {x + 19, y - 6}, {x + 19, y + 6}, {x + 3, y + 6}, {x + 3, y - 6}}, 1.8,
+          c);
       break;
   }
 }
@@ -161,7 +170,8 @@ PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entr
     text(fit(entries[i].label, 13, column_width_px - 34), cx + 28, row + 1, 13, palette::kAxis);
     layout_.legend.push_back(entries[i]);
   }
-  const PixelBox box{x, y - 12, x + column_width_px * columns, y + 19.0 * static_cast<double>(rows)};
+  const PixelBox box{x, y - 12, x + column_width_px * columns,
+                     y + 19.0 * static_cast<double>(rows)};
   layout_.legend_boxes.push_back(box);
   return box;
 }
@@ -187,11 +197,15 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
   const double pad = 0.05 * (ymax - ymin);
   ymax += pad;
   auto px = [&](double x, double y) {
-    return Vec2{box.left + box.width() * (x - xmin) / (xmax - xmin), box.bottom - box.height() * (y - ymin) / (ymax - ymin)};
+    return Vec2{box.left + box.width() * (x - xmin) / (xmax - xmin),
+                box.bottom - box.height() * (y - ymin) / (ymax - ymin)};
   };
   for (const Band& b : options.bands) {
-    const double x0 = px(std::clamp(b.x0, xmin, xmax), ymin).x, x1 = px(std::clamp(b.x1, xmin, xmax), ymin).x;
-    if (x1 > x0) canvas_.pixel_line({0.5 * (x0 + x1), box.top}, {0.5 * (x0 + x1), box.bottom}, x1 - x0, b.colour);
+    const double x0 = px(std::clamp(b.x0, xmin, xmax), ymin).x,
+                 x1 = px(std::clamp(b.x1, xmin, xmax), ymin).x;
+    if (x1 > x0)
+      canvas_.pixel_line({0.5 * (x0 + x1), box.top}, {0.5 * (x0 + x1), box.bottom}, x1 - x0,
+                         b.colour);
   }
   canvas_.pixel_line({box.left, box.top}, {box.right, box.top}, 1.0, palette::kGrid);
   for (double y : nice_ticks(ymin, ymax, 4)) {
@@ -207,7 +221,8 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
   canvas_.pixel_line({box.left, box.bottom}, {box.right, box.bottom}, 1.0, palette::kAxis);
   canvas_.pixel_line({box.left, box.bottom}, {box.left, box.top}, 1.0, palette::kAxis);
   const auto xs = nice_ticks(xmin, xmax, 8), ys = nice_ticks(ymin, ymax, 4);
-  const double xstep = xs.size() > 1 ? xs[1] - xs[0] : 1.0, ystep = ys.size() > 1 ? ys[1] - ys[0] : 1.0;
+  const double xstep = xs.size() > 1 ? xs[1] - xs[0] : 1.0,
+               ystep = ys.size() > 1 ? ys[1] - ys[0] : 1.0;
   for (double x : xs) {
     const Vec2 p = px(x, ymin);
     canvas_.pixel_line({p.x, box.bottom}, {p.x, box.bottom + 4}, 1.0, palette::kAxis);
@@ -218,12 +233,14 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
     canvas_.pixel_line({box.left - 4, p.y}, {box.left, p.y}, 1.0, palette::kAxis);
     text(tick_label(y, ystep), box.left - 7, p.y + 4, 12, palette::kAxis, Anchor::kRight);
   }
-  text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14, palette::kAxis, Anchor::kLeft,
-       true);
+  text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14,
+       palette::kAxis, Anchor::kLeft, true);
   if (!options.x_label.empty())
-    text(options.x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis, Anchor::kCenter);
+    text(options.x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis,
+         Anchor::kCenter);
   if (empty && !options.note.empty())
-    text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13, palette::kAxis, Anchor::kCenter);
+    text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13,
+         palette::kAxis, Anchor::kCenter);
   if (options.legend) {
     // Entries right-aligned along the top edge, above the plot, last one at the right.
     std::vector<LegendEntry> entries;
@@ -254,8 +271,9 @@ Image Figure::finish() {
   TextRenderer& tr = shared_text_renderer();
   for (const QueuedText& q : texts_) {
     layout_.texts.push_back(q.s);
-    layout_.text_boxes.push_back(tr.draw(img, q.s, static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)),
-                                         q.size, q.colour, q.anchor, q.bold));
+    layout_.text_boxes.push_back(tr.draw(img, q.s, static_cast<int>(std::lround(q.x)),
+                                         static_cast<int>(std::lround(q.y)), q.size, q.colour,
+                                         q.anchor, q.bold));
   }
   texts_.clear();
   return img;

@@ -52,7 +52,8 @@ struct PanelGrid {
   int height_px() const { return top_px + rows * panel_height_px; }
   /// Top-left corner of panel i, in pixels.
   Vec2 corner(std::size_t i) const {
-    return {panel_width_px * static_cast<double>(i % columns), top_px + panel_height_px * static_cast<double>(i / columns)};
+    return {panel_width_px * static_cast<double>(i % columns),
+            top_px + panel_height_px * static_cast<double>(i / columns)};
   }
 };
 PanelGrid panel_grid(std::size_t panels, int max_columns, int width_px, int panel_height_px);
@@ -65,13 +66,13 @@ class Figure {
   int height() const { return canvas_.height(); }
 
   /// Text is queued and drawn over the picture by finish().
-  void text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, Anchor anchor = Anchor::kLeft,
-            bool bold = false);
+  void text(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
+            Anchor anchor = Anchor::kLeft, bool bold = false);
   /// `s` shortened with "..." (whole characters) to at most `max_width_px` at this size.
   std::string fit(const std::string& s, int size_px, double max_width_px, bool bold = false) const;
   /// As text(), shortened with "..." to at most `max_width_px` (long world names, settings).
-  void text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour, double max_width_px,
-                   bool bold = false);
+  void text_fitted(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
+                   double max_width_px, bool bold = false);
   /// As text(), unless it would overlap text already placed (annotations such as time ticks,
   /// which may crowd where the robot stood still); returns whether it was placed.
   bool text_if_free(const std::string& s, double x, double baseline_y, int size_px, Rgb colour,
@@ -110,11 +111,11 @@ class Figure {
     std::string label;
   };
   struct PlotOptions {
-    std::string x_label;             ///< empty: no label (stacked plots label the bottom one)
+    std::string x_label;  ///< empty: no label (stacked plots label the bottom one)
     std::vector<Band> bands;
-    bool legend = false;             ///< series and bands named at the top right
-    double min_y_span = 0;           ///< never zoom into less than this (noise around zero)
-    std::string note;                ///< said in the middle when no series has a value
+    bool legend = false;    ///< series and bands named at the top right
+    double min_y_span = 0;  ///< never zoom into less than this (noise around zero)
+    std::string note;       ///< said in the middle when no series has a value
   };
   void plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
             const std::string& y_label, const PlotOptions& options);

@@ -5,8 +5,8 @@
 #include <GL/osmesa.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace plantsim::render {
@@ -77,14 +77,16 @@ GlCanvas::~GlCanvas() {
   // Kept for the next canvas: two are enough for a canvas made while another is alive. A frame
   // buffer over 64 MB (a poster-sized figure) is not held on to between figures.
   constexpr std::size_t kKeptBufferBytes = 64u << 20;
-  if (idle_contexts.size() < 2 && ctx_->buffer.size() <= kKeptBufferBytes) idle_contexts.push_back(std::move(ctx_));
+  if (idle_contexts.size() < 2 && ctx_->buffer.size() <= kKeptBufferBytes)
+    idle_contexts.push_back(std::move(ctx_));
 }
 
 // Two canvases alive in one thread share GL's notion of "current": each binds its own
 // context before it talks to GL.
 void GlCanvas::make_current() const {
   if (OSMesaGetCurrentContext() != ctx_->mesa &&
-      !OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, width_ * ss_, height_ * ss_))
+      !OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, width_ * ss_,
+                         height_ * ss_))
     throw std::runtime_error("OSMesa: cannot bind the frame buffer");
 }
 
@@ -96,16 +98,20 @@ void GlCanvas::clear(Rgb c) {
 }
 
 Vec2 GlCanvas::gl_px(Vec2 p) const {
-  return {ss_ * (transform_.x0 + transform_.scale * p.x), ss_ * (transform_.y0 + transform_.scale * p.y)};
+  return {ss_ * (transform_.x0 + transform_.scale * p.x),
+          ss_ * (transform_.y0 + transform_.scale * p.y)};
 }
 
 void GlCanvas::color(Rgb c, float alpha) {
-  current_ = {c.r, c.g, c.b, static_cast<std::uint8_t>(std::lround(std::clamp(alpha, 0.0f, 1.0f) * 255))};
+  current_ = {c.r, c.g, c.b,
+              static_cast<std::uint8_t>(std::lround(std::clamp(alpha, 0.0f, 1.0f) * 255))};
 }
 
 void GlCanvas::vertex(Vec2 p, float coverage) {
-  const auto alpha = static_cast<std::uint8_t>(std::lround(current_[3] * std::clamp(coverage, 0.0f, 1.0f)));
-  batch_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), current_[0], current_[1], current_[2], alpha});
+  const auto alpha =
+      static_cast<std::uint8_t>(std::lround(current_[3] * std::clamp(coverage, 0.0f, 1.0f)));
+  batch_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), current_[0], current_[1],
+                    current_[2], alpha});
 }
 
 void GlCanvas::triangle(Vec2 a, Vec2 b, Vec2 c) {
@@ -148,8 +154,10 @@ void GlCanvas::flush() const {
 void GlCanvas::set_clip(double left, double top, double right, double bottom) {
   flush();  // what was drawn before is not clipped
   make_current();
-  const int x0 = static_cast<int>(std::floor(left * ss_)), x1 = static_cast<int>(std::ceil(right * ss_));
-  const int y0 = static_cast<int>(std::floor((height_ - bottom) * ss_)), y1 = static_cast<int>(std::ceil((height_ - top) * ss_));
+  const int x0 = static_cast<int>(std::floor(left * ss_)),
+            x1 = static_cast<int>(std::ceil(right * ss_));
+  const int y0 = static_cast<int>(std::floor((height_ - bottom) * ss_)),
+            y1 = static_cast<int>(std::ceil((height_ - top) * ss_));
   glEnable(GL_SCISSOR_TEST);
   glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
 }
@@ -174,7 +182,8 @@ void GlCanvas::fill_box(Vec2 center, double half_x, double half_y, double yaw, R
     std::array<Vec2, 4> p;
     int i = 0;
     for (Vec2 k : {Vec2{-1, -1}, Vec2{1, -1}, Vec2{1, 1}, Vec2{-1, 1}})
-      p[i++] = mid + geom::rotate({k.x * std::max(hx + grow, 0.0), k.y * std::max(hy + grow, 0.0)}, yaw);
+      p[i++] =
+          mid + geom::rotate({k.x * std::max(hx + grow, 0.0), k.y * std::max(hy + grow, 0.0)}, yaw);
     return p;
   };
   if (!smooth_edges_) {
@@ -191,7 +200,8 @@ void GlCanvas::fill_box(Vec2 center, double half_x, double half_y, double yaw, R
 }
 
 void GlCanvas::disk_px(Vec2 c, double r) {
-  const int n = std::clamp(static_cast<int>(r * 1.5), r < 3.0 ? 6 : 12, 96);  // a few-pixel disk needs few sides
+  const int n = std::clamp(static_cast<int>(r * 1.5), r < 3.0 ? 6 : 12,
+                           96);  // a few-pixel disk needs few sides
   // Smoothed: an opaque core to r - 1/2 and a rim to r + 1/2; a disk under a pixel is rim only.
   const double r_in = smooth_edges_ ? std::max(r - 0.5, 0.0) : r, r_out = r + 0.5;
   const float core = smooth_edges_ ? static_cast<float>(std::min(1.0, 2.0 * r)) : 1.0f;
@@ -204,7 +214,8 @@ void GlCanvas::disk_px(Vec2 c, double r) {
       vertex(c + r_in * prev, core);
       vertex(c + r_in * next, core);
     }
-    if (smooth_edges_) rim(c + r_in * prev, c + r_in * next, c + r_out * next, c + r_out * prev, core);
+    if (smooth_edges_)
+      rim(c + r_in * prev, c + r_in * next, c + r_out * next, c + r_out * prev, core);
     prev = next;
   }
 }
@@ -217,7 +228,8 @@ void GlCanvas::fill_disk(Vec2 center, double radius_m, Rgb c) {
 void GlCanvas::ring(Vec2 center, double radius_m, double width_px, Rgb c) {
   const int n = 64;
   std::vector<Vec2> pts;
-  for (int i = 0; i <= n; ++i) pts.push_back(center + radius_m * geom::unit_from_angle(2.0 * M_PI * i / n));
+  for (int i = 0; i <= n; ++i)
+    pts.push_back(center + radius_m * geom::unit_from_angle(2.0 * M_PI * i / n));
   polyline(pts, width_px, c);
 }
 
@@ -262,7 +274,8 @@ void GlCanvas::pixel_polyline(const std::vector<Vec2>& pts, double width_px, Rgb
   stroke_px(gl, ss_ * width_px, nullptr, true);
 }
 
-void GlCanvas::coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours, double width_px) {
+void GlCanvas::coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours,
+                                 double width_px) {
   std::vector<Vec2> gl;
   gl.reserve(pts.size());
   for (Vec2 p : pts) gl.push_back(gl_px(p));
@@ -276,7 +289,8 @@ namespace {
 // Which points to keep so that the line moves by at most `tolerance` pixels (Douglas-Peucker
 // between consecutive pinned points; the ends are pinned). A path of thousands of sub-pixel
 // samples costs triangles without changing a pixel.
-std::vector<std::size_t> points_to_keep(const std::vector<Vec2>& pts, double tolerance, const std::vector<bool>& pinned) {
+std::vector<std::size_t> points_to_keep(const std::vector<Vec2>& pts, double tolerance,
+                                        const std::vector<bool>& pinned) {
   std::vector<bool> keep(pts.size(), false);
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   std::size_t from = 0;
@@ -295,7 +309,8 @@ std::vector<std::size_t> points_to_keep(const std::vector<Vec2>& pts, double tol
     double worst = -1;
     std::size_t worst_at = lo;
     for (std::size_t i = lo + 1; i < hi; ++i) {
-      const double off = len > 0 ? std::fabs(geom::cross(d, pts[i] - pts[lo])) / len : geom::norm(pts[i] - pts[lo]);
+      const double off = len > 0 ? std::fabs(geom::cross(d, pts[i] - pts[lo])) / len
+                                 : geom::norm(pts[i] - pts[lo]);
       if (off > worst) worst = off, worst_at = i;
     }
     if (worst > tolerance) {
@@ -315,9 +330,11 @@ bool visibly_different(Rgb a, Rgb b) {
 
 }  // namespace
 
-void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w, const std::vector<Rgb>* colours, bool round_caps) {
+void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w,
+                         const std::vector<Rgb>* colours, bool round_caps) {
   // A colour change pins its point; segments merged into one take the first one's colour.
-  const std::size_t n_all = colours ? std::min(all_pts.size(), colours->size() + 1) : all_pts.size();
+  const std::size_t n_all =
+      colours ? std::min(all_pts.size(), colours->size() + 1) : all_pts.size();
   std::vector<bool> pinned(n_all, false);
   if (colours)
     for (std::size_t i = 1, run_start = 0; i + 1 < n_all; ++i)
@@ -338,7 +355,8 @@ void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w, const std::
     // about w/2 times the sine of the turn), thin lines included: simplified, a sharp corner
     // is one vertex, with no short samples left to fill it.
     const Vec2 d1 = b - a, d2 = pts[kept[k + 1]] - b;
-    const double turn = std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
+    const double turn =
+        std::fabs(geom::cross(d1, d2)) / std::max(geom::norm(d1) * geom::norm(d2), 1e-12);
     if (turn * w > 0.5 || geom::dot(d1, d2) < 0) disk_px(b, 0.5 * w);
   }
 }
@@ -360,7 +378,8 @@ Image GlCanvas::read() const {
   if (ss_ == 1) {  // rows flipped, nothing to average
     const std::size_t row_bytes = static_cast<std::size_t>(width_) * 4;
     for (int row = 0; row < height_; ++row)
-      std::memcpy(img.rgba.data() + row * row_bytes, src + static_cast<std::size_t>(height_ - 1 - row) * row_bytes, row_bytes);
+      std::memcpy(img.rgba.data() + row * row_bytes,
+                  src + static_cast<std::size_t>(height_ - 1 - row) * row_bytes, row_bytes);
     return img;
   }
   if (ss_ == 2) {  // the usual case: a 2x2 box filter over whole rows, no per-channel loops

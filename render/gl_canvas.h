@@ -22,9 +22,9 @@ using geom::Vec2;
 
 /// Maps world metres into pixels of an image (row 0 at the top), same scale on both axes.
 struct PixelTransform {
-  double scale = 1;      ///< pixels per metre
-  double x0 = 0, y0 = 0; ///< pixel position (column, row from the bottom) of world (0, 0)
-  int height = 0;        ///< image height, to flip rows
+  double scale = 1;       ///< pixels per metre
+  double x0 = 0, y0 = 0;  ///< pixel position (column, row from the bottom) of world (0, 0)
+  int height = 0;         ///< image height, to flip rows
   /// Fits `view` into the box [left, right] x [bottom, top] pixels (rows counted from the bottom).
   static PixelTransform fit(const Rect& view, double left, double bottom, double right, double top,
                             int image_height);
@@ -61,7 +61,8 @@ class GlCanvas {
   void pixel_line(Vec2 a, Vec2 b, double width_px, Rgb c);
   void pixel_polyline(const std::vector<Vec2>& pts, double width_px, Rgb c);
   /// Segment i of `pts` drawn in colours[i] (one fewer colour than points), round joins.
-  void coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours, double width_px);
+  void coloured_polyline(const std::vector<Vec2>& pts, const std::vector<Rgb>& colours,
+                         double width_px);
 
   /// Waits until the drawing is done (for timing); read() does this too.
   void finish() const;
@@ -87,7 +88,8 @@ class GlCanvas {
   Vec2 pixel_to_gl(Vec2 image_px) const;
   /// Segments between GL-pixel points, width w; colours[i] for segment i when given (else the
   /// current colour); round joins where the line turns, round caps when asked.
-  void stroke_px(const std::vector<Vec2>& pts, double w, const std::vector<Rgb>* colours, bool round_caps);
+  void stroke_px(const std::vector<Vec2>& pts, double w, const std::vector<Rgb>* colours,
+                 bool round_caps);
 
   int width_, height_, ss_;
   bool smooth_edges_;  ///< analytic rims (no supersampling to average them)

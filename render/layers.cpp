@@ -29,13 +29,15 @@ MarginShape margin_shape(const std::string& planner_name) {
   return planner_name == "vg-round" ? MarginShape::kRound : MarginShape::kSquare;
 }
 
-bool searches_a_mesh(const std::string& planner_name) { return planner_name == "interval" || planner_name == "polyanya"; }
+bool searches_a_mesh(const std::string& planner_name) {
+  return planner_name == "interval" || planner_name == "polyanya";
+}
 
 bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
   const double inflation = w.planning_inflation_m();
   auto fill_on_floor = [&](const geom::Rect& m) {
-    c.fill_rect({std::max(m.xmin, w.floor.xmin), std::max(m.ymin, w.floor.ymin), std::min(m.xmax, w.floor.xmax),
-                 std::min(m.ymax, w.floor.ymax)},
+    c.fill_rect({std::max(m.xmin, w.floor.xmin), std::max(m.ymin, w.floor.ymin),
+                 std::min(m.xmax, w.floor.xmax), std::min(m.ymax, w.floor.ymax)},
                 palette::kInflation);
   };
   for (const auto& r : w.obstacles) {
@@ -47,7 +49,8 @@ bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
     fill_on_floor({r.xmin - inflation, r.ymin, r.xmax + inflation, r.ymax});
     fill_on_floor({r.xmin, r.ymin - inflation, r.xmax, r.ymax + inflation});
     // A corner on or past the floor's edge needs no disk: its part on the floor is covered.
-    for (Vec2 k : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
+    for (Vec2 k :
+         {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
       if (geom::in_open_rect(w.floor, k)) c.fill_disk(k, inflation, palette::kInflation);
   }
   for (const auto& r : w.obstacles) c.fill_rect(r, palette::kObstacle);
@@ -57,7 +60,9 @@ bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {
 namespace {
 
 void outline(GlCanvas& c, const geom::Rect& r, double width_px, Rgb colour) {
-  c.polyline({{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}, {r.xmin, r.ymin}}, width_px, colour);
+  c.polyline(
+      {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}, {r.xmin, r.ymin}},
+      width_px, colour);
 }
 
 }  // namespace
@@ -66,7 +71,8 @@ bool draw_unmapped(GlCanvas& c, const worlds::World& w) {
   // Diagonals x - y = k every 8 pixels, clipped to the rectangle.
   const double pitch = 8.0 / c.transform().scale;
   for (const geom::Rect& r : w.unmapped) {
-    for (double k = std::ceil((r.xmin - r.ymax) / pitch) * pitch; k <= r.xmax - r.ymin; k += pitch) {
+    for (double k = std::ceil((r.xmin - r.ymax) / pitch) * pitch; k <= r.xmax - r.ymin;
+         k += pitch) {
       // On x = y + k: y from max(ymin, xmin - k) to min(ymax, xmax - k).
       const double y0 = std::max(r.ymin, r.xmin - k), y1 = std::min(r.ymax, r.xmax - k);
       if (y1 > y0) c.polyline({{y0 + k, y0}, {y1 + k, y1}}, 1.2, palette::kUnmapped);
@@ -79,10 +85,12 @@ bool draw_unmapped(GlCanvas& c, const worlds::World& w) {
 bool draw_mapped_charger(GlCanvas& c, const worlds::World& w) {
   if (!worlds::differs_from_map(w)) return false;
   const worlds::ChargerBody cb = worlds::charger_body(w, worlds::robot_map_charger(w));
-  const Vec2 along = geom::rotate({cb.half_depth_m, 0}, cb.yaw), across = geom::rotate({0, cb.half_width_m}, cb.yaw);
+  const Vec2 along = geom::rotate({cb.half_depth_m, 0}, cb.yaw),
+             across = geom::rotate({0, cb.half_width_m}, cb.yaw);
   const Vec2 k = cb.center;
-  c.polyline({k - along - across, k + along - across, k + along + across, k - along + across, k - along - across}, 1.5,
-             palette::kCharger);
+  c.polyline({k - along - across, k + along - across, k + along + across, k - along + across,
+              k - along - across},
+             1.5, palette::kCharger);
   return true;
 }
 
@@ -101,15 +109,17 @@ void draw_charger(GlCanvas& c, const worlds::World& w) {
   c.polyline({worlds::staging_pose(w).position(), cb.center}, 1.5, palette::kCharger);
   // Never smaller than a few pixels, so that it stays visible on large floors.
   const double min_half_m = 3.0 / c.transform().scale;
-  c.fill_box(cb.center, std::max(cb.half_depth_m, min_half_m), std::max(cb.half_width_m, min_half_m), cb.yaw,
-             palette::kCharger);
+  c.fill_box(cb.center, std::max(cb.half_depth_m, min_half_m),
+             std::max(cb.half_width_m, min_half_m), cb.yaw, palette::kCharger);
 }
 
 void draw_start(GlCanvas& c, const worlds::World& w) {
-  c.fill_disk(w.start.position(), std::max(0.35 * w.robot.radius_m, 4.0 / c.transform().scale), palette::kStart);
+  c.fill_disk(w.start.position(), std::max(0.35 * w.robot.radius_m, 4.0 / c.transform().scale),
+              palette::kStart);
 }
 
-bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes) {
+bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
+                 const std::vector<geom::Rect>& boxes) {
   for (std::size_t i = 0; i < w.moving.size(); ++i) {
     const auto& m = w.moving[i];
     if (m.waypoints.size() > 1) c.polyline(m.waypoints, 1.0, palette::kMoving);
@@ -126,7 +136,8 @@ bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::Movin
     // the centre's track over it.
     const geom::Rect* last = nullptr;
     for (const geom::Rect& box : track.boxes) {
-      if (last && geom::distance(last->center(), box.center()) * c.transform().scale < 1.0) continue;
+      if (last && geom::distance(last->center(), box.center()) * c.transform().scale < 1.0)
+        continue;
       c.fill_rect(box, palette::kMoving, 0.12f);
       last = &box;
     }
@@ -146,7 +157,8 @@ bool draw_plan(GlCanvas& c, const std::vector<Vec2>& plan, Rgb colour, double wi
   return true;
 }
 
-bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, double dash_px, Rgb colour) {
+bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, double dash_px,
+                 Rgb colour) {
   if (pts.size() < 2) return false;
   const double dash = dash_px / c.transform().scale;
   double phase = 0;  // distance along the current dash-and-gap period
@@ -184,7 +196,8 @@ bool draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes) 
   for (const auto& b : boxes) {
     const geom::Rect& r = b.box;
     outline(c, r, 1.5, palette::kTracked);
-    if (geom::norm(b.velocity) > 0) c.polyline({r.center(), r.center() + b.velocity}, 1.5, palette::kTracked);
+    if (geom::norm(b.velocity) > 0)
+      c.polyline({r.center(), r.center() + b.velocity}, 1.5, palette::kTracked);
   }
   return !boxes.empty();
 }
@@ -223,8 +236,8 @@ bool draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& 
   return drew;
 }
 
-bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
-                              std::size_t upto) {
+bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t,
+                              double max_speed_mps, std::size_t upto) {
   const std::size_t n = std::min(upto, t.size());
   std::vector<Vec2> pts;
   std::vector<Rgb> colours;
@@ -232,7 +245,9 @@ bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySamp
   colours.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     // Successive samples closer than half a pixel add nothing but draw calls.
-    if (!pts.empty() && i + 1 < n && geom::distance(pts.back(), t[i].truth.position()) * c.transform().scale < 0.5) continue;
+    if (!pts.empty() && i + 1 < n &&
+        geom::distance(pts.back(), t[i].truth.position()) * c.transform().scale < 0.5)
+      continue;
     if (!pts.empty()) colours.push_back(cividis(std::fabs(t[i].speed_mps) / max_speed_mps));
     pts.push_back(t[i].truth.position());
   }
@@ -245,19 +260,26 @@ Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_m
   std::vector<double> speeds;
   speeds.reserve(t.size());
   for (const auto& s : t) speeds.push_back(std::fabs(s.speed_mps));
-  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() / 2), speeds.end());
+  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() / 2),
+                   speeds.end());
   return cividis(speeds[speeds.size() / 2] / max_speed_mps);
 }
 
 Rgb event_colour(sim::EpisodeResult::Event::Kind kind) {
   using Kind = sim::EpisodeResult::Event::Kind;
   switch (kind) {
-    case Kind::kStop: return palette::kStopMark;
-    case Kind::kReplan: return palette::kReplanMark;
-    case Kind::kRecovery: return palette::kRecoveryMark;
-    case Kind::kCollision: return palette::kCollisionMark;
-    case Kind::kRetry: return palette::kRetryMark;
-    case Kind::kFailure: return palette::kFailureMark;
+    case Kind::kStop:
+      return palette::kStopMark;
+    case Kind::kReplan:
+      return palette::kReplanMark;
+    case Kind::kRecovery:
+      return palette::kRecoveryMark;
+    case Kind::kCollision:
+      return palette::kCollisionMark;
+    case Kind::kRetry:
+      return palette::kRetryMark;
+    case Kind::kFailure:
+      return palette::kFailureMark;
   }
   return palette::kAxis;
 }
@@ -277,12 +299,16 @@ void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& even
       continue;
     }
     // Nested sizes, so that a stop, a replan, a retry and a recovery at one place all show.
-    const double r = e.kind == Kind::kStop ? 6 * px : e.kind == Kind::kReplan ? 9 * px : e.kind == Kind::kRetry ? 12 * px : 15 * px;
+    const double r = e.kind == Kind::kStop     ? 6 * px
+                     : e.kind == Kind::kReplan ? 9 * px
+                     : e.kind == Kind::kRetry  ? 12 * px
+                                               : 15 * px;
     c.ring(e.at, r, 2.5, event_colour(e.kind));
   }
 }
 
-void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour, double width_px) {
+void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose,
+                    Rgb colour, double width_px) {
   // Never under 8 pixels across, heading mark included, so that it reads on a 100 m floor.
   const double grow = std::max(1.0, 4.0 / (c.transform().scale * std::max(robot.radius_m, 1e-9)));
   if (robot.rectangular()) {
@@ -294,11 +320,12 @@ void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pos
   } else {
     c.ring(pose.position(), robot.radius_m * grow, width_px, colour);
   }
-  c.polyline({pose.position(), pose.position() + grow * robot.front_extent_m() * pose.heading()}, width_px, colour);
+  c.polyline({pose.position(), pose.position() + grow * robot.front_extent_m() * pose.heading()},
+             width_px, colour);
 }
 
-bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot, const std::vector<sim::TrajectorySample>& t,
-                     double every_s) {
+bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot,
+                     const std::vector<sim::TrajectorySample>& t, double every_s) {
   double next = 0;
   for (const auto& s : t)
     if (s.t_s >= next) {

@@ -11,7 +11,7 @@
 
 namespace plantsim::render {
 
-void draw_floor(GlCanvas& c, const worlds::World& w);                  ///< floor and metre grid
+void draw_floor(GlCanvas& c, const worlds::World& w);  ///< floor and metre grid
 /// How a planner grows obstacles by the planning margin: to rectangles, or by a disk (rounded
 /// corners: planner vg-round). Figures draw the margin the plan was made around.
 enum class MarginShape { kSquare, kRound };
@@ -28,17 +28,19 @@ bool draw_graph(GlCanvas& c, const std::vector<std::pair<Vec2, Vec2>>& edges);
 /// True for a planner whose "graph" is a mesh of the free floor (planner interval): its
 /// vertices are cells and its edges the portals between them, named so in figures.
 bool searches_a_mesh(const std::string& planner_name);
-void draw_charger(GlCanvas& c, const worlds::World& w);                ///< block and approach axis
+void draw_charger(GlCanvas& c, const worlds::World& w);  ///< block and approach axis
 void draw_start(GlCanvas& c, const worlds::World& w);
 /// Routes, and the boxes where given (else where their scripts put them at t).
-bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s, const std::vector<geom::Rect>& boxes = {});
+bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
+                 const std::vector<geom::Rect>& boxes = {});
 /// Where the moving obstacles went: the area each swept (faint), its centre track, and its box
 /// where it ended. Drawn at one instant alone they would make a passing look like a collision.
 bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::MovingTrack>& tracks);
 /// The plan, thin, to be drawn over the driven path so that it stays visible.
 bool draw_plan(GlCanvas& c, const std::vector<Vec2>& plan, Rgb colour, double width_px = 1.3);
 /// A polyline in dashes of `dash_px` pixels (a plan that was replaced).
-bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, double dash_px, Rgb colour);
+bool draw_dashed(GlCanvas& c, const std::vector<Vec2>& pts, double width_px, double dash_px,
+                 Rgb colour);
 /// The last lidar scan as perception placed it: returns the map explains and those it does not.
 /// Returns {explained drawn, unexplained drawn}.
 std::pair<bool, bool> draw_scan(GlCanvas& c, const robot::ScanView& scan);
@@ -51,7 +53,8 @@ bool draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::Tra
 /// A wide band under the stretches driven in the wall-following state.
 bool draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
 /// The driven path, each segment coloured by speed on cividis from 0 to `max_speed_mps`.
-bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t, double max_speed_mps,
+bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t,
+                              double max_speed_mps,
                               std::size_t upto = static_cast<std::size_t>(-1));
 /// The driven path's colour at its median speed: its legend swatch (a colour the path has).
 Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_mps);
@@ -60,8 +63,9 @@ Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_m
 void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& events);
 Rgb event_colour(sim::EpisodeResult::Event::Kind kind);
 /// Footprint outlines every `every_s` seconds of the trajectory (never under 8 pixels across).
-bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot, const std::vector<sim::TrajectorySample>& t,
-                     double every_s);
-void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose, Rgb colour, double width_px = 1.2);
+bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot,
+                     const std::vector<sim::TrajectorySample>& t, double every_s);
+void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose,
+                    Rgb colour, double width_px = 1.2);
 
 }  // namespace plantsim::render

@@ -15,7 +15,8 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
   const double px = 1.0 / c.transform().scale;
   for (std::size_t k = 0; k < walks.size(); ++k) {
     // Walks share their first corridors: each is moved 2.5 px more along the diagonal.
-    const double shift = 2.5 * (static_cast<double>(k) - 0.5 * static_cast<double>(walks.size() - 1)) * px;
+    const double shift =
+        2.5 * (static_cast<double>(k) - 0.5 * static_cast<double>(walks.size() - 1)) * px;
     std::vector<Vec2> moved;
     moved.reserve(walks[k].size());
     for (const Vec2& p : walks[k]) moved.push_back(p + Vec2{shift, -shift});
@@ -36,13 +37,16 @@ std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const sim::Episod
   return legend;
 }
 
-std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t, const std::vector<planner::PlanMark>& marks) {
+std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t,
+                                         const std::vector<planner::PlanMark>& marks) {
   using Kind = planner::PlanMark::Kind;
   bool placed[3] = {false, false, false};
   // A dot where each letter was recorded (the text sits beside it, where it has room).
   for (const auto& m : marks)
     if (m.kind != Kind::kTriedEnd)
-      fig.canvas().fill_disk(m.at, 2.5 / t.scale, m.kind == Kind::kRouteLetters ? palette::kPlan : palette::kExploredText);
+      fig.canvas().fill_disk(
+          m.at, 2.5 / t.scale,
+          m.kind == Kind::kRouteLetters ? palette::kPlan : palette::kExploredText);
   for (const auto& m : marks) {
     const Vec2 p = t.to_pixel(m.at);
     bool ok = false;

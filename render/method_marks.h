@@ -17,6 +17,7 @@ namespace plantsim::render {
 /// search walks dashed; the legend entries of what it drew.
 std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const sim::EpisodeResult& run);
 /// The labels as text over the panel of transform t; returns the legend entries of what it placed.
-std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t, const std::vector<planner::PlanMark>& marks);
+std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t,
+                                         const std::vector<planner::PlanMark>& marks);
 
 }  // namespace plantsim::render

@@ -23,35 +23,45 @@ inline constexpr Rgb kGrid{222, 222, 218};
 inline constexpr Rgb kInflation{236, 222, 200};
 inline constexpr Rgb kObstacle{64, 64, 64};
 inline constexpr Rgb kGraph{170, 170, 190};
-inline constexpr Rgb kPlan = kOkabeVermillion;       ///< the plan at the end, drawn over the driven path
-inline constexpr Rgb kFirstPlan{0, 0, 0};            ///< the plan set off on, dashed, when replanned
-inline constexpr Rgb kTrajectory = kOkabeBlue;       ///< a driven path in one colour (plots, batch overlays)
-inline constexpr Rgb kFailure = kOkabeVermillion;    ///< failed episodes in batch overlays
+inline constexpr Rgb kPlan = kOkabeVermillion;  ///< the plan at the end, drawn over the driven path
+inline constexpr Rgb kFirstPlan{0, 0, 0};       ///< the plan set off on, dashed, when replanned
+inline constexpr Rgb kTrajectory =
+    kOkabeBlue;  ///< a driven path in one colour (plots, batch overlays)
+inline constexpr Rgb kFailure = kOkabeVermillion;  ///< failed episodes in batch overlays
 inline constexpr Rgb kCharger = kOkabeBluishGreen;
 inline constexpr Rgb kStart = kOkabeOrange;
 inline constexpr Rgb kRobot{20, 20, 20};
-inline constexpr Rgb kMoving = kOkabeSkyBlue;        ///< moving obstacles, their swept tracks and time ticks
+inline constexpr Rgb kMoving =
+    kOkabeSkyBlue;  ///< moving obstacles, their swept tracks and time ticks
 inline constexpr Rgb kAxis{40, 40, 48};
 inline constexpr Rgb kFootprint{120, 120, 130};
 inline constexpr Rgb kTarget = kOkabeReddishPurple;  ///< a moving target and its track
-inline constexpr Rgb kExplored{180, 222, 180};       ///< a walk before the answer (003's exploration, 002's raw walk): a pale green band, off the speed scale
-inline constexpr Rgb kExploredText{40, 105, 40};     ///< letters recorded on it (darker, to read on the band)
-inline constexpr Rgb kTried{0, 110, 110};            ///< the ring search's walks (dashed), seed 003
-inline constexpr Rgb kWallFollow{215, 185, 240};    ///< potential-field travel while following a wall (band; not the speed scale's yellow)
-inline constexpr Rgb kScan{120, 120, 120};           ///< lidar returns the map explains (dots)
-inline constexpr Rgb kScanOffMap{150, 0, 90};        ///< lidar returns it does not (tracked obstacles)
-inline constexpr Rgb kTracked{0, 0, 0};              ///< boxes of the tracked obstacles (outlines)
-inline constexpr Rgb kEstimate{185, 185, 185};       ///< the path as the robot estimated it (band)
-inline constexpr Rgb kUnmapped{150, 30, 30};         ///< obstacles in the plant but not on the map (hatched)
-inline constexpr Rgb kLayer{120, 90, 200};           ///< the local obstacle layer's occupied cells
-inline constexpr Rgb kStopMark{0, 0, 0};             ///< where the robot stopped for something (ring)
-inline constexpr Rgb kReplanMark = kOkabeBlue;       ///< where it replanned (ring)
-inline constexpr Rgb kRecoveryMark = kOkabeOrange;   ///< where it recovered after a displacement (ring)
-inline constexpr Rgb kCollisionMark{220, 0, 0};      ///< where a collision began (cross)
-inline constexpr Rgb kRetryMark = kOkabeReddishPurple;  ///< where the docking backed off to retry (ring)
-inline constexpr Rgb kFailureMark{150, 0, 200};      ///< where the episode failed (filled diamond)
-inline constexpr Rgb kTolerance = kOkabeBluishGreen;    ///< the docking tolerance box (inset)
-inline constexpr Rgb kPhaseTravel{235, 240, 250};    ///< time-plot shading by phase
+inline constexpr Rgb kExplored{180, 222,
+                               180};  ///< a walk before the answer (003's exploration, 002's raw
+                                      ///< walk): a pale green band, off the speed scale
+inline constexpr Rgb kExploredText{40, 105,
+                                   40};    ///< letters recorded on it (darker, to read on the band)
+inline constexpr Rgb kTried{0, 110, 110};  ///< the ring search's walks (dashed), seed 003
+inline constexpr Rgb kWallFollow{
+    215, 185,
+    240};  ///< potential-field travel while following a wall (band; not the speed scale's yellow)
+inline constexpr Rgb kScan{120, 120, 120};      ///< lidar returns the map explains (dots)
+inline constexpr Rgb kScanOffMap{150, 0, 90};   ///< lidar returns it does not (tracked obstacles)
+inline constexpr Rgb kTracked{0, 0, 0};         ///< boxes of the tracked obstacles (outlines)
+inline constexpr Rgb kEstimate{185, 185, 185};  ///< the path as the robot estimated it (band)
+inline constexpr Rgb kUnmapped{150, 30,
+                               30};         ///< obstacles in the plant but not on the map (hatched)
+inline constexpr Rgb kLayer{120, 90, 200};  ///< the local obstacle layer's occupied cells
+inline constexpr Rgb kStopMark{0, 0, 0};    ///< where the robot stopped for something (ring)
+inline constexpr Rgb kReplanMark = kOkabeBlue;  ///< where it replanned (ring)
+inline constexpr Rgb kRecoveryMark =
+    kOkabeOrange;                                ///< where it recovered after a displacement (ring)
+inline constexpr Rgb kCollisionMark{220, 0, 0};  ///< where a collision began (cross)
+inline constexpr Rgb kRetryMark =
+    kOkabeReddishPurple;                         ///< where the docking backed off to retry (ring)
+inline constexpr Rgb kFailureMark{150, 0, 200};  ///< where the episode failed (filled diamond)
+inline constexpr Rgb kTolerance = kOkabeBluishGreen;  ///< the docking tolerance box (inset)
+inline constexpr Rgb kPhaseTravel{235, 240, 250};     ///< time-plot shading by phase
 inline constexpr Rgb kPhaseDocking{232, 246, 238};
 inline constexpr Rgb kPhaseBackOff{252, 238, 226};
 

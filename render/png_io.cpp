@@ -39,7 +39,8 @@ std::string encode_png(const Image& image, const PngSettings& settings) {
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, settings.compression_level);
   if (settings.run_length) png_set_compression_strategy(png, Z_RLE);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, settings.adaptive_filters ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE,
+                 settings.adaptive_filters ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
   png_write_info(png, info);
   png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are given as RGBA; the filler byte is dropped
   for (int row = 0; row < image.height; ++row)

@@ -7,8 +7,13 @@ namespace plantsim::render {
 
 PngPipeline::PngPipeline(PngSettings settings, std::size_t max_queued,
                          std::function<void(const std::string&, const std::string&)> sink)
-    : settings_(settings), max_queued_(std::max<std::size_t>(1, max_queued)), sink_(std::move(sink)) {
-  if (!sink_) sink_ = [](const std::string& bytes, const std::string& path) { util::write_file_atomically(path, bytes); };
+    : settings_(settings),
+      max_queued_(std::max<std::size_t>(1, max_queued)),
+      sink_(std::move(sink)) {
+  if (!sink_)
+    sink_ = [](const std::string& bytes, const std::string& path) {
+      util::write_file_atomically(path, bytes);
+    };
   worker_ = std::thread([this] { run(); });
 }
 

@@ -1,11 +1,10 @@
 // The run as JSON and the canvas player that draws it (colours from the figures' palette).
 #include "render/replay_html.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "render/palette.h"
 
@@ -17,7 +16,10 @@ using nlohmann::json;
 
 double round_to(double v, double step) { return std::round(v / step) * step; }
 
-json rect(const geom::Rect& r) { return {round_to(r.xmin, 1e-3), round_to(r.ymin, 1e-3), round_to(r.xmax, 1e-3), round_to(r.ymax, 1e-3)}; }
+json rect(const geom::Rect& r) {
+  return {round_to(r.xmin, 1e-3), round_to(r.ymin, 1e-3), round_to(r.xmax, 1e-3),
+          round_to(r.ymax, 1e-3)};
+}
 
 json points(const std::vector<Vec2>& pts) {
   json out = json::array();
@@ -31,7 +33,8 @@ std::string css(Rgb c) {
   return buf;
 }
 
-json replay_data(const worlds::World& world, const sim::EpisodeResult& run, const ReplayOptions& o) {
+json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
+                 const ReplayOptions& o) {
   json j;
   j["world"] = world.name;
   j["floor"] = rect(world.floor);
@@ -40,7 +43,8 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run, cons
   j["unmapped"] = json::array();
   for (const auto& r : world.unmapped) j["unmapped"].push_back(rect(r));
   const worlds::ChargerBody cb = worlds::charger_body(world);
-  j["charger"] = {round_to(cb.center.x, 1e-3), round_to(cb.center.y, 1e-3), cb.half_depth_m, cb.half_width_m, cb.yaw};
+  j["charger"] = {round_to(cb.center.x, 1e-3), round_to(cb.center.y, 1e-3), cb.half_depth_m,
+                  cb.half_width_m, cb.yaw};
   j["dock"] = {world.charger.x, world.charger.y};
   j["start"] = {world.start.x, world.start.y};
   j["robot"] = {{"radius", world.robot.radius_m},
@@ -48,11 +52,13 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run, cons
                 {"width", world.robot.rectangular() ? world.robot.width_m : 0.0}};
   j["max_speed"] = world.robot.max_speed_mps;
   j["plan"] = points(run.plan);
-  j["first_plan"] = run.replans > 0 && run.plan != run.first_plan ? points(run.first_plan) : json::array();
+  j["first_plan"] =
+      run.replans > 0 && run.plan != run.first_plan ? points(run.first_plan) : json::array();
   const std::size_t n = run.trajectory.size();
-  const std::size_t step = std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
-  json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(), v = json::array(),
-       docking = json::array();
+  const std::size_t step =
+      std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
+  json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(),
+       v = json::array(), docking = json::array();
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < n; i += step) kept.push_back(i);
   if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);  // the end, always
@@ -80,11 +86,11 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run, cons
     j["moving"].push_back(m);
   }
   j["status"] = run.status;
-  j["colours"] = {{"floor", css(palette::kFloor)},       {"obstacle", css(palette::kObstacle)},
-                  {"unmapped", css(palette::kUnmapped)}, {"plan", css(palette::kPlan)},
+  j["colours"] = {{"floor", css(palette::kFloor)},          {"obstacle", css(palette::kObstacle)},
+                  {"unmapped", css(palette::kUnmapped)},    {"plan", css(palette::kPlan)},
                   {"first_plan", css(palette::kFirstPlan)}, {"charger", css(palette::kCharger)},
-                  {"start", css(palette::kStart)},       {"moving", css(palette::kMoving)},
-                  {"robot", css(palette::kRobot)},       {"axis", css(palette::kAxis)}};
+                  {"start", css(palette::kStart)},          {"moving", css(palette::kMoving)},
+                  {"robot", css(palette::kRobot)},          {"axis", css(palette::kAxis)}};
   return j;
 }
 
@@ -205,17 +211,23 @@ constexpr const char* kPlayer = R"JS(
 
 }  // namespace
 
-std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run, const ReplayOptions& o) {
+std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run,
+                        const ReplayOptions& o) {
   std::string data = replay_data(world, run, o).dump();
   // Inside a script element "</" could end it early.
-  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) data.replace(at, 2, "<\\/");
+  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3))
+    data.replace(at, 2, "<\\/");
   std::string h = "<section id=\"replay\" data-replay-frames=\"0\">\n<h2>Replay</h2>\n";
-  h += "<canvas id=\"replay-canvas\" width=\"" + std::to_string(o.width_px) + "\" height=\"" + std::to_string(o.height_px) +
-       "\"></canvas>\n";
-  h += "<p><button id=\"replay-play\">pause</button> speed <select id=\"replay-speed\"><option>0.5</option>"
-       "<option>1</option><option>2</option><option selected>4</option><option>8</option><option>16</option></select> "
-       "<input id=\"replay-slider\" type=\"range\" min=\"0\" max=\"1000\" value=\"0\" style=\"width:50%\"> "
-       "<label><input id=\"replay-zoom\" type=\"checkbox\" checked> zoom on the docking</label></p>\n";
+  h += "<canvas id=\"replay-canvas\" width=\"" + std::to_string(o.width_px) + "\" height=\"" +
+       std::to_string(o.height_px) + "\"></canvas>\n";
+  h += "<p><button id=\"replay-play\">pause</button> speed <select "
+       "id=\"replay-speed\"><option>0.5</option>"
+       "<option>1</option><option>2</option><option "
+       "selected>4</option><option>8</option><option>16</option></select> "
+       "<input id=\"replay-slider\" type=\"range\" min=\"0\" max=\"1000\" value=\"0\" "
+       "style=\"width:50%\"> "
+       "<label><input id=\"replay-zoom\" type=\"checkbox\" checked> zoom on the "
+       "docking</label></p>\n";
   h += "<script type=\"application/json\" id=\"replay-data\">" + data + "</script>\n";
   h += std::string("<script>") + kPlayer + "</script>\n</section>\n";
   return h;

@@ -18,6 +18,7 @@ struct ReplayOptions {
 };
 
 /// The player's HTML (a <section> with its canvas, controls and script), to embed in a report.
-std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run, const ReplayOptions& options = {});
+std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run,
+                        const ReplayOptions& options = {});
 
 }  // namespace plantsim::render

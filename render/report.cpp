@@ -1,7 +1,6 @@
 // HTML generation with escaping.
 #include "render/report.h"
 
-
 #include "util/atomic_file.h"
 
 namespace plantsim::render {
@@ -9,11 +8,20 @@ std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -21,19 +29,23 @@ std::string html_escape(const std::string& s) {
 
 std::string image_check_script() {
   return "<script>window.addEventListener('load', function () {\n"
-         "  const bad = Array.from(document.images).filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src);\n"
-         "  document.documentElement.dataset.imagesLoaded = bad.length ? 'missing: ' + bad.join(' ') : 'all ' + "
+         "  const bad = Array.from(document.images).filter(i => !i.complete || i.naturalWidth === "
+         "0).map(i => i.src);\n"
+         "  document.documentElement.dataset.imagesLoaded = bad.length ? 'missing: ' + bad.join(' "
+         "') : 'all ' + "
          "document.images.length;\n});</script>\n";
 }
 
-
 std::string report_html(const Report& r) {
-  std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html_escape(r.title) +
-                  "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
-                  "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
-                  "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
-                  "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px 4px}"
-                  "figure{margin:16px 0}</style></head><body>\n";
+  std::string h =
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
+      html_escape(r.title) +
+      "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
+      "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
+      "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
+      "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px "
+      "4px}"
+      "figure{margin:16px 0}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";
   if (!r.command.empty()) h += "<p>Produced by <code>" + html_escape(r.command) + "</code></p>\n";
   if (!r.notes.empty()) h += "<p>" + html_escape(r.notes) + "</p>\n";
@@ -50,12 +62,13 @@ std::string report_html(const Report& r) {
   }
   h += r.body_html;
   for (const auto& f : r.figures)
-    h += "<figure><img src=\"" + html_escape(f.file) + "\" alt=\"" + html_escape(f.caption) + "\"><figcaption>" +
-         html_escape(f.caption) + "</figcaption></figure>\n";
+    h += "<figure><img src=\"" + html_escape(f.file) + "\" alt=\"" + html_escape(f.caption) +
+         "\"><figcaption>" + html_escape(f.caption) + "</figcaption></figure>\n";
   if (!r.files.empty()) {
     h += "<p>Files: ";
     for (std::size_t i = 0; i < r.files.size(); ++i)
-      h += (i ? ", " : "") + std::string("<a href=\"") + html_escape(r.files[i]) + "\">" + html_escape(r.files[i]) + "</a>";
+      h += (i ? ", " : "") + std::string("<a href=\"") + html_escape(r.files[i]) + "\">" +
+           html_escape(r.files[i]) + "</a>";
     h += "</p>\n";
   }
   h += image_check_script();
@@ -63,12 +76,15 @@ std::string report_html(const Report& r) {
   return h;
 }
 
-void write_report(const Report& r, const std::string& path) { util::write_file_atomically(path, report_html(r)); }
+void write_report(const Report& r, const std::string& path) {
+  util::write_file_atomically(path, report_html(r));
+}
 
 std::vector<std::string> referenced_files(const std::string& html) {
   std::vector<std::string> out;
   for (const std::string attribute : {"src=\"", "href=\""}) {
-    for (std::size_t at = html.find(attribute); at != std::string::npos; at = html.find(attribute, at + 1)) {
+    for (std::size_t at = html.find(attribute); at != std::string::npos;
+         at = html.find(attribute, at + 1)) {
       const std::size_t begin = at + attribute.size(), end = html.find('"', begin);
       if (end != std::string::npos) out.push_back(html.substr(begin, end - begin));
     }

@@ -10,7 +10,7 @@
 namespace plantsim::render {
 
 struct ReportFigure {
-  std::string file;     ///< relative to the report
+  std::string file;  ///< relative to the report
   std::string caption;
 };
 

@@ -19,14 +19,16 @@ std::string result_line(const sim::EpisodeResult& run) {
   if (run.trajectory.empty()) return run.status;
   std::string error = "error n/a";
   if (run.error_measured) {
-    std::snprintf(buf, sizeof buf, "error %.1f cm / %.1f deg", 100 * run.position_error_m, run.heading_error_deg);
+    std::snprintf(buf, sizeof buf, "error %.1f cm / %.1f deg", 100 * run.position_error_m,
+                  run.heading_error_deg);
     error = buf;
   }
-  std::snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s", run.status.c_str(), error.c_str(),
-                run.collisions, run.retries, run.time_s);
+  std::snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s", run.status.c_str(),
+                error.c_str(), run.collisions, run.retries, run.time_s);
   std::string line = buf;
   if (run.travel != "path") {
-    std::snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima, run.wall_follows);
+    std::snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima,
+                  run.wall_follows);
     line += buf;
   }
   return line;
@@ -37,8 +39,8 @@ std::string length_line(const sim::EpisodeResult& run) {
   std::snprintf(buf, sizeof buf, "planned %.2f m", run.path_length_m);
   std::string line = buf;
   if (run.replans > 0 && run.plan != run.first_plan) {
-    std::snprintf(buf, sizeof buf, " (final plan %.2f m after %d replan%s)", geom::polyline_length(run.plan), run.replans,
-                  run.replans == 1 ? "" : "s");
+    std::snprintf(buf, sizeof buf, " (final plan %.2f m after %d replan%s)",
+                  geom::polyline_length(run.plan), run.replans, run.replans == 1 ? "" : "s");
     line += buf;
   }
   std::snprintf(buf, sizeof buf, ", driven %.2f m", run.driven_length_m);
@@ -61,7 +63,8 @@ double time_tick_period(double duration_s) {
 
 /// The sample at or just after time t (the last if none).
 const sim::TrajectorySample& sample_at(const std::vector<sim::TrajectorySample>& t, double time_s) {
-  const auto it = std::lower_bound(t.begin(), t.end(), time_s, [](const auto& s, double v) { return s.t_s < v; });
+  const auto it = std::lower_bound(t.begin(), t.end(), time_s,
+                                   [](const auto& s, double v) { return s.t_s < v; });
   return it == t.end() ? t.back() : *it;
 }
 
@@ -81,7 +84,8 @@ void draw_time_ticks(Figure& fig, const sim::EpisodeResult& run, const PixelTran
     fig.text_if_free(label, rp.x + 6, rp.y - 5, 11, palette::kRobot);
     for (const auto& track : run.moving_tracks) {
       if (track.t_s.empty() || time > track.t_s.back()) continue;
-      const auto k = static_cast<std::size_t>(std::lower_bound(track.t_s.begin(), track.t_s.end(), time) - track.t_s.begin());
+      const auto k = static_cast<std::size_t>(
+          std::lower_bound(track.t_s.begin(), track.t_s.end(), time) - track.t_s.begin());
       const Vec2 m = track.boxes[std::min(k, track.boxes.size() - 1)].center();
       c.fill_disk(m, 3.5 * px, palette::kMoving);
       const Vec2 mp = t.to_pixel(m);
@@ -110,7 +114,8 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   const std::size_t first = close_up_start(traj, o.close_up_m);
   geom::Rect view{world.charger.x, world.charger.y, world.charger.x, world.charger.y};
   auto include = [&](Vec2 p) {
-    view = {std::min(view.xmin, p.x), std::min(view.ymin, p.y), std::max(view.xmax, p.x), std::max(view.ymax, p.y)};
+    view = {std::min(view.xmin, p.x), std::min(view.ymin, p.y), std::max(view.xmax, p.x),
+            std::max(view.ymax, p.y)};
   };
   for (std::size_t i = first; i < traj.size(); ++i) include(traj[i].truth.position());
   include(worlds::charger_body(world).center);
@@ -129,8 +134,10 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   auto outside = [&](const geom::Rect& r) {
     return r.xmax < reach.xmin || r.xmin > reach.xmax || r.ymax < reach.ymin || r.ymin > reach.ymax;
   };
-  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside), near.obstacles.end());
-  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside), near.unmapped.end());
+  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside),
+                       near.obstacles.end());
+  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside),
+                      near.unmapped.end());
   draw_floor(c, near);
   draw_obstacles(c, near, margin_shape(run.planner));
   draw_unmapped(c, near);
@@ -139,23 +146,28 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   const Vec2 along = dock.heading(), across{-along.y, along.x};
   const Vec2 a = dock.position() - 0.3 * along, b = dock.position();
   const double tol = o.dock_tolerance_m;
-  c.polyline({a + tol * across, b + tol * across, b - tol * across, a - tol * across, a + tol * across}, 1.5,
-             palette::kTolerance);
+  c.polyline(
+      {a + tol * across, b + tol * across, b - tol * across, a - tol * across, a + tol * across},
+      1.5, palette::kTolerance);
   draw_charger(c, world);
   draw_mapped_charger(c, world);
-  std::vector<sim::TrajectorySample> tail(traj.begin() + static_cast<std::ptrdiff_t>(first), traj.end());
+  std::vector<sim::TrajectorySample> tail(traj.begin() + static_cast<std::ptrdiff_t>(first),
+                                          traj.end());
   draw_trajectory_by_speed(c, tail, world.robot.max_speed_mps);
   if (run.error_measured) draw_footprint(c, world.robot, run.measured_pose, palette::kRobot, 2.0);
   c.clear_clip();
   c.set_transform(PixelTransform{});
-  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0, palette::kAxis);
+  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
+                   palette::kAxis);
   char head[160];
-  std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f cm)", o.close_up_m, 100 * tol);
+  std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f cm)", o.close_up_m,
+                100 * tol);
   fig.text(head, box.left, box.top + 12, 13, palette::kAxis, Anchor::kLeft, true);
   char foot[160], gate[80];
   if (run.error_measured)
-    std::snprintf(foot, sizeof foot, "%s: %.1f cm, %.1f deg off", run.charging ? "at contact" : "at the end",
-                  100 * run.position_error_m, run.heading_error_deg);
+    std::snprintf(foot, sizeof foot, "%s: %.1f cm, %.1f deg off",
+                  run.charging ? "at contact" : "at the end", 100 * run.position_error_m,
+                  run.heading_error_deg);
   else
     std::snprintf(foot, sizeof foot, "no docking error measured");
   std::snprintf(gate, sizeof gate, "gates: %.0f cm, %.0f deg", 100 * tol, o.dock_tolerance_deg);
@@ -166,8 +178,9 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
 
 }  // namespace
 
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& o,
-                      PixelTransform* transform_out, FigureLayout* layout_out) {
+Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+                      const RunFigureOptions& o, PixelTransform* transform_out,
+                      FigureLayout* layout_out) {
   Figure fig(o.width_px, o.height_px);
   const double column = o.width_px - 300.0;  // the right column: colour bar, legend, close-up
   const PixelBox panel{70, 76, column - 30, o.height_px - 50.0};
@@ -175,7 +188,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   fig.clip_to_world(world.floor, t);
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
-  auto listed = [&](bool drawn, Rgb colour, const std::string& label, Swatch swatch = Swatch::kBar) {
+  auto listed = [&](bool drawn, Rgb colour, const std::string& label,
+                    Swatch swatch = Swatch::kBar) {
     if (drawn) legend.push_back({colour, label, swatch});
   };
   draw_floor(c, world);
@@ -185,11 +199,13 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation,
          shape == MarginShape::kRound ? "rounded margin" : "margin");
   listed(draw_unmapped(c, world), palette::kUnmapped, "not on map");
-  listed(draw_graph(c, o.graph_edges), palette::kGraph, searches_a_mesh(run.planner) ? "mesh portals" : "graph");
+  listed(draw_graph(c, o.graph_edges), palette::kGraph,
+         searches_a_mesh(run.planner) ? "mesh portals" : "graph");
   if (!run.moving_tracks.empty())
     listed(draw_moving_tracks(c, run.moving_tracks), palette::kMoving, "moving (swept)");
   else
-    listed(draw_moving(c, world, run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s, run.moving_final),
+    listed(draw_moving(c, world, run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s,
+                       run.moving_final),
            palette::kMoving, "moving");
   for (const LegendEntry& e : draw_walks_before_answer(c, run)) listed(true, e.colour, e.label);
   listed(draw_target(c, world, run.trajectory), palette::kTarget, "target");
@@ -201,7 +217,8 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
     legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
   // The plans over the driven path, thin, so that neither hides the other.
   const bool replanned = run.replans > 0 && run.plan != run.first_plan;
-  listed(replanned && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan), palette::kFirstPlan, "first plan", Swatch::kDashed);
+  listed(replanned && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan),
+         palette::kFirstPlan, "first plan", Swatch::kDashed);
   listed(draw_plan(c, run.plan, palette::kPlan), palette::kPlan, replanned ? "final plan" : "plan");
   const auto [scan, scan_off] = draw_scan(c, run.last_scan);
   listed(scan, palette::kScan, "last scan");
@@ -210,16 +227,21 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(draw_tracked(c, run.tracked_final), palette::kTracked, "tracked", Swatch::kOutline);
   draw_events(c, run.events);
   using Kind = sim::EpisodeResult::Event::Kind;
-  for (const auto& named : {std::pair{Kind::kStop, "stop"}, {Kind::kReplan, "replan"}, {Kind::kRetry, "retry"},
-                            {Kind::kRecovery, "recovery"}, {Kind::kCollision, "collision"},
+  for (const auto& named : {std::pair{Kind::kStop, "stop"},
+                            {Kind::kReplan, "replan"},
+                            {Kind::kRetry, "retry"},
+                            {Kind::kRecovery, "recovery"},
+                            {Kind::kCollision, "collision"},
                             {Kind::kFailure, "failure"}}) {
     const Kind kind = named.first;
-    listed(std::any_of(run.events.begin(), run.events.end(), [&](const auto& e) { return e.kind == kind; }),
+    listed(std::any_of(run.events.begin(), run.events.end(),
+                       [&](const auto& e) { return e.kind == kind; }),
            event_colour(kind), named.second, Swatch::kRing);
   }
   draw_start(c, world);
   listed(true, palette::kStart, "start", Swatch::kDot);
-  if (!run.trajectory.empty()) draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot, 2.0);
+  if (!run.trajectory.empty())
+    draw_footprint(c, world.robot, run.trajectory.back().truth, palette::kRobot, 2.0);
   draw_charger(c, world);
   listed(true, palette::kCharger, "charger");
   listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger", Swatch::kOutline);
@@ -231,12 +253,14 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   if (!o.setting.empty()) title += "  |  " + o.setting;
   if (run.failure) {
     char failed[120];
-    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s", std::string(robot::to_string(run.failure->reason)).c_str(),
-                  run.failure->time_s);
+    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s",
+                  std::string(robot::to_string(run.failure->reason)).c_str(), run.failure->time_s);
     title += failed;
   }
-  fig.text_fitted(o.title.empty() ? title : o.title, 70, 26, 18, palette::kAxis, o.width_px - 90.0, true);
-  fig.text_fitted(result_line(run) + "  |  " + length_line(run), 70, 46, 13, palette::kAxis, o.width_px - 90.0);
+  fig.text_fitted(o.title.empty() ? title : o.title, 70, 26, 18, palette::kAxis, o.width_px - 90.0,
+                  true);
+  fig.text_fitted(result_line(run) + "  |  " + length_line(run), 70, 46, 13, palette::kAxis,
+                  o.width_px - 90.0);
   fig.colour_bar({column, 96, column + 240, 108}, 0.0, world.robot.max_speed_mps,
                  "speed (m/s), 0 to the robot's maximum");
   const int legend_columns = legend.size() > 9 ? 2 : 1;
@@ -248,19 +272,22 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
       !run.trajectory.empty() &&
       (std::any_of(run.trajectory.begin(), run.trajectory.end(),
                    [](const auto& s) {
-                     return s.phase != controller::DockPhase::kTravel && s.phase != controller::DockPhase::kFailed;
+                     return s.phase != controller::DockPhase::kTravel &&
+                            s.phase != controller::DockPhase::kFailed;
                    }) ||
        geom::distance(run.trajectory.back().truth.position(), world.charger.position()) < 3.0);
   if (near_dock && !world.target && inset_top + 150 < o.height_px)
-    draw_docking_inset(fig, world, run, o, {column, inset_top, o.width_px - 20.0, o.height_px - 52.0});
+    draw_docking_inset(fig, world, run, o,
+                       {column, inset_top, o.width_px - 20.0, o.height_px - 52.0});
   if (transform_out) *transform_out = t;
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;
 }
 
-void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const std::string& path,
-                      const RunFigureOptions& options, const PngSettings& png) {
+void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+                      const std::string& path, const RunFigureOptions& options,
+                      const PngSettings& png) {
   write_png(draw_run_figure(world, run, options), path, png);
 }
 
@@ -272,9 +299,12 @@ std::vector<Figure::Band> phase_bands(const std::vector<sim::TrajectorySample>& 
   using controller::DockPhase;
   auto kind = [](DockPhase p) {
     switch (p) {
-      case DockPhase::kTravel: return 0;
-      case DockPhase::kBackOff: return 2;
-      default: return 1;
+      case DockPhase::kTravel:
+        return 0;
+      case DockPhase::kBackOff:
+        return 2;
+      default:
+        return 1;
     }
   };
   const Rgb colours[3] = {palette::kPhaseTravel, palette::kPhaseDocking, palette::kPhaseBackOff};
@@ -293,8 +323,8 @@ std::vector<Figure::Band> phase_bands(const std::vector<sim::TrajectorySample>& 
 
 }  // namespace
 
-Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px, int height_px,
-                      FigureLayout* layout_out) {
+Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px,
+                      int height_px, FigureLayout* layout_out) {
   Figure fig(width_px, height_px);
   std::vector<double> t, cross, speed, distance, loc_error, loc_bound;
   for (const auto& s : run.trajectory) {
@@ -306,7 +336,8 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
     speed.push_back(s.speed_mps);
     distance.push_back(geom::distance(s.truth.position(), world.charger.position()));
   }
-  fig.text(world.name + "  |  " + method_label(run), 70, 24, 16, palette::kAxis, Anchor::kLeft, true);
+  fig.text(world.name + "  |  " + method_label(run), 70, 24, 16, palette::kAxis, Anchor::kLeft,
+           true);
   fig.text(result_line(run), 70, 44, 13, palette::kAxis);
   const std::vector<Figure::Band> bands = phase_bands(run.trajectory);
   // Each plot's title sits above it, its tick numbers below: 56 px between plots holds both.
@@ -318,20 +349,25 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
   first.legend = true;
   first.min_y_span = 1.0;
   first.note = "no travel";
-  fig.plot(box(0), {{t, cross, palette::kTrajectory, "cross-track"}}, "Cross-track error while travelling", "cm", first);
+  fig.plot(box(0), {{t, cross, palette::kTrajectory, "cross-track"}},
+           "Cross-track error while travelling", "cm", first);
   Figure::PlotOptions plain;
   plain.bands = bands;
   plain.min_y_span = 0.1;
   fig.plot(box(1), {{t, speed, palette::kTrajectory, "speed"}}, "Speed", "m/s", plain);
-  fig.plot(box(2), {{t, distance, palette::kTrajectory, "distance"}}, "Distance to the charger", "m", plain);
+  fig.plot(box(2), {{t, distance, palette::kTrajectory, "distance"}}, "Distance to the charger",
+           "m", plain);
   std::vector<Figure::Series> loc = {{t, loc_error, palette::kTrajectory, "error"}};
-  if (run.perception_mode == "sensors") loc.push_back({t, loc_bound, palette::kPlan, "2-sigma bound"});
+  if (run.perception_mode == "sensors")
+    loc.push_back({t, loc_bound, palette::kPlan, "2-sigma bound"});
   Figure::PlotOptions last = plain;
   last.x_label = "time (s)";
   last.legend = true;
   last.min_y_span = 1.0;
-  fig.plot(box(3), loc,
-           "Localisation error" + std::string(run.perception_mode == "sensors" ? "" : " (oracle mode)"), "cm", last);
+  fig.plot(
+      box(3), loc,
+      "Localisation error" + std::string(run.perception_mode == "sensors" ? "" : " (oracle mode)"),
+      "cm", last);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

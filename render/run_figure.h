@@ -21,24 +21,26 @@ struct RunFigureOptions {
   double footprint_every_s = 10.0;
   std::vector<std::pair<Vec2, Vec2>> graph_edges;  ///< drawn thin under the plan, if given
   std::string title;                               ///< default: world, method and setting
-  std::string setting;                             ///< named in the default title ("config noisy.json")
-  double dock_tolerance_m = 0.02;                  ///< drawn in the docking close-up
+  std::string setting;             ///< named in the default title ("config noisy.json")
+  double dock_tolerance_m = 0.02;  ///< drawn in the docking close-up
   double dock_tolerance_deg = 2.0;
-  double close_up_m = 1.5;                         ///< the close-up shows this much of the last path
+  double close_up_m = 1.5;  ///< the close-up shows this much of the last path
 };
 
 /// "planner vg", or "potential-field (reference plan: vg)".
 std::string method_label(const sim::EpisodeResult& run);
 
 /// Draws the run; `transform` receives the world-to-pixel mapping of the map panel.
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const RunFigureOptions& options = {},
-                      PixelTransform* transform = nullptr, FigureLayout* layout = nullptr);
-void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run, const std::string& path,
-                      const RunFigureOptions& options = {}, const PngSettings& png = {});
+Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+                      const RunFigureOptions& options = {}, PixelTransform* transform = nullptr,
+                      FigureLayout* layout = nullptr);
+void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+                      const std::string& path, const RunFigureOptions& options = {},
+                      const PngSettings& png = {});
 
 /// Cross-track error, speed and distance to the charger against time, stacked.
-Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px = 1280,
-                      int height_px = 1000, FigureLayout* layout = nullptr);
+Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
+                      int width_px = 1280, int height_px = 1000, FigureLayout* layout = nullptr);
 
 /// One-line result for titles: "docked, error 0.4 cm / 0.1 deg, 0 collisions, 0 retries, 172.8 s"
 /// ("error n/a" where no docking error was measured: a pursuit, a run that never set off).

@@ -13,15 +13,18 @@ namespace {
 
 std::string decade_label(double v) {
   char buf[32];
-  if (v >= 1) std::snprintf(buf, sizeof buf, "%.0f", v);
-  else std::snprintf(buf, sizeof buf, "%g", v);
+  if (v >= 1)
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  else
+    std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 
 }  // namespace
 
-Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title, const std::string& subtitle,
-                         const std::string& x_label, const std::string& y_label, int width_px, int height_px,
+Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title,
+                         const std::string& subtitle, const std::string& x_label,
+                         const std::string& y_label, int width_px, int height_px,
                          FigureLayout* layout_out) {
   Figure fig(width_px, height_px);
   fig.text_fitted(title, 20, 28, 18, palette::kAxis, width_px - 40.0, true);
@@ -34,8 +37,10 @@ Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::st
         ylo = std::min(ylo, s.cost[i]), yhi = std::max(yhi, s.cost[i]);
       }
   if (!(xhi > 0)) xlo = 1, xhi = 10, ylo = 1, yhi = 10;
-  const double lx0 = std::floor(std::log10(xlo)), lx1 = std::max(lx0 + 1, std::ceil(std::log10(xhi)));
-  const double ly0 = std::floor(std::log10(ylo)), ly1 = std::max(ly0 + 1, std::ceil(std::log10(yhi)));
+  const double lx0 = std::floor(std::log10(xlo)),
+               lx1 = std::max(lx0 + 1, std::ceil(std::log10(xhi)));
+  const double ly0 = std::floor(std::log10(ylo)),
+               ly1 = std::max(ly0 + 1, std::ceil(std::log10(yhi)));
   const PixelBox box{90, 100, width_px - 40.0, height_px - 70.0};
   auto px = [&](double x, double y) {
     return Vec2{box.left + box.width() * (std::log10(x) - lx0) / (lx1 - lx0),
@@ -47,29 +52,36 @@ Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::st
       const double v = m * std::pow(10.0, d);
       if (std::log10(v) > lx1 + 1e-9) break;
       const double x = px(v, std::pow(10.0, ly0)).x;
-      c.pixel_line({x, box.top}, {x, box.bottom}, 1.0, m == 1.0 ? Rgb{200, 200, 200} : palette::kGrid);
-      if (m == 1.0) fig.text(decade_label(v), x, box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
+      c.pixel_line({x, box.top}, {x, box.bottom}, 1.0,
+                   m == 1.0 ? Rgb{200, 200, 200} : palette::kGrid);
+      if (m == 1.0)
+        fig.text(decade_label(v), x, box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
     }
   for (double d = ly0; d <= ly1 + 1e-9; ++d)
     for (double m : {1.0, 2.0, 5.0}) {
       const double v = m * std::pow(10.0, d);
       if (std::log10(v) > ly1 + 1e-9) break;
       const double y = px(std::pow(10.0, lx0), v).y;
-      c.pixel_line({box.left, y}, {box.right, y}, 1.0, m == 1.0 ? Rgb{200, 200, 200} : palette::kGrid);
-      if (m == 1.0) fig.text(decade_label(v), box.left - 7, y + 4, 12, palette::kAxis, Anchor::kRight);
+      c.pixel_line({box.left, y}, {box.right, y}, 1.0,
+                   m == 1.0 ? Rgb{200, 200, 200} : palette::kGrid);
+      if (m == 1.0)
+        fig.text(decade_label(v), box.left - 7, y + 4, 12, palette::kAxis, Anchor::kRight);
     }
   c.pixel_line({box.left, box.bottom}, {box.right, box.bottom}, 1.0, palette::kAxis);
   c.pixel_line({box.left, box.bottom}, {box.left, box.top}, 1.0, palette::kAxis);
-  fig.text(x_label + " (log scale)", 0.5 * (box.left + box.right), box.bottom + 36, 13, palette::kAxis, Anchor::kCenter);
+  fig.text(x_label + " (log scale)", 0.5 * (box.left + box.right), box.bottom + 36, 13,
+           palette::kAxis, Anchor::kCenter);
   fig.text(y_label + " (log scale)", box.left, box.top - 10, 13, palette::kAxis);
-  static const Rgb kColours[] = {palette::kOkabeBlue, palette::kOkabeVermillion, palette::kOkabeBluishGreen,
-                                 palette::kOkabeReddishPurple, palette::kOkabeOrange};
+  static const Rgb kColours[] = {palette::kOkabeBlue, palette::kOkabeVermillion,
+                                 palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
+                                 palette::kOkabeOrange};
   std::vector<LegendEntry> legend;
   for (std::size_t k = 0; k < series.size(); ++k) {
     const Rgb colour = kColours[k % 5];
     std::vector<Vec2> pts;
     for (std::size_t i = 0; i < series[k].size.size() && i < series[k].cost.size(); ++i)
-      if (series[k].size[i] > 0 && series[k].cost[i] > 0) pts.push_back(px(series[k].size[i], series[k].cost[i]));
+      if (series[k].size[i] > 0 && series[k].cost[i] > 0)
+        pts.push_back(px(series[k].size[i], series[k].cost[i]));
     if (pts.empty()) continue;
     c.pixel_polyline(pts, 2.2, colour);
     for (const Vec2& p : pts) c.pixel_line({p.x - 4, p.y}, {p.x + 4, p.y}, 8.0, colour);

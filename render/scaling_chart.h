@@ -14,8 +14,9 @@ struct ScalingSeries {
   std::vector<double> size, cost;  ///< positive; points where either is not are left out
 };
 
-Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title, const std::string& subtitle,
-                         const std::string& x_label, const std::string& y_label, int width_px = 1100, int height_px = 700,
+Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title,
+                         const std::string& subtitle, const std::string& x_label,
+                         const std::string& y_label, int width_px = 1100, int height_px = 700,
                          FigureLayout* layout = nullptr);
 
 }  // namespace plantsim::render

@@ -17,14 +17,20 @@ std::vector<char32_t> decode_utf8(const std::string& s) {
   std::vector<char32_t> out;
   for (std::size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
-    const int extra = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : -1;
-    if (extra < 0 || i + static_cast<std::size_t>(extra) >= s.size() + (extra == 0 ? 1 : 0)) {  // bad or cut short
+    const int extra = c < 0x80           ? 0
+                      : (c >> 5) == 0x6  ? 1
+                      : (c >> 4) == 0xE  ? 2
+                      : (c >> 3) == 0x1E ? 3
+                                         : -1;
+    if (extra < 0 || i + static_cast<std::size_t>(extra) >=
+                         s.size() + (extra == 0 ? 1 : 0)) {  // bad or cut short
       out.push_back(0xFFFD);
       ++i;
       continue;
     }
     char32_t code = extra == 0 ? c : c & (0x3F >> extra);
-    for (int k = 1; k <= extra; ++k) code = (code << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
+    for (int k = 1; k <= extra; ++k)
+      code = (code << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
     out.push_back(code);
     i += extra + 1;
   }
@@ -49,7 +55,8 @@ TextRenderer::TextRenderer() : faces_(std::make_unique<Faces>()) {
   for (bool bold : {false, true}) {
     FT_Face& face = bold ? faces_->bold : faces_->regular;
     if (FT_New_Face(faces_->library, font_path(bold).c_str(), 0, &face))
-      throw std::runtime_error("font " + font_path(bold) + " is missing: install the Debian package fonts-dejavu-core");
+      throw std::runtime_error("font " + font_path(bold) +
+                               " is missing: install the Debian package fonts-dejavu-core");
   }
 }
 
@@ -75,13 +82,14 @@ const TextRenderer::Glyph& TextRenderer::glyph(char32_t code, int size_px, bool 
     g.advance = static_cast<int>(slot->advance.x >> 6);
     g.alpha.resize(static_cast<std::size_t>(g.width) * g.rows);
     for (int r = 0; r < g.rows; ++r)
-      std::copy_n(slot->bitmap.buffer + r * slot->bitmap.pitch, g.width, g.alpha.begin() + static_cast<std::ptrdiff_t>(r) * g.width);
+      std::copy_n(slot->bitmap.buffer + r * slot->bitmap.pitch, g.width,
+                  g.alpha.begin() + static_cast<std::ptrdiff_t>(r) * g.width);
   }
   return cache_.emplace(key, std::move(g)).first->second;
 }
 
-TextBox TextRenderer::layout(const std::string& text, int x, int baseline_y, int size_px, Anchor anchor, bool bold,
-                             Image* image, Rgb colour) {
+TextBox TextRenderer::layout(const std::string& text, int x, int baseline_y, int size_px,
+                             Anchor anchor, bool bold, Image* image, Rgb colour) {
   const auto codes = decode_utf8(text);
   int width = 0;
   for (char32_t c : codes) width += glyph(c, size_px, bold).advance;
@@ -92,8 +100,8 @@ TextBox TextRenderer::layout(const std::string& text, int x, int baseline_y, int
     const Glyph& g = glyph(c, size_px, bold);
     const int gx = pen + g.left, gy = baseline_y - g.top;
     if (g.width > 0 && g.rows > 0) {
-      box = any ? TextBox{std::min(box.x0, gx), std::min(box.y0, gy), std::max(box.x1, gx + g.width),
-                          std::max(box.y1, gy + g.rows)}
+      box = any ? TextBox{std::min(box.x0, gx), std::min(box.y0, gy),
+                          std::max(box.x1, gx + g.width), std::max(box.y1, gy + g.rows)}
                 : TextBox{gx, gy, gx + g.width, gy + g.rows};
       any = true;
     }
@@ -116,12 +124,13 @@ TextBox TextRenderer::layout(const std::string& text, int x, int baseline_y, int
   return box;
 }
 
-TextBox TextRenderer::draw(Image& image, const std::string& text, int x, int baseline_y, int size_px, Rgb colour,
-                           Anchor anchor, bool bold) {
+TextBox TextRenderer::draw(Image& image, const std::string& text, int x, int baseline_y,
+                           int size_px, Rgb colour, Anchor anchor, bool bold) {
   return layout(text, x, baseline_y, size_px, anchor, bold, &image, colour);
 }
 
-TextBox TextRenderer::measure(const std::string& text, int x, int baseline_y, int size_px, Anchor anchor, bool bold) {
+TextBox TextRenderer::measure(const std::string& text, int x, int baseline_y, int size_px,
+                              Anchor anchor, bool bold) {
   return layout(text, x, baseline_y, size_px, anchor, bold, nullptr, {});
 }
 

@@ -28,11 +28,11 @@ class TextRenderer {
 
   /// Draws UTF-8 `text` with its baseline at row `baseline_y`; `x` is the left end, centre or
   /// right end per `anchor`. Returns the box it covers.
-  TextBox draw(Image& image, const std::string& text, int x, int baseline_y, int size_px, Rgb colour,
-               Anchor anchor = Anchor::kLeft, bool bold = false);
+  TextBox draw(Image& image, const std::string& text, int x, int baseline_y, int size_px,
+               Rgb colour, Anchor anchor = Anchor::kLeft, bool bold = false);
   /// Width in pixels and the box the text would cover, without drawing.
-  TextBox measure(const std::string& text, int x, int baseline_y, int size_px, Anchor anchor = Anchor::kLeft,
-                  bool bold = false);
+  TextBox measure(const std::string& text, int x, int baseline_y, int size_px,
+                  Anchor anchor = Anchor::kLeft, bool bold = false);
 
   static std::string font_path(bool bold);
 
@@ -42,8 +42,8 @@ class TextRenderer {
     std::vector<std::uint8_t> alpha;
   };
   const Glyph& glyph(char32_t code, int size_px, bool bold);
-  TextBox layout(const std::string& text, int x, int baseline_y, int size_px, Anchor anchor, bool bold, Image* image,
-                 Rgb colour);
+  TextBox layout(const std::string& text, int x, int baseline_y, int size_px, Anchor anchor,
+                 bool bold, Image* image, Rgb colour);
 
   struct Faces;
   std::unique_ptr<Faces> faces_;

@@ -7,7 +7,8 @@ namespace plantsim::robot {
 
 std::span<const geom::Vec2> BeamDirections::in_world(const LidarScan& scan, double sensor_yaw) {
   const std::size_t n = scan.ranges.size();
-  if (sensor_frame_.size() != n || angle_min_ != scan.angle_min_rad || increment_ != scan.angle_increment_rad) {
+  if (sensor_frame_.size() != n || angle_min_ != scan.angle_min_rad ||
+      increment_ != scan.angle_increment_rad) {
     sensor_frame_.resize(n);
     for (std::size_t i = 0; i < n; ++i) sensor_frame_[i] = geom::unit_from_angle(scan.angle(i));
     angle_min_ = scan.angle_min_rad, increment_ = scan.angle_increment_rad;

@@ -9,19 +9,24 @@ namespace plantsim::robot {
 
 std::string_view to_string(LocalizationHealth h) {
   switch (h) {
-    case LocalizationHealth::kOk: return "ok";
-    case LocalizationHealth::kDegraded: return "degraded";
-    case LocalizationHealth::kLost: return "lost";
+    case LocalizationHealth::kOk:
+      return "ok";
+    case LocalizationHealth::kDegraded:
+      return "degraded";
+    case LocalizationHealth::kLost:
+      return "lost";
   }
   return "unknown";
 }
 
-EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose, const MapRaycaster& map)
+EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
+                           const MapRaycaster& map)
     : p_(params), map_(map) {
   x_ << initial_pose.x, initial_pose.y, initial_pose.yaw, 0.0;
   P_.setZero();
   P_.diagonal() << p_.initial_position_sigma_m * p_.initial_position_sigma_m,
-      p_.initial_position_sigma_m * p_.initial_position_sigma_m, p_.initial_yaw_sigma_rad * p_.initial_yaw_sigma_rad,
+      p_.initial_position_sigma_m * p_.initial_position_sigma_m,
+      p_.initial_yaw_sigma_rad * p_.initial_yaw_sigma_rad,
       p_.initial_bias_sigma_radps * p_.initial_bias_sigma_radps;
 }
 
@@ -67,15 +72,20 @@ void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double
 
 void EkfLocalizer::update_health() {
   const double sigma = position_sigma_m();
-  if (sigma > p_.lost_position_sigma_m || failed_matches_ >= p_.lost_failed_matches) health_ = LocalizationHealth::kLost;
-  else if (sigma > p_.ok_position_sigma_m || inconsistent_ || failed_matches_ >= 5) health_ = LocalizationHealth::kDegraded;
-  else health_ = LocalizationHealth::kOk;
+  if (sigma > p_.lost_position_sigma_m || failed_matches_ >= p_.lost_failed_matches)
+    health_ = LocalizationHealth::kLost;
+  else if (sigma > p_.ok_position_sigma_m || inconsistent_ || failed_matches_ >= 5)
+    health_ = LocalizationHealth::kDegraded;
+  else
+    health_ = LocalizationHealth::kOk;
 }
 
 void EkfLocalizer::record_nis(double nis, int dof) {
   const std::size_t window = static_cast<std::size_t>(std::max(1, p_.nis_window));
-  if (nis_.size() < window) nis_.emplace_back(nis, dof);
-  else nis_[nis_next_] = {nis, dof};
+  if (nis_.size() < window)
+    nis_.emplace_back(nis, dof);
+  else
+    nis_[nis_next_] = {nis, dof};
   nis_next_ = (nis_next_ + 1) % window;
   double sum = 0;
   int k = 0;
@@ -128,7 +138,8 @@ constexpr double kYawLever_m = 1.0;
 /// `sigma_m` (positions in metres, yaw at kYawLever_m); returns how many there are.
 int keep_constrained(Eigen::Matrix4d& info, Eigen::Vector4d& gradient, double sigma_m) {
   const Eigen::Vector3d scale(1.0, 1.0, 1.0 / kYawLever_m);
-  const Eigen::Matrix3d scaled = scale.asDiagonal() * info.topLeftCorner<3, 3>() * scale.asDiagonal();
+  const Eigen::Matrix3d scaled =
+      scale.asDiagonal() * info.topLeftCorner<3, 3>() * scale.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(scaled);
   Eigen::Matrix3d projector = Eigen::Matrix3d::Zero();
   int kept = 0;
@@ -140,7 +151,8 @@ int keep_constrained(Eigen::Matrix4d& info, Eigen::Vector4d& gradient, double si
   // Back to the state's units (the scaling is diagonal: info = D^-1 info' D^-1, g = D^-1 g').
   const Eigen::Matrix3d kept_scaled = projector * scaled * projector;
   info.setZero();
-  info.topLeftCorner<3, 3>() = scale.cwiseInverse().asDiagonal() * kept_scaled * scale.cwiseInverse().asDiagonal();
+  info.topLeftCorner<3, 3>() =
+      scale.cwiseInverse().asDiagonal() * kept_scaled * scale.cwiseInverse().asDiagonal();
   Eigen::Vector3d g = scale.asDiagonal() * gradient.head<3>();
   g = projector * g;
   gradient.setZero();
@@ -169,7 +181,8 @@ double EkfLocalizer::correct(const LidarScan& scan) {
   // near the answer: a beam that a centimetre of error sends past a box's edge at 17 m would
   // otherwise pull every later step (test_perception's consistency test sees it).
   const std::size_t n = scan.ranges.size();
-  const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1, p_.beams_used)));
+  const std::size_t stride =
+      std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1, p_.beams_used)));
   struct Face {
     std::size_t beam;
     geom::Vec2 point, normal;  // a point on the mapped face and its outward normal
@@ -184,7 +197,8 @@ double EkfLocalizer::correct(const LidarScan& scan) {
     map_.cast_fan(matched_from.position(), fan_, matched_from.yaw + scan.angle(0),
                   static_cast<double>(stride) * scan.angle_increment_rad, scan.max_range_m, hits_);
     for (std::size_t k = 0; k < fan_.size(); ++k)
-      if (scan.valid(k * stride) && hits_[k]) faces.push_back({k * stride, hits_[k]->point, hits_[k]->normal});
+      if (scan.valid(k * stride) && hits_[k])
+        faces.push_back({k * stride, hits_[k]->point, hits_[k]->normal});
   };
   associate(x_);
 
@@ -224,7 +238,8 @@ double EkfLocalizer::correct(const LidarScan& scan) {
       const double innovation = scan.ranges[f.beam] - predicted;
       // Gate against the prior's spread, moved to this iterate.
       const double s = (H * P0 * H.transpose())(0, 0) + r_var;
-      const bool outlier = innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m);
+      const bool outlier =
+          innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m);
       // A return short of the mapped face: something the map lacks stands in front of it (a
       // box, a person). It neither confirms the map nor contradicts it (the beam model's
       // "unexpected object"); only a return from beyond a mapped face contradicts it. Counted

@@ -12,43 +12,48 @@
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
-#include <string_view>
 
 #include "geometry/vec2.h"
 #include "robot/beam_directions.h"
-#include "robot/readings.h"
 #include "robot/map_raycaster.h"
+#include "robot/readings.h"
 
 namespace plantsim::robot {
 
 struct EkfParams {
-  double initial_position_sigma_m = 0.05;   ///< uncertainty of the start pose the robot is given
+  double initial_position_sigma_m = 0.05;  ///< uncertainty of the start pose the robot is given
   double initial_yaw_sigma_rad = 0.02;
   double initial_bias_sigma_radps = 0.005;  ///< gyro bias, before any correction
-  double distance_noise = 0.02;             ///< std-dev of travel per metre travelled (encoders, slip)
-  double lateral_noise = 0.007;             ///< sideways skid per radian turned while moving (m/rad)
-  double gyro_noise_radps = 0.003;          ///< the gyro's white noise, as the filter assumes it
+  double distance_noise = 0.02;     ///< std-dev of travel per metre travelled (encoders, slip)
+  double lateral_noise = 0.007;     ///< sideways skid per radian turned while moving (m/rad)
+  double gyro_noise_radps = 0.003;  ///< the gyro's white noise, as the filter assumes it
   double bias_walk_radps_per_sqrt_s = 0.0002;
-  double range_sigma_m = 0.015;             ///< per beam (lidar noise plus map error)
-  int beams_used = 60;                      ///< beams per scan in the update, spread evenly
-  double gate_chi2 = 9.0;                   ///< beams whose innovation exceeds this (normalised) are outliers ...
-  double gate_floor_m = 0.25;               ///< ... unless within this of the map's range: an estimate too sure
-                                            ///< of itself (after a slip the wheels hid) must still be corrected
-  double min_incidence_cos = 0.25;          ///< beams grazing a surface more than this are skipped
+  double range_sigma_m = 0.015;  ///< per beam (lidar noise plus map error)
+  int beams_used = 60;           ///< beams per scan in the update, spread evenly
+  double gate_chi2 = 9.0;  ///< beams whose innovation exceeds this (normalised) are outliers ...
+  double gate_floor_m = 0.25;  ///< ... unless within this of the map's range: an estimate too sure
+                               ///< of itself (after a slip the wheels hid) must still be corrected
+  double min_incidence_cos = 0.25;  ///< beams grazing a surface more than this are skipped
   int iterations = 3;
-  int min_informative_beams = 10;           ///< fewer beams with a mapped surface ahead: the scan is no evidence
-  double constraint_sigma_m = 0.05;         ///< a direction the scan alone pins down less tightly is not updated
-  double degraded_inlier_fraction = 0.3;    ///< a scan confirming less than this share of the beams the map
-                                            ///< predicts (those read short of their face left out) is a failed match
-  double ok_position_sigma_m = 0.04;        ///< health ok only within this 1-sigma (10 cm is then 2.5 sigma)
-  double lost_position_sigma_m = 0.5;       ///< beyond this 1-sigma the localisation is lost
-  int nis_window = 15;                      ///< informative scans whose normalised innovations are summed
-  double nis_quantile_z = 3.09;             ///< that sum beyond the chi-square quantile of this z (0.999): inconsistent
-  int lost_failed_matches = 45;             ///< informative scans in a row the map contradicts (3 s at 15 Hz): lost
+  int min_informative_beams =
+      10;  ///< fewer beams with a mapped surface ahead: the scan is no evidence
+  double constraint_sigma_m =
+      0.05;  ///< a direction the scan alone pins down less tightly is not updated
+  double degraded_inlier_fraction =
+      0.3;  ///< a scan confirming less than this share of the beams the map
+            ///< predicts (those read short of their face left out) is a failed match
+  double ok_position_sigma_m =
+      0.04;  ///< health ok only within this 1-sigma (10 cm is then 2.5 sigma)
+  double lost_position_sigma_m = 0.5;  ///< beyond this 1-sigma the localisation is lost
+  int nis_window = 15;  ///< informative scans whose normalised innovations are summed
+  double nis_quantile_z =
+      3.09;  ///< that sum beyond the chi-square quantile of this z (0.999): inconsistent
+  int lost_failed_matches =
+      45;  ///< informative scans in a row the map contradicts (3 s at 15 Hz): lost
 };
 
 enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
@@ -100,14 +105,15 @@ class EkfLocalizer {
   State x_;
   Covariance P_;
   LocalizationHealth health_ = LocalizationHealth::kOk;
-  int failed_matches_ = 0;       // informative scans in a row the map did not explain
+  int failed_matches_ = 0;  // informative scans in a row the map did not explain
   bool informative_ = false;
   int constrained_ = 0;
   bool inconsistent_ = false;
   int inflations_ = 0;
-  std::vector<std::pair<double, int>> nis_;  // the window's normalised innovations and degrees of freedom
-  std::size_t nis_next_ = 0;                 // ring buffer position
-  BeamDirections directions_;                // scratch, reused scan to scan
+  std::vector<std::pair<double, int>>
+      nis_;                    // the window's normalised innovations and degrees of freedom
+  std::size_t nis_next_ = 0;   // ring buffer position
+  BeamDirections directions_;  // scratch, reused scan to scan
   std::vector<geom::Vec2> fan_;
   std::vector<std::optional<RayHit>> hits_;
 };

@@ -13,11 +13,11 @@
 namespace plantsim::robot {
 
 enum class FailureReason {
-  kCollision,             ///< touched an obstacle or a wall (success needs none)
-  kLocalizationLost,      ///< the estimate was lost, or far (> 0.25 m) from the truth, when it failed
-  kNoPath,                ///< the planner found no way (or start or goal blocked, or past its budget)
-  kBlocked,               ///< the way stayed blocked after its replans (or the back-off did)
-  kStuck,                 ///< no progress: it stopped moving (never settled, slipping on the spot)
+  kCollision,         ///< touched an obstacle or a wall (success needs none)
+  kLocalizationLost,  ///< the estimate was lost, or far (> 0.25 m) from the truth, when it failed
+  kNoPath,            ///< the planner found no way (or start or goal blocked, or past its budget)
+  kBlocked,           ///< the way stayed blocked after its replans (or the back-off did)
+  kStuck,             ///< no progress: it stopped moving (never settled, slipping on the spot)
   kDockRetriesExhausted,  ///< every allowed docking approach missed
   kUndockFailed,          ///< charged, but could not back out to the staging pose
   kTargetLost,            ///< a pursuit that never caught its target
@@ -25,10 +25,11 @@ enum class FailureReason {
   kTimeout,               ///< still making progress when the time ran out
 };
 inline constexpr std::array kAllFailureReasons{
-    FailureReason::kCollision,   FailureReason::kLocalizationLost, FailureReason::kNoPath,
-    FailureReason::kBlocked,     FailureReason::kStuck,            FailureReason::kDockRetriesExhausted,
-    FailureReason::kUndockFailed, FailureReason::kTargetLost,      FailureReason::kTrapped,
-    FailureReason::kTimeout};
+    FailureReason::kCollision,    FailureReason::kLocalizationLost,
+    FailureReason::kNoPath,       FailureReason::kBlocked,
+    FailureReason::kStuck,        FailureReason::kDockRetriesExhausted,
+    FailureReason::kUndockFailed, FailureReason::kTargetLost,
+    FailureReason::kTrapped,      FailureReason::kTimeout};
 
 std::string_view to_string(FailureReason r);
 /// The reason named `text` (as to_string writes it), or none.
@@ -43,9 +44,10 @@ struct GiveUp {
 /// The verdict on an episode that did not succeed.
 struct Failure {
   FailureReason reason = FailureReason::kTimeout;
-  double time_s = 0;       ///< when it happened (the first collision, the robot giving up, the last progress)
-  geom::Pose2 pose;        ///< the true pose then
-  std::string detail;      ///< one sentence more (the planner's status, the robot's own account)
+  double time_s =
+      0;  ///< when it happened (the first collision, the robot giving up, the last progress)
+  geom::Pose2 pose;    ///< the true pose then
+  std::string detail;  ///< one sentence more (the planner's status, the robot's own account)
 };
 
 }  // namespace plantsim::robot

@@ -9,7 +9,9 @@
 namespace plantsim::robot {
 namespace {
 
-std::int32_t cell_of(double x, double cell_m) { return static_cast<std::int32_t>(std::floor(x / cell_m)); }
+std::int32_t cell_of(double x, double cell_m) {
+  return static_cast<std::int32_t>(std::floor(x / cell_m));
+}
 
 }  // namespace
 
@@ -25,7 +27,8 @@ geom::Vec2 LocalObstacleLayer::centre(Key k) const {
   return {(ix + 0.5) * p_.cell_m, (iy + 0.5) * p_.cell_m};
 }
 
-void LocalObstacleLayer::update(const LidarScan& scan, const geom::Pose2& sensor, const std::vector<geom::Vec2>& marks) {
+void LocalObstacleLayer::update(const LidarScan& scan, const geom::Pose2& sensor,
+                                const std::vector<geom::Vec2>& marks) {
   if (!p_.enabled || scan.ranges.empty()) return;
   // Clearing first, so that this scan's own returns are not undone by it: a cell whose centre
   // the nearest beam passes by more than a cell's length is seen free.
@@ -35,15 +38,18 @@ void LocalObstacleLayer::update(const LidarScan& scan, const geom::Pose2& sensor
     const double d = geom::norm(rel);
     bool seen_free = false;
     if (d >= scan.min_range_m && d <= p_.clear_range_m && scan.angle_increment_rad > 0) {
-      const long beam = std::lround((std::atan2(rel.y, rel.x) - scan.angle_min_rad) / scan.angle_increment_rad);
+      const long beam =
+          std::lround((std::atan2(rel.y, rel.x) - scan.angle_min_rad) / scan.angle_increment_rad);
       if (beam >= 0 && beam < n) {
         const double r = scan.ranges[static_cast<std::size_t>(beam)];
         seen_free = !std::isnan(r) && r >= d + p_.cell_m;  // a max-range reading passes everything
       }
     }
     if (seen_free) it->second.evidence -= p_.clear_evidence;
-    if (it->second.evidence <= 0) it = evidence_.erase(it);
-    else ++it;
+    if (it->second.evidence <= 0)
+      it = evidence_.erase(it);
+    else
+      ++it;
   }
   std::unordered_set<Key> marked;  // one mark per cell and scan, however many beams hit it
   for (const geom::Vec2& m : marks) {
@@ -51,8 +57,8 @@ void LocalObstacleLayer::update(const LidarScan& scan, const geom::Pose2& sensor
     if (!marked.insert(k).second) continue;
     Cell& c = evidence_[k];
     c.evidence = std::min(p_.max_evidence, c.evidence + p_.mark_evidence);
-    c.marks = {std::min(c.marks.xmin, m.x), std::min(c.marks.ymin, m.y), std::max(c.marks.xmax, m.x),
-               std::max(c.marks.ymax, m.y)};
+    c.marks = {std::min(c.marks.xmin, m.x), std::min(c.marks.ymin, m.y),
+               std::max(c.marks.xmax, m.x), std::max(c.marks.ymax, m.y)};
   }
 }
 
@@ -66,7 +72,8 @@ std::vector<geom::Rect> LocalObstacleLayer::occupied() const {
     rows[cell_of(c.y, p_.cell_m)].push_back({cell_of(c.x, p_.cell_m), cell.marks});
   }
   auto join = [](const geom::Rect& a, const geom::Rect& b) {
-    return geom::Rect{std::min(a.xmin, b.xmin), std::min(a.ymin, b.ymin), std::max(a.xmax, b.xmax), std::max(a.ymax, b.ymax)};
+    return geom::Rect{std::min(a.xmin, b.xmin), std::min(a.ymin, b.ymin), std::max(a.xmax, b.xmax),
+                      std::max(a.ymax, b.ymax)};
   };
   struct Open {
     std::int32_t x0, x1, y0, y1;
@@ -79,7 +86,8 @@ std::vector<geom::Rect> LocalObstacleLayer::occupied() const {
     for (std::size_t i = 0; i < xs.size();) {
       std::size_t j = i;
       geom::Rect extent = xs[i].second;
-      while (j + 1 < xs.size() && xs[j + 1].first == xs[j].first + 1) extent = join(extent, xs[++j].second);
+      while (j + 1 < xs.size() && xs[j + 1].first == xs[j].first + 1)
+        extent = join(extent, xs[++j].second);
       Open run{xs[i].first, xs[j].first, iy, iy, extent};
       for (auto o = open.begin(); o != open.end(); ++o)
         if (o->x0 == run.x0 && o->x1 == run.x1 && o->y1 + 1 == iy) {

@@ -18,12 +18,13 @@ namespace plantsim::robot {
 
 struct ObstacleLayerParams {
   bool enabled = true;
-  double cell_m = 0.1;         ///< grid cell side
-  int mark_evidence = 2;       ///< evidence a return adds to its cell (once per scan)
-  int clear_evidence = 1;      ///< evidence a beam reaching past the cell removes
-  int occupied_evidence = 3;   ///< a cell counts from this much evidence (two scans agreeing)
-  int max_evidence = 6;        ///< cap: a cell seen free in this many scans is gone
-  double clear_range_m = 8.0;  ///< cells farther from the sensor are not cleared (a beam is wider there)
+  double cell_m = 0.1;        ///< grid cell side
+  int mark_evidence = 2;      ///< evidence a return adds to its cell (once per scan)
+  int clear_evidence = 1;     ///< evidence a beam reaching past the cell removes
+  int occupied_evidence = 3;  ///< a cell counts from this much evidence (two scans agreeing)
+  int max_evidence = 6;       ///< cap: a cell seen free in this many scans is gone
+  double clear_range_m =
+      8.0;  ///< cells farther from the sensor are not cleared (a beam is wider there)
 };
 
 class LocalObstacleLayer {
@@ -31,7 +32,8 @@ class LocalObstacleLayer {
   explicit LocalObstacleLayer(ObstacleLayerParams params) : p_(params) {}
   /// One scan: `marks` are the returns to remember (map frame), `sensor` the pose the scan was
   /// placed with; every beam of `scan` that reaches past a remembered cell clears it a little.
-  void update(const LidarScan& scan, const geom::Pose2& sensor, const std::vector<geom::Vec2>& marks);
+  void update(const LidarScan& scan, const geom::Pose2& sensor,
+              const std::vector<geom::Vec2>& marks);
   /// The occupied cells merged into rectangles (runs along x, stacked along y), map frame; each
   /// is the bounding box of the returns that marked its cells (not the whole cells, which would
   /// grow every obstacle by up to a cell).

@@ -3,17 +3,18 @@
 
 #include <algorithm>
 
-
 namespace plantsim::robot {
 
 MapRaycaster::MapRaycaster(const worlds::World& map) : surfaces_(map) {}
 
-std::optional<RayHit> MapRaycaster::cast(geom::Vec2 from, double angle_rad, double max_range_m) const {
+std::optional<RayHit> MapRaycaster::cast(geom::Vec2 from, double angle_rad,
+                                         double max_range_m) const {
   return surfaces_.cast(from, geom::unit_from_angle(angle_rad), max_range_m);
 }
 
-void MapRaycaster::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
-                            double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
+void MapRaycaster::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions,
+                            double first_angle, double increment, double max_range_m,
+                            std::vector<std::optional<RayHit>>& hits) const {
   surfaces_.cast_fan(from, directions, first_angle, increment, max_range_m, hits);
 }
 
@@ -22,13 +23,18 @@ bool MapRaycaster::surface_near(geom::Vec2 point, double margin_m) const {
   // raster made once per margin answers most points; the grid settles the cells it cannot.
   if (!near_ || near_->margin_m() != margin_m) {
     const geom::Rect& a = surfaces_.grid().area();
-    const geom::Rect area{a.xmin - margin_m, a.ymin - margin_m, a.xmax + margin_m, a.ymax + margin_m};
-    near_ = std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area, std::max(0.05, 0.5 * margin_m));
+    const geom::Rect area{a.xmin - margin_m, a.ymin - margin_m, a.xmax + margin_m,
+                          a.ymax + margin_m};
+    near_ = std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area,
+                                               std::max(0.05, 0.5 * margin_m));
   }
   switch (near_->at(point)) {
-    case geom::NearRaster::Answer::kYes: return true;
-    case geom::NearRaster::Answer::kNo: return false;
-    case geom::NearRaster::Answer::kDepends: break;
+    case geom::NearRaster::Answer::kYes:
+      return true;
+    case geom::NearRaster::Answer::kNo:
+      return false;
+    case geom::NearRaster::Answer::kDepends:
+      break;
   }
   return surfaces_.grid().near(point, margin_m);
 }

@@ -23,12 +23,14 @@ class MapRaycaster {
   MapRaycaster(const MapRaycaster&) = delete;
   MapRaycaster& operator=(const MapRaycaster&) = delete;
 
-  /// Nearest mapped surface along the ray from `from` in direction `angle_rad`, within `max_range_m`.
+  /// Nearest mapped surface along the ray from `from` in direction `angle_rad`, within
+  /// `max_range_m`.
   std::optional<RayHit> cast(geom::Vec2 from, double angle_rad, double max_range_m) const;
   /// A fan of rays from `from` (unit directions[k] at angle first_angle + k * increment, to 1e-6
   /// rad): hits[k] as cast() finds along it, the boxes within reach visited once.
-  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
-                double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
+  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle,
+                double increment, double max_range_m,
+                std::vector<std::optional<RayHit>>& hits) const;
   /// True when some mapped surface lies within `margin_m` (per axis) of `point`.
   bool surface_near(geom::Vec2 point, double margin_m) const;
 

@@ -7,7 +7,8 @@
 
 namespace plantsim::robot {
 
-std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points, double gap_m) {
+std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
+                                                      double gap_m) {
   std::vector<std::vector<geom::Vec2>> out;
   for (const geom::Vec2& p : points) {
     if (out.empty() || geom::distance(out.back().back(), p) > gap_m) out.emplace_back();
@@ -17,7 +18,8 @@ std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Ve
   return out;
 }
 
-void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, geom::Vec2 sensor, double t_s) {
+void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, geom::Vec2 sensor,
+                             double t_s) {
   const double dt = std::max(t_s - last_t_s_, 0.0);
   last_t_s_ = t_s;
   for (Track& tr : tracks_) tr.position = tr.position + dt * tr.velocity;
@@ -28,14 +30,16 @@ void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, geom::V
   std::vector<Cluster> clusters;
   for (const auto& c : cluster_in_order(unexplained, p_.cluster_gap_m)) {
     geom::Rect b{c[0].x, c[0].y, c[0].x, c[0].y};
-    for (const geom::Vec2& q : c) b = {std::min(b.xmin, q.x), std::min(b.ymin, q.y), std::max(b.xmax, q.x), std::max(b.ymax, q.y)};
+    for (const geom::Vec2& q : c)
+      b = {std::min(b.xmin, q.x), std::min(b.ymin, q.y), std::max(b.xmax, q.x),
+           std::max(b.ymax, q.y)};
     // The thing goes on behind the face the lidar sees: grow the box away from the sensor.
     const geom::Vec2 away = b.center() - sensor;
     const double len = geom::norm(away);
     if (len > 0) {
       const geom::Vec2 back = (p_.assumed_depth_m / len) * away;
-      b = {std::min(b.xmin, b.xmin + back.x), std::min(b.ymin, b.ymin + back.y), std::max(b.xmax, b.xmax + back.x),
-           std::max(b.ymax, b.ymax + back.y)};
+      b = {std::min(b.xmin, b.xmin + back.x), std::min(b.ymin, b.ymin + back.y),
+           std::max(b.xmax, b.xmax + back.x), std::max(b.ymax, b.ymax + back.y)};
     }
     const double h = 0.5 * p_.min_size_m;
     clusters.push_back({b.center(), {std::max(0.5 * b.width(), h), std::max(0.5 * b.height(), h)}});
@@ -67,7 +71,8 @@ void ObstacleTracker::update(const std::vector<geom::Vec2>& unexplained, geom::V
     ++tr.hits;
   }
   for (std::size_t i = 0; i < clusters.size(); ++i)
-    if (!cluster_used[i]) tracks_.push_back({next_id_++, clusters[i].center, {0, 0}, clusters[i].half, t_s, 1});
+    if (!cluster_used[i])
+      tracks_.push_back({next_id_++, clusters[i].center, {0, 0}, clusters[i].half, t_s, 1});
   std::erase_if(tracks_, [&](const Track& tr) { return t_s - tr.last_seen_s > p_.forget_after_s; });
 }
 
@@ -78,7 +83,9 @@ std::vector<controller::MovingBox> ObstacleTracker::boxes(double t_s) const {
     const bool moving = tr.hits >= 3 && geom::norm(tr.velocity) >= p_.still_speed_mps;
     const geom::Vec2 v = moving ? tr.velocity : geom::Vec2{0, 0};
     const geom::Vec2 c = tr.position + std::max(t_s - last_t_s_, 0.0) * v;
-    out.push_back({{c.x - tr.half_extent.x, c.y - tr.half_extent.y, c.x + tr.half_extent.x, c.y + tr.half_extent.y}, v});
+    out.push_back({{c.x - tr.half_extent.x, c.y - tr.half_extent.y, c.x + tr.half_extent.x,
+                    c.y + tr.half_extent.y},
+                   v});
   }
   return out;
 }

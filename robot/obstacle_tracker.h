@@ -13,22 +13,24 @@
 namespace plantsim::robot {
 
 struct TrackerParams {
-  double unexplained_margin_m = 0.15;  ///< a return this much shorter than the map predicts is not the map
-  double range_m = 8.0;                ///< returns beyond this are not tracked
-  double cluster_gap_m = 0.3;          ///< neighbouring returns closer than this are one object
-  double association_gate_m = 0.8;     ///< a cluster this close to a track's prediction updates it
-  double alpha = 0.6;                  ///< position gain of the alpha-beta filter
-  double beta = 0.2;                   ///< velocity gain
-  double max_speed_mps = 3.0;          ///< velocities are clamped here
-  double still_speed_mps = 0.1;        ///< slower tracks are reported standing (face-centroid jitter)
-  double forget_after_s = 1.0;         ///< unseen this long: dropped (kept and predicted until then)
-  double min_size_m = 0.2;             ///< boxes are grown to at least this across
-  double assumed_depth_m = 0.5;        ///< ... and this far behind the face seen (the lidar sees one face of a thing)
+  double unexplained_margin_m =
+      0.15;                    ///< a return this much shorter than the map predicts is not the map
+  double range_m = 8.0;        ///< returns beyond this are not tracked
+  double cluster_gap_m = 0.3;  ///< neighbouring returns closer than this are one object
+  double association_gate_m = 0.8;  ///< a cluster this close to a track's prediction updates it
+  double alpha = 0.6;               ///< position gain of the alpha-beta filter
+  double beta = 0.2;                ///< velocity gain
+  double max_speed_mps = 3.0;       ///< velocities are clamped here
+  double still_speed_mps = 0.1;     ///< slower tracks are reported standing (face-centroid jitter)
+  double forget_after_s = 1.0;      ///< unseen this long: dropped (kept and predicted until then)
+  double min_size_m = 0.2;          ///< boxes are grown to at least this across
+  double assumed_depth_m =
+      0.5;  ///< ... and this far behind the face seen (the lidar sees one face of a thing)
 };
 
 struct Track {
   int id;
-  geom::Vec2 position;     ///< centre of the seen part, map frame
+  geom::Vec2 position;  ///< centre of the seen part, map frame
   geom::Vec2 velocity;
   geom::Vec2 half_extent;  ///< of the box reported
   double last_seen_s;
@@ -53,6 +55,7 @@ class ObstacleTracker {
 };
 
 /// Splits points in beam order into clusters wherever neighbours are more than `gap_m` apart.
-std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points, double gap_m);
+std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
+                                                      double gap_m);
 
 }  // namespace plantsim::robot

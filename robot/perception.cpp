@@ -12,17 +12,19 @@ namespace {
 
 // Oracle mode: moving obstacles within range, as boxes in the map frame, placed with the
 // robot's own (possibly wrong) pose estimate, with their scripted velocity.
-std::vector<controller::MovingBox> known_actors(const OracleReadings& o, const geom::Pose2& estimate, double range_m) {
+std::vector<controller::MovingBox> known_actors(const OracleReadings& o,
+                                                const geom::Pose2& estimate, double range_m) {
   std::vector<controller::MovingBox> out;
   const geom::Pose2 estimate_from_truth = geom::compose(estimate, geom::inverse(o.truth));
   for (const ActorState& a : o.actors) {
     const geom::Rect& b = a.box;
     if (controller::distance_to_box(o.truth.position(), b) > range_m) continue;
     geom::Rect seen{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (geom::Vec2 c : {geom::Vec2{b.xmin, b.ymin}, geom::Vec2{b.xmax, b.ymin}, geom::Vec2{b.xmax, b.ymax},
-                         geom::Vec2{b.xmin, b.ymax}}) {
+    for (geom::Vec2 c : {geom::Vec2{b.xmin, b.ymin}, geom::Vec2{b.xmax, b.ymin},
+                         geom::Vec2{b.xmax, b.ymax}, geom::Vec2{b.xmin, b.ymax}}) {
       const geom::Vec2 q = geom::compose(estimate_from_truth, geom::Pose2{c.x, c.y, 0}).position();
-      seen = {std::min(seen.xmin, q.x), std::min(seen.ymin, q.y), std::max(seen.xmax, q.x), std::max(seen.ymax, q.y)};
+      seen = {std::min(seen.xmin, q.x), std::min(seen.ymin, q.y), std::max(seen.xmax, q.x),
+              std::max(seen.ymax, q.y)};
     }
     out.push_back({seen, geom::rotate(a.velocity, estimate_from_truth.yaw)});
   }
@@ -30,7 +32,8 @@ std::vector<controller::MovingBox> known_actors(const OracleReadings& o, const g
 }
 
 // Oracle mode: the map's rectangles and walls within range, and the charger block.
-std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::Vec2 x, double range_m) {
+std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::Vec2 x,
+                                                double range_m) {
   std::vector<controller::FieldObstacle> out;
   auto add_if_near = [&](const geom::Rect& r) {
     if (geom::distance(x, geom::closest_point(r, x)) <= range_m) out.push_back({r, {0, 0}});
@@ -43,10 +46,17 @@ std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::
 
 }  // namespace
 
-std::string_view to_string(PerceptionMode m) { return m == PerceptionMode::kSensors ? "sensors" : "oracle"; }
+std::string_view to_string(PerceptionMode m) {
+  return m == PerceptionMode::kSensors ? "sensors" : "oracle";
+}
 
 Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
-    : map_(map), p_(params), raycaster_(map), ekf_(params.ekf, map.start, raycaster_), tracker_(params.tracker), layer_(params.layer) {
+    : map_(map),
+      p_(params),
+      raycaster_(map),
+      ekf_(params.ekf, map.start, raycaster_),
+      tracker_(params.tracker),
+      layer_(params.layer) {
   now_.pose = map.start;
   now_.odom_pose = map.start;
   odom_yaw_before_ = map.start.yaw;
@@ -66,7 +76,8 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   scan_view_ = {now_.pose, {}, {}};
   std::vector<geom::Vec2> unexplained, near_static;
   const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
-  const double explained_margin = std::max(p_.tracker.unexplained_margin_m, p_.explained_sigmas * p_.ekf.range_sigma_m);
+  const double explained_margin =
+      std::max(p_.tracker.unexplained_margin_m, p_.explained_sigmas * p_.ekf.range_sigma_m);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i];
@@ -88,7 +99,8 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   for (const geom::Vec2& q : unexplained) {
     bool on_mover = false;
     for (const auto& b : tracked)
-      on_mover |= geom::norm(b.velocity) > p_.moving_speed_mps && geom::in_closed_rect(b.box.inflated(p_.layer.cell_m), q);
+      on_mover |= geom::norm(b.velocity) > p_.moving_speed_mps &&
+                  geom::in_closed_rect(b.box.inflated(p_.layer.cell_m), q);
     if (!on_mover) marks.push_back(q);
   }
   layer_.update(scan, sensor, marks);
@@ -99,7 +111,8 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   for (const auto& cluster : cluster_in_order(near_static, p_.field_cluster_gap_m)) {
     const geom::Vec2* nearest = &cluster[0];
     for (const geom::Vec2& q : cluster)
-      if (geom::distance(q, now_.pose.position()) < geom::distance(*nearest, now_.pose.position())) nearest = &q;
+      if (geom::distance(q, now_.pose.position()) < geom::distance(*nearest, now_.pose.position()))
+        nearest = &q;
     static_field_.push_back({{nearest->x, nearest->y, nearest->x, nearest->y}, {0, 0}});
   }
 }
@@ -110,14 +123,17 @@ double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) cons
   int agree = 0, beams = 0;
   for (std::size_t i = 0; i < n; i += stride) {
     if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
-    const auto hit = raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
+    const auto hit =
+        raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
     // A return short of the mapped surface may be something the map lacks standing in front of
     // it (a box, a person): it neither confirms nor contradicts the pose. Only a beam that
     // passes where the map has a surface, or meets one where the map has none, contradicts.
     if (scan.valid(i) && hit && scan.ranges[i] < hit->range_m - p_.verify_tolerance_m) continue;
     ++beams;
-    if (!scan.valid(i)) agree += !hit;  // no return: right where the map has nothing in range
-    else if (hit) agree += std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
+    if (!scan.valid(i))
+      agree += !hit;  // no return: right where the map has nothing in range
+    else if (hit)
+      agree += std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
   }
   return beams > 0 ? static_cast<double>(agree) / beams : 0.0;
 }
@@ -182,7 +198,8 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   now_.bumper = r.bumper;
   if (r.scan) now_.scan = r.scan;
   odom_history_.emplace_back(r.t_s, r.odom_pose);
-  while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0) odom_history_.pop_front();
+  while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0)
+    odom_history_.pop_front();
 
   if (r.oracle) {
     now_.pose = r.oracle->pose_fix.value_or(r.odom_pose);
@@ -198,7 +215,8 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   }
 
   // Wheels that did not turn at all: the robot stands still and the gyro reads its own bias.
-  const bool wheels_still = r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
+  const bool wheels_still =
+      r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
   ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
   if (wheels_still) ekf_.standstill(r.gyro_yaw_rate_radps);
   // Moved without the wheels: a contact (the robot never touches anything but the charger's
@@ -227,7 +245,8 @@ const Perception& Perceiver::update(const SensorReadings& r) {
       turn_gap_.pop_front();
     }
   }
-  const bool turn_slip = turn_gap_time_ >= 0.5 * p_.slip_window_s && std::fabs(turn_gap_sum_) > p_.slip_turn_radps * turn_gap_time_;
+  const bool turn_slip = turn_gap_time_ >= 0.5 * p_.slip_window_s &&
+                         std::fabs(turn_gap_sum_) > p_.slip_turn_radps * turn_gap_time_;
   now_.slipping = correction > std::max(p_.slip_jump_m, 3.0 * predicted_sigma) || turn_slip;
   const bool unexplained = ekf_.failed_matches() >= 2;
   const bool became_unexplained = unexplained && failed_before < 2;
@@ -246,10 +265,13 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   now_.health = ekf_.health();
   const Eigen::Matrix3d covariance = ekf_.pose_covariance();
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) now_.pose_covariance[static_cast<std::size_t>(3 * i + j)] = covariance(i, j);
+    for (int j = 0; j < 3; ++j)
+      now_.pose_covariance[static_cast<std::size_t>(3 * i + j)] = covariance(i, j);
   if (r.target_in_robot) {
     // The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
-    const geom::Vec2 seen = geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0}).position();
+    const geom::Vec2 seen =
+        geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0})
+            .position();
     if (!now_.target || r.dt_s <= 0) {
       now_.target = seen;
     } else {

@@ -15,13 +15,13 @@
 
 #include "controller/collision_check.h"
 #include "controller/potential_field.h"
+#include "robot/beam_directions.h"
 #include "robot/ekf_localizer.h"
 #include "robot/local_obstacle_layer.h"
 #include "robot/map_raycaster.h"
 #include "robot/obstacle_tracker.h"
-#include "robot/scan_matcher.h"
-#include "robot/beam_directions.h"
 #include "robot/readings.h"
+#include "robot/scan_matcher.h"
 
 namespace plantsim::robot {
 
@@ -30,14 +30,14 @@ std::string_view to_string(PerceptionMode m);
 
 struct PerceptionParams {
   PerceptionMode mode = PerceptionMode::kSensors;
-  double range_m = 4.0;              ///< oracle mode: moving obstacles closer than this are known exactly
-  double field_range_m = 3.0;        ///< scan returns closer than this reach the potential field
+  double range_m = 4.0;        ///< oracle mode: moving obstacles closer than this are known exactly
+  double field_range_m = 3.0;  ///< scan returns closer than this reach the potential field
   double field_cluster_gap_m = 0.3;  ///< returns closer than this form one obstacle for the field
   double target_exclusion_m = 0.6;   ///< returns this close to the beacon's target are the target
   EkfParams ekf;
   TrackerParams tracker;
   ObstacleLayerParams layer;
-  double moving_speed_mps = 0.3;     ///< tracks faster than this do not mark the layer (they move on)
+  double moving_speed_mps = 0.3;  ///< tracks faster than this do not mark the layer (they move on)
   /// A return lies off the map when it is farther from every mapped surface than the tracker's
   /// margin or this many of the range noise the estimator assumes (ekf.range_sigma_m), whichever
   /// is more: a noisier lidar must not turn its own scatter into obstacles that move.
@@ -45,12 +45,14 @@ struct PerceptionParams {
   /// The robot holds still this long at the start (sensors mode), so that the gyro's bias is
   /// measured at rest before it has to carry the heading across open ground.
   double gyro_calibration_s = 1.0;
-  double displaced_jump_m = 0.05;    ///< one scan moving the estimate this far means the wheels missed a motion
-  double slip_jump_m = 0.02;         ///< ... this far, that the wheels slipped
-  double slip_turn_radps = 0.15;     ///< encoders' turn rate this far from the gyro's, on average over
-                                     ///< slip_window_s: the wheels slip (single readings are noise)
+  double displaced_jump_m =
+      0.05;  ///< one scan moving the estimate this far means the wheels missed a motion
+  double slip_jump_m = 0.02;      ///< ... this far, that the wheels slipped
+  double slip_turn_radps = 0.15;  ///< encoders' turn rate this far from the gyro's, on average over
+                                  ///< slip_window_s: the wheels slip (single readings are noise)
   double slip_window_s = 0.5;
-  double relocalize_sigma_m = 0.3;   ///< a displacement widens the estimate by this, so scans can catch it
+  double relocalize_sigma_m =
+      0.3;  ///< a displacement widens the estimate by this, so scans can catch it
   /// Beyond this 1-sigma a local scan update could lock onto the nearest look-alike: the scan is
   /// matched globally (scan_matcher.h) within three sigmas instead, at most every
   /// global_match_period_s, and the filter restarts from an unambiguous match.
@@ -75,32 +77,36 @@ struct PerceptionParams {
 struct Perception {
   double t_s = 0;
   double dt_s = 0;
-  geom::Pose2 pose;                 ///< estimated, map frame
-  double position_sigma_m = 0;      ///< 1-sigma of the estimate (largest direction); 0 in oracle mode
+  geom::Pose2 pose;             ///< estimated, map frame
+  double position_sigma_m = 0;  ///< 1-sigma of the estimate (largest direction); 0 in oracle mode
   double yaw_sigma_rad = 0;
   LocalizationHealth health = LocalizationHealth::kOk;
-  geom::Pose2 odom_pose;            ///< continuous odometry frame
+  geom::Pose2 odom_pose;  ///< continuous odometry frame
   double speed_mps = 0;
-  double yaw_rate_radps = 0;        ///< the gyro's reading
+  double yaw_rate_radps = 0;  ///< the gyro's reading
   bool charger_contact = false;
   bool charging = false;
   BumperReading bumper;
-  bool displaced = false;           ///< moved without its wheels (the scan disagrees, a contact): stop and settle
-  bool slipping = false;            ///< the wheels turned otherwise than the robot moved (encoders vs gyro and scan)
-  std::optional<geom::Pose2> charger_in_robot;     ///< docked pose seen, carried to now (robot frame)
-  std::vector<controller::MovingBox> obstacles;    ///< tracked (or, oracle, known) obstacles off the map,
-                                                   ///< and the layer's cells (standing)
-  std::vector<geom::Rect> layer;                   ///< the local obstacle layer's occupied cells, merged
-  std::vector<controller::FieldObstacle> field;    ///< what the potential field feels
-  std::optional<geom::Vec2> target;                ///< a moving target's centre (map frame)
+  bool displaced =
+      false;  ///< moved without its wheels (the scan disagrees, a contact): stop and settle
+  bool slipping =
+      false;  ///< the wheels turned otherwise than the robot moved (encoders vs gyro and scan)
+  std::optional<geom::Pose2> charger_in_robot;   ///< docked pose seen, carried to now (robot frame)
+  std::vector<controller::MovingBox> obstacles;  ///< tracked (or, oracle, known) obstacles off the
+                                                 ///< map, and the layer's cells (standing)
+  std::vector<geom::Rect> layer;  ///< the local obstacle layer's occupied cells, merged
+  std::vector<controller::FieldObstacle> field;  ///< what the potential field feels
+  std::optional<geom::Vec2> target;              ///< a moving target's centre (map frame)
   geom::Vec2 target_velocity;
-  std::optional<LidarScan> scan;                   ///< the newest scan as read (sensor frame), for outside controllers
-  std::array<double, 9> pose_covariance{};          ///< the estimate's (x, y, yaw) covariance, row-major; zeros in oracle mode
+  std::optional<LidarScan>
+      scan;  ///< the newest scan as read (sensor frame), for outside controllers
+  std::array<double, 9> pose_covariance{};  ///< the estimate's (x, y, yaw) covariance, row-major;
+                                            ///< zeros in oracle mode
 };
 
 /// The last scan as perception interpreted it, for figures.
 struct ScanView {
-  geom::Pose2 pose;  ///< estimated pose it was placed with
+  geom::Pose2 pose;                                ///< estimated pose it was placed with
   std::vector<geom::Vec2> explained, unexplained;  ///< returns, map frame
 };
 
@@ -135,14 +141,15 @@ class Perceiver {
   LocalObstacleLayer layer_;
   Perception now_;
   ScanView scan_view_;
-  std::vector<controller::FieldObstacle> static_field_;  // from the last scan
-  std::vector<geom::Rect> layer_rects_;                  // the layer after the last scan
-  BeamDirections directions_;                            // scratch for interpret_scan
+  std::vector<controller::FieldObstacle> static_field_;      // from the last scan
+  std::vector<geom::Rect> layer_rects_;                      // the layer after the last scan
+  BeamDirections directions_;                                // scratch for interpret_scan
   std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
   std::optional<geom::Vec2> last_target_;
   bool touched_before_ = false;  // the bumper at the last reading
   double odom_yaw_before_ = 0;   // for the encoders' turn rate
-  std::deque<std::pair<double, double>> turn_gap_;  // (dt, encoders' turn minus the gyro's) over the slip window
+  std::deque<std::pair<double, double>>
+      turn_gap_;  // (dt, encoders' turn minus the gyro's) over the slip window
   double turn_gap_sum_ = 0, turn_gap_time_ = 0;
 };
 

@@ -24,9 +24,13 @@ struct LidarScan {
   double min_range_m = 0, max_range_m = 0;
   std::vector<double> ranges;
 
-  double angle(std::size_t i) const { return angle_min_rad + static_cast<double>(i) * angle_increment_rad; }
+  double angle(std::size_t i) const {
+    return angle_min_rad + static_cast<double>(i) * angle_increment_rad;
+  }
   /// A real return: finite, within [min, max) (a max-range reading is no surface).
-  bool valid(std::size_t i) const { return std::isfinite(ranges[i]) && ranges[i] >= min_range_m && ranges[i] < max_range_m; }
+  bool valid(std::size_t i) const {
+    return std::isfinite(ranges[i]) && ranges[i] >= min_range_m && ranges[i] < max_range_m;
+  }
 };
 
 /// A charger detection: the docked pose in the robot frame at the time the image was taken.
@@ -58,16 +62,16 @@ struct OracleReadings {
 
 struct SensorReadings {
   double t_s = 0;
-  double dt_s = 0;                   ///< since the previous reading
-  double encoder_distance_m = 0;     ///< wheel travel since the previous reading (odometry)
-  geom::Pose2 odom_pose;             ///< dead-reckoned from the encoders alone
+  double dt_s = 0;                ///< since the previous reading
+  double encoder_distance_m = 0;  ///< wheel travel since the previous reading (odometry)
+  geom::Pose2 odom_pose;          ///< dead-reckoned from the encoders alone
   double odom_speed_mps = 0;
   double gyro_yaw_rate_radps = 0;
-  std::optional<LidarScan> scan;     ///< a new scan, when one was taken
+  std::optional<LidarScan> scan;            ///< a new scan, when one was taken
   std::optional<ChargerDetection> charger;  ///< a detection whose latency has passed
   BumperReading bumper;
-  bool charger_contact = false;      ///< the pads touch the charger (since the previous reading)
-  bool charging = false;             ///< the charger's signal
+  bool charger_contact = false;  ///< the pads touch the charger (since the previous reading)
+  bool charging = false;         ///< the charger's signal
   std::optional<geom::Vec2> target_in_robot;  ///< the beacon of a moving target
   std::optional<OracleReadings> oracle;
 };

@@ -11,10 +11,13 @@ namespace {
 
 /// Squared distance to the nearest zero of f along one row (Felzenszwalb and Huttenlocher's
 /// lower envelope of parabolas), in cells.
-void distance_1d(const std::vector<double>& f, std::vector<double>& d, std::vector<long>& v, std::vector<double>& z) {
+void distance_1d(const std::vector<double>& f, std::vector<double>& d, std::vector<long>& v,
+                 std::vector<double>& z) {
   const long n = static_cast<long>(f.size());
   auto at = [](const auto& a, long i) -> decltype(auto) { return a[static_cast<std::size_t>(i)]; };
-  auto meet = [&](long q, long p) { return ((at(f, q) + double(q) * q) - (at(f, p) + double(p) * p)) / (2.0 * (q - p)); };
+  auto meet = [&](long q, long p) {
+    return ((at(f, q) + double(q) * q) - (at(f, p) + double(p) * p)) / (2.0 * (q - p));
+  };
   long k = 0;
   v[0] = 0;
   z[0] = -std::numeric_limits<double>::infinity();
@@ -42,7 +45,8 @@ void distance_1d(const std::vector<double>& f, std::vector<double>& d, std::vect
 
 ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p_(params) {
   const geom::Rect area = map.floor.inflated(1.0);
-  res_ = std::max(p_.resolution_m, std::sqrt(area.width() * area.height() / static_cast<double>(std::max(1L, p_.max_cells))));
+  res_ = std::max(p_.resolution_m, std::sqrt(area.width() * area.height() /
+                                             static_cast<double>(std::max(1L, p_.max_cells))));
   origin_ = {area.xmin, area.ymin};
   nx_ = std::max(1L, static_cast<long>(std::ceil(area.width() / res_)));
   ny_ = std::max(1L, static_cast<long>(std::ceil(area.height() / res_)));
@@ -52,9 +56,11 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
   std::vector<double> grid(cells, far);
   auto mark = [&](const geom::Rect& r) {
     const long i0 = std::max(0L, static_cast<long>(std::ceil((r.xmin - origin_.x) / res_ - 0.5)));
-    const long i1 = std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5)));
+    const long i1 =
+        std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5)));
     const long j0 = std::max(0L, static_cast<long>(std::ceil((r.ymin - origin_.y) / res_ - 0.5)));
-    const long j1 = std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5)));
+    const long j1 =
+        std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5)));
     for (long j = j0; j <= j1; ++j)
       for (long i = i0; i <= i1; ++i) grid[static_cast<std::size_t>(j * nx_ + i)] = 0;
   };
@@ -69,16 +75,20 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
   for (long i = 0; i < nx_; ++i) {
     f.resize(static_cast<std::size_t>(ny_));
     d.resize(static_cast<std::size_t>(ny_));
-    for (long j = 0; j < ny_; ++j) f[static_cast<std::size_t>(j)] = grid[static_cast<std::size_t>(j * nx_ + i)];
+    for (long j = 0; j < ny_; ++j)
+      f[static_cast<std::size_t>(j)] = grid[static_cast<std::size_t>(j * nx_ + i)];
     distance_1d(f, d, v, z);
-    for (long j = 0; j < ny_; ++j) grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(j)];
+    for (long j = 0; j < ny_; ++j)
+      grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(j)];
   }
   f.resize(static_cast<std::size_t>(nx_));
   d.resize(static_cast<std::size_t>(nx_));
   for (long j = 0; j < ny_; ++j) {
-    for (long i = 0; i < nx_; ++i) f[static_cast<std::size_t>(i)] = grid[static_cast<std::size_t>(j * nx_ + i)];
+    for (long i = 0; i < nx_; ++i)
+      f[static_cast<std::size_t>(i)] = grid[static_cast<std::size_t>(j * nx_ + i)];
     distance_1d(f, d, v, z);
-    for (long i = 0; i < nx_; ++i) grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(i)];
+    for (long i = 0; i < nx_; ++i)
+      grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(i)];
   }
   fine_.resize(cells);
   const double k = res_ * res_ / (2.0 * p_.hit_sigma_m * p_.hit_sigma_m);
@@ -89,35 +99,41 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
   for (long j = 0; j < ny_; ++j)
     for (long i = 0; i < nx_; ++i) {
       double m = 0;
-      for (long a = 0; a < b && i + a < nx_; ++a) m = std::max(m, fine_[static_cast<std::size_t>(j * nx_ + i + a)]);
+      for (long a = 0; a < b && i + a < nx_; ++a)
+        m = std::max(m, fine_[static_cast<std::size_t>(j * nx_ + i + a)]);
       along_x[static_cast<std::size_t>(j * nx_ + i)] = m;
     }
   coarse_.resize(cells);
   for (long j = 0; j < ny_; ++j)
     for (long i = 0; i < nx_; ++i) {
       double m = 0;
-      for (long a = 0; a < b && j + a < ny_; ++a) m = std::max(m, along_x[static_cast<std::size_t>((j + a) * nx_ + i)]);
+      for (long a = 0; a < b && j + a < ny_; ++a)
+        m = std::max(m, along_x[static_cast<std::size_t>((j + a) * nx_ + i)]);
       coarse_[static_cast<std::size_t>(j * nx_ + i)] = m;
     }
 }
 
 double ScanMatcher::likelihood(geom::Vec2 p) const {
-  return fine(static_cast<long>(std::floor((p.x - origin_.x) / res_)), static_cast<long>(std::floor((p.y - origin_.y) / res_)));
+  return fine(static_cast<long>(std::floor((p.x - origin_.x) / res_)),
+              static_cast<long>(std::floor((p.y - origin_.y) / res_)));
 }
 
-std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior, const MatchWindow& window) const {
+std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior,
+                                            const MatchWindow& window) const {
   // The returns in the robot frame, spread evenly over the scan.
   std::vector<geom::Vec2> points;
   std::vector<std::size_t> valid;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i)
     if (scan.valid(i)) valid.push_back(i);
   if (valid.size() < 10) return std::nullopt;
-  const std::size_t stride = std::max<std::size_t>(1, valid.size() / static_cast<std::size_t>(std::max(1, p_.max_points)));
+  const std::size_t stride =
+      std::max<std::size_t>(1, valid.size() / static_cast<std::size_t>(std::max(1, p_.max_points)));
   double reach = 0;
   for (std::size_t k = 0; k < valid.size(); k += stride) {
     const std::size_t i = valid[k];
     const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
-    points.push_back(geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
+    points.push_back(
+        geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
     reach = std::max(reach, geom::norm(points.back()));
   }
   const double n_points = static_cast<double>(points.size());
@@ -128,7 +144,9 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
   // The work is bounded: coarser rotation steps for wide windows, then a narrower window.
   double dyaw = std::clamp(res_ / std::max(reach, 1.0), 0.002, p_.max_yaw_step_rad);
   const long budget = std::max(1L, p_.max_candidates);
-  dyaw = std::min(p_.max_yaw_step_rad, std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, double(budget) / blocks(n_xy))));
+  dyaw =
+      std::min(p_.max_yaw_step_rad,
+               std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, double(budget) / blocks(n_xy))));
   long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
   while ((2 * n_yaw + 1) * blocks(n_xy) > budget && n_xy > b) n_xy = n_xy * 3 / 4;
 
@@ -137,7 +155,8 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
     long yaw_step, i, j;  // block's first translation
   };
   std::vector<Candidate> candidates;
-  std::vector<std::vector<std::pair<long, long>>> cells_by_yaw(static_cast<std::size_t>(2 * n_yaw + 1));
+  std::vector<std::vector<std::pair<long, long>>> cells_by_yaw(
+      static_cast<std::size_t>(2 * n_yaw + 1));
   for (long s = -n_yaw; s <= n_yaw; ++s) {
     const double yaw = prior.yaw + s * dyaw;
     auto& cells = cells_by_yaw[static_cast<std::size_t>(s + n_yaw)];
@@ -154,7 +173,8 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
         candidates.push_back({bound / n_points, s, i, j});
       }
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& c) { return a.bound > c.bound; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& c) { return a.bound > c.bound; });
 
   ScanMatch best;
   best.score = -1;
@@ -173,10 +193,12 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
         for (const auto& [ci, cj] : cells) score += fine(ci + i, cj + j);
         score /= n_points;
         ++best.scored;
-        if (score >= p_.max_ambiguity * std::max(best.score, p_.min_score)) good.push_back({score, c.yaw_step, i, j});
+        if (score >= p_.max_ambiguity * std::max(best.score, p_.min_score))
+          good.push_back({score, c.yaw_step, i, j});
         if (score > best.score) {
           best.score = score;
-          best.pose = {prior.x + i * res_, prior.y + j * res_, geom::wrap_angle(prior.yaw + c.yaw_step * dyaw)};
+          best.pose = {prior.x + i * res_, prior.y + j * res_,
+                       geom::wrap_angle(prior.yaw + c.yaw_step * dyaw)};
         }
       }
   }
@@ -186,7 +208,8 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
     return best;
   }
   for (const Scored& g : good) {
-    const geom::Pose2 at{prior.x + g.i * res_, prior.y + g.j * res_, geom::wrap_angle(prior.yaw + g.s * dyaw)};
+    const geom::Pose2 at{prior.x + g.i * res_, prior.y + g.j * res_,
+                         geom::wrap_angle(prior.yaw + g.s * dyaw)};
     const bool apart = geom::distance(at.position(), best.pose.position()) > p_.apart_m ||
                        std::fabs(geom::wrap_angle(at.yaw - best.pose.yaw)) > p_.apart_rad;
     if (apart) best.runner_up = std::max(best.runner_up, g.score);

@@ -19,17 +19,19 @@
 namespace plantsim::robot {
 
 struct ScanMatcherParams {
-  double resolution_m = 0.1;      ///< likelihood grid cell (coarser on maps past max_cells)
-  long max_cells = 4'000'000;     ///< the grid's size limit (memory: 8 bytes a cell, two grids)
-  double hit_sigma_m = 0.1;       ///< a return this far from a surface scores exp(-1/2)
-  int block = 4;                  ///< coarse grid: maxima over block x block cells
-  int max_points = 80;            ///< returns used, spread evenly over the scan
-  double min_score = 0.55;        ///< mean likelihood of the returns a match must reach
-  double max_ambiguity = 0.9;     ///< the best pose apart from the match must score below this share of it
-  double apart_m = 1.0;           ///< poses this far apart (or apart_rad) are different answers
+  double resolution_m = 0.1;   ///< likelihood grid cell (coarser on maps past max_cells)
+  long max_cells = 4'000'000;  ///< the grid's size limit (memory: 8 bytes a cell, two grids)
+  double hit_sigma_m = 0.1;    ///< a return this far from a surface scores exp(-1/2)
+  int block = 4;               ///< coarse grid: maxima over block x block cells
+  int max_points = 80;         ///< returns used, spread evenly over the scan
+  double min_score = 0.55;     ///< mean likelihood of the returns a match must reach
+  double max_ambiguity =
+      0.9;               ///< the best pose apart from the match must score below this share of it
+  double apart_m = 1.0;  ///< poses this far apart (or apart_rad) are different answers
   double apart_rad = 0.3;
-  long max_candidates = 40'000;   ///< rotations x translation blocks bounded per match: wide windows are
-                                  ///< searched in coarser rotation steps (at most max_yaw_step_rad), then narrower
+  long max_candidates =
+      40'000;  ///< rotations x translation blocks bounded per match: wide windows are
+               ///< searched in coarser rotation steps (at most max_yaw_step_rad), then narrower
   double max_yaw_step_rad = 0.03;
 };
 
@@ -52,14 +54,19 @@ class ScanMatcher {
   /// `map` is the plant as the robot knows it: its obstacles, floor walls and mapped charger.
   ScanMatcher(const worlds::World& map, ScanMatcherParams params = {});
   /// The best pose for `scan` within `window` of `prior`; none when the scan has too few returns.
-  std::optional<ScanMatch> match(const LidarScan& scan, const geom::Pose2& prior, const MatchWindow& window) const;
+  std::optional<ScanMatch> match(const LidarScan& scan, const geom::Pose2& prior,
+                                 const MatchWindow& window) const;
   double resolution_m() const { return res_; }
   /// The likelihood of a return at `p` (0 off the grid).
   double likelihood(geom::Vec2 p) const;
 
  private:
-  double fine(long i, long j) const { return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0; }
-  double coarse(long i, long j) const { return inside(i, j) ? coarse_[static_cast<std::size_t>(j * nx_ + i)] : 0.0; }
+  double fine(long i, long j) const {
+    return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
+  }
+  double coarse(long i, long j) const {
+    return inside(i, j) ? coarse_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
+  }
   bool inside(long i, long j) const { return i >= 0 && j >= 0 && i < nx_ && j < ny_; }
 
   ScanMatcherParams p_;

@@ -8,9 +8,11 @@
 
 namespace plantsim::robot {
 
-std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
-                                                   const controller::DockingParams& docking, const geom::Pose2& from,
-                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen,
+std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
+                                                   const std::string& planner_name,
+                                                   const controller::DockingParams& docking,
+                                                   const geom::Pose2& from, geom::Vec2 to,
+                                                   const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner) {
   const double extra = std::max(0.0, docking.safety_margin_m - map.inflation_margin_m) + 0.05;
   if (const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(map_planner)) {
@@ -32,7 +34,8 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, con
   planner::PlannerInput again = planner::planner_input(map, true);
   for (const auto& b : seen) again.obstacles.push_back(b.box.inflated(extra));
   again.snap_to_free = true;
-  const planner::PlanResult re = planner::make_planner(planner_name, again)->plan(from.position(), to);
+  const planner::PlanResult re =
+      planner::make_planner(planner_name, again)->plan(from.position(), to);
   if (re.status != planner::PlanStatus::kOk) return std::nullopt;
   std::vector<geom::Vec2> path = re.drive_path.empty() ? re.path : re.drive_path;
   if (re.start_snapped) path.insert(path.begin(), from.position());
@@ -63,12 +66,18 @@ namespace {
 FailureReason reason_of(controller::DockFailure why) {
   using controller::DockFailure;
   switch (why) {
-    case DockFailure::kRetriesExhausted: return FailureReason::kDockRetriesExhausted;
-    case DockFailure::kBlocked: return FailureReason::kBlocked;
-    case DockFailure::kUnsettled: return FailureReason::kStuck;
-    case DockFailure::kNotLocalized: return FailureReason::kLocalizationLost;
-    case DockFailure::kUndockBlocked: return FailureReason::kUndockFailed;
-    case DockFailure::kNone: break;
+    case DockFailure::kRetriesExhausted:
+      return FailureReason::kDockRetriesExhausted;
+    case DockFailure::kBlocked:
+      return FailureReason::kBlocked;
+    case DockFailure::kUnsettled:
+      return FailureReason::kStuck;
+    case DockFailure::kNotLocalized:
+      return FailureReason::kLocalizationLost;
+    case DockFailure::kUndockBlocked:
+      return FailureReason::kUndockFailed;
+    case DockFailure::kNone:
+      break;
   }
   return FailureReason::kStuck;
 }
@@ -81,7 +90,8 @@ Decision decision_of(const controller::DockingCommand& cmd, controller::DockFail
   if (cmd.phase == controller::DockPhase::kUndocked) d.finished = "undocked";
   if (cmd.phase == controller::DockPhase::kFailed) {
     d.finished = "failed";
-    d.give_up = GiveUp{reason_of(why), "the docking controller: " + std::string(controller::to_string(why))};
+    d.give_up = GiveUp{reason_of(why),
+                       "the docking controller: " + std::string(controller::to_string(why))};
   }
   return d;
 }

@@ -21,7 +21,7 @@ namespace plantsim::robot {
 
 struct TravelSettings {
   controller::PurePursuitParams tracking;
-  controller::DockingParams docking;        ///< staging distance and footprint already set from the map
+  controller::DockingParams docking;  ///< staging distance and footprint already set from the map
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
   /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
@@ -34,8 +34,8 @@ struct Decision {
   controller::DockPhase phase = controller::DockPhase::kTravel;
   double cross_track_m = 0;
   bool wall_following = false;
-  std::string finished;  ///< "docked", "failed" or "trapped" when the travel has ended
-  bool blocked = false;  ///< holding still because the way ahead is not clear
+  std::string finished;           ///< "docked", "failed" or "trapped" when the travel has ended
+  bool blocked = false;           ///< holding still because the way ahead is not clear
   std::optional<GiveUp> give_up;  ///< why, when it ended without success
 };
 
@@ -56,9 +56,11 @@ class Travel {
 /// Plans from the estimated pose to `to` on the robot's map with the sensed obstacles added
 /// (grown by the arc check's extra clearance, so that the new path is one it will accept): on
 /// `map_planner`'s own graph when it is the visibility graph, else with a planner built anew.
-std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map, const std::string& planner_name,
-                                                   const controller::DockingParams& docking, const geom::Pose2& from,
-                                                   geom::Vec2 to, const std::vector<controller::MovingBox>& seen,
+std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
+                                                   const std::string& planner_name,
+                                                   const controller::DockingParams& docking,
+                                                   const geom::Pose2& from, geom::Vec2 to,
+                                                   const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner = nullptr);
 
 /// The docking controller's input from a perception.
@@ -66,13 +68,16 @@ controller::DockingInput docking_input(const Perception& p);
 
 /// A docking command as a decision; `finished` when it reports docked or failed (`why`: the
 /// controller's own account of a failure).
-Decision decision_of(const controller::DockingCommand& cmd, controller::DockFailure why = controller::DockFailure::kNone);
+Decision decision_of(const controller::DockingCommand& cmd,
+                     controller::DockFailure why = controller::DockFailure::kNone);
 
 std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
                                          const TravelSettings& s, std::vector<geom::Vec2> path);
 std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::string& planner_name,
-                                          const TravelSettings& s, bool pursuit, double robot_radius_m);
-std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map, const std::string& planner_name,
+                                          const TravelSettings& s, bool pursuit,
+                                          double robot_radius_m);
+std::unique_ptr<Travel> make_pursuit_travel(const worlds::World& map,
+                                            const std::string& planner_name,
                                             const TravelSettings& s, std::vector<geom::Vec2> path);
 /// `travel`, after holding still for the first `still_s` seconds (the gyro measured at rest).
 std::unique_ptr<Travel> hold_still_first(std::unique_ptr<Travel> travel, double still_s);

@@ -7,9 +7,13 @@ namespace {
 
 class FieldTravel : public Travel {
  public:
-  FieldTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s, bool pursuit,
-              double robot_radius_m)
-      : map_(map), planner_(std::move(planner_name)), s_(s), pursuit_(pursuit), field_(std::in_place, s.field, robot_radius_m),
+  FieldTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s,
+              bool pursuit, double robot_radius_m)
+      : map_(map),
+        planner_(std::move(planner_name)),
+        s_(s),
+        pursuit_(pursuit),
+        field_(std::in_place, s.field, robot_radius_m),
         staging_(worlds::staging_pose(map)) {}
 
   Decision decide(const Perception& p) override {
@@ -17,14 +21,16 @@ class FieldTravel : public Travel {
     const geom::Vec2 velocity = p.speed_mps * p.pose.heading();
     const geom::Vec2 goal = pursuit_ && p.target ? *p.target : staging_.position();
     const geom::Vec2 goal_velocity = pursuit_ && p.target ? p.target_velocity : geom::Vec2{0, 0};
-    const controller::FieldCommand fc = field_->step({p.pose, velocity, goal, goal_velocity, p.dt_s, p.field});
+    const controller::FieldCommand fc =
+        field_->step({p.pose, velocity, goal, goal_velocity, p.dt_s, p.field});
     minima_ = field_->local_minima();
     follows_ = field_->wall_follow_episodes();
     Decision d;
     d.wall_following = fc.state == controller::FieldState::kWallFollowing;
     if (fc.trapped) {
       d.finished = "trapped";
-      d.give_up = GiveUp{FailureReason::kTrapped, "the potential field met " + std::to_string(minima_) + " local minima"};
+      d.give_up = GiveUp{FailureReason::kTrapped,
+                         "the potential field met " + std::to_string(minima_) + " local minima"};
       return d;
     }
     if (fc.arrived && !pursuit_) {
@@ -56,7 +62,8 @@ class FieldTravel : public Travel {
 }  // namespace
 
 std::unique_ptr<Travel> make_field_travel(const worlds::World& map, const std::string& planner_name,
-                                          const TravelSettings& s, bool pursuit, double robot_radius_m) {
+                                          const TravelSettings& s, bool pursuit,
+                                          double robot_radius_m) {
   return std::make_unique<FieldTravel>(map, planner_name, s, pursuit, robot_radius_m);
 }
 

@@ -7,8 +7,12 @@ namespace {
 
 class PathTravel : public Travel {
  public:
-  PathTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s, std::vector<geom::Vec2> path)
-      : map_(map), planner_(std::move(planner_name)), s_(s), control_(s.tracking, s.docking, std::move(path), map.charger),
+  PathTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s,
+             std::vector<geom::Vec2> path)
+      : map_(map),
+        planner_(std::move(planner_name)),
+        s_(s),
+        control_(s.tracking, s.docking, std::move(path), map.charger),
         staging_(worlds::staging_pose(map).position()) {}
 
   Decision decide(const Perception& p) override {
@@ -17,7 +21,8 @@ class PathTravel : public Travel {
     if (need_plan_ && p.t_s >= next_try_s_) {
       // After a displacement: a new way to the staging pose from wherever the robot now is.
       next_try_s_ = p.t_s + 1.0;
-      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles, s_.map_planner)) {
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles,
+                                  s_.map_planner)) {
         control_.replace_path(*path);
         plan_ = std::move(*path);
         need_plan_ = false;
@@ -31,7 +36,8 @@ class PathTravel : public Travel {
     if (cmd.replan_requested) {
       // Plan again with what blocks the way as extra obstacles, from the nearest free point
       // if the robot stands inside their margin.
-      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles, s_.map_planner)) {
+      if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles,
+                                  s_.map_planner)) {
         control_.replace_path(*path);
         plan_ = std::move(*path);
         ++replans_;

@@ -18,9 +18,9 @@ namespace plantsim::robot {
 struct SteeringInput {
   const Perception& perception;
   const std::vector<geom::Vec2>& plan;  ///< the plan plantsim's travel holds now (after replans)
-  controller::DockPhase phase;          ///< plantsim's phase: travel until the staging pose is reached
-  const Decision& builtin;              ///< what plantsim's own controller would command now
-  geom::Pose2 staging;                  ///< the staging pose on the map, where docking takes over
+  controller::DockPhase phase;  ///< plantsim's phase: travel until the staging pose is reached
+  const Decision& builtin;      ///< what plantsim's own controller would command now
+  geom::Pose2 staging;          ///< the staging pose on the map, where docking takes over
 };
 
 /// A twist to drive with, or nothing to let plantsim's own controller command this period.
@@ -28,6 +28,7 @@ using Steering = std::function<std::optional<controller::Twist>(const SteeringIn
 
 /// `builtin`, steered by `travel` while its phase is travel and by `docking` (if set) after.
 std::unique_ptr<Travel> steered_by(std::unique_ptr<Travel> builtin, const worlds::World& map,
-                                   std::vector<geom::Vec2> first_plan, Steering travel, Steering docking = {});
+                                   std::vector<geom::Vec2> first_plan, Steering travel,
+                                   Steering docking = {});
 
 }  // namespace plantsim::robot

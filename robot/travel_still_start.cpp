@@ -6,13 +6,16 @@ namespace {
 
 class StillStart : public Travel {
  public:
-  StillStart(std::unique_ptr<Travel> travel, double still_s) : travel_(std::move(travel)), still_s_(still_s) {}
+  StillStart(std::unique_ptr<Travel> travel, double still_s)
+      : travel_(std::move(travel)), still_s_(still_s) {}
   Decision decide(const Perception& p) override {
     if (p.t_s < still_s_) return {};  // zero twist, travelling phase
     return travel_->decide(p);
   }
   TravelCounts counts() const override { return travel_->counts(); }
-  std::optional<std::vector<geom::Vec2>> final_plan() const override { return travel_->final_plan(); }
+  std::optional<std::vector<geom::Vec2>> final_plan() const override {
+    return travel_->final_plan();
+  }
 
  private:
   std::unique_ptr<Travel> travel_;

@@ -14,7 +14,7 @@ packages=(
   python3 python3-dev pybind11-dev python3-numpy
 )
 if [ "${1:-}" = test ]; then
-  packages+=(slurm-wlm munge clang libclang-rt-14-dev chromium python3-pytest python3-matplotlib)
+  packages+=(slurm-wlm munge clang clang-format libclang-rt-14-dev chromium python3-pytest python3-matplotlib)
 fi
 
 missing=()

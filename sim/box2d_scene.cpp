@@ -25,18 +25,24 @@ using worlds::SurfaceKind;
 
 SurfaceKind kind_of(FixtureTag t) {
   switch (t) {
-    case kWall: return SurfaceKind::kWall;
-    case kCharger: return SurfaceKind::kCharger;
-    case kMoving: return SurfaceKind::kMoving;
-    case kTarget: return SurfaceKind::kTarget;
-    default: return SurfaceKind::kObstacle;
+    case kWall:
+      return SurfaceKind::kWall;
+    case kCharger:
+      return SurfaceKind::kCharger;
+    case kMoving:
+      return SurfaceKind::kMoving;
+    case kTarget:
+      return SurfaceKind::kTarget;
+    default:
+      return SurfaceKind::kObstacle;
   }
 }
 
 // Keeps the nearest fixture: returning the fraction clips the ray there (Box2D's contract).
 class NearestHit : public b2RayCastCallback {
  public:
-  float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2& normal, float fraction) override {
+  float ReportFixture(b2Fixture* fixture, const b2Vec2& point, const b2Vec2& normal,
+                      float fraction) override {
     if (tag_of(fixture) == kRobot) return -1.0f;  // the sensor sits inside the robot
     point_ = point;
     normal_ = normal;
@@ -57,8 +63,10 @@ void add_static_scene(b2World& world, const worlds::World& plant) {
   b2BodyDef static_def;
   b2Body* statics = world.CreateBody(&static_def);
   for (const geom::Rect& r : plant.obstacles) add_box(statics, r, kObstacle);
-  for (const geom::Rect& r : plant.unmapped) add_box(statics, r, kObstacle);  // absent from a map's World
-  for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0)) add_box(statics, wall, kWall);
+  for (const geom::Rect& r : plant.unmapped)
+    add_box(statics, r, kObstacle);  // absent from a map's World
+  for (const geom::Rect& wall : geom::surrounding_walls(plant.floor, 1.0))
+    add_box(statics, wall, kWall);
 
   // The charger's rigid face is set back by Box2D's polygon skin and by half the pads' spring
   // travel, so that the robot's centre stops half the travel past the docked pose.

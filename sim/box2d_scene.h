@@ -12,7 +12,14 @@
 
 namespace plantsim::sim::detail {
 
-enum FixtureTag : std::uintptr_t { kObstacle = 1, kWall = 2, kCharger = 3, kRobot = 4, kMoving = 5, kTarget = 6 };
+enum FixtureTag : std::uintptr_t {
+  kObstacle = 1,
+  kWall = 2,
+  kCharger = 3,
+  kRobot = 4,
+  kMoving = 5,
+  kTarget = 6
+};
 
 inline FixtureTag tag_of(b2Fixture* f) { return static_cast<FixtureTag>(f->GetUserData().pointer); }
 

@@ -13,6 +13,7 @@ namespace plantsim::sim {
 using robot::BumperReading;
 
 /// From the contact points (world frame) and the robot's true pose.
-BumperReading read_bumper(const std::vector<geom::Vec2>& contact_points, const geom::Pose2& robot_truth);
+BumperReading read_bumper(const std::vector<geom::Vec2>& contact_points,
+                          const geom::Pose2& robot_truth);
 
 }  // namespace plantsim::sim

@@ -12,8 +12,10 @@ using robot::ChargerDetection;
 ChargerDetector::ChargerDetector(DetectionParams params, std::uint64_t seed)
     : p_(params), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
 
-std::optional<geom::Pose2> ChargerDetector::observe(const PhysicsWorld& physics, const geom::Pose2& robot_truth,
-                                                    const geom::Pose2& dock_truth, geom::Vec2 marker) {
+std::optional<geom::Pose2> ChargerDetector::observe(const PhysicsWorld& physics,
+                                                    const geom::Pose2& robot_truth,
+                                                    const geom::Pose2& dock_truth,
+                                                    geom::Vec2 marker) {
   const geom::Pose2 camera = geom::compose(robot_truth, {p_.mount_x_m, 0, 0});
   const geom::Vec2 to_marker = marker - camera.position();
   if (geom::dot(to_marker, to_marker) > p_.range_m * p_.range_m) return std::nullopt;
@@ -34,16 +36,21 @@ std::optional<geom::Pose2> ChargerDetector::observe(const PhysicsWorld& physics,
   const bool gross = outlier < p_.outlier_probability;
   const double sp = gross ? p_.outlier_position_m : p_.position_noise_m;
   const double sy = gross ? p_.outlier_yaw_rad : p_.yaw_noise_rad;
-  const geom::Vec2 rel = geom::rotate(dock_truth.position() - robot_truth.position(), -robot_truth.yaw);
-  return geom::Pose2{rel.x + sp * ex, rel.y + sp * ey, geom::wrap_angle(dock_truth.yaw - robot_truth.yaw + sy * eyaw)};
+  const geom::Vec2 rel =
+      geom::rotate(dock_truth.position() - robot_truth.position(), -robot_truth.yaw);
+  return geom::Pose2{rel.x + sp * ex, rel.y + sp * ey,
+                     geom::wrap_angle(dock_truth.yaw - robot_truth.yaw + sy * eyaw)};
 }
 
-std::optional<ChargerDetection> ChargerDetector::update(const PhysicsWorld& physics, const geom::Pose2& robot_truth,
-                                                        const geom::Pose2& dock_truth, geom::Vec2 marker, double t_s) {
+std::optional<ChargerDetection> ChargerDetector::update(const PhysicsWorld& physics,
+                                                        const geom::Pose2& robot_truth,
+                                                        const geom::Pose2& dock_truth,
+                                                        geom::Vec2 marker, double t_s) {
   if (!p_.enabled) return std::nullopt;
   if (t_s + 1e-9 >= next_image_s_) {
     next_image_s_ = t_s + 1.0 / p_.rate_hz;
-    if (auto seen = observe(physics, robot_truth, dock_truth, marker)) pending_.push_back({t_s, *seen});
+    if (auto seen = observe(physics, robot_truth, dock_truth, marker))
+      pending_.push_back({t_s, *seen});
   }
   std::optional<ChargerDetection> out;
   while (!pending_.empty() && pending_.front().captured_s + p_.latency_s <= t_s + 1e-9) {

@@ -12,7 +12,8 @@ void ChargerPads::step(const geom::Pose2& robot, const geom::Pose2& docked, doub
   const double heading_error = std::fabs(geom::wrap_angle(robot.yaw - docked.yaw));
   touched_ = compression > 0 && compression <= p_.travel_m + p_.max_overtravel_m &&
              std::fabs(rel.y) <= 0.5 * p_.contact_width_m && heading_error < 0.5;
-  const bool good = touched_ && compression >= p_.min_press_m && std::fabs(rel.y) <= p_.lateral_tolerance_m &&
+  const bool good = touched_ && compression >= p_.min_press_m &&
+                    std::fabs(rel.y) <= p_.lateral_tolerance_m &&
                     heading_error <= p_.heading_tolerance_rad;
   pressed_for_s_ = good ? pressed_for_s_ + dt_s : 0.0;
   charging_ = good && pressed_for_s_ + 1e-9 >= p_.dwell_s;

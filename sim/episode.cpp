@@ -4,26 +4,26 @@
 #include <algorithm>
 #include <cmath>
 
+#include "robot/travel.h"
 #include "sim/episode_metrics.h"
 #include "sim/failure_watch.h"
-#include "robot/travel.h"
 
 namespace plantsim::sim {
 
-using robot::TravelCounts;
-using robot::Decision;
-using robot::Perception;
-using robot::Perceiver;
-using robot::PerceptionParams;
-using robot::PerceptionMode;
-using robot::LocalizationHealth;
-using robot::Failure;
-using robot::GiveUp;
-using robot::Travel;
-using robot::TravelSettings;
-using robot::FailureReason;
-using robot::SensorReadings;
 using robot::ActorState;
+using robot::Decision;
+using robot::Failure;
+using robot::FailureReason;
+using robot::GiveUp;
+using robot::LocalizationHealth;
+using robot::Perceiver;
+using robot::Perception;
+using robot::PerceptionMode;
+using robot::PerceptionParams;
+using robot::SensorReadings;
+using robot::Travel;
+using robot::TravelCounts;
+using robot::TravelSettings;
 
 namespace {
 
@@ -45,10 +45,12 @@ SensorParams sensor_params(const EpisodeConfig& c) {
 
 }  // namespace
 
-std::string_view to_string(TravelMode m) { return m == TravelMode::kPath ? "path" : "potential-field"; }
+std::string_view to_string(TravelMode m) {
+  return m == TravelMode::kPath ? "path" : "potential-field";
+}
 
-EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner, const EpisodeConfig& config,
-                          const EpisodeSteering& steering) {
+EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
+                          const EpisodeConfig& config, const EpisodeSteering& steering) {
   EpisodeResult result;
   result.planner = planner.name();
   result.travel = std::string(to_string(config.travel));
@@ -76,33 +78,39 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     // The potential field needs no plan: without its reference it still drives.
     if (config.travel != TravelMode::kPotentialField) {
       result.status = std::string(planner::to_string(plan.status));
-      result.failure = Failure{FailureReason::kNoPath, 0.0, map.start,
-                               "the planner: " + result.status + (plan.note.empty() ? "" : " (" + plan.note + ")")};
+      result.failure = Failure{
+          FailureReason::kNoPath, 0.0, map.start,
+          "the planner: " + result.status + (plan.note.empty() ? "" : " (" + plan.note + ")")};
       result.events.push_back({EpisodeResult::Event::Kind::kFailure, 0.0, map.start.position()});
       return result;
     }
-    result.plan_note = "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
+    result.plan_note =
+        "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
   }
   result.plan = plan.path;
   result.first_plan = plan.path;
   result.path_length_m = plan.length;
-  const std::vector<Vec2> first_path =
-      planned ? (plan.drive_path.empty() ? plan.path : plan.drive_path) : std::vector<Vec2>{map.start.position(), goal};
+  const std::vector<Vec2> first_path = planned
+                                           ? (plan.drive_path.empty() ? plan.path : plan.drive_path)
+                                           : std::vector<Vec2>{map.start.position(), goal};
 
-  TravelSettings settings{config.tracking, config.docking, config.field, config.pursuit_replan_period_s};
+  TravelSettings settings{config.tracking, config.docking, config.field,
+                          config.pursuit_replan_period_s};
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
   settings.docking.footprint_radius_m = map.robot.radius_m;
   settings.map_planner = &planner;  // replans add what is sensed on top of its graph
   const bool pursuit = map.target.has_value();
   std::unique_ptr<Travel> travel =
-      config.travel == TravelMode::kPotentialField ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
+      config.travel == TravelMode::kPotentialField
+          ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
       : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
                 : make_path_travel(map, planner.name(), settings, first_path);
   if (steering) {
     travel = steering.wrap(std::move(travel), map, first_path);
     result.steered_by = steering.name;
   }
-  if (config.perception.mode == PerceptionMode::kSensors) travel = hold_still_first(std::move(travel), config.perception.gyro_calibration_s);
+  if (config.perception.mode == PerceptionMode::kSensors)
+    travel = hold_still_first(std::move(travel), config.perception.gyro_calibration_s);
 
   PhysicsWorld physics(plant);
   WheelDrive drive(plant.robot, config.drive);
@@ -129,7 +137,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
   FailureWatch watch;
   bool kidnapped = false;
   std::optional<GiveUp> give_up;
-  result.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
+  result.trajectory.reserve(
+      static_cast<std::size_t>(std::min<std::int64_t>(max_steps / period + 1, 1 << 20)));
   // Physics, tyres, encoders and contacts run every step; sensing, estimation, control and
   // logging every control period, seeing the contacts latched since the last one.
   ContactState contact = physics.contacts();  // read once per step, by sensors and metrics alike
@@ -138,7 +147,7 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     if (k % period == 0) {
       const double t = k * dt;
       const SensorReadings readings = sensors.read(physics, t);  // sense
-      const Perception& p = perceiver.update(readings);        // estimate
+      const Perception& p = perceiver.update(readings);          // estimate
       metrics.compare_estimate(physics, p.pose);
       metrics.compare_obstacles(p.obstacles);
       metrics.charging(physics, readings.charging);
@@ -151,12 +160,14 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       if (metrics.target_caught(physics)) {
         result.caught = true;
         result.status = "caught";
-        result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, 0, controller::DockPhase::kTravel, false, target_at});
+        result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, 0,
+                                     controller::DockPhase::kTravel, false, target_at});
         break;
       }
       if (config.scan_log_period_s > 0 && t >= next_snapshot_s) {
         next_snapshot_s = t + config.scan_log_period_s;
-        result.perception_log.push_back({t, perceiver.last_scan(), perceiver.tracker().boxes(t), p.layer});
+        result.perception_log.push_back(
+            {t, perceiver.last_scan(), perceiver.tracker().boxes(t), p.layer});
       }
       const TravelCounts before = travel->counts();
       const Decision d = travel->decide(p);  // decide
@@ -164,9 +175,12 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
       const TravelCounts after = travel->counts();
       using Kind = EpisodeResult::Event::Kind;
       if (after.stops > before.stops) result.events.push_back({Kind::kStop, t, truth.position()});
-      if (after.replans > before.replans) result.events.push_back({Kind::kReplan, t, truth.position()});
-      if (after.recoveries > before.recoveries) result.events.push_back({Kind::kRecovery, t, truth.position()});
-      if (after.retries > before.retries) result.events.push_back({Kind::kRetry, t, truth.position()});
+      if (after.replans > before.replans)
+        result.events.push_back({Kind::kReplan, t, truth.position()});
+      if (after.recoveries > before.recoveries)
+        result.events.push_back({Kind::kRecovery, t, truth.position()});
+      if (after.retries > before.retries)
+        result.events.push_back({Kind::kRetry, t, truth.position()});
       if (t >= next_track_s) {
         next_track_s = t + kMovingTrackPeriod_s;
         const std::vector<ActorState> actors = physics.actors();
@@ -177,7 +191,8 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         }
       }
       result.max_cross_track_m = std::max(result.max_cross_track_m, d.cross_track_m);
-      result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m, d.phase, d.wall_following, target_at});
+      result.trajectory.push_back({t, truth, p.pose, p.position_sigma_m, speed, d.cross_track_m,
+                                   d.phase, d.wall_following, target_at});
       if (!d.finished.empty()) {
         // Success is the charger's signal with no collision on the way (and, undocking, the
         // staging pose reached again).
@@ -190,12 +205,14 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
         break;
       }
       const controller::Twist twist = governor.limit(d.twist, p.slipping, period * dt);
-      drive.command(controller::to_wheels(twist, plant.robot.wheel_base_m), period * dt);  // actuate
+      drive.command(controller::to_wheels(twist, plant.robot.wheel_base_m),
+                    period * dt);  // actuate
     }
     if (config.kidnap.enabled() && !kidnapped && k * dt >= config.kidnap.at_s) {
       kidnapped = true;
       const Pose2 was = physics.robot_pose();
-      physics.place_robot({was.x + config.kidnap.dx_m, was.y + config.kidnap.dy_m, geom::wrap_angle(was.yaw + config.kidnap.dyaw_rad)});
+      physics.place_robot({was.x + config.kidnap.dx_m, was.y + config.kidnap.dy_m,
+                           geom::wrap_angle(was.yaw + config.kidnap.dyaw_rad)});
     }
     drive.apply(physics, dt);
     physics.step(config.step);  // step
@@ -223,14 +240,17 @@ EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
     std::optional<std::pair<double, Pose2>> first_collision;
     for (const EpisodeResult::Event& e : result.events) {
       if (e.kind != EpisodeResult::Event::Kind::kCollision || first_collision) continue;
-      // The heading from the last logged sample at or before the contact (the event keeps a position).
+      // The heading from the last logged sample at or before the contact (the event keeps a
+      // position).
       double yaw = physics.robot_pose().yaw;
       for (const TrajectorySample& s : result.trajectory)
         if (s.t_s <= e.t_s) yaw = s.truth.yaw;
       first_collision = {e.t_s, Pose2{e.at.x, e.at.y, yaw}};
     }
-    result.failure = watch.judge(result.time_s, physics.robot_pose(), give_up, first_collision, pursuit);
-    result.events.push_back({EpisodeResult::Event::Kind::kFailure, result.failure->time_s, result.failure->pose.position()});
+    result.failure =
+        watch.judge(result.time_s, physics.robot_pose(), give_up, first_collision, pursuit);
+    result.events.push_back({EpisodeResult::Event::Kind::kFailure, result.failure->time_s,
+                             result.failure->pose.position()});
   }
   return result;
 }

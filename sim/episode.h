@@ -27,10 +27,10 @@ namespace plantsim::sim {
 
 /// The charger's pads: they report charging when pressed with the robot within these.
 struct DockTolerance {
-  double position_m = 0.02;               ///< robot centre off the approach axis
+  double position_m = 0.02;  ///< robot centre off the approach axis
   double heading_rad = 2.0 * M_PI / 180.0;
-  double dwell_s = 0.5;                   ///< pressed within tolerance this long
-  double min_press_m = 0.001;             ///< pads compressed at least this far
+  double dwell_s = 0.5;        ///< pressed within tolerance this long
+  double min_press_m = 0.001;  ///< pads compressed at least this far
 };
 
 /// How the robot travels to the staging pose (or to a moving target): along the planner's
@@ -61,26 +61,27 @@ struct EpisodeConfig {
   LidarParams lidar;
   ImuParams imu;
   BeaconParams beacon;
-  robot::PerceptionParams perception;      ///< mode, EKF and tracker
+  robot::PerceptionParams perception;  ///< mode, EKF and tracker
   controller::PurePursuitParams tracking;
   controller::DockingParams docking;
   controller::TractionParams traction;
   TravelMode travel = TravelMode::kPath;
   controller::PotentialFieldParams field;
-  double catch_distance_m = 0.1;        ///< a moving target is caught this close (edge to edge)
+  double catch_distance_m = 0.1;         ///< a moving target is caught this close (edge to edge)
   double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
   DockTolerance tolerance;
   KidnapFault kidnap;
   double timeout_s = 600.0;
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
-  double scan_log_period_s = 0;  ///< keep the scan and the tracks this often, for animations (0: only the last)
+  double scan_log_period_s =
+      0;  ///< keep the scan and the tracks this often, for animations (0: only the last)
   std::uint64_t seed = 1;
 };
 
 struct TrajectorySample {
   double t_s;
   Pose2 truth;
-  Pose2 estimate;  ///< map frame (localised)
+  Pose2 estimate;               ///< map frame (localised)
   double position_sigma_m = 0;  ///< the estimate's 1-sigma (largest direction; 0 in oracle mode)
   double speed_mps;
   double cross_track_m;
@@ -90,41 +91,44 @@ struct TrajectorySample {
 };
 
 struct EpisodeResult {
-  std::optional<robot::Failure> failure;  ///< why it did not succeed (set exactly when !succeeded())
-  std::string status;            ///< "docked", "docked_with_collision", "caught", "failed", "trapped", "timeout",
-                                 ///< or a planner status
-  bool docked = false;           ///< charging and no collision in the whole episode (success)
-  bool caught = false;           ///< a moving target was reached
+  std::optional<robot::Failure>
+      failure;          ///< why it did not succeed (set exactly when !succeeded())
+  std::string status;   ///< "docked", "docked_with_collision", "caught", "failed", "trapped",
+                        ///< "timeout", or a planner status
+  bool docked = false;  ///< charging and no collision in the whole episode (success)
+  bool caught = false;  ///< a moving target was reached
   bool succeeded() const { return docked || caught; }
-  double position_error_m = 0;   ///< true centre to docked pose, at contact or at the end
+  double position_error_m = 0;  ///< true centre to docked pose, at contact or at the end
   double heading_error_deg = 0;
-  bool charging = false;         ///< the charger's own signal was seen (charging started)
-  bool undocked = false;         ///< with docking.undock: back at the staging pose after charging
-  int collisions = 0;            ///< separate contacts with obstacles or walls
-  int collisions_robot_moving = 0;  ///< ... of which the robot began by moving towards what it touched
+  bool charging = false;  ///< the charger's own signal was seen (charging started)
+  bool undocked = false;  ///< with docking.undock: back at the staging pose after charging
+  int collisions = 0;     ///< separate contacts with obstacles or walls
+  int collisions_robot_moving =
+      0;  ///< ... of which the robot began by moving towards what it touched
   int retries = 0;
-  int stops = 0;                 ///< times the robot stopped for a moving obstacle
-  int replans = 0;               ///< new plans made around what blocked the way
-  int recoveries = 0;            ///< settled and set off again after being displaced (shoved, slid)
-  int slips = 0;                 ///< wheel slips perception saw (each slowed the robot down)
+  int stops = 0;       ///< times the robot stopped for a moving obstacle
+  int replans = 0;     ///< new plans made around what blocked the way
+  int recoveries = 0;  ///< settled and set off again after being displaced (shoved, slid)
+  int slips = 0;       ///< wheel slips perception saw (each slowed the robot down)
   double time_s = 0;
   std::int64_t physics_steps = 0;  ///< fixed steps simulated
-  double path_length_m = 0;      ///< planned, start to staging pose
-  double driven_length_m = 0;    ///< ground truth
+  double path_length_m = 0;        ///< planned, start to staging pose
+  double driven_length_m = 0;      ///< ground truth
   double max_cross_track_m = 0;
   std::string planner;
-  std::string travel = "path";   ///< to_string(TravelMode)
-  std::string steered_by;        ///< an outside controller's name (EpisodeSteering), or empty
-  int local_minima = 0;          ///< potential-field travel: local minima met
-  int wall_follows = 0;          ///< ... and wall-following episodes begun
+  std::string travel = "path";    ///< to_string(TravelMode)
+  std::string steered_by;         ///< an outside controller's name (EpisodeSteering), or empty
+  int local_minima = 0;           ///< potential-field travel: local minima met
+  int wall_follows = 0;           ///< ... and wall-following episodes begun
   planner::PlanStats plan_stats;  ///< of the first plan (build and query time, graph size)
-  std::vector<Vec2> plan;          ///< the plan at the end (the last replan's, or the first)
-  std::vector<Vec2> first_plan;    ///< the plan the robot set off on (path_length_m is its length)
-  std::vector<Vec2> explored;     ///< the planner's exploration walk, if it made one (seed 003, 002)
+  std::vector<Vec2> plan;         ///< the plan at the end (the last replan's, or the first)
+  std::vector<Vec2> first_plan;   ///< the plan the robot set off on (path_length_m is its length)
+  std::vector<Vec2> explored;  ///< the planner's exploration walk, if it made one (seed 003, 002)
   std::string explored_label = "explored";  ///< what the planner calls it ("raw walk")
-  std::vector<std::vector<Vec2>> tried;  ///< walks it tried before its answer (seed 003's ring search)
+  std::vector<std::vector<Vec2>>
+      tried;  ///< walks it tried before its answer (seed 003's ring search)
   std::vector<planner::PlanMark> marks;  ///< its labels for figures (seed 003's junction letters)
-  std::string plan_note;          ///< what the planner said about its plan
+  std::string plan_note;                 ///< what the planner said about its plan
   std::vector<TrajectorySample> trajectory;
   std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
   /// Where each moving obstacle was over time (every 0.25 s, as the physics moved it).
@@ -133,14 +137,16 @@ struct EpisodeResult {
     std::vector<geom::Rect> boxes;
   };
   std::vector<MovingTrack> moving_tracks;
-  bool error_measured = false;  ///< position/heading errors were measured (at contact or at the end)
-  Pose2 measured_pose;          ///< the true pose they were measured at
+  bool error_measured =
+      false;            ///< position/heading errors were measured (at contact or at the end)
+  Pose2 measured_pose;  ///< the true pose they were measured at
   std::string perception_mode = "sensors";
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
-  std::string localization_status = "ok";  ///< worst health the estimator reported: ok, degraded, lost
-  int relocalizations = 0;                 ///< times the estimate restarted from a global scan match
-  int unmapped_seen = 0;                   ///< unmapped obstacles perception marked at some time (of the plant's)
-  robot::ScanView last_scan;                      ///< the last scan as perception placed it
+  std::string localization_status =
+      "ok";                 ///< worst health the estimator reported: ok, degraded, lost
+  int relocalizations = 0;  ///< times the estimate restarted from a global scan match
+  int unmapped_seen = 0;    ///< unmapped obstacles perception marked at some time (of the plant's)
+  robot::ScanView last_scan;  ///< the last scan as perception placed it
   /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.
   struct PerceptionSnapshot {
     double t_s;
@@ -163,11 +169,13 @@ struct EpisodeResult {
 };
 
 /// A controller from outside plantsim in the loop (the Python module's): `wrap` receives the
-/// travel plantsim built, the robot's map and the first plan, and returns the travel to drive with (one made by
-/// robot::steered_by). `name` is recorded in the result. Empty: plantsim's own controller.
+/// travel plantsim built, the robot's map and the first plan, and returns the travel to drive with
+/// (one made by robot::steered_by). `name` is recorded in the result. Empty: plantsim's own
+/// controller.
 struct EpisodeSteering {
   std::string name;
-  std::function<std::unique_ptr<robot::Travel>(std::unique_ptr<robot::Travel> builtin, const worlds::World& map,
+  std::function<std::unique_ptr<robot::Travel>(std::unique_ptr<robot::Travel> builtin,
+                                               const worlds::World& map,
                                                const std::vector<Vec2>& first_plan)>
       wrap;
   explicit operator bool() const { return static_cast<bool>(wrap); }
@@ -175,8 +183,9 @@ struct EpisodeSteering {
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the
 /// sensed obstacles added. The loop: sense (sensor readings from the physics), estimate
-/// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world with a moving target the episode is a pursuit: the plan
-/// goes to where the target will park, and success is reaching the target.
+/// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world
+/// with a moving target the episode is a pursuit: the plan goes to where the target will park, and
+/// success is reaching the target.
 EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                           const EpisodeConfig& config, const EpisodeSteering& steering = {});
 

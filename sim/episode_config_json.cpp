@@ -1,12 +1,11 @@
 // A table of every parameter, read and written by the same entries.
 #include "sim/episode_config_json.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
-#include <fstream>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -34,9 +33,14 @@ struct Field {
   bool positive = false;  // lo excluded
 };
 
-#define PS_FIELD(section, member, name) Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }}
-#define PS_RANGE(section, member, name, lo, hi, positive) \
-  Field{section, name, [](EpisodeConfig& c) -> double& { return c.member; }, lo, hi, positive}
+#define PS_FIELD(section, member, name)                                 \
+  Field {                                                               \
+    section, name, [](EpisodeConfig& c) -> double& { return c.member; } \
+  }
+#define PS_RANGE(section, member, name, lo, hi, positive)                                 \
+  Field {                                                                                 \
+    section, name, [](EpisodeConfig& c) -> double& { return c.member; }, lo, hi, positive \
+  }
 #define PS_PROBABILITY(section, member, name) PS_RANGE(section, member, name, 0.0, 1.0, false)
 #define PS_POSITIVE(section, member, name) PS_RANGE(section, member, name, 0.0, kMaxParameter, true)
 
@@ -56,7 +60,8 @@ const std::vector<Field>& fields() {
       PS_FIELD("detection", detection.yaw_noise_rad, "yaw_noise_rad"),
       PS_RANGE("detection", detection.rate_hz, "rate_hz", 0.0, 1000.0, true),
       PS_RANGE("detection", detection.mount_x_m, "mount_x_m", -10.0, 10.0, false),
-      PS_PROBABILITY("detection", detection.false_negative_probability, "false_negative_probability"),
+      PS_PROBABILITY("detection", detection.false_negative_probability,
+                     "false_negative_probability"),
       PS_PROBABILITY("detection", detection.outlier_probability, "outlier_probability"),
       PS_FIELD("detection", detection.outlier_position_m, "outlier_position_m"),
       PS_FIELD("detection", detection.outlier_yaw_rad, "outlier_yaw_rad"),
@@ -72,7 +77,8 @@ const std::vector<Field>& fields() {
       PS_PROBABILITY("lidar", lidar.dropout_probability, "dropout_probability"),
       PS_RANGE("imu", imu.yaw_rate_noise_radps, "yaw_rate_noise_radps", 0.0, 10.0, false),
       PS_RANGE("imu", imu.bias_radps, "bias_radps", 0.0, 10.0, false),
-      PS_RANGE("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0, 10.0, false),
+      PS_RANGE("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0, 10.0,
+               false),
       PS_RANGE("beacon", beacon.position_noise_m, "position_noise_m", 0.0, 100.0, false),
       PS_POSITIVE("ekf", perception.ekf.initial_position_sigma_m, "initial_position_sigma_m"),
       PS_POSITIVE("ekf", perception.ekf.initial_yaw_sigma_rad, "initial_yaw_sigma_rad"),
@@ -192,9 +198,12 @@ const std::vector<Field>& fields() {
       PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
       PS_RANGE("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0, false),
       PS_RANGE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0, true),
-      PS_RANGE("perception", perception.global_match_sigma_m, "global_match_sigma_m", 0.0, 100.0, true),
-      PS_RANGE("perception", perception.global_match_period_s, "global_match_period_s", 0.0, 100.0, false),
-      PS_RANGE("perception", perception.global_match_max_window_m, "global_match_max_window_m", 0.1, 100.0, false),
+      PS_RANGE("perception", perception.global_match_sigma_m, "global_match_sigma_m", 0.0, 100.0,
+               true),
+      PS_RANGE("perception", perception.global_match_period_s, "global_match_period_s", 0.0, 100.0,
+               false),
+      PS_RANGE("perception", perception.global_match_max_window_m, "global_match_max_window_m", 0.1,
+               100.0, false),
       PS_RANGE("", timeout_s, "timeout_s", 0.0, 86400.0, true),
   };
   return table;
@@ -213,17 +222,27 @@ struct IntField {
 };
 const std::vector<IntField>& int_fields() {
   static const std::vector<IntField> table = {
-      {"step", "velocity_iterations", [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
-      {"step", "position_iterations", [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
+      {"step", "velocity_iterations",
+       [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
+      {"step", "position_iterations",
+       [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
       {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
-      {"step", "control_period_steps", [](EpisodeConfig& c) -> int& { return c.control_period_steps; }, 1, 1000},
-      {"potential_field", "max_wall_follows", [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
-      {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1, 10000},
-      {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1, 10000},
-      {"ekf", "iterations", [](EpisodeConfig& c) -> int& { return c.perception.ekf.iterations; }, 1, 20},
-      {"ekf", "min_informative_beams", [](EpisodeConfig& c) -> int& { return c.perception.ekf.min_informative_beams; }, 3, 10000},
-      {"ekf", "nis_window", [](EpisodeConfig& c) -> int& { return c.perception.ekf.nis_window; }, 1, 1000},
-      {"ekf", "lost_failed_matches", [](EpisodeConfig& c) -> int& { return c.perception.ekf.lost_failed_matches; }, 1, 100000},
+      {"step", "control_period_steps",
+       [](EpisodeConfig& c) -> int& { return c.control_period_steps; }, 1, 1000},
+      {"potential_field", "max_wall_follows",
+       [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
+      {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1,
+       10000},
+      {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1,
+       10000},
+      {"ekf", "iterations", [](EpisodeConfig& c) -> int& { return c.perception.ekf.iterations; }, 1,
+       20},
+      {"ekf", "min_informative_beams",
+       [](EpisodeConfig& c) -> int& { return c.perception.ekf.min_informative_beams; }, 3, 10000},
+      {"ekf", "nis_window", [](EpisodeConfig& c) -> int& { return c.perception.ekf.nis_window; }, 1,
+       1000},
+      {"ekf", "lost_failed_matches",
+       [](EpisodeConfig& c) -> int& { return c.perception.ekf.lost_failed_matches; }, 1, 100000},
   };
   return table;
 }
@@ -239,7 +258,8 @@ const std::vector<BoolField>& bool_fields() {
       {"detection", "enabled", [](EpisodeConfig& c) -> bool& { return c.detection.enabled; }},
       {"detection", "occlusion", [](EpisodeConfig& c) -> bool& { return c.detection.occlusion; }},
       {"lidar", "enabled", [](EpisodeConfig& c) -> bool& { return c.lidar.enabled; }},
-      {"lidar", "max_range_returns", [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
+      {"lidar", "max_range_returns",
+       [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
       {"traction", "enabled", [](EpisodeConfig& c) -> bool& { return c.traction.enabled; }},
       {"docking", "undock", [](EpisodeConfig& c) -> bool& { return c.docking.undock; }},
       {"layer", "enabled", [](EpisodeConfig& c) -> bool& { return c.perception.layer.enabled; }},
@@ -253,7 +273,8 @@ std::string path_of(const char* section, const std::string& name) {
 
 }  // namespace
 
-EpisodeConfig parse_episode_config(const std::string& text, const std::string& source, EpisodeConfig c) {
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
+                                   EpisodeConfig c) {
   json doc;
   try {
     doc = json::parse(text);
@@ -277,12 +298,15 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
   for (const Field& f : fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
-    if (!v->is_number()) throw worlds::WorldError(source, path_of(f.section, f.name), "expected a number");
+    if (!v->is_number())
+      throw worlds::WorldError(source, path_of(f.section, f.name), "expected a number");
     const double d = v->get<double>();
-    if (!std::isfinite(d)) throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
+    if (!std::isfinite(d))
+      throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
     if (d < f.lo || d > f.hi || (f.positive && d <= f.lo)) {
       std::ostringstream range;
-      range << "must be " << (f.positive ? "above " : "at least ") << f.lo << " and at most " << f.hi;
+      range << "must be " << (f.positive ? "above " : "at least ") << f.lo << " and at most "
+            << f.hi;
       throw worlds::WorldError(source, path_of(f.section, f.name), range.str());
     }
     f.ref(c) = d;
@@ -290,60 +314,77 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
   for (const IntField& f : int_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
-    if (!v->is_number_integer() || (v->is_number_unsigned() && v->get<std::uint64_t>() > 1000000000ULL) ||
+    if (!v->is_number_integer() ||
+        (v->is_number_unsigned() && v->get<std::uint64_t>() > 1000000000ULL) ||
         v->get<std::int64_t>() < f.lo || v->get<std::int64_t>() > f.hi)
-      throw worlds::WorldError(source, path_of(f.section, f.name),
-                               "expected a whole number from " + std::to_string(f.lo) + " to " + std::to_string(f.hi));
+      throw worlds::WorldError(
+          source, path_of(f.section, f.name),
+          "expected a whole number from " + std::to_string(f.lo) + " to " + std::to_string(f.hi));
     f.ref(c) = v->get<int>();
   }
   for (const BoolField& f : bool_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
-    if (!v->is_boolean()) throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
+    if (!v->is_boolean())
+      throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
     f.ref(c) = v->get<bool>();
   }
   if (const json* v = lookup("perception", "mode")) {
     const std::string m = v->is_string() ? v->get<std::string>() : "";
-    if (m == "sensors") c.perception.mode = PerceptionMode::kSensors;
-    else if (m == "oracle") c.perception.mode = PerceptionMode::kOracle;
-    else throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
+    if (m == "sensors")
+      c.perception.mode = PerceptionMode::kSensors;
+    else if (m == "oracle")
+      c.perception.mode = PerceptionMode::kOracle;
+    else
+      throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
   }
   if (const json* v = lookup("", "travel")) {
     const std::string t = v->is_string() ? v->get<std::string>() : "";
-    if (t == "path") c.travel = TravelMode::kPath;
-    else if (t == "potential-field") c.travel = TravelMode::kPotentialField;
-    else throw worlds::WorldError(source, "travel", "expected \"path\" or \"potential-field\"");
+    if (t == "path")
+      c.travel = TravelMode::kPath;
+    else if (t == "potential-field")
+      c.travel = TravelMode::kPotentialField;
+    else
+      throw worlds::WorldError(source, "travel", "expected \"path\" or \"potential-field\"");
   }
   if (const json* v = lookup("", "seed")) {
-    if (!v->is_number_unsigned()) throw worlds::WorldError(source, "seed", "expected a whole number");
+    if (!v->is_number_unsigned())
+      throw worlds::WorldError(source, "seed", "expected a whole number");
     c.seed = v->get<std::uint64_t>();
   }
   for (const auto& [key, value] : doc.items()) {
     if (value.is_object()) {
       for (const auto& [sub, _] : value.items())
-        if (!known.count(key + "." + sub)) throw worlds::WorldError(source, key + "." + sub, "unknown parameter");
+        if (!known.count(key + "." + sub))
+          throw worlds::WorldError(source, key + "." + sub, "unknown parameter");
     } else if (!known.count(key) && key != "comment") {
       throw worlds::WorldError(source, key, "unknown parameter");
     }
   }
-  if (c.field.k_att <= 0) throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
+  if (c.field.k_att <= 0)
+    throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
   if (c.field.rho0_m <= c.field.rho_min_m)
     throw worlds::WorldError(source, "potential_field.rho0_m", "must exceed rho_min_m");
-  if (c.field.slow_force_ratio <= 0) throw worlds::WorldError(source, "potential_field.slow_force_ratio", "must be positive");
-  if (c.pursuit_replan_period_s <= 0) throw worlds::WorldError(source, "pursuit.replan_period_s", "must be positive");
+  if (c.field.slow_force_ratio <= 0)
+    throw worlds::WorldError(source, "potential_field.slow_force_ratio", "must be positive");
+  if (c.pursuit_replan_period_s <= 0)
+    throw worlds::WorldError(source, "pursuit.replan_period_s", "must be positive");
   if (c.perception.mode == PerceptionMode::kSensors && c.localization.period_s > 0)
     throw worlds::WorldError(source, "localization.period_s",
-                             "true-pose fixes exist only in perception.mode \"oracle\" (sensors mode localises with the EKF)");
+                             "true-pose fixes exist only in perception.mode \"oracle\" (sensors "
+                             "mode localises with the EKF)");
   if (c.lidar.min_range_m >= c.lidar.max_range_m)
     throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
     throw worlds::WorldError(source, "tracking.lookahead_min_m", "must not exceed lookahead_max_m");
   // Each value in range can still ask for too much together: work is bounded, not only input.
-  if (const double steps = std::ceil(c.timeout_s / c.step.dt_s); steps > static_cast<double>(kMaxEpisodeSteps))
-    throw worlds::WorldError(source, "timeout_s",
-                             "timeout_s / step.dt_s asks for " + std::to_string(static_cast<long long>(steps)) +
-                                 " physics steps, more than the limit of " + std::to_string(kMaxEpisodeSteps) +
-                                 " (docs/config.md): shorten the timeout or lengthen the step");
+  if (const double steps = std::ceil(c.timeout_s / c.step.dt_s);
+      steps > static_cast<double>(kMaxEpisodeSteps))
+    throw worlds::WorldError(
+        source, "timeout_s",
+        "timeout_s / step.dt_s asks for " + std::to_string(static_cast<long long>(steps)) +
+            " physics steps, more than the limit of " + std::to_string(kMaxEpisodeSteps) +
+            " (docs/config.md): shorten the timeout or lengthen the step");
   return c;
 }
 
@@ -361,8 +402,10 @@ std::string default_config_json() {
   EpisodeConfig c;
   nlohmann::ordered_json j;
   for (const Field& f : fields()) {
-    if (std::string(f.section).empty()) j[f.name] = f.ref(c);
-    else j[f.section][f.name] = f.ref(c);
+    if (std::string(f.section).empty())
+      j[f.name] = f.ref(c);
+    else
+      j[f.section][f.name] = f.ref(c);
   }
   for (const IntField& f : int_fields()) j[f.section][f.name] = f.ref(c);
   for (const BoolField& f : bool_fields()) j[f.section][f.name] = f.ref(c);

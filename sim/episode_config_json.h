@@ -11,7 +11,8 @@ namespace plantsim::sim {
 
 /// Applies the file's values over `base`. Throws worlds::WorldError naming file and field.
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base = {});
-EpisodeConfig parse_episode_config(const std::string& text, const std::string& source, EpisodeConfig base = {});
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
+                                   EpisodeConfig base = {});
 
 /// The defaults as JSON (what `plantsim config` prints).
 std::string default_config_json();

@@ -18,12 +18,14 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["undocked"] = r.undocked;
   j["caught"] = r.caught;
   j["travel"] = r.travel;
-  if (!r.steered_by.empty()) j["steered_by"] = r.steered_by;  // an outside controller drove the travel
+  if (!r.steered_by.empty())
+    j["steered_by"] = r.steered_by;  // an outside controller drove the travel
   j["local_minima"] = r.local_minima;
   j["wall_follows"] = r.wall_follows;
   j["position_error_m"] = r.position_error_m;
   j["heading_error_deg"] = r.heading_error_deg;
-  j["error_measured"] = r.error_measured;  // false: a pursuit, or a run that never set off (errors are 0, not measured)
+  j["error_measured"] = r.error_measured;  // false: a pursuit, or a run that never set off (errors
+                                           // are 0, not measured)
   j["collisions"] = r.collisions;
   j["collisions_robot_moving"] = r.collisions_robot_moving;
   j["retries"] = r.retries;

@@ -9,7 +9,8 @@ namespace plantsim::sim {
 
 using robot::ActorState;
 
-EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s)
+EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result,
+                               double catch_distance_m, double dt_s)
     : plant_(plant),
       r_(result),
       catch_distance_m_(catch_distance_m),
@@ -20,13 +21,15 @@ EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result
 void EpisodeMetrics::before_step(const PhysicsWorld& physics, const ContactState& contact) {
   if (contact.obstacle && !was_touching_obstacle_) {
     ++r_.collisions;
-    r_.events.push_back({EpisodeResult::Event::Kind::kCollision, r_.physics_steps * dt_s_, physics.robot_position()});
+    r_.events.push_back({EpisodeResult::Event::Kind::kCollision, r_.physics_steps * dt_s_,
+                         physics.robot_position()});
     // Whose doing: the robot's when it was moving towards what it touched (faster than a
     // creep), not when something walked into a standing or retreating robot.
     // The motion over the last steps before contact (the solver has already stopped the
     // robot's approach velocity by the time the contact is seen).
     const Vec2 at = physics.robot_position();
-    const Vec2 v = recent_.empty() ? Vec2{0, 0} : (1.0 / (recent_.size() * dt_s_)) * (at - recent_.front());
+    const Vec2 v =
+        recent_.empty() ? Vec2{0, 0} : (1.0 / (recent_.size() * dt_s_)) * (at - recent_.front());
     bool driving_into = false;
     for (const Vec2& p : contact.obstacle_points) {
       const Vec2 d = p - at;
@@ -55,8 +58,8 @@ void EpisodeMetrics::after_step(const PhysicsWorld& physics) {
 }
 
 void EpisodeMetrics::compare_estimate(const PhysicsWorld& physics, const Pose2& estimate) {
-  r_.localization_error_max_m =
-      std::max(r_.localization_error_max_m, geom::distance(physics.robot_position(), estimate.position()));
+  r_.localization_error_max_m = std::max(
+      r_.localization_error_max_m, geom::distance(physics.robot_position(), estimate.position()));
 }
 
 void EpisodeMetrics::compare_obstacles(const std::vector<controller::MovingBox>& perceived) {
@@ -75,12 +78,14 @@ void EpisodeMetrics::compare_obstacles(const std::vector<controller::MovingBox>&
 
 bool EpisodeMetrics::target_caught(const PhysicsWorld& physics) const {
   const std::optional<ActorState> target = physics.target();
-  return target && controller::distance_to_box(physics.robot_position(), target->box) - plant_.robot.radius_m <=
+  return target && controller::distance_to_box(physics.robot_position(), target->box) -
+                           plant_.robot.radius_m <=
                        catch_distance_m_;
 }
 
 void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {
-  if (plant_.target) return;  // a pursuit ends at its target, not at the charger: nothing to measure
+  if (plant_.target)
+    return;  // a pursuit ends at its target, not at the charger: nothing to measure
   const Pose2 truth = physics.robot_pose();
   r_.position_error_m = geom::distance(truth.position(), plant_.charger.position());
   r_.heading_error_deg = std::fabs(geom::wrap_angle(truth.yaw - plant_.charger.yaw)) * 180.0 / M_PI;

@@ -12,7 +12,8 @@ namespace plantsim::sim {
 
 class EpisodeMetrics {
  public:
-  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m, double dt_s);
+  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m,
+                 double dt_s);
   /// Every physics step, before it, with the contacts the last step left: collisions.
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   /// Every physics step, after it: driven length.
@@ -36,7 +37,7 @@ class EpisodeMetrics {
   bool charging_measured_ = false;
   double dt_s_;
   Vec2 previous_;
-  std::deque<Vec2> recent_;  // positions after the last few steps
+  std::deque<Vec2> recent_;          // positions after the last few steps
   std::vector<char> unmapped_seen_;  // per unmapped obstacle of the plant
 };
 

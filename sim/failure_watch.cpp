@@ -5,13 +5,13 @@
 
 namespace plantsim::sim {
 
-using robot::LocalizationHealth;
 using robot::Failure;
-using robot::GiveUp;
 using robot::FailureReason;
+using robot::GiveUp;
+using robot::LocalizationHealth;
 
-void FailureWatch::observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, LocalizationHealth health,
-                           bool blocked) {
+void FailureWatch::observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate,
+                           LocalizationHealth health, bool blocked) {
   now_ = {geom::distance(truth.position(), estimate.position()), health};
   if (!started_ || geom::distance(truth.position(), anchor_pose_.position()) > p_.progress_m) {
     started_ = true;
@@ -28,14 +28,16 @@ void FailureWatch::observe(double t_s, const geom::Pose2& truth, const geom::Pos
 bool FailureWatch::lost(const Localisation& l, std::string& detail) const {
   if (l.health != LocalizationHealth::kLost && l.error_m <= p_.lost_error_m) return false;
   char text[160];
-  std::snprintf(text, sizeof text, "the estimate was %.2f m from the true position, its status %s", l.error_m,
-                std::string(to_string(l.health)).c_str());
+  std::snprintf(text, sizeof text, "the estimate was %.2f m from the true position, its status %s",
+                l.error_m, std::string(to_string(l.health)).c_str());
   detail = text;
   return true;
 }
 
-Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose, const std::optional<GiveUp>& give_up,
-                            const std::optional<std::pair<double, geom::Pose2>>& first_collision, bool pursuit) const {
+Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
+                            const std::optional<GiveUp>& give_up,
+                            const std::optional<std::pair<double, geom::Pose2>>& first_collision,
+                            bool pursuit) const {
   Failure f;
   if (first_collision) {
     // Success needs an episode without contact, whatever happened after it.

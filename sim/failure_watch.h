@@ -13,9 +13,10 @@
 namespace plantsim::sim {
 
 struct FailureWatchParams {
-  double stall_window_s = 30.0;  ///< no progress this long before the time ran out: stuck or blocked
-  double progress_m = 0.5;       ///< moving this far from where it last progressed is progress
-  double lost_error_m = 0.25;    ///< an estimate this far from the truth is lost, whatever it says
+  double stall_window_s =
+      30.0;                    ///< no progress this long before the time ran out: stuck or blocked
+  double progress_m = 0.5;     ///< moving this far from where it last progressed is progress
+  double lost_error_m = 0.25;  ///< an estimate this far from the truth is lost, whatever it says
 };
 
 class FailureWatch {
@@ -23,13 +24,16 @@ class FailureWatch {
   explicit FailureWatch(FailureWatchParams params = {}) : p_(params) {}
   /// Every control step: the truth, the estimate, its health, and whether the robot holds
   /// still because its way is blocked.
-  void observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate, robot::LocalizationHealth health, bool blocked);
+  void observe(double t_s, const geom::Pose2& truth, const geom::Pose2& estimate,
+               robot::LocalizationHealth health, bool blocked);
 
   /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
   /// account when it stopped trying; `first_collision`: when and where the first contact
   /// began (true pose), if any; `pursuit`: the episode chased a moving target.
-  robot::Failure judge(double end_s, const geom::Pose2& end_pose, const std::optional<robot::GiveUp>& give_up,
-                const std::optional<std::pair<double, geom::Pose2>>& first_collision, bool pursuit) const;
+  robot::Failure judge(double end_s, const geom::Pose2& end_pose,
+                       const std::optional<robot::GiveUp>& give_up,
+                       const std::optional<std::pair<double, geom::Pose2>>& first_collision,
+                       bool pursuit) const;
 
  private:
   struct Localisation {
@@ -41,8 +45,8 @@ class FailureWatch {
 
   FailureWatchParams p_;
   bool started_ = false;
-  double anchor_s_ = 0;          // when it last progressed
-  geom::Pose2 anchor_pose_;      // where
+  double anchor_s_ = 0;      // when it last progressed
+  geom::Pose2 anchor_pose_;  // where
   Localisation at_anchor_;
   double blocked_since_anchor_s_ = 0;
   double last_s_ = 0;

@@ -6,7 +6,8 @@
 
 namespace plantsim::sim {
 
-Imu::Imu(ImuParams params, std::uint64_t seed) : params_(params), rng_(seed ^ 0x3c6ef372fe94f82bULL) {
+Imu::Imu(ImuParams params, std::uint64_t seed)
+    : params_(params), rng_(seed ^ 0x3c6ef372fe94f82bULL) {
   bias_radps_ = params_.bias_radps * gauss_(rng_);
 }
 

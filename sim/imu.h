@@ -10,8 +10,8 @@ namespace plantsim::sim {
 
 /// Defaults: a consumer MEMS gyro after factory calibration.
 struct ImuParams {
-  double yaw_rate_noise_radps = 0.002;   ///< std-dev of each sample's white noise
-  double bias_radps = 0.002;             ///< std-dev of the turn-on bias
+  double yaw_rate_noise_radps = 0.002;         ///< std-dev of each sample's white noise
+  double bias_radps = 0.002;                   ///< std-dev of the turn-on bias
   double bias_walk_radps_per_sqrt_s = 0.0001;  ///< bias random walk
 };
 

@@ -9,9 +9,11 @@
 
 namespace plantsim::sim {
 
-Lidar::Lidar(LidarParams params, std::uint64_t seed) : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
+Lidar::Lidar(LidarParams params, std::uint64_t seed)
+    : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
 
-robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth, double t_s) {
+robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth,
+                             double t_s) {
   next_scan_s_ = t_s + 1.0 / params_.rate_hz;
   robot::LidarScan s;
   s.t_s = t_s;
@@ -23,9 +25,11 @@ robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& rob
   s.max_range_m = params_.max_range_m;
   s.ranges.resize(static_cast<std::size_t>(n));
   const geom::Pose2 sensor = geom::compose(robot_truth, s.mount);
-  const double no_return = params_.max_range_returns ? params_.max_range_m : std::numeric_limits<double>::infinity();
+  const double no_return =
+      params_.max_range_returns ? params_.max_range_m : std::numeric_limits<double>::infinity();
   const std::span<const geom::Vec2> directions = directions_.in_world(s, sensor.yaw);
-  physics.ray_fan(sensor.position(), directions, sensor.yaw + s.angle(0), s.angle_increment_rad, params_.max_range_m, hits_);
+  physics.ray_fan(sensor.position(), directions, sensor.yaw + s.angle(0), s.angle_increment_rad,
+                  params_.max_range_m, hits_);
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
     // Noise and dropout are drawn for every beam, hit or not, so that one beam's outcome
     // never shifts the random stream of the others (scans stay comparable across worlds).

@@ -22,17 +22,17 @@ class PhysicsWorld;
 /// Defaults: a typical 2D safety lidar (270 degrees, 0.05-20 m, 15 Hz, 1 cm noise).
 struct LidarParams {
   bool enabled = true;
-  int beam_count = 360;                  ///< beams spread evenly over the field of view
+  int beam_count = 360;                   ///< beams spread evenly over the field of view
   double field_of_view_rad = 1.5 * M_PI;  ///< total angle, centred on the mounting yaw
-  double min_range_m = 0.05;             ///< closer surfaces give no return
-  double max_range_m = 20.0;             ///< beyond: no return
-  double rate_hz = 15.0;                 ///< scans per second
-  double mount_x_m = 0.0;                ///< mounting pose in the robot frame
+  double min_range_m = 0.05;              ///< closer surfaces give no return
+  double max_range_m = 20.0;              ///< beyond: no return
+  double rate_hz = 15.0;                  ///< scans per second
+  double mount_x_m = 0.0;                 ///< mounting pose in the robot frame
   double mount_y_m = 0.0;
   double mount_yaw_rad = 0.0;
-  double range_noise_m = 0.01;           ///< std-dev of each range
-  double dropout_probability = 0.01;     ///< a beam returns nothing (dark or shiny surface)
-  bool max_range_returns = true;         ///< no-return beams read max_range_m (else +inf)
+  double range_noise_m = 0.01;        ///< std-dev of each range
+  double dropout_probability = 0.01;  ///< a beam returns nothing (dark or shiny surface)
+  bool max_range_returns = true;      ///< no-return beams read max_range_m (else +inf)
 };
 
 class Lidar {

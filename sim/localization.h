@@ -1,8 +1,9 @@
 // Perception mode "oracle" only (the comparison mode): where the robot believes it is, from
 // continuous wheel odometry (which drifts) and, optionally, periodic fixes that are the true
 // pose plus noise, standing in for a scan-matching or AMCL-like localiser. Sensors mode
-// localises with the EKF (ekf_localizer.h) instead. The fixes move the map-from-odometry transform, as in ROS (map -> odom ->
-// base_link), so the odometry frame itself never jumps: docking works in it.
+// localises with the EKF (ekf_localizer.h) instead. The fixes move the map-from-odometry transform,
+// as in ROS (map -> odom -> base_link), so the odometry frame itself never jumps: docking works in
+// it.
 #pragma once
 
 #include <random>

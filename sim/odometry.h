@@ -13,9 +13,9 @@
 namespace plantsim::sim {
 
 struct OdometryNoise {
-  double wheel_speed_noise = 0.0;    ///< std-dev of the relative error per wheel per step
-  double left_scale_error = 0.0;     ///< systematic relative error of the left wheel
-  double right_scale_error = 0.0;    ///< systematic relative error of the right wheel
+  double wheel_speed_noise = 0.0;  ///< std-dev of the relative error per wheel per step
+  double left_scale_error = 0.0;   ///< systematic relative error of the left wheel
+  double right_scale_error = 0.0;  ///< systematic relative error of the right wheel
 };
 
 class Odometry {

@@ -3,9 +3,9 @@
 
 #include <box2d/box2d.h>
 
-#include "sim/box2d_scene.h"
-
 #include <cmath>
+
+#include "sim/box2d_scene.h"
 
 namespace plantsim::sim {
 
@@ -43,7 +43,8 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w)
                static_cast<float>(0.5 * w.robot.width_m - b2_polygonRadius));
   b2FixtureDef robot_fd;
   robot_fd.shape = w.robot.rectangular() ? static_cast<b2Shape*>(&box) : &disk;
-  const double area = w.robot.rectangular() ? w.robot.length_m * w.robot.width_m : M_PI * w.robot.radius_m * w.robot.radius_m;
+  const double area = w.robot.rectangular() ? w.robot.length_m * w.robot.width_m
+                                            : M_PI * w.robot.radius_m * w.robot.radius_m;
   robot_fd.density = static_cast<float>(w.robot.mass_kg / area);
   robot_fd.friction = 0.3f;
   robot_fd.userData.pointer = kRobot;
@@ -94,7 +95,8 @@ void PhysicsWorld::advance(Actor& a, double dt_s) const {
   }
   a.script_time_s = next_time;
   a.velocity = (1.0 / dt_s) * (next - here);
-  a.body->SetLinearVelocity(b2Vec2(static_cast<float>(a.velocity.x), static_cast<float>(a.velocity.y)));
+  a.body->SetLinearVelocity(
+      b2Vec2(static_cast<float>(a.velocity.x), static_cast<float>(a.velocity.y)));
 }
 
 ActorState PhysicsWorld::state_of(const Actor& a) {
@@ -141,7 +143,8 @@ void PhysicsWorld::set_robot_velocity(Vec2 v, double w) {
 }
 
 void PhysicsWorld::place_robot(const Pose2& pose) {
-  robot_->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  robot_->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)),
+                       static_cast<float>(pose.yaw));
   robot_->SetLinearVelocity(b2Vec2(0, 0));
   robot_->SetAngularVelocity(0);
 }
@@ -192,8 +195,9 @@ std::optional<RayHit> PhysicsWorld::box2d_ray_cast(Vec2 from, Vec2 to) const {
   return detail::cast_ray(*world_, from, to);
 }
 
-void PhysicsWorld::ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment,
-                           double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
+void PhysicsWorld::ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle,
+                           double increment, double max_range_m,
+                           std::vector<std::optional<RayHit>>& hits) const {
   surfaces_.cast_fan(from, directions, first_angle, increment, max_range_m, hits);
   auto consider = [&](const Actor& a, SurfaceKind kind) {
     const geom::Rect box = state_of(a).box;

@@ -33,10 +33,9 @@ struct StepSettings {
   int position_iterations = 3;
 };
 
-
 struct ContactState {
-  bool charger = false;   ///< robot touches the charger body
-  bool obstacle = false;  ///< robot touches an obstacle, a wall or a moving obstacle
+  bool charger = false;               ///< robot touches the charger body
+  bool obstacle = false;              ///< robot touches an obstacle, a wall or a moving obstacle
   std::vector<Vec2> obstacle_points;  ///< where it touches them (world frame)
 };
 
@@ -58,8 +57,8 @@ class PhysicsWorld {
 
   Pose2 robot_pose() const;
   Vec2 robot_position() const;
-  Vec2 robot_velocity() const;          ///< world frame, m/s
-  double robot_yaw_rate() const;        ///< rad/s
+  Vec2 robot_velocity() const;    ///< world frame, m/s
+  double robot_yaw_rate() const;  ///< rad/s
   ContactState contacts() const;
   /// Nearest surface along the segment (obstacles, walls, charger, moving obstacles and the
   /// target; never the robot itself). For the sensors. The static parts are cast exactly by
@@ -73,8 +72,8 @@ class PhysicsWorld {
   /// A lidar's fan: ray k from `from` along unit directions[k], whose angle is within 1e-6 rad of
   /// first_angle + k * increment, to `max_range_m`. hits[k] has the range ray_cast finds along
   /// that direction; the static parts are met in one pass over the boxes within reach.
-  void ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment, double max_range_m,
-               std::vector<std::optional<RayHit>>& hits) const;
+  void ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment,
+               double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
   /// Sets the robot's velocity directly (no tyre model): for baselines and tests.

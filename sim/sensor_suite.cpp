@@ -5,8 +5,8 @@
 
 namespace plantsim::sim {
 
-using robot::SensorReadings;
 using robot::OracleReadings;
+using robot::SensorReadings;
 
 namespace {
 
@@ -38,7 +38,8 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
       last_odom_(plant.start),
       charger_marker_(worlds::charger_body(plant).center) {}
 
-void SensorSuite::count(const PhysicsWorld& physics, const ContactState& c, const WheelDrive& drive, double dt_s) {
+void SensorSuite::count(const PhysicsWorld& physics, const ContactState& c, const WheelDrive& drive,
+                        double dt_s) {
   odometry_.count(drive.motor_speeds(), dt_s);
   contact_points_.insert(contact_points_.end(), c.obstacle_points.begin(), c.obstacle_points.end());
   // The charger's own signal, from its pads: touched, then charging after the dwell.
@@ -70,7 +71,8 @@ SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {
   contact_ = charging_ = false;
   if (const auto target = physics.target()) {
     const geom::Vec2 rel = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
-    r.target_in_robot = rel + geom::Vec2{p_.beacon.position_noise_m * gauss_(rng_), p_.beacon.position_noise_m * gauss_(rng_)};
+    r.target_in_robot = rel + geom::Vec2{p_.beacon.position_noise_m * gauss_(rng_),
+                                         p_.beacon.position_noise_m * gauss_(rng_)};
   }
   if (p_.oracle) {
     OracleReadings o;
@@ -79,7 +81,8 @@ SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {
     o.truth = truth;
     o.actors = physics.actors();
     o.target = physics.target();
-    if (const auto target = physics.target()) r.target_in_robot = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
+    if (const auto target = physics.target())
+      r.target_in_robot = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
     r.oracle = std::move(o);
   }
   return r;

@@ -8,15 +8,15 @@
 #include <random>
 #include <vector>
 
+#include "robot/readings.h"
 #include "sim/bumper.h"
 #include "sim/charger_detector.h"
 #include "sim/charger_pads.h"
-#include "sim/lidar.h"
 #include "sim/imu.h"
+#include "sim/lidar.h"
 #include "sim/localization.h"
 #include "sim/odometry.h"
 #include "sim/physics_world.h"
-#include "robot/readings.h"
 #include "sim/wheel_drive.h"
 #include "worlds/world.h"
 
@@ -45,7 +45,8 @@ class SensorSuite {
  public:
   SensorSuite(const worlds::World& plant, const SensorParams& params, std::uint64_t seed);
   /// Counts one physics step of encoder travel and latches the contacts it left (every step).
-  void count(const PhysicsWorld& physics, const ContactState& contact, const WheelDrive& drive, double dt_s);
+  void count(const PhysicsWorld& physics, const ContactState& contact, const WheelDrive& drive,
+             double dt_s);
   /// Reads every sensor at the control step at time t.
   SensorReadings read(const PhysicsWorld& physics, double t_s);
 

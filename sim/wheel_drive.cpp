@@ -47,7 +47,8 @@ void WheelDrive::apply(PhysicsWorld& world, double dt_s) {
   struct Share {
     double fwd, lat;
     Vec2 r;
-  } tyres[2] = {{0.5 * (j_fwd - j_turn), 0.5 * j_lat, half * left}, {0.5 * (j_fwd + j_turn), 0.5 * j_lat, -half * left}};
+  } tyres[2] = {{0.5 * (j_fwd - j_turn), 0.5 * j_lat, half * left},
+                {0.5 * (j_fwd + j_turn), 0.5 * j_lat, -half * left}};
   for (Share& t : tyres) {
     const double mag = std::sqrt(t.fwd * t.fwd + t.lat * t.lat);
     if (mag > max_impulse) {
@@ -56,8 +57,9 @@ void WheelDrive::apply(PhysicsWorld& world, double dt_s) {
       slipping_ = true;
     }
     const Vec2 j = t.fwd * fwd + t.lat * left;
-    body->ApplyLinearImpulse(b2Vec2(static_cast<float>(j.x), static_cast<float>(j.y)),
-                             b2Vec2(static_cast<float>(com.x + t.r.x), static_cast<float>(com.y + t.r.y)), true);
+    body->ApplyLinearImpulse(
+        b2Vec2(static_cast<float>(j.x), static_cast<float>(j.y)),
+        b2Vec2(static_cast<float>(com.x + t.r.x), static_cast<float>(com.y + t.r.y)), true);
   }
 }
 

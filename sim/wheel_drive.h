@@ -10,7 +10,7 @@
 namespace plantsim::sim {
 
 struct DriveParams {
-  double tyre_friction = 0.8;        ///< mu between tyre and floor
+  double tyre_friction = 0.8;  ///< mu between tyre and floor
   double gravity_mps2 = 9.81;
 };
 

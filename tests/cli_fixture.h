@@ -10,10 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "test_paths.h"
 
@@ -29,8 +28,9 @@ struct Outcome {
 class Cli : public ::testing::Test {
  public:  // the hostile-input table's lambdas prepare files through these
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("plantsim_cli_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    root_ = fs::temp_directory_path() /
+            ("plantsim_cli_" + std::to_string(::getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
     dir_ = root_ / "work";
     fs::create_directories(dir_);
@@ -49,8 +49,9 @@ class Cli : public ::testing::Test {
   }
   // Runs plantsim in dir_ with a time limit; 124 is timeout's code for a hang.
   Outcome run(const std::string& args, int seconds = 30) {
-    const std::string cmd = "cd '" + dir_.string() + "' && timeout " + std::to_string(seconds) + " " PLANTSIM_BINARY " " +
-                            args + " > '" + (root_ / "out.txt").string() + "' 2> '" + (root_ / "err.txt").string() + "'";
+    const std::string cmd = "cd '" + dir_.string() + "' && timeout " + std::to_string(seconds) +
+                            " " PLANTSIM_BINARY " " + args + " > '" + (root_ / "out.txt").string() +
+                            "' 2> '" + (root_ / "err.txt").string() + "'";
     const int status = std::system(cmd.c_str());
     Outcome o;
     o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -62,7 +63,8 @@ class Cli : public ::testing::Test {
   std::set<std::string> outside() const {
     std::set<std::string> names;
     for (const auto& e : fs::directory_iterator(root_))
-      if (e.path().filename() != "work" && e.path().filename() != "out.txt" && e.path().filename() != "err.txt")
+      if (e.path().filename() != "work" && e.path().filename() != "out.txt" &&
+          e.path().filename() != "err.txt")
         names.insert(e.path().filename().string());
     return names;
   }
@@ -77,11 +79,11 @@ class Cli : public ::testing::Test {
     const auto at = yaml.find(field + ":");
     yaml.replace(at, yaml.find('\n', at) - at, field + ": " + value);
     const auto image = yaml.find("image:");
-    yaml.replace(image, yaml.find('\n', image) - image, "image: " + test::shared_data("ros_maps/depot.pgm"));
+    yaml.replace(image, yaml.find('\n', image) - image,
+                 "image: " + test::shared_data("ros_maps/depot.pgm"));
     return yaml;
   }
   fs::path root_, dir_;
 };
-
 
 }  // namespace plantsim

@@ -5,9 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <set>
-
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "batch/batch_runner.h"
 #include "batch_folder_test.h"
@@ -24,9 +23,10 @@ class BatchFiles : public test::BatchFolderTest {
   // Three seeds; two in the sanitizer tree, where each episode costs several times more.
   static int seeds() { return test::full_size() ? 3 : 2; }
   std::string small_scenario() {
-    return write("s.yaml", "name: small\nworlds: [" + test::shared_data("worlds/world_N10.json") + ", " +
-                               test::source_file("worlds/examples/small_plant.json") +
-                               "]\nplanners: [vg, vg-traditional]\nfaults:\n  none: {}\n  slip: {odometry: {left_scale_error: 0.002}}\n"
+    return write("s.yaml", "name: small\nworlds: [" + test::shared_data("worlds/world_N10.json") +
+                               ", " + test::source_file("worlds/examples/small_plant.json") +
+                               "]\nplanners: [vg, vg-traditional]\nfaults:\n  none: {}\n  slip: "
+                               "{odometry: {left_scale_error: 0.002}}\n"
                                "  crossing: {crossing_obstacle: true}\nseeds: " +
                                std::to_string(seeds()) + "\n");
   }
@@ -66,8 +66,10 @@ TEST_F(BatchFiles, FourShardsMergedEqualOneRun) {
   }
   EXPECT_EQ(sum, whole.episodes);
   EXPECT_EQ(merge_batches(shard_dirs, (dir_ / "merged").string()).episodes, whole.episodes);
-  EXPECT_EQ(sorted_lines((dir_ / "merged/episodes.jsonl").string()), sorted_lines((dir_ / "whole/episodes.jsonl").string()));
-  EXPECT_EQ(read((dir_ / "merged/summary.csv").string()), read((dir_ / "whole/summary.csv").string()));
+  EXPECT_EQ(sorted_lines((dir_ / "merged/episodes.jsonl").string()),
+            sorted_lines((dir_ / "whole/episodes.jsonl").string()));
+  EXPECT_EQ(read((dir_ / "merged/summary.csv").string()),
+            read((dir_ / "whole/summary.csv").string()));
 }
 
 TEST_F(BatchFiles, AKilledRunResumesWithoutRedoingOrLosingEpisodes) {
@@ -87,31 +89,39 @@ TEST_F(BatchFiles, AKilledRunResumesWithoutRedoingOrLosingEpisodes) {
   const BatchOutcome resumed = run_batch(scenario, options("killed"));
   EXPECT_EQ(resumed.skipped, 7);
   EXPECT_EQ(resumed.ran, resumed.episodes - 7);
-  EXPECT_EQ(sorted_lines((dir_ / "killed/episodes.jsonl").string()), full);  // nothing twice, nothing lost
-  EXPECT_EQ(run_batch(scenario, options("killed")).ran, 0);                  // a finished batch runs nothing
+  EXPECT_EQ(sorted_lines((dir_ / "killed/episodes.jsonl").string()),
+            full);                                           // nothing twice, nothing lost
+  EXPECT_EQ(run_batch(scenario, options("killed")).ran, 0);  // a finished batch runs nothing
 }
 
 TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
-  auto refused = [&](const std::string& scenario, const std::string& needle, const std::string& out = "out") {
+  auto refused = [&](const std::string& scenario, const std::string& needle,
+                     const std::string& out = "out") {
     try {
       run_batch(scenario, options(out));
       ADD_FAILURE() << "accepted " << scenario;
     } catch (const std::exception& e) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
     }
-    EXPECT_FALSE(fs::exists(dir_ / out / "episodes.jsonl") && fs::file_size(dir_ / out / "episodes.jsonl") > 0);
+    EXPECT_FALSE(fs::exists(dir_ / out / "episodes.jsonl") &&
+                 fs::file_size(dir_ / out / "episodes.jsonl") > 0);
   };
   refused(write("a.yaml", "worlds: [1, 2"), "malformed YAML");
   refused(write("b.yaml", "worlds: []\nseeds: 1\n"), "field 'worlds'");
-  refused(write("c.yaml", "worlds: [" + (dir_ / "missing.json").string() + "]\nseeds: 1\n"), "not found");
-  refused(write("d.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nplanners: [teleport]\nseeds: 1\n"),
+  refused(write("c.yaml", "worlds: [" + (dir_ / "missing.json").string() + "]\nseeds: 1\n"),
+          "not found");
+  refused(write("d.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
+                              "]\nplanners: [teleport]\nseeds: 1\n"),
           "unknown planner");
-  refused(write("e.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\nfaults:\n  x: {odometry: {wheel_nois: 1}}\n"),
+  refused(write("e.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
+                              "]\nseeds: 1\nfaults:\n  x: {odometry: {wheel_nois: 1}}\n"),
           "unknown parameter");
-  refused(write("f.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\n"), "field 'seeds'");
+  refused(write("f.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\n"),
+          "field 'seeds'");
   write("file_in_the_way", "x");
-  refused(write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"), "cannot be created",
-          "file_in_the_way/sub");
+  refused(
+      write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"),
+      "cannot be created", "file_in_the_way/sub");
 }
 
 TEST(Wilson, KnownValues) {
@@ -127,20 +137,26 @@ TEST(Wilson, KnownValues) {
 // and van moving) and both ROS maps, from random starts, with ideal and with noisy sensing.
 TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
   std::string worlds;
-  for (const char* w : {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/substation_yard.json",
-                        "worlds/scenarios/coal_mine_roadways.json",
-                        "worlds/scenarios/cable_tunnel_maze.json", "worlds/scenarios/rail_maintenance_pit.json"})
+  for (const char* w :
+       {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/substation_yard.json",
+        "worlds/scenarios/coal_mine_roadways.json", "worlds/scenarios/cable_tunnel_maze.json",
+        "worlds/scenarios/rail_maintenance_pit.json"})
     worlds += test::source_file(w) + ", ";
-  worlds += test::shared_data("ros_maps/depot.yaml") + ", " + test::shared_data("ros_maps/tb3_sandbox.yaml");
-  const std::string scenario = write(
-      "suite.yaml", "name: docking_suite\nworlds: [" + worlds +
-                        "]\nfaults:\n  none: {}\n  noisy:\n    odometry: {wheel_speed_noise: 0.02, left_scale_error: 0.003, "
-                        "right_scale_error: -0.003}\n    lidar: {range_noise_m: 0.03, dropout_probability: 0.05}\n    imu: {yaw_rate_noise_radps: 0.006, bias_radps: 0.006}\n"
-                        "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: " +
-                        std::to_string(test::scaled(36, 2)) + "\n");
+  worlds += test::shared_data("ros_maps/depot.yaml") + ", " +
+            test::shared_data("ros_maps/tb3_sandbox.yaml");
+  const std::string scenario =
+      write("suite.yaml",
+            "name: docking_suite\nworlds: [" + worlds +
+                "]\nfaults:\n  none: {}\n  noisy:\n    odometry: {wheel_speed_noise: 0.02, "
+                "left_scale_error: 0.003, "
+                "right_scale_error: -0.003}\n    lidar: {range_noise_m: 0.03, dropout_probability: "
+                "0.05}\n    imu: {yaw_rate_noise_radps: 0.006, bias_radps: 0.006}\n"
+                "    detection: {position_noise_m: 0.005, yaw_noise_rad: 0.005}\nseeds: " +
+                std::to_string(test::scaled(36, 2)) + "\n");
   const BatchOutcome r = run_batch(scenario, options("suite"));
-  std::printf("docking suite: %lld episodes, %lld docked, %lld collisions\n", static_cast<long long>(r.episodes),
-              static_cast<long long>(r.succeeded), static_cast<long long>(r.collisions));
+  std::printf("docking suite: %lld episodes, %lld docked, %lld collisions\n",
+              static_cast<long long>(r.episodes), static_cast<long long>(r.succeeded),
+              static_cast<long long>(r.collisions));
   EXPECT_GE(r.episodes, test::scaled(500, 25));
   EXPECT_GE(r.succeeded, static_cast<std::int64_t>(std::ceil(0.99 * r.episodes)));
   EXPECT_EQ(r.collisions, 0);
@@ -156,14 +172,17 @@ namespace {
 // episode records, to the last digit.
 TEST_F(BatchFiles, ThreadsDoNotChangeResultsWithPerceptionOn) {
   const std::string scenario =
-      write("t.yaml", "name: threads\nworlds: [" + test::source_file("worlds/examples/corridor_crossing.json") +
-                          "]\nplanners: [vg]\nfaults:\n  none: {}\n  lossy: {lidar: {dropout_probability: 0.1}}\nseeds: 2\n");
+      write("t.yaml", "name: threads\nworlds: [" +
+                          test::source_file("worlds/examples/corridor_crossing.json") +
+                          "]\nplanners: [vg]\nfaults:\n  none: {}\n  lossy: {lidar: "
+                          "{dropout_probability: 0.1}}\nseeds: 2\n");
   RunOptions one = options("one"), two = options("two");
   one.threads = 1;
   two.threads = 2;
   run_batch(scenario, one);
   run_batch(scenario, two);
-  const auto a = sorted_lines(one.out_dir + "/episodes.jsonl"), b = sorted_lines(two.out_dir + "/episodes.jsonl");
+  const auto a = sorted_lines(one.out_dir + "/episodes.jsonl"),
+             b = sorted_lines(two.out_dir + "/episodes.jsonl");
   ASSERT_EQ(a.size(), 4u);
   EXPECT_EQ(a, b);
   EXPECT_NE(a[0].find("\"perception_mode\":\"sensors\""), std::string::npos);

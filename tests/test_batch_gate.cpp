@@ -2,19 +2,18 @@
 // report), episodes the same whatever a world's place in the list, merges that refuse mixed
 // scenarios and missing shards, one writer per folder, resume past malformed lines, and
 // scenario paths relative to the scenario file.
-#include "util/csv.h"
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
-
 #include <nlohmann/json.hpp>
 
 #include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
 #include "batch_folder_test.h"
 #include "test_paths.h"
+#include "util/csv.h"
 #include "util/folder_lock.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
@@ -24,11 +23,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string record(const std::string& world, const std::string& planner, const std::string& fault, bool docked) {
-  return nlohmann::json{{"world", world}, {"planner", planner}, {"controller", "default"}, {"fault", fault}, {"docked", docked}}.dump();
+std::string record(const std::string& world, const std::string& planner, const std::string& fault,
+                   bool docked) {
+  return nlohmann::json{{"world", world},
+                        {"planner", planner},
+                        {"controller", "default"},
+                        {"fault", fault},
+                        {"docked", docked}}
+      .dump();
 }
 
-std::vector<std::string> records(const std::string& world, const std::string& planner, const std::string& fault, int docked, int failed) {
+std::vector<std::string> records(const std::string& world, const std::string& planner,
+                                 const std::string& fault, int docked, int failed) {
   std::vector<std::string> out;
   for (int i = 0; i < docked; ++i) out.push_back(record(world, planner, fault, true));
   for (int i = 0; i < failed; ++i) out.push_back(record(world, planner, fault, false));
@@ -49,8 +55,10 @@ TEST(Gate, JudgesEachConfigurationAgainstItsThreshold) {
   const auto& by_vg = v[0].planner == "vg" ? v[0] : v[1];
   EXPECT_FALSE(by_gcr.passed);
   EXPECT_TRUE(by_vg.passed);
-  EXPECT_NE(gate_failures_text(v, gate.statistic).find("w / gcr / default / none: 6/10 docked, success_rate 0.600 < 0.900"),
-            std::string::npos) << gate_failures_text(v, gate.statistic);
+  EXPECT_NE(gate_failures_text(v, gate.statistic)
+                .find("w / gcr / default / none: 6/10 docked, success_rate 0.600 < 0.900"),
+            std::string::npos)
+      << gate_failures_text(v, gate.statistic);
   // A rule for the baseline planner: the last matching rule wins over the default.
   gate.rules.push_back({"", "gcr", "", "", 0.5});
   v = judge_configurations(lines, gate);
@@ -67,16 +75,24 @@ TEST(Gate, JudgesEachConfigurationAgainstItsThreshold) {
 TEST(Gate, APursuitSucceedsByCatchingNotDocking) {
   std::vector<std::string> lines;
   for (int i = 0; i < 4; ++i)
-    lines.push_back(nlohmann::json{{"world", "chase"}, {"planner", "vg"}, {"controller", "path"}, {"fault", "none"},
-                                   {"docked", false}, {"caught", i < 3}, {"succeeded", i < 3}, {"goal", "catch"}}
-                        .dump());
+    lines.push_back(nlohmann::json{
+        {"world", "chase"},
+        {"planner", "vg"},
+        {"controller", "path"},
+        {"fault", "none"},
+        {"docked", false},
+        {"caught", i < 3},
+        {"succeeded", i < 3},
+        {"goal",
+         "catch"}}.dump());
   Gate gate;
   gate.min_success = 0.9;
   const auto v = judge_configurations(lines, gate);
   ASSERT_EQ(v.size(), 1u);
   EXPECT_EQ(v[0].succeeded, 3);
   EXPECT_NEAR(v[0].success_rate, 0.75, 1e-12);
-  EXPECT_NE(gate_failures_text(v, gate.statistic).find("chase / vg / path / none: 3/4 caught"), std::string::npos)
+  EXPECT_NE(gate_failures_text(v, gate.statistic).find("chase / vg / path / none: 3/4 caught"),
+            std::string::npos)
       << gate_failures_text(v, gate.statistic);
   // Records from before the "succeeded" field still count by "docked".
   EXPECT_TRUE(record_succeeded(nlohmann::json{{"docked", true}}));
@@ -92,17 +108,22 @@ TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
   const std::string xml = junit_xml("suite", judge_configurations(lines, gate), gate.statistic);
   EXPECT_NE(xml.find("tests=\"2\" failures=\"1\""), std::string::npos) << xml;
   EXPECT_NE(xml.find("classname=\"suite.plant&lt;1&gt;\""), std::string::npos) << xml;  // escaped
-  EXPECT_NE(xml.find("<failure message=\"plant&lt;1&gt; / vg / default / wet: 3/4 docked"), std::string::npos) << xml;
-  EXPECT_GT(xml.find("<failure"), xml.find("/ wet\"")) << xml;  // the failure is the wet case's, not the dry one's
+  EXPECT_NE(xml.find("<failure message=\"plant&lt;1&gt; / vg / default / wet: 3/4 docked"),
+            std::string::npos)
+      << xml;
+  EXPECT_GT(xml.find("<failure"), xml.find("/ wet\""))
+      << xml;  // the failure is the wet case's, not the dry one's
   EXPECT_EQ(xml.find("<failure", xml.find("<failure") + 1), std::string::npos) << xml;
 }
 
 class BatchFolders : public test::BatchFolderTest {
  protected:
   std::string two_worlds(const std::string& name, bool reversed, int seeds = 2) {
-    std::string a = test::shared_data("worlds/world_N10.json"), b = test::source_file("worlds/examples/small_plant.json");
+    std::string a = test::shared_data("worlds/world_N10.json"),
+                b = test::source_file("worlds/examples/small_plant.json");
     if (reversed) std::swap(a, b);
-    return write(name, "worlds: [" + a + ", " + b + "]\nplanners: [vg]\nseeds: " + std::to_string(seeds) + "\n");
+    return write(name, "worlds: [" + a + ", " + b +
+                           "]\nplanners: [vg]\nseeds: " + std::to_string(seeds) + "\n");
   }
   static std::map<std::string, std::string> starts_by_id(const std::string& dir) {
     std::map<std::string, std::string> out;
@@ -121,7 +142,9 @@ TEST_F(BatchFolders, AnEpisodeIsTheSameWhateverTheWorldsOrder) {
   ASSERT_EQ(ab.size(), 4u);
   EXPECT_EQ(ab, ba);
   // Same episodes, so the same scenario: their shards merge.
-  EXPECT_EQ(merge_batches({(dir_ / "ab").string(), (dir_ / "ba").string()}, (dir_ / "m").string()).episodes, 4);
+  EXPECT_EQ(merge_batches({(dir_ / "ab").string(), (dir_ / "ba").string()}, (dir_ / "m").string())
+                .episodes,
+            4);
 }
 
 TEST_F(BatchFolders, MergeRefusesMixedScenariosAndMissingShards) {
@@ -139,7 +162,8 @@ TEST_F(BatchFolders, MergeRefusesMixedScenariosAndMissingShards) {
   std::vector<std::string> shards;
   std::int64_t in_three = 0;
   for (int i = 0; i < 3; ++i) {
-    const std::string name = std::string("s") + static_cast<char>('0' + i);  // (GCC 12 warns falsely on "s" + to_string)
+    const std::string name =
+        std::string("s") + static_cast<char>('0' + i);  // (GCC 12 warns falsely on "s" + to_string)
     in_three += run_batch(scenario, options(name, i, 4)).episodes;
     shards.push_back((dir_ / name).string());
   }
@@ -147,8 +171,10 @@ TEST_F(BatchFolders, MergeRefusesMixedScenariosAndMissingShards) {
     merge_batches(shards, (dir_ / "partial").string());
     ADD_FAILURE() << "merged 3 of 4 shards silently";
   } catch (const IncompleteBatch& e) {
-    EXPECT_NE(std::string(e.what()).find(std::to_string(6 - in_three) + " of the scenario's 6 episodes are missing"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(std::to_string(6 - in_three) +
+                                         " of the scenario's 6 episodes are missing"),
+              std::string::npos)
+        << e.what();
   }
   MergeOptions partial;
   partial.allow_partial = true;
@@ -161,7 +187,8 @@ TEST_F(BatchFolders, BatchRefusesAFolderOfAnotherScenarioUnlessFresh) {
     run_batch(two_worlds("three.yaml", false, 3), options("out"));
     ADD_FAILURE() << "appended another scenario's episodes";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("holds episodes of another scenario"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("holds episodes of another scenario"), std::string::npos)
+        << e.what();
   }
   EXPECT_EQ(read_episode_records((dir_ / "out").string()).size(), 4u);
   RunOptions fresh = options("out");
@@ -178,7 +205,8 @@ TEST_F(BatchFolders, OneBatchPerOutputFolder) {
     run_batch(scenario, options("busy"));
     ADD_FAILURE() << "two writers on one folder";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("another plantsim process is writing"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("another plantsim process is writing"), std::string::npos)
+        << e.what();
   }
   EXPECT_FALSE(fs::exists(dir_ / "busy" / "episodes.jsonl"));
 }
@@ -212,14 +240,18 @@ TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
   const BatchOutcome r = run_batch(scenario, o);
   ASSERT_EQ(r.ran, 1);
   EXPECT_EQ(r.succeeded, 0);
-  const std::string id = nlohmann::json::parse(read_episode_records((dir_ / "fail").string()).at(0))["id"];
-  EXPECT_TRUE(fs::exists(dir_ / "fail" / "failures" / (worlds::file_name_component(id) + ".png"))) << id;
+  const std::string id =
+      nlohmann::json::parse(read_episode_records((dir_ / "fail").string()).at(0))["id"];
+  EXPECT_TRUE(fs::exists(dir_ / "fail" / "failures" / (worlds::file_name_component(id) + ".png")))
+      << id;
 }
 
 TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
   fs::create_directories(dir_ / "sc" / "w");
-  fs::copy_file(test::source_file("worlds/examples/small_plant.json"), dir_ / "sc" / "w" / "plant.json");
-  const std::string scenario = write("sc/rel.yaml", "worlds: [w/plant.json, $data/worlds/world_N10.json]\nseeds: 1\n");
+  fs::copy_file(test::source_file("worlds/examples/small_plant.json"),
+                dir_ / "sc" / "w" / "plant.json");
+  const std::string scenario =
+      write("sc/rel.yaml", "worlds: [w/plant.json, $data/worlds/world_N10.json]\nseeds: 1\n");
   // Whatever the current folder, the scenario finds its worlds.
   const fs::path before = fs::current_path();
   fs::current_path(fs::temp_directory_path());
@@ -231,8 +263,10 @@ TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
     run_batch(write("sc/missing.yaml", "worlds: [nowhere.json]\nseeds: 1\n"), check);
     ADD_FAILURE();
   } catch (const worlds::WorldError& e) {
-    EXPECT_NE(std::string(e.what()).find("'nowhere.json' not found (looked for " + (dir_ / "sc" / "nowhere.json").string()),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'nowhere.json' not found (looked for " +
+                                         (dir_ / "sc" / "nowhere.json").string()),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -12,7 +12,9 @@ namespace {
 
 constexpr Rgb kWhite{255, 255, 255}, kBlack{0, 0, 0};
 
-int red_at(const Image& img, int col, int row) { return img.rgba[(static_cast<std::size_t>(row) * img.width + col) * 4]; }
+int red_at(const Image& img, int col, int row) {
+  return img.rgba[(static_cast<std::size_t>(row) * img.width + col) * 4];
+}
 
 // World metres are pixels, y up from the bottom row.
 void one_metre_per_pixel(GlCanvas& c) {
@@ -51,7 +53,8 @@ TEST(Canvas, AThickLineIsOpaqueInsideAndSoftOnlyAtItsRim) {
   EXPECT_EQ(at(6), 255);
   int grey = 0;
   for (int col = 0; col < 60; ++col)
-    for (int row = 0; row < 60; ++row) grey += red_at(img, col, row) > 10 && red_at(img, col, row) < 245;
+    for (int row = 0; row < 60; ++row)
+      grey += red_at(img, col, row) > 10 && red_at(img, col, row) < 245;
   EXPECT_GT(grey, 50);  // the rims: two edges ~67 px long
 }
 
@@ -74,7 +77,8 @@ TEST(Canvas, AFinelySampledPathStillPassesThroughEverySample) {
   c.polyline(path, 2.0, kBlack);
   const Image img = c.read();
   for (std::size_t i = 0; i < path.size(); i += 37)
-    EXPECT_LT(red_at(img, static_cast<int>(path[i].x), 200 - 1 - static_cast<int>(path[i].y)), 128) << i;
+    EXPECT_LT(red_at(img, static_cast<int>(path[i].x), 200 - 1 - static_cast<int>(path[i].y)), 128)
+        << i;
 }
 
 TEST(Canvas, TwoCanvasesAliveAtOnceKeepTheirOwnDrawings) {

@@ -3,15 +3,13 @@
 // and that nothing is written outside that folder. Then --version, unknown commands, the batch
 // gate's exit code and JUnit file, and recorded commands that re-run exactly.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <set>
-
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "cli_fixture.h"
 #include "test_paths.h"
@@ -29,54 +27,127 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
   const std::string n10 = test::shared_data("worlds/world_N10.json");
   const std::string scenario_head = "worlds: [" + n10 + "]\n";
   const std::vector<HostileCase> cases = {
-      {"world FIFO", [](Cli& c) { ::mkfifo((c.dir_ / "w.json").c_str(), 0644); return std::string("run w.json"); }, "is a FIFO"},
-      {"world /dev/zero", [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "w.json"); return std::string("run w.json"); },
+      {"world FIFO",
+       [](Cli& c) {
+         ::mkfifo((c.dir_ / "w.json").c_str(), 0644);
+         return std::string("run w.json");
+       },
+       "is a FIFO"},
+      {"world /dev/zero",
+       [](Cli& c) {
+         fs::create_symlink("/dev/zero", c.dir_ / "w.json");
+         return std::string("run w.json");
+       },
        "is a character device"},
       {"config /dev/zero",
-       [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "c.json"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       [](Cli& c) {
+         fs::create_symlink("/dev/zero", c.dir_ / "c.json");
+         return std::string("run " + test::shared_data("worlds/world_N10.json") +
+                            " --config c.json");
+       },
        "is a character device"},
-      {"scenario FIFO", [](Cli& c) { ::mkfifo((c.dir_ / "s.yaml").c_str(), 0644); return std::string("batch s.yaml"); }, "is a FIFO"},
+      {"scenario FIFO",
+       [](Cli& c) {
+         ::mkfifo((c.dir_ / "s.yaml").c_str(), 0644);
+         return std::string("batch s.yaml");
+       },
+       "is a FIFO"},
       {"PGM /dev/zero",
        [](Cli& c) {
          fs::create_symlink("/dev/zero", c.dir_ / "zero.pgm");
-         c.write("m.yaml", "image: zero.pgm\nresolution: 0.05\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.25\n");
+         c.write("m.yaml",
+                 "image: zero.pgm\nresolution: 0.05\norigin: [0, 0, 0]\noccupied_thresh: "
+                 "0.65\nfree_thresh: 0.25\n");
          return std::string("run m.yaml");
        },
        "is a character device"},
       {"scen /dev/zero",
-       [](Cli& c) { fs::create_symlink("/dev/zero", c.dir_ / "x.scen"); return std::string("plan --map " + test::shared_data("anyangle/arena.map") + " --scen x.scen"); },
+       [](Cli& c) {
+         fs::create_symlink("/dev/zero", c.dir_ / "x.scen");
+         return std::string("plan --map " + test::shared_data("anyangle/arena.map") +
+                            " --scen x.scen");
+       },
        "is a character device"},
       {"huge world file (sparse)",
-       [](Cli& c) { std::ofstream(c.dir_ / "big.json"); fs::resize_file(c.dir_ / "big.json", 300ull << 20); return std::string("run big.json"); },
+       [](Cli& c) {
+         std::ofstream(c.dir_ / "big.json");
+         fs::resize_file(c.dir_ / "big.json", 300ull << 20);
+         return std::string("run big.json");
+       },
        "more than the 33554432 allowed"},
-      {"ROS origin 1e17", [](Cli& c) { c.write("m.yaml", c.ros_map("origin", "[1.0e17, 0.0, 0.0]")); return std::string("run m.yaml"); }, "field 'origin'"},
-      {"ROS resolution 100", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "100")); return std::string("plan m.yaml"); }, "field 'resolution'"},
-      {"ROS resolution 0.0001", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "0.0001")); return std::string("plan m.yaml"); }, "field 'resolution'"},
-      {"ROS resolution 1e308", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "1e308")); return std::string("plan m.yaml"); }, "field 'resolution'"},
-      {"ROS resolution 0.002 (no room)", [](Cli& c) { c.write("m.yaml", c.ros_map("resolution", "0.002")); return std::string("run m.yaml"); }, "no place leaves room to dock"},
+      {"ROS origin 1e17",
+       [](Cli& c) {
+         c.write("m.yaml", c.ros_map("origin", "[1.0e17, 0.0, 0.0]"));
+         return std::string("run m.yaml");
+       },
+       "field 'origin'"},
+      {"ROS resolution 100",
+       [](Cli& c) {
+         c.write("m.yaml", c.ros_map("resolution", "100"));
+         return std::string("plan m.yaml");
+       },
+       "field 'resolution'"},
+      {"ROS resolution 0.0001",
+       [](Cli& c) {
+         c.write("m.yaml", c.ros_map("resolution", "0.0001"));
+         return std::string("plan m.yaml");
+       },
+       "field 'resolution'"},
+      {"ROS resolution 1e308",
+       [](Cli& c) {
+         c.write("m.yaml", c.ros_map("resolution", "1e308"));
+         return std::string("plan m.yaml");
+       },
+       "field 'resolution'"},
+      {"ROS resolution 0.002 (no room)",
+       [](Cli& c) {
+         c.write("m.yaml", c.ros_map("resolution", "0.002"));
+         return std::string("run m.yaml");
+       },
+       "no place leaves room to dock"},
       {"potential field m 1e308",
-       [](Cli& c) { c.write("c.json", R"({"potential_field": {"m": 1e308}})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json --travel potential-field"); },
+       [](Cli& c) {
+         c.write("c.json", R"({"potential_field": {"m": 1e308}})");
+         return std::string("run " + test::shared_data("worlds/world_N10.json") +
+                            " --config c.json --travel potential-field");
+       },
        "field 'potential_field.m'"},
       {"timeout 1e308",
-       [](Cli& c) { c.write("c.json", R"({"timeout_s": 1e308})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       [](Cli& c) {
+         c.write("c.json", R"({"timeout_s": 1e308})");
+         return std::string("run " + test::shared_data("worlds/world_N10.json") +
+                            " --config c.json");
+       },
        "field 'timeout_s'"},
       {"dt 1e-300",
-       [](Cli& c) { c.write("c.json", R"({"step": {"dt_s": 1e-300}})"); return std::string("run " + test::shared_data("worlds/world_N10.json") + " --config c.json"); },
+       [](Cli& c) {
+         c.write("c.json", R"({"step": {"dt_s": 1e-300}})");
+         return std::string("run " + test::shared_data("worlds/world_N10.json") +
+                            " --config c.json");
+       },
        "field 'step.dt_s'"},
       {"YAML alias bomb",
        [&](Cli& c) {
-         std::string bomb = scenario_head + "seeds: 1\nfaults:\n  x: {odometry: &a0 [1,1,1,1,1,1,1,1,1,1]}\n";
+         std::string bomb =
+             scenario_head + "seeds: 1\nfaults:\n  x: {odometry: &a0 [1,1,1,1,1,1,1,1,1,1]}\n";
          for (int k = 1; k < 12; ++k)
-           bomb += "  y" + std::to_string(k) + ": {odometry: &a" + std::to_string(k) + " [*a" + std::to_string(k - 1) + ",*a" +
-                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
-                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
-                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + "]}\n";
+           bomb += "  y" + std::to_string(k) + ": {odometry: &a" + std::to_string(k) + " [*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + ",*a" +
+                   std::to_string(k - 1) + ",*a" + std::to_string(k - 1) + "]}\n";
          c.write("s.yaml", bomb);
          return std::string("batch s.yaml");
        },
        "YAML nodes"},
       {"1.2e9 episodes",
-       [&](Cli& c) { c.write("s.yaml", scenario_head + "planners: [vg, grid, gcr, vg-traditional]\nfaults: {a: {}, b: {}, c: {}}\nseeds: 1000000\n"); return std::string("batch s.yaml"); },
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head +
+                               "planners: [vg, grid, gcr, vg-traditional]\nfaults: {a: {}, b: {}, "
+                               "c: {}}\nseeds: 1000000\n");
+         return std::string("batch s.yaml");
+       },
        "more than the limit of 1000000"},
       {"maze column 4294967296",
        [](Cli& c) {
@@ -87,37 +158,94 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
          return std::string("plan maze.json");
        },
        "must be a column"},
-      {"YAML 0x10", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x: {lidar: {rate_hz: 0x10}}\n"); return std::string("batch s.yaml"); },
+      {"YAML 0x10",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x: {lidar: {rate_hz: 0x10}}\n");
+         return std::string("batch s.yaml");
+       },
        "field 'lidar.rate_hz': expected a number"},
       {"world key typo",
        [](Cli& c) {
-         c.write("typo.json", c.world_json([](nlohmann::json& j) { j["obstacels"] = j["obstacles"]; j.erase("obstacles"); }));
+         c.write("typo.json", c.world_json([](nlohmann::json& j) {
+           j["obstacels"] = j["obstacles"];
+           j.erase("obstacles");
+         }));
          return std::string("run typo.json");
        },
        "field 'obstacels': unknown key, did you mean 'obstacles'?"},
       {"robot speed 1e5",
-       [](Cli& c) { c.write("w.json", c.world_json([](nlohmann::json& j) { j["robot"]["max_speed_mps"] = 1e5; })); return std::string("run w.json"); },
+       [](Cli& c) {
+         c.write("w.json",
+                 c.world_json([](nlohmann::json& j) { j["robot"]["max_speed_mps"] = 1e5; }));
+         return std::string("run w.json");
+       },
        "field 'robot.max_speed_mps': must be at most 20"},
-      {"scenario worlds as a mapping", [](Cli& c) { c.write("s.yaml", "worlds: {a: 1}\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'worlds'"},
-      {"scenario seeds not numbers", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: [a, b]\n"); return std::string("batch s.yaml"); }, "field 'seeds'"},
-      {"scenario planners as a mapping", [&](Cli& c) { c.write("s.yaml", scenario_head + "planners: {x: 1}\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'planners'"},
-      {"scenario faults as a list", [&](Cli& c) { c.write("s.yaml", scenario_head + "faults: [1, 2]\nseeds: 1\n"); return std::string("batch s.yaml"); }, "field 'faults'"},
-      {"scenario key typo", [&](Cli& c) { c.write("s.yaml", scenario_head + "seed: 3\n"); return std::string("batch s.yaml"); }, "did you mean 'seeds'?"},
-      {"scenario gate above 1", [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\ngate: {min_success: 2}\n"); return std::string("batch s.yaml"); }, "field 'gate.min_success'"},
+      {"scenario worlds as a mapping",
+       [](Cli& c) {
+         c.write("s.yaml", "worlds: {a: 1}\nseeds: 1\n");
+         return std::string("batch s.yaml");
+       },
+       "field 'worlds'"},
+      {"scenario seeds not numbers",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "seeds: [a, b]\n");
+         return std::string("batch s.yaml");
+       },
+       "field 'seeds'"},
+      {"scenario planners as a mapping",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "planners: {x: 1}\nseeds: 1\n");
+         return std::string("batch s.yaml");
+       },
+       "field 'planners'"},
+      {"scenario faults as a list",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "faults: [1, 2]\nseeds: 1\n");
+         return std::string("batch s.yaml");
+       },
+       "field 'faults'"},
+      {"scenario key typo",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "seed: 3\n");
+         return std::string("batch s.yaml");
+       },
+       "did you mean 'seeds'?"},
+      {"scenario gate above 1",
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "seeds: 1\ngate: {min_success: 2}\n");
+         return std::string("batch s.yaml");
+       },
+       "field 'gate.min_success'"},
       {"obstacle at 1e300",
-       [](Cli& c) { c.write("w.json", c.world_json([](nlohmann::json& j) { j["obstacles"][0][2] = 1e300; })); return std::string("run w.json"); },
+       [](Cli& c) {
+         c.write("w.json", c.world_json([](nlohmann::json& j) { j["obstacles"][0][2] = 1e300; }));
+         return std::string("run w.json");
+       },
        "field 'obstacles[0][2]': beyond +-1e7 m"},
       {"scenario name not UTF-8 (found by fuzzing)",
-       [&](Cli& c) { c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x\xac: {}\n"); return std::string("batch s.yaml"); },
+       [&](Cli& c) {
+         c.write("s.yaml", scenario_head + "seeds: 1\nfaults:\n  x\xac: {}\n");
+         return std::string("batch s.yaml");
+       },
        "printable UTF-8"},
       {"coverage parameter typo",
-       [](Cli& c) { c.write("p.json", R"({"chnn": {"alpah": 1}})"); return "coverage " + test::source_file("worlds/scenarios/depot_pit_coverage.json") + " --params p.json"; },
+       [](Cli& c) {
+         c.write("p.json", R"({"chnn": {"alpah": 1}})");
+         return "coverage " + test::source_file("worlds/scenarios/depot_pit_coverage.json") +
+                " --params p.json";
+       },
        "field 'chnn.alpah': unknown key"},
       {"coverage search of 1e9 s",
-       [](Cli& c) { c.write("p.json", R"({"exact": {"time_limit_s": 1e9}})"); return std::string("coverage-study --maps 1 --params p.json"); },
+       [](Cli& c) {
+         c.write("p.json", R"({"exact": {"time_limit_s": 1e9}})");
+         return std::string("coverage-study --maps 1 --params p.json");
+       },
        "field 'exact.time_limit_s'"},
       {"coverage weights not summing to 1",
-       [](Cli& c) { c.write("p.json", R"({"w1_cells": 0.5})"); return std::string("coverage-study --maps 1 --params p.json"); },
+       [](Cli& c) {
+         c.write("p.json", R"({"w1_cells": 0.5})");
+         return std::string("coverage-study --maps 1 --params p.json");
+       },
        "field 'w1_cells'"},
       {"unknown command", [](Cli&) { return std::string("bogus"); }, "unknown command 'bogus'"},
   };
@@ -150,7 +278,9 @@ TEST_F(Cli, AWorldNameCannotEscapeTheResultsFolder) {
 
 // README lists MovingAI maps as worlds: a .scen query gives the start and the charger.
 TEST_F(Cli, RunsOnAMovingAiMapFromAScenQuery) {
-  Outcome o = run("run '$data/anyangle/arena.map' --scen '$data/anyangle/arena.scen' --query 5 --out arena", 120);
+  Outcome o =
+      run("run '$data/anyangle/arena.map' --scen '$data/anyangle/arena.scen' --query 5 --out arena",
+          120);
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
   const auto summary = nlohmann::json::parse(read(dir_ / "arena" / "summary.json"));
   EXPECT_TRUE(summary["docked"].get<bool>());
@@ -283,7 +413,8 @@ TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
   const auto summary = nlohmann::json::parse(read(dir_ / "out" / "summary.json"));
   EXPECT_NE(summary["command"].get<std::string>().find("--seed 2"), std::string::npos);
   for (const auto& e : fs::directory_iterator(dir_))
-    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << "staging folder left behind";
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos)
+        << "staging folder left behind";
   // A folder holding anything but plantsim's outputs is never replaced: refused before the run.
   write("mine/notes.txt", "a user's own file");
   o = run("run " + world + " --out mine");
@@ -299,7 +430,8 @@ TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
 TEST_F(Cli, RecordedCommandsRerunExactly) {
   const std::string world = test::source_file("worlds/examples/small_plant.json");
   ASSERT_EQ(run("run " + world + " --out 'first run' --undock --seed 3", 180).exit_code, 0);
-  const std::string recorded = nlohmann::json::parse(read(dir_ / "first run" / "summary.json"))["command"];
+  const std::string recorded =
+      nlohmann::json::parse(read(dir_ / "first run" / "summary.json"))["command"];
   EXPECT_EQ(recorded.find("--undock true"), std::string::npos) << recorded;
   EXPECT_EQ(recorded.rfind("plantsim run ", 0), 0u) << recorded;
   // The same command, re-run through the shell, gives the same episode.
@@ -310,8 +442,9 @@ TEST_F(Cli, RecordedCommandsRerunExactly) {
 }
 
 TEST_F(Cli, BatchExitsOneWhenAConfigurationIsBelowItsGate) {
-  write("s.yaml", "name: gate\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg, gcr]\nseeds: 3\n"
-                  "gate:\n  min_success: 1.0\n  configurations:\n    - {planner: gcr, min_success: 0.0}\n");
+  write("s.yaml",
+        "name: gate\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg, gcr]\nseeds: 3\n"
+        "gate:\n  min_success: 1.0\n  configurations:\n    - {planner: gcr, min_success: 0.0}\n");
   Outcome o = run("batch s.yaml --out b --quiet --no-figures --junit b/junit.xml", 300);
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
   EXPECT_NE(o.out.find("gate passed"), std::string::npos) << o.out;
@@ -328,7 +461,8 @@ TEST_F(Cli, BatchExitsOneWhenAConfigurationIsBelowItsGate) {
   }
   // --min-success only replaces the default: the rule for gcr still holds it at 0 (3 of 3 has a
   // Wilson lower bound of 0.44).
-  o = run("batch s.yaml --out b --quiet --no-figures --min-success 0.4 --gate-statistic wilson_low", 300);
+  o = run("batch s.yaml --out b --quiet --no-figures --min-success 0.4 --gate-statistic wilson_low",
+          300);
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
 }
 
@@ -336,8 +470,9 @@ TEST_F(Cli, BatchExitsOneWhenAConfigurationIsBelowItsGate) {
 // configuration's point verdict and whether its Wilson lower bound clears the threshold), and the
 // dashboard shows that verdict beside the single runs instead of counting only the runs.
 TEST_F(Cli, ABatchBelowItsGateIsShownFailedOnTheDashboard) {
-  write("s.yaml", "name: short\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg]\n"
-                  "faults:\n  none: {}\n  hurried: {timeout_s: 3}\nseeds: 3\ngate: {min_success: 0.9}\n");
+  write("s.yaml",
+        "name: short\nworlds: [$data/worlds/world_N10.json]\nplanners: [vg]\n"
+        "faults:\n  none: {}\n  hurried: {timeout_s: 3}\nseeds: 3\ngate: {min_success: 0.9}\n");
   Outcome o = run("batch s.yaml --out b --quiet --no-figures", 300);
   EXPECT_EQ(o.exit_code, 1) << o.out << o.err;
   const auto summary = nlohmann::json::parse(read(dir_ / "b" / "summary.json"));
@@ -345,7 +480,8 @@ TEST_F(Cli, ABatchBelowItsGateIsShownFailedOnTheDashboard) {
   EXPECT_EQ(summary["episodes"], 6);
   EXPECT_EQ(summary["succeeded"], 3);
   std::int64_t failed = 0;
-  for (const auto& [reason, count] : summary["failures_by_reason"].items()) failed += count.get<std::int64_t>();
+  for (const auto& [reason, count] : summary["failures_by_reason"].items())
+    failed += count.get<std::int64_t>();
   EXPECT_EQ(failed, 3) << summary.dump();
   EXPECT_EQ(summary["gate"]["below_threshold"], 1);
   for (const auto& c : summary["configurations"]) {
@@ -359,13 +495,16 @@ TEST_F(Cli, ABatchBelowItsGateIsShownFailedOnTheDashboard) {
   const std::string report = read(dir_ / "b" / "report.html");
   EXPECT_NE(report.find("<h2>Failures (3)</h2>"), std::string::npos) << report;
   for (int seed = 1; seed <= 3; ++seed)
-    EXPECT_NE(report.find("--episode 'world_N10|vg|default|hurried|" + std::to_string(seed) + "'"), std::string::npos)
+    EXPECT_NE(report.find("--episode 'world_N10|vg|default|hurried|" + std::to_string(seed) + "'"),
+              std::string::npos)
         << report;
   o = run("run " + test::shared_data("worlds/world_N10.json") + " --out r", 120);
   ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
   o = run("summarize r --html index.html --link b/report.html", 60);
   const std::string html = read(dir_ / "index.html");
-  EXPECT_NE(html.find("1 of 1 single runs succeeded; of 1 batches, 0 passed their gates"), std::string::npos) << html;
+  EXPECT_NE(html.find("1 of 1 single runs succeeded; of 1 batches, 0 passed their gates"),
+            std::string::npos)
+      << html;
   EXPECT_NE(html.find("gate failed"), std::string::npos) << html;
   EXPECT_NE(html.find("3 of 6 episodes succeeded; failures: "), std::string::npos) << html;
 }

@@ -12,7 +12,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
 
@@ -23,7 +25,9 @@ TEST_F(Cli, ACheckerboardMapIsRefusedAtTheObstacleLimitWhileItIsRead) {
   for (int y = 0; y < 2000; ++y)
     for (int x = 0; x < 2000; ++x) pgm.push_back((x + y) % 2 ? '\xfe' : '\0');
   write("board.pgm", pgm);
-  write("board.yaml", "image: board.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  write("board.yaml",
+        "image: board.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: "
+        "0.65\nfree_thresh: 0.196\n");
   const auto t0 = Clock::now();
   const Outcome o = run("plan board.yaml");
   EXPECT_EQ(o.exit_code, 2) << o.err;
@@ -32,7 +36,9 @@ TEST_F(Cli, ACheckerboardMapIsRefusedAtTheObstacleLimitWhileItIsRead) {
 }
 
 TEST_F(Cli, AConfigAskingForTooManyStepsIsRefusedBeforeRunning) {
-  write("c.json", R"({"step": {"dt_s": 0.0001}, "timeout_s": 86400, "tracking": {"max_linear_speed_mps": 0.05}})");
+  write(
+      "c.json",
+      R"({"step": {"dt_s": 0.0001}, "timeout_s": 86400, "tracking": {"max_linear_speed_mps": 0.05}})");
   const auto t0 = Clock::now();
   const Outcome o = run("run " + kCorridor + " --config c.json --out out");
   EXPECT_EQ(o.exit_code, 2) << o.err;
@@ -64,10 +70,13 @@ TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {
       {head + "faults: {}\nseeds: 1\n", "faults"},
       {head + "controllers: {'a|b': {}}\nseeds: 1\n", "'|'"},
       {head + "faults: {'x|1': {}}\nseeds: 1\n", "'|'"},
-      {head + "seeds: 1\ngate: {configurations: [{fault: wet, min_success: 0.9}]}\n", "judge nothing"},
-      {head + "seeds: 1\ngate: {configurations: [{world: nowhere, min_success: 0.9}]}\n", "judge nothing"},
+      {head + "seeds: 1\ngate: {configurations: [{fault: wet, min_success: 0.9}]}\n",
+       "judge nothing"},
+      {head + "seeds: 1\ngate: {configurations: [{world: nowhere, min_success: 0.9}]}\n",
+       "judge nothing"},
       {head + "planners: [vg, grid]\nseeds: 600000\n", "more than the limit of 1000000"},
-      {head + "controllers: {slow: {timeout_s: 86400, step: {dt_s: 0.001}}}\nseeds: 200\n", "physics steps"},
+      {head + "controllers: {slow: {timeout_s: 86400, step: {dt_s: 0.001}}}\nseeds: 200\n",
+       "physics steps"},
   };
   for (const auto& [text, message] : cases) {
     write("s.yaml", text);
@@ -88,7 +97,9 @@ TEST_F(Cli, AMapsQueriesMustBeForThatMap) {
 }
 
 TEST_F(Cli, AMappedChargerFarFromTheRealOneIsAnotherCharger) {
-  write("w.json", world_json([](nlohmann::json& j) { j["charger_map_offset"] = {0.0, 0.0, 1000.0}; }));
+  write("w.json", world_json([](nlohmann::json& j) {
+          j["charger_map_offset"] = {0.0, 0.0, 1000.0};
+        }));
   const Outcome o = run("run w.json --out out");
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.err.find("charger_map_offset"), std::string::npos) << o.err;
@@ -102,7 +113,9 @@ TEST_F(Cli, AMapWithoutBorderWallsGetsAStartInsideIt) {
     pgm += "\n";
   }
   write("open.pgm", pgm);
-  write("open.yaml", "image: open.pgm\nresolution: 0.25\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  write("open.yaml",
+        "image: open.pgm\nresolution: 0.25\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: "
+        "0.65\nfree_thresh: 0.196\n");
   const Outcome o = run("plan open.yaml");
   EXPECT_EQ(o.err.find("crosses the floor boundary"), std::string::npos) << o.err;
   EXPECT_EQ(o.exit_code, 0) << o.err;
@@ -147,7 +160,9 @@ TEST_F(ShardFolders, AMergeRefusesConflictingCopiesAndForeignOrMissingEpisodes) 
   EXPECT_EQ(run("merge a b --out m3").exit_code, 0);
   // One missing and a foreign id in its place (same fingerprint, index in range).
   nlohmann::json foreign = nlohmann::json::parse(b[1]);
-  foreign["id"] = foreign["id"].get<std::string>().substr(0, foreign["id"].get<std::string>().rfind('|')) + "|999";
+  foreign["id"] =
+      foreign["id"].get<std::string>().substr(0, foreign["id"].get<std::string>().rfind('|')) +
+      "|999";
   put("b", {b[0], foreign.dump()});
   o = run("merge a b --out m4");
   EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
@@ -172,7 +187,8 @@ TEST_F(ShardFolders, OutputFoldersAreNeverAUsersNorReachedThroughLinks) {
   EXPECT_EQ(o.exit_code, 2) << o.err;
   EXPECT_EQ(read(dir_ / "mine/report.html"), "my report");
   fs::remove(dir_ / "mine/notes.txt");
-  EXPECT_EQ(run("batch s.yaml --out mine --quiet --no-figures").exit_code, 2);  // report.html but no episodes
+  EXPECT_EQ(run("batch s.yaml --out mine --quiet --no-figures").exit_code,
+            2);  // report.html but no episodes
   EXPECT_EQ(read(dir_ / "mine/report.html"), "my report");
   // A symlinked episodes.jsonl: refused, its target untouched.
   write("elsewhere.jsonl", "");
@@ -197,7 +213,7 @@ TEST_F(ShardFolders, ReportsThatCannotBeWrittenAreRefusedBeforeTheEpisodes) {
   EXPECT_NE(o.err.find("a FIFO"), std::string::npos) << o.err;
   o = run("generate --style sparse --out fifo");
   EXPECT_EQ(o.exit_code, 2) << o.err;
-  struct stat st{};
+  struct stat st {};
   ASSERT_EQ(::lstat((dir_ / "fifo").c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode));  // never replaced by a regular file
   write("target.json", "mine");

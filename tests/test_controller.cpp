@@ -38,17 +38,20 @@ struct TrackRun {
 };
 
 // Ideal unicycle at 50 Hz; cross-track error measured after `settle_m` of travel.
-TrackRun track(const std::vector<Vec2>& path, Pose2 pose, double settle_m, PurePursuitParams params = {}) {
+TrackRun track(const std::vector<Vec2>& path, Pose2 pose, double settle_m,
+               PurePursuitParams params = {}) {
   PurePursuit pp(params, path);
   TrackRun run;
   const double dt = 0.02;
   double travelled = 0, speed = 0;
   for (int k = 0; k < 20000; ++k) {
     const TrackingCommand c = pp.step(pose, speed);
-    if (travelled > settle_m) run.max_cross_track = std::max(run.max_cross_track, c.cross_track_error_m);
+    if (travelled > settle_m)
+      run.max_cross_track = std::max(run.max_cross_track, c.cross_track_error_m);
     run.final_cross_track = c.cross_track_error_m;
     if (c.twist.v_mps == 0 && c.twist.omega_radps != 0)
-      run.max_cross_track_turning_in_place = std::max(run.max_cross_track_turning_in_place, c.cross_track_error_m);
+      run.max_cross_track_turning_in_place =
+          std::max(run.max_cross_track_turning_in_place, c.cross_track_error_m);
     if (c.goal_reached) {
       run.reached = true;
       break;
@@ -135,9 +138,9 @@ TEST(Docking, PadsHeldUntilTheChargerSaysChargingPressedWithoutIsAMissAndBacksOf
   const DockingCommand miss = press_until_given_up(dc, {2, 0.05, 0});
   EXPECT_EQ(miss.phase, DockPhase::kBackOff);
   EXPECT_EQ(dc.retries(), 1);
-  EXPECT_LT(dc.step(at({1.9, 0.05, 0})).twist.v_mps, 0);  // reverses away from the charger
+  EXPECT_LT(dc.step(at({1.9, 0.05, 0})).twist.v_mps, 0);           // reverses away from the charger
   EXPECT_EQ(dc.step(at({1.0, 0.0, 0})).phase, DockPhase::kAlign);  // back at staging
-  dc.step(at({1.0, 0.0, 0}));                                        // approach
+  dc.step(at({1.0, 0.0, 0}));                                      // approach
   const DockingCommand touched = dc.step(at({2, 0.0, 0}, true, false));
   EXPECT_EQ(touched.phase, DockPhase::kApproach);  // touched is not docked: the dwell runs
   EXPECT_GT(touched.twist.v_mps, 0.0);
@@ -177,7 +180,7 @@ TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
   dc.step(at({1, 0, 0}));
   dc.step(at({1, 0, 0}));
   DockingInput in = at({1.2, 0, 0});
-  EXPECT_GT(dc.step(in).twist.v_mps, 0.0);  // nothing sensed: approaches
+  EXPECT_GT(dc.step(in).twist.v_mps, 0.0);                  // nothing sensed: approaches
   in.nearby_obstacles = {{{1.5, -0.3, 1.7, 0.3}, {0, 0}}};  // a box between robot and charger
   DockingCommand c = dc.step(in);
   EXPECT_EQ(c.twist.v_mps, 0.0);

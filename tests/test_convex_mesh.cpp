@@ -31,8 +31,10 @@ void expect_sound(const FreeSpaceMesh& rectangles, const ConvexMesh& m, const st
     ASSERT_GT(a, 0) << what << ": polygon " << p << " is not counter-clockwise";
     area += a;
     for (std::int32_t k = 0; k < m.size(p); ++k) {
-      const Vec2 u = m.points()[m.vertex(p, k - 1)], v = m.points()[m.vertex(p, k)], w = m.points()[m.vertex(p, k + 1)];
-      ASSERT_GE((v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x), -1e-12) << what << ": polygon " << p << " is not convex";
+      const Vec2 u = m.points()[m.vertex(p, k - 1)], v = m.points()[m.vertex(p, k)],
+                 w = m.points()[m.vertex(p, k + 1)];
+      ASSERT_GE((v.x - u.x) * (w.y - v.y) - (v.y - u.y) * (w.x - v.x), -1e-12)
+          << what << ": polygon " << p << " is not convex";
       const std::int32_t q = m.neighbour(p, k);
       if (q < 0) continue;
       const std::int32_t j = m.twin(p, k);
@@ -80,7 +82,8 @@ TEST(ConvexMesh, OnePolygonSpansTheOpenSideOfAStaircase) {
 // between them): no edge joins the two sides of either; the outer corners are corners a path
 // bends at, the contact point and the slit's ends are not.
 TEST(ConvexMesh, PinchesAndSlitsShareNoEdgeAndCornersAreWherePathsBend) {
-  const FreeSpaceMesh rectangles({{2, 2, 4, 4}, {4, 4, 6, 6}, {2, 8, 4, 10}, {4, 8, 6, 10}}, {0, 0, 8, 12});
+  const FreeSpaceMesh rectangles({{2, 2, 4, 4}, {4, 4, 6, 6}, {2, 8, 4, 10}, {4, 8, 6, 10}},
+                                 {0, 0, 8, 12});
   const ConvexMesh m(rectangles);
   expect_sound(rectangles, m, "pinch");
   const auto vertex_at = [&](Vec2 p) {
@@ -103,13 +106,15 @@ TEST(ConvexMesh, PinchesAndSlitsShareNoEdgeAndCornersAreWherePathsBend) {
   const auto upper_left = m.polygons_at({3.9, 4.1}), lower_right = m.polygons_at({4.1, 3.9});
   ASSERT_EQ(upper_left.size(), 1u);
   ASSERT_EQ(lower_right.size(), 1u);
-  for (std::int32_t k = 0; k < m.size(upper_left.front()); ++k) EXPECT_NE(m.neighbour(upper_left.front(), k), lower_right.front());
+  for (std::int32_t k = 0; k < m.size(upper_left.front()); ++k)
+    EXPECT_NE(m.neighbour(upper_left.front(), k), lower_right.front());
   // Nothing passes through the slit: no polygon has an edge inside it, and below it and above
   // it are different polygons.
   for (std::int32_t p = 0; p < m.polygon_count(); ++p)
     for (std::int32_t k = 0; k < m.size(p); ++k) {
       const Vec2 a = m.points()[m.vertex(p, k)], b = m.points()[m.vertex(p, k + 1)];
-      EXPECT_FALSE(a.x == 4 && b.x == 4 && std::max(a.y, b.y) > 8 && std::min(a.y, b.y) < 10) << "an edge in the slit";
+      EXPECT_FALSE(a.x == 4 && b.x == 4 && std::max(a.y, b.y) > 8 && std::min(a.y, b.y) < 10)
+          << "an edge in the slit";
     }
   const auto below = m.polygons_at({4, 7.9}), above = m.polygons_at({4, 10.1});
   ASSERT_FALSE(below.empty());

@@ -36,11 +36,17 @@ CoverageGrid grid_of(const worlds::World& w, double cell_m = 2.0) {
 }
 
 // The document's 20 x 10 grid with blocks of cells; the bottom-left cell starts.
-CoverageGrid generated_map(double share, std::uint64_t seed) { return grid_of(worlds::cell_block_world({share, seed})); }
+CoverageGrid generated_map(double share, std::uint64_t seed) {
+  return grid_of(worlds::cell_block_world({share, seed}));
+}
 // The cell the generated maps' charger is docked from.
-Cell charger_cell(const CoverageGrid& g) { return *g.nearest_free(worlds::staging_pose(worlds::cell_block_world({0, 1})).position()); }
+Cell charger_cell(const CoverageGrid& g) {
+  return *g.nearest_free(worlds::staging_pose(worlds::cell_block_world({0, 1})).position());
+}
 
-bool adjacent(Cell a, Cell b) { return std::abs(a.column - b.column) + std::abs(a.row - b.row) == 1; }
+bool adjacent(Cell a, Cell b) {
+  return std::abs(a.column - b.column) + std::abs(a.row - b.row) == 1;
+}
 
 bool is_permutation_of(std::vector<int> order, std::size_t n) {
   std::sort(order.begin(), order.end());
@@ -50,7 +56,8 @@ bool is_permutation_of(std::vector<int> order, std::size_t n) {
 }
 
 TEST(Coverage, SweepVisitsEveryCellOfItsRectangleOnceFromEachCornerAlongEitherAxis) {
-  for (CellRect r : {CellRect{2, 3, 5, 2}, CellRect{0, 0, 2, 6}, CellRect{1, 1, 1, 1}, CellRect{0, 0, 4, 4}})
+  for (CellRect r :
+       {CellRect{2, 3, 5, 2}, CellRect{0, 0, 2, 6}, CellRect{1, 1, 1, 1}, CellRect{0, 0, 4, 4}})
     for (bool along_x : {true, false})
       for (int corner = 0; corner < 4; ++corner) {
         const std::vector<Cell> s = sweep(r, corner, along_x);
@@ -77,7 +84,8 @@ TEST(Coverage, DecompositionPartitionsTheReachableCells) {
 
 TEST(Coverage, AnEmptyRectangleIsOneSweepAlongItsLongSideWithoutRepetition) {
   const CoverageGrid g = CoverageGrid::from_rows({"......", "......", "......"});
-  for (RegionOrdering o : {RegionOrdering::kChnn, RegionOrdering::kPotts, RegionOrdering::kExact, RegionOrdering::kGreedy}) {
+  for (RegionOrdering o : {RegionOrdering::kChnn, RegionOrdering::kPotts, RegionOrdering::kExact,
+                           RegionOrdering::kGreedy}) {
     const CoveragePlan p = plan_region_coverage(g, {0, 0}, std::nullopt, o);
     ASSERT_TRUE(p.ok);
     EXPECT_EQ(p.regions.size(), 1u);
@@ -99,16 +107,20 @@ TEST(SweepModel, TheOrderCostIsThePathsOwnTravelAndTurns) {
   params.exact.max_prefixes = 100000;
   const std::uint64_t last_seed = test::full_size() ? 4 : 1;  // two in the sanitizer tree
   for (std::uint64_t seed = 0; seed <= last_seed; ++seed) {
-    const auto pit = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+    const auto pit =
+        worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
     const CoverageGrid g = seed == 0 ? grid_of(pit) : generated_map(0.2, seed);
     const Cell start = seed == 0 ? *g.nearest_free(pit.start.position()) : Cell{0, 0};
-    const Cell end = seed == 0 ? *g.nearest_free(worlds::staging_pose(pit).position()) : charger_cell(g);
-    for (RegionOrdering o : {RegionOrdering::kPotts, RegionOrdering::kGreedy, RegionOrdering::kExact}) {
+    const Cell end =
+        seed == 0 ? *g.nearest_free(worlds::staging_pose(pit).position()) : charger_cell(g);
+    for (RegionOrdering o :
+         {RegionOrdering::kPotts, RegionOrdering::kGreedy, RegionOrdering::kExact}) {
       const CoveragePlan p = plan_region_coverage(g, start, end, o, params);
       ASSERT_TRUE(p.ok) << p.failure;
       const int steps = static_cast<int>(p.cells.size()) - 1;
       const int in_sweeps = p.metrics.reachable_cells - static_cast<int>(p.regions.size());
-      const int single_cells = static_cast<int>(std::count_if(p.regions.begin(), p.regions.end(), [](const CellRect& r) { return r.cells() == 1; }));
+      const int single_cells = static_cast<int>(std::count_if(
+          p.regions.begin(), p.regions.end(), [](const CellRect& r) { return r.cells() == 1; }));
       const double measured = 0.8 * (steps - in_sweeps) + 0.2 * p.metrics.turns;
       EXPECT_GE(measured, p.order_cost - 1e-9) << "seed " << seed;
       EXPECT_LE(measured, p.order_cost + 0.2 * 2 * single_cells + 1e-9) << "seed " << seed;
@@ -121,8 +133,10 @@ TEST(SweepModel, TheOrderCostIsThePathsOwnTravelAndTurns) {
     }
   }
   EXPECT_GT(without_single_cells, 0);
-  std::printf("order cost equal to the path's own measure in %d of %d plans (%d without one-cell regions)\n", exact_matches,
-              3 * static_cast<int>(last_seed + 1), without_single_cells);
+  std::printf(
+      "order cost equal to the path's own measure in %d of %d plans (%d without one-cell "
+      "regions)\n",
+      exact_matches, 3 * static_cast<int>(last_seed + 1), without_single_cells);
 }
 
 // Brute force over every order and, for each, every sweep of every region.
@@ -135,7 +149,8 @@ double brute_force_cost(const SweepModel& m) {
     for (;;) {
       double c = 0;
       int last = SweepModel::kStart, lv = 0;
-      for (std::size_t k = 0; k < order.size(); ++k) c += m.cost(last, lv, order[k], v[k]), last = order[k], lv = v[k];
+      for (std::size_t k = 0; k < order.size(); ++k)
+        c += m.cost(last, lv, order[k], v[k]), last = order[k], lv = v[k];
       best = std::min(best, c + m.cost_to_end(last, lv));
       std::size_t k = 0;
       while (k < v.size() && ++v[k] == m.variants(order[k])) v[k++] = 0;
@@ -162,7 +177,8 @@ TEST(ExactOrder, MatchesBruteForceOverOrdersAndSweeps) {
     const SweepModel m(g, regions, {0, 0}, end);
     const ExactOrder e = exact_order(m, {greedy_order(m)});
     ASSERT_TRUE(e.proven);
-    EXPECT_NEAR(e.cost, brute_force_cost(m), 1e-9) << regions.size() << " regions, end " << with_end;
+    EXPECT_NEAR(e.cost, brute_force_cost(m), 1e-9)
+        << regions.size() << " regions, end " << with_end;
     EXPECT_NEAR(m.best_sweeps(e.order).cost, e.cost, 1e-9);
     EXPECT_TRUE(is_permutation_of(e.order, regions.size()));
     ++checked;
@@ -173,18 +189,21 @@ TEST(ExactOrder, MatchesBruteForceOverOrdersAndSweeps) {
 TEST(ExactOrder, NoOtherMethodsOrderIsCheaperOnThePit) {
   const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
   const CoverageGrid g = grid_of(w);
-  const Cell start = *g.nearest_free(w.start.position()), end = *g.nearest_free(worlds::staging_pose(w).position());
+  const Cell start = *g.nearest_free(w.start.position()),
+             end = *g.nearest_free(worlds::staging_pose(w).position());
   const CoveragePlan exact = plan_region_coverage(g, start, end, RegionOrdering::kExact);
   ASSERT_TRUE(exact.exact.has_value());
   EXPECT_TRUE(exact.exact->proven);  // 21 regions
   EXPECT_GT(exact.regions.size(), 20u);
-  for (RegionOrdering o : {RegionOrdering::kChnn, RegionOrdering::kPotts, RegionOrdering::kGreedy}) {
+  for (RegionOrdering o :
+       {RegionOrdering::kChnn, RegionOrdering::kPotts, RegionOrdering::kGreedy}) {
     const CoveragePlan p = plan_region_coverage(g, start, end, o);
     ASSERT_TRUE(p.ok);
     EXPECT_GE(p.order_cost, exact.order_cost - 1e-9);
   }
-  std::printf("pit: %zu regions, optimum %.2f proven in %.2f s; repetition %.2f %%\n", exact.regions.size(),
-              exact.order_cost, exact.exact->seconds, 100 * exact.metrics.repetition);
+  std::printf("pit: %zu regions, optimum %.2f proven in %.2f s; repetition %.2f %%\n",
+              exact.regions.size(), exact.order_cost, exact.exact->seconds,
+              100 * exact.metrics.repetition);
 }
 
 // The generated map with 31 regions is proven within the default limits (measured: 70.00, after
@@ -211,8 +230,11 @@ TEST(ExactOrder, ACrowdedMapIsProvenAndCutShortGivesAnHonestBound) {
   EXPECT_GE(cut.cost, e.cost - 1e-9);
   EXPECT_LE(cut.lower_bound, e.cost + 1e-9);
   EXPECT_GT(cut.lower_bound, 0.9 * e.cost);  // the relaxation: 67.20 of 70.00 measured
-  std::printf("%zu regions: optimum %.2f proven in %.2f s after %llu prefixes; cut short: %.2f, bound %.2f\n",
-              regions.size(), e.cost, e.seconds, static_cast<unsigned long long>(e.prefixes), cut.cost, cut.lower_bound);
+  std::printf(
+      "%zu regions: optimum %.2f proven in %.2f s after %llu prefixes; cut short: %.2f, bound "
+      "%.2f\n",
+      regions.size(), e.cost, e.seconds, static_cast<unsigned long long>(e.prefixes), cut.cost,
+      cut.lower_bound);
 }
 
 // The relaxation's bound holds order by order: base + the reduced costs of an order's ways is at
@@ -261,7 +283,8 @@ TEST(ExactOrder, TheRelaxationBoundsEveryOrderWayByWay) {
 TEST(Hopfield, SettlesOnAValidOrderInAStatedShareOfRestartsOnThePit) {
   const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
   const CoverageGrid g = grid_of(w);
-  const Cell start = *g.nearest_free(w.start.position()), end = *g.nearest_free(worlds::staging_pose(w).position());
+  const Cell start = *g.nearest_free(w.start.position()),
+             end = *g.nearest_free(worlds::staging_pose(w).position());
   const SweepModel m(g, g.decompose(g.reachable(start)), start, end);
   const HopfieldResult r = hopfield_order(m.region_distances());
   EXPECT_EQ(r.restarts, 50);
@@ -270,7 +293,8 @@ TEST(Hopfield, SettlesOnAValidOrderInAStatedShareOfRestartsOnThePit) {
   EXPECT_GE(r.valid, 25);
   ASSERT_TRUE(r.order.has_value());
   EXPECT_TRUE(is_permutation_of(*r.order, m.regions()));
-  std::printf("Hopfield network on the pit: valid order in %d of %d restarts\n", r.valid, r.restarts);
+  std::printf("Hopfield network on the pit: valid order in %d of %d restarts\n", r.valid,
+              r.restarts);
 }
 
 TEST(Hopfield, WithTheOriginalActivityTargetItSettlesNowhereAndThePlannerSaysSo) {
@@ -294,7 +318,8 @@ TEST(CellMethod, ValuesAndTurnConfidenceAreTheDocuments) {
   EXPECT_DOUBLE_EQ(turn_confidence(std::numbers::pi / 2, 1.0), 0.5);
   EXPECT_DOUBLE_EQ(turn_confidence(std::numbers::pi, 1.0), 0.0);
   // With w1 = 0.8, w2 = 0.2 an uncovered cell straight behind still beats a covered one ahead.
-  EXPECT_GT(0.8 * cell_value(0) + 0.2 * turn_confidence(std::numbers::pi, 1), 0.8 * cell_value(1) + 0.2 * turn_confidence(0, 1));
+  EXPECT_GT(0.8 * cell_value(0) + 0.2 * turn_confidence(std::numbers::pi, 1),
+            0.8 * cell_value(1) + 0.2 * turn_confidence(0, 1));
 }
 
 TEST(CellMethod, RingSearchFindsTheEuclideanNearestUncoveredCellEvenBehindAWall) {
@@ -340,7 +365,8 @@ TEST_P(Shares, EveryMethodCoversAllReachableCellsAndEndsAtTheCharger) {
     const worlds::World w = worlds::cell_block_world({GetParam(), seed});
     PlannerInput in = planner_input(w, true);
     in.coverage.exact.max_prefixes = 200000;
-    for (const char* name : {"coverage-chnn", "coverage-potts", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
+    for (const char* name : {"coverage-chnn", "coverage-potts", "coverage-exact", "coverage-greedy",
+                             "coverage-cells"}) {
       CoveragePlanner planner(in, name);
       const PlanResult r = planner.plan(w.start.position(), worlds::staging_pose(w).position());
       if (r.status != PlanStatus::kOk) {  // only the network may find no order, and it says so
@@ -349,17 +375,20 @@ TEST_P(Shares, EveryMethodCoversAllReachableCellsAndEndsAtTheCharger) {
         continue;
       }
       const CoveragePlan& p = planner.last_plan();
-      EXPECT_EQ(p.metrics.covered_cells, p.metrics.reachable_cells) << name << " share " << GetParam() << " seed " << seed;
+      EXPECT_EQ(p.metrics.covered_cells, p.metrics.reachable_cells)
+          << name << " share " << GetParam() << " seed " << seed;
       ASSERT_FALSE(p.cells.empty());
       EXPECT_TRUE(p.cells.front() == *planner.grid().nearest_free(w.start.position()));
-      EXPECT_TRUE(p.cells.back() == *planner.grid().nearest_free(worlds::staging_pose(w).position()));
+      EXPECT_TRUE(p.cells.back() ==
+                  *planner.grid().nearest_free(worlds::staging_pose(w).position()));
       for (std::size_t i = 1; i < p.cells.size(); ++i) {
         ASSERT_TRUE(adjacent(p.cells[i - 1], p.cells[i])) << name << " " << i;
         ASSERT_TRUE(planner.grid().free(p.cells[i]));
       }
       if (!p.regions.empty()) {
         EXPECT_TRUE(is_permutation_of(p.order, p.regions.size()));
-        EXPECT_LE(p.order_cost, std::string(name) == "coverage-exact" ? p.greedy_cost + 1e-9 : INFINITY);
+        EXPECT_LE(p.order_cost,
+                  std::string(name) == "coverage-exact" ? p.greedy_cost + 1e-9 : INFINITY);
       }
     }
   }
@@ -382,7 +411,8 @@ TEST(Coverage, TheRobotSweepsThePitAndDocks) {
   for (const auto& s : e.trajectory)
     if (const auto c = cp.grid().cell_at(s.truth.position())) seen[cp.grid().index(*c)] = true;
   int reachable = 0, passed = 0;
-  for (std::size_t i = 0; i < reach.size(); ++i) reachable += reach[i], passed += reach[i] && seen[i];
+  for (std::size_t i = 0; i < reach.size(); ++i)
+    reachable += reach[i], passed += reach[i] && seen[i];
   EXPECT_GE(passed, 0.9 * reachable);
 }
 

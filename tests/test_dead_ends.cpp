@@ -40,10 +40,13 @@ Graph graph_of(int nodes, const std::vector<std::pair<int, int>>& edges) {
 }
 
 // The nodes `from` reaches without crossing the edge skipped (one copy of a -> b).
-std::vector<bool> reached_without(const std::vector<std::pair<int, int>>& edges, int nodes, std::size_t skipped, int from) {
+std::vector<bool> reached_without(const std::vector<std::pair<int, int>>& edges, int nodes,
+                                  std::size_t skipped, int from) {
   std::vector<std::vector<int>> adjacent(nodes);
   for (std::size_t e = 0; e < edges.size(); ++e)
-    if (e != skipped) adjacent[edges[e].first].push_back(edges[e].second), adjacent[edges[e].second].push_back(edges[e].first);
+    if (e != skipped)
+      adjacent[edges[e].first].push_back(edges[e].second),
+          adjacent[edges[e].second].push_back(edges[e].first);
   std::vector<bool> seen(nodes, false);
   std::vector<int> todo{from};
   seen[from] = true;
@@ -58,7 +61,8 @@ std::vector<bool> reached_without(const std::vector<std::pair<int, int>>& edges,
 
 TEST(DeadEnds, TwoRingsOnAChainAndADoubledEdge) {
   // 0-1-2-0 a ring, 2-3-4 a chain, 4-5-6-4 a ring, 6-7 and then 7=8 joined twice.
-  const auto g = graph_of(9, {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 4}, {6, 7}, {7, 8}, {7, 8}});
+  const auto g = graph_of(
+      9, {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 4}, {6, 7}, {7, 8}, {7, 8}});
   DeadEnds d(g.first, g.neighbour);
   EXPECT_EQ(d.bridge_count(), 3);  // 2-3, 3-4, 6-7
   const std::int32_t at0[] = {0}, at5[] = {5}, both[] = {0, 5};
@@ -87,7 +91,8 @@ TEST(DeadEnds, MatchRemovingEachEdgeAndLooking) {
     const int nodes = 2 + static_cast<int>(random() % 30);
     std::vector<std::pair<int, int>> edges;
     for (int n = 1; n < nodes; ++n)
-      if (random() % 8) edges.push_back({static_cast<int>(random() % n), n});  // else a new component
+      if (random() % 8)
+        edges.push_back({static_cast<int>(random() % n), n});  // else a new component
     for (int extra = static_cast<int>(random() % 4); extra > 0; --extra) {
       const int a = static_cast<int>(random() % nodes), b = static_cast<int>(random() % nodes);
       if (a != b) edges.push_back({a, b});
@@ -106,8 +111,10 @@ TEST(DeadEnds, MatchRemovingEachEdgeAndLooking) {
       bool goal_beyond_b = false, goal_beyond_a = false;
       const auto side_a = reached_without(edges, nodes, e, a);
       for (const std::int32_t t : goal) goal_beyond_b |= side[t], goal_beyond_a |= side_a[t];
-      EXPECT_EQ(d.leads_nowhere(a, b), bridge && !goal_beyond_b) << "trial " << trial << " edge " << a << "-" << b;
-      EXPECT_EQ(d.leads_nowhere(b, a), bridge && !goal_beyond_a) << "trial " << trial << " edge " << b << "-" << a;
+      EXPECT_EQ(d.leads_nowhere(a, b), bridge && !goal_beyond_b)
+          << "trial " << trial << " edge " << a << "-" << b;
+      EXPECT_EQ(d.leads_nowhere(b, a), bridge && !goal_beyond_a)
+          << "trial " << trial << " edge " << b << "-" << a;
     }
     EXPECT_EQ(d.bridge_count(), bridges) << "trial " << trial;
   }
@@ -130,7 +137,8 @@ TEST(DeadEnds, BridgePathIsTheRowOfBridgesOrNothing) {
 
 double polyline(const std::vector<Vec2>& p) {
   double sum = 0;
-  for (std::size_t i = 1; i < p.size(); ++i) sum += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
+  for (std::size_t i = 1; i < p.size(); ++i)
+    sum += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
   return sum;
 }
 
@@ -151,7 +159,8 @@ TEST(ChannelFunnel, StraightWhereItCanBendAtACornerWhereItMust) {
 // single ray with the right end (1, 4.5) nearer than the left (1, 7); the way then turns right,
 // round the nearer end. Bending at once at the left end went up to (1, 7) and back: 2.9 m longer.
 TEST(ChannelFunnel, AFunnelClosedToOneRayBendsAtTheEndTheWayTurnsRound) {
-  const std::vector<Portal> portals{{{1, 7}, {1, 4.5}}, {{1.5, 6.5}, {1, 4.5}}, {{3, 6.5}, {4, 4.5}}};
+  const std::vector<Portal> portals{
+      {{1, 7}, {1, 4.5}}, {{1.5, 6.5}, {1, 4.5}}, {{3, 6.5}, {4, 4.5}}};
   const Vec2 goal{3.762164, 5.288768};
   const auto path = funnel_path({1, 1.5}, portals, goal, 1e-12);
   EXPECT_EQ(path, (std::vector<Vec2>{{1, 1.5}, {1, 4.5}, goal}));
@@ -165,12 +174,14 @@ TEST(ChannelFunnel, AFunnelClosedToOneRayBendsAtTheEndTheWayTurnsRound) {
 // as Polyanya's authors do); the rectangle mesh's search 209,174 and 387,657 (823 a query).
 TEST(DeadEnds, PruningKeepsEveryAnswerAndCutsTheWork) {
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/BigGameHunters.map"));
-  const FreeSpaceMesh rectangles(worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle),
-                                 {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)});
+  const FreeSpaceMesh rectangles(
+      worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle),
+      {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)});
   const ConvexMesh polygons(rectangles);
   Graph dual;
   for (std::int32_t p = 0; p < polygons.polygon_count(); ++p) {
-    dual.neighbour.insert(dual.neighbour.end(), polygons.neighbours(p), polygons.neighbours(p) + polygons.size(p));
+    dual.neighbour.insert(dual.neighbour.end(), polygons.neighbours(p),
+                          polygons.neighbours(p) + polygons.size(p));
     dual.first.push_back(static_cast<std::int32_t>(dual.neighbour.size()));
   }
   EXPECT_EQ(polygons.polygon_count(), 2282);
@@ -189,14 +200,15 @@ TEST(DeadEnds, PruningKeepsEveryAnswerAndCutsTheWork) {
   int funnelled = 0;
   const auto length = [](const IntervalPath& p) {
     double sum = 0;
-    for (std::size_t i = 1; i < p.path.size(); ++i) sum += std::hypot(p.path[i].x - p.path[i - 1].x, p.path[i].y - p.path[i - 1].y);
+    for (std::size_t i = 1; i < p.path.size(); ++i)
+      sum += std::hypot(p.path[i].x - p.path[i - 1].x, p.path[i].y - p.path[i - 1].y);
     return sum;
   };
   while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
     ++line;
     const Vec2 s = worlds::lattice_point(map, sx, sy), g = worlds::lattice_point(map, gx, gy);
-    const IntervalPath found[4] = {pruned.find(s, g), whole.find(s, g), pruned_rectangles.find(s, g),
-                                   whole_rectangles.find(s, g)};
+    const IntervalPath found[4] = {pruned.find(s, g), whole.find(s, g),
+                                   pruned_rectangles.find(s, g), whole_rectangles.find(s, g)};
     for (int i = 0; i < 4; ++i) {
       ASSERT_TRUE(found[i].found) << i << ": " << sx << " " << sy << " -> " << gx << " " << gy;
       EXPECT_LE(std::fabs(length(found[i]) - expected), 5e-6 * expected + 1e-5)
@@ -207,12 +219,14 @@ TEST(DeadEnds, PruningKeepsEveryAnswerAndCutsTheWork) {
     EXPECT_FALSE(found[1].through_channel);
   }
   EXPECT_EQ(line, 447);
-  std::cout << "BigGameHunters: " << funnelled << " queries funnelled; intervals expanded " << expanded[0]
-            << " (polygons), " << expanded[1] << " (polygons, nothing pruned), " << expanded[2] << " (rectangles), "
-            << expanded[3] << " (rectangles, nothing pruned)\n";
+  std::cout << "BigGameHunters: " << funnelled << " queries funnelled; intervals expanded "
+            << expanded[0] << " (polygons), " << expanded[1] << " (polygons, nothing pruned), "
+            << expanded[2] << " (rectangles), " << expanded[3] << " (rectangles, nothing pruned)\n";
   EXPECT_GT(funnelled, 100) << "of " << line << " queries answered by the funnel";
-  EXPECT_LT(expanded[0], expanded[1] * 4 / 10) << expanded[0] << " pruned, " << expanded[1] << " not (polygons)";
-  EXPECT_LT(expanded[2], expanded[3] * 6 / 10) << expanded[2] << " pruned, " << expanded[3] << " not (rectangles)";
+  EXPECT_LT(expanded[0], expanded[1] * 4 / 10)
+      << expanded[0] << " pruned, " << expanded[1] << " not (polygons)";
+  EXPECT_LT(expanded[2], expanded[3] * 6 / 10)
+      << expanded[2] << " pruned, " << expanded[3] << " not (rectangles)";
 }
 
 }  // namespace

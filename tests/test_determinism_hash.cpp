@@ -7,9 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "planner/planner.h"
 #include "sim/episode.h"
@@ -28,7 +27,9 @@ std::uint64_t trajectory_hash(const EpisodeResult& e) {
     for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ULL;
   };
   for (const TrajectorySample& s : e.trajectory)
-    for (double v : {s.t_s, s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw}) mix(v);
+    for (double v :
+         {s.t_s, s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw})
+      mix(v);
   return h;
 }
 
@@ -36,7 +37,8 @@ TEST(Determinism, TheReferenceEpisodeMatchesItsCheckedInHash) {
   std::ifstream in(test::source_file("tests/fixtures/determinism_hash.json"));
   ASSERT_TRUE(in) << "tests/fixtures/determinism_hash.json is missing";
   const nlohmann::json reference = nlohmann::json::parse(in);
-  const worlds::World w = worlds::load_world(test::source_file(reference.at("world").get<std::string>()));
+  const worlds::World w =
+      worlds::load_world(test::source_file(reference.at("world").get<std::string>()));
   EpisodeConfig c;
   c.seed = reference.at("seed").get<std::uint64_t>();
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
@@ -44,8 +46,10 @@ TEST(Determinism, TheReferenceEpisodeMatchesItsCheckedInHash) {
   std::ostringstream got;
   got << std::hex << trajectory_hash(e);
   EXPECT_EQ(got.str(), reference.at("trajectory_fnv1a64").get<std::string>())
-      << "the reference episode's trajectory changed (" << e.trajectory.size() << " samples, status " << e.status
-      << "). If an algorithm changed on purpose, set trajectory_fnv1a64 in tests/fixtures/determinism_hash.json to "
+      << "the reference episode's trajectory changed (" << e.trajectory.size()
+      << " samples, status " << e.status
+      << "). If an algorithm changed on purpose, set trajectory_fnv1a64 in "
+         "tests/fixtures/determinism_hash.json to "
       << got.str() << " and say why in the commit.";
 }
 

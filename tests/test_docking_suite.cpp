@@ -32,8 +32,8 @@ struct SuiteResult {
 // Start poses uniform over the free floor (outside every inflated obstacle), random heading.
 std::vector<geom::Pose2> random_starts(const worlds::World& w, int count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax),
-      yaw(-M_PI, M_PI);
+  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
+      uy(w.floor.ymin, w.floor.ymax), yaw(-M_PI, M_PI);
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
   const geom::Vec2 staging = worlds::staging_pose(w).position();
   std::vector<geom::Pose2> out;
@@ -45,7 +45,8 @@ std::vector<geom::Pose2> random_starts(const worlds::World& w, int count, std::u
   return out;
 }
 
-SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& base, std::uint64_t seed) {
+SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& base,
+                      std::uint64_t seed) {
   count = test::scaled(count, 6);  // smaller in the sanitizer tree (tests/test_paths.h)
   worlds::World w = worlds::load_world(test::shared_data(file));
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
@@ -61,17 +62,20 @@ SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& b
     s.collisions += r.collisions;
     if (r.docked) s.position_errors_m.push_back(r.position_error_m);
     if (!r.docked || r.collisions)
-      s.failures.push_back(r.status + " from (" + std::to_string(start.x) + ", " + std::to_string(start.y) + ", " +
-                           std::to_string(start.yaw) + "), collisions " + std::to_string(r.collisions) +
-                           ", error " + std::to_string(r.position_error_m));
+      s.failures.push_back(r.status + " from (" + std::to_string(start.x) + ", " +
+                           std::to_string(start.y) + ", " + std::to_string(start.yaw) +
+                           "), collisions " + std::to_string(r.collisions) + ", error " +
+                           std::to_string(r.position_error_m));
   }
   return s;
 }
 
 void report(const std::string& what, const SuiteResult& s) {
-  std::printf("%s: %d/%d docked (%.1f %%), collisions %d, median position error %.2f mm\n", what.c_str(), s.docked,
-              s.episodes, 100 * s.success_rate(), s.collisions, 1000 * s.median_error_m());
-  for (std::size_t i = 0; i < std::min<std::size_t>(s.failures.size(), 10); ++i) std::printf("  %s\n", s.failures[i].c_str());
+  std::printf("%s: %d/%d docked (%.1f %%), collisions %d, median position error %.2f mm\n",
+              what.c_str(), s.docked, s.episodes, 100 * s.success_rate(), s.collisions,
+              1000 * s.median_error_m());
+  for (std::size_t i = 0; i < std::min<std::size_t>(s.failures.size(), 10); ++i)
+    std::printf("  %s\n", s.failures[i].c_str());
 }
 
 TEST(DockingSuite, RandomStartsInN50AndN200) {

@@ -26,38 +26,47 @@ TEST(FailureWatch, StandingStillIsStuckUnlessItsWayIsBlocked) {
     }
     const Failure f = w.judge(60.0, {5, 0, 0}, std::nullopt, std::nullopt, false);
     EXPECT_EQ(f.reason, blocked ? FailureReason::kBlocked : FailureReason::kStuck);
-    EXPECT_NEAR(f.time_s, 10.0, 1.1);  // when it last progressed (0.5 m before the end of its drive)
+    EXPECT_NEAR(f.time_s, 10.0,
+                1.1);  // when it last progressed (0.5 m before the end of its drive)
     EXPECT_NEAR(f.pose.x, 5.0, 0.6);
   }
 }
 
 TEST(FailureWatch, ARobotStillMovingWhenTimeRunsOutTimedOut) {
   FailureWatch w;
-  for (int k = 0; k <= 30 * 60; ++k) w.observe(k / 30.0, {0.1 * k / 30.0, 0, 0}, {0.1 * k / 30.0, 0, 0}, LocalizationHealth::kOk, false);
-  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, false).reason, FailureReason::kTimeout);
-  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, true).reason, FailureReason::kTargetLost);
+  for (int k = 0; k <= 30 * 60; ++k)
+    w.observe(k / 30.0, {0.1 * k / 30.0, 0, 0}, {0.1 * k / 30.0, 0, 0}, LocalizationHealth::kOk,
+              false);
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, false).reason,
+            FailureReason::kTimeout);
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, true).reason,
+            FailureReason::kTargetLost);
 }
 
 TEST(FailureWatch, AFarEstimateOrALostOneOverridesWhatTheRobotSaid) {
   FailureWatch far;
   far.observe(1.0, {1, 0, 0}, {1.4, 0, 0}, LocalizationHealth::kOk, false);
-  const Failure f = far.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kDockRetriesExhausted, "missed"}, std::nullopt, false);
+  const Failure f = far.judge(
+      1.0, {1, 0, 0}, GiveUp{FailureReason::kDockRetriesExhausted, "missed"}, std::nullopt, false);
   EXPECT_EQ(f.reason, FailureReason::kLocalizationLost);
   EXPECT_NE(f.detail.find("0.40 m"), std::string::npos) << f.detail;
   FailureWatch lost;
   lost.observe(1.0, {1, 0, 0}, {1, 0, 0}, LocalizationHealth::kLost, false);
-  EXPECT_EQ(lost.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
-            FailureReason::kLocalizationLost);
+  EXPECT_EQ(
+      lost.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
+      FailureReason::kLocalizationLost);
   FailureWatch near;
   near.observe(1.0, {1, 0, 0}, {1.1, 0, 0}, LocalizationHealth::kDegraded, false);
-  EXPECT_EQ(near.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
-            FailureReason::kBlocked);
+  EXPECT_EQ(
+      near.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
+      FailureReason::kBlocked);
 }
 
 TEST(FailureWatch, AnyCollisionIsTheReasonAtItsFirstContact) {
   FailureWatch w;
   w.observe(1.0, {1, 0, 0}, {3, 0, 0}, LocalizationHealth::kLost, false);
-  const Failure f = w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}}, false);
+  const Failure f =
+      w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}}, false);
   EXPECT_EQ(f.reason, FailureReason::kCollision);
   EXPECT_DOUBLE_EQ(f.time_s, 4.5);
   EXPECT_DOUBLE_EQ(f.pose.y, 3.0);
@@ -88,13 +97,15 @@ EpisodeResult run(const worlds::World& w, EpisodeConfig c, const std::string& pl
 void expect_reason(const EpisodeResult& r, FailureReason reason) {
   EXPECT_FALSE(r.succeeded()) << r.status;
   ASSERT_TRUE(r.failure.has_value()) << r.status;
-  EXPECT_EQ(to_string(r.failure->reason), to_string(reason)) << r.status << ": " << r.failure->detail;
+  EXPECT_EQ(to_string(r.failure->reason), to_string(reason))
+      << r.status << ": " << r.failure->detail;
   EXPECT_GE(r.failure->time_s, 0.0);
   EXPECT_LE(r.failure->time_s, r.time_s + 1e-9);
   ASSERT_FALSE(r.events.empty());
   EXPECT_EQ(r.events.back().kind, EpisodeResult::Event::Kind::kFailure);
-  std::printf("%s at %.1f s (episode %.1f s): %s\n", std::string(to_string(r.failure->reason)).c_str(), r.failure->time_s,
-              r.time_s, r.failure->detail.c_str());
+  std::printf("%s at %.1f s (episode %.1f s): %s\n",
+              std::string(to_string(r.failure->reason)).c_str(), r.failure->time_s, r.time_s,
+              r.failure->detail.c_str());
 }
 
 TEST(FailureEpisodes, ASuccessHasNoFailure) {
@@ -168,8 +179,8 @@ TEST(FailureEpisodes, AGyroCalibratedAtRestKeepsABlindRobotOnCourse) {
   const EpisodeResult calibrated = run(room(), c);
   c.perception.gyro_calibration_s = 0;
   const EpisodeResult uncalibrated = run(room(), c);
-  std::printf("worst localisation error: %.3f m calibrated at rest, %.3f m not\n", calibrated.localization_error_max_m,
-              uncalibrated.localization_error_max_m);
+  std::printf("worst localisation error: %.3f m calibrated at rest, %.3f m not\n",
+              calibrated.localization_error_max_m, uncalibrated.localization_error_max_m);
   EXPECT_LT(calibrated.localization_error_max_m, 0.5 * uncalibrated.localization_error_max_m);
   ASSERT_FALSE(calibrated.trajectory.empty());
   EXPECT_EQ(calibrated.trajectory.front().speed_mps, 0.0);
@@ -192,7 +203,8 @@ TEST(FailureEpisodes, UndockFailedWhenSomethingParksBehindTheRobot) {
 }
 
 TEST(FailureEpisodes, TargetLostWhenThePursuitRunsOutOfTime) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/seed001_target_moves_on.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_moves_on.json"));
   EpisodeConfig c;
   c.timeout_s = 5;
   expect_reason(run(w, c), FailureReason::kTargetLost);

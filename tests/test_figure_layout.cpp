@@ -9,15 +9,15 @@
 #include <nlohmann/json.hpp>
 
 #include "figure_checks.h"
+#include "planner/coverage/coverage_planner.h"
 #include "planner/planner.h"
 #include "render/batch_charts.h"
-#include "planner/coverage/coverage_planner.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"
-#include "render/scaling_chart.h"
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/run_figure.h"
+#include "render/scaling_chart.h"
 #include "sim/episode.h"
 #include "sim/episode_json.h"
 #include "test_paths.h"
@@ -60,13 +60,19 @@ void expect_title_matches_summary(const FigureLayout& layout, const sim::Episode
   ASSERT_FALSE(sub.empty());
   EXPECT_EQ(sub.rfind(j["status"].get<std::string>() + ",", 0), 0u) << sub;
   if (run.error_measured) {
-    EXPECT_NE(sub.find(format("error %.1f cm", 100 * j["position_error_m"].get<double>())), std::string::npos) << sub;
+    EXPECT_NE(sub.find(format("error %.1f cm", 100 * j["position_error_m"].get<double>())),
+              std::string::npos)
+        << sub;
   } else {
     EXPECT_NE(sub.find("error n/a"), std::string::npos) << sub;
   }
-  EXPECT_NE(sub.find(std::to_string(j["collisions"].get<int>()) + " collisions"), std::string::npos) << sub;
-  EXPECT_NE(sub.find(format("planned %.2f m", j["path_length_m"].get<double>())), std::string::npos) << sub;
-  EXPECT_NE(sub.find(format("driven %.2f m", j["driven_length_m"].get<double>())), std::string::npos) << sub;
+  EXPECT_NE(sub.find(std::to_string(j["collisions"].get<int>()) + " collisions"), std::string::npos)
+      << sub;
+  EXPECT_NE(sub.find(format("planned %.2f m", j["path_length_m"].get<double>())), std::string::npos)
+      << sub;
+  EXPECT_NE(sub.find(format("driven %.2f m", j["driven_length_m"].get<double>())),
+            std::string::npos)
+      << sub;
 }
 
 TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingCloseUp) {
@@ -79,21 +85,25 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   keep(img, "layout_parked_cart");
   test::expect_sound_layout(img, layout, "parked_cart run figure");
   expect_title_matches_summary(layout, c.run);
-  for (const char* label : {"first plan", "final plan", "replan", "moving (swept)", "driven (speed)", "start", "charger"})
+  for (const char* label : {"first plan", "final plan", "replan", "moving (swept)",
+                            "driven (speed)", "start", "charger"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   // Absent things are not listed.
-  for (const char* label : {"wall following", "target", "collision", "not on map", "plan", "explored", "graph"})
+  for (const char* label :
+       {"wall following", "target", "collision", "not on map", "plan", "explored", "graph"})
     EXPECT_FALSE(test::has_legend(layout, label)) << label;
   // No two entries look alike: the same colour is drawn as a different swatch (a stop's black
   // ring, the first plan's black dashes, a tracked box's black outline).
   for (std::size_t i = 0; i < layout.legend.size(); ++i)
     for (std::size_t j = i + 1; j < layout.legend.size(); ++j) {
       const LegendEntry &a = layout.legend[i], &b = layout.legend[j];
-      EXPECT_FALSE(a.colour.r == b.colour.r && a.colour.g == b.colour.g && a.colour.b == b.colour.b && a.swatch == b.swatch)
+      EXPECT_FALSE(a.colour.r == b.colour.r && a.colour.g == b.colour.g &&
+                   a.colour.b == b.colour.b && a.swatch == b.swatch)
           << "'" << a.label << "' and '" << b.label << "' share one swatch";
     }
   // The footprint's entry fits its legend column (it was cut to "robot, every 1...").
-  EXPECT_TRUE(test::has_legend(layout, "robot / 10 s") || test::has_legend(layout, "robot / 5 s")) << "footprint entry";
+  EXPECT_TRUE(test::has_legend(layout, "robot / 10 s") || test::has_legend(layout, "robot / 5 s"))
+      << "footprint entry";
   // The final plan shows over the driven path along its length (it is drawn on top).
   int seen = 0, checked = 0;
   for (std::size_t i = 0; i + 1 < c.run.plan.size(); ++i)
@@ -104,8 +114,9 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const Rgb px = img.at(static_cast<int>(p.x) + dx, static_cast<int>(p.y) + dy);
-          near = near || (std::abs(px.r - palette::kPlan.r) < 30 && std::abs(px.g - palette::kPlan.g) < 30 &&
-                          std::abs(px.b - palette::kPlan.b) < 30);
+          near = near ||
+                 (std::abs(px.r - palette::kPlan.r) < 30 &&
+                  std::abs(px.g - palette::kPlan.g) < 30 && std::abs(px.b - palette::kPlan.b) < 30);
         }
       seen += near;
     }
@@ -114,13 +125,14 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   ASSERT_EQ(layout.insets.size(), 1u);
   EXPECT_LE(layout.insets[0].bottom, img.height);
   bool contact_line = false;
-  for (const std::string& s : layout.texts) contact_line = contact_line || s.rfind("at contact: 0.", 0) == 0;
+  for (const std::string& s : layout.texts)
+    contact_line = contact_line || s.rfind("at contact: 0.", 0) == 0;
   EXPECT_TRUE(contact_line);
 }
 
 TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
-  const Case c =
-      simulate(test::source_file("worlds/scenarios/seed001_slow_target.json"), sim::TravelMode::kPotentialField);
+  const Case c = simulate(test::source_file("worlds/scenarios/seed001_slow_target.json"),
+                          sim::TravelMode::kPotentialField);
   ASSERT_TRUE(c.run.caught);
   FigureLayout layout;
   const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
@@ -152,12 +164,16 @@ TEST(FigureLayout, TimePlotsShadePhasesAndKeepLabelsOnTheCanvas) {
 }
 
 TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
   std::vector<std::unique_ptr<planner::CoveragePlanner>> planners;
   std::vector<CoveragePanel> panels;
-  for (const char* name : {"coverage-chnn", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
-    planners.push_back(std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), name));
-    ASSERT_EQ(planners.back()->plan(w.start.position(), worlds::staging_pose(w).position()).status, planner::PlanStatus::kOk);
+  for (const char* name :
+       {"coverage-chnn", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
+    planners.push_back(
+        std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), name));
+    ASSERT_EQ(planners.back()->plan(w.start.position(), worlds::staging_pose(w).position()).status,
+              planner::PlanStatus::kOk);
     panels.push_back({name, &planners.back()->grid(), planners.back()->last_plan(), {}, ""});
   }
   // A network that settled on no order: its panel says so instead of drawing a path.
@@ -169,11 +185,13 @@ TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
   const Image img = draw_coverage(w, panels, "coverage", "document vs here", 1600, 560, &layout);
   keep(img, "layout_coverage");
   test::expect_sound_layout(img, layout, "coverage");
-  for (const char* label : {"covered once", "coverage path", "sub-region, order", "sweep start", "start", "charger"})
+  for (const char* label :
+       {"covered once", "coverage path", "sub-region, order", "sweep start", "start", "charger"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   EXPECT_FALSE(test::has_legend(layout, "driven"));
   auto said = [&](const std::string& part) {
-    return std::any_of(layout.texts.begin(), layout.texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+    return std::any_of(layout.texts.begin(), layout.texts.end(),
+                       [&](const std::string& t) { return t.find(part) != std::string::npos; });
   };
   EXPECT_TRUE(said("proven optimal"));
   EXPECT_TRUE(said("valid order in"));
@@ -184,7 +202,8 @@ TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
 TEST(FigureLayout, LongNamesAreShortenedInsideTheCanvas) {
   Case c = simulate(test::shared_data("worlds/world_N10.json"));
   c.world.name = std::string(120, 'w');
-  c.world.name += "_\u4e2d\u6587";  // appended in place: GCC 12 misreads the move of a `+` temporary
+  c.world.name +=
+      "_\u4e2d\u6587";  // appended in place: GCC 12 misreads the move of a `+` temporary
   RunFigureOptions o;
   o.setting = "episode " + std::string(200, 's');
   FigureLayout layout;
@@ -198,7 +217,8 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   for (const char* name : {"vg", "vg-traditional", "grid", "gcr"}) {
     auto p = planner::make_planner(name, planner::planner_input(c.world, true));
     sim::EpisodeResult r;
-    const planner::PlanResult plan = p->plan(c.world.start.position(), worlds::staging_pose(c.world).position());
+    const planner::PlanResult plan =
+        p->plan(c.world.start.position(), worlds::staging_pose(c.world).position());
     r.planner = name;
     r.plan = plan.path;
     r.path_length_m = plan.length;
@@ -215,12 +235,14 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   for (const char* label : {"plan", "driven (speed)", "start", "charger", "obstacle"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   // No panel line boasts a meaningless graph size.
-  for (const std::string& s : layout.texts) EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
+  for (const std::string& s : layout.texts)
+    EXPECT_EQ(s.find(" 0 vertices"), std::string::npos) << s;
 }
 
 // Each planner's plan from the start to the charger, as a comparison panel with its graph
 // (plans only, nothing driven); a planner that finds no path is left out.
-std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w, const std::vector<std::string>& names) {
+std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w,
+                                              const std::vector<std::string>& names) {
   std::vector<ComparisonPanel> panels;
   for (const std::string& name : names) {
     auto p = planner::make_planner(name, planner::planner_input(w, false));
@@ -240,7 +262,8 @@ std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w, const std:
 // Seed 000's Fig. 5 vs Fig. 6 on its own plant: both graphs exact, so the line under the title
 // says the lengths agree and gives the work each did, as the panels' statistics have it.
 TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
   const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", "vg-traditional"});
   ASSERT_EQ(panels.size(), 2u);
   FigureLayout layout;
@@ -248,11 +271,13 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
   keep(img, "layout_fig5_fig6");
   test::expect_sound_layout(img, layout, "fig5 vs fig6");
   const std::string line = what_differs(panels[0], panels[1]);
-  EXPECT_TRUE(std::find(layout.texts.begin(), layout.texts.end(), line) != layout.texts.end()) << line;
+  EXPECT_TRUE(std::find(layout.texts.begin(), layout.texts.end(), line) != layout.texts.end())
+      << line;
   EXPECT_NE(line.find("(the same length)"), std::string::npos) << line;
   const auto& a = panels[0].run.plan_stats;
   const auto& b = panels[1].run.plan_stats;
-  EXPECT_NE(line.find("segment tests " + std::to_string(a.segment_tests) + " vs " + std::to_string(b.segment_tests)),
+  EXPECT_NE(line.find("segment tests " + std::to_string(a.segment_tests) + " vs " +
+                      std::to_string(b.segment_tests)),
             std::string::npos)
       << line;
   EXPECT_LT(a.segment_tests, b.segment_tests);  // the document's claim: less work for the same path
@@ -263,7 +288,8 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
 // polygons for polyanya), portals and the intervals expanded, the portals are listed as such,
 // and no vertex/edge comparison with vg is printed (cells are not vertices).
 TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
   for (const std::string mesh_planner : {"interval", "polyanya"}) {
     const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", mesh_planner});
     ASSERT_EQ(panels.size(), 2u);
@@ -275,10 +301,11 @@ TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
     EXPECT_TRUE(test::has_legend(layout, "graph")) << mesh_planner;
     EXPECT_EQ(what_differs(panels[0], panels[1]), "") << mesh_planner;
     const auto& st = panels[1].run.plan_stats;
-    const std::string mesh = "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals";
-    EXPECT_TRUE(std::any_of(layout.texts.begin(), layout.texts.end(),
-                            [&](const std::string& t) { return t.find(mesh) != std::string::npos; }))
-        << mesh;
+    const std::string mesh =
+        "mesh " + std::to_string(st.vertices) + " cells, " + std::to_string(st.edges) + " portals";
+    EXPECT_TRUE(std::any_of(layout.texts.begin(), layout.texts.end(), [&](const std::string& t) {
+      return t.find(mesh) != std::string::npos;
+    })) << mesh;
   }
 }
 
@@ -296,10 +323,11 @@ TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
   for (const char* label : {"explored", "ring search walks", "letters explored", "letters driven"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   const auto count = [&](const std::string& prefix) {
-    return std::count_if(layout.texts.begin(), layout.texts.end(), [&](const std::string& t) { return t.rfind(prefix, 0) == 0; });
+    return std::count_if(layout.texts.begin(), layout.texts.end(),
+                         [&](const std::string& t) { return t.rfind(prefix, 0) == 0; });
   };
   EXPECT_GE(count("tr"), 2);  // "tries 1, 2: closed" and "try 3: exit"
-  EXPECT_GE(count("U"), 3);    // dead ends of the exploration
+  EXPECT_GE(count("U"), 3);   // dead ends of the exploration
 }
 
 TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
@@ -349,8 +377,8 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   test::expect_sound_layout(img, layout, "localisation chart");
   EXPECT_TRUE(test::has_legend(layout, "10 cm"));
   EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (20)"));  // every episode, not only the docked
-  EXPECT_TRUE(has_text("4 of 20 not ok"));               // gcr: episodes 0, 10, 20, 30
-  EXPECT_TRUE(has_text("0 of 20 not ok, 1 past 1 m"));   // vg: episode 3, 12 m off
+  EXPECT_TRUE(has_text("4 of 20 not ok"));                 // gcr: episodes 0, 10, 20, 30
+  EXPECT_TRUE(has_text("0 of 20 not ok, 1 past 1 m"));     // vg: episode 3, 12 m off
   img = draw_efficiency_chart(episodes, 1400, &layout);
   keep(img, "layout_efficiency");
   test::expect_sound_layout(img, layout, "efficiency chart");
@@ -359,7 +387,8 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   std::vector<EpisodeOutcome> many;
   for (int i = 0; i < 96; ++i) {
     EpisodeOutcome e = episodes[i % episodes.size()];
-    e.method = "planner-" + std::to_string(i % 12) + " / a-controller-with-a-long-name / fault-" + std::string(30, 'f');
+    e.method = "planner-" + std::to_string(i % 12) + " / a-controller-with-a-long-name / fault-" +
+               std::string(30, 'f');
     e.docked = true;
     many.push_back(e);
   }
@@ -368,8 +397,10 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_EQ(layout.legend.size(), 12u);
   img = draw_error_strips(many, {}, 1400, &layout);
   test::expect_sound_layout(img, layout, "error strips, 12 methods");
-  img = draw_sweep_chart("friction", {0.05, 0.1, 0.3}, {{"0.05", 7, 10, 0.4, 0.9, 0.9}, {"0.1", 9, 10, 0.6, 0.98, 0.9},
-                                                         {"0.3", 10, 10, 0.72, 1.0, 0.9}},
+  img = draw_sweep_chart("friction", {0.05, 0.1, 0.3},
+                         {{"0.05", 7, 10, 0.4, 0.9, 0.9},
+                          {"0.1", 9, 10, 0.6, 0.98, 0.9},
+                          {"0.3", 10, 10, 0.72, 1.0, 0.9}},
                          1000, &layout);
   keep(img, "layout_sweep");
   test::expect_sound_layout(img, layout, "sweep chart");
@@ -390,8 +421,9 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_TRUE(test::has_legend(layout, "failed"));
   EXPECT_TRUE(test::has_legend(layout, "caught"));  // a pursuit's successes are catches
 
-  img = draw_scaling_chart({{"vg", {10, 100, 1000}, {0.03, 2, 16}}, {"grid", {10, 100, 1000}, {19, 13, 15}}}, "time",
-                           "subtitle", "obstacles", "time (ms)", 1100, 700, &layout);
+  img = draw_scaling_chart(
+      {{"vg", {10, 100, 1000}, {0.03, 2, 16}}, {"grid", {10, 100, 1000}, {19, 13, 15}}}, "time",
+      "subtitle", "obstacles", "time (ms)", 1100, 700, &layout);
   keep(img, "layout_scaling");
   test::expect_sound_layout(img, layout, "scaling chart");
   EXPECT_EQ(layout.legend.size(), 2u);

@@ -69,12 +69,14 @@ TEST(Gcr, RandomWorldsNeverCrossAnObstacleNorExceedTheWalk) {
     ++reached;
     const auto inflated = inflate(in.obstacles, in.inflation_m);
     for (std::size_t i = 1; i < r.path.size(); ++i)
-      for (const Rect& o : inflated) ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o)) << world;
+      for (const Rect& o : inflated)
+        ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o)) << world;
     // As written the optimisation may come out longer than the walk (and says so); plantsim's
     // variant never does.
     const auto raw = p.walk(s, g);
     if (r.length > polyline_length(raw.points) + 1e-9) {
-      EXPECT_NE(r.note.find("longer than the walk, as written"), std::string::npos) << world << ": " << r.note;
+      EXPECT_NE(r.note.find("longer than the walk, as written"), std::string::npos)
+          << world << ": " << r.note;
     }
     GcrPlanner variant(in, true);
     const auto v = variant.plan(s, g);
@@ -82,7 +84,9 @@ TEST(Gcr, RandomWorldsNeverCrossAnObstacleNorExceedTheWalk) {
     EXPECT_LE(v.length, polyline_length(raw.points) + 1e-9) << world;
     EXPECT_GE(r.length, geom::distance(s, g) - 1e-9);
   }
-  std::printf("gcr on 150 random worlds: %d reached, %d failed (trapped / oscillating / timed out)\n", reached, failed);
+  std::printf(
+      "gcr on 150 random worlds: %d reached, %d failed (trapped / oscillating / timed out)\n",
+      reached, failed);
   EXPECT_GT(reached, 60);
 }
 
@@ -116,7 +120,8 @@ TEST(Gcr, TheDocumentsStepRule) {
   EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {2, 10}, unit), {0.1, 0.5}));
   EXPECT_TRUE(near(GcrPlanner::gradient_step({5, 5}, {-5, 3}, unit), {-0.5, -0.1}));
   EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {10, 10}, unit), {0.1, 0.1}));
-  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {40, 0.05}, unit), {40, 0.05}));  // along an axis: one step
+  EXPECT_TRUE(near(GcrPlanner::gradient_step({0, 0}, {40, 0.05}, unit),
+                   {40, 0.05}));  // along an axis: one step
 }
 
 // The document's Fig. 4: the same method towards goals on either side of each axis. Mirrored
@@ -138,13 +143,15 @@ TEST(Gcr, Fig4GoalsInEveryDirectionGiveMirroredWalks) {
   ASSERT_FALSE(w.first_rotation_axes.empty());
   EXPECT_TRUE(w.first_rotation_axes.front() == (Vec2{0, 1}));
   for (const Vec2 flip : {Vec2{-1, 1}, Vec2{1, -1}, Vec2{-1, -1}}) {
-    const double mx = flip.x, my = flip.y;  // (clang 14: a lambda may not capture a structured binding)
+    const double mx = flip.x,
+                 my = flip.y;  // (clang 14: a lambda may not capture a structured binding)
     auto mirror = [mx, my](Vec2 p) { return Vec2{mx * p.x, my * p.y}; };
     GcrPlanner m(centred(block));  // the block is symmetric: its mirror is itself
     const GcrPlanner::Walk v = m.walk(mirror({-45, -45}), mirror({45, 45}));
     ASSERT_TRUE(v.reached) << v.failure;
     ASSERT_EQ(v.points.size(), w.points.size()) << mx << " " << my;
-    for (std::size_t i = 0; i < w.points.size(); ++i) ASSERT_LT(geom::distance(v.points[i], mirror(w.points[i])), 1e-9) << i;
+    for (std::size_t i = 0; i < w.points.size(); ++i)
+      ASSERT_LT(geom::distance(v.points[i], mirror(w.points[i])), 1e-9) << i;
     EXPECT_TRUE(v.first_rotation_axes.front() == (Vec2{0, my}));
     const auto r = m.plan(mirror({-45, -45}), mirror({45, 45}));
     EXPECT_EQ(r.status, PlanStatus::kOk);
@@ -168,7 +175,8 @@ TEST(Gcr, WalksThatArriveAreNotCalledLoops) {
 // comes out longer) is an option, never the default; where it changes anything it shortens. gcr
 // is the document's method as written: on this plant its optimisation is longer than its walk.
 TEST(Gcr, TheShortcutPassIsAnOptionAndOnlyShortens) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+  const auto w =
+      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
   GcrPlanner plain(planner_input(w, true)), shortcut(planner_input(w, true), true);
   EXPECT_EQ(plain.name(), "gcr");
   EXPECT_EQ(shortcut.name(), "gcr-shortcut");
@@ -177,7 +185,8 @@ TEST(Gcr, TheShortcutPassIsAnOptionAndOnlyShortens) {
   ASSERT_EQ(a.status, PlanStatus::kOk) << a.note;
   ASSERT_EQ(b.status, PlanStatus::kOk) << b.note;
   EXPECT_LT(b.length, a.length - 0.1);  // measured: the variant's path is shorter on this plant
-  EXPECT_GT(a.length, polyline_length(a.explored) + 1.0);  // as written: 112 m against a walk of 80 m
+  EXPECT_GT(a.length,
+            polyline_length(a.explored) + 1.0);  // as written: 112 m against a walk of 80 m
   EXPECT_NE(a.note.find("longer than the walk, as written"), std::string::npos) << a.note;
   EXPECT_LE(b.length, polyline_length(b.explored) + 1e-9);
   EXPECT_NE(b.note.find("plantsim's"), std::string::npos) << b.note;

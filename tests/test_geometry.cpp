@@ -37,18 +37,25 @@ TEST(Orient, MatchesIntegerArithmeticOnRandomDegenerateInputs) {
     const std::int64_t ax = coord(rng), ay = coord(rng), bx = coord(rng), by = coord(rng);
     // c near the line through a and b: a + t (b - a) + tiny integer offset.
     const std::int64_t t = small(rng);
-    const std::int64_t cx = ax + t * (bx - ax) / 4 + small(rng), cy = ay + t * (by - ay) / 4 + small(rng);
+    const std::int64_t cx = ax + t * (bx - ax) / 4 + small(rng),
+                       cy = ay + t * (by - ay) / 4 + small(rng);
     if (std::llabs(cx) > (1LL << 28) || std::llabs(cy) > (1LL << 28)) continue;
-    const __int128 det = static_cast<__int128>(bx - ax) * (cy - ay) - static_cast<__int128>(by - ay) * (cx - ax);
+    const __int128 det =
+        static_cast<__int128>(bx - ax) * (cy - ay) - static_cast<__int128>(by - ay) * (cx - ax);
     const int expected = (det > 0) - (det < 0);
-    const Orientation o = orient({ax * unit, ay * unit}, {bx * unit, by * unit}, {cx * unit, cy * unit});
+    const Orientation o =
+        orient({ax * unit, ay * unit}, {bx * unit, by * unit}, {cx * unit, cy * unit});
     ASSERT_EQ(static_cast<int>(o), expected) << "case " << i;
   }
 }
 
 TEST(SegmentEntersOpenRect, TableOfCases) {
   const Rect r{0, 0, 1, 1};
-  struct Case { Vec2 p, q; bool enters; const char* what; };
+  struct Case {
+    Vec2 p, q;
+    bool enters;
+    const char* what;
+  };
   const Case cases[] = {
       {{-1, 0.5}, {2, 0.5}, true, "crosses the middle"},
       {{-1, 0}, {2, 0}, false, "slides along the bottom edge"},
@@ -74,7 +81,7 @@ TEST(OccupiesQuadrant, CornerAndEdgePoints) {
   EXPECT_TRUE(occupies_quadrant(r, {1, 1}, -1, -1));
   EXPECT_FALSE(occupies_quadrant(r, {1, 1}, 1, 1));
   EXPECT_FALSE(occupies_quadrant(r, {1, 1}, -1, 1));
-  EXPECT_TRUE(occupies_quadrant(r, {1, 0.5}, -1, 1));   // on the right edge
+  EXPECT_TRUE(occupies_quadrant(r, {1, 0.5}, -1, 1));  // on the right edge
   EXPECT_TRUE(occupies_quadrant(r, {1, 0.5}, -1, -1));
   EXPECT_FALSE(occupies_quadrant(r, {1, 0.5}, 1, 1));
 }

@@ -16,8 +16,8 @@
 namespace plantsim {
 namespace {
 
-std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map, const char* method = "vg",
-                                                   int landmarks = 0) {
+std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map,
+                                                   const char* method = "vg", int landmarks = 0) {
   planner::PlannerInput in;
   in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
   in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
@@ -39,11 +39,15 @@ TEST(AnyAngle, ArenaMatchesPolyanyaReferenceOnAll160Queries) {
     int sx, sy, gx, gy, checked = 0;
     double expected, octile;
     while (ref >> sx >> sy >> gx >> gy >> expected >> octile) {
-      const auto r = planner->plan(worlds::lattice_point(map, sx, sy), worlds::lattice_point(map, gx, gy));
-      ASSERT_EQ(r.status, planner::PlanStatus::kOk) << method << " " << sx << " " << sy << " " << gx << " " << gy;
+      const auto r =
+          planner->plan(worlds::lattice_point(map, sx, sy), worlds::lattice_point(map, gx, gy));
+      ASSERT_EQ(r.status, planner::PlanStatus::kOk)
+          << method << " " << sx << " " << sy << " " << gx << " " << gy;
       EXPECT_LE(std::fabs(r.length - expected), 5e-6 * expected + 1e-5)
-          << method << " " << sx << " " << sy << " -> " << gx << " " << gy << ": " << r.length << " vs " << expected;
-      EXPECT_LE(r.length, octile + 5e-6 * octile + 1e-5);  // never longer than octile (printed rounded)
+          << method << " " << sx << " " << sy << " -> " << gx << " " << gy << ": " << r.length
+          << " vs " << expected;
+      EXPECT_LE(r.length,
+                octile + 5e-6 * octile + 1e-5);  // never longer than octile (printed rounded)
       ++checked;
     }
     EXPECT_EQ(checked, 160) << method;
@@ -69,12 +73,14 @@ TEST(AnyAngle, LandmarksKeepTheAnswersAndCutTheWork) {
     const geom::Vec2 s = worlds::lattice_point(map, sx, sy), g = worlds::lattice_point(map, gx, gy);
     const auto a = plain->plan(s, g), b = alt->plan(s, g);
     ASSERT_EQ(b.status, planner::PlanStatus::kOk) << sx << " " << sy << " " << gx << " " << gy;
-    EXPECT_LE(std::fabs(b.length - expected), 5e-6 * expected + 1e-5) << sx << " " << sy << " -> " << gx << " " << gy;
+    EXPECT_LE(std::fabs(b.length - expected), 5e-6 * expected + 1e-5)
+        << sx << " " << sy << " -> " << gx << " " << gy;
     EXPECT_NEAR(a.length, b.length, 1e-9 * (1 + a.length));
     expanded_plain += a.stats.expanded, expanded_alt += b.stats.expanded;
   }
   EXPECT_GT(line, 400);
-  EXPECT_LT(expanded_alt, expanded_plain * 75 / 100) << expanded_alt << " with landmarks, " << expanded_plain << " without";
+  EXPECT_LT(expanded_alt, expanded_plain * 75 / 100)
+      << expanded_alt << " with landmarks, " << expanded_plain << " without";
 }
 
 // What the convex polygons are for: on BigGameHunters (every 4th reference query) a path
@@ -97,29 +103,35 @@ TEST(AnyAngle, ConvexPolygonsKeepTheAnswersAndHalveTheWork) {
     const geom::Vec2 s = worlds::lattice_point(map, sx, sy), g = worlds::lattice_point(map, gx, gy);
     const auto a = rectangles->plan(s, g), b = polygons->plan(s, g);
     ASSERT_EQ(b.status, planner::PlanStatus::kOk) << sx << " " << sy << " " << gx << " " << gy;
-    EXPECT_LE(std::fabs(b.length - expected), 5e-6 * expected + 1e-5) << sx << " " << sy << " -> " << gx << " " << gy;
+    EXPECT_LE(std::fabs(b.length - expected), 5e-6 * expected + 1e-5)
+        << sx << " " << sy << " -> " << gx << " " << gy;
     expanded_rectangles += a.stats.expanded, expanded_polygons += b.stats.expanded;
   }
   EXPECT_GT(line, 400);
   EXPECT_LT(expanded_polygons, expanded_rectangles / 2)
-      << expanded_polygons << " over convex polygons, " << expanded_rectangles << " over rectangles";
+      << expanded_polygons << " over convex polygons, " << expanded_rectangles
+      << " over rectangles";
 }
 
 TEST(GridBaseline, ReproducesMovingAIOctileLengthsOnEveryTenthScenario) {
   int checked = 0;
   for (const char* name : {"arena", "den009d", "den101d", "den201d", "den204d"}) {
-    const auto map = worlds::load_movingai_map(test::shared_data(std::string("movingai/maps/") + name + ".map"));
-    const auto scen = worlds::load_movingai_scenarios(test::shared_data(std::string("movingai/scen/") + name + ".map.scen"));
+    const auto map =
+        worlds::load_movingai_map(test::shared_data(std::string("movingai/maps/") + name + ".map"));
+    const auto scen = worlds::load_movingai_scenarios(
+        test::shared_data(std::string("movingai/scen/") + name + ".map.scen"));
     ASSERT_FALSE(scen.empty()) << name;
     for (std::size_t i = 0; i < scen.size(); i += 10) {
       const auto& s = scen[i];
       ASSERT_EQ(s.map_width, map.width);
       const auto r = planner::grid_astar(
-          map.width, map.height, [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx,
-          s.sy, s.gx, s.gy);
+          map.width, map.height,
+          [&](int x, int y) { return worlds::passable_for_octile(map.at(x, y)); }, s.sx, s.sy, s.gx,
+          s.gy);
       ASSERT_TRUE(r.found) << name << " line " << i;
       // The scenario files print lengths rounded to 5 or 6 significant digits.
-      EXPECT_NEAR(r.length, s.optimal, 1e-4 * std::max(1.0, s.optimal / 100)) << name << " line " << i;
+      EXPECT_NEAR(r.length, s.optimal, 1e-4 * std::max(1.0, s.optimal / 100))
+          << name << " line " << i;
       ++checked;
     }
   }
@@ -152,13 +164,15 @@ TEST(GridMaps, MergedRectanglesCoverExactlyTheBlockedCells) {
     for (int x = 0; x < map.width; ++x) {
       const geom::Vec2 centre{x + 0.5, map.height - y - 0.5};
       bool covered = false;
-      for (const auto& r : rects) covered |= r.xmin < centre.x && centre.x < r.xmax && r.ymin < centre.y && centre.y < r.ymax;
+      for (const auto& r : rects)
+        covered |= r.xmin < centre.x && centre.x < r.xmax && r.ymin < centre.y && centre.y < r.ymax;
       ASSERT_EQ(covered, worlds::blocked_for_anyangle(map.at(x, y))) << x << "," << y;
     }
 }
 
 TEST(GridMaps, BadFilesNameTheFileAndTheField) {
-  const auto dir = std::filesystem::temp_directory_path() / ("plantsim_maps_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("plantsim_maps_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   auto write = [&](const std::string& name, const std::string& text) {
     const auto p = (dir / name).string();

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "planner/planner.h"
+#include "robot/scan_matcher.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"
-#include "robot/scan_matcher.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -33,7 +33,8 @@ LidarScan exact_scan(const worlds::World& world, const geom::Pose2& pose) {
     for (const geom::Rect& r : rects) {
       // Slab test of the ray against the box.
       double t0 = 0, t1 = 1e9;
-      const double o[2] = {pose.x, pose.y}, d[2] = {u.x, u.y}, lo[2] = {r.xmin, r.ymin}, hi[2] = {r.xmax, r.ymax};
+      const double o[2] = {pose.x, pose.y}, d[2] = {u.x, u.y}, lo[2] = {r.xmin, r.ymin},
+                   hi[2] = {r.xmax, r.ymax};
       bool hit = true;
       for (int a = 0; a < 2 && hit; ++a) {
         if (std::fabs(d[a]) < 1e-12) {
@@ -123,7 +124,8 @@ TEST(Localization, AKidnapPastEveryWindowEndsLocalizationLost) {
 TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
   // A tuning-set world (seed 1 of the sparse style): 8 boxes on 100 x 60 m, long stretches where
   // the lidar sees nothing; it failed with "degraded" and a true error of 9 mm before.
-  const worlds::World w = worlds::load_world(test::source_file("worlds/generated/styles/sparse_s1.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/generated/styles/sparse_s1.json"));
   const EpisodeConfig c = load_episode_config(test::source_file("configs/noisy_sensing.json"));
   const EpisodeResult r = run(w, c);
   EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
@@ -142,8 +144,9 @@ TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
     if (stopped_since >= 0) longest_stop = std::max(longest_stop, s.t_s - stopped_since);
   }
   EXPECT_LT(longest_stop, 5.0);
-  std::printf("longest stop while travelling %.1f s, relocalisations %d, worst error %.2f m (%s)\n", longest_stop,
-              r.relocalizations, r.localization_error_max_m, r.localization_status.c_str());
+  std::printf("longest stop while travelling %.1f s, relocalisations %d, worst error %.2f m (%s)\n",
+              longest_stop, r.relocalizations, r.localization_error_max_m,
+              r.localization_status.c_str());
 }
 
 TEST(Localization, EncoderNoiseAloneDoesNotPassForSlip) {

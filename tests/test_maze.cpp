@@ -14,7 +14,9 @@
 namespace plantsim::planner {
 namespace {
 
-worlds::World ring_world() { return worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")); }
+worlds::World ring_world() {
+  return worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json"));
+}
 
 // The ring world's entrance (at the start) and exit (at the staging pose) on its lattice.
 std::pair<LatticeNode, LatticeNode> ring_ends(const worlds::World& w) {
@@ -62,7 +64,8 @@ TEST_P(RingMaze, TheHandRuleComesBackAndTheMarkerSearchReachesTheExit) {
     const auto a = s.route.nodes[i - 1], b = s.route.nodes[i];
     bool joined = false;
     for (int h = 0; h < 4; ++h)
-      joined = joined || (w.maze->open(a, static_cast<Heading>(h)) && worlds::TunnelMaze::step(a, static_cast<Heading>(h)) == b);
+      joined = joined || (w.maze->open(a, static_cast<Heading>(h)) &&
+                          worlds::TunnelMaze::step(a, static_cast<Heading>(h)) == b);
     ASSERT_TRUE(joined) << i;
   }
   const auto best = shortest_route(*w.maze, *entrance, *exit);
@@ -114,9 +117,11 @@ TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
   auto explore = make_planner("maze-left-explore", planner_input(w, true));
   auto route = make_planner("maze-left", planner_input(w, true));
   const Vec2 goal = worlds::staging_pose(w).position();
-  const PlanResult first = explore->plan(w.start.position(), goal), next = route->plan(w.start.position(), goal);
+  const PlanResult first = explore->plan(w.start.position(), goal),
+                   next = route->plan(w.start.position(), goal);
   ASSERT_EQ(first.status, PlanStatus::kOk);
-  EXPECT_GT(first.length, 2.0 * next.length);  // the exploration and the search before the route is known
+  EXPECT_GT(first.length,
+            2.0 * next.length);  // the exploration and the search before the route is known
   EXPECT_TRUE(stays_in_corridors(first.path, w.obstacles));
   const sim::EpisodeResult e = sim::run_episode(w, *explore, sim::EpisodeConfig{});
   EXPECT_TRUE(e.docked) << e.status;
@@ -137,7 +142,8 @@ TEST(RingMazeThirdString, DrivenAsRecordedByDefaultAndSimplifiedAgainOnRequest) 
   ASSERT_FALSE(recorded.attempts.empty());
   EXPECT_EQ(recorded.attempts.size(), recorded.attempt_labels.size());
   EXPECT_EQ(recorded.attempts.back().end, WalkEnd::kExit);
-  for (std::size_t i = 0; i + 1 < recorded.attempts.size(); ++i) EXPECT_NE(recorded.attempts[i].end, WalkEnd::kExit);
+  for (std::size_t i = 0; i + 1 < recorded.attempts.size(); ++i)
+    EXPECT_NE(recorded.attempts[i].end, WalkEnd::kExit);
 
   const MazeSolution again =
       solve_maze(*w.maze, entrance, Heading::kEast, exit, Hand::kLeft, ThirdString::kResimplified);
@@ -156,7 +162,8 @@ TEST(RingMazeThirdString, LettersSitAtJunctionsAndDeadEnds) {
     ASSERT_EQ(walk->turn_at.size(), walk->turns.size());
     for (std::size_t i = 0; i < walk->turns.size(); ++i) {
       int open = 0;
-      for (int h = 0; h < 4; ++h) open += w.maze->open(walk->nodes[walk->turn_at[i]], static_cast<Heading>(h));
+      for (int h = 0; h < 4; ++h)
+        open += w.maze->open(walk->nodes[walk->turn_at[i]], static_cast<Heading>(h));
       if (walk->turns[i] == 'U')
         EXPECT_EQ(open, 1) << i;
       else
@@ -185,8 +192,10 @@ TEST(MazePlanner, FiguresGetTheSearchWalksAndEveryRecordedLetter) {
     std::sort(explored_letters.begin(), explored_letters.end());
     EXPECT_EQ(explored_letters, first) << name;
     EXPECT_NE(tries.find(": exit"), std::string::npos) << tries;
-    EXPECT_NE(r.note.find(std::string(name).find("resimplified") != std::string::npos ? "simplified again" : "as recorded"),
-              std::string::npos)
+    EXPECT_NE(
+        r.note.find(std::string(name).find("resimplified") != std::string::npos ? "simplified again"
+                                                                                : "as recorded"),
+        std::string::npos)
         << r.note;
   }
 }
@@ -200,7 +209,8 @@ TEST(MazePlanner, AWorldWithoutALatticeGetsNoPathAndTheReason) {
 }
 
 TEST(TunnelMazeFile, ADiagonalCorridorIsRejectedNamingIt) {
-  const std::string text = R"({"tunnel_maze": {"origin": [0, 0], "pitch_m": 2, "corridor_m": 1, "columns": 3, "rows": 3,
+  const std::string text =
+      R"({"tunnel_maze": {"origin": [0, 0], "pitch_m": 2, "corridor_m": 1, "columns": 3, "rows": 3,
       "corridors": [[[0, 0], [2, 0]], [[0, 0], [1, 1]]]},
     "robot": {"radius_m": 0.2, "wheel_base_m": 0.34, "wheel_radius_m": 0.06, "max_speed_mps": 0.8, "max_accel_mps2": 1},
     "start": {"x": 0, "y": 0, "yaw": 0}, "charger": {"x": 4.0, "y": 0, "yaw": 0}})";
@@ -208,7 +218,8 @@ TEST(TunnelMazeFile, ADiagonalCorridorIsRejectedNamingIt) {
     worlds::parse_world_json(text, "m.json");
     FAIL() << "accepted";
   } catch (const worlds::WorldError& e) {
-    EXPECT_NE(std::string(e.what()).find("tunnel_maze.corridors[1]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("tunnel_maze.corridors[1]"), std::string::npos)
+        << e.what();
   }
 }
 

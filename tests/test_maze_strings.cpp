@@ -20,10 +20,13 @@ TEST(MazeStrings, SingleRulesAndNothingToDo) {
   EXPECT_EQ(simplify_turns("RUR", Hand::kRight), "S");
   EXPECT_EQ(simplify_turns("LSR", Hand::kLeft), "LSR");
   EXPECT_EQ(simplify_turns("", Hand::kRight), "");
-  EXPECT_EQ(simplify_turns("SUL", Hand::kRight), "SUL");  // left-hand patterns mean nothing to the right hand
+  EXPECT_EQ(simplify_turns("SUL", Hand::kRight),
+            "SUL");  // left-hand patterns mean nothing to the right hand
 }
 
-TEST(MazeStrings, BadLettersAreRefused) { EXPECT_THROW(simplify_turns("SXL", Hand::kLeft), std::invalid_argument); }
+TEST(MazeStrings, BadLettersAreRefused) {
+  EXPECT_THROW(simplify_turns("SXL", Hand::kLeft), std::invalid_argument);
+}
 
 }  // namespace
 }  // namespace plantsim::planner

@@ -57,9 +57,9 @@ TEST(Lidar, RangesMatchAnalyticDistancesWithOcclusion) {
   Lidar lidar(exact_lidar(), 1);
   const LidarScan s = lidar.scan(physics, w.start, 0.0);
   ASSERT_EQ(s.ranges.size(), 361u);
-  EXPECT_NEAR(s.ranges[beam_at(s, 0.0)], 3.0, 1e-4);         // the box's face at x = 4
-  EXPECT_NEAR(s.ranges[beam_at(s, M_PI / 2)], 5.0, 1e-4);    // the wall at y = 10
-  EXPECT_NEAR(s.ranges[beam_at(s, -M_PI / 2)], 5.0, 1e-4);   // the wall at y = 0
+  EXPECT_NEAR(s.ranges[beam_at(s, 0.0)], 3.0, 1e-4);        // the box's face at x = 4
+  EXPECT_NEAR(s.ranges[beam_at(s, M_PI / 2)], 5.0, 1e-4);   // the wall at y = 10
+  EXPECT_NEAR(s.ranges[beam_at(s, -M_PI / 2)], 5.0, 1e-4);  // the wall at y = 0
   // About 20 degrees up: the box (x = 4 at y = 5 + 3 tan a > 6) is missed; the far wall is hit.
   const std::size_t i = beam_at(s, 20.0 * M_PI / 180.0);
   ASSERT_GT(5 + 3 * std::tan(s.angle(i)), 6.0);
@@ -140,7 +140,8 @@ TEST(ChargerDetection, BlockedWhenSomethingStandsInTheLineOfSight) {
   w.obstacles = {{4.5, 4.9, 4.6, 5.1}};  // a post between robot and charger
   PhysicsWorld physics(w);
   ChargerDetector d(p, 1);
-  EXPECT_FALSE(d.update(physics, w.start, w.charger, worlds::charger_body(w).center, 0.0).has_value());
+  EXPECT_FALSE(
+      d.update(physics, w.start, w.charger, worlds::charger_body(w).center, 0.0).has_value());
 }
 
 TEST(ChargerDetection, LatencyDeliversTheImageLaterWithItsCaptureTime) {
@@ -183,7 +184,7 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
     // The filter's model matched to the simulated sensors: per-read wheel noise sigma on each
     // wheel is sigma / sqrt(2) on the travel; the gyro's figures as they are.
     ep.distance_noise = 0.02 / std::sqrt(2.0);
-    
+
     ep.gyro_noise_radps = 0.003;
     ep.initial_bias_sigma_radps = 0.003;
     ep.bias_walk_radps_per_sqrt_s = 0.0002;
@@ -191,7 +192,8 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
     // The robot is told its start with an error drawn from the filter's own prior.
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> g(0, 1);
-    const geom::Pose2 told{w.start.x + ep.initial_position_sigma_m * g(rng), w.start.y + ep.initial_position_sigma_m * g(rng),
+    const geom::Pose2 told{w.start.x + ep.initial_position_sigma_m * g(rng),
+                           w.start.y + ep.initial_position_sigma_m * g(rng),
                            w.start.yaw + ep.initial_yaw_sigma_rad * g(rng)};
     PhysicsWorld physics(w);
     WheelDrive drive(w.robot, {});
@@ -207,7 +209,8 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
         if (r.scan) {
           ekf.correct(*r.scan);
           const geom::Pose2 truth = physics.robot_pose();
-          Eigen::Vector3d e(ekf.pose().x - truth.x, ekf.pose().y - truth.y, geom::wrap_angle(ekf.pose().yaw - truth.yaw));
+          Eigen::Vector3d e(ekf.pose().x - truth.x, ekf.pose().y - truth.y,
+                            geom::wrap_angle(ekf.pose().yaw - truth.yaw));
           const double nees = e.dot(ekf.pose_covariance().inverse() * e);
           if (sum.size() <= sample) sum.push_back(0);
           sum[sample++] += nees / runs;
@@ -224,13 +227,14 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
 
 void expect_consistent(const std::vector<double>& nees, int runs, const char* what) {
   // Two-sided 95 % bounds of the average of `runs` chi-square(3) draws.
-  const double lo = chi2_quantile(3.0 * runs, -1.96) / runs, hi = chi2_quantile(3.0 * runs, 1.96) / runs;
+  const double lo = chi2_quantile(3.0 * runs, -1.96) / runs,
+               hi = chi2_quantile(3.0 * runs, 1.96) / runs;
   int inside = 0;
   double mean = 0;
   for (double v : nees) inside += v >= lo && v <= hi, mean += v / static_cast<double>(nees.size());
   const double share = static_cast<double>(inside) / static_cast<double>(nees.size());
-  std::printf("%s: average NEES %.2f (3 is ideal), %.0f %% of %zu scans inside [%.2f, %.2f]\n", what, mean, 100 * share,
-              nees.size(), lo, hi);
+  std::printf("%s: average NEES %.2f (3 is ideal), %.0f %% of %zu scans inside [%.2f, %.2f]\n",
+              what, mean, 100 * share, nees.size(), lo, hi);
   // Measured when written: straight 2.35 average, 73 % inside (a little conservative: the
   // filter's process-noise floors); circle 3.11, 95 %.
   EXPECT_GE(share, 2.0 / 3.0) << what;
@@ -354,10 +358,12 @@ INSTANTIATE_TEST_SUITE_P(
     Table, BadSensorConfig,
     ::testing::Values(BadConfig{R"({"lidar": {"beam_count": -1}})", "lidar.beam_count"},
                       BadConfig{R"({"lidar": {"rate_hz": 0}})", "lidar.rate_hz"},
-                      BadConfig{R"({"lidar": {"min_range_m": 5, "max_range_m": 4}})", "lidar.min_range_m"},
+                      BadConfig{R"({"lidar": {"min_range_m": 5, "max_range_m": 4}})",
+                                "lidar.min_range_m"},
                       BadConfig{R"({"lidar": {"range_noise_m": -0.01}})", "lidar.range_noise_m"},
                       BadConfig{R"({"lidar": {"range_noise_m": NaN}})", "bad.json"},
-                      BadConfig{R"({"detection": {"false_negative_probability": 1.5}})", "detection.false_negative_probability"},
+                      BadConfig{R"({"detection": {"false_negative_probability": 1.5}})",
+                                "detection.false_negative_probability"},
                       BadConfig{R"({"detection": {"rate_hz": 0}})", "detection.rate_hz"},
                       BadConfig{R"({"imu": {"bias_radps": -1}})", "imu.bias_radps"},
                       BadConfig{R"({"perception": {"mode": "psychic"}})", "perception.mode"},

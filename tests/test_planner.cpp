@@ -177,11 +177,11 @@ TEST(ObstacleMapPinches, DiagonalTouchIsAPinchAConcaveCornerIsNot) {
 
   const ObstacleMap ell({{0, 0, 2, 1}, {0, 1, 1, 2}}, floor, 0);  // concave corner at (1, 1)
   EXPECT_TRUE(ell.pinch_points().empty());
-  EXPECT_FALSE(ell.segment_free({2, 2}, {0, 0}));      // into the rectangles
-  EXPECT_FALSE(ell.segment_free({2, 1}, {-1, 1}));     // between them along their shared edge
-  EXPECT_FALSE(ell.segment_free({1, 3}, {1, -1}));     // down through the lower one
-  EXPECT_TRUE(ell.segment_free({1, 1}, {2, 2}));       // from the corner into the free quadrant
-  EXPECT_TRUE(ell.segment_free({3, 1}, {1, 1}));       // along the lower one's top edge
+  EXPECT_FALSE(ell.segment_free({2, 2}, {0, 0}));   // into the rectangles
+  EXPECT_FALSE(ell.segment_free({2, 1}, {-1, 1}));  // between them along their shared edge
+  EXPECT_FALSE(ell.segment_free({1, 3}, {1, -1}));  // down through the lower one
+  EXPECT_TRUE(ell.segment_free({1, 1}, {2, 2}));    // from the corner into the free quadrant
+  EXPECT_TRUE(ell.segment_free({3, 1}, {1, 1}));    // along the lower one's top edge
 }
 
 }  // namespace

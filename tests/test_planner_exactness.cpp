@@ -10,26 +10,25 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 
-#include <nlohmann/json.hpp>
-
+#include "geometry/polyline.h"
 #include "geometry/predicates.h"
 #include "planner/inflation.h"
 #include "planner/mesh/free_space_mesh.h"
-#include "geometry/polyline.h"
 #include "planner/mesh/interval_planner.h"
 #include "planner/mesh/interval_search.h"
 #include "planner/mesh/polygon_search.h"
 #include "planner/planner.h"
 #include "planner/vg/vg_planner.h"
+#include "test_paths.h"
 #include "worlds/grid_map.h"
 #include "worlds/random_plant.h"
-#include "test_paths.h"
 
 namespace plantsim::planner {
 namespace {
@@ -43,7 +42,8 @@ Vec2 rotate_quarter(Vec2 p, int k) {
   return p;
 }
 Rect rotate_quarter(const Rect& r, int k) {
-  const Vec2 a = rotate_quarter(Vec2{r.xmin, r.ymin}, k), b = rotate_quarter(Vec2{r.xmax, r.ymax}, k);
+  const Vec2 a = rotate_quarter(Vec2{r.xmin, r.ymin}, k),
+             b = rotate_quarter(Vec2{r.xmax, r.ymax}, k);
   return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
 }
 
@@ -54,7 +54,8 @@ void expect_path_clear(const PlanResult& r, const PlannerInput& in, const std::s
   const Rect free_floor = in.floor.inflated(-in.inflation_m);
   for (std::size_t i = 1; i < r.path.size(); ++i) {
     for (const Rect& o : inflated)
-      ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o)) << what << " segment " << i;
+      ASSERT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], o))
+          << what << " segment " << i;
     ASSERT_TRUE(geom::in_closed_rect(free_floor.inflated(1e-9), r.path[i])) << what;
   }
 }
@@ -71,7 +72,8 @@ struct Fixture {
 
 std::vector<Fixture> load_fixtures() {
   std::vector<Fixture> out;
-  for (const char* name : {"collinear_corners", "corner_touching", "start_goal_on_boundary", "zero_width_gap"}) {
+  for (const char* name :
+       {"collinear_corners", "corner_touching", "start_goal_on_boundary", "zero_width_gap"}) {
     std::ifstream f(test::source_file(std::string("tests/fixtures/") + name + ".json"));
     const auto j = nlohmann::json::parse(f);
     auto rect = [](const nlohmann::json& a) { return Rect{a[0], a[1], a[2], a[3]}; };
@@ -80,7 +82,8 @@ std::vector<Fixture> load_fixtures() {
     fx.input.floor = rect(j["floor"]);
     fx.input.inflation_m = j["inflation"];
     for (const auto& r : j["rects"]) fx.input.obstacles.push_back(rect(r));
-    for (const auto& q : j["queries"]) fx.queries.push_back({point(q["start"]), point(q["goal"]), q["length"]});
+    for (const auto& q : j["queries"])
+      fx.queries.push_back({point(q["start"]), point(q["goal"]), q["length"]});
     out.push_back(fx);
     if (j.contains("inflated_case")) {
       const auto& c = j["inflated_case"];
@@ -104,7 +107,8 @@ TEST(Fixtures, HandWorkedLengthsInFourRotations) {
       for (const char* planner : {"vg", "vg-traditional", "interval", "polyanya"}) {
         auto p = make_planner(planner, in);
         for (const auto& q : fx.queries) {
-          const std::string what = fx.name + " rotated " + std::to_string(90 * k) + " by " + planner;
+          const std::string what =
+              fx.name + " rotated " + std::to_string(90 * k) + " by " + planner;
           const PlanResult r = p->plan(rotate_quarter(q.start, k), rotate_quarter(q.goal, k));
           ASSERT_EQ(r.status, PlanStatus::kOk) << what;
           EXPECT_NEAR(r.length, q.length, 1e-8) << what;
@@ -124,7 +128,8 @@ TEST(Fixtures, CornerTouchingPathNeverPassesThroughTheContactPoint) {
     auto p = make_planner(planner, in);
     const PlanResult r = p->plan({3, 5}, {5, 3});
     ASSERT_EQ(r.status, PlanStatus::kOk) << planner;
-    EXPECT_GT(r.length, 2 * std::sqrt(2.0) + 1) << planner;  // around a square, not through the contact
+    EXPECT_GT(r.length, 2 * std::sqrt(2.0) + 1)
+        << planner;  // around a square, not through the contact
     for (std::size_t i = 1; i < r.path.size(); ++i) {
       EXPECT_FALSE(geom::in_segment_interior(r.path[i - 1], r.path[i], {4, 4})) << planner;
       EXPECT_FALSE(r.path[i] == (Vec2{4, 4})) << planner;
@@ -214,9 +219,9 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
         g = {0.5 * std::round(2 * g.x), 0.5 * std::round(2 * g.y)};
       }
       const PlanResult a = interval->plan(s, g), b = vg->plan(s, g);
-      const std::string what = "world " + std::to_string(world) + " query " + std::to_string(q) + " (" +
-                               std::to_string(s.x) + ", " + std::to_string(s.y) + ") -> (" + std::to_string(g.x) +
-                               ", " + std::to_string(g.y) + ")";
+      const std::string what = "world " + std::to_string(world) + " query " + std::to_string(q) +
+                               " (" + std::to_string(s.x) + ", " + std::to_string(s.y) + ") -> (" +
+                               std::to_string(g.x) + ", " + std::to_string(g.y) + ")";
       ASSERT_EQ(to_string(a.status), to_string(b.status)) << what;
       // Landmarks see only their own part of a walled world: elsewhere they must know nothing.
       const PlanResult c = alt->plan(s, g);
@@ -239,7 +244,8 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
       expect_path_clear(d, in, what + " polyanya");
     }
   }
-  std::printf("interval and polyanya against vg: %d queries with a path, %d without\n", with_path, no_path);
+  std::printf("interval and polyanya against vg: %d queries with a path, %d without\n", with_path,
+              no_path);
   EXPECT_GT(with_path, 4500);
   EXPECT_GT(no_path, 30);
 }
@@ -257,7 +263,8 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
   auto alt = make_planner("interval", with_landmarks);
   auto polyanya = make_planner("polyanya", in);
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax);
+  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
+      uy(w.floor.ymin, w.floor.ymax);
   int with_path = 0;
   for (int q = 0; q < 150; ++q) {
     const Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
@@ -269,16 +276,19 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
     ASSERT_NEAR(a.length, b.length, 1e-9 * (1 + b.length)) << "query " << q;
     ASSERT_NEAR(d.length, b.length, 1e-9 * (1 + b.length)) << "query " << q << " polyanya";
     expect_path_clear(d, in, "query " + std::to_string(q) + " polyanya");
-    ASSERT_NEAR(alt->plan(s, g).length, b.length, 1e-9 * (1 + b.length)) << "query " << q << " with landmarks";
+    ASSERT_NEAR(alt->plan(s, g).length, b.length, 1e-9 * (1 + b.length))
+        << "query " << q << " with landmarks";
     expect_path_clear(a, in, "query " + std::to_string(q));
   }
   EXPECT_GT(with_path, 60);
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
   const Vec2 free_point = w.start.position();
-  for (const auto& [s, g] : std::vector<std::pair<Vec2, Vec2>>{{{nan, 1}, free_point},
-                                                                {free_point, {1, inf}},
-                                                                {{-1e6, 5}, free_point},
-                                                                {free_point, {w.floor.xmax + 1, w.floor.ymax + 1}}}) {
+  for (const auto& [s, g] :
+       std::vector<std::pair<Vec2, Vec2>>{{{nan, 1}, free_point},
+                                          {free_point, {1, inf}},
+                                          {{-1e6, 5}, free_point},
+                                          {free_point, {w.floor.xmax + 1, w.floor.ymax + 1}}}) {
     const PlanResult a = interval->plan(s, g), b = vg->plan(s, g), d = polyanya->plan(s, g);
     EXPECT_NE(a.status, PlanStatus::kOk);
     EXPECT_EQ(to_string(a.status), to_string(b.status));
@@ -299,7 +309,8 @@ TEST(RandomWorlds, LandmarksStayExactAtPinches) {
     std::vector<Rect> blocked;
     for (int i = 0; i < 8; ++i) {
       const int x = at(rng), y = at(rng), w = 1 + at(rng) % 4, h = 1 + at(rng) % 4;
-      blocked.push_back({double(x), double(y), double(std::min(10, x + w)), double(std::min(10, y + h))});
+      blocked.push_back(
+          {double(x), double(y), double(std::min(10, x + w)), double(std::min(10, y + h))});
     }
     const FreeSpaceMesh rectangles(blocked, {0, 0, 10, 10});
     const ConvexMesh polygons(rectangles);
@@ -318,8 +329,10 @@ TEST(RandomWorlds, LandmarksStayExactAtPinches) {
       ASSERT_EQ(b.found, truth.found) << what;
       if (!truth.found) continue;
       ++queries;
-      ASSERT_NEAR(geom::polyline_length(a.path), geom::polyline_length(truth.path), 1e-9) << what << " interval";
-      ASSERT_NEAR(geom::polyline_length(b.path), geom::polyline_length(truth.path), 1e-9) << what << " polyanya";
+      ASSERT_NEAR(geom::polyline_length(a.path), geom::polyline_length(truth.path), 1e-9)
+          << what << " interval";
+      ASSERT_NEAR(geom::polyline_length(b.path), geom::polyline_length(truth.path), 1e-9)
+          << what << " polyanya";
     }
   }
   EXPECT_GT(queries, 45000);
@@ -328,7 +341,8 @@ TEST(RandomWorlds, LandmarksStayExactAtPinches) {
 // Landmarks on a huge plant would cost minutes and gigabytes at build: a request past the
 // budget (landmarks x mesh cells) is refused with the most this map allows, before any search.
 TEST(RandomWorlds, LandmarksPastTheBudgetAreRefusedWithTheMostThatFit) {
-  PlannerInput in = planner_input(worlds::random_plant(worlds::as_dense_as_n1000(15000, 6000)), false);
+  PlannerInput in =
+      planner_input(worlds::random_plant(worlds::as_dense_as_n1000(15000, 6000)), false);
   const std::size_t cells = IntervalPlanner(in).mesh().cells().size();
   ASSERT_GT(64 * cells, kLandmarkCellBudget) << "the plant must be big enough to pass the budget";
   in.landmarks = 64;
@@ -338,7 +352,8 @@ TEST(RandomWorlds, LandmarksPastTheBudgetAreRefusedWithTheMostThatFit) {
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("landmarks x cells"), std::string::npos) << message;
-    EXPECT_NE(message.find("at most " + std::to_string(kLandmarkCellBudget / cells) + " here"), std::string::npos)
+    EXPECT_NE(message.find("at most " + std::to_string(kLandmarkCellBudget / cells) + " here"),
+              std::string::npos)
         << message;
   }
 }
@@ -350,11 +365,13 @@ TEST(RandomWorlds, LandmarkDistancesAreShortestPathLengths) {
   int checked = 0;
   for (int world = 0; world < 60; ++world) {
     const PlannerInput in = random_world(rng, world % 2 == 0);
-    const ObstacleMap map(inflate(in.obstacles, in.inflation_m, in.corner_steps), in.floor, in.inflation_m);
+    const ObstacleMap map(inflate(in.obstacles, in.inflation_m, in.corner_steps), in.floor,
+                          in.inflation_m);
     const FreeSpaceMesh mesh(map.rects(), map.free_floor());
     if (mesh.cells().empty()) continue;
     IntervalSearch search(mesh);
-    const MeshCell& c0 = mesh.cells()[std::uniform_int_distribution<std::size_t>(0, mesh.cells().size() - 1)(rng)];
+    const MeshCell& c0 =
+        mesh.cells()[std::uniform_int_distribution<std::size_t>(0, mesh.cells().size() - 1)(rng)];
     const Vec2 source{c0.xlo, c0.yhi};
     const std::vector<double> d = search.distances_to_corners(source);
     auto vg = make_planner("vg", in);
@@ -392,19 +409,21 @@ void expect_graph_complete(const PlannerInput& in, const std::string& what) {
   for (std::size_t a = 0; a < v.size(); ++a)
     for (std::size_t b = a + 1; b < v.size(); ++b) {
       const Vec2 d = v[b].p - v[a].p;
-      if (v[a].p == v[b].p || !VisibilityGraph::tangent(v[a], d) || !VisibilityGraph::tangent(v[b], d) ||
-          !vg.map().segment_free(v[a].p, v[b].p))
+      if (v[a].p == v[b].p || !VisibilityGraph::tangent(v[a], d) ||
+          !VisibilityGraph::tangent(v[b], d) || !vg.map().segment_free(v[a].p, v[b].p))
         continue;
       ++expected;
-      ASSERT_TRUE(edges.count(key(v[a].p, v[b].p))) << what << ": missing edge (" << v[a].p.x << ", " << v[a].p.y
-                                                    << ") - (" << v[b].p.x << ", " << v[b].p.y << ")";
+      ASSERT_TRUE(edges.count(key(v[a].p, v[b].p)))
+          << what << ": missing edge (" << v[a].p.x << ", " << v[a].p.y << ") - (" << v[b].p.x
+          << ", " << v[b].p.y << ")";
     }
   EXPECT_EQ(edges.size(), expected) << what;
 }
 
 TEST(RandomWorlds, ResolvedGraphHoldsEveryVisibleTangentPair) {
   std::mt19937_64 rng(4242);
-  for (int world = 0; world < 200; ++world) expect_graph_complete(random_world(rng, world % 2 == 0), "world " + std::to_string(world));
+  for (int world = 0; world < 200; ++world)
+    expect_graph_complete(random_world(rng, world % 2 == 0), "world " + std::to_string(world));
   // A grid map merged into rectangles: touching rectangles, shared corners and pinches everywhere.
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
   PlannerInput in;
@@ -439,10 +458,13 @@ TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
     }
     VisibilityGraphPlanner base(in);
     std::vector<std::pair<Vec2, Vec2>> queries;
-    for (int q = 0; q < 12; ++q) queries.push_back({{ux(rng) * w / 20, uy(rng) * h / 14}, {ux(rng) * w / 20, uy(rng) * h / 14}});
+    for (int q = 0; q < 12; ++q)
+      queries.push_back(
+          {{ux(rng) * w / 20, uy(rng) * h / 14}, {ux(rng) * w / 20, uy(rng) * h / 14}});
     for (const auto& [s, g] : queries) base.plan(s, g);  // warm: candidates found, some resolved
     std::vector<std::size_t> removed;
-    if (!in.obstacles.empty()) removed.push_back(static_cast<std::size_t>(rng() % in.obstacles.size()));
+    if (!in.obstacles.empty())
+      removed.push_back(static_cast<std::size_t>(rng() % in.obstacles.size()));
     std::vector<Rect> added;
     if (world % 3 != 0) {
       const double x = ux(rng) * w / 20, y = uy(rng) * h / 14;
@@ -461,13 +483,15 @@ TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
     }
     auto sorted = [](std::vector<std::pair<Vec2, Vec2>> e) {
       std::sort(e.begin(), e.end(), [](const auto& p, const auto& q) {
-        return std::tie(p.first.x, p.first.y, p.second.x, p.second.y) < std::tie(q.first.x, q.first.y, q.second.x, q.second.y);
+        return std::tie(p.first.x, p.first.y, p.second.x, p.second.y) <
+               std::tie(q.first.x, q.first.y, q.second.x, q.second.y);
       });
       return e;
     };
     const auto ea = sorted(changed->graph_edges()), eb = sorted(fresh.graph_edges());
     ASSERT_EQ(ea.size(), eb.size()) << what;
-    for (std::size_t i = 0; i < ea.size(); ++i) ASSERT_TRUE(ea[i].first == eb[i].first && ea[i].second == eb[i].second) << what;
+    for (std::size_t i = 0; i < ea.size(); ++i)
+      ASSERT_TRUE(ea[i].first == eb[i].first && ea[i].second == eb[i].second) << what;
   }
   EXPECT_GT(reused, 500);  // the case this is about: most vertices taken over
   // An index past the obstacles is refused.

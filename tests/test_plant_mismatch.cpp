@@ -5,13 +5,12 @@
 
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "planner/planner.h"
-#include "sim/episode.h"
-#include "sim/charger_pads.h"
 #include "robot/local_obstacle_layer.h"
+#include "sim/charger_pads.h"
+#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -59,7 +58,9 @@ class MismatchFiles : public ::testing::Test {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
     }
   }
-  static nlohmann::json good() { return nlohmann::json::parse(std::ifstream(test::source_file(kMismatch))); }
+  static nlohmann::json good() {
+    return nlohmann::json::parse(std::ifstream(test::source_file(kMismatch)));
+  }
   std::string path_;
 };
 
@@ -218,8 +219,8 @@ TEST(ReplanOnTheMapGraph, SameLengthsAsARebuildWithTheBoxesAdded) {
     const PlannerInput in = planner_input(w, true);
     VisibilityGraphPlanner base(in);  // one graph for every query: its caches warm up as they go
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax), uy(w.floor.ymin, w.floor.ymax),
-        side(0.3, 1.6);
+    std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
+        uy(w.floor.ymin, w.floor.ymax), side(0.3, 1.6);
     for (int trial = 0; trial < 60; ++trial) {
       std::vector<Rect> raw, inflated;
       const int k = 1 + trial % 8;
@@ -234,12 +235,14 @@ TEST(ReplanOnTheMapGraph, SameLengthsAsARebuildWithTheBoxesAdded) {
       for (int q = 0; q < 5; ++q) {
         const Vec2 s{ux(rng), uy(rng)}, g{ux(rng), uy(rng)};
         const PlanResult full = rebuilt->plan(s, g);
-        if (full.status == PlanStatus::kStartBlocked || full.status == PlanStatus::kGoalBlocked) continue;
+        if (full.status == PlanStatus::kStartBlocked || full.status == PlanStatus::kGoalBlocked)
+          continue;
         const PlanResult over = plan_with_added(base, inflated, s, g);
         ASSERT_EQ(over.status, full.status) << file << " trial " << trial << " query " << q;
         ASSERT_FALSE(over.start_snapped);
         if (full.status == PlanStatus::kOk) {
-          ASSERT_NEAR(over.length, full.length, 1e-9 * std::max(1.0, full.length)) << file << " trial " << trial;
+          ASSERT_NEAR(over.length, full.length, 1e-9 * std::max(1.0, full.length))
+              << file << " trial " << trial;
           ++compared;
         } else {
           ++blocked;
@@ -264,14 +267,16 @@ TEST(ReplanOnTheMapGraph, AStartWithinAnAddedBoxLeavesByTheNearestSide) {
   EXPECT_TRUE(r.start_snapped);
   EXPECT_DOUBLE_EQ(r.path.front().x, 4.0);  // out by the near side
   EXPECT_DOUBLE_EQ(r.path.front().y, 5.0);
-  for (std::size_t i = 1; i < r.path.size(); ++i) EXPECT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], box));
+  for (std::size_t i = 1; i < r.path.size(); ++i)
+    EXPECT_FALSE(geom::segment_enters_open_rect(r.path[i - 1], r.path[i], box));
   EXPECT_EQ(plan_with_added(base, {box}, {1.0, 1.0}, {5.0, 5.0}).status, PlanStatus::kGoalBlocked);
   // A wall with a gap at its top; a sensed box closing the gap leaves no way.
   worlds::World walled = w;
   walled.obstacles = {{4.9, 0.0, 5.1, 8.0}};
   VisibilityGraphPlanner with_wall(planner_input(walled, false));
   EXPECT_EQ(plan_with_added(with_wall, {}, {1, 1}, {9, 1}).status, PlanStatus::kOk);
-  EXPECT_EQ(plan_with_added(with_wall, {{4.0, 8.0, 6.0, 10.0}}, {1, 1}, {9, 1}).status, PlanStatus::kNoPath);
+  EXPECT_EQ(plan_with_added(with_wall, {{4.0, 8.0, 6.0, 10.0}}, {1, 1}, {9, 1}).status,
+            PlanStatus::kNoPath);
 }
 
 }  // namespace

@@ -9,18 +9,17 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "batch/batch_runner.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
 #include "sim/episode.h"
-#include "worlds/charger_placement.h"
-#include "worlds/world_loader.h"
 #include "test_paths.h"
+#include "worlds/charger_placement.h"
 #include "worlds/world_error.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim::batch {
 namespace {
@@ -28,13 +27,15 @@ namespace {
 namespace fs = std::filesystem;
 
 struct FaultTally {
-  int episodes = 0, docked = 0, collisions = 0, robot_collisions = 0, failed_with_collision = 0, unmapped_seen = 0;
+  int episodes = 0, docked = 0, collisions = 0, robot_collisions = 0, failed_with_collision = 0,
+      unmapped_seen = 0;
   int recoveries = 0, slips = 0;
   std::vector<std::string> failures;
 };
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("plantsim_plant_suite_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path d = fs::temp_directory_path() /
+                     ("plantsim_plant_suite_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
@@ -48,7 +49,8 @@ std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   text << in.rdbuf();
   std::string s = text.str();
   const std::string from = "$data/", to = test::shared_data("");
-  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+    s.replace(at, from.size(), to);
   if (!test::full_size()) {
     const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
     if (list != std::string::npos && end != std::string::npos)
@@ -76,16 +78,19 @@ std::map<std::string, FaultTally> tally(const fs::path& out) {
     f.recoveries += j["recoveries"].get<int>();
     f.slips += j["slips"].get<int>();
     if (!docked || collisions > 0)
-      f.failures.push_back(j["id"].get<std::string>() + ": " + j["status"].get<std::string>() + ", collisions " +
-                           std::to_string(collisions));
+      f.failures.push_back(j["id"].get<std::string>() + ": " + j["status"].get<std::string>() +
+                           ", collisions " + std::to_string(collisions));
   }
   for (const auto& [name, f] : t) {
     const auto [lo, hi] = wilson_interval(f.docked, f.episodes);
-    std::printf("%-15s %d/%d docked (95 %% Wilson [%.2f, %.2f] %%), collisions %d (robot moving %d), failed with a "
-                "collision %d, unmapped seen %d, recoveries %d, slips %d\n",
-                name.c_str(), f.docked, f.episodes, 100 * lo, 100 * hi, f.collisions, f.robot_collisions,
-                f.failed_with_collision, f.unmapped_seen, f.recoveries, f.slips);
-    for (std::size_t i = 0; i < std::min<std::size_t>(f.failures.size(), 8); ++i) std::printf("  %s\n", f.failures[i].c_str());
+    std::printf(
+        "%-15s %d/%d docked (95 %% Wilson [%.2f, %.2f] %%), collisions %d (robot moving %d), "
+        "failed with a "
+        "collision %d, unmapped seen %d, recoveries %d, slips %d\n",
+        name.c_str(), f.docked, f.episodes, 100 * lo, 100 * hi, f.collisions, f.robot_collisions,
+        f.failed_with_collision, f.unmapped_seen, f.recoveries, f.slips);
+    for (std::size_t i = 0; i < std::min<std::size_t>(f.failures.size(), 8); ++i)
+      std::printf("  %s\n", f.failures[i].c_str());
   }
   return t;
 }
@@ -98,7 +103,9 @@ TEST(PlantSuite, UnmappedObstaclesAShiftedChargerWetFloorsAndACrossingPerson) {
   o.figures = false;
   run_batch(scenario_copy("scenarios/plant_mismatch_suite.yaml", dir), o);
   const auto t = tally(dir / "out");
-  auto rate = [&](const std::string& f) { return static_cast<double>(t.at(f).docked) / t.at(f).episodes; };
+  auto rate = [&](const std::string& f) {
+    return static_cast<double>(t.at(f).docked) / t.at(f).episodes;
+  };
   // 3 unmapped boxes across the optimal path: >= 99 % docked, no collision; boxes were sensed.
   EXPECT_GE(rate("unmapped3"), 0.99);
   EXPECT_EQ(t.at("unmapped3").collisions, 0);
@@ -118,11 +125,13 @@ TEST(PlantSuite, UnmappedObstaclesAShiftedChargerWetFloorsAndACrossingPerson) {
 // the robot waits, never closer than a safe gap (0.3 m between its edge and theirs, set before
 // measuring), touches nothing, and docks once they walk off.
 TEST(PlantSuite, APersonStandingAtTheDockIsWaitedForAtASafeDistance) {
-  for (const std::string& file : {test::source_file("worlds/examples/small_plant.json"), test::shared_data("worlds/world_N50.json")})
+  for (const std::string& file : {test::source_file("worlds/examples/small_plant.json"),
+                                  test::shared_data("worlds/world_N50.json")})
     for (std::uint64_t seed : {1, 2}) {
       worlds::World w = worlds::load_world(file);
       auto exact = planner::make_planner("vg", planner::planner_input(w, true));
-      const planner::PlanResult optimal = exact->plan(w.start.position(), worlds::staging_pose(w).position());
+      const planner::PlanResult optimal =
+          exact->plan(w.start.position(), worlds::staging_pose(w).position());
       ASSERT_EQ(optimal.status, planner::PlanStatus::kOk) << file;
       const worlds::MovingObstacle person = person_standing_at_dock(w, optimal.length, 30.0);
       w.moving.push_back(person);
@@ -134,19 +143,21 @@ TEST(PlantSuite, APersonStandingAtTheDockIsWaitedForAtASafeDistance) {
       double closest = INFINITY;
       for (const sim::TrajectorySample& s : r.trajectory)
         if (s.t_s < person.start_time_s)
-          closest = std::min(closest, geom::distance(s.truth.position(), person.waypoints.front()) - w.robot.radius_m -
-                                          0.5 * person.width_m);
+          closest = std::min(closest, geom::distance(s.truth.position(), person.waypoints.front()) -
+                                          w.robot.radius_m - 0.5 * person.width_m);
       EXPECT_GE(closest, 0.3) << file << " seed " << seed;
-      std::printf("%s seed %llu: %s after %.0f s, closest gap to the standing person %.2f m\n", w.name.c_str(),
-                  static_cast<unsigned long long>(seed), r.status.c_str(), r.time_s, closest);
+      std::printf("%s seed %llu: %s after %.0f s, closest gap to the standing person %.2f m\n",
+                  w.name.c_str(), static_cast<unsigned long long>(seed), r.status.c_str(), r.time_s,
+                  closest);
     }
 }
 
 TEST(PlantSuite, ASweepGivesOneSummaryRowPerValue) {
   const fs::path dir = temp_dir("sweep");
   const std::string yaml = (dir / "s.yaml").string();
-  std::ofstream(yaml) << "name: s\nworlds: [" << test::shared_data("worlds/world_N10.json")
-                      << "]\nsweep: {parameter: drive.tyre_friction, values: [0.8, 0.1, 0.4]}\nseeds: 2\n";
+  std::ofstream(yaml)
+      << "name: s\nworlds: [" << test::shared_data("worlds/world_N10.json")
+      << "]\nsweep: {parameter: drive.tyre_friction, values: [0.8, 0.1, 0.4]}\nseeds: 2\n";
   RunOptions o;
   o.out_dir = (dir / "out").string();
   o.progress = false;
@@ -173,7 +184,9 @@ TEST(PlantSuite, BadSweepsAndPlantFaultsAreRefusedNamingTheField) {
   const fs::path dir = temp_dir("bad");
   auto expect_error = [&](const std::string& body, const std::string& needle) {
     const std::string yaml = (dir / "b.yaml").string();
-    std::ofstream(yaml) << "name: b\nworlds: [" << test::shared_data("worlds/world_N10.json") << "]\n" << body << "seeds: 1\n";
+    std::ofstream(yaml) << "name: b\nworlds: [" << test::shared_data("worlds/world_N10.json")
+                        << "]\n"
+                        << body << "seeds: 1\n";
     RunOptions o;
     o.out_dir = (dir / "out").string();
     o.progress = false;
@@ -194,9 +207,11 @@ TEST(PlantSuite, BadSweepsAndPlantFaultsAreRefusedNamingTheField) {
   expect_error("faults:\n  f: {unmapped_obstacles: -1}\n", "faults.f.unmapped_obstacles");
   expect_error("faults:\n  f: {unmapped_obstacles: many}\n", "faults.f.unmapped_obstacles");
   expect_error("faults:\n  f: {charger_map_offset: [0.1, 0.1]}\n", "faults.f.charger_map_offset");
-  expect_error("faults:\n  f: {charger_map_offset: [0.1, .nan, 0]}\n", "faults.f.charger_map_offset[1]");
+  expect_error("faults:\n  f: {charger_map_offset: [0.1, .nan, 0]}\n",
+               "faults.f.charger_map_offset[1]");
   expect_error("faults:\n  f: {charger_map_offset: [3, 0, 0]}\n", "faults.f.charger_map_offset");
-  expect_error("faults:\n  f: {crossing_final_approach: maybe}\n", "faults.f.crossing_final_approach");
+  expect_error("faults:\n  f: {crossing_final_approach: maybe}\n",
+               "faults.f.crossing_final_approach");
   expect_error("faults:\n  f: {standing_at_dock_s: -1}\n", "faults.f.standing_at_dock_s");
   expect_error("faults:\n  f: {standing_at_dock_s: soon}\n", "faults.f.standing_at_dock_s");
   fs::remove_all(dir);

@@ -14,7 +14,7 @@ struct KinematicRun {
   bool trapped = false;
   double time_s = 0;
   double length_m = 0;
-  double max_deviation_m = 0;    // from the straight line start -> first target position
+  double max_deviation_m = 0;  // from the straight line start -> first target position
   double min_clearance_m = INFINITY;
   int local_minima = 0;
   int wall_follows = 0;
@@ -22,8 +22,9 @@ struct KinematicRun {
 };
 
 // A unicycle driven by the controller at 20 Hz; `target_at(t)` moves the target.
-KinematicRun drive(Pose2 start, const std::function<Vec2(double)>& target_at, const std::vector<geom::Rect>& boxes,
-                   double timeout_s = 120.0, PotentialFieldParams params = {}) {
+KinematicRun drive(Pose2 start, const std::function<Vec2(double)>& target_at,
+                   const std::vector<geom::Rect>& boxes, double timeout_s = 120.0,
+                   PotentialFieldParams params = {}) {
   const double radius = 0.2, dt = 0.05;
   PotentialFieldController c(params, radius);
   std::vector<FieldObstacle> obstacles;
@@ -48,9 +49,14 @@ KinematicRun drive(Pose2 start, const std::function<Vec2(double)>& target_at, co
     velocity = cmd.twist.v_mps * pose.heading();
     run.length_m += geom::distance(before, pose.position());
     run.time_s = t + dt;
-    run.max_deviation_m = std::max(run.max_deviation_m, std::fabs(geom::cross(geom::unit_from_angle(std::atan2(b.y - a.y, b.x - a.x)), pose.position() - a)));
+    run.max_deviation_m =
+        std::max(run.max_deviation_m,
+                 std::fabs(geom::cross(geom::unit_from_angle(std::atan2(b.y - a.y, b.x - a.x)),
+                                       pose.position() - a)));
     for (const auto& box : boxes)
-      run.min_clearance_m = std::min(run.min_clearance_m, geom::distance(pose.position(), geom::closest_point(box, pose.position())) - radius);
+      run.min_clearance_m = std::min(
+          run.min_clearance_m,
+          geom::distance(pose.position(), geom::closest_point(box, pose.position())) - radius);
   }
   run.local_minima = c.local_minima();
   run.wall_follows = c.wall_follow_episodes();
@@ -64,7 +70,12 @@ std::vector<geom::Rect> walled_floor(double w, double h) {
 }
 
 TEST(PotentialField, GoesStraightToTheGoalOnAnEmptyFloor) {
-  const KinematicRun r = drive({1, 5, 0}, [](double) { return Vec2{9, 5}; }, walled_floor(10, 10));
+  const KinematicRun r = drive(
+      {1, 5, 0},
+      [](double) {
+        return Vec2{9, 5};
+      },
+      walled_floor(10, 10));
   ASSERT_TRUE(r.arrived);
   EXPECT_EQ(r.local_minima, 0);
   EXPECT_LT(r.max_deviation_m, 0.01);
@@ -77,8 +88,8 @@ TEST(PotentialField, AttractionAndRepulsionBalanceInFrontOfAWall) {
   const std::vector<FieldObstacle> wall = {{{5, 2, 5.4, 8}, {0, 0}}};
   const FieldForces far = field_forces(p, 0.2, {2, 5}, {0, 0}, {8, 5}, {0, 0}, wall);
   const FieldForces near = field_forces(p, 0.2, {4.5, 5}, {0, 0}, {8, 5}, {0, 0}, wall);
-  EXPECT_GT(far.total.x, 0.9);         // no repulsion out of range
-  EXPECT_LT(near.total.x, 0.0);        // pushed back close to the wall
+  EXPECT_GT(far.total.x, 0.9);            // no repulsion out of range
+  EXPECT_LT(near.total.x, 0.0);           // pushed back close to the wall
   EXPECT_NEAR(near.total.y, 0.0, 1e-12);  // and nothing sideways: a local minimum in between
   // Closing in on an obstacle adds repulsion along the closing motion.
   const FieldForces moving = field_forces(p, 0.2, {4.0, 5}, {0.5, 0}, {8, 5}, {0, 0}, wall);
@@ -89,7 +100,12 @@ TEST(PotentialField, AttractionAndRepulsionBalanceInFrontOfAWall) {
 TEST(PotentialField, LeavesTheLocalMinimumInFrontOfAWallByFollowingIt) {
   auto boxes = walled_floor(12, 12);
   boxes.push_back({5.8, 3, 6.2, 9});  // a wall across the way
-  const KinematicRun r = drive({2, 6, 0}, [](double) { return Vec2{10, 6}; }, boxes);
+  const KinematicRun r = drive(
+      {2, 6, 0},
+      [](double) {
+        return Vec2{10, 6};
+      },
+      boxes);
   EXPECT_TRUE(r.arrived) << "ended at " << r.end.x << ", " << r.end.y;
   EXPECT_GE(r.local_minima, 1);
   EXPECT_GE(r.wall_follows, 1);
@@ -101,17 +117,27 @@ TEST(PotentialField, PlainFieldWithoutWallFollowingStaysTrapped) {
   boxes.push_back({5.8, 3, 6.2, 9});
   PotentialFieldParams p;
   p.max_wall_follows = 0;  // the first local minimum ends the run
-  const KinematicRun r = drive({2, 6, 0}, [](double) { return Vec2{10, 6}; }, boxes, 120.0, p);
+  const KinematicRun r = drive(
+      {2, 6, 0},
+      [](double) {
+        return Vec2{10, 6};
+      },
+      boxes, 120.0, p);
   EXPECT_TRUE(r.trapped);
   EXPECT_LT(r.end.x, 5.8);
 }
 
 TEST(PotentialField, EscapesAUShapedTrap) {
   auto boxes = walled_floor(16, 12);
-  boxes.push_back({7.6, 3, 8, 9});    // the bottom of the U, facing the robot
-  boxes.push_back({5, 3, 8, 3.4});    // its arms
+  boxes.push_back({7.6, 3, 8, 9});  // the bottom of the U, facing the robot
+  boxes.push_back({5, 3, 8, 3.4});  // its arms
   boxes.push_back({5, 8.6, 8, 9});
-  const KinematicRun r = drive({3, 6, 0}, [](double) { return Vec2{13, 6}; }, boxes, 240.0);
+  const KinematicRun r = drive(
+      {3, 6, 0},
+      [](double) {
+        return Vec2{13, 6};
+      },
+      boxes, 240.0);
   EXPECT_TRUE(r.arrived) << "ended at " << r.end.x << ", " << r.end.y;
   EXPECT_GE(r.local_minima, 1);
   EXPECT_GT(r.min_clearance_m, 0.05);

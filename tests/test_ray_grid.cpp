@@ -15,7 +15,8 @@ namespace plantsim::geom {
 namespace {
 
 // The nearest entry by brute force: the box's four faces as segments, each met from outside.
-std::optional<double> brute_force(const std::vector<Rect>& rects, Vec2 o, Vec2 d, double max_range) {
+std::optional<double> brute_force(const std::vector<Rect>& rects, Vec2 o, Vec2 d,
+                                  double max_range) {
   std::optional<double> best;
   for (const Rect& r : rects) {
     if (r.xmin < o.x && o.x < r.xmax && r.ymin < o.y && o.y < r.ymax) continue;  // inside: no hit
@@ -45,7 +46,8 @@ std::vector<Rect> random_rects(std::mt19937_64& rng, int count, double min_side,
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Rect> rects;
   for (int k = 0; k < count; ++k) {
-    const double x = 100 * u(rng), y = 60 * u(rng), w = min_side + spread * u(rng), h = min_side + spread * u(rng);
+    const double x = 100 * u(rng), y = 60 * u(rng), w = min_side + spread * u(rng),
+                 h = min_side + spread * u(rng);
     rects.push_back({x, y, x + w, y + h});
   }
   return rects;
@@ -74,7 +76,8 @@ TEST(RayGrid, MatchesEveryBoxTestedOnRandomRays) {
       const auto want = brute_force(rects, o, d, max_range);
       const auto got = grid.cast(o, d, max_range);
       ++rays;
-      const bool same = want.has_value() == got.has_value() && (!want || std::fabs(got->range_m - *want) <= 1e-9);
+      const bool same =
+          want.has_value() == got.has_value() && (!want || std::fabs(got->range_m - *want) <= 1e-9);
       if (!same) {
         // Only a ray that touches a corner, which rounding may put a hair either side of, may
         // be a hit one way and pass by the other; the nearer answer is then that touch.
@@ -82,7 +85,8 @@ TEST(RayGrid, MatchesEveryBoxTestedOnRandomRays) {
         const Vec2 p = o + t * d;
         double nearest_corner = 1e9;
         for (const Rect& r : rects)
-          for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmin, r.ymax}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}})
+          for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmin, r.ymax}, Vec2{r.xmax, r.ymin},
+                         Vec2{r.xmax, r.ymax}})
             nearest_corner = std::min(nearest_corner, distance(p, c));
         EXPECT_LT(nearest_corner, 1e-9) << "plant " << plant << " ray " << k;
         ++corner_touches;
@@ -109,7 +113,7 @@ TEST(RayGrid, OrientedBoxesAndNormals) {
   EXPECT_NEAR(std::max(std::fabs(local.x) - 1.0, std::fabs(local.y) - 0.5), 0.0, 1e-12);
   EXPECT_LT(hit->normal.x, 0);
   EXPECT_FALSE(grid.cast({5, 0}, {1, 0}, 10));  // from inside: no hit
-  EXPECT_TRUE(grid.near({5, 1.1}, 0.1));  // its bounding box reaches y = 1.06
+  EXPECT_TRUE(grid.near({5, 1.1}, 0.1));        // its bounding box reaches y = 1.06
   EXPECT_FALSE(grid.near({5, 3}, 0.1));
 }
 
@@ -123,7 +127,9 @@ TEST(RayGrid, FanEqualsSingleCastsExactly) {
   for (int plant = 0; plant < 12; ++plant) {
     const std::vector<Rect> rects = random_rects(rng, 10 + plant * 40, 0.2, 4);
     std::vector<OrientedBox> turned;
-    for (int k = 0; k < 5; ++k) turned.push_back({{100 * u(rng), 60 * u(rng)}, 0.3 + u(rng), 0.2 + u(rng), 2 * M_PI * u(rng)});
+    for (int k = 0; k < 5; ++k)
+      turned.push_back(
+          {{100 * u(rng), 60 * u(rng)}, 0.3 + u(rng), 0.2 + u(rng), 2 * M_PI * u(rng)});
     const RayGrid grid(rects, turned);
     for (int fan = 0; fan < 60; ++fan) {
       Vec2 o{-10 + 120 * u(rng), -10 + 80 * u(rng)};
@@ -145,10 +151,12 @@ TEST(RayGrid, FanEqualsSingleCastsExactly) {
         const auto single = grid.cast(o, directions[static_cast<std::size_t>(k)], max_range);
         const auto& got = fanned[static_cast<std::size_t>(k)];
         ++rays;
-        ASSERT_EQ(single.has_value(), got.has_value()) << "plant " << plant << " fan " << fan << " ray " << k;
+        ASSERT_EQ(single.has_value(), got.has_value())
+            << "plant " << plant << " fan " << fan << " ray " << k;
         if (single) {
           ++hits;
-          EXPECT_EQ(single->range_m, got->range_m) << "plant " << plant << " fan " << fan << " ray " << k;
+          EXPECT_EQ(single->range_m, got->range_m)
+              << "plant " << plant << " fan " << fan << " ray " << k;
         }
       }
     }
@@ -168,18 +176,21 @@ TEST(NearRaster, AgreesWithTheGridWhereverItAnswers) {
     const RayGrid grid(rects, {{{50, 30}, 1.0, 0.4, 0.7}});
     const double margin = 0.05 + 0.3 * u(rng);
     const Rect& a = grid.area();
-    const NearRaster raster(grid.bounds(), margin, {a.xmin - 1, a.ymin - 1, a.xmax + 1, a.ymax + 1}, 0.5 * margin);
+    const NearRaster raster(grid.bounds(), margin, {a.xmin - 1, a.ymin - 1, a.xmax + 1, a.ymax + 1},
+                            0.5 * margin);
     for (int k = 0; k < 20000; ++k) {
       Vec2 p{-2 + 104 * u(rng), -2 + 64 * u(rng)};
       if (k % 4 == 1) {  // on a grown box's edge or corner
         const Rect& r = rects[static_cast<std::size_t>(k) % rects.size()];
-        p = {k % 8 == 1 ? r.xmax + margin : r.xmin - margin + (r.width() + 2 * margin) * u(rng), r.ymin - margin};
+        p = {k % 8 == 1 ? r.xmax + margin : r.xmin - margin + (r.width() + 2 * margin) * u(rng),
+             r.ymin - margin};
       }
       const auto answer = raster.at(p);
       if (k % 4 != 1) ++asked;
       if (answer == NearRaster::Answer::kDepends) continue;
       if (k % 4 != 1) ++decided;
-      EXPECT_EQ(answer == NearRaster::Answer::kYes, grid.near(p, margin)) << "plant " << plant << " point " << p.x << "," << p.y;
+      EXPECT_EQ(answer == NearRaster::Answer::kYes, grid.near(p, margin))
+          << "plant " << plant << " point " << p.x << "," << p.y;
     }
   }
   EXPECT_GT(decided, asked * 9 / 10);  // the raster answers most random points by itself
@@ -198,11 +209,13 @@ TEST(RayGrid, AgreesWithBox2dThroughThePhysics) {
   std::uniform_real_distribution<double> u(0, 1);
   int compared = 0;
   for (int k = 0; k < 3000; ++k) {
-    const Vec2 from{w.floor.xmin + w.floor.width() * u(rng), w.floor.ymin + w.floor.height() * u(rng)};
+    const Vec2 from{w.floor.xmin + w.floor.width() * u(rng),
+                    w.floor.ymin + w.floor.height() * u(rng)};
     const Vec2 d = unit_from_angle(2 * M_PI * u(rng));
     const auto box2d = physics.box2d_ray_cast(from, from + 20.0 * d);
     const auto ours = grid.cast(from, d, 20.0);
-    if (!box2d || box2d->kind == sim::SurfaceKind::kCharger || !ours) continue;  // the charger is not in `rects`
+    if (!box2d || box2d->kind == sim::SurfaceKind::kCharger || !ours)
+      continue;  // the charger is not in `rects`
     ++compared;
     // Box2D holds the boxes in single precision: within a few of its ulps at 100 m.
     EXPECT_NEAR(ours->range_m, box2d->range_m, 1e-4) << k;

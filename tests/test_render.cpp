@@ -6,17 +6,17 @@
 #include <filesystem>
 #include <fstream>
 
+#include "figure_checks.h"
 #include "planner/planner.h"
 #include "render/colormap.h"
 #include "render/comparison_figure.h"
 #include "render/figure.h"
 #include "render/palette.h"
-#include "render/report.h"
-#include "render/text.h"
 #include "render/png_io.h"
+#include "render/report.h"
 #include "render/run_figure.h"
+#include "render/text.h"
 #include "sim/episode.h"
-#include "figure_checks.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -29,7 +29,9 @@ class RenderedRun : public ::testing::Test {
     world_ = new worlds::World(worlds::load_world(test::shared_data("worlds/world_N10.json")));
     auto p = planner::make_planner("vg", planner::planner_input(*world_, true));
     run_ = new sim::EpisodeResult(sim::run_episode(*world_, *p, {}));
-    path_ = (std::filesystem::temp_directory_path() / ("plantsim_run_" + std::to_string(::getpid()) + ".png")).string();
+    path_ = (std::filesystem::temp_directory_path() /
+             ("plantsim_run_" + std::to_string(::getpid()) + ".png"))
+                .string();
     RunFigureOptions o;
     o.width_px = 1000;
     o.height_px = 640;
@@ -65,14 +67,16 @@ TEST_F(RenderedRun, DecodesAtRequestedSize) {
 
 TEST_F(RenderedRun, ObstacleColourAtRectangleCentres) {
   const Image img = read_png(path_);
-  for (const auto& r : world_->obstacles) EXPECT_EQ(pixel_at(img, transform_, r.center()), palette::kObstacle);
+  for (const auto& r : world_->obstacles)
+    EXPECT_EQ(pixel_at(img, transform_, r.center()), palette::kObstacle);
 }
 
 // The driven path is coloured by speed: its pixels lie on the cividis colour map.
 bool on_cividis(Rgb c) {
   for (int k = 0; k <= 1000; ++k) {
     const Rgb v = cividis(k / 1000.0);
-    if (std::abs(v.r - c.r) <= 3 && std::abs(v.g - c.g) <= 3 && std::abs(v.b - c.b) <= 3) return true;
+    if (std::abs(v.r - c.r) <= 3 && std::abs(v.g - c.g) <= 3 && std::abs(v.b - c.b) <= 3)
+      return true;
   }
   return false;
 }
@@ -133,13 +137,20 @@ TEST(Text, ProducesInkInsideItsBoxAndNoneOutside) {
 }
 
 TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
-  const auto dir = std::filesystem::temp_directory_path() / ("plantsim_report_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("plantsim_report_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   write_png(draw_run_figure(*world_, *run_), (dir / "run.png").string());
   write_png(draw_time_plots(*world_, *run_), (dir / "timeplots.png").string());
   { std::ofstream((dir / "summary.json").string()) << "{}"; }
-  Report r{"test <report>", "plantsim run x", {"a"}, {{"1"}}, {{"run.png", "run"}, {"timeplots.png", "plots"}},
-           {"summary.json"}, "notes & more", ""};
+  Report r{"test <report>",
+           "plantsim run x",
+           {"a"},
+           {{"1"}},
+           {{"run.png", "run"}, {"timeplots.png", "plots"}},
+           {"summary.json"},
+           "notes & more",
+           ""};
   write_report(r, (dir / "report.html").string());
   std::ifstream f((dir / "report.html").string());
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -165,7 +176,8 @@ TEST_F(RenderedRun, ComparisonPanelsShareTheScale) {
   // Panel 0's box as draw_comparison lays it out (margins 60/80/20/45); panel 1 is the same box
   // 800 pixels to the right, so every obstacle centre repeats there.
   const int h = img.height;
-  const PixelTransform t = PixelTransform::fit(world_->floor, 60, h - (top + 500 - 45), 800 - 20, h - (top + 80), h);
+  const PixelTransform t =
+      PixelTransform::fit(world_->floor, 60, h - (top + 500 - 45), 800 - 20, h - (top + 80), h);
   for (const auto& r : world_->obstacles) {
     const geom::Vec2 p = t.to_pixel(r.center());
     EXPECT_EQ(img.at(static_cast<int>(p.x), static_cast<int>(p.y)), palette::kObstacle);
@@ -190,7 +202,8 @@ namespace {
 // (never filled like the map's), the mapped charger outlined where the map has it, the sensed
 // layer drawn, and each of these in the legend.
 TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLegend) {
-  const worlds::World w = worlds::load_world(test::source_file("worlds/examples/small_plant_mismatch.json"));
+  const worlds::World w =
+      worlds::load_world(test::source_file("worlds/examples/small_plant_mismatch.json"));
   auto p = planner::make_planner("vg", planner::planner_input(w, true));
   const sim::EpisodeResult run = sim::run_episode(w, *p, {});
   ASSERT_FALSE(run.layer_final.empty());
@@ -215,11 +228,13 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
     const geom::Vec2 a = t.to_pixel({r.xmin, r.ymax}), b = t.to_pixel({r.xmax, r.ymin});
     int n = 0;
     for (int y = static_cast<int>(a.y); y <= static_cast<int>(b.y); ++y)
-      for (int x = static_cast<int>(a.x); x <= static_cast<int>(b.x); ++x) n += near(img.at(x, y), c);
+      for (int x = static_cast<int>(a.x); x <= static_cast<int>(b.x); ++x)
+        n += near(img.at(x, y), c);
     return n;
   };
   for (const geom::Rect& u : w.unmapped) {
-    const int inside = count(u, palette::kUnmapped), area = static_cast<int>(u.width() * u.height() * t.scale * t.scale);
+    const int inside = count(u, palette::kUnmapped),
+              area = static_cast<int>(u.width() * u.height() * t.scale * t.scale);
     EXPECT_GT(inside, area / 20) << "hatch and outline drawn";
     EXPECT_LT(count(u, palette::kObstacle), area / 20) << "not filled like a mapped obstacle";
   }
@@ -241,7 +256,9 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
     if (e.kind != sim::EpisodeResult::Event::Kind::kReplan) continue;
     ++replans;
     const double r = 9.0 / t.scale;
-    EXPECT_GT(count({e.at.x - r - 0.05, e.at.y - r - 0.05, e.at.x + r + 0.05, e.at.y + r + 0.05}, palette::kReplanMark), 0);
+    EXPECT_GT(count({e.at.x - r - 0.05, e.at.y - r - 0.05, e.at.x + r + 0.05, e.at.y + r + 0.05},
+                    palette::kReplanMark),
+              0);
   }
   EXPECT_EQ(replans, run.replans);
 }

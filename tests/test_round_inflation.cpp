@@ -29,10 +29,13 @@ TEST(Clearance, ArcAndSegmentAgreeWithDenseSampling) {
     const Rect r{u(rng) * 4, u(rng) * 4, 0, 0};
     const Rect q{r.xmin, r.ymin, r.xmin + u(rng) * 2, r.ymin + u(rng) * 2};
     const Vec2 c{u(rng) * 6 - 1, u(rng) * 6 - 1};
-    const double radius = 0.2 + u(rng), clearance = 0.2 + u(rng), from = u(rng) * 7, sweep = u(rng) * 2 * M_PI;
+    const double radius = 0.2 + u(rng), clearance = 0.2 + u(rng), from = u(rng) * 7,
+                 sweep = u(rng) * 2 * M_PI;
     double nearest = 1e9;
     for (int i = 0; i <= 20000; ++i)
-      nearest = std::min(nearest, geom::distance_to_rect(c + radius * geom::unit_from_angle(from + sweep * i / 20000), q));
+      nearest = std::min(
+          nearest,
+          geom::distance_to_rect(c + radius * geom::unit_from_angle(from + sweep * i / 20000), q));
     const bool keeps = geom::arc_keeps_clearance(c, radius, from, sweep, q, clearance);
     // Sampling finds the nearest point to within the sample spacing (radius * sweep / 20000).
     if (nearest < clearance - 1e-3) {
@@ -45,7 +48,8 @@ TEST(Clearance, ArcAndSegmentAgreeWithDenseSampling) {
 
     const Vec2 p{u(rng) * 6 - 1, u(rng) * 6 - 1}, p2{u(rng) * 6 - 1, u(rng) * 6 - 1};
     double seg = 1e9;
-    for (int i = 0; i <= 20000; ++i) seg = std::min(seg, geom::distance_to_rect(p + (i / 20000.0) * (p2 - p), q));
+    for (int i = 0; i <= 20000; ++i)
+      seg = std::min(seg, geom::distance_to_rect(p + (i / 20000.0) * (p2 - p), q));
     EXPECT_NEAR(geom::segment_rect_distance(p, p2, q), seg, 1e-3 + 1e-9) << trial;
   }
   EXPECT_GT(blocked, 250);  // both outcomes exercised
@@ -87,10 +91,12 @@ TEST(RoundInflation, LengthLiesBetweenStaircasesInsideAndAroundTheRoundedObstacl
     inner.floor = in.floor.inflated(-in.inflation_m);
     inner.inflation_m = 0;
     inner.obstacles = inscribed(in.obstacles, in.inflation_m, 16);
-    auto upper = make_planner("vg", outer), lower = make_planner("vg", inner), square = make_planner("vg", in);
+    auto upper = make_planner("vg", outer), lower = make_planner("vg", inner),
+         square = make_planner("vg", in);
     for (int q = 0; q < 4; ++q) {
       const Vec2 s{0.5 + u(rng) * 19, 0.5 + u(rng) * 13}, g{0.5 + u(rng) * 19, 0.5 + u(rng) * 13};
-      const PlanResult a = round.plan(s, g), hi = upper->plan(s, g), lo = lower->plan(s, g), sq = square->plan(s, g);
+      const PlanResult a = round.plan(s, g), hi = upper->plan(s, g), lo = lower->plan(s, g),
+                       sq = square->plan(s, g);
       const std::string what = "world " + std::to_string(world) + " query " + std::to_string(q);
       // Free for the round inflation: free for the staircase inside, maybe not for the one around.
       if (a.status == PlanStatus::kStartBlocked || a.status == PlanStatus::kGoalBlocked) {
@@ -117,7 +123,8 @@ TEST(RoundInflation, LengthLiesBetweenStaircasesInsideAndAroundTheRoundedObstacl
       double polyline = 0;
       for (std::size_t i = 0; i < a.path.size(); ++i) {
         for (const Rect& o : in.obstacles)
-          ASSERT_GE(geom::distance_to_rect(a.path[i], o), in.inflation_m - 1e-7) << what << " point " << i;
+          ASSERT_GE(geom::distance_to_rect(a.path[i], o), in.inflation_m - 1e-7)
+              << what << " point " << i;
         if (i > 0) polyline += geom::distance(a.path[i - 1], a.path[i]);
       }
       EXPECT_LE(polyline, a.length + 1e-9) << what;
@@ -128,7 +135,9 @@ TEST(RoundInflation, LengthLiesBetweenStaircasesInsideAndAroundTheRoundedObstacl
       double driven = 0;
       for (std::size_t i = 1; i < a.drive_path.size(); ++i) {
         for (const Rect& o : in.obstacles)
-          ASSERT_GE(geom::segment_rect_distance(a.drive_path[i - 1], a.drive_path[i], o), in.inflation_m - 1e-7) << what;
+          ASSERT_GE(geom::segment_rect_distance(a.drive_path[i - 1], a.drive_path[i], o),
+                    in.inflation_m - 1e-7)
+              << what;
         driven += geom::distance(a.drive_path[i - 1], a.drive_path[i]);
       }
       EXPECT_GE(driven, a.length - 1e-9) << what;
@@ -153,7 +162,8 @@ TEST(RoundInflation, BadInputIsRefusedWithAReason) {
   RoundTangentPlanner p(in);
   EXPECT_EQ(p.plan({5, 5}, {9, 9}).status, PlanStatus::kStartBlocked);
   EXPECT_EQ(p.plan({1, 1}, {4.1, 6.2}).status, PlanStatus::kGoalBlocked);  // 0.2 from the corner
-  EXPECT_EQ(p.plan({1, 1}, {9.9, 9}).status, PlanStatus::kGoalBlocked);   // within the wall's clearance
+  EXPECT_EQ(p.plan({1, 1}, {9.9, 9}).status,
+            PlanStatus::kGoalBlocked);  // within the wall's clearance
   in.snap_to_free = true;
   RoundTangentPlanner snapping(in);
   const PlanResult r = snapping.plan({5, 5}, {9, 9});
@@ -194,7 +204,8 @@ TEST(RoundInflation, AnArcThroughAnotherObstaclesClearanceIsRefused) {
   const PlanResult r = p.plan(s, g);
   ASSERT_EQ(r.status, PlanStatus::kOk);
   for (const Vec2& v : r.path)
-    for (const Rect& o : in.obstacles) ASSERT_GE(geom::distance_to_rect(v, o), 1 - 1e-7) << v.x << " " << v.y;
+    for (const Rect& o : in.obstacles)
+      ASSERT_GE(geom::distance_to_rect(v, o), 1 - 1e-7) << v.x << " " << v.y;
   // Going around both is longer than hugging the corner would be.
   in.obstacles.pop_back();
   EXPECT_GT(r.length, RoundTangentPlanner(in).plan(s, g).length + 0.5);
@@ -206,7 +217,8 @@ class RoundPlansDriven : public ::testing::TestWithParam<const char*> {};
 // (it starts turning a lookahead early) and hit a wall on three of these worlds; on the
 // tangents' corners it turns in place, as at a square corner.
 TEST_P(RoundPlansDriven, TheRobotDocksWithoutTouchingAWall) {
-  const auto world = worlds::load_world(test::source_file(std::string("worlds/scenarios/") + GetParam() + ".json"));
+  const auto world = worlds::load_world(
+      test::source_file(std::string("worlds/scenarios/") + GetParam() + ".json"));
   auto p = make_planner("vg-round", planner_input(world, true));
   const sim::EpisodeResult r = sim::run_episode(world, *p, sim::EpisodeConfig{});
   EXPECT_TRUE(r.docked) << r.status;
@@ -214,12 +226,14 @@ TEST_P(RoundPlansDriven, TheRobotDocksWithoutTouchingAWall) {
   EXPECT_LE(r.position_error_m, 0.02);
   // It drove the round plan: shorter than the square inflation's wherever a corner was turned.
   auto square = make_planner("vg", planner_input(world, true));
-  const PlanResult sq = square->plan(world.start.position(), worlds::staging_pose(world).position());
+  const PlanResult sq =
+      square->plan(world.start.position(), worlds::staging_pose(world).position());
   EXPECT_LT(r.path_length_m, sq.length - 0.05);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, RoundPlansDriven,
-                         ::testing::Values("cable_tunnel_ring", "cable_tunnel_maze", "coal_mine_roadways"));
+                         ::testing::Values("cable_tunnel_ring", "cable_tunnel_maze",
+                                           "coal_mine_roadways"));
 
 }  // namespace
 }  // namespace plantsim::planner

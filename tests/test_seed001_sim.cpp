@@ -22,12 +22,14 @@ EpisodeResult run(const worlds::World& world, TravelMode travel) {
 // When the scripted target reaches the end of its track.
 double park_time(const worlds::MovingObstacle& m) {
   double length = 0;
-  for (std::size_t i = 1; i < m.waypoints.size(); ++i) length += geom::distance(m.waypoints[i - 1], m.waypoints[i]);
+  for (std::size_t i = 1; i < m.waypoints.size(); ++i)
+    length += geom::distance(m.waypoints[i - 1], m.waypoints[i]);
   return m.start_time_s + length / m.speed_mps;
 }
 
 TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
-  const auto world = worlds::load_world(test::source_file("worlds/scenarios/seed001_slow_target.json"));
+  const auto world =
+      worlds::load_world(test::source_file("worlds/scenarios/seed001_slow_target.json"));
   ASSERT_TRUE(world.target.has_value());
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
   EXPECT_EQ(r.status, "caught");
@@ -39,7 +41,8 @@ TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
 }
 
 TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
-  const auto world = worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
+  const auto world =
+      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
   EXPECT_EQ(r.status, "caught");
   EXPECT_EQ(r.collisions, 0);
@@ -62,7 +65,8 @@ TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
 
 TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
   const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
-  auto p = planner::make_planner("maze-left", planner::planner_input(world, true));  // no lattice: no path
+  auto p = planner::make_planner("maze-left",
+                                 planner::planner_input(world, true));  // no lattice: no path
   EpisodeConfig config;
   config.travel = TravelMode::kPotentialField;
   const EpisodeResult r = run_episode(world, *p, config);
@@ -72,7 +76,8 @@ TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
 }
 
 TEST(Seed001, TheTargetMovesOnItsScriptAndCollidesWithNothing) {
-  auto world = worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
+  auto world =
+      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
   world.start = {11.0, 5.0, 0.0};  // right in the target's way
   PhysicsWorld physics(world);
   StepSettings s;

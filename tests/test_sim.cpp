@@ -99,7 +99,8 @@ namespace plantsim::sim {
 namespace {
 
 TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json"));
+  const auto world =
+      worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json"));
   ASSERT_EQ(world.moving.size(), 1u);
   const EpisodeResult r = dock(world);
   EXPECT_TRUE(r.docked) << r.status;
@@ -132,7 +133,7 @@ TEST(MovingObstacles, ScriptedMotionIsAFunctionOfTime) {
   m.waypoints = {{0, 0}, {2, 0}};
   m.speed_mps = 1.0;
   m.start_time_s = 1.0;
-  EXPECT_EQ(m.position_at(0.5).x, 0.0);   // waiting
+  EXPECT_EQ(m.position_at(0.5).x, 0.0);  // waiting
   EXPECT_DOUBLE_EQ(m.position_at(2.0).x, 1.0);
   EXPECT_DOUBLE_EQ(m.position_at(9.0).x, 2.0);  // parked at the end
   m.loop = true;
@@ -190,7 +191,8 @@ namespace plantsim::sim {
 namespace {
 
 TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant_rect_robot.json"));
+  const auto world =
+      worlds::load_world(test::source_file("worlds/examples/small_plant_rect_robot.json"));
   ASSERT_TRUE(world.robot.rectangular());
   EXPECT_NEAR(world.robot.radius_m, 0.5 * std::hypot(0.5, 0.36), 1e-12);  // planning radius
   EXPECT_DOUBLE_EQ(world.robot.front_extent_m(), 0.25);
@@ -210,11 +212,13 @@ namespace {
 
 TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
   const EpisodeConfig c = parse_episode_config(
-      R"({"tracking": {"max_linear_speed_mps": 0.4}, "docking": {"max_retries": 5}, "detection": {"enabled": false}})", "c.json");
+      R"({"tracking": {"max_linear_speed_mps": 0.4}, "docking": {"max_retries": 5}, "detection": {"enabled": false}})",
+      "c.json");
   EXPECT_DOUBLE_EQ(c.tracking.max_linear_speed_mps, 0.4);
   EXPECT_EQ(c.docking.max_retries, 5);
   EXPECT_FALSE(c.detection.enabled);
-  EXPECT_DOUBLE_EQ(c.tracking.lookahead_max_m, EpisodeConfig{}.tracking.lookahead_max_m);  // untouched
+  EXPECT_DOUBLE_EQ(c.tracking.lookahead_max_m,
+                   EpisodeConfig{}.tracking.lookahead_max_m);  // untouched
   auto fails_with = [](const std::string& text, const std::string& needle) {
     try {
       parse_episode_config(text, "c.json");
@@ -223,7 +227,8 @@ TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
     }
   };
-  fails_with(R"({"tracking": {"max_linear_sped_mps": 0.4}})", "tracking.max_linear_sped_mps': unknown");
+  fails_with(R"({"tracking": {"max_linear_sped_mps": 0.4}})",
+             "tracking.max_linear_sped_mps': unknown");
   fails_with(R"({"tracking": {"max_linear_speed_mps": "fast"}})", "expected a number");
   fails_with(R"({"step": {"dt_s": 0}})", "step.dt_s");
   fails_with(R"({"docking": {"max_retries": -1}})", "docking.max_retries");

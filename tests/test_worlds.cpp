@@ -4,7 +4,6 @@
 
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "test_paths.h"
@@ -59,7 +58,7 @@ TEST_F(WorldFiles, LoadsPlainWorldWithGoalAsCharger) {
   const World w = load_world(test::shared_data("worlds/world_N10.json"));
   EXPECT_EQ(w.obstacles.size(), 10u);
   EXPECT_DOUBLE_EQ(w.floor.xmax, 100.0);
-  EXPECT_DOUBLE_EQ(w.charger.x, 98.252749);   // the file's goal
+  EXPECT_DOUBLE_EQ(w.charger.x, 98.252749);  // the file's goal
   EXPECT_DOUBLE_EQ(w.charger.y, 51.60456);
   EXPECT_DOUBLE_EQ(w.planning_inflation_m(), 0.3);  // the benchmark's inflation
 }
@@ -76,7 +75,8 @@ TEST_F(WorldFiles, MissingField) {
 TEST_F(WorldFiles, WrongType) {
   auto j = good();
   j["robot"]["max_speed_mps"] = "fast";
-  expect_error(write("w.json", j.dump()), "field 'robot.max_speed_mps': expected a number, got string");
+  expect_error(write("w.json", j.dump()),
+               "field 'robot.max_speed_mps': expected a number, got string");
   j = good();
   j["obstacles"][2] = {1, 2, 3};
   expect_error(write("w2.json", j.dump()), "field 'obstacles[2]'");

@@ -5,9 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -24,7 +24,9 @@ std::string parent_or_dot(const std::string& path) {
 
 }  // namespace
 
-std::string system_error_text(const std::string& what) { return what + ": " + std::strerror(errno); }
+std::string system_error_text(const std::string& what) {
+  return what + ": " + std::strerror(errno);
+}
 
 void sync_path(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -41,7 +43,7 @@ namespace {
 
 /// What stands at `path` when it is not a regular file (empty when missing or regular).
 std::string not_a_regular_file(const std::string& path) {
-  struct stat st{};
+  struct stat st {};
   if (::lstat(path.c_str(), &st) != 0) return "";
   if (S_ISREG(st.st_mode)) return "";
   if (S_ISLNK(st.st_mode)) return "a symbolic link";
@@ -55,10 +57,13 @@ std::string not_a_regular_file(const std::string& path) {
 std::pair<int, std::string> exclusive_temporary(const std::string& path) {
   static std::atomic<unsigned> counter{0};
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    const std::string tmp =
+        path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd >= 0) return {fd, tmp};
-    if (errno != EEXIST) throw std::runtime_error(system_error_text("cannot write " + path + " (creating " + tmp + ")"));
+    if (errno != EEXIST)
+      throw std::runtime_error(
+          system_error_text("cannot write " + path + " (creating " + tmp + ")"));
   }
   throw std::runtime_error("cannot write " + path + ": 100 temporary names beside it are taken");
 }
@@ -67,17 +72,22 @@ std::pair<int, std::string> exclusive_temporary(const std::string& path) {
 
 void check_output_file(const std::string& path, const std::string& option) {
   const std::string what = not_a_regular_file(path);
-  if (!what.empty()) throw std::invalid_argument(option + " " + path + " is " + what + "; plantsim writes only new or regular files");
+  if (!what.empty())
+    throw std::invalid_argument(option + " " + path + " is " + what +
+                                "; plantsim writes only new or regular files");
   const std::string folder = parent_or_dot(path);
   std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw std::invalid_argument(option + " " + path + ": the folder " + folder + " does not exist");
+  if (!fs::is_directory(folder, ec))
+    throw std::invalid_argument(option + " " + path + ": the folder " + folder + " does not exist");
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
-    throw std::invalid_argument(system_error_text(option + " " + path + ": cannot write into " + folder));
+    throw std::invalid_argument(
+        system_error_text(option + " " + path + ": cannot write into " + folder));
 }
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   if (const std::string what = not_a_regular_file(path); !what.empty())
-    throw std::invalid_argument("will not replace " + path + ": it is " + what + " (plantsim writes only new or regular files)");
+    throw std::invalid_argument("will not replace " + path + ": it is " + what +
+                                " (plantsim writes only new or regular files)");
   // Plain names, not a structured binding: clang 14 cannot capture one in the lambda below.
   const std::pair<int, std::string> temporary = exclusive_temporary(path);
   const int fd = temporary.first;
@@ -114,23 +124,27 @@ StagedFolder::StagedFolder(std::string destination, const std::vector<std::strin
   // "out/", "out/." and "./out" name the same folder; "." or ".." would replace the current one.
   destination_ = fs::path(destination_).lexically_normal().string();
   while (destination_.size() > 1 && destination_.back() == '/') destination_.pop_back();
-  if (destination_ == "." || destination_ == ".." || destination_.empty() || fs::path(destination_).filename() == "..")
-    throw std::invalid_argument("output folder '" + destination_ + "': name a folder of its own (it is replaced as a whole)");
+  if (destination_ == "." || destination_ == ".." || destination_.empty() ||
+      fs::path(destination_).filename() == "..")
+    throw std::invalid_argument("output folder '" + destination_ +
+                                "': name a folder of its own (it is replaced as a whole)");
   if (fs::exists(destination_, ec)) {
     if (!fs::is_directory(destination_, ec))
       throw std::invalid_argument("output folder '" + destination_ + "' is a file");
     for (const auto& entry : fs::directory_iterator(destination_, ec)) {
       const std::string name = entry.path().filename().string();
       if (std::find(replaceable.begin(), replaceable.end(), name) == replaceable.end())
-        throw std::invalid_argument("output folder '" + destination_ + "' holds '" + name +
-                                    "', not a plantsim output; it is replaced as a whole, so choose a new or empty folder");
+        throw std::invalid_argument(
+            "output folder '" + destination_ + "' holds '" + name +
+            "', not a plantsim output; it is replaced as a whole, so choose a new or empty folder");
     }
   }
   staging_ = destination_ + ".partial-" + std::to_string(::getpid());
   fs::remove_all(staging_, ec);
   fs::create_directories(staging_, ec);
   if (ec || !fs::is_directory(staging_))
-    throw std::invalid_argument("cannot create output folder '" + staging_ + "'" + (ec ? ": " + ec.message() : ""));
+    throw std::invalid_argument("cannot create output folder '" + staging_ + "'" +
+                                (ec ? ": " + ec.message() : ""));
 }
 
 StagedFolder::~StagedFolder() {

@@ -41,7 +41,7 @@ class StagedFolder {
   StagedFolder(const StagedFolder&) = delete;
   StagedFolder& operator=(const StagedFolder&) = delete;
 
-  const std::string& path() const { return staging_; }          ///< write here
+  const std::string& path() const { return staging_; }  ///< write here
   const std::string& destination() const { return destination_; }
   /// Syncs and moves the staging folder to the destination (replacing an older one).
   void commit();

@@ -21,7 +21,8 @@ constexpr const char* kDataPrefix = "$data/";
 
 void set_data_dir(const std::string& dir) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw std::invalid_argument("--data: '" + dir + "' is not a folder");
+  if (!fs::is_directory(dir, ec))
+    throw std::invalid_argument("--data: '" + dir + "' is not a folder");
   chosen() = dir;
 }
 
@@ -35,7 +36,8 @@ std::string data_dir() {
   // is <checkout>/../shared/data.
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    for (fs::path up = exe.parent_path(); !up.empty() && up != up.root_path(); up = up.parent_path()) {
+    for (fs::path up = exe.parent_path(); !up.empty() && up != up.root_path();
+         up = up.parent_path()) {
       const fs::path beside = up / "shared" / "data";
       if (fs::is_directory(beside, ec)) return beside.string();
     }
@@ -53,7 +55,8 @@ std::string checkout_dir() {
 }
 
 std::string resolve_input_path(const std::string& written, const std::string& base) {
-  if (written.rfind(kDataPrefix, 0) == 0) return (fs::path(data_dir()) / written.substr(6)).string();
+  if (written.rfind(kDataPrefix, 0) == 0)
+    return (fs::path(data_dir()) / written.substr(6)).string();
   const fs::path p(written);
   if (p.is_absolute() || base.empty()) return written;
   return (fs::path(base) / p).lexically_normal().string();

@@ -32,13 +32,17 @@ struct Descriptor {
 std::string read_input_file(const std::string& path, std::uint64_t max_bytes) {
   // O_NONBLOCK: opening a FIFO with no writer must not wait for one.
   Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) throw InputFileError("cannot be opened (" + std::string(std::strerror(errno)) + ")");
+  if (file.fd < 0)
+    throw InputFileError("cannot be opened (" + std::string(std::strerror(errno)) + ")");
   struct stat info {};
-  if (::fstat(file.fd, &info) != 0) throw InputFileError("cannot be read (" + std::string(std::strerror(errno)) + ")");
-  if (!S_ISREG(info.st_mode)) throw InputFileError(std::string("is ") + kind_of(info.st_mode) + ", expected a regular file");
+  if (::fstat(file.fd, &info) != 0)
+    throw InputFileError("cannot be read (" + std::string(std::strerror(errno)) + ")");
+  if (!S_ISREG(info.st_mode))
+    throw InputFileError(std::string("is ") + kind_of(info.st_mode) + ", expected a regular file");
   const auto size = static_cast<std::uint64_t>(info.st_size);
   if (size > max_bytes)
-    throw InputFileError("is " + std::to_string(size) + " bytes, more than the " + std::to_string(max_bytes) + " allowed");
+    throw InputFileError("is " + std::to_string(size) + " bytes, more than the " +
+                         std::to_string(max_bytes) + " allowed");
   std::string bytes(static_cast<std::size_t>(size), '\0');
   std::size_t got = 0;
   while (got < bytes.size()) {

@@ -29,7 +29,8 @@ World cell_block_world(const CellBlockOptions& o) {
   World w;
   while (count < o.blocked_share * kColumns * kRows) {
     const int bw = 1 + static_cast<int>(rng() % 3), bh = 1 + static_cast<int>(rng() % 2);
-    const int c0 = static_cast<int>(rng() % (kColumns - bw + 1)), r0 = static_cast<int>(rng() % (kRows - bh + 1));
+    const int c0 = static_cast<int>(rng() % (kColumns - bw + 1)),
+              r0 = static_cast<int>(rng() % (kRows - bh + 1));
     for (int c = c0; c < c0 + bw; ++c)
       for (int r = r0; r < r0 + bh; ++r)
         if (!kept_free(c, r) && !blocked[c][r]) blocked[c][r] = true, ++count;
@@ -37,9 +38,11 @@ World cell_block_world(const CellBlockOptions& o) {
   // One rectangle per blocked cell: the grid method needs no merging, and the cells are exact.
   for (int c = 0; c < kColumns; ++c)
     for (int r = 0; r < kRows; ++r)
-      if (blocked[c][r]) w.obstacles.push_back({c * kCell, r * kCell, (c + 1) * kCell, (r + 1) * kCell});
+      if (blocked[c][r])
+        w.obstacles.push_back({c * kCell, r * kCell, (c + 1) * kCell, (r + 1) * kCell});
   char name[64];
-  std::snprintf(name, sizeof name, "cell_blocks_%02.0f_seed%llu", 100 * o.blocked_share, static_cast<unsigned long long>(o.seed));
+  std::snprintf(name, sizeof name, "cell_blocks_%02.0f_seed%llu", 100 * o.blocked_share,
+                static_cast<unsigned long long>(o.seed));
   w.name = name;
   w.source = "generated (" + w.name + ")";
   w.floor = {0, 0, kColumns * kCell, kRows * kCell};

@@ -16,8 +16,7 @@ bool docking_area_clear(const World& world) {
   const double clearance = world.planning_inflation_m();
   for (const Rect& b : blockers) {
     if (geom::rects_overlap_open(body, b)) return false;
-    if (geom::segment_enters_open_rect(staging.position(), world.charger.position(),
-                                       b.inflated(r)))
+    if (geom::segment_enters_open_rect(staging.position(), world.charger.position(), b.inflated(r)))
       return false;
     if (!geom::in_closed_rect(world.floor, staging.position()) ||
         geom::in_open_rect(b.inflated(clearance), staging.position()))
@@ -36,7 +35,8 @@ std::optional<double> choose_docking_heading(const World& world, Vec2 dock_point
     trial.charger = {dock_point.x, dock_point.y, yaw};
     if (!docking_area_clear(trial)) continue;
     const double length = geom::norm(from_start);  // 0 when the start is at the dock point
-    const double alignment = length > 0 ? geom::dot(geom::unit_from_angle(yaw), from_start) / length : 0.0;
+    const double alignment =
+        length > 0 ? geom::dot(geom::unit_from_angle(yaw), from_start) / length : 0.0;
     if (alignment > best_alignment) {
       best_alignment = alignment;
       best = yaw;

@@ -39,22 +39,26 @@ GridMap load_movingai_map(const std::string& path) {
   GridMap m;
   m.source = path;
   std::string word, type;
-  if (!(f >> word >> type) || word != "type") throw WorldError(path, "type", "expected 'type octile' first");
+  if (!(f >> word >> type) || word != "type")
+    throw WorldError(path, "type", "expected 'type octile' first");
   m.height = header_value(f, path, "height");
   m.width = header_value(f, path, "width");
   if (m.width <= 0 || m.height <= 0) throw WorldError(path, "width/height", "must be positive");
   if (static_cast<double>(m.width) * m.height > 64.0e6)
     throw WorldError(path, "width/height", "map too large (more than 64 million cells)");
-  if (!(f >> word) || word != "map") throw WorldError(path, "map", "expected the line 'map' before the rows");
+  if (!(f >> word) || word != "map")
+    throw WorldError(path, "map", "expected the line 'map' before the rows");
   m.cells.reserve(static_cast<std::size_t>(m.width) * m.height);
   std::string row;
   std::getline(f, row);  // rest of the 'map' line
   for (int y = 0; y < m.height; ++y) {
-    if (!std::getline(f, row)) throw WorldError(path, "row " + std::to_string(y), "missing (file too short)");
+    if (!std::getline(f, row))
+      throw WorldError(path, "row " + std::to_string(y), "missing (file too short)");
     if (!row.empty() && row.back() == '\r') row.pop_back();
     if (static_cast<int>(row.size()) != m.width)
-      throw WorldError(path, "row " + std::to_string(y),
-                       "has " + std::to_string(row.size()) + " cells, expected " + std::to_string(m.width));
+      throw WorldError(
+          path, "row " + std::to_string(y),
+          "has " + std::to_string(row.size()) + " cells, expected " + std::to_string(m.width));
     m.cells.insert(m.cells.end(), row.begin(), row.end());
   }
   return m;
@@ -70,14 +74,17 @@ std::vector<Scenario> load_movingai_scenarios(const std::string& path) {
     if (line.empty() || line.rfind("version", 0) == 0) continue;
     std::istringstream in(line);
     Scenario s;
-    if (!(in >> s.bucket >> s.map >> s.map_width >> s.map_height >> s.sx >> s.sy >> s.gx >> s.gy >> s.optimal))
+    if (!(in >> s.bucket >> s.map >> s.map_width >> s.map_height >> s.sx >> s.sy >> s.gx >> s.gy >>
+          s.optimal))
       throw WorldError(path, "line " + std::to_string(line_no),
                        "expected 'bucket map width height sx sy gx gy optimal'");
     if (s.map_width <= 0 || s.map_height <= 0 || s.sx < 0 || s.sy < 0 || s.gx < 0 || s.gy < 0 ||
-        s.sx >= s.map_width || s.gx >= s.map_width || s.sy >= s.map_height || s.gy >= s.map_height ||
-        !std::isfinite(s.optimal))
-      throw WorldError(path, "line " + std::to_string(line_no), "start or goal outside the map's width and height");
-    if (out.size() >= 1000000) throw WorldError(path, "line " + std::to_string(line_no), "more than 1000000 queries");
+        s.sx >= s.map_width || s.gx >= s.map_width || s.sy >= s.map_height ||
+        s.gy >= s.map_height || !std::isfinite(s.optimal))
+      throw WorldError(path, "line " + std::to_string(line_no),
+                       "start or goal outside the map's width and height");
+    if (out.size() >= 1000000)
+      throw WorldError(path, "line " + std::to_string(line_no), "more than 1000000 queries");
     out.push_back(s);
   }
   return out;
@@ -93,8 +100,9 @@ std::vector<Rect> merge_blocked_cells(const GridMap& m, bool (*blocked)(char)) {
     // The one obstacle limit of every world, checked as the rectangles are made: a 5 kB
     // checkerboard image must not become two million obstacles before anyone counts them.
     if (out.size() >= kMaxObstacles)
-      throw WorldError(m.source, "", "its blocked cells make more than " + std::to_string(kMaxObstacles) +
-                                         " rectangles, the limit for any world (docs/world_format.md)");
+      throw WorldError(m.source, "",
+                       "its blocked cells make more than " + std::to_string(kMaxObstacles) +
+                           " rectangles, the limit for any world (docs/world_format.md)");
     // Rows y0 .. y_end-1 (grid, downward) become world y from height - y_end to height - y0.
     out.push_back({static_cast<double>(run.first), static_cast<double>(m.height - y_end),
                    static_cast<double>(run.second), static_cast<double>(m.height - y0)});

@@ -27,7 +27,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 std::string nearest_known_name(const std::string& key, const std::vector<std::string>& known) {
   if (key.size() > 200) return "";
   std::string best;
-  std::size_t best_distance = std::min<std::size_t>(3, std::max<std::size_t>(1, key.size() / 3)) + 1;
+  std::size_t best_distance =
+      std::min<std::size_t>(3, std::max<std::size_t>(1, key.size() / 3)) + 1;
   for (const std::string& k : known) {
     const std::size_t d = edit_distance(key, k);
     if (d < best_distance) best_distance = d, best = k;
@@ -43,7 +44,11 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 bool valid_utf8(const std::string& text) {
   for (std::size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    const std::size_t n = c < 0x80           ? 1
+                          : (c >> 5) == 0x6  ? 2
+                          : (c >> 4) == 0xe  ? 3
+                          : (c >> 3) == 0x1e ? 4
+                                             : 0;
     if (n == 0 || i + n > text.size()) return false;
     for (std::size_t k = 1; k < n; ++k)
       if ((static_cast<unsigned char>(text[i + k]) >> 6) != 0x2) return false;
@@ -63,8 +68,9 @@ std::string name_from_file(const std::string& path) {
 std::string file_name_component(const std::string& name) {
   std::string out;
   for (unsigned char c : name) {
-    const bool unsafe = c < 0x20 || c == 0x7f || c == '/' || c == '\\' || c == ':' || c == '|' || c == ',' ||
-                        c == '"' || c == '*' || c == '?' || c == '<' || c == '>' || c == ' ';
+    const bool unsafe = c < 0x20 || c == 0x7f || c == '/' || c == '\\' || c == ':' || c == '|' ||
+                        c == ',' || c == '"' || c == '*' || c == '?' || c == '<' || c == '>' ||
+                        c == ' ';
     out += unsafe ? '_' : static_cast<char>(c);
   }
   out.erase(0, out.find_first_not_of('.'));

@@ -40,7 +40,8 @@ MapImage decode_pgm(const std::string& bytes, const std::string& path) {
   in >> p.max_value;
   if (!in || p.width <= 0 || p.height <= 0 || p.max_value <= 0 || p.max_value > 65535)
     throw WorldError(path, "header", "bad width, height or maximum value");
-  if (static_cast<double>(p.width) * p.height > kMaxMapPixels) throw WorldError(path, "header", "image too large (over 64 Mpixel)");
+  if (static_cast<double>(p.width) * p.height > kMaxMapPixels)
+    throw WorldError(path, "header", "image too large (over 64 Mpixel)");
   const std::size_t count = static_cast<std::size_t>(p.width) * p.height;
   if (magic == "P5") {
     in.get();  // the single white-space byte after the header
@@ -57,7 +58,9 @@ MapImage decode_pgm(const std::string& bytes, const std::string& path) {
     if (count > bytes.size()) throw WorldError(path, "pixels", "file ends before the last pixel");
     p.values.resize(count);
     for (int& v : p.values)
-      if (!(in >> v) || v < 0 || v > p.max_value) throw WorldError(path, "pixels", "file ends before the last pixel or a value is out of range");
+      if (!(in >> v) || v < 0 || v > p.max_value)
+        throw WorldError(path, "pixels",
+                         "file ends before the last pixel or a value is out of range");
   }
   return p;
 }
@@ -92,7 +95,9 @@ MapImage read_map_image(const std::string& path) {
   try {
     bytes = util::read_input_file(path);
   } catch (const util::InputFileError& e) {
-    throw WorldError(path, "", std::string(e.what()) + " (the YAML's 'image' must name a readable PGM or PNG file)");
+    throw WorldError(
+        path, "",
+        std::string(e.what()) + " (the YAML's 'image' must name a readable PGM or PNG file)");
   }
   if (bytes.rfind("P5", 0) == 0 || bytes.rfind("P2", 0) == 0) return decode_pgm(bytes, path);
   if (bytes.rfind("\x89PNG", 0) == 0) return decode_png(bytes, path);

@@ -16,12 +16,16 @@ namespace {
 
 using Rng = std::mt19937_64;
 
-double uniform(Rng& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+double uniform(Rng& rng, double a, double b) {
+  return std::uniform_real_distribution<double>(a, b)(rng);
+}
 int uniform_int(Rng& rng, int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); }
 
 bool clear_of(const Rect& r, const std::vector<Rect>& placed, double gap) {
   for (const Rect& q : placed)
-    if (!(r.xmin >= q.xmax + gap || q.xmin >= r.xmax + gap || r.ymin >= q.ymax + gap || q.ymin >= r.ymax + gap)) return false;
+    if (!(r.xmin >= q.xmax + gap || q.xmin >= r.xmax + gap || r.ymin >= q.ymax + gap ||
+          q.ymin >= r.ymax + gap))
+      return false;
   return true;
 }
 
@@ -32,7 +36,8 @@ void scatter(Rng& rng, World& w, int count, double lo, double hi, double gap) {
   for (int placed = 0, tries = 0; placed < count && tries < 400 * count; ++tries) {
     const double rw = uniform(rng, lo, hi), rh = uniform(rng, lo, hi);
     if (rw > width - 2 * gap - 1 || rh > height - 2 * gap - 1) continue;
-    const double x0 = uniform(rng, gap, width - gap - rw), y0 = uniform(rng, gap, height - gap - rh);
+    const double x0 = uniform(rng, gap, width - gap - rw),
+                 y0 = uniform(rng, gap, height - gap - rh);
     const Rect r{x0, y0, x0 + rw, y0 + rh};
     if (!clear_of(r, w.obstacles, gap)) continue;
     w.obstacles.push_back(r);
@@ -99,10 +104,12 @@ void yard(Rng& rng, World& w) {
     Rect r;
     if (vertical) {
       const double x = uniform(rng, 10.0, width - 10.0 - thickness);
-      const double y = uniform(rng, 0, 1) < 0.5 ? 0.0 : height - length;  // from a wall, a gap at the other end
+      const double y =
+          uniform(rng, 0, 1) < 0.5 ? 0.0 : height - length;  // from a wall, a gap at the other end
       r = {x, y, x + thickness, y + length};
     } else {
-      const double x = uniform(rng, 8.0, width - 8.0 - length), y = uniform(rng, 3.0, height - 3.0 - thickness);
+      const double x = uniform(rng, 8.0, width - 8.0 - length),
+                   y = uniform(rng, 3.0, height - 3.0 - thickness);
       r = {x, y, x + length, y + thickness};
     }
     if (!clear_of(r, w.obstacles, 3.0)) continue;
@@ -120,14 +127,16 @@ void mixed(Rng& rng, World& w) {
 
 const std::map<std::string, std::function<void(Rng&, World&)>>& generators() {
   static const std::map<std::string, std::function<void(Rng&, World&)>> table = {
-      {"sparse", sparse}, {"dense", dense}, {"racks", racks}, {"corridors", corridors}, {"yard", yard}, {"mixed", mixed}};
+      {"sparse", sparse},       {"dense", dense}, {"racks", racks},
+      {"corridors", corridors}, {"yard", yard},   {"mixed", mixed}};
   return table;
 }
 
 }  // namespace
 
 const std::vector<std::string>& plant_style_names() {
-  static const std::vector<std::string> names = {"sparse", "dense", "racks", "corridors", "yard", "mixed"};
+  static const std::vector<std::string> names = {"sparse",    "dense", "racks",
+                                                 "corridors", "yard",  "mixed"};
   return names;
 }
 
@@ -138,10 +147,12 @@ World styled_plant(const std::string& style, std::uint64_t seed, double width_m,
     for (const std::string& n : plant_style_names()) known += (known.empty() ? "" : ", ") + n;
     throw std::invalid_argument("unknown plant style '" + style + "' (known: " + known + ")");
   }
-  if (!(width_m >= 40.0 && height_m >= 20.0)) throw std::invalid_argument("styled plants need a floor of at least 40 x 20 m");
+  if (!(width_m >= 40.0 && height_m >= 20.0))
+    throw std::invalid_argument("styled plants need a floor of at least 40 x 20 m");
   // The style in the seed, so that two styles of one seed differ in every draw.
   const auto& names = plant_style_names();
-  const auto index = static_cast<std::uint64_t>(std::find(names.begin(), names.end(), style) - names.begin());
+  const auto index =
+      static_cast<std::uint64_t>(std::find(names.begin(), names.end(), style) - names.begin());
   Rng rng(seed ^ ((index + 1) * 0x9E3779B97F4A7C15ULL));
   World w;
   w.name = style + "_s" + std::to_string(seed);

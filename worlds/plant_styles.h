@@ -20,6 +20,7 @@ const std::vector<std::string>& plant_style_names();
 /// A plant of `style` (one of plant_style_names()) on a `width_m` x `height_m` floor.
 /// Throws std::invalid_argument for an unknown style (naming the known ones) or a floor too
 /// small for it.
-World styled_plant(const std::string& style, std::uint64_t seed, double width_m = 100.0, double height_m = 60.0);
+World styled_plant(const std::string& style, std::uint64_t seed, double width_m = 100.0,
+                   double height_m = 60.0);
 
 }  // namespace plantsim::worlds

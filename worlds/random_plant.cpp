@@ -21,23 +21,28 @@ RandomPlantOptions as_dense_as_n1000(int rect_count, std::uint64_t seed) {
 }
 
 World random_plant(const RandomPlantOptions& o) {
-  if (o.rect_count < 0 || !(o.width_m > 2 * o.min_gap_m + 2) || !(o.height_m > 2 * o.min_gap_m + 2) ||
-      !(o.coverage > 0 && o.coverage < 0.6) || !(o.min_gap_m >= 0))
+  if (o.rect_count < 0 || !(o.width_m > 2 * o.min_gap_m + 2) ||
+      !(o.height_m > 2 * o.min_gap_m + 2) || !(o.coverage > 0 && o.coverage < 0.6) ||
+      !(o.min_gap_m >= 0))
     throw std::invalid_argument("random plant: options out of range");
   std::mt19937_64 rng(o.seed);
-  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  auto uniform = [&](double a, double b) {
+    return std::uniform_real_distribution<double>(a, b)(rng);
+  };
   World w;
   w.name = "random_n" + std::to_string(o.rect_count) + "_s" + std::to_string(o.seed);
   w.source = w.name;
   w.floor = {0, 0, o.width_m, o.height_m};
   w.inflation_margin_m = kBenchmarkInflation_m - w.robot.radius_m;
-  const double side = o.rect_count > 0 ? std::sqrt(o.width_m * o.height_m * o.coverage / o.rect_count) : 1.0;
+  const double side =
+      o.rect_count > 0 ? std::sqrt(o.width_m * o.height_m * o.coverage / o.rect_count) : 1.0;
   const double g = o.min_gap_m;
   long tries = 0;
   while (static_cast<int>(w.obstacles.size()) < o.rect_count) {
     if (++tries > 2000L * o.rect_count + 100000)
-      throw std::invalid_argument("random plant: could only place " + std::to_string(w.obstacles.size()) +
-                                  " of " + std::to_string(o.rect_count) + " rectangles");
+      throw std::invalid_argument("random plant: could only place " +
+                                  std::to_string(w.obstacles.size()) + " of " +
+                                  std::to_string(o.rect_count) + " rectangles");
     const double rw = uniform(0.5 * side, 1.5 * side), rh = uniform(0.5 * side, 1.5 * side);
     if (rw > o.width_m - 2 * g - 1 || rh > o.height_m - 2 * g - 1) continue;
     const double x0 = uniform(g, o.width_m - g - rw), y0 = uniform(g, o.height_m - g - rh);
@@ -45,7 +50,8 @@ World random_plant(const RandomPlantOptions& o) {
     bool ok = true;
     if (!o.allow_overlap)
       for (const Rect& q : w.obstacles)
-        if (!(r.xmin >= q.xmax + g || q.xmin >= r.xmax + g || r.ymin >= q.ymax + g || q.ymin >= r.ymax + g)) {
+        if (!(r.xmin >= q.xmax + g || q.xmin >= r.xmax + g || r.ymin >= q.ymax + g ||
+              q.ymin >= r.ymax + g)) {
           ok = false;
           break;
         }
@@ -56,7 +62,9 @@ World random_plant(const RandomPlantOptions& o) {
 }
 
 void place_start_and_charger(World& w, std::mt19937_64& rng) {
-  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  auto uniform = [&](double a, double b) {
+    return std::uniform_real_distribution<double>(a, b)(rng);
+  };
   const double width = w.floor.xmax - w.floor.xmin, height = w.floor.ymax - w.floor.ymin;
   auto free_point = [&](double xlo, double xhi) {
     for (int k = 0; k < 100000; ++k) {

@@ -17,9 +17,9 @@ struct RandomPlantOptions {
   std::uint64_t seed = 1;
   double width_m = 100.0;
   double height_m = 60.0;
-  double coverage = 0.12;     ///< fraction of the floor the rectangles cover (before overlap)
-  double min_gap_m = 0.7;     ///< between rectangles and to the walls, when not overlapping
-  bool allow_overlap = false; ///< place rectangles freely, so they may overlap and touch
+  double coverage = 0.12;      ///< fraction of the floor the rectangles cover (before overlap)
+  double min_gap_m = 0.7;      ///< between rectangles and to the walls, when not overlapping
+  bool allow_overlap = false;  ///< place rectangles freely, so they may overlap and touch
 };
 
 /// A plant of `rect_count` rectangles with world_N1000's size of rectangle and density: its

@@ -10,10 +10,10 @@
 #include "geometry/predicates.h"
 #include "worlds/charger_placement.h"
 #include "worlds/map_image.h"
-#include "worlds/world_limits.h"
-#include "worlds/yaml_input.h"
 #include "worlds/world_error.h"
+#include "worlds/world_limits.h"
 #include "worlds/world_loader.h"
+#include "worlds/yaml_input.h"
 
 namespace plantsim::worlds {
 namespace {
@@ -40,28 +40,35 @@ RosMap load_ros_map(const std::string& yaml_path) {
   const int negate = doc["negate"] ? yaml_value<int>(doc, "negate", yaml_path) : 0;
   const double occupied_thresh = yaml_value<double>(doc, "occupied_thresh", yaml_path);
   const double free_thresh = yaml_value<double>(doc, "free_thresh", yaml_path);
-  const std::string mode = doc["mode"] ? yaml_value<std::string>(doc, "mode", yaml_path) : "trinary";
+  const std::string mode =
+      doc["mode"] ? yaml_value<std::string>(doc, "mode", yaml_path) : "trinary";
   // A pixel from a millimetre to 10 m: finer or coarser is a unit mistake, and would make the
   // inflation span thousands of pixels or the floor thousands of kilometres.
   if (!(m.resolution_m >= kMinResolution_m && m.resolution_m <= kMaxResolution_m))
     throw WorldError(yaml_path, "resolution", "must be from 0.001 to 10 m per pixel");
-  if (origin.size() != 3 ||
-      !std::all_of(origin.begin(), origin.end(), [](double v) { return std::isfinite(v) && std::fabs(v) <= kMaxCoordinate_m; }))
+  if (origin.size() != 3 || !std::all_of(origin.begin(), origin.end(), [](double v) {
+        return std::isfinite(v) && std::fabs(v) <= kMaxCoordinate_m;
+      }))
     throw WorldError(yaml_path, "origin", "expected [x, y, yaw], finite, within +-1e7 m");
-  if (origin[2] != 0.0) throw WorldError(yaml_path, "origin", "a rotated map (yaw != 0) is not supported");
+  if (origin[2] != 0.0)
+    throw WorldError(yaml_path, "origin", "a rotated map (yaw != 0) is not supported");
   if (negate != 0 && negate != 1) throw WorldError(yaml_path, "negate", "must be 0 or 1");
   if (!(free_thresh >= 0 && free_thresh <= occupied_thresh && occupied_thresh <= 1))
     throw WorldError(yaml_path, "free_thresh", "needs 0 <= free_thresh <= occupied_thresh <= 1");
-  if (mode != "trinary" && mode != "scale" && mode != "raw") throw WorldError(yaml_path, "mode", "must be trinary, scale or raw");
+  if (mode != "trinary" && mode != "scale" && mode != "raw")
+    throw WorldError(yaml_path, "mode", "must be trinary, scale or raw");
   m.origin = {origin[0], origin[1]};
 
-  const std::filesystem::path image_path = std::filesystem::path(image).is_absolute()
-                                               ? std::filesystem::path(image)
-                                               : std::filesystem::path(yaml_path).parent_path() / image;
+  const std::filesystem::path image_path =
+      std::filesystem::path(image).is_absolute()
+          ? std::filesystem::path(image)
+          : std::filesystem::path(yaml_path).parent_path() / image;
   const MapImage pgm = read_map_image(image_path.string());
   if (pgm.width * m.resolution_m > kMaxFloorSide_m || pgm.height * m.resolution_m > kMaxFloorSide_m)
     throw WorldError(yaml_path, "resolution",
-                     "makes the map larger than " + std::to_string(static_cast<int>(kMaxFloorSide_m)) + " m on a side (huge world)");
+                     "makes the map larger than " +
+                         std::to_string(static_cast<int>(kMaxFloorSide_m)) +
+                         " m on a side (huge world)");
   m.grid.source = yaml_path;
   m.grid.width = pgm.width;
   m.grid.height = pgm.height;
@@ -85,7 +92,8 @@ RosMap load_ros_map(const std::string& yaml_path) {
   return m;
 }
 
-std::optional<Pose2> place_charger_against_wall(const World& world, const std::function<bool(Vec2)>& staging_ok) {
+std::optional<Pose2> place_charger_against_wall(const World& world,
+                                                const std::function<bool(Vec2)>& staging_ok) {
   // Candidates: positions a gap away from an obstacle's face or the floor's wall, facing it,
   // spaced along each face; the valid one with the most room behind its staging pose wins.
   const double gap = world.robot.front_extent_m() + world.charger_spec.depth_m + 0.02;
@@ -108,7 +116,8 @@ std::optional<Pose2> place_charger_against_wall(const World& world, const std::f
     const Vec2 s = staging_pose(trial).position();
     double room = std::min({s.x - f.xmin, f.xmax - s.x, s.y - f.ymin, f.ymax - s.y});
     for (const Rect& o : world.obstacles) {
-      const double dx = std::max({o.xmin - s.x, 0.0, s.x - o.xmax}), dy = std::max({o.ymin - s.y, 0.0, s.y - o.ymax});
+      const double dx = std::max({o.xmin - s.x, 0.0, s.x - o.xmax}),
+                   dy = std::max({o.ymin - s.y, 0.0, s.y - o.ymax});
       room = std::min(room, std::hypot(dx, dy));
     }
     if (room > best_room + 1e-9) {
@@ -121,7 +130,8 @@ std::optional<Pose2> place_charger_against_wall(const World& world, const std::f
   // huge map the spacing widens so that at most ~100,000 places are tried.
   double perimeter = 0;
   for (const Rect& r : faces) perimeter += 2 * (r.width() + r.height());
-  const double spacing = std::max(0.1, perimeter / 100000.0), inset = 0.5 * world.charger_spec.width_m;
+  const double spacing = std::max(0.1, perimeter / 100000.0),
+               inset = 0.5 * world.charger_spec.width_m;
   auto steps = [&](double lo, double hi) {
     return hi < lo ? 0L : static_cast<long>(std::min(std::floor((hi - lo) / spacing), 1e7)) + 1;
   };
@@ -133,8 +143,8 @@ std::optional<Pose2> place_charger_against_wall(const World& world, const std::f
     }
     for (long k = 0, n = steps(r.ymin + inset, r.ymax - inset); k < n; ++k) {
       const double y = r.ymin + inset + k * spacing;
-      consider({r.xmin - gap, y}, 0.0);        // left of it, facing right
-      consider({r.xmax + gap, y}, M_PI);       // right of it, facing left
+      consider({r.xmin - gap, y}, 0.0);   // left of it, facing right
+      consider({r.xmax + gap, y}, M_PI);  // right of it, facing left
     }
   }
   return best;
@@ -172,9 +182,11 @@ Regions free_regions(const RosMap& map, double inflation_m) {
     int blocked_in_window = 0;
     for (int y = 0; y < g.height + grow; ++y) {
       if (y < g.height) blocked_in_window += across[static_cast<std::size_t>(y) * w + x];
-      if (y - 2 * grow - 1 >= 0) blocked_in_window -= across[static_cast<std::size_t>(y - 2 * grow - 1) * w + x];
+      if (y - 2 * grow - 1 >= 0)
+        blocked_in_window -= across[static_cast<std::size_t>(y - 2 * grow - 1) * w + x];
       const int centre = y - grow;
-      if (centre >= 0 && centre < g.height && blocked_in_window > 0) r.label[static_cast<std::size_t>(centre) * w + x] = -1;
+      if (centre >= 0 && centre < g.height && blocked_in_window > 0)
+        r.label[static_cast<std::size_t>(centre) * w + x] = -1;
     }
   }
   int next = 1;
@@ -185,8 +197,10 @@ Regions free_regions(const RosMap& map, double inflation_m) {
     queue.assign(1, start);
     r.label[start] = next;
     for (std::size_t head = 0; head < queue.size(); ++head) {
-      const int x = static_cast<int>(queue[head] % g.width), y = static_cast<int>(queue[head] / g.width);
-      for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int x = static_cast<int>(queue[head] % g.width),
+                y = static_cast<int>(queue[head] / g.width);
+      for (const auto& [dx, dy] :
+           {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
         if (!g.inside(x + dx, y + dy)) continue;
         const std::size_t k = static_cast<std::size_t>(y + dy) * g.width + x + dx;
         if (r.label[k] != 0) continue;
@@ -207,7 +221,8 @@ int label_at(const RosMap& map, const Regions& r, Vec2 p) {
   const double column = std::floor((p.x - map.origin.x) / map.resolution_m);
   const double row_up = std::floor((p.y - map.origin.y) / map.resolution_m);
   // Compared as doubles first: a point far off the map must not overflow an int.
-  if (!(column >= 0 && column < map.grid.width && row_up >= 0 && row_up < map.grid.height)) return -1;
+  if (!(column >= 0 && column < map.grid.width && row_up >= 0 && row_up < map.grid.height))
+    return -1;
   const int x = static_cast<int>(column), y = map.grid.height - 1 - static_cast<int>(row_up);
   return r.label[static_cast<std::size_t>(y) * map.grid.width + x];
 }
@@ -215,7 +230,9 @@ int label_at(const RosMap& map, const Regions& r, Vec2 p) {
 // The free pixel farthest from the charger in the region of its staging pose.
 Pose2 farthest_start(const RosMap& map, const Regions& r, const World& w) {
   const int region = label_at(map, r, staging_pose(w).position());
-  if (region <= 0) throw WorldError(map.grid.source, "start", "the charger's staging pose is not in free space; give --start");
+  if (region <= 0)
+    throw WorldError(map.grid.source, "start",
+                     "the charger's staging pose is not in free space; give --start");
   const GridMap& g = map.grid;
   const Rect inner = w.floor.inflated(-w.planning_inflation_m());
   Vec2 best;
@@ -223,21 +240,25 @@ Pose2 farthest_start(const RosMap& map, const Regions& r, const World& w) {
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       if (r.label[static_cast<std::size_t>(y) * g.width + x] != region) continue;
-      const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5), map.origin.y + map.resolution_m * (g.height - y - 0.5)};
+      const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5),
+                   map.origin.y + map.resolution_m * (g.height - y - 0.5)};
       // The floor's edge is a wall too: a map drawn without border walls has free pixels there.
       if (!geom::in_closed_rect(inner, c)) continue;
       const double d = geom::distance(c, w.charger.position());
       if (d > best_d) best_d = d, best = c;
     }
   if (best_d < 0)
-    throw WorldError(map.grid.source, "start", "no start was given and no free pixel of the charger's region keeps the robot off the map's edge; give --start");
+    throw WorldError(map.grid.source, "start",
+                     "no start was given and no free pixel of the charger's region keeps the robot "
+                     "off the map's edge; give --start");
   const Vec2 to_charger = w.charger.position() - best;
   return {best.x, best.y, std::atan2(to_charger.y, to_charger.x)};
 }
 
 // Without a wall to dock against (round or diagonal walls give none), the charger stands
 // free where the largest region is most open, facing whichever way leaves room to dock.
-std::optional<Pose2> place_charger_in_the_open(const RosMap& map, const Regions& r, const World& w) {
+std::optional<Pose2> place_charger_in_the_open(const RosMap& map, const Regions& r,
+                                               const World& w) {
   const GridMap& g = map.grid;
   // Multi-source breadth-first distance (in pixels) from everything outside the region.
   std::vector<int> dist(g.cells.size(), -1);
@@ -245,8 +266,10 @@ std::optional<Pose2> place_charger_in_the_open(const RosMap& map, const Regions&
   for (std::size_t k = 0; k < dist.size(); ++k)
     if (r.label[k] != r.largest) dist[k] = 0, queue.push_back(k);
   for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int x = static_cast<int>(queue[head] % g.width), y = static_cast<int>(queue[head] / g.width);
-    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+    const int x = static_cast<int>(queue[head] % g.width),
+              y = static_cast<int>(queue[head] / g.width);
+    for (const auto& [dx, dy] :
+         {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
       if (!g.inside(x + dx, y + dy)) continue;
       const std::size_t k = static_cast<std::size_t>(y + dy) * g.width + x + dx;
       if (dist[k] >= 0) continue;
@@ -257,11 +280,14 @@ std::optional<Pose2> place_charger_in_the_open(const RosMap& map, const Regions&
   // The most open pixels first (the queue ends with them).
   for (std::size_t i = queue.size(); i-- > 0 && i + 50 > queue.size();) {
     const int x = static_cast<int>(queue[i] % g.width), y = static_cast<int>(queue[i] / g.width);
-    const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5), map.origin.y + map.resolution_m * (g.height - y - 0.5)};
+    const Vec2 c{map.origin.x + map.resolution_m * (x + 0.5),
+                 map.origin.y + map.resolution_m * (g.height - y - 0.5)};
     World trial = w;
     for (int k = 0; k < 8; ++k) {
       trial.charger = {c.x, c.y, geom::wrap_angle(k * M_PI / 4)};
-      if (docking_area_clear(trial) && label_at(map, r, staging_pose(trial).position()) == r.largest) return trial.charger;
+      if (docking_area_clear(trial) &&
+          label_at(map, r, staging_pose(trial).position()) == r.largest)
+        return trial.charger;
     }
   }
   return std::nullopt;
@@ -278,18 +304,21 @@ World world_from_ros_map(const RosMap& map, const std::string& name, std::option
   // clearance than for drawn plans (0.12 m still let 1 noisy episode in 504 touch a wall).
   w.inflation_margin_m = 0.13;
   const double res = map.resolution_m;
-  w.floor = {map.origin.x, map.origin.y, map.origin.x + res * map.grid.width, map.origin.y + res * map.grid.height};
+  w.floor = {map.origin.x, map.origin.y, map.origin.x + res * map.grid.width,
+             map.origin.y + res * map.grid.height};
   for (const Rect& r : merge_blocked_cells(map.grid, [](char c) { return c == '@'; }))
-    w.obstacles.push_back({map.origin.x + res * r.xmin, map.origin.y + res * r.ymin, map.origin.x + res * r.xmax,
-                           map.origin.y + res * r.ymax});
+    w.obstacles.push_back({map.origin.x + res * r.xmin, map.origin.y + res * r.ymin,
+                           map.origin.x + res * r.xmax, map.origin.y + res * r.ymax});
   const Regions regions = free_regions(map, w.planning_inflation_m());
   if (charger) {
     w.charger = *charger;
   } else {
     // In the largest free region, so that most of the map can reach it.
-    auto placed = place_charger_against_wall(w, [&](Vec2 s) { return label_at(map, regions, s) == regions.largest; });
+    auto placed = place_charger_against_wall(
+        w, [&](Vec2 s) { return label_at(map, regions, s) == regions.largest; });
     if (!placed) placed = place_charger_in_the_open(map, regions, w);
-    if (!placed) throw WorldError(map.grid.source, "charger", "no place leaves room to dock; give --charger");
+    if (!placed)
+      throw WorldError(map.grid.source, "charger", "no place leaves room to dock; give --charger");
     w.charger = *placed;
   }
   if (start) {

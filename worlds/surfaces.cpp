@@ -15,7 +15,8 @@ std::vector<geom::Rect> static_rects(const World& plant) {
 
 geom::OrientedBox charger_block(const World& plant) {
   const ChargerBody cb = charger_body(plant);
-  const geom::Vec2 center = cb.center + (kContactSkinM + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
+  const geom::Vec2 center =
+      cb.center + (kContactSkinM + 0.5 * plant.charger_spec.pad_travel_m) * plant.charger.heading();
   return {center, cb.half_depth_m, cb.half_width_m, cb.yaw};
 }
 
@@ -25,19 +26,23 @@ SurfaceGrid::SurfaceGrid(const World& plant) : grid_(static_rects(plant), {charg
   kinds_.push_back(SurfaceKind::kCharger);
 }
 
-std::optional<RayHit> SurfaceGrid::cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const {
+std::optional<RayHit> SurfaceGrid::cast(geom::Vec2 from, geom::Vec2 direction,
+                                        double max_range_m) const {
   const auto hit = grid_.cast(from, direction, max_range_m);
   if (!hit) return std::nullopt;
-  return RayHit{from + hit->range_m * direction, hit->normal, hit->range_m, kinds_[static_cast<std::size_t>(hit->box)]};
+  return RayHit{from + hit->range_m * direction, hit->normal, hit->range_m,
+                kinds_[static_cast<std::size_t>(hit->box)]};
 }
 
-void SurfaceGrid::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
-                           double max_range_m, std::vector<std::optional<RayHit>>& hits) const {
+void SurfaceGrid::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions,
+                           double first_angle, double increment, double max_range_m,
+                           std::vector<std::optional<RayHit>>& hits) const {
   grid_.cast_fan(from, directions, first_angle, increment, max_range_m, scratch_);
   hits.assign(directions.size(), std::nullopt);
   for (std::size_t k = 0; k < directions.size(); ++k)
     if (const auto& h = scratch_[k])
-      hits[k] = RayHit{from + h->range_m * directions[k], h->normal, h->range_m, kinds_[static_cast<std::size_t>(h->box)]};
+      hits[k] = RayHit{from + h->range_m * directions[k], h->normal, h->range_m,
+                       kinds_[static_cast<std::size_t>(h->box)]};
 }
 
 }  // namespace plantsim::worlds

@@ -38,8 +38,9 @@ class SurfaceGrid {
 
   std::optional<RayHit> cast(geom::Vec2 from, geom::Vec2 direction, double max_range_m) const;
   /// A fan of rays at once (geom::RayGrid::cast_fan): hits[k] as cast(from, directions[k], ...).
-  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle, double increment,
-                double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
+  void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle,
+                double increment, double max_range_m,
+                std::vector<std::optional<RayHit>>& hits) const;
   const geom::RayGrid& grid() const { return grid_; }
 
  private:

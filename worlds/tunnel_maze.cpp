@@ -7,11 +7,16 @@
 namespace plantsim::worlds {
 
 TunnelMaze::TunnelMaze(geom::Vec2 origin, double pitch_m, double corridor_m, int columns, int rows)
-    : origin_(origin), pitch_m_(pitch_m), corridor_m_(corridor_m), columns_(columns), rows_(rows),
+    : origin_(origin),
+      pitch_m_(pitch_m),
+      corridor_m_(corridor_m),
+      columns_(columns),
+      rows_(rows),
       open_(static_cast<std::size_t>(columns) * rows, 0) {
   if (!(pitch_m > 0) || !(corridor_m > 0) || corridor_m >= pitch_m)
     throw std::invalid_argument("corridor width must be positive and less than the pitch");
-  if (columns < 1 || rows < 1 || columns > 1000 || rows > 1000) throw std::invalid_argument("1 to 1000 columns and rows");
+  if (columns < 1 || rows < 1 || columns > 1000 || rows > 1000)
+    throw std::invalid_argument("1 to 1000 columns and rows");
 }
 
 LatticeNode TunnelMaze::step(LatticeNode n, Heading h) {
@@ -21,7 +26,8 @@ LatticeNode TunnelMaze::step(LatticeNode n, Heading h) {
 
 void TunnelMaze::open_run(LatticeNode a, LatticeNode b) {
   if (!inside(a) || !inside(b)) throw std::invalid_argument("corridor end outside the lattice");
-  if (a.column != b.column && a.row != b.row) throw std::invalid_argument("corridor ends not in one row or column");
+  if (a.column != b.column && a.row != b.row)
+    throw std::invalid_argument("corridor ends not in one row or column");
   if (a == b) throw std::invalid_argument("corridor of zero length");
   const Heading h = a.row == b.row ? (b.column > a.column ? Heading::kEast : Heading::kWest)
                                    : (b.row > a.row ? Heading::kNorth : Heading::kSouth);
@@ -89,7 +95,8 @@ std::vector<geom::Rect> TunnelMaze::rock() const {
       out.push_back({x - w, x + w, i, -1});
       if (i + 1 < count) out.push_back({x + w, x + pitch_m_ - w, -1, i});
     }
-    out.push_back({origin + pitch_m_ * (count - 1) + w, origin + pitch_m_ * (count - 1) + half, -1, -1});
+    out.push_back(
+        {origin + pitch_m_ * (count - 1) + w, origin + pitch_m_ * (count - 1) + half, -1, -1});
     return out;
   };
   const std::vector<Band> xs = bands(origin_.x, columns_), ys = bands(origin_.y, rows_);

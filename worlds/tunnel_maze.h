@@ -32,7 +32,9 @@ class TunnelMaze {
 
   bool open(LatticeNode n, Heading h) const;
   int degree(LatticeNode n) const;  ///< open corridors at a node
-  bool inside(LatticeNode n) const { return n.column >= 0 && n.row >= 0 && n.column < columns_ && n.row < rows_; }
+  bool inside(LatticeNode n) const {
+    return n.column >= 0 && n.row >= 0 && n.column < columns_ && n.row < rows_;
+  }
   static LatticeNode step(LatticeNode n, Heading h);
 
   geom::Vec2 position(LatticeNode n) const;
@@ -50,13 +52,16 @@ class TunnelMaze {
   int open_edges() const;
 
  private:
-  std::size_t index(LatticeNode n) const { return static_cast<std::size_t>(n.row) * columns_ + n.column; }
+  std::size_t index(LatticeNode n) const {
+    return static_cast<std::size_t>(n.row) * columns_ + n.column;
+  }
   geom::Vec2 origin_;
   double pitch_m_ = 2.0;
   double corridor_m_ = 1.0;
   int columns_ = 0;
   int rows_ = 0;
-  std::vector<std::uint8_t> open_;  // per node, bit h set when the corridor towards heading h is open
+  std::vector<std::uint8_t>
+      open_;  // per node, bit h set when the corridor towards heading h is open
 };
 
 }  // namespace plantsim::worlds

@@ -9,7 +9,8 @@ namespace plantsim::worlds {
 Vec2 MovingObstacle::position_at(double t_s) const {
   if (waypoints.size() < 2 || speed_mps <= 0 || t_s <= start_time_s) return waypoints.front();
   double total = 0;
-  for (std::size_t i = 1; i < waypoints.size(); ++i) total += geom::distance(waypoints[i - 1], waypoints[i]);
+  for (std::size_t i = 1; i < waypoints.size(); ++i)
+    total += geom::distance(waypoints[i - 1], waypoints[i]);
   if (total <= 0) return waypoints.front();
   double s = (t_s - start_time_s) * speed_mps;
   if (loop) {
@@ -20,7 +21,8 @@ Vec2 MovingObstacle::position_at(double t_s) const {
   }
   for (std::size_t i = 1; i < waypoints.size(); ++i) {
     const double seg = geom::distance(waypoints[i - 1], waypoints[i]);
-    if (s <= seg && seg > 0) return waypoints[i - 1] + (s / seg) * (waypoints[i] - waypoints[i - 1]);
+    if (s <= seg && seg > 0)
+      return waypoints[i - 1] + (s / seg) * (waypoints[i] - waypoints[i - 1]);
     s -= seg;
   }
   return waypoints.back();
@@ -48,8 +50,8 @@ ChargerBody charger_body(const World& world, const Pose2& docked) {
 }
 
 Pose2 staging_pose(const World& world) {
-  const Vec2 p = world.charger.position() -
-                 world.charger_spec.staging_distance_m * world.charger.heading();
+  const Vec2 p =
+      world.charger.position() - world.charger_spec.staging_distance_m * world.charger.heading();
   return {p.x, p.y, world.charger.yaw};
 }
 
@@ -60,7 +62,8 @@ bool differs_from_map(const World& plant) {
 
 Pose2 robot_map_charger(const World& plant) {
   const Pose2& o = plant.charger_map_offset;
-  return {plant.charger.x + o.x, plant.charger.y + o.y, geom::wrap_angle(plant.charger.yaw + o.yaw)};
+  return {plant.charger.x + o.x, plant.charger.y + o.y,
+          geom::wrap_angle(plant.charger.yaw + o.yaw)};
 }
 
 World robot_map(const World& plant) {

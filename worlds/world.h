@@ -23,14 +23,14 @@ inline constexpr double kBenchmarkInflation_m = 0.3;
 /// Differential-drive robot with a disk or a rectangular footprint. Typical values are those
 /// of a small indoor inspection robot.
 struct RobotSpec {
-  double radius_m = 0.2;          ///< disk radius; for a rectangle, its circumscribed radius
-  double wheel_base_m = 0.34;     ///< distance between the two wheel contact points
-  double wheel_radius_m = 0.06;   ///< drive wheel radius
-  double max_speed_mps = 0.8;     ///< wheel rim speed limit
-  double max_accel_mps2 = 1.0;    ///< wheel rim acceleration limit
-  double mass_kg = 30.0;          ///< body mass; inertia that of the uniform footprint
-  double length_m = 0.0;          ///< rectangular footprint along the heading (0: a disk)
-  double width_m = 0.0;           ///< rectangular footprint across the heading
+  double radius_m = 0.2;         ///< disk radius; for a rectangle, its circumscribed radius
+  double wheel_base_m = 0.34;    ///< distance between the two wheel contact points
+  double wheel_radius_m = 0.06;  ///< drive wheel radius
+  double max_speed_mps = 0.8;    ///< wheel rim speed limit
+  double max_accel_mps2 = 1.0;   ///< wheel rim acceleration limit
+  double mass_kg = 30.0;         ///< body mass; inertia that of the uniform footprint
+  double length_m = 0.0;         ///< rectangular footprint along the heading (0: a disk)
+  double width_m = 0.0;          ///< rectangular footprint across the heading
 
   bool rectangular() const { return length_m > 0 && width_m > 0; }
   /// Distance from the centre to the front, where the charging contacts are.
@@ -39,11 +39,11 @@ struct RobotSpec {
 
 /// The charger's physical body: a block the robot's front touches when docked.
 struct ChargerSpec {
-  double width_m = 0.30;          ///< across the approach axis
-  double depth_m = 0.10;          ///< along the approach axis
+  double width_m = 0.30;            ///< across the approach axis
+  double depth_m = 0.10;            ///< along the approach axis
   double staging_distance_m = 1.0;  ///< staging pose this far behind the docked pose
-  double pad_travel_m = 0.005;    ///< spring travel of the contact pads: the rigid face is half of
-                                  ///< it past the docked pose, the pads' rest face half of it before
+  double pad_travel_m = 0.005;  ///< spring travel of the contact pads: the rigid face is half of
+                                ///< it past the docked pose, the pads' rest face half of it before
 };
 
 /// A box moving on a scripted path at constant speed (a person, a cart, a vehicle): it waits
@@ -67,15 +67,15 @@ struct MovingObstacle {
 };
 
 struct World {
-  std::string name;               ///< short name for reports
-  std::string source;             ///< file it was loaded from, for messages
-  Rect floor;                     ///< the floor; its boundary is a wall
-  std::vector<Rect> obstacles;    ///< static obstacles, closed rectangles
+  std::string name;             ///< short name for reports
+  std::string source;           ///< file it was loaded from, for messages
+  Rect floor;                   ///< the floor; its boundary is a wall
+  std::vector<Rect> obstacles;  ///< static obstacles, closed rectangles
   RobotSpec robot;
   ChargerSpec charger_spec;
-  Pose2 start;                    ///< robot start pose
-  Pose2 charger;                  ///< robot pose when docked (yaw faces the charger)
-  double inflation_margin_m = 0.1;  ///< planning clearance beyond the robot radius
+  Pose2 start;                         ///< robot start pose
+  Pose2 charger;                       ///< robot pose when docked (yaw faces the charger)
+  double inflation_margin_m = 0.1;     ///< planning clearance beyond the robot radius
   std::vector<MovingObstacle> moving;  ///< not known to the planner; met on the way
   /// Static obstacles in the plant but not on the robot's map (a pallet left in an aisle): the
   /// physics and the sensors have them; the planner, the localiser and the controllers only

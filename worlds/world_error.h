@@ -10,8 +10,10 @@ namespace plantsim::worlds {
 class WorldError : public std::runtime_error {
  public:
   WorldError(const std::string& file, const std::string& field, const std::string& problem)
-      : std::runtime_error(file + ": " + (field.empty() ? "" : "field '" + field + "': ") + problem),
-        file_(file), field_(field) {}
+      : std::runtime_error(file + ": " + (field.empty() ? "" : "field '" + field + "': ") +
+                           problem),
+        file_(file),
+        field_(field) {}
   const std::string& file() const { return file_; }
   const std::string& field() const { return field_; }
 

@@ -10,7 +10,8 @@ void add(util::Fingerprint& f, const Rect& r) { f.add(r.xmin).add(r.ymin).add(r.
 void add(util::Fingerprint& f, const Pose2& p) { f.add(p.x).add(p.y).add(p.yaw); }
 void add(util::Fingerprint& f, const MovingObstacle& m) {
   f.add(m.width_m).add(m.height_m).add(m.speed_mps).add(m.start_time_s).add(m.yield_distance_m);
-  f.add(static_cast<std::uint64_t>(m.loop) * 2 + m.yields_to_robot).add(static_cast<std::uint64_t>(m.waypoints.size()));
+  f.add(static_cast<std::uint64_t>(m.loop) * 2 + m.yields_to_robot)
+      .add(static_cast<std::uint64_t>(m.waypoints.size()));
   for (const Vec2& p : m.waypoints) f.add(p.x).add(p.y);
 }
 
@@ -23,7 +24,12 @@ std::uint64_t world_fingerprint(const World& w) {
   f.add(static_cast<std::uint64_t>(w.obstacles.size()));
   for (const Rect& r : w.obstacles) add(f, r);
   const RobotSpec& r = w.robot;
-  f.add(r.radius_m).add(r.wheel_base_m).add(r.wheel_radius_m).add(r.max_speed_mps).add(r.max_accel_mps2).add(r.mass_kg);
+  f.add(r.radius_m)
+      .add(r.wheel_base_m)
+      .add(r.wheel_radius_m)
+      .add(r.max_speed_mps)
+      .add(r.max_accel_mps2)
+      .add(r.mass_kg);
   f.add(r.length_m).add(r.width_m);
   const ChargerSpec& c = w.charger_spec;
   f.add(c.width_m).add(c.depth_m).add(c.staging_distance_m).add(c.pad_travel_m);

@@ -3,12 +3,11 @@
 // "H", "rects", "start", "goal"), whose goal becomes the charger with a chosen heading.
 #include "worlds/world_loader.h"
 
-#include <nlohmann/json.hpp>
-
-#include <cmath>
-#include <filesystem>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "geometry/predicates.h"
@@ -51,9 +50,11 @@ class FieldReader {
   }
 
   /// A number from lo to hi (a robot 1e6 m wide, a speed of 1e300 are refused at load).
-  double bounded(const json& obj, const std::string& key, const std::string& path, double lo, double hi) const {
+  double bounded(const json& obj, const std::string& key, const std::string& path, double lo,
+                 double hi) const {
     const double v = number(obj, key, path);
-    if (v < lo || v > hi) fail(join(path, key), "must be from " + short_number(lo) + " to " + short_number(hi));
+    if (v < lo || v > hi)
+      fail(join(path, key), "must be from " + short_number(lo) + " to " + short_number(hi));
     return v;
   }
 
@@ -61,14 +62,16 @@ class FieldReader {
   void keys(const json& obj, const std::string& path, const std::vector<std::string>& known) const {
     if (!obj.is_object()) fail(path, "expected an object");
     for (const auto& [key, value] : obj.items())
-      if (std::find(known.begin(), known.end(), key) == known.end()) fail(join(path, key), unknown_key_problem(key, known));
+      if (std::find(known.begin(), known.end(), key) == known.end())
+        fail(join(path, key), unknown_key_problem(key, known));
   }
 
   double number(const json& obj, const std::string& key, const std::string& path) const {
     return number(member(obj, key, path), join(path, key));
   }
 
-  double positive(const json& obj, const std::string& key, const std::string& path, double most) const {
+  double positive(const json& obj, const std::string& key, const std::string& path,
+                  double most) const {
     const double v = number(obj, key, path);
     if (v <= 0) fail(join(path, key), "must be positive");
     if (v > most) fail(join(path, key), "must be at most " + short_number(most));
@@ -76,8 +79,7 @@ class FieldReader {
   }
 
   Rect rect_array(const json& value, const std::string& path) const {
-    if (!value.is_array() || value.size() != 4)
-      fail(path, "expected [xmin, ymin, xmax, ymax]");
+    if (!value.is_array() || value.size() != 4) fail(path, "expected [xmin, ymin, xmax, ymax]");
     Rect r{number(value[0], path + "[0]"), number(value[1], path + "[1]"),
            number(value[2], path + "[2]"), number(value[3], path + "[3]")};
     if (r.xmax <= r.xmin || r.ymax <= r.ymin)
@@ -90,11 +92,13 @@ class FieldReader {
     return {number(value[0], path + "[0]"), number(value[1], path + "[1]")};
   }
 
-  Pose2 pose(const json& value, const std::string& path, const std::vector<std::string>& extra_keys = {}) const {
+  Pose2 pose(const json& value, const std::string& path,
+             const std::vector<std::string>& extra_keys = {}) const {
     std::vector<std::string> known = {"x", "y", "yaw"};
     known.insert(known.end(), extra_keys.begin(), extra_keys.end());
     keys(value, path, known);
-    return {number(value, "x", path), number(value, "y", path), bounded(value, "yaw", path, -100.0, 100.0)};
+    return {number(value, "x", path), number(value, "y", path),
+            bounded(value, "yaw", path, -100.0, 100.0)};
   }
 
   std::vector<Rect> rects(const json& value, const std::string& path) const {
@@ -127,8 +131,9 @@ std::string stem_of(const std::string& path) { return name_from_file(path); }
 
 // A box on a scripted path: a moving obstacle or the moving target.
 MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std::string& path) {
-  in.keys(m, path, {"name", "size_m", "waypoints", "speed_mps", "start_time_s", "loop", "yields_to_robot",
-                    "yield_distance_m"});
+  in.keys(m, path,
+          {"name", "size_m", "waypoints", "speed_mps", "start_time_s", "loop", "yields_to_robot",
+           "yield_distance_m"});
   MovingObstacle mo;
   mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
   const json& size = in.member(m, "size_m", path);
@@ -137,7 +142,8 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
   mo.width_m = wh.x;
   mo.height_m = wh.y;
   const json& wps = in.member(m, "waypoints", path);
-  if (!wps.is_array() || wps.empty()) in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
+  if (!wps.is_array() || wps.empty())
+    in.fail(path + ".waypoints", "expected a non-empty array of [x, y]");
   if (wps.size() > 10000) in.fail(path + ".waypoints", "more than 10000 waypoints");
   for (std::size_t k = 0; k < wps.size(); ++k)
     mo.waypoints.push_back(in.point_array(wps[k], path + ".waypoints[" + std::to_string(k) + "]"));
@@ -148,10 +154,12 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
     mo.loop = m["loop"].get<bool>();
   }
   if (m.contains("yields_to_robot")) {
-    if (!m["yields_to_robot"].is_boolean()) in.fail(path + ".yields_to_robot", "expected true or false");
+    if (!m["yields_to_robot"].is_boolean())
+      in.fail(path + ".yields_to_robot", "expected true or false");
     mo.yields_to_robot = m["yields_to_robot"].get<bool>();
   }
-  if (m.contains("yield_distance_m")) mo.yield_distance_m = in.bounded(m, "yield_distance_m", path, 0.0, 100.0);
+  if (m.contains("yield_distance_m"))
+    mo.yield_distance_m = in.bounded(m, "yield_distance_m", path, 0.0, 100.0);
   return mo;
 }
 
@@ -161,7 +169,8 @@ TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
   const std::string path = "tunnel_maze";
   in.keys(m, path, {"origin", "pitch_m", "corridor_m", "columns", "rows", "corridors"});
   const Vec2 origin = in.point_array(in.member(m, "origin", path), path + ".origin");
-  const double pitch = in.positive(m, "pitch_m", path, 1000.0), corridor = in.positive(m, "corridor_m", path, 1000.0);
+  const double pitch = in.positive(m, "pitch_m", path, 1000.0),
+               corridor = in.positive(m, "corridor_m", path, 1000.0);
   if (corridor >= pitch) in.fail(path + ".corridor_m", "must be less than pitch_m");
   auto count = [&](const char* key) {
     const json& v = in.member(m, key, path);
@@ -171,7 +180,8 @@ TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
   };
   TunnelMaze maze(origin, pitch, corridor, count("columns"), count("rows"));
   const json& runs = in.member(m, "corridors", path);
-  if (!runs.is_array() || runs.empty()) in.fail(path + ".corridors", "expected a non-empty array of [[c, r], [c, r]]");
+  if (!runs.is_array() || runs.empty())
+    in.fail(path + ".corridors", "expected a non-empty array of [[c, r], [c, r]]");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const std::string where = path + ".corridors[" + std::to_string(i) + "]";
     const json& run = runs[i];
@@ -183,14 +193,17 @@ TunnelMaze read_tunnel_maze(const FieldReader& in, const json& m) {
         in.fail(where, "expected [[c, r], [c, r]] with whole numbers");
       // Read wide, then range-checked: 4294967296 must not wrap to column 0.
       for (int axis = 0; axis < 2; ++axis) {
-        const bool unsigned_big = e[axis].is_number_unsigned() && e[axis].get<std::uint64_t>() > 1000000;
+        const bool unsigned_big =
+            e[axis].is_number_unsigned() && e[axis].get<std::uint64_t>() > 1000000;
         const std::int64_t v = unsigned_big ? -1 : e[axis].get<std::int64_t>();
         const std::int64_t limit = axis == 0 ? maze.columns() : maze.rows();
         if (v < 0 || v >= limit)
           in.fail(where + "[" + std::to_string(k) + "][" + std::to_string(axis) + "]",
-                  std::string("must be a ") + (axis == 0 ? "column" : "row") + " from 0 to " + std::to_string(limit - 1));
+                  std::string("must be a ") + (axis == 0 ? "column" : "row") + " from 0 to " +
+                      std::to_string(limit - 1));
       }
-      ends[k] = {static_cast<int>(e[0].get<std::int64_t>()), static_cast<int>(e[1].get<std::int64_t>())};
+      ends[k] = {static_cast<int>(e[0].get<std::int64_t>()),
+                 static_cast<int>(e[1].get<std::int64_t>())};
     }
     try {
       maze.open_run(ends[0], ends[1]);
@@ -206,12 +219,16 @@ void read_map_mismatch(const json& doc, const FieldReader& in, World& w) {
   if (doc.contains("unmapped")) w.unmapped = in.rects(doc["unmapped"], "unmapped");
   if (doc.contains("charger_map_offset")) {
     const json& o = doc["charger_map_offset"];
-    if (!o.is_array() || o.size() != 3) in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
-    w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"), in.number(o[1], "charger_map_offset[1]"),
+    if (!o.is_array() || o.size() != 3)
+      in.fail("charger_map_offset", "expected [dx, dy, dyaw] (m, m, rad)");
+    w.charger_map_offset = {in.number(o[0], "charger_map_offset[0]"),
+                            in.number(o[1], "charger_map_offset[1]"),
                             in.number(o[2], "charger_map_offset[2]")};
     // As in scenarios (docs/batch.md): beyond this it is another charger, not an error of the map.
-    if (std::hypot(w.charger_map_offset.x, w.charger_map_offset.y) > 0.5 || std::fabs(w.charger_map_offset.yaw) > 0.5)
-      in.fail("charger_map_offset", "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
+    if (std::hypot(w.charger_map_offset.x, w.charger_map_offset.y) > 0.5 ||
+        std::fabs(w.charger_map_offset.yaw) > 0.5)
+      in.fail("charger_map_offset",
+              "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
   }
 }
 
@@ -228,14 +245,17 @@ std::string read_name(const json& doc, const FieldReader& in, const std::string&
 }
 
 World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
-  in.keys(doc, "", {"name", "comment", "description", "floor", "obstacles", "robot", "start", "charger",
-                    "inflation_margin_m", "unmapped", "charger_map_offset", "moving_obstacles", "target", "tunnel_maze"});
+  in.keys(doc, "",
+          {"name", "comment", "description", "floor", "obstacles", "robot", "start", "charger",
+           "inflation_margin_m", "unmapped", "charger_map_offset", "moving_obstacles", "target",
+           "tunnel_maze"});
   World w;
   w.source = source;
   w.name = read_name(doc, in, source);
   if (doc.contains("tunnel_maze")) {
     // The floor and the rock come from the lattice; further obstacles may be added.
-    if (doc.contains("floor")) in.fail("floor", "a tunnel_maze world takes its floor from the lattice");
+    if (doc.contains("floor"))
+      in.fail("floor", "a tunnel_maze world takes its floor from the lattice");
     w.maze = read_tunnel_maze(in, doc["tunnel_maze"]);
     w.floor = w.maze->floor();
     w.obstacles = w.maze->rock();
@@ -254,7 +274,9 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   }
 
   const json& robot = in.member(doc, "robot", "");
-  in.keys(robot, "robot", {"radius_m", "footprint", "wheel_base_m", "wheel_radius_m", "max_speed_mps", "max_accel_mps2", "mass_kg"});
+  in.keys(robot, "robot",
+          {"radius_m", "footprint", "wheel_base_m", "wheel_radius_m", "max_speed_mps",
+           "max_accel_mps2", "mass_kg"});
   if (robot.contains("footprint")) {
     // A rectangle: the planner and the safety checks use its circumscribed radius.
     const json& fp = robot["footprint"];
@@ -262,7 +284,8 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
     w.robot.length_m = in.positive(fp, "length_m", "robot.footprint", 20.0);
     w.robot.width_m = in.positive(fp, "width_m", "robot.footprint", 20.0);
     w.robot.radius_m = 0.5 * std::hypot(w.robot.length_m, w.robot.width_m);
-    if (robot.contains("radius_m")) in.fail("robot.radius_m", "give either radius_m (a disk) or footprint (a rectangle)");
+    if (robot.contains("radius_m"))
+      in.fail("robot.radius_m", "give either radius_m (a disk) or footprint (a rectangle)");
   } else {
     w.robot.radius_m = in.positive(robot, "radius_m", "robot", 10.0);
   }
@@ -273,25 +296,31 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot", 100000.0);
 
   w.start = in.pose(in.member(doc, "start", ""), "start");
-  w.charger = in.pose(in.member(doc, "charger", ""), "charger", {"width_m", "depth_m", "staging_distance_m", "pad_travel_m"});
+  w.charger = in.pose(in.member(doc, "charger", ""), "charger",
+                      {"width_m", "depth_m", "staging_distance_m", "pad_travel_m"});
   const json& charger = doc["charger"];
-  if (charger.contains("width_m")) w.charger_spec.width_m = in.positive(charger, "width_m", "charger", 10.0);
-  if (charger.contains("depth_m")) w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger", 10.0);
+  if (charger.contains("width_m"))
+    w.charger_spec.width_m = in.positive(charger, "width_m", "charger", 10.0);
+  if (charger.contains("depth_m"))
+    w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger", 10.0);
   if (charger.contains("pad_travel_m")) {
     w.charger_spec.pad_travel_m = in.number(charger, "pad_travel_m", "charger");
     if (w.charger_spec.pad_travel_m < 0 || w.charger_spec.pad_travel_m > 0.05)
       in.fail("charger.pad_travel_m", "must be from 0 to 0.05 m");
   }
   if (charger.contains("staging_distance_m"))
-    w.charger_spec.staging_distance_m = in.positive(charger, "staging_distance_m", "charger", 100.0);
-  if (doc.contains("inflation_margin_m")) w.inflation_margin_m = in.bounded(doc, "inflation_margin_m", "", 0.0, 100.0);
+    w.charger_spec.staging_distance_m =
+        in.positive(charger, "staging_distance_m", "charger", 100.0);
+  if (doc.contains("inflation_margin_m"))
+    w.inflation_margin_m = in.bounded(doc, "inflation_margin_m", "", 0.0, 100.0);
   read_map_mismatch(doc, in, w);
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
     if (list.size() > 1000) in.fail("moving_obstacles", "more than 1000 moving obstacles");
     for (std::size_t i = 0; i < list.size(); ++i)
-      w.moving.push_back(read_scripted_box(in, list[i], "moving_obstacles[" + std::to_string(i) + "]"));
+      w.moving.push_back(
+          read_scripted_box(in, list[i], "moving_obstacles[" + std::to_string(i) + "]"));
   }
   if (doc.contains("target")) {
     w.target = read_scripted_box(in, doc["target"], "target");
@@ -307,8 +336,9 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
 World read_plain_schema(const json& doc, const FieldReader& in, const std::string& source) {
   // n, seed, min_gap, inflation and queries describe how a benchmark world was made and what
   // its optimal lengths are; they are accepted and not used here.
-  in.keys(doc, "", {"W", "H", "rects", "start", "goal", "unmapped", "charger_map_offset", "comment", "n", "seed",
-                    "min_gap", "inflation", "queries", "inflated_case"});
+  in.keys(doc, "",
+          {"W", "H", "rects", "start", "goal", "unmapped", "charger_map_offset", "comment", "n",
+           "seed", "min_gap", "inflation", "queries", "inflated_case"});
   World w;
   w.source = source;
   w.name = stem_of(source);
@@ -374,14 +404,18 @@ void validate_unmapped(const World& w) {
   for (std::size_t i = 0; i < w.unmapped.size(); ++i) {
     const Rect& o = w.unmapped[i];
     const std::string field = "unmapped[" + std::to_string(i) + "]";
-    if (o.xmin < w.floor.xmin || o.ymin < w.floor.ymin || o.xmax > w.floor.xmax || o.ymax > w.floor.ymax)
+    if (o.xmin < w.floor.xmin || o.ymin < w.floor.ymin || o.xmax > w.floor.xmax ||
+        o.ymax > w.floor.ymax)
       throw WorldError(w.source, field, "lies outside the floor");
-    for (const auto& [pose, what] : {std::pair{w.start, "the start"}, std::pair{w.charger, "the charger's docked pose"}}) {
+    for (const auto& [pose, what] :
+         {std::pair{w.start, "the start"}, std::pair{w.charger, "the charger's docked pose"}}) {
       const double dx = std::max({o.xmin - pose.x, 0.0, pose.x - o.xmax});
       const double dy = std::max({o.ymin - pose.y, 0.0, pose.y - o.ymax});
-      if (dx * dx + dy * dy < r * r) throw WorldError(w.source, field, std::string("covers ") + what);
+      if (dx * dx + dy * dy < r * r)
+        throw WorldError(w.source, field, std::string("covers ") + what);
     }
-    if (geom::rects_overlap_open(o, charger_box)) throw WorldError(w.source, field, "covers the charger");
+    if (geom::rects_overlap_open(o, charger_box))
+      throw WorldError(w.source, field, "covers the charger");
   }
 }
 
@@ -389,8 +423,9 @@ void validate_unmapped(const World& w) {
 
 void validate_world(const World& w) {
   if (w.floor.width() > kMaxFloorSide_m || w.floor.height() > kMaxFloorSide_m)
-    throw WorldError(w.source, "floor",
-                     "larger than " + std::to_string(kMaxFloorSide_m) + " m on a side (huge world)");
+    throw WorldError(
+        w.source, "floor",
+        "larger than " + std::to_string(kMaxFloorSide_m) + " m on a side (huge world)");
   if (w.robot.wheel_base_m > (w.robot.rectangular() ? w.robot.width_m : 2.0 * w.robot.radius_m))
     throw WorldError(w.source, "robot.wheel_base_m", "wheels must fit inside the footprint");
   check_pose_free(w, w.start, "start");
@@ -406,10 +441,12 @@ void validate_world(const World& w) {
     try {
       check_pose_free(map, map.charger, "charger");
     } catch (const WorldError& e) {
-      throw WorldError(w.source, "charger_map_offset", std::string("puts the mapped charger where no robot fits: ") + e.what());
+      throw WorldError(w.source, "charger_map_offset",
+                       std::string("puts the mapped charger where no robot fits: ") + e.what());
     }
     if (!docking_area_clear(map))
-      throw WorldError(w.source, "charger_map_offset", "puts the mapped charger where there is no room to dock");
+      throw WorldError(w.source, "charger_map_offset",
+                       "puts the mapped charger where there is no room to dock");
   }
 }
 
@@ -446,7 +483,10 @@ World load_world(const std::string& written, const PoseOverrides& overrides) {
   if (ext == ".yaml" || ext == ".yml") {
     w = world_from_ros_map(load_ros_map(path), stem_of(path), overrides.start, overrides.charger);
   } else if (ext == ".map") {
-    w = world_from_movingai(path, overrides.movingai_scen.empty() ? "" : util::resolve_input_path(overrides.movingai_scen, ""),
+    w = world_from_movingai(path,
+                            overrides.movingai_scen.empty()
+                                ? ""
+                                : util::resolve_input_path(overrides.movingai_scen, ""),
                             overrides.movingai_query, overrides.start, overrides.charger);
   } else {
     w = parse_world_json(read_file(path), path);

@@ -16,7 +16,8 @@ bool within(const YAML::Node& node, std::size_t& budget, int depth) {
       if (!within(item, budget, depth + 1)) return false;
   } else if (node.IsMap()) {
     for (const auto& kv : node)
-      if (!within(kv.first, budget, depth + 1) || !within(kv.second, budget, depth + 1)) return false;
+      if (!within(kv.first, budget, depth + 1) || !within(kv.second, budget, depth + 1))
+        return false;
   }
   return true;
 }
@@ -38,8 +39,9 @@ YAML::Node load_yaml_input(const std::string& path) {
   }
   std::size_t budget = kMaxYamlNodes;
   if (!within(doc, budget, 0))
-    throw WorldError(path, "", "expands to more than " + std::to_string(kMaxYamlNodes) +
-                                   " YAML nodes or nests deeper than 64 (aliases?)");
+    throw WorldError(path, "",
+                     "expands to more than " + std::to_string(kMaxYamlNodes) +
+                         " YAML nodes or nests deeper than 64 (aliases?)");
   return doc;
 }
 

@@ -34,13 +34,15 @@ std::optional<Cell> ring_search(const CoverageGrid& grid, Cell from, const std::
         const Cell c{from.column + dx, from.row + dy};
         if (!grid.inside(c) || !reachable[grid.index(c)] || visits[grid.index(c)] > 0) continue;
         const long d2 = static_cast<long>(dx) * dx + static_cast<long>(dy) * dy;
-        if (d2 < best_d2 || (d2 == best_d2 && (c.row < best->row || (c.row == best->row && c.column < best->column))))
+        if (d2 < best_d2 || (d2 == best_d2 && (c.row < best->row ||
+                                               (c.row == best->row && c.column < best->column))))
           best_d2 = d2, best = c;
       }
   return best;
 }
 
-CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, const CoverageParams& params) {
+CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end,
+                                const CoverageParams& params) {
   const std::vector<bool> reach = grid.reachable(start);
   if (auto failed = unreachable_end(grid, reach, end)) return *failed;
   CoveragePlan plan;
@@ -78,12 +80,15 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optio
       if (!grid.free(n)) continue;  // value minus infinity
       double angle;
       if (target) {
-        if (target_dist[grid.index(n)] >= target_dist[grid.index(at)]) continue;  // keeps the escape short
-        angle = angle_between(n.column - at.column, n.row - at.row, target->column - at.column, target->row - at.row);
+        if (target_dist[grid.index(n)] >= target_dist[grid.index(at)])
+          continue;  // keeps the escape short
+        angle = angle_between(n.column - at.column, n.row - at.row, target->column - at.column,
+                              target->row - at.row);
       } else {
         angle = t == 0 ? 0.0 : t == 2 ? std::numbers::pi : std::numbers::pi / 2;
       }
-      const double score = w_value * cell_value(visits[grid.index(n)]) + w_turn * turn_confidence(angle, params.turn_k);
+      const double score = w_value * cell_value(visits[grid.index(n)]) +
+                           w_turn * turn_confidence(angle, params.turn_k);
       if (score > best_score) best_score = score, best = h;
     }
     const Cell n = neighbour(at, best);
@@ -92,7 +97,8 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optio
     heading = best;
     if (target && n == *target) target.reset();
   }
-  if (end) append_cells(plan.cells, grid.descend(grid.distances_from({*end}), plan.cells.back(), heading));
+  if (end)
+    append_cells(plan.cells, grid.descend(grid.distances_from({*end}), plan.cells.back(), heading));
   plan.metrics = measure_coverage(grid, plan.cells, start);
   plan.metrics.dead_ends = dead_ends;
   return plan;

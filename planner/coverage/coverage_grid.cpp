@@ -9,13 +9,16 @@
 #include "geometry/predicates.h"
 
 namespace plantsim::planner {
-CoverageGrid::CoverageGrid(geom::Rect floor, double cell_m, const std::vector<geom::Rect>& obstacles, double clearance_m)
+CoverageGrid::CoverageGrid(geom::Rect floor, double cell_m,
+                           const std::vector<geom::Rect>& obstacles, double clearance_m)
     : origin_{floor.xmin, floor.ymin}, cell_m_(cell_m) {
   if (!(cell_m > 0)) throw std::invalid_argument("coverage cell size must be positive");
   columns_ = static_cast<int>(std::floor(floor.width() / cell_m + 1e-9));
   rows_ = static_cast<int>(std::floor(floor.height() / cell_m + 1e-9));
-  if (columns_ < 1 || rows_ < 1) throw std::invalid_argument("the floor is smaller than one coverage cell");
-  if (static_cast<double>(columns_) * rows_ > 4e6) throw std::invalid_argument("more than 4 million coverage cells");
+  if (columns_ < 1 || rows_ < 1)
+    throw std::invalid_argument("the floor is smaller than one coverage cell");
+  if (static_cast<double>(columns_) * rows_ > 4e6)
+    throw std::invalid_argument("more than 4 million coverage cells");
   blocked_.assign(static_cast<std::size_t>(columns_) * rows_, 0);
   // The robot stands at cell centres and moves along the lines joining them: half a cell of
   // clearance comes free, the rest of the robot's clearance grows the obstacles.
@@ -23,7 +26,8 @@ CoverageGrid::CoverageGrid(geom::Rect floor, double cell_m, const std::vector<ge
   for (const geom::Rect& o : obstacles) {
     const geom::Rect g = o.inflated(grow);
     const int c0 = std::max(0, static_cast<int>(std::floor((g.xmin - origin_.x) / cell_m)));
-    const int c1 = std::min(columns_ - 1, static_cast<int>(std::floor((g.xmax - origin_.x) / cell_m)));
+    const int c1 =
+        std::min(columns_ - 1, static_cast<int>(std::floor((g.xmax - origin_.x) / cell_m)));
     const int r0 = std::max(0, static_cast<int>(std::floor((g.ymin - origin_.y) / cell_m)));
     const int r1 = std::min(rows_ - 1, static_cast<int>(std::floor((g.ymax - origin_.y) / cell_m)));
     for (int r = r0; r <= r1; ++r)
@@ -44,7 +48,8 @@ CoverageGrid CoverageGrid::from_rows(const std::vector<std::string>& rows, doubl
   g.columns_ = rows.empty() ? 0 : static_cast<int>(rows[0].size());
   g.blocked_.assign(static_cast<std::size_t>(g.columns_) * g.rows_, 0);
   for (int r = 0; r < g.rows_; ++r)
-    for (int c = 0; c < g.columns_; ++c) g.blocked_[g.index({c, r})] = rows[g.rows_ - 1 - r][c] == '#';
+    for (int c = 0; c < g.columns_; ++c)
+      g.blocked_[g.index({c, r})] = rows[g.rows_ - 1 - r][c] == '#';
   return g;
 }
 
@@ -53,12 +58,13 @@ geom::Vec2 CoverageGrid::centre(Cell c) const {
 }
 
 geom::Rect CoverageGrid::cell_rect(Cell c) const {
-  return {origin_.x + c.column * cell_m_, origin_.y + c.row * cell_m_, origin_.x + (c.column + 1) * cell_m_,
-          origin_.y + (c.row + 1) * cell_m_};
+  return {origin_.x + c.column * cell_m_, origin_.y + c.row * cell_m_,
+          origin_.x + (c.column + 1) * cell_m_, origin_.y + (c.row + 1) * cell_m_};
 }
 
 std::optional<Cell> CoverageGrid::cell_at(geom::Vec2 p) const {
-  const Cell c{static_cast<int>(std::floor((p.x - origin_.x) / cell_m_)), static_cast<int>(std::floor((p.y - origin_.y) / cell_m_))};
+  const Cell c{static_cast<int>(std::floor((p.x - origin_.x) / cell_m_)),
+               static_cast<int>(std::floor((p.y - origin_.y) / cell_m_))};
   if (!inside(c)) return std::nullopt;
   return c;
 }
@@ -98,9 +104,12 @@ std::vector<bool> CoverageGrid::reachable(Cell from) const {
   return out;
 }
 
-std::vector<Cell> CoverageGrid::travel(Cell from, Cell to) const { return descend(distances_from({to}), from); }
+std::vector<Cell> CoverageGrid::travel(Cell from, Cell to) const {
+  return descend(distances_from({to}), from);
+}
 
-std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from, int heading) const {
+std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from,
+                                        int heading) const {
   if (!free(from) || dist[index(from)] < 0) return {};
   std::vector<Cell> path{from};
   while (dist[index(path.back())] > 0) {
@@ -121,7 +130,8 @@ std::vector<Cell> CoverageGrid::descend(const std::vector<int>& dist, Cell from,
 int turns_along(const std::vector<Cell>& path) {
   int turns = 0;
   for (std::size_t i = 2; i < path.size(); ++i) {
-    const int turn = (heading_between(path[i - 1], path[i]) - heading_between(path[i - 2], path[i - 1]) + 4) % 4;
+    const int turn =
+        (heading_between(path[i - 1], path[i]) - heading_between(path[i - 2], path[i - 1]) + 4) % 4;
     turns += turn == 2 ? 2 : turn != 0;
   }
   return turns;
@@ -155,13 +165,15 @@ std::vector<Cell> sweep(const CellRect& r, int corner, bool lanes_along_x) {
     for (int k = 0; k < r.height; ++k) {
       const int row = from_top ? r.row + r.height - 1 - k : r.row + k;
       const bool rightwards = (k % 2 == 0) != from_right;
-      for (int j = 0; j < r.width; ++j) out.push_back({rightwards ? r.column + j : r.column + r.width - 1 - j, row});
+      for (int j = 0; j < r.width; ++j)
+        out.push_back({rightwards ? r.column + j : r.column + r.width - 1 - j, row});
     }
   } else {  // stepping in x
     for (int k = 0; k < r.width; ++k) {
       const int column = from_right ? r.column + r.width - 1 - k : r.column + k;
       const bool upwards = (k % 2 == 0) != from_top;
-      for (int j = 0; j < r.height; ++j) out.push_back({column, upwards ? r.row + j : r.row + r.height - 1 - j});
+      for (int j = 0; j < r.height; ++j)
+        out.push_back({column, upwards ? r.row + j : r.row + r.height - 1 - j});
     }
   }
   return out;

@@ -35,13 +35,16 @@ int turns_along(const std::vector<Cell>& path);
 /// A sub-region: cells [column, column + width) x [row, row + height).
 struct CellRect {
   int column = 0, row = 0, width = 0, height = 0;
-  bool contains(Cell c) const { return c.column >= column && c.column < column + width && c.row >= row && c.row < row + height; }
+  bool contains(Cell c) const {
+    return c.column >= column && c.column < column + width && c.row >= row && c.row < row + height;
+  }
   int cells() const { return width * height; }
 };
 
 class CoverageGrid {
  public:
-  CoverageGrid(geom::Rect floor, double cell_m, const std::vector<geom::Rect>& obstacles, double clearance_m);
+  CoverageGrid(geom::Rect floor, double cell_m, const std::vector<geom::Rect>& obstacles,
+               double clearance_m);
   /// From a pattern, bottom row last ('#' blocked, anything else free): for tests.
   static CoverageGrid from_rows(const std::vector<std::string>& rows, double cell_m = 2.0);
 
@@ -49,7 +52,9 @@ class CoverageGrid {
   int rows() const { return rows_; }
   double cell_m() const { return cell_m_; }
   bool free(Cell c) const { return inside(c) && !blocked_[index(c)]; }
-  bool inside(Cell c) const { return c.column >= 0 && c.row >= 0 && c.column < columns_ && c.row < rows_; }
+  bool inside(Cell c) const {
+    return c.column >= 0 && c.row >= 0 && c.column < columns_ && c.row < rows_;
+  }
   std::size_t index(Cell c) const { return static_cast<std::size_t>(c.row) * columns_ + c.column; }
   geom::Vec2 centre(Cell c) const;
   /// The free cell whose centre is nearest p, if any.

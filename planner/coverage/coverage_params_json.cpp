@@ -1,11 +1,10 @@
 // The table of coverage parameters.
 #include "planner/coverage/coverage_params_json.h"
 
-#include <nlohmann/json.hpp>
-
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "util/input_file.h"
@@ -14,7 +13,6 @@
 
 namespace plantsim::planner {
 namespace {
-
 
 struct Field {
   const char* section;
@@ -25,12 +23,17 @@ struct Field {
   bool integer = false;
 };
 
-#define CP_REAL(section, member, name, lo, hi) \
-  Field{section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); }, \
-        [](CoverageParams& p, double v) { p.member = v; }, lo, hi}
-#define CP_INT(section, member, name, lo, hi)                                                            \
-  Field{section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); },          \
-        [](CoverageParams& p, double v) { p.member = static_cast<decltype(p.member)>(v); }, lo, hi, true}
+#define CP_REAL(section, member, name, lo, hi)                                            \
+  Field {                                                                                 \
+    section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); }, \
+        [](CoverageParams& p, double v) { p.member = v; }, lo, hi                         \
+  }
+#define CP_INT(section, member, name, lo, hi)                                                   \
+  Field {                                                                                       \
+    section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); },       \
+        [](CoverageParams& p, double v) { p.member = static_cast<decltype(p.member)>(v); }, lo, \
+        hi, true                                                                                \
+  }
 
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
@@ -79,11 +82,14 @@ CoverageParams parse_coverage_params(const std::string& text, const std::string&
   CoverageParams p;
   std::vector<std::string> top{"comment"}, sections;
   for (const Field& f : fields()) {
-    if (std::string(f.section).empty()) top.push_back(f.name);
-    else if (std::find(top.begin(), top.end(), f.section) == top.end()) top.push_back(f.section), sections.push_back(f.section);
+    if (std::string(f.section).empty())
+      top.push_back(f.name);
+    else if (std::find(top.begin(), top.end(), f.section) == top.end())
+      top.push_back(f.section), sections.push_back(f.section);
   }
   for (const auto& [key, value] : j.items()) {
-    if (std::find(top.begin(), top.end(), key) == top.end()) throw worlds::WorldError(source, key, worlds::unknown_key_problem(key, top));
+    if (std::find(top.begin(), top.end(), key) == top.end())
+      throw worlds::WorldError(source, key, worlds::unknown_key_problem(key, top));
     if (std::find(sections.begin(), sections.end(), key) == sections.end()) continue;
     if (!value.is_object()) throw worlds::WorldError(source, key, "expected an object");
     std::vector<std::string> known;
@@ -91,7 +97,8 @@ CoverageParams parse_coverage_params(const std::string& text, const std::string&
       if (key == f.section) known.push_back(f.name);
     for (const auto& [name, v] : value.items())
       if (std::find(known.begin(), known.end(), name) == known.end())
-        throw worlds::WorldError(source, key + "." + name, worlds::unknown_key_problem(name, known));
+        throw worlds::WorldError(source, key + "." + name,
+                                 worlds::unknown_key_problem(name, known));
   }
   for (const Field& f : fields()) {
     const std::string section = f.section;
@@ -106,12 +113,16 @@ CoverageParams parse_coverage_params(const std::string& text, const std::string&
     if (!v->is_number()) throw worlds::WorldError(source, field, "expected a number");
     const double x = v->get<double>();
     if (!std::isfinite(x) || x < f.lo || x > f.hi)
-      throw worlds::WorldError(source, field, "must be between " + nlohmann::json(f.lo).dump() + " and " + nlohmann::json(f.hi).dump());
-    if (f.integer && x != std::floor(x)) throw worlds::WorldError(source, field, "expected a whole number");
+      throw worlds::WorldError(
+          source, field,
+          "must be between " + nlohmann::json(f.lo).dump() + " and " + nlohmann::json(f.hi).dump());
+    if (f.integer && x != std::floor(x))
+      throw worlds::WorldError(source, field, "expected a whole number");
     f.set(p, x);
   }
   if (std::abs(p.weights.cells + p.weights.turns - 1.0) > 1e-9)
-    throw worlds::WorldError(source, "w1_cells", "w1_cells + w2_turns must be 1 (the document's weights sum to 1)");
+    throw worlds::WorldError(source, "w1_cells",
+                             "w1_cells + w2_turns must be 1 (the document's weights sum to 1)");
   return p;
 }
 
@@ -129,9 +140,12 @@ std::string coverage_params_json(const CoverageParams& p) {
   nlohmann::ordered_json j;
   for (const Field& f : fields()) {
     const double v = f.get(p);
-    nlohmann::ordered_json value = f.integer ? nlohmann::ordered_json(static_cast<long long>(v)) : nlohmann::ordered_json(v);
-    if (std::string(f.section).empty()) j[f.name] = value;
-    else j[f.section][f.name] = value;
+    nlohmann::ordered_json value =
+        f.integer ? nlohmann::ordered_json(static_cast<long long>(v)) : nlohmann::ordered_json(v);
+    if (std::string(f.section).empty())
+      j[f.name] = value;
+    else
+      j[f.section][f.name] = value;
   }
   return j.dump(2) + "\n";
 }

@@ -11,7 +11,8 @@ void append_cells(std::vector<Cell>& path, const std::vector<Cell>& more) {
     if (!(i == 0 && !path.empty() && path.back() == more[0])) path.push_back(more[i]);
 }
 
-CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path, Cell start) {
+CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path,
+                                 Cell start) {
   CoverageMetrics m;
   const std::vector<bool> reach = grid.reachable(start);
   std::vector<int> visits(reach.size(), 0);
@@ -23,13 +24,15 @@ CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cel
     m.repeated_visits += std::max(0, visits[i] - 1);
   }
   m.coverage = m.reachable_cells ? static_cast<double>(m.covered_cells) / m.reachable_cells : 0.0;
-  m.repetition = m.reachable_cells ? static_cast<double>(m.repeated_visits) / m.reachable_cells : 0.0;
+  m.repetition =
+      m.reachable_cells ? static_cast<double>(m.repeated_visits) / m.reachable_cells : 0.0;
   m.turns = turns_along(path);
   m.length_m = path.empty() ? 0.0 : grid.cell_m() * (path.size() - 1.0);
   return m;
 }
 
-std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid, const std::vector<bool>& reachable,
+std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid,
+                                            const std::vector<bool>& reachable,
                                             std::optional<Cell> end) {
   if (!end || (grid.inside(*end) && reachable[grid.index(*end)])) return std::nullopt;
   CoveragePlan plan;
@@ -38,8 +41,8 @@ std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid, const std:
   return plan;
 }
 
-CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, RegionOrdering ordering,
-                                  const CoverageParams& params) {
+CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end,
+                                  RegionOrdering ordering, const CoverageParams& params) {
   const std::vector<bool> reach = grid.reachable(start);
   if (auto failed = unreachable_end(grid, reach, end)) return *failed;
   CoveragePlan plan;
@@ -52,7 +55,8 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
     case RegionOrdering::kChnn: {
       if (model.regions() > kMaxNetworkRegions) {
         plan.ok = false;
-        plan.failure = std::to_string(model.regions()) + " sub-regions: the Hopfield network is not run above " +
+        plan.failure = std::to_string(model.regions()) +
+                       " sub-regions: the Hopfield network is not run above " +
                        std::to_string(kMaxNetworkRegions) + " (its work per step grows as n^3)";
         return plan;
       }
@@ -61,7 +65,8 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
       plan.network_restarts = r.restarts;
       if (!r.order) {
         plan.ok = false;
-        plan.failure = "the Hopfield network settled on a valid order in 0 of " + std::to_string(r.restarts) + " restarts";
+        plan.failure = "the Hopfield network settled on a valid order in 0 of " +
+                       std::to_string(r.restarts) + " restarts";
         return plan;
       }
       plan.order = *r.order;
@@ -78,7 +83,9 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
       plan.exact = exact_order(model, {greedy}, params.exact);
       plan.order = plan.exact->order;
       break;
-    case RegionOrdering::kGreedy: plan.order = greedy; break;
+    case RegionOrdering::kGreedy:
+      plan.order = greedy;
+      break;
   }
   const SweepModel::Sweeps sweeps = model.best_sweeps(plan.order);
   plan.sweeps = sweeps.variants;
@@ -92,7 +99,8 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
   int dead_ends = 0;
   auto walk = [&](const std::vector<Cell>& cells, bool is_way) {
     bool crossed = false;
-    for (std::size_t i = 1; i + (is_way ? 1 : 0) < cells.size(); ++i) crossed = crossed || visits[grid.index(cells[i])] > 0;
+    for (std::size_t i = 1; i + (is_way ? 1 : 0) < cells.size(); ++i)
+      crossed = crossed || visits[grid.index(cells[i])] > 0;
     dead_ends += is_way && crossed;
     for (std::size_t i = 0; i < cells.size(); ++i)
       if (!(i == 0 && plan.cells.back() == cells[0])) {

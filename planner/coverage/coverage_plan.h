@@ -23,41 +23,43 @@ inline constexpr int kMaxNetworkRegions = 150;
 struct CoverageMetrics {
   int reachable_cells = 0;
   int covered_cells = 0;
-  double coverage = 0;        ///< covered / reachable
-  int repeated_visits = 0;    ///< visits beyond the first, over all cells
-  double repetition = 0;      ///< repeated visits / reachable cells (the document's rate)
-  int turns = 0;              ///< changes of heading along the path (a U-turn counts two)
-  int dead_ends = 0;          ///< times the robot had to cross covered cells to go on
+  double coverage = 0;      ///< covered / reachable
+  int repeated_visits = 0;  ///< visits beyond the first, over all cells
+  double repetition = 0;    ///< repeated visits / reachable cells (the document's rate)
+  int turns = 0;            ///< changes of heading along the path (a U-turn counts two)
+  int dead_ends = 0;        ///< times the robot had to cross covered cells to go on
   double length_m = 0;
 };
 
 /// Visits, turns and length of a cell path; dead ends are counted by the planners.
-CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path, Cell start);
+CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path,
+                                 Cell start);
 
 struct CoveragePlan {
   bool ok = true;
-  std::string failure;               ///< why there is no path (the network settled on no order)
-  std::vector<Cell> cells;           ///< the path, cell by cell, start first (and the end last)
-  std::vector<CellRect> regions;     ///< sub-regions (empty for the cell method)
-  std::vector<int> order;            ///< regions in visiting order
-  std::vector<int> sweeps;           ///< the sweep variant of each, per position
-  std::vector<Cell> sweep_starts;    ///< the first cell of each sweep, per position
-  double order_cost = 0;             ///< sum of D along the order, the way to the end included
+  std::string failure;             ///< why there is no path (the network settled on no order)
+  std::vector<Cell> cells;         ///< the path, cell by cell, start first (and the end last)
+  std::vector<CellRect> regions;   ///< sub-regions (empty for the cell method)
+  std::vector<int> order;          ///< regions in visiting order
+  std::vector<int> sweeps;         ///< the sweep variant of each, per position
+  std::vector<Cell> sweep_starts;  ///< the first cell of each sweep, per position
+  double order_cost = 0;           ///< sum of D along the order, the way to the end included
   double greedy_cost = 0;
-  std::optional<ExactOrder> exact;   ///< the search's account, for the exact method
+  std::optional<ExactOrder> exact;              ///< the search's account, for the exact method
   int network_valid = 0, network_restarts = 0;  ///< restarts that settled on a permutation
   CoverageMetrics metrics;
 };
 
 /// A plan that failed because `end` is given but off the grid or not in `reachable`; nullopt when
 /// the end is fine (or there is none).
-std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid, const std::vector<bool>& reachable,
+std::optional<CoveragePlan> unreachable_end(const CoverageGrid& grid,
+                                            const std::vector<bool>& reachable,
                                             std::optional<Cell> end);
 
 /// Appends `more` to `path`, skipping its first cell when it repeats the path's last.
 void append_cells(std::vector<Cell>& path, const std::vector<Cell>& more);
 
-CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end, RegionOrdering ordering,
-                                  const CoverageParams& params = {});
+CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::optional<Cell> end,
+                                  RegionOrdering ordering, const CoverageParams& params = {});
 
 }  // namespace plantsim::planner

@@ -12,12 +12,14 @@
 namespace plantsim::planner {
 
 CoveragePlanner::CoveragePlanner(const PlannerInput& input, std::string_view name)
-    : grid_(input.floor, input.coverage.cell_m, input.obstacles, input.inflation_m), name_(name),
-      method_(coverage_method(name)), params_(input.coverage) {}
+    : grid_(input.floor, input.coverage.cell_m, input.obstacles, input.inflation_m),
+      name_(name),
+      method_(coverage_method(name)),
+      params_(input.coverage) {}
 
 bool is_coverage_planner(std::string_view n) {
-  return n == "coverage" || n == "coverage-chnn" || n == "coverage-potts" || n == "coverage-exact" ||
-         n == "coverage-greedy" || n == "coverage-cells";
+  return n == "coverage" || n == "coverage-chnn" || n == "coverage-potts" ||
+         n == "coverage-exact" || n == "coverage-greedy" || n == "coverage-cells";
 }
 
 CoverageMethod coverage_method(std::string_view n) {
@@ -30,7 +32,8 @@ CoverageMethod coverage_method(std::string_view n) {
 }
 
 PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
-  if (last_query_ && last_query_->first == start && last_query_->second == goal) return last_result_;
+  if (last_query_ && last_query_->first == start && last_query_->second == goal)
+    return last_result_;
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult r;
   const auto first = grid_.nearest_free(start), last = grid_.nearest_free(goal);
@@ -64,9 +67,10 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
   // Cell centres, keeping only where the heading changes.
   std::vector<Vec2> path{start};
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    const bool straight = i > 0 && i + 1 < cells.size() &&
-                          cells[i].column - cells[i - 1].column == cells[i + 1].column - cells[i].column &&
-                          cells[i].row - cells[i - 1].row == cells[i + 1].row - cells[i].row;
+    const bool straight =
+        i > 0 && i + 1 < cells.size() &&
+        cells[i].column - cells[i - 1].column == cells[i + 1].column - cells[i].column &&
+        cells[i].row - cells[i - 1].row == cells[i + 1].row - cells[i].row;
     if (!straight) path.push_back(grid_.centre(cells[i]));
   }
   path.push_back(goal);
@@ -76,29 +80,33 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
   const CoverageMetrics& m = last_.metrics;
   char note[400];
   std::snprintf(note, sizeof note,
-                "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, %d dead ends, "
+                "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, "
+                "%d dead ends, "
                 "%.1f m from start to end cell",
-                static_cast<int>(last_.regions.size()), 100 * m.coverage, m.reachable_cells, 100 * m.repetition, m.turns,
-                m.dead_ends, m.length_m);
+                static_cast<int>(last_.regions.size()), 100 * m.coverage, m.reachable_cells,
+                100 * m.repetition, m.turns, m.dead_ends, m.length_m);
   r.note = note;
   if (method_ != CoverageMethod::kCells) {
-    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", last_.order_cost, last_.greedy_cost);
+    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", last_.order_cost,
+                  last_.greedy_cost);
     r.note += note;
   }
   if (method_ == CoverageMethod::kChnn || method_ == CoverageMethod::kPotts) {
-    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts", last_.network_valid,
-                  last_.network_restarts);
+    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts",
+                  last_.network_valid, last_.network_restarts);
     r.note += note;
   }
   if (last_.exact) {
     if (!last_.exact->searched)
-      std::snprintf(note, sizeof note, "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
+      std::snprintf(note, sizeof note,
+                    "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
                     static_cast<int>(last_.regions.size()));
     else if (last_.exact->proven)
-      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)", last_.exact->seconds,
-                    static_cast<unsigned long long>(last_.exact->prefixes));
+      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)",
+                    last_.exact->seconds, static_cast<unsigned long long>(last_.exact->prefixes));
     else
-      std::snprintf(note, sizeof note, "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
+      std::snprintf(note, sizeof note,
+                    "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
                     last_.exact->seconds, last_.exact->lower_bound);
     r.note += note;
   }

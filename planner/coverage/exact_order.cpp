@@ -16,7 +16,7 @@ namespace {
 constexpr int kMaxVariants = 8;
 constexpr int kMaxSearchedRegions = 63;  // the state key is a 64-bit set
 constexpr int kMultiplierSteps = 1000;
-constexpr int kRelaxedDepth = 2;  // prefixes up to this long solve the relaxation again
+constexpr int kRelaxedDepth = 2;     // prefixes up to this long solve the relaxation again
 constexpr int kPerturbations = 100;  // of the starting order, before the search
 constexpr std::uint64_t kPerturbationSeed = 4;
 // Work of the local search before the search (regions in the orders evaluated; about 2 s on
@@ -32,16 +32,24 @@ struct StateKey {
   friend bool operator==(const StateKey&, const StateKey&) = default;
 };
 struct StateHash {
-  std::size_t operator()(const StateKey& k) const { return std::hash<std::uint64_t>()(k.done * 0x9E3779B97F4A7C15ull ^ k.last); }
+  std::size_t operator()(const StateKey& k) const {
+    return std::hash<std::uint64_t>()(k.done * 0x9E3779B97F4A7C15ull ^ k.last);
+  }
 };
 
 class Search {
  public:
-  Search(const SweepModel& m, OrderRelaxation& relaxation, const ExactOrderOptions& o, std::vector<int> incumbent,
-         double incumbent_cost)
-      : m_(m), relaxation_(relaxation), options_(o), n_(m.regions()), best_order_(std::move(incumbent)), best_cost_(incumbent_cost),
+  Search(const SweepModel& m, OrderRelaxation& relaxation, const ExactOrderOptions& o,
+         std::vector<int> incumbent, double incumbent_cost)
+      : m_(m),
+        relaxation_(relaxation),
+        options_(o),
+        n_(m.regions()),
+        best_order_(std::move(incumbent)),
+        best_cost_(incumbent_cost),
         deadline_(std::chrono::steady_clock::now() +
-                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(o.time_limit_s))) {
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(o.time_limit_s))) {
     // Region-level cheapest costs (over all sweeps): between regions, from the start (row n) and
     // to the end (column n).
     cheapest_.assign(static_cast<std::size_t>(n_ + 1) * (n_ + 1), kInf);
@@ -67,13 +75,15 @@ class Search {
               double& in = into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w];
               in = std::min(in, t);
               if (i >= 0) {
-                double& out = out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + j];
+                double& out =
+                    out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + j];
                 out = std::min(out, t);
               }
             }
     for (int i = 0; i < n_; ++i)
       for (int v = 0; v < m_.variants(i); ++v)
-        out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + n_] = m_.has_end() ? m_.cost_to_end(i, v) : 0.0;
+        out_of_[(static_cast<std::size_t>(i) * kMaxVariants + v) * (n_ + 1) + n_] =
+            m_.has_end() ? m_.cost_to_end(i, v) : 0.0;
   }
 
   bool run() {
@@ -85,7 +95,8 @@ class Search {
     root_bound_ = std::max(root_bound_, split_bound(0, SweepModel::kStart, none));
     prefix_.clear();
     OrderRelaxation::Bound root = relaxation_.solve(prefix_, deadline_);
-    if (root.solved) root_bound_ = std::max(root_bound_, root.value), relaxed_.push_back(relaxed(std::move(root)));
+    if (root.solved)
+      root_bound_ = std::max(root_bound_, root.value), relaxed_.push_back(relaxed(std::move(root)));
     expand(0, SweepModel::kStart, none, none);
     return !timed_out_;
   }
@@ -111,7 +122,8 @@ class Search {
       any_left = true;
       double best_in = at(last_row, j), best_out = m_.has_end() ? at(j, n_) : 0.0;
       for (int i = 0; i < n_; ++i)
-        if (i != j && !(done >> i & 1)) best_in = std::min(best_in, at(i, j)), best_out = std::min(best_out, at(j, i));
+        if (i != j && !(done >> i & 1))
+          best_in = std::min(best_in, at(i, j)), best_out = std::min(best_out, at(j, i));
       in += best_in;
       out += best_out;
     }
@@ -137,13 +149,18 @@ class Search {
         double* row = &r.cheapest[static_cast<std::size_t>(i < 0 ? n_ : i) * (n_ + 1)];
         for (int j = 0; j < n_; ++j)
           if (j != i)
-            for (int w = 0; w < m_.variants(j); ++w) row[j] = std::min(row[j], r.reduced[relaxation_.way(i, v, j, w)]);
+            for (int w = 0; w < m_.variants(j); ++w)
+              row[j] = std::min(row[j], r.reduced[relaxation_.way(i, v, j, w)]);
         if (i >= 0) row[n_] = std::min(row[n_], r.reduced[relaxation_.way_to_end(i, v)]);
       }
     return r;
   }
-  double reduced(int i, int v, int j, int w) const { return relaxed_.back().reduced[relaxation_.way(i, v, j, w)]; }
-  double reduced_to_end(int i, int v) const { return relaxed_.back().reduced[relaxation_.way_to_end(i, v)]; }
+  double reduced(int i, int v, int j, int w) const {
+    return relaxed_.back().reduced[relaxation_.way(i, v, j, w)];
+  }
+  double reduced_to_end(int i, int v) const {
+    return relaxed_.back().reduced[relaxation_.way_to_end(i, v)];
+  }
 
   // The current prefix's cheapest reduced cost for every sweep of its last region.
   Costs prefix_reduced() const {
@@ -172,7 +189,9 @@ class Search {
     double prefix = kInf;
     for (int v = 0; v < last_variants; ++v) prefix = std::min(prefix, prefix_reduced[v]);
     const int last_row = last == SweepModel::kStart ? n_ : last;
-    auto rc = [&](int row, int j) { return r.cheapest[static_cast<std::size_t>(row) * (n_ + 1) + j]; };
+    auto rc = [&](int row, int j) {
+      return r.cheapest[static_cast<std::size_t>(row) * (n_ + 1) + j];
+    };
     double rest_in = 0, to_end = kInf, rest_out = 0, last_out = kInf;
     bool any_left = false;
     for (int j = 0; j < n_; ++j) {
@@ -188,7 +207,8 @@ class Search {
     }
     if (!any_left) {
       double whole = kInf;
-      for (int v = 0; v < last_variants; ++v) whole = std::min(whole, prefix_reduced[v] + reduced_to_end(last, v));
+      for (int v = 0; v < last_variants; ++v)
+        whole = std::min(whole, prefix_reduced[v] + reduced_to_end(last, v));
       return r.base + whole;
     }
     return r.base + prefix + std::max(rest_in + to_end, rest_out + last_out);
@@ -196,8 +216,12 @@ class Search {
 
   double own(int j, int w) const { return m_.weights().turns * m_.variant(j, w).turns; }
 
-  double into(int i, int j, int w) const { return into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w]; }
-  double out_of(int j, int w, int k) const { return out_of_[(static_cast<std::size_t>(j) * kMaxVariants + w) * (n_ + 1) + k]; }
+  double into(int i, int j, int w) const {
+    return into_[(static_cast<std::size_t>(i + 1) * n_ + j) * kMaxVariants + w];
+  }
+  double out_of(int j, int w, int k) const {
+    return out_of_[(static_cast<std::size_t>(j) * kMaxVariants + w) * (n_ + 1) + k];
+  }
   // Multiplier of the way from i (kStart: the start) to j (n_: the end).
   double& pi(int i, int j) { return pi_[static_cast<std::size_t>(i + 1) * (n_ + 1) + j]; }
   double pi(int i, int j) const { return pi_[static_cast<std::size_t>(i + 1) * (n_ + 1) + j]; }
@@ -215,7 +239,8 @@ class Search {
     std::vector<int> in, out;  // per region left: where its cheapest way came from, went to
     int last_out = -1, end_in = -1;
   };
-  double split_bound(std::uint64_t done, int last, const Costs& costs, Choices* chosen = nullptr) const {
+  double split_bound(std::uint64_t done, int last, const Costs& costs,
+                     Choices* chosen = nullptr) const {
     bool any_left = false;
     double total = 0, end_in = kInf;
     int end_from = -1;
@@ -245,7 +270,8 @@ class Search {
     }
     if (!any_left) {  // only the way to the end is left, whole
       double whole = kInf;
-      for (int v = 0; v < last_variants; ++v) whole = std::min(whole, costs[v] + m_.cost_to_end(last, v));
+      for (int v = 0; v < last_variants; ++v)
+        whole = std::min(whole, costs[v] + m_.cost_to_end(last, v));
       return whole;
     }
     double prefix = kInf;
@@ -256,7 +282,8 @@ class Search {
         if (done >> k & 1) continue;
         double way = kInf;
         if (last == SweepModel::kStart) {
-          for (int w = 0; w < m_.variants(k); ++w) way = std::min(way, into(SweepModel::kStart, k, w));
+          for (int w = 0; w < m_.variants(k); ++w)
+            way = std::min(way, into(SweepModel::kStart, k, w));
         } else {
           way = out_of(last, v, k);
         }
@@ -279,13 +306,18 @@ class Search {
     double best = split_bound(0, SweepModel::kStart, root), theta = 1.0;
     int stalled = 0;
     Choices c;
-    for (int step = 0; step < kMultiplierSteps && std::chrono::steady_clock::now() < deadline_; ++step) {
+    for (int step = 0; step < kMultiplierSteps && std::chrono::steady_clock::now() < deadline_;
+         ++step) {
       const double bound = split_bound(0, SweepModel::kStart, root, &c);
-      if (bound > best + 1e-12) best = bound, best_pi = pi_, stalled = 0;
-      else if (++stalled > 20) theta *= 0.5, stalled = 0;
+      if (bound > best + 1e-12)
+        best = bound, best_pi = pi_, stalled = 0;
+      else if (++stalled > 20)
+        theta *= 0.5, stalled = 0;
       // d bound / d pi(a, b): +1 where b's way in came from a, -1 where a's way out went to b.
       std::vector<double> g(pi_.size(), 0.0);
-      auto add = [&](int a, int b, double x) { g[static_cast<std::size_t>(a + 1) * (n_ + 1) + b] += x; };
+      auto add = [&](int a, int b, double x) {
+        g[static_cast<std::size_t>(a + 1) * (n_ + 1) + b] += x;
+      };
       for (int j = 0; j < n_; ++j) add(c.in[j], j, 1.0), add(j, c.out[j], -1.0);
       add(SweepModel::kStart, c.last_out, -1.0);
       add(c.end_in, n_, 1.0);
@@ -302,14 +334,16 @@ class Search {
   // the same in the relaxation's reduced costs.
   void expand(std::uint64_t done, int last, const Costs& costs, Costs prefix_rc) {
     if (timed_out_) return;
-    if (++prefixes_ > options_.max_prefixes || (prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)) {
+    if (++prefixes_ > options_.max_prefixes ||
+        (prefixes_ % 1024 == 0 && std::chrono::steady_clock::now() > deadline_)) {
       timed_out_ = true;
       return;
     }
     const int last_variants = last == SweepModel::kStart ? 1 : m_.variants(last);
     if (static_cast<int>(prefix_.size()) == n_) {
       double total = kInf;
-      for (int v = 0; v < last_variants; ++v) total = std::min(total, costs[v] + m_.cost_to_end(last, v));
+      for (int v = 0; v < last_variants; ++v)
+        total = std::min(total, costs[v] + m_.cost_to_end(last, v));
       if (total < best_cost_ - 1e-12) best_cost_ = total, best_order_ = prefix_;
       return;
     }
@@ -319,7 +353,8 @@ class Search {
     if (split_bound(done, last, costs) >= best_cost_ - 1e-12) return;
     // Near the root, the relaxation solved again for this prefix (its subtree is large).
     bool own_relaxation = false;
-    if (!relaxed_.empty() && !prefix_.empty() && static_cast<int>(prefix_.size()) <= kRelaxedDepth) {
+    if (!relaxed_.empty() && !prefix_.empty() &&
+        static_cast<int>(prefix_.size()) <= kRelaxedDepth) {
       OrderRelaxation::Bound b = relaxation_.solve(prefix_, deadline_);
       if (b.solved) {
         if (b.value >= best_cost_ - 1e-12) return;
@@ -331,7 +366,9 @@ class Search {
     struct Pop {
       std::vector<Relaxed>& stack;
       bool own;
-      ~Pop() { if (own) stack.pop_back(); }
+      ~Pop() {
+        if (own) stack.pop_back();
+      }
     } pop{relaxed_, own_relaxation};
     if (!relaxed_.empty() && reduced_bound(done, last, prefix_rc) >= best_cost_ - 1e-12) return;
     struct Child {
@@ -349,14 +386,16 @@ class Search {
       for (int w = 0; w < m_.variants(j); ++w) {
         for (int v = 0; v < last_variants; ++v) {
           c.costs[w] = std::min(c.costs[w], costs[v] + m_.cost(last, v, j, w));
-          if (!relaxed_.empty()) c.reduced[w] = std::min(c.reduced[w], prefix_rc[v] + reduced(last, v, j, w));
+          if (!relaxed_.empty())
+            c.reduced[w] = std::min(c.reduced[w], prefix_rc[v] + reduced(last, v, j, w));
         }
         low = std::min(low, c.costs[w]);
       }
       c.bound = low;
       if (c.bound < best_cost_ - 1e-12) children.push_back(c);
     }
-    std::sort(children.begin(), children.end(), [](const Child& a, const Child& b) { return a.bound < b.bound; });
+    std::sort(children.begin(), children.end(),
+              [](const Child& a, const Child& b) { return a.bound < b.bound; });
     for (const Child& c : children) {
       if (c.bound >= best_cost_ - 1e-12) break;
       const std::uint64_t next = done | (std::uint64_t{1} << c.region);
@@ -405,7 +444,8 @@ namespace {
 
 // Moves single regions and short stretches and reverses stretches while that lowers the cost;
 // `work` counts the regions of every order evaluated.
-std::vector<int> local_search(const SweepModel& model, std::vector<int> order, std::uint64_t& work) {
+std::vector<int> local_search(const SweepModel& model, std::vector<int> order,
+                              std::uint64_t& work) {
   const int n = static_cast<int>(order.size());
   auto cost_of = [&](const std::vector<int>& o) {
     work += static_cast<std::uint64_t>(n);
@@ -419,8 +459,10 @@ std::vector<int> local_search(const SweepModel& model, std::vector<int> order, s
       for (int b = a + 1; b < n; ++b) {
         std::reverse(order.begin() + a, order.begin() + b + 1);
         const double c = cost_of(order);
-        if (c < cost - 1e-12) cost = c, better = true;
-        else std::reverse(order.begin() + a, order.begin() + b + 1);
+        if (c < cost - 1e-12)
+          cost = c, better = true;
+        else
+          std::reverse(order.begin() + a, order.begin() + b + 1);
       }
     // Move a stretch of one to three regions elsewhere.
     for (int length = 1; length <= 3; ++length)
@@ -466,7 +508,8 @@ std::vector<int> perturbed_search(const SweepModel& model, std::vector<int> orde
 
 }  // namespace
 
-ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
+ExactOrder exact_order(const SweepModel& model,
+                       const std::vector<std::vector<int>>& starting_orders,
                        const ExactOrderOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   ExactOrder out;

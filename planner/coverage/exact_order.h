@@ -29,16 +29,17 @@ struct ExactOrderOptions {
 struct ExactOrder {
   std::vector<int> order;
   double cost = 0;
-  bool searched = false;     ///< false above 63 regions: the order is the best starting one
-  bool proven = false;       ///< the search finished: no order is cheaper
-  double lower_bound = 0;    ///< when not proven: no order is cheaper than this
-  double seconds = 0;        ///< the first order's local search included
+  bool searched = false;       ///< false above 63 regions: the order is the best starting one
+  bool proven = false;         ///< the search finished: no order is cheaper
+  double lower_bound = 0;      ///< when not proven: no order is cheaper than this
+  double seconds = 0;          ///< the first order's local search included
   std::uint64_t prefixes = 0;  ///< prefixes expanded
 };
 
 /// Beyond 63 regions nothing is searched (the state key is a 64-bit set): the order is then the
 /// best starting one and `proven` is false.
-ExactOrder exact_order(const SweepModel& model, const std::vector<std::vector<int>>& starting_orders,
+ExactOrder exact_order(const SweepModel& model,
+                       const std::vector<std::vector<int>>& starting_orders,
                        const ExactOrderOptions& options = {});
 
 }  // namespace plantsim::planner

@@ -2,7 +2,6 @@
 #include "planner/coverage/hopfield_order.h"
 
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,7 +53,8 @@ HopfieldResult hopfield_order(const RegionDistances& dist, const HopfieldParams&
   for (int x = 0; x < n; ++x) {
     from_start[x] = dist.from_start[x] / dmax;
     to_end[x] = dist.to_end[x] / dmax;
-    for (int y = 0; y < n; ++y) d(x, y) = x == y ? 0.0 : 0.5 * (dist.between[x][y] + dist.between[y][x]) / dmax;
+    for (int y = 0; y < n; ++y)
+      d(x, y) = x == y ? 0.0 : 0.5 * (dist.between[x][y] + dist.between[y][x]) / dmax;
   }
   std::mt19937_64 rng(p.seed);
   std::uniform_real_distribution<double> noise(-p.init_noise * p.u0, p.init_noise * p.u0);
@@ -69,20 +69,22 @@ HopfieldResult hopfield_order(const RegionDistances& dist, const HopfieldParams&
     v = (0.5 * (1.0 + (u.array() / p.u0).tanh())).matrix();
     bool settled = false;
     for (int step = 0; step < p.max_steps && !settled; ++step) {
-      // dE/dV for E = alpha/2 sum_x sum_k sum_{l!=k} V_xk V_xl + beta/2 sum_k sum_x sum_{y!=x} V_xk V_yk
+      // dE/dV for E = alpha/2 sum_x sum_k sum_{l!=k} V_xk V_xl + beta/2 sum_k sum_x sum_{y!=x} V_xk
+      // V_yk
       //   + gamma/2 (sum V - target)^2 + eta/2 sum_x sum_y sum_k d_xy V_xk (V_y,k+1 + V_y,k-1)
       //   + eta (sum_x d_start,x V_x,0 + sum_x d_x,end V_x,n-1)
       const Eigen::VectorXd row = v.rowwise().sum(), column = v.colwise().sum().transpose();
       const double total = v.sum();
       neighbours.setZero();
-      neighbours.leftCols(n - 1) += v.rightCols(n - 1);   // V_y,k+1
-      neighbours.rightCols(n - 1) += v.leftCols(n - 1);   // V_y,k-1
+      neighbours.leftCols(n - 1) += v.rightCols(n - 1);  // V_y,k+1
+      neighbours.rightCols(n - 1) += v.leftCols(n - 1);  // V_y,k-1
       grad = p.eta * (d * neighbours);
       grad.col(0) += p.eta * from_start;
       grad.col(n - 1) += p.eta * to_end;
       for (int x = 0; x < n; ++x)
         for (int k = 0; k < n; ++k)
-          grad(x, k) += p.alpha * (row[x] - v(x, k)) + p.beta * (column[k] - v(x, k)) + p.gamma * (total - p.target_ratio * n);
+          grad(x, k) += p.alpha * (row[x] - v(x, k)) + p.beta * (column[k] - v(x, k)) +
+                        p.gamma * (total - p.target_ratio * n);
       u += p.dt * (-u / p.tau - grad);
       const Eigen::MatrixXd next = (0.5 * (1.0 + (u.array() / p.u0).tanh())).matrix();
       settled = step >= kWarmUpSteps && (next - v).cwiseAbs().maxCoeff() < p.settle_change;

@@ -6,9 +6,10 @@
 // are missing from its text; the terms it names are those of Hopfield and Tank's travelling
 // salesman network (1985), so that is the energy used, with their constants (alpha = beta =
 // 500, gamma = 200, u0 = 0.02, dt = 1e-5) and f(U) = (1 + tanh(U / u0)) / 2; eta and the
-// activity target were lowered until the network settled on the 21-region pit at all. The path is open: the start and the end cells are fixed
-// neighbours of the first and last positions. A restart whose outputs do not settle on a
-// permutation matrix gives no order; the share that does is reported, never repaired.
+// activity target were lowered until the network settled on the 21-region pit at all. The path is
+// open: the start and the end cells are fixed neighbours of the first and last positions. A restart
+// whose outputs do not settle on a permutation matrix gives no order; the share that does is
+// reported, never repaired.
 #pragma once
 
 #include <cstdint>
@@ -20,16 +21,16 @@
 namespace plantsim::planner {
 
 struct HopfieldParams {
-  double alpha = 500;   ///< a region at two positions
-  double beta = 500;    ///< two regions at one position
-  double gamma = 200;   ///< total activity other than its target
+  double alpha = 500;          ///< a region at two positions
+  double beta = 500;           ///< two regions at one position
+  double gamma = 200;          ///< total activity other than its target
   double target_ratio = 1.05;  ///< the target as a multiple of the number of regions (Hopfield and
                                ///< Tank aimed at 15 for 10 cities; exactly n settled in 0 of 20
                                ///< restarts on the 21-region pit with their eta = 500)
-  double eta = 100;     ///< distance between neighbours in the order (distances scaled to <= 1)
-  double u0 = 0.02;     ///< gain of f
-  double tau = 1.0;     ///< decay of the inputs
-  double dt = 1e-5;     ///< Euler step of the state equation
+  double eta = 100;  ///< distance between neighbours in the order (distances scaled to <= 1)
+  double u0 = 0.02;  ///< gain of f
+  double tau = 1.0;  ///< decay of the inputs
+  double dt = 1e-5;  ///< Euler step of the state equation
   int max_steps = 20000;
   double settle_change = 1e-4;  ///< settled when no output moves more than this in a step
   int restarts = 50;
@@ -39,9 +40,9 @@ struct HopfieldParams {
 
 struct HopfieldResult {
   std::optional<std::vector<int>> order;  ///< the cheapest valid one over the restarts
-  int valid = 0;     ///< restarts whose outputs settled on a permutation matrix
+  int valid = 0;  ///< restarts whose outputs settled on a permutation matrix
   int restarts = 0;
-  int settled = 0;   ///< restarts that stopped moving within max_steps (valid or not)
+  int settled = 0;  ///< restarts that stopped moving within max_steps (valid or not)
 };
 
 HopfieldResult hopfield_order(const RegionDistances& d, const HopfieldParams& params = {});

@@ -28,13 +28,18 @@ using Graph = std::unique_ptr<glp_graph, decltype(&glp_delete_graph)>;
 
 // Sets of regions the relaxation leaves less than one unit out of: for every region, the source
 // side of a minimum cut between it and the end in the graph of regions, if below one.
-std::vector<std::vector<char>> violated_cuts(const std::vector<Way>& ways, const std::vector<double>& x, int n) {
+std::vector<std::vector<char>> violated_cuts(const std::vector<Way>& ways,
+                                             const std::vector<double>& x, int n) {
   std::vector<double> share(static_cast<std::size_t>(n) * (n + 1), 0.0);
   for (std::size_t k = 0; k < ways.size(); ++k)
     if (ways[k].from_region >= 0 && x[k] > 0)
       share[static_cast<std::size_t>(ways[k].from_region) * (n + 1) + ways[k].to_region] += x[k];
-  struct ArcData { double cap; };
-  struct VertexData { int cut; };
+  struct ArcData {
+    double cap;
+  };
+  struct VertexData {
+    int cut;
+  };
   Graph g(glp_create_graph(sizeof(VertexData), sizeof(ArcData)), &glp_delete_graph);
   glp_add_vertices(g.get(), n + 1);
   for (int i = 0; i < n; ++i)
@@ -47,11 +52,13 @@ std::vector<std::vector<char>> violated_cuts(const std::vector<Way>& ways, const
   std::vector<std::vector<char>> cuts;
   for (int source = 0; source < n; ++source) {
     double flow = 0;
-    if (glp_maxflow_ffalg(g.get(), source + 1, n + 1, offsetof(ArcData, cap), &flow, -1, offsetof(VertexData, cut)) != 0)
+    if (glp_maxflow_ffalg(g.get(), source + 1, n + 1, offsetof(ArcData, cap), &flow, -1,
+                          offsetof(VertexData, cut)) != 0)
       continue;
     if (flow >= (1 - kCutSlack) * kFlowScale) continue;
     std::vector<char> side(n + 1, 0);
-    for (int v = 0; v < n; ++v) side[v] = static_cast<char>(static_cast<VertexData*>(g->v[v + 1]->data)->cut != 0);
+    for (int v = 0; v < n; ++v)
+      side[v] = static_cast<char>(static_cast<VertexData*>(g->v[v + 1]->data)->cut != 0);
     if (std::find(cuts.begin(), cuts.end(), side) == cuts.end()) cuts.push_back(std::move(side));
   }
   return cuts;
@@ -83,7 +90,8 @@ OrderRelaxation::OrderRelaxation(const SweepModel& m) : lp_(std::make_unique<Lp>
       const int from = static_cast<int>(node(i, v));
       for (int j = 0; j < n; ++j)
         if (j != i)
-          for (int w = 0; w < m.variants(j); ++w) lp.ways.push_back({from, static_cast<int>(node(j, w)), i, j, m.cost(i, v, j, w)});
+          for (int w = 0; w < m.variants(j); ++w)
+            lp.ways.push_back({from, static_cast<int>(node(j, w)), i, j, m.cost(i, v, j, w)});
       if (i >= 0) lp.ways.push_back({from, lp.end, i, n, m.cost_to_end(i, v)});
     }
   // Rows: one unit into each region (1..n), balance at each sweep (n + node), one unit out of the
@@ -99,7 +107,9 @@ OrderRelaxation::OrderRelaxation(const SweepModel& m) : lp_(std::make_unique<Lp>
   glp_add_cols(p, static_cast<int>(lp.ways.size()));
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0};
-  auto put = [&](int row, int col, double value) { ia.push_back(row), ja.push_back(col), ar.push_back(value); };
+  auto put = [&](int row, int col, double value) {
+    ia.push_back(row), ja.push_back(col), ar.push_back(value);
+  };
   lp.columns_out.assign(n + 1, {});
   for (std::size_t k = 0; k < lp.ways.size(); ++k) {
     const int col = static_cast<int>(k) + 1;
@@ -107,8 +117,10 @@ OrderRelaxation::OrderRelaxation(const SweepModel& m) : lp_(std::make_unique<Lp>
     glp_set_col_bnds(p, col, GLP_DB, 0, 1);
     glp_set_obj_coef(p, col, w.cost);
     if (w.to_node != lp.end) put(w.to_region + 1, col, 1), put(n + w.to_node, col, 1);
-    if (w.from_node == 0) put(lp.start_row, col, 1);
-    else put(n + w.from_node, col, -1);
+    if (w.from_node == 0)
+      put(lp.start_row, col, 1);
+    else
+      put(n + w.from_node, col, -1);
     lp.columns_out[w.from_region + 1].push_back(col);
   }
   if (n > 0) glp_load_matrix(p, static_cast<int>(ia.size()) - 1, ia.data(), ja.data(), ar.data());
@@ -131,7 +143,8 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
   for (std::size_t t = 0; t < prefix.size(); ++t) {
     const int from = t == 0 ? SweepModel::kStart : prefix[t - 1];
     for (int col : lp.columns_out[from + 1])
-      if (lp.ways[col - 1].to_region != prefix[t]) glp_set_col_bnds(p, col, GLP_FX, 0, 0), lp.closed.push_back(col);
+      if (lp.ways[col - 1].to_region != prefix[t])
+        glp_set_col_bnds(p, col, GLP_FX, 0, 0), lp.closed.push_back(col);
   }
 
   glp_smcp parm;
@@ -143,7 +156,8 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
   // duals count as zero.
   std::size_t cuts_in_solution = 0;
   for (int round = 0;; ++round) {
-    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    const double left =
+        std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
     if (left <= 0 || round == kMaxCutRounds) break;
     parm.tm_lim = static_cast<int>(std::ceil(left * 1000));
     if (glp_simplex(p, &parm) != 0 || glp_get_status(p) != GLP_OPT) {
@@ -154,7 +168,8 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
     bound.solved = true;
     bound.value = glp_get_obj_val(p);
     cuts_in_solution = lp.cut_sides.size();
-    for (std::size_t k = 0; k < lp.ways.size(); ++k) x[k] = glp_get_col_prim(p, static_cast<int>(k) + 1);
+    for (std::size_t k = 0; k < lp.ways.size(); ++k)
+      x[k] = glp_get_col_prim(p, static_cast<int>(k) + 1);
     const std::vector<std::vector<char>> cuts = violated_cuts(lp.ways, x, n);
     if (cuts.empty()) break;
     for (const std::vector<char>& side : cuts) {
@@ -163,7 +178,8 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
       std::vector<int> index{0};
       std::vector<double> ones{0};
       for (std::size_t k = 0; k < lp.ways.size(); ++k)
-        if (lp.ways[k].from_region >= 0 && side[lp.ways[k].from_region] && !side[lp.ways[k].to_region])
+        if (lp.ways[k].from_region >= 0 && side[lp.ways[k].from_region] &&
+            !side[lp.ways[k].to_region])
           index.push_back(static_cast<int>(k) + 1), ones.push_back(1);
       glp_set_mat_row(p, row, static_cast<int>(index.size()) - 1, index.data(), ones.data());
       lp.cut_sides.push_back(side);
@@ -189,7 +205,8 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
     if (w.to_node != lp.end) rc -= dual(w.to_region + 1) + dual(n + w.to_node);
     rc -= w.from_node == 0 ? dual(lp.start_row) : -dual(n + w.from_node);
     for (std::size_t c = 0; c < lp.cut_sides.size(); ++c)
-      if (w.from_region >= 0 && lp.cut_sides[c][w.from_region] && !lp.cut_sides[c][w.to_region]) rc -= z[c];
+      if (w.from_region >= 0 && lp.cut_sides[c][w.from_region] && !lp.cut_sides[c][w.to_region])
+        rc -= z[c];
     bound.reduced[static_cast<std::size_t>(w.from_node) * nodes_ + w.to_node] = rc;
     magnitude = std::max(magnitude, std::abs(rc) + std::abs(w.cost));
   }

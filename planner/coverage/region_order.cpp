@@ -23,7 +23,8 @@ std::vector<int> greedy_order(const SweepModel& m) {
     double best_cost = std::numeric_limits<double>::infinity();
     for (int j = 0; j < n; ++j)
       for (int w = 0; !used[j] && w < m.variants(j); ++w)
-        if (const double c = m.cost(last, last_variant, j, w); best < 0 || c < best_cost) best = j, best_variant = w, best_cost = c;
+        if (const double c = m.cost(last, last_variant, j, w); best < 0 || c < best_cost)
+          best = j, best_variant = w, best_cost = c;
     used[best] = true;
     order.push_back(best);
     last = best, last_variant = best_variant;
@@ -51,7 +52,8 @@ PottsResult potts_order(const RegionDistances& dist, const PottsParams& p) {
   int temperatures = 0;
   for (double t = p.t0; t > p.t_min; t *= p.cooling) ++temperatures;
   const double per_restart = static_cast<double>(n) * n * n * p.sweeps * temperatures;
-  const int restarts = std::max(1, std::min(p.restarts, static_cast<int>(kUpdateBudget / per_restart)));
+  const int restarts =
+      std::max(1, std::min(p.restarts, static_cast<int>(kUpdateBudget / per_restart)));
   for (int restart = 0; restart < restarts; ++restart) {
     for (double& x : v) x = (1.0 + noise(rng)) / n;
     for (double t = p.t0; t > p.t_min; t *= p.cooling) {
@@ -65,7 +67,8 @@ PottsResult potts_order(const RegionDistances& dist, const PottsParams& p) {
             double near = (k == 0 ? first[x] : 0.0) + (k == n - 1 ? last[x] : 0.0), elsewhere = 0;
             for (int y = 0; y < n; ++y) {
               if (y == x) continue;
-              near += (k > 0 ? d[y * n + x] * v[y * n + k - 1] : 0.0) + (k + 1 < n ? d[x * n + y] * v[y * n + k + 1] : 0.0);
+              near += (k > 0 ? d[y * n + x] * v[y * n + k - 1] : 0.0) +
+                      (k + 1 < n ? d[x * n + y] * v[y * n + k + 1] : 0.0);
             }
             for (int l = 0; l < n; ++l)
               if (l != k) elsewhere += v[x * n + l];

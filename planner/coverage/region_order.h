@@ -20,13 +20,13 @@ std::vector<int> greedy_order(const SweepModel& model);
 /// not settle on a permutation are read position by position (the most active unused region),
 /// so there is always an order; how many settled by themselves is counted.
 struct PottsParams {
-  double a = 1.0;        ///< penalty: a region at two positions
-  double d = 1.0;        ///< weight of the (normalised) distances
-  double t0 = 2.0;       ///< starting temperature
-  double cooling = 0.93; ///< temperature factor per step
+  double a = 1.0;         ///< penalty: a region at two positions
+  double d = 1.0;         ///< weight of the (normalised) distances
+  double t0 = 2.0;        ///< starting temperature
+  double cooling = 0.93;  ///< temperature factor per step
   double t_min = 0.005;
-  int sweeps = 4;        ///< updates of every position per temperature
-  int restarts = 20;     ///< fewer on large maps: the work is capped near 3e9 updates
+  int sweeps = 4;     ///< updates of every position per temperature
+  int restarts = 20;  ///< fewer on large maps: the work is capped near 3e9 updates
   std::uint64_t seed = 1;
 };
 

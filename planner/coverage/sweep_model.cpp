@@ -22,12 +22,14 @@ double distance_scale(const RegionDistances& d) {
   return largest > 0 ? largest : 1.0;
 }
 
-SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, Cell start, std::optional<Cell> end,
-                       CoverageWeights weights)
+SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, Cell start,
+                       std::optional<Cell> end, CoverageWeights weights)
     : grid_(grid), regions_(std::move(regions)), start_(start), end_(end), weights_(weights) {
   if (regions_.size() > static_cast<std::size_t>(kMaxRegions))
-    throw std::invalid_argument(std::to_string(regions_.size()) + " sub-regions: more than the coverage planners' limit of " +
-                                std::to_string(kMaxRegions) + " (use larger cells or a smaller work area)");
+    throw std::invalid_argument(std::to_string(regions_.size()) +
+                                " sub-regions: more than the coverage planners' limit of " +
+                                std::to_string(kMaxRegions) +
+                                " (use larger cells or a smaller work area)");
   // Up to eight sweeps per region; a one-cell-wide region has fewer distinct ones.
   for (const CellRect& r : regions_) {
     std::vector<SweepVariant> vs;
@@ -35,7 +37,8 @@ SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, 
       for (int corner = 0; corner < 4; ++corner) {
         SweepVariant v{sweep(r, corner, along_x), 0};
         v.turns = turns_along(v.cells);
-        if (std::none_of(vs.begin(), vs.end(), [&](const SweepVariant& o) { return o.cells == v.cells; }))
+        if (std::none_of(vs.begin(), vs.end(),
+                         [&](const SweepVariant& o) { return o.cells == v.cells; }))
           vs.push_back(std::move(v));
       }
     offset_.push_back(nodes_);
@@ -60,7 +63,8 @@ SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, 
         const std::vector<Cell> way = grid_.descend(dist, end_cell(i, v), end_heading(i, v));
         if (way.empty()) continue;
         for (const auto& [j, w] : sweeps)
-          if (j != i) cost_[node(i, v) * nodes_ + node(j, w)] = junction_cost(i, v, way, &variants_[j][w]);
+          if (j != i)
+            cost_[node(i, v) * nodes_ + node(j, w)] = junction_cost(i, v, way, &variants_[j][w]);
       }
   }
   if (end_) {
@@ -73,7 +77,9 @@ SweepModel::SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, 
   }
 }
 
-Cell SweepModel::end_cell(int i, int v) const { return i == kStart ? start_ : variants_[i][v].cells.back(); }
+Cell SweepModel::end_cell(int i, int v) const {
+  return i == kStart ? start_ : variants_[i][v].cells.back();
+}
 
 int SweepModel::end_heading(int i, int v) const {
   if (i == kStart || variants_[i][v].cells.size() < 2) return -1;
@@ -81,10 +87,12 @@ int SweepModel::end_heading(int i, int v) const {
   return heading_between(c[c.size() - 2], c.back());
 }
 
-double SweepModel::junction_cost(int i, int v, const std::vector<Cell>& way, const SweepVariant* next) const {
+double SweepModel::junction_cost(int i, int v, const std::vector<Cell>& way,
+                                 const SweepVariant* next) const {
   // Turns where the way leaves the last lane and where it enters the next one count too.
   std::vector<Cell> joined;
-  if (i != kStart && variants_[i][v].cells.size() >= 2) joined.push_back(variants_[i][v].cells[variants_[i][v].cells.size() - 2]);
+  if (i != kStart && variants_[i][v].cells.size() >= 2)
+    joined.push_back(variants_[i][v].cells[variants_[i][v].cells.size() - 2]);
   joined.insert(joined.end(), way.begin(), way.end());
   if (next && next->cells.size() >= 2) joined.push_back(next->cells[1]);
   const int turns = turns_along(joined) + (next ? next->turns : 0);
@@ -92,7 +100,8 @@ double SweepModel::junction_cost(int i, int v, const std::vector<Cell>& way, con
 }
 
 std::vector<Cell> SweepModel::travel(int i, int v, int j, int w) const {
-  return grid_.descend(grid_.distances_from({variants_[j][w].cells.front()}), end_cell(i, v), end_heading(i, v));
+  return grid_.descend(grid_.distances_from({variants_[j][w].cells.front()}), end_cell(i, v),
+                       end_heading(i, v));
 }
 
 std::vector<Cell> SweepModel::travel_to_end(int i, int v) const {
@@ -108,7 +117,8 @@ RegionDistances SweepModel::region_distances() const {
   d.from_start.assign(n, inf);
   d.to_end.assign(n, end_ ? inf : 0.0);
   for (int j = 0; j < n; ++j)
-    for (int w = 0; w < variants(j); ++w) d.from_start[j] = std::min(d.from_start[j], cost(kStart, 0, j, w));
+    for (int w = 0; w < variants(j); ++w)
+      d.from_start[j] = std::min(d.from_start[j], cost(kStart, 0, j, w));
   for (int i = 0; i < n; ++i) {
     if (end_)
       for (int v = 0; v < variants(i); ++v) d.to_end[i] = std::min(d.to_end[i], cost_to_end(i, v));

@@ -40,8 +40,8 @@ double distance_scale(const RegionDistances& d);
 class SweepModel {
  public:
   /// Throws std::invalid_argument when the regions are too many to tabulate (over 400).
-  SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, Cell start, std::optional<Cell> end,
-             CoverageWeights weights = {});
+  SweepModel(const CoverageGrid& grid, std::vector<CellRect> regions, Cell start,
+             std::optional<Cell> end, CoverageWeights weights = {});
 
   static constexpr int kStart = -1;  ///< "region" index of the start cell (one variant, 0)
   static constexpr int kMaxRegions = 400;

@@ -14,7 +14,8 @@ namespace plantsim::planner {
 using geom::polyline_length;
 
 GcrPlanner::GcrPlanner(const PlannerInput& input, bool shortcut_pass)
-    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
+           input.inflation_m),
       step_m_(input.gcr_step_m),
       shortcut_pass_(shortcut_pass) {}
 
@@ -53,7 +54,8 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
     }
     const Vec2 to_goal = goal - p;
     const Vec2 step = gradient_step(p, goal, step_m_);
-    const Vec2 grad_next = step == to_goal ? goal : p + step;  // the last step ends on the goal exactly
+    const Vec2 grad_next =
+        step == to_goal ? goal : p + step;  // the last step ends on the goal exactly
     const bool gradient_free = map_.segment_free(p, grad_next);
     if (!rotating) {
       if (gradient_free) {
@@ -67,7 +69,8 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
       const double sx = to_goal.x >= 0 ? 1.0 : -1.0, sy = to_goal.y >= 0 ? 1.0 : -1.0;
       const Vec2 tx{sx, 0}, ty{0, sy};
       const bool x_first = std::fabs(to_goal.x) >= std::fabs(to_goal.y);
-      priorities = x_first ? std::vector<Vec2>{tx, ty, -1.0 * ty, -1.0 * tx} : std::vector<Vec2>{ty, tx, -1.0 * tx, -1.0 * ty};
+      priorities = x_first ? std::vector<Vec2>{tx, ty, -1.0 * ty, -1.0 * tx}
+                           : std::vector<Vec2>{ty, tx, -1.0 * tx, -1.0 * ty};
       priority_key = (x_first ? 4 : 0) + (sx > 0 ? 2 : 0) + (sy > 0 ? 1 : 0);
       axis = {0, 0};
       contact = p;
@@ -98,8 +101,11 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
     if (axis == Vec2{0, 0}) w.first_rotation_axes.push_back(chosen);
     axis = chosen;
     const int ax = static_cast<int>(axis.x), ay = static_cast<int>(axis.y);
-    if (!rotation_states.emplace(contact.x, contact.y, steps_x, steps_y, ax, ay, priority_key).second) {
-      w.failure = "oscillating: coordinate rotation came back to a state it was in (it would loop for ever)";
+    if (!rotation_states.emplace(contact.x, contact.y, steps_x, steps_y, ax, ay, priority_key)
+             .second) {
+      w.failure =
+          "oscillating: coordinate rotation came back to a state it was in (it would loop for "
+          "ever)";
       return w;
     }
 
@@ -183,11 +189,14 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
       out.path = best;
       out.length = polyline_length(best);
       char note[200];
-      std::snprintf(note, sizeof note, "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s%s", raw_length,
-                    raw.rotations, out.length, longer && !shortcut_pass_ ? " (longer than the walk, as written)" : "",
-                    shortcut_pass_ ? (longer ? " (plantsim's variant: the walk, shorter than the optimisation)"
-                                             : " (with plantsim's shortcut pass)")
-                                   : "");
+      std::snprintf(note, sizeof note,
+                    "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s%s", raw_length,
+                    raw.rotations, out.length,
+                    longer && !shortcut_pass_ ? " (longer than the walk, as written)" : "",
+                    shortcut_pass_
+                        ? (longer ? " (plantsim's variant: the walk, shorter than the optimisation)"
+                                  : " (with plantsim's shortcut pass)")
+                        : "");
       out.note = note;
     }
   }

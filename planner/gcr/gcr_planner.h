@@ -39,15 +39,14 @@ class GcrPlanner : public Planner {
 
   struct Walk {
     bool reached = false;
-    std::string failure;            ///< why not, when not reached
-    std::vector<Vec2> points;       ///< every step
+    std::string failure;                     ///< why not, when not reached
+    std::vector<Vec2> points;                ///< every step
     std::vector<std::size_t> rotation_ends;  ///< indices in points where a rotation run ended
-    int rotations = 0;              ///< times the gradient was blocked (local obstacles met)
+    int rotations = 0;  ///< times the gradient was blocked (local obstacles met)
     std::vector<Vec2> first_rotation_axes;  ///< the axis each rotation run set off along
   };
   /// The raw gradient / coordinate-rotation walk.
   Walk walk(Vec2 start, Vec2 goal) const;
-
 
  private:
   std::vector<Vec2> optimise(const Walk& raw, int depth) const;

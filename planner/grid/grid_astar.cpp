@@ -21,8 +21,8 @@ double octile(int dx, int dy) {
 
 }  // namespace
 
-GridSearchResult grid_astar(int width, int height, const std::function<bool(int, int)>& free, int sx, int sy,
-                            int gx, int gy) {
+GridSearchResult grid_astar(int width, int height, const std::function<bool(int, int)>& free,
+                            int sx, int sy, int gx, int gy) {
   GridSearchResult out;
   auto ok = [&](int x, int y) { return x >= 0 && y >= 0 && x < width && y < height && free(x, y); };
   if (!ok(sx, sy) || !ok(gx, gy)) return out;
@@ -35,7 +35,8 @@ GridSearchResult grid_astar(int width, int height, const std::function<bool(int,
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             if ((dx == 0 && dy == 0) || !ok(x + dx, y + dy)) continue;
-            if (dx != 0 && dy != 0 && (!ok(x + dx, y) || !ok(x, y + dy))) continue;  // no corner cutting
+            if (dx != 0 && dy != 0 && (!ok(x + dx, y) || !ok(x, y + dy)))
+              continue;  // no corner cutting
             emit((y + dy) * width + (x + dx), dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
           }
       });
@@ -47,28 +48,33 @@ GridSearchResult grid_astar(int width, int height, const std::function<bool(int,
   return out;
 }
 
-GridPlanner::GridPlanner(const PlannerInput& input, double resolution_m) : resolution_(resolution_m) {
+GridPlanner::GridPlanner(const PlannerInput& input, double resolution_m)
+    : resolution_(resolution_m) {
   const auto t0 = std::chrono::steady_clock::now();
   free_floor_ = input.floor.inflated(-input.inflation_m);
   origin_ = {input.floor.xmin, input.floor.ymin};
   width_ = static_cast<int>(std::ceil(input.floor.width() / resolution_));
   height_ = static_cast<int>(std::ceil(input.floor.height() / resolution_));
   if (static_cast<double>(width_) * height_ > 64.0e6)
-    throw std::invalid_argument("grid planner: more than 64 million cells; use a coarser resolution");
+    throw std::invalid_argument(
+        "grid planner: more than 64 million cells; use a coarser resolution");
   blocked_.assign(static_cast<std::size_t>(width_) * height_, 0);
   const Rect& f = input.floor;
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
-      const Rect c{f.xmin + x * resolution_, f.ymin + y * resolution_, f.xmin + (x + 1) * resolution_,
-                   f.ymin + (y + 1) * resolution_};
-      if (c.xmin < free_floor_.xmin || c.xmax > free_floor_.xmax || c.ymin < free_floor_.ymin || c.ymax > free_floor_.ymax)
+      const Rect c{f.xmin + x * resolution_, f.ymin + y * resolution_,
+                   f.xmin + (x + 1) * resolution_, f.ymin + (y + 1) * resolution_};
+      if (c.xmin < free_floor_.xmin || c.xmax > free_floor_.xmax || c.ymin < free_floor_.ymin ||
+          c.ymax > free_floor_.ymax)
         blocked_[static_cast<std::size_t>(y) * width_ + x] = 1;
     }
   for (const Rect& r : inflate(input.obstacles, input.inflation_m, input.corner_steps)) {
     const int x0 = std::max(0, static_cast<int>(std::floor((r.xmin - f.xmin) / resolution_)));
-    const int x1 = std::min(width_ - 1, static_cast<int>(std::ceil((r.xmax - f.xmin) / resolution_)) - 1);
+    const int x1 =
+        std::min(width_ - 1, static_cast<int>(std::ceil((r.xmax - f.xmin) / resolution_)) - 1);
     const int y0 = std::max(0, static_cast<int>(std::floor((r.ymin - f.ymin) / resolution_)));
-    const int y1 = std::min(height_ - 1, static_cast<int>(std::ceil((r.ymax - f.ymin) / resolution_)) - 1);
+    const int y1 =
+        std::min(height_ - 1, static_cast<int>(std::ceil((r.ymax - f.ymin) / resolution_)) - 1);
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) blocked_[static_cast<std::size_t>(y) * width_ + x] = 1;
   }

@@ -20,8 +20,8 @@ struct GridSearchResult {
 };
 
 /// `free(x, y)` tells whether a cell may be entered; cells outside width x height never may.
-GridSearchResult grid_astar(int width, int height, const std::function<bool(int, int)>& free, int sx, int sy,
-                            int gx, int gy);
+GridSearchResult grid_astar(int width, int height, const std::function<bool(int, int)>& free,
+                            int sx, int sy, int gx, int gy);
 
 /// Planner "grid": cells of `grid_resolution_m` (default 0.1 m); a cell is blocked when it
 /// overlaps an inflated obstacle's interior or lies outside the free floor; the path runs

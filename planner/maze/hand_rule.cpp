@@ -18,16 +18,20 @@ const char* priority(Hand hand) { return hand == Hand::kLeft ? "LSR" : "RSL"; }
 
 std::string_view to_string(WalkEnd e) {
   switch (e) {
-    case WalkEnd::kExit: return "exit";
-    case WalkEnd::kBackAtEntrance: return "back at the entrance";
-    case WalkEnd::kBlocked: return "scripted corridor closed";
-    case WalkEnd::kStepLimit: return "step limit";
+    case WalkEnd::kExit:
+      return "exit";
+    case WalkEnd::kBackAtEntrance:
+      return "back at the entrance";
+    case WalkEnd::kBlocked:
+      return "scripted corridor closed";
+    case WalkEnd::kStepLimit:
+      return "step limit";
   }
   return "?";
 }
 
-MazeWalk walk_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand,
-                   std::string_view script) {
+MazeWalk walk_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit,
+                   Hand hand, std::string_view script) {
   MazeWalk w;
   w.nodes.push_back(entrance);
   if (!maze.open(entrance, heading)) {
@@ -102,8 +106,8 @@ std::vector<LatticeNode> shortest_route(const TunnelMaze& maze, LatticeNode from
   return {route.rbegin(), route.rend()};
 }
 
-MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading, LatticeNode exit, Hand hand,
-                        ThirdString third_string) {
+MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading heading,
+                        LatticeNode exit, Hand hand, ThirdString third_string) {
   MazeSolution s;
   s.exploration = walk_maze(maze, entrance, heading, exit, hand);
   s.simplified = simplify_turns(s.exploration.turns, hand);
@@ -128,8 +132,9 @@ MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading he
         script += change;
         const MazeWalk w = walk_maze(maze, entrance, heading, exit, then, script);
         s.attempts.push_back(w);
-        s.attempt_labels.push_back("marker " + std::to_string(n) + " " + c + "->" + change + ", then " +
-                                   (then == Hand::kLeft ? "left" : "right") + " hand: " + std::string(to_string(w.end)));
+        s.attempt_labels.push_back("marker " + std::to_string(n) + " " + c + "->" + change +
+                                   ", then " + (then == Hand::kLeft ? "left" : "right") +
+                                   " hand: " + std::string(to_string(w.end)));
         s.search_log += s.attempt_labels.back() + "; ";
         if (w.end == WalkEnd::kExit) {
           s.third = w.turns;
@@ -137,8 +142,10 @@ MazeSolution solve_maze(const TunnelMaze& maze, LatticeNode entrance, Heading he
           if (third_string == ThirdString::kResimplified) {
             // The third string is a record like the first: the second step's rules drop the
             // dead ends it still visits, when the shorter string still reaches the exit.
-            const MazeWalk shorter = walk_maze(maze, entrance, heading, exit, then, simplify_turns(w.turns, then));
-            if (shorter.end == WalkEnd::kExit && shorter.nodes.size() < w.nodes.size()) s.route = shorter;
+            const MazeWalk shorter =
+                walk_maze(maze, entrance, heading, exit, then, simplify_turns(w.turns, then));
+            if (shorter.end == WalkEnd::kExit && shorter.nodes.size() < w.nodes.size())
+              s.route = shorter;
           }
           return s;
         }

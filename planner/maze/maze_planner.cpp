@@ -11,8 +11,12 @@
 
 namespace plantsim::planner {
 
-MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration, ThirdString third_string)
-    : maze_(input.maze), hand_(hand), drive_exploration_(drive_exploration), third_string_(third_string) {}
+MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration,
+                         ThirdString third_string)
+    : maze_(input.maze),
+      hand_(hand),
+      drive_exploration_(drive_exploration),
+      third_string_(third_string) {}
 
 PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -33,13 +37,17 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   auto on_edge = [&](Vec2 p, LatticeNode a, LatticeNode b) {
     const Vec2 pa = maze_->position(a), pb = maze_->position(b), d = pb - pa;
     const double t = geom::dot(p - pa, d) / geom::dot(d, d);
-    return t > 0 && t < 1 && std::fabs(geom::cross(d, p - pa)) / std::sqrt(geom::dot(d, d)) < 0.5 * maze_->corridor_m();
+    return t > 0 && t < 1 &&
+           std::fabs(geom::cross(d, p - pa)) / std::sqrt(geom::dot(d, d)) <
+               0.5 * maze_->corridor_m();
   };
   auto to_path = [&](const std::vector<LatticeNode>& nodes, bool to_goal) {
     std::vector<Vec2> p{start};
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       if (i == 0 && nodes.size() > 1 && on_edge(start, nodes[0], nodes[1])) continue;
-      if (to_goal && i + 1 == nodes.size() && nodes.size() > 1 && on_edge(goal, nodes[i - 1], nodes[i])) continue;
+      if (to_goal && i + 1 == nodes.size() && nodes.size() > 1 &&
+          on_edge(goal, nodes[i - 1], nodes[i]))
+        continue;
       p.push_back(maze_->position(nodes[i]));
     }
     if (to_goal) p.push_back(goal);
@@ -56,10 +64,14 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   for (const auto& [where, tries] : ended_at) {
     const WalkEnd end = where.second;
     std::string text = tries.size() > 1 ? "tries " : "try ";
-    for (std::size_t i = 0; i < tries.size(); ++i) text += (i ? ", " : "") + std::to_string(tries[i]);
-    text += end == WalkEnd::kExit ? ": exit" : end == WalkEnd::kBackAtEntrance ? ": back" :
-            end == WalkEnd::kBlocked ? ": closed" : ": step limit";
-    r.marks.push_back({maze_->position({where.first.first, where.first.second}), text, PlanMark::Kind::kTriedEnd});
+    for (std::size_t i = 0; i < tries.size(); ++i)
+      text += (i ? ", " : "") + std::to_string(tries[i]);
+    text += end == WalkEnd::kExit             ? ": exit"
+            : end == WalkEnd::kBackAtEntrance ? ": back"
+            : end == WalkEnd::kBlocked        ? ": closed"
+                                              : ": step limit";
+    r.marks.push_back({maze_->position({where.first.first, where.first.second}), text,
+                       PlanMark::Kind::kTriedEnd});
   }
   // One label per junction and walk: the letters recorded there in the order they were ("S U L"
   // where the walk came back from a dead end).
@@ -79,15 +91,18 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   char line[512];
   std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
                 hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
-                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_), s.simplified.c_str());
+                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_),
+                s.simplified.c_str());
   r.note = line;
   if (s.ring_search)
     r.note += "ring search: " + s.search_log + "third string " + s.third +
-              (third_string_ == ThirdString::kResimplified ? " (simplified again where that still reaches the exit)"
-                                                            : " (driven as recorded)") +
+              (third_string_ == ThirdString::kResimplified
+                   ? " (simplified again where that still reaches the exit)"
+                   : " (driven as recorded)") +
               "; ";
   std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
-                s.route.turns.c_str(), s.route.length_m(*maze_), std::string(to_string(s.route.end)).c_str(),
+                s.route.turns.c_str(), s.route.length_m(*maze_),
+                std::string(to_string(s.route.end)).c_str(),
                 best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
   r.note += line;
   if (s.solved()) {
@@ -95,7 +110,8 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
     std::vector<LatticeNode> nodes = s.route.nodes;
     if (drive_exploration_) {
       nodes = s.exploration.nodes;
-      if (s.exploration.end != WalkEnd::kExit) nodes.insert(nodes.end(), s.route.nodes.begin() + 1, s.route.nodes.end());
+      if (s.exploration.end != WalkEnd::kExit)
+        nodes.insert(nodes.end(), s.route.nodes.begin() + 1, s.route.nodes.end());
     }
     r.path = to_path(nodes, true);
     r.length = geom::polyline_length(r.path);

@@ -20,7 +20,8 @@ class MazePlanner : public Planner {
   MazePlanner(const PlannerInput& input, Hand hand, bool drive_exploration = false,
               ThirdString third_string = ThirdString::kAsRecorded);
   std::string name() const override {
-    return std::string(hand_ == Hand::kLeft ? "maze-left" : "maze-right") + (drive_exploration_ ? "-explore" : "") +
+    return std::string(hand_ == Hand::kLeft ? "maze-left" : "maze-right") +
+           (drive_exploration_ ? "-explore" : "") +
            (third_string_ == ThirdString::kResimplified ? "-resimplified" : "");
   }
   PlanResult plan(Vec2 start, Vec2 goal) override;

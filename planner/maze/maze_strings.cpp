@@ -8,7 +8,8 @@ namespace plantsim::planner {
 std::string simplify_turns(std::string_view turns, Hand hand) {
   for (char c : turns)
     if (c != 'L' && c != 'R' && c != 'S' && c != 'U')
-      throw std::invalid_argument(std::string("turn string may hold only L, R, S and U, not '") + c + "'");
+      throw std::invalid_argument(std::string("turn string may hold only L, R, S and U, not '") +
+                                  c + "'");
   struct Rule {
     const char* pattern;
     const char* replacement;

@@ -16,17 +16,23 @@ double side(Vec2 a, Vec2 p, Vec2 q) {
   return (u.x * v.y - u.y * v.x) / std::sqrt(u.x * u.x + u.y * u.y);
 }
 
-bool near(Vec2 a, Vec2 b, double tolerance) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) <= tolerance * tolerance; }
+bool near(Vec2 a, Vec2 b, double tolerance) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) <= tolerance * tolerance;
+}
 
 }  // namespace
 
-std::vector<Vec2> funnel_path(Vec2 start, const std::vector<Portal>& portals, Vec2 goal, double tolerance) {
+std::vector<Vec2> funnel_path(Vec2 start, const std::vector<Portal>& portals, Vec2 goal,
+                              double tolerance) {
   std::vector<Vec2> path{start};
   Vec2 apex = start, left = start, right = start;
-  std::ptrdiff_t left_at = -1, right_at = -1;  // the portal each side's end came from (-1: the start)
+  std::ptrdiff_t left_at = -1,
+                 right_at = -1;  // the portal each side's end came from (-1: the start)
   // How far q lies left of the side from the apex through p; nothing when p is the apex (the
   // side not drawn yet, or drawn from a portal that ends at the apex).
-  const auto beside = [&](Vec2 p, Vec2 q) { return near(apex, p, tolerance) ? 0.0 : side(apex, p, q); };
+  const auto beside = [&](Vec2 p, Vec2 q) {
+    return near(apex, p, tolerance) ? 0.0 : side(apex, p, q);
+  };
   const auto bend = [&](Vec2 at) {
     if (!near(path.back(), at, tolerance)) path.push_back(at);
     apex = left = right = at;

@@ -20,6 +20,7 @@ struct Portal {
 };
 
 /// start, the bends, goal. `tolerance`: a length; sides closer than it count as on the line.
-std::vector<Vec2> funnel_path(Vec2 start, const std::vector<Portal>& portals, Vec2 goal, double tolerance);
+std::vector<Vec2> funnel_path(Vec2 start, const std::vector<Portal>& portals, Vec2 goal,
+                              double tolerance);
 
 }  // namespace plantsim::planner

@@ -29,14 +29,15 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, Kernel>;
-using FaceBase =
-    CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<std::int32_t, Kernel>>;
+using FaceBase = CGAL::Constrained_triangulation_face_base_2<
+    Kernel, CGAL::Triangulation_face_base_with_info_2<std::int32_t, Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 
 // Exact orientation of three mesh points (CGAL's filtered predicate): > 0 counter-clockwise.
 int orientation(Vec2 a, Vec2 b, Vec2 c) {
-  return static_cast<int>(CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)));
+  return static_cast<int>(CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y),
+                                            Kernel::Point_2(c.x, c.y)));
 }
 
 // The walls: every cell's bottom and top, and the parts of its sides no portal covers.
@@ -65,7 +66,8 @@ using Piece = ConvexMesh::Piece;
 
 class Merger {
  public:
-  Merger(std::vector<Piece> pieces, const std::vector<Vec2>& points) : piece_(std::move(pieces)), points_(points) {
+  Merger(std::vector<Piece> pieces, const std::vector<Vec2>& points)
+      : piece_(std::move(pieces)), points_(points) {
     owner_.resize(piece_.size());
     std::iota(owner_.begin(), owner_.end(), 0);
   }
@@ -91,7 +93,8 @@ class Merger {
     while (!queue.empty()) {
       const Candidate c = queue.top();
       queue.pop();
-      if (!piece_[c.a].alive || !piece_[c.b].alive || piece_[c.a].area + piece_[c.b].area != c.area) continue;
+      if (!piece_[c.a].alive || !piece_[c.b].alive || piece_[c.a].area + piece_[c.b].area != c.area)
+        continue;
       if (merge(c.a, c.b)) offer(c.a);
     }
   }
@@ -112,9 +115,13 @@ class Merger {
     for (int k = 0; k < m; ++k)
       if (Q.corner[k] == v && Q.corner[(k + 1) % m] == u) j = k;
     if (j < 0) return false;
-    const Vec2 before_u = points_[P.corner[(i + n - 1) % n]], after_u = points_[Q.corner[(j + 2) % m]];
-    const Vec2 before_v = points_[Q.corner[(j + m - 1) % m]], after_v = points_[P.corner[(i + 2) % n]];
-    if (orientation(before_u, points_[u], after_u) < 0 || orientation(before_v, points_[v], after_v) < 0) return false;
+    const Vec2 before_u = points_[P.corner[(i + n - 1) % n]],
+               after_u = points_[Q.corner[(j + 2) % m]];
+    const Vec2 before_v = points_[Q.corner[(j + m - 1) % m]],
+               after_v = points_[P.corner[(i + 2) % n]];
+    if (orientation(before_u, points_[u], after_u) < 0 ||
+        orientation(before_v, points_[v], after_v) < 0)
+      return false;
     Piece joined;
     // P from v round to u, then Q from u round to v (its corners strictly between).
     for (int k = 0; k < n - 1; ++k) {
@@ -138,7 +145,6 @@ class Merger {
   std::vector<std::int32_t> owner_;
 };
 
-
 // The free triangles of a constrained Delaunay triangulation of the walls, as pieces to merge;
 // fills `points` with the triangulation's vertices.
 std::vector<Piece> free_triangles(const FreeSpaceMesh& rectangles, std::vector<Vec2>& points) {
@@ -147,11 +153,16 @@ std::vector<Piece> free_triangles(const FreeSpaceMesh& rectangles, std::vector<V
   std::vector<Vec2> sites;
   sites.reserve(4 * rectangles.cells().size());
   for (const MeshCell& c : rectangles.cells())
-    for (const Vec2 p : {Vec2{c.xlo, c.ylo}, Vec2{c.xhi, c.ylo}, Vec2{c.xlo, c.yhi}, Vec2{c.xhi, c.yhi}}) sites.push_back(p);
+    for (const Vec2 p :
+         {Vec2{c.xlo, c.ylo}, Vec2{c.xhi, c.ylo}, Vec2{c.xlo, c.yhi}, Vec2{c.xhi, c.yhi}})
+      sites.push_back(p);
   const auto before = [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
   std::sort(sites.begin(), sites.end(), before);
   sites.erase(std::unique(sites.begin(), sites.end()), sites.end());
-  const auto site = [&](Vec2 p) { return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), p, before) - sites.begin()); };
+  const auto site = [&](Vec2 p) {
+    return static_cast<std::size_t>(std::lower_bound(sites.begin(), sites.end(), p, before) -
+                                    sites.begin());
+  };
   std::vector<std::pair<std::size_t, std::size_t>> walls;
   for (const auto& [a, b] : walls_of(rectangles)) walls.emplace_back(site(a), site(b));
   std::vector<Kernel::Point_2> cgal_sites;
@@ -172,7 +183,8 @@ std::vector<Piece> free_triangles(const FreeSpaceMesh& rectangles, std::vector<V
   std::vector<Cdt::Face_handle> faces;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    const Vec2 a = points[f->vertex(0)->info()], b = points[f->vertex(1)->info()], c = points[f->vertex(2)->info()];
+    const Vec2 a = points[f->vertex(0)->info()], b = points[f->vertex(1)->info()],
+               c = points[f->vertex(2)->info()];
     if (rectangles.cells_at({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3}).empty()) continue;
     f->info() = static_cast<std::int32_t>(faces.size());
     faces.push_back(f);
@@ -197,10 +209,13 @@ std::vector<Piece> free_triangles(const FreeSpaceMesh& rectangles, std::vector<V
 // Interleaved bits of a point's place in the box (a Z-order key): polygons near each other on
 // the floor are near each other in memory, which is what a search's cache wants.
 std::uint64_t z_order(Vec2 p, Vec2 lo, Vec2 size) {
-  const auto grid = [](double u) { return static_cast<std::uint64_t>(std::clamp(u, 0.0, 1.0) * 65535.0); };
+  const auto grid = [](double u) {
+    return static_cast<std::uint64_t>(std::clamp(u, 0.0, 1.0) * 65535.0);
+  };
   const std::uint64_t x = grid((p.x - lo.x) / size.x), y = grid((p.y - lo.y) / size.y);
   std::uint64_t key = 0;
-  for (int bit = 0; bit < 16; ++bit) key |= ((x >> bit) & 1) << (2 * bit) | ((y >> bit) & 1) << (2 * bit + 1);
+  for (int bit = 0; bit < 16; ++bit)
+    key |= ((x >> bit) & 1) << (2 * bit) | ((y >> bit) & 1) << (2 * bit + 1);
   return key;
 }
 
@@ -212,7 +227,8 @@ ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolera
   Merger merger(free_triangles(rectangles, points_), points_);
   merger.run();
   std::vector<std::int32_t> owner(merger.pieces().size());
-  for (std::size_t t = 0; t < owner.size(); ++t) owner[t] = merger.owner(static_cast<std::int32_t>(t));
+  for (std::size_t t = 0; t < owner.size(); ++t)
+    owner[t] = merger.owner(static_cast<std::int32_t>(t));
   lay_out(merger.pieces(), owner);
   mark_corners();
   index_polygons();
@@ -222,16 +238,21 @@ ConvexMesh::ConvexMesh(const FreeSpaceMesh& rectangles) : eps_(rectangles.tolera
 // each edge's twin found.
 void ConvexMesh::lay_out(const std::vector<Piece>& pieces, const std::vector<std::int32_t>& owner) {
   Vec2 lo = points_.front(), hi = points_.front();
-  for (const Vec2 p : points_) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  for (const Vec2 p : points_)
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)},
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   const Vec2 extent{std::max(hi.x - lo.x, 1e-300), std::max(hi.y - lo.y, 1e-300)};
   std::vector<std::pair<std::uint64_t, std::int32_t>> order;
   for (std::size_t t = 0; t < pieces.size(); ++t)
-    if (pieces[t].alive) order.push_back({z_order(points_[pieces[t].corner.front()], lo, extent), static_cast<std::int32_t>(t)});
+    if (pieces[t].alive)
+      order.push_back(
+          {z_order(points_[pieces[t].corner.front()], lo, extent), static_cast<std::int32_t>(t)});
   std::sort(order.begin(), order.end());
   std::vector<std::int32_t> number(pieces.size(), -1);
   for (std::size_t i = 0; i < order.size(); ++i) {
     number[order[i].second] = static_cast<std::int32_t>(i);
-    first_.push_back(first_.back() + static_cast<std::int32_t>(pieces[order[i].second].corner.size()));
+    first_.push_back(first_.back() +
+                     static_cast<std::int32_t>(pieces[order[i].second].corner.size()));
   }
   for (const auto& [key, t] : order) {
     const Piece& p = pieces[t];
@@ -247,7 +268,8 @@ void ConvexMesh::lay_out(const std::vector<Piece>& pieces, const std::vector<std
       if (q < 0) continue;
       if (p < q) ++portals_;
       for (std::int32_t j = 0; j < size(q); ++j)
-        if (vertex(q, j) == vertex(p, k + 1) && vertex(q, j + 1) == vertex(p, k)) twin_[first_[p] + k] = j;
+        if (vertex(q, j) == vertex(p, k + 1) && vertex(q, j + 1) == vertex(p, k))
+          twin_[first_[p] + k] = j;
     }
 }
 
@@ -267,7 +289,8 @@ void ConvexMesh::mark_corners() {
       std::int32_t q = p, i = k;
       for (std::size_t steps = 0; steps <= corner_.size(); ++steps) {
         const Vec2 a = points_[vertex(q, i - 1)], b = points_[vertex(q, i + 1)];
-        double turn = std::atan2((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x), (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y));
+        double turn = std::atan2((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x),
+                                 (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y));
         if (turn < 0) turn += 2 * std::numbers::pi;
         angle += 2 * std::numbers::pi - turn;  // the polygon's interior angle at the vertex
         const std::int32_t next = neighbour(q, i);
@@ -286,10 +309,12 @@ void ConvexMesh::index_polygons() {
   std::vector<BoxBuckets::Box> boxes;
   boxes.reserve(polygon_count());
   for (std::int32_t p = 0; p < polygon_count(); ++p) {
-    BoxBuckets::Box b{points_[vertex(p, 0)].x, points_[vertex(p, 0)].y, points_[vertex(p, 0)].x, points_[vertex(p, 0)].y};
+    BoxBuckets::Box b{points_[vertex(p, 0)].x, points_[vertex(p, 0)].y, points_[vertex(p, 0)].x,
+                      points_[vertex(p, 0)].y};
     for (std::int32_t k = 1; k < size(p); ++k) {
       const Vec2 q = points_[vertex(p, k)];
-      b.xlo = std::min(b.xlo, q.x), b.ylo = std::min(b.ylo, q.y), b.xhi = std::max(b.xhi, q.x), b.yhi = std::max(b.yhi, q.y);
+      b.xlo = std::min(b.xlo, q.x), b.ylo = std::min(b.ylo, q.y), b.xhi = std::max(b.xhi, q.x),
+      b.yhi = std::max(b.yhi, q.y);
     }
     boxes.push_back(b);
   }

@@ -30,21 +30,31 @@ class ConvexMesh {
   std::int32_t polygon_count() const { return static_cast<std::int32_t>(first_.size()) - 1; }
   std::int32_t size(std::int32_t polygon) const { return first_[polygon + 1] - first_[polygon]; }
   /// The polygon's k-th corner (counter-clockwise; -n <= k < 2n, taken modulo n), a vertex index.
-  std::int32_t vertex(std::int32_t polygon, std::int32_t k) const { return corner_[first_[polygon] + wrap(polygon, k)]; }
+  std::int32_t vertex(std::int32_t polygon, std::int32_t k) const {
+    return corner_[first_[polygon] + wrap(polygon, k)];
+  }
   /// The polygon beyond edge k (from corner k to corner k + 1), -1 for a wall.
   std::int32_t neighbour(std::int32_t polygon, std::int32_t k) const {
     return neighbour_[first_[polygon] + wrap(polygon, k)];
   }
   /// The same edge's index in the neighbour (where it runs from corner k + 1 to corner k).
-  std::int32_t twin(std::int32_t polygon, std::int32_t k) const { return twin_[first_[polygon] + wrap(polygon, k)]; }
+  std::int32_t twin(std::int32_t polygon, std::int32_t k) const {
+    return twin_[first_[polygon] + wrap(polygon, k)];
+  }
   /// The same three as arrays over the polygon's corners (index k in [0, size)), for loops
   /// that walk a polygon.
-  const std::int32_t* corners(std::int32_t polygon) const { return corner_.data() + first_[polygon]; }
-  const std::int32_t* neighbours(std::int32_t polygon) const { return neighbour_.data() + first_[polygon]; }
+  const std::int32_t* corners(std::int32_t polygon) const {
+    return corner_.data() + first_[polygon];
+  }
+  const std::int32_t* neighbours(std::int32_t polygon) const {
+    return neighbour_.data() + first_[polygon];
+  }
   const std::int32_t* twins(std::int32_t polygon) const { return twin_.data() + first_[polygon]; }
   /// The polygon's corners' coordinates, in the same order (points()[corners(polygon)[k]],
   /// stored beside each other: the search reads a polygon's corners in a row).
-  const Vec2* corner_points(std::int32_t polygon) const { return corner_point_.data() + first_[polygon]; }
+  const Vec2* corner_points(std::int32_t polygon) const {
+    return corner_point_.data() + first_[polygon];
+  }
   /// Edges with a polygon on both sides, each counted once.
   std::int64_t portal_count() const { return portals_; }
   const std::vector<Vec2>& points() const { return points_; }
@@ -72,7 +82,8 @@ class ConvexMesh {
   void index_polygons();
 
   std::vector<Vec2> points_;
-  std::vector<std::uint8_t> corner_flag_, pinch_flag_;  // not vector<bool>: read on every search step
+  std::vector<std::uint8_t> corner_flag_,
+      pinch_flag_;                   // not vector<bool>: read on every search step
   std::vector<std::int32_t> first_;  // polygon p's corners are corner_[first_[p] .. first_[p + 1])
   std::vector<std::int32_t> corner_, neighbour_, twin_;
   std::vector<Vec2> corner_point_;

@@ -5,7 +5,8 @@
 
 namespace plantsim::planner {
 
-DeadEnds::DeadEnds(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& neighbour) {
+DeadEnds::DeadEnds(const std::vector<std::int32_t>& first,
+                   const std::vector<std::int32_t>& neighbour) {
   const std::int32_t count = first.empty() ? 0 : static_cast<std::int32_t>(first.size()) - 1;
   place_.assign(count, Place{});
   std::vector<std::int32_t> parent(count, -1), low(count), next(count);
@@ -49,7 +50,8 @@ DeadEnds::DeadEnds(const std::vector<std::int32_t>& first, const std::vector<std
   }
 }
 
-bool DeadEnds::bridge_path(std::int32_t from, std::int32_t to, std::vector<std::int32_t>& path) const {
+bool DeadEnds::bridge_path(std::int32_t from, std::int32_t to,
+                           std::vector<std::int32_t>& path) const {
   path.clear();
   if (place_[from].root != place_[to].root) return false;
   // Up the forest from each end to where the two meet, every step a bridge.
@@ -68,6 +70,8 @@ bool DeadEnds::bridge_path(std::int32_t from, std::int32_t to, std::vector<std::
   return true;
 }
 
-void DeadEnds::set_goal(const std::int32_t* nodes, std::size_t count) { goal_.assign(nodes, nodes + count); }
+void DeadEnds::set_goal(const std::int32_t* nodes, std::size_t count) {
+  goal_.assign(nodes, nodes + count);
+}
 
 }  // namespace plantsim::planner

@@ -14,10 +14,16 @@ namespace {
 // [lo, hi] are uncovered?" in time proportional to their number (times log n).
 class Coverage {
  public:
-  explicit Coverage(std::size_t leaves) : n_(static_cast<int>(leaves)), min_(4 * leaves + 4), max_(4 * leaves + 4), add_(4 * leaves + 4) {}
+  explicit Coverage(std::size_t leaves)
+      : n_(static_cast<int>(leaves)),
+        min_(4 * leaves + 4),
+        max_(4 * leaves + 4),
+        add_(4 * leaves + 4) {}
   void add(int lo, int hi, int v) { add(1, 0, n_ - 1, lo, hi, v); }
   /// Appends the maximal uncovered leaf ranges within leaves [lo, hi], as [first, last].
-  void uncovered(int lo, int hi, std::vector<std::pair<int, int>>& out) const { uncovered(1, 0, n_ - 1, lo, hi, 0, out); }
+  void uncovered(int lo, int hi, std::vector<std::pair<int, int>>& out) const {
+    uncovered(1, 0, n_ - 1, lo, hi, 0, out);
+  }
 
  private:
   void add(int node, int l, int r, int lo, int hi, int v) {
@@ -32,7 +38,8 @@ class Coverage {
     min_[node] = add_[node] + std::min(min_[2 * node], min_[2 * node + 1]);
     max_[node] = add_[node] + std::max(max_[2 * node], max_[2 * node + 1]);
   }
-  void uncovered(int node, int l, int r, int lo, int hi, int above, std::vector<std::pair<int, int>>& out) const {
+  void uncovered(int node, int l, int r, int lo, int hi, int above,
+                 std::vector<std::pair<int, int>>& out) const {
     if (hi < l || r < lo || above + min_[node] > 0) return;
     if (above + max_[node] == 0 && lo <= l && r <= hi) {
       if (!out.empty() && out.back().second + 1 == l)
@@ -51,7 +58,7 @@ class Coverage {
 
 struct Event {
   double x;
-  int sign;  // +1 the rectangle starts covering, -1 it stops
+  int sign;    // +1 the rectangle starts covering, -1 it stops
   int lo, hi;  // leaf range in y
 };
 
@@ -63,13 +70,14 @@ struct OpenCell {
 }  // namespace
 
 FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) {
-  eps_ = 1e-13 * std::max({1.0, std::fabs(floor.xmin), std::fabs(floor.xmax), std::fabs(floor.ymin), std::fabs(floor.ymax)});
+  eps_ = 1e-13 * std::max({1.0, std::fabs(floor.xmin), std::fabs(floor.xmax), std::fabs(floor.ymin),
+                           std::fabs(floor.ymax)});
   if (!(floor.xmax > floor.xmin && floor.ymax > floor.ymin)) return;  // no free floor: no cells
   std::vector<Rect> blocked;
   std::vector<double> ys{floor.ymin, floor.ymax};
   for (const Rect& r : rects) {
-    const Rect c{std::max(r.xmin, floor.xmin), std::max(r.ymin, floor.ymin), std::min(r.xmax, floor.xmax),
-                 std::min(r.ymax, floor.ymax)};
+    const Rect c{std::max(r.xmin, floor.xmin), std::max(r.ymin, floor.ymin),
+                 std::min(r.xmax, floor.xmax), std::min(r.ymax, floor.ymax)};
     if (c.xmax > c.xmin && c.ymax > c.ymin) {
       blocked.push_back(c);
       ys.push_back(c.ymin);
@@ -78,7 +86,9 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
   }
   std::sort(ys.begin(), ys.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-  const auto leaf = [&](double y) { return static_cast<int>(std::lower_bound(ys.begin(), ys.end(), y) - ys.begin()); };
+  const auto leaf = [&](double y) {
+    return static_cast<int>(std::lower_bound(ys.begin(), ys.end(), y) - ys.begin());
+  };
   std::vector<Event> events;
   events.reserve(2 * blocked.size());
   for (const Rect& r : blocked) {
@@ -109,7 +119,8 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
   };
 
   std::size_t e = 0;
-  while (e < events.size() && events[e].x == floor.xmin) coverage.add(events[e].lo, events[e].hi, events[e].sign), ++e;
+  while (e < events.size() && events[e].x == floor.xmin)
+    coverage.add(events[e].lo, events[e].hi, events[e].sign), ++e;
   coverage.uncovered(0, static_cast<int>(ys.size()) - 2, runs);
   for (const auto& [a, b] : runs) open_cell(floor.xmin, ys[a], ys[b + 1]);
 
@@ -126,7 +137,8 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
     for (const auto& [a, b] : ranges) {
       double lo = a, hi = b;
       const auto [first, last] = touching(a, b);
-      for (auto it = first; it != last; ++it) lo = std::min(lo, it->first), hi = std::max(hi, it->second.yhi);
+      for (auto it = first; it != last; ++it)
+        lo = std::min(lo, it->first), hi = std::max(hi, it->second.yhi);
       if (!hulls.empty() && lo <= hulls.back().second)
         hulls.back().second = std::max(hulls.back().second, hi);
       else
@@ -157,7 +169,8 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
         if (!std::isnan(a)) opened_now.push_back(open_cell(x, a, b));
     }
     // Portals: every closing cell against every opening one that shares a stretch of x.
-    std::sort(opened_now.begin(), opened_now.end(), [&](std::int32_t a, std::int32_t b) { return cells_[a].ylo < cells_[b].ylo; });
+    std::sort(opened_now.begin(), opened_now.end(),
+              [&](std::int32_t a, std::int32_t b) { return cells_[a].ylo < cells_[b].ylo; });
     std::size_t j = 0;
     for (std::int32_t l : closed_now) {
       const MeshCell& L = cells_[l];
@@ -165,7 +178,8 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
       for (std::size_t k = j; k < opened_now.size() && cells_[opened_now[k]].ylo < L.yhi; ++k) {
         const MeshCell& R = cells_[opened_now[k]];
         const double y0 = std::max(L.ylo, R.ylo), y1 = std::min(L.yhi, R.yhi);
-        if (y1 > y0) portals_.push_back({x, y0, y1, l, opened_now[k], L.ylo != R.ylo, L.yhi != R.yhi});
+        if (y1 > y0)
+          portals_.push_back({x, y0, y1, l, opened_now[k], L.ylo != R.ylo, L.yhi != R.yhi});
       }
     }
   }
@@ -179,10 +193,12 @@ void FreeSpaceMesh::index_portals() {
   left_start_.assign(n + 1, 0);
   right_start_.assign(n + 1, 0);
   for (const MeshPortal& p : portals_) ++left_start_[p.right + 1], ++right_start_[p.left + 1];
-  for (std::size_t c = 0; c < n; ++c) left_start_[c + 1] += left_start_[c], right_start_[c + 1] += right_start_[c];
+  for (std::size_t c = 0; c < n; ++c)
+    left_start_[c + 1] += left_start_[c], right_start_[c + 1] += right_start_[c];
   left_index_.resize(portals_.size());
   right_index_.resize(portals_.size());
-  std::vector<std::int32_t> lfill(left_start_.begin(), left_start_.end() - 1), rfill(right_start_.begin(), right_start_.end() - 1);
+  std::vector<std::int32_t> lfill(left_start_.begin(), left_start_.end() - 1),
+      rfill(right_start_.begin(), right_start_.end() - 1);
   // Portals were made in x order and, at one x, in y order: each side's list comes out by y.
   for (std::size_t i = 0; i < portals_.size(); ++i) {
     left_index_[lfill[portals_[i].right]++] = static_cast<std::int32_t>(i);
@@ -208,8 +224,10 @@ bool FreeSpaceMesh::is_pinch(Vec2 p) const {
   unsigned quadrants = 0;
   for (const std::int32_t i : cells_at(p)) {
     const MeshCell& c = cells_[i];
-    const bool left = c.xlo < p.x - eps_, right = c.xhi > p.x + eps_, below = c.ylo < p.y - eps_, above = c.yhi > p.y + eps_;
-    quadrants |= (left && below ? 1u : 0u) | (right && below ? 2u : 0u) | (left && above ? 4u : 0u) | (right && above ? 8u : 0u);
+    const bool left = c.xlo<p.x - eps_, right = c.xhi> p.x + eps_,
+               below = c.ylo<p.y - eps_, above = c.yhi> p.y + eps_;
+    quadrants |= (left && below ? 1u : 0u) | (right && below ? 2u : 0u) |
+                 (left && above ? 4u : 0u) | (right && above ? 8u : 0u);
   }
   return quadrants == (1u | 8u) || quadrants == (2u | 4u);
 }

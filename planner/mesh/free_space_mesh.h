@@ -62,7 +62,8 @@ class FreeSpaceMesh {
   double tolerance() const { return eps_; }
 
  private:
-  static Span span(const std::vector<std::int32_t>& index, const std::vector<std::int32_t>& start, std::int32_t cell) {
+  static Span span(const std::vector<std::int32_t>& index, const std::vector<std::int32_t>& start,
+                   std::int32_t cell) {
     return {index.data() + start[cell], index.data() + start[cell + 1]};
   }
   void index_portals();

@@ -18,7 +18,7 @@ struct IntervalPath {
   std::int64_t expanded = 0;
   std::int64_t generated = 0;
   std::size_t over_budget_bytes = 0;  ///< not 0: the search stopped there, past its memory budget
-  bool through_channel = false;       ///< answered by the funnel through a row of bridges, no search
+  bool through_channel = false;  ///< answered by the funnel through a row of bridges, no search
 };
 
 /// What a search's nodes and queue hold, in bytes (their capacity: what was allocated).
@@ -29,7 +29,8 @@ std::size_t held_bytes(const std::vector<Node>& nodes, const std::vector<Entry>&
 
 /// Fills `out` from the node `reached` (the goal's; -1: none was) back through its parents.
 template <typename Node>
-void read_back(const std::vector<Node>& nodes, std::int32_t reached, geom::Vec2 goal, IntervalPath& out) {
+void read_back(const std::vector<Node>& nodes, std::int32_t reached, geom::Vec2 goal,
+               IntervalPath& out) {
   if (reached >= 0) {
     out.found = true;
     out.path.push_back(goal);

@@ -24,10 +24,12 @@ Rect swapped(const Rect& r) { return {r.ymin, r.xmin, r.ymax, r.xmax}; }
 // before any search starts.
 void IntervalPlanner::check_landmark_budget(int landmarks, std::size_t cells) const {
   if (landmarks > 0 && static_cast<std::size_t>(landmarks) * cells > kLandmarkCellBudget)
-    throw std::invalid_argument(
-        name() + ": " + std::to_string(landmarks) + " landmarks over a mesh of " + std::to_string(cells) +
-        " cells: each landmark is a search of the whole mesh at build, and landmarks x cells may not pass " +
-        std::to_string(kLandmarkCellBudget) + " (at most " + std::to_string(kLandmarkCellBudget / cells) + " here)");
+    throw std::invalid_argument(name() + ": " + std::to_string(landmarks) +
+                                " landmarks over a mesh of " + std::to_string(cells) +
+                                " cells: each landmark is a search of the whole mesh at build, and "
+                                "landmarks x cells may not pass " +
+                                std::to_string(kLandmarkCellBudget) + " (at most " +
+                                std::to_string(kLandmarkCellBudget / cells) + " here)");
 }
 
 IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
@@ -37,8 +39,9 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
       snap_(input.snap_to_free),
       budget_bytes_(input.search_budget_bytes) {
   if (input.landmarks < 0 || input.landmarks > 64)
-    throw std::invalid_argument(std::string(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval") +
-                                ": landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
+    throw std::invalid_argument(
+        std::string(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval") +
+        ": landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
   if (kind == MeshKind::kConvexPolygons) {
     // Both sweeps have the same walls, so the polygons do not depend on which one is cut.
@@ -85,19 +88,24 @@ PlanResult IntervalPlanner::plan(Vec2 start, Vec2 goal) {
   }
   out.stats.build_ms = build_ms_;
   out.stats.query_ms = util::ms_since(t0);
-  out.stats.vertices = convex_ ? convex_->polygon_count() : static_cast<std::int64_t>(mesh_->cells().size());
-  out.stats.edges = convex_ ? convex_->portal_count() : static_cast<std::int64_t>(mesh_->portals().size());
+  out.stats.vertices =
+      convex_ ? convex_->polygon_count() : static_cast<std::int64_t>(mesh_->cells().size());
+  out.stats.edges =
+      convex_ ? convex_->portal_count() : static_cast<std::int64_t>(mesh_->portals().size());
   return out;
 }
 
 std::vector<std::pair<Vec2, Vec2>> IntervalPlanner::graph_edges() const {
   std::vector<std::pair<Vec2, Vec2>> out;
-  const auto add = [&](Vec2 a, Vec2 b) { out.push_back(transposed_ ? std::make_pair(swapped(a), swapped(b)) : std::make_pair(a, b)); };
+  const auto add = [&](Vec2 a, Vec2 b) {
+    out.push_back(transposed_ ? std::make_pair(swapped(a), swapped(b)) : std::make_pair(a, b));
+  };
   if (convex_) {
     for (std::int32_t p = 0; p < convex_->polygon_count(); ++p)
       for (std::int32_t k = 0; k < convex_->size(p); ++k)
         if (convex_->neighbour(p, k) > p)  // each shared edge once
-          add(convex_->points()[convex_->vertex(p, k)], convex_->points()[convex_->vertex(p, k + 1)]);
+          add(convex_->points()[convex_->vertex(p, k)],
+              convex_->points()[convex_->vertex(p, k + 1)]);
     return out;
   }
   out.reserve(mesh_->portals().size());

@@ -17,14 +17,17 @@ constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
 // Not std::hypot: coordinates are bounded by the world's limits, and hypot's care for overflow
 // cost a third of a query's time.
-double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
+double dist(Vec2 a, Vec2 b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
+}
 
 DeadEnds dead_ends_of(const FreeSpaceMesh& mesh) {
   std::vector<std::int32_t> first{0}, neighbour;
   for (std::int32_t c = 0; c < static_cast<std::int32_t>(mesh.cells().size()); ++c) {
     for (const auto side : {mesh.left_portals(c), mesh.right_portals(c)})
       for (const std::int32_t q : side)
-        neighbour.push_back(mesh.portals()[q].left == c ? mesh.portals()[q].right : mesh.portals()[q].left);
+        neighbour.push_back(mesh.portals()[q].left == c ? mesh.portals()[q].right
+                                                        : mesh.portals()[q].left);
     first.push_back(static_cast<std::int32_t>(neighbour.size()));
   }
   return DeadEnds(first, neighbour);
@@ -33,7 +36,10 @@ DeadEnds dead_ends_of(const FreeSpaceMesh& mesh) {
 }  // namespace
 
 IntervalSearch::IntervalSearch(const FreeSpaceMesh& mesh)
-    : mesh_(mesh), dead_ends_(dead_ends_of(mesh)), best_(2 * mesh.portals().size()), stamp_(2 * mesh.portals().size(), 0) {}
+    : mesh_(mesh),
+      dead_ends_(dead_ends_of(mesh)),
+      best_(2 * mesh.portals().size()),
+      stamp_(2 * mesh.portals().size(), 0) {}
 
 std::int32_t IntervalSearch::other_side(std::int32_t portal, std::int32_t cell) const {
   const MeshPortal& p = mesh_.portals()[portal];
@@ -41,7 +47,8 @@ std::int32_t IntervalSearch::other_side(std::int32_t portal, std::int32_t cell) 
 }
 
 double IntervalSearch::heuristic(double x, double ya, double yb, Vec2 root) const {
-  if (std::fabs(root.x - x) <= mesh_.tolerance()) return dist(root, goal_);  // the root is on the interval
+  if (std::fabs(root.x - x) <= mesh_.tolerance())
+    return dist(root, goal_);  // the root is on the interval
   Vec2 t = goal_;
   if ((t.x - x) * (root.x - x) > 0) t.x = 2 * x - t.x;  // mirrored: the way must cross the line
   const double yc = root.y + (t.y - root.y) * ((x - root.x) / (t.x - root.x));
@@ -53,7 +60,8 @@ double IntervalSearch::heuristic(double x, double ya, double yb, Vec2 root) cons
 bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, Vec2 corner) {
   const double tol = mesh_.tolerance() * 16;
   const double len = dist(from, corner);
-  const Vec2 dir = len > 0 ? Vec2{(corner.x - from.x) / len, (corner.y - from.y) / len} : Vec2{0, 0};
+  const Vec2 dir =
+      len > 0 ? Vec2{(corner.x - from.x) / len, (corner.y - from.y) / len} : Vec2{0, 0};
   if (stamp_[vertex] == search_) {
     Arrival& best = best_[vertex];
     if (g > best.g + tol) return false;
@@ -70,8 +78,8 @@ bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, V
   return true;
 }
 
-void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
-                          std::int32_t root_vertex, double g) {
+void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya,
+                          double yb, Vec2 root, std::int32_t root_vertex, double g) {
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
@@ -87,7 +95,8 @@ void IntervalSearch::queue_fresh() {
   for (const Node& n : fresh_) {
     nodes_.push_back(n);
     const double x = mesh_.portals()[n.portal].x;
-    const double h = flood_ ? 0 : std::max(heuristic(x, n.ya, n.yb, n.root), landmark_bound(n.root_vertex));
+    const double h =
+        flood_ ? 0 : std::max(heuristic(x, n.ya, n.yb, n.root), landmark_bound(n.root_vertex));
     push_open({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
   }
 }
@@ -115,21 +124,23 @@ void IntervalSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
 
 // `from` lies on the portal's line but off the portal: the way goes along the line to the
 // portal's nearer end (a corner) and turns there into the cell beyond.
-void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, std::int32_t portal, std::int32_t cell) {
+void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, std::int32_t portal,
+                                     std::int32_t cell) {
   const MeshPortal& q = mesh_.portals()[portal];
   const int end = from.y > q.y1 ? 1 : 0;
   const Vec2 c{q.x, end ? q.y1 : q.y0};
   const double gc = g + dist(from, c);
   if (!corner_improves(2 * portal + end, gc, from, c)) return;
-  if (!(nodes_[parent].root == from)) {  // a turn at `from` first: recorded for the path, never searched
+  if (!(nodes_[parent].root ==
+        from)) {  // a turn at `from` first: recorded for the path, never searched
     nodes_.push_back({-2, -1, 0, 0, from, -1, parent, g});
     parent = static_cast<std::int32_t>(nodes_.size() - 1);
   }
   push(parent, portal, cell, q.y0, q.y1, c, 2 * portal + end, gc);
 }
 
-void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
-                                    std::int32_t except) {
+void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex,
+                                    double g, std::int32_t cell, std::int32_t except) {
   const double eps = mesh_.tolerance();
   if (flood_) record_corners_in_view(cell, root, g);
   if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + dist(root, goal_));
@@ -150,7 +161,8 @@ void IntervalSearch::expand(std::int32_t index) {
   const MeshPortal& P = mesh_.portals()[n.portal];
   const double x = P.x, eps = mesh_.tolerance();
   const Vec2 r = n.root;
-  if (std::fabs(r.x - x) <= eps) return expand_in_view(index, r, n.root_vertex, n.g, n.cell, n.portal);
+  if (std::fabs(r.x - x) <= eps)
+    return expand_in_view(index, r, n.root_vertex, n.g, n.cell, n.portal);
 
   const MeshCell& D = mesh_.cells()[n.cell];
   const bool rightward = x > r.x;
@@ -159,7 +171,8 @@ void IntervalSearch::expand(std::int32_t index) {
   const double ya_far = r.y + (n.ya - r.y) * s, yb_far = r.y + (n.yb - r.y) * s;
   // Turns: where the interval ends at an obstacle corner, the cell behind that corner's ray
   // is reached by bending there.
-  const bool turn_low = P.corner0 && n.ya <= P.y0 + eps, turn_high = P.corner1 && n.yb >= P.y1 - eps;
+  const bool turn_low = P.corner0 && n.ya <= P.y0 + eps,
+             turn_high = P.corner1 && n.yb >= P.y1 - eps;
   const Vec2 a{x, P.y0}, b{x, P.y1};
   const double ga = turn_low ? n.g + dist(r, a) : 0, gb = turn_high ? n.g + dist(r, b) : 0;
   const bool use_low = turn_low && corner_improves(2 * n.portal, ga, r, a);
@@ -183,8 +196,10 @@ void IntervalSearch::expand(std::int32_t index) {
     if (dead_ends_.leads_nowhere(n.cell, beyond)) continue;
     const double lo = std::max(Q.y0, ya_far), hi = std::min(Q.y1, yb_far);
     if (lo <= hi + eps) push(index, q, beyond, lo, hi, r, n.root_vertex, n.g);
-    if (use_low && ya_far > Q.y0 + eps) push(index, q, beyond, Q.y0, std::min(Q.y1, ya_far), a, 2 * n.portal, ga);
-    if (use_high && yb_far < Q.y1 - eps) push(index, q, beyond, std::max(Q.y0, yb_far), Q.y1, b, 2 * n.portal + 1, gb);
+    if (use_low && ya_far > Q.y0 + eps)
+      push(index, q, beyond, Q.y0, std::min(Q.y1, ya_far), a, 2 * n.portal, ga);
+    if (use_high && yb_far < Q.y1 - eps)
+      push(index, q, beyond, std::max(Q.y0, yb_far), Q.y1, b, 2 * n.portal + 1, gb);
   }
   if (!use_low && !use_high) return;
   // Portals on the near side beyond the corner lie on the corner's own line.
@@ -253,9 +268,10 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
     set_goal_bounds(first.front(), start);
     const std::vector<double> start_low = goal_low_, start_high = goal_high_;
     set_goal_bounds(last.front(), goal);
-    start_bound_ = mesh_.is_pinch(start) ? 0
-                                         : planner::landmark_bound(start_low.data(), start_high.data(), goal_low_,
-                                                                   goal_high_, mesh_.tolerance());
+    start_bound_ = mesh_.is_pinch(start)
+                       ? 0
+                       : planner::landmark_bound(start_low.data(), start_high.data(), goal_low_,
+                                                 goal_high_, mesh_.tolerance());
   }
   queue_source(start, first);  // the start, as the first root
   const std::int32_t reached = run(out);
@@ -290,7 +306,8 @@ void IntervalSearch::number_points() {
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (i > 0 && !(all[i].first == all[i - 1].first)) ++points_;
     const std::size_t slot = all[i].second;
-    (slot < ends ? point_of_corner_[slot] : point_of_end_[slot - ends]) = static_cast<std::int32_t>(points_);
+    (slot < ends ? point_of_corner_[slot] : point_of_end_[slot - ends]) =
+        static_cast<std::int32_t>(points_);
   }
   ++points_;
 }
@@ -309,13 +326,16 @@ void IntervalSearch::for_each_point(std::int32_t cell, F&& f) const {
 }
 
 void IntervalSearch::record_corners_in_view(std::int32_t cell, Vec2 r, double g) {
-  for_each_point(cell, [&](Vec2 p, std::int32_t id) { (*flood_)[id] = std::min((*flood_)[id], g + dist(r, p)); });
+  for_each_point(cell, [&](Vec2 p, std::int32_t id) {
+    (*flood_)[id] = std::min((*flood_)[id], g + dist(r, p));
+  });
 }
 
 // The cell's points within the node's view get the way through it; those behind a corner the
 // interval ends at, the way bending there.
-void IntervalSearch::record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya, double yb, bool low, Vec2 a,
-                                    double ga, bool high, Vec2 b, double gb) {
+void IntervalSearch::record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya,
+                                    double yb, bool low, Vec2 a, double ga, bool high, Vec2 b,
+                                    double gb) {
   const double eps = mesh_.tolerance();
   for_each_point(cell, [&](Vec2 p, std::int32_t id) {
     const double s = (p.x - r.x) / (x - r.x);
@@ -338,7 +358,8 @@ std::vector<double> IntervalSearch::distances_to_corners(Vec2 source) {
   if (first.empty()) return out;
   flood_ = &at_point;
   dead_ends_.set_goal(nullptr, 0);
-  begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal in no cell
+  begin({std::numeric_limits<double>::quiet_NaN(),
+         std::numeric_limits<double>::quiet_NaN()});  // a goal in no cell
   queue_source(source, first);
   IntervalPath flood;
   run(flood);
@@ -360,7 +381,8 @@ void IntervalSearch::add_landmarks(int count) {
   };
   // Cell 0's lower left corner first.
   LandmarkTable table = measure_landmarks(
-      count, 4 * cells.size(), 0, [&](std::size_t i) { return distances_to_corners(corner_point(i)); },
+      count, 4 * cells.size(), 0,
+      [&](std::size_t i) { return distances_to_corners(corner_point(i)); },
       [&](std::size_t i) { return mesh_.is_pinch(corner_point(i)); });
   landmarks_ = table.landmarks;
   corner_distance_ = std::move(table.distance);
@@ -386,7 +408,8 @@ void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
   const MeshCell& c = mesh_.cells()[cell];
   const Vec2 corners[4] = {{c.xlo, c.ylo}, {c.xhi, c.ylo}, {c.xlo, c.yhi}, {c.xhi, c.yhi}};
   for (int k = 0; k < landmarks_; ++k) {
-    double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+    double low = -std::numeric_limits<double>::infinity(),
+           high = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 4; ++i) {
       const double d = corner_distance_[(4 * static_cast<std::size_t>(cell) + i) * landmarks_ + k];
       if (!std::isfinite(d)) continue;

@@ -60,21 +60,22 @@ class IntervalSearch {
   void queue_fresh();
   void push_open(Entry e);
   /// The root lies in the closed cell: every portal of it is in view.
-  void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t cell,
-                      std::int32_t except);
+  void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
+                      std::int32_t cell, std::int32_t except);
   /// A successor into `cell` (not a dead end: callers look first).
-  void push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb, Vec2 root,
-            std::int32_t root_vertex, double g);
+  void push(std::int32_t parent, std::int32_t portal, std::int32_t cell, double ya, double yb,
+            Vec2 root, std::int32_t root_vertex, double g);
   /// A turn at a portal's end, reached from `from`: kept unless that corner was reached more
   /// cheaply before, or as cheaply along the same line.
   bool corner_improves(std::int32_t vertex, double g, Vec2 from, Vec2 corner);
   void push_goal(std::int32_t parent, Vec2 root, double g);
-  void push_along_line(std::int32_t parent, Vec2 from, double g, std::int32_t portal, std::int32_t cell);
+  void push_along_line(std::int32_t parent, Vec2 from, double g, std::int32_t portal,
+                       std::int32_t cell);
   double heuristic(double x, double ya, double yb, Vec2 root) const;
   double landmark_bound(std::int32_t root_vertex) const;
   void set_goal_bounds(std::int32_t goal_cell, Vec2 goal);
-  void record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya, double yb, bool low, Vec2 a, double ga,
-                      bool high, Vec2 b, double gb);
+  void record_corners(std::int32_t cell, Vec2 r, double g, double x, double ya, double yb, bool low,
+                      Vec2 a, double ga, bool high, Vec2 b, double gb);
   void record_corners_in_view(std::int32_t cell, Vec2 r, double g);
   void number_points();
   template <typename F>
@@ -95,8 +96,8 @@ class IntervalSearch {
     double g = 0;
     Vec2 dir;  // unit direction it came in along
   };
-  std::vector<Arrival> best_;          // per portal end (2 * portal + end)
-  std::vector<std::uint32_t> stamp_;   // which search best_ holds
+  std::vector<Arrival> best_;         // per portal end (2 * portal + end)
+  std::vector<std::uint32_t> stamp_;  // which search best_ holds
   std::uint32_t search_ = 0;
   std::size_t budget_bytes_ = kSearchMemoryBudgetBytes;
   // Landmarks: distances from each to every cell corner and portal end, landmark-minor.
@@ -106,7 +107,8 @@ class IntervalSearch {
   std::vector<double> goal_low_, goal_high_;  // bounds on each landmark's distance to the goal
   double start_bound_ = 0;                    // the landmarks' bound for nodes rooted at the start
   std::vector<double>* flood_ = nullptr;      // while measuring distances: by point number
-  std::vector<std::int32_t> point_of_corner_, point_of_end_;  // cell corners and portal ends, numbered
+  std::vector<std::int32_t> point_of_corner_,
+      point_of_end_;  // cell corners and portal ends, numbered
   std::size_t points_ = 0;
 };
 

@@ -7,9 +7,10 @@
 
 namespace plantsim::planner {
 
-LandmarkTable measure_landmarks(int count, std::size_t points, std::size_t first,
-                                const std::function<std::vector<double>(std::size_t)>& distances_from,
-                                const std::function<bool(std::size_t)>& unusable) {
+LandmarkTable measure_landmarks(
+    int count, std::size_t points, std::size_t first,
+    const std::function<std::vector<double>(std::size_t)>& distances_from,
+    const std::function<bool(std::size_t)>& unusable) {
   LandmarkTable out;
   if (points == 0 || count <= 0) return out;
   // Filled landmark by landmark in place (`count` wide), then closed up if fewer were found: no
@@ -30,7 +31,8 @@ LandmarkTable measure_landmarks(int count, std::size_t points, std::size_t first
     if (far == 0) break;
   }
   for (std::size_t i = 0; i < points; ++i)
-    for (int k = 0; k < out.landmarks; ++k) out.distance[i * out.landmarks + k] = out.distance[i * count + k];
+    for (int k = 0; k < out.landmarks; ++k)
+      out.distance[i * out.landmarks + k] = out.distance[i * count + k];
   out.distance.resize(points * out.landmarks);
   return out;
 }

@@ -19,16 +19,18 @@ struct LandmarkTable {
 /// from all before it, until `count` or every point is a landmark's. `distances_from(i)`: the
 /// exact distance from point i to every point (infinity: unreachable). A point `unusable(i)`
 /// (a pinch, whose distance depends on the side it is reached from) keeps NaN.
-LandmarkTable measure_landmarks(int count, std::size_t points, std::size_t first,
-                                const std::function<std::vector<double>(std::size_t)>& distances_from,
-                                const std::function<bool(std::size_t)>& unusable);
+LandmarkTable measure_landmarks(
+    int count, std::size_t points, std::size_t first,
+    const std::function<std::vector<double>(std::size_t)>& distances_from,
+    const std::function<bool(std::size_t)>& unusable);
 
 /// The landmarks' lower bound on the distance between a point whose distance from landmark k
 /// lies in [low[k], high[k]] and the goal, whose lies in [goal_low[k], goal_high[k]]: the most
 /// of goal_low - high and low - goal_high over the landmarks (NaN bounds give nothing), a hair
 /// less, so that rounding never makes it overestimate.
 /// Inline: the searches call it for every node they queue.
-inline double landmark_bound(const double* low, const double* high, const std::vector<double>& goal_low,
+inline double landmark_bound(const double* low, const double* high,
+                             const std::vector<double>& goal_low,
                              const std::vector<double>& goal_high, double tolerance) {
   double h = 0;
   // Unknown distances are NaN: `a > h` is false for them, so they leave h alone.

@@ -24,7 +24,9 @@ DeadEnds dead_ends_of(const ConvexMesh& mesh) {
   return DeadEnds(first, neighbour);
 }
 
-double dist(Vec2 a, Vec2 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)); }
+double dist(Vec2 a, Vec2 b) {
+  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
+}
 // A range of an edge's parameter t in [0, 1]; empty when lo > hi.
 struct Range {
   double lo, hi;
@@ -39,7 +41,9 @@ Range nonnegative(double fa, double fb, double eps) {
   return fa < -eps ? Range{t, 1} : Range{0, t};
 }
 
-Vec2 along(Vec2 a, Vec2 b, double t) { return t <= 0 ? a : t >= 1 ? b : Vec2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+Vec2 along(Vec2 a, Vec2 b, double t) {
+  return t <= 0 ? a : t >= 1 ? b : Vec2{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
 
 }  // namespace
 
@@ -80,18 +84,20 @@ double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
   return std::min(dist(root, left) + dist(left, t), dist(root, right) + dist(right, t));
 }
 
-void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
-                         std::int32_t root_vertex, double g) {
+void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right,
+                         Vec2 left, Vec2 root, std::int32_t root_vertex, double g) {
   const std::int32_t beyond = mesh_.neighbours(polygon)[k];
   const std::int32_t entry = mesh_.twins(polygon)[k], k1 = k + 1 < mesh_.size(polygon) ? k + 1 : 0;
   const Vec2 a = mesh_.corner_points(polygon)[k], b = mesh_.corner_points(polygon)[k1];
-  const double eps = mesh_.tolerance(), side = cross(b - a, root - a), reach = eps * eps * dot(b - a, b - a);
+  const double eps = mesh_.tolerance(), side = cross(b - a, root - a),
+               reach = eps * eps * dot(b - a, b - a);
   // A root beyond the edge would look back through it: a ray that only touches the edge at an
   // end, passing by. (Sides compared squared: no square root on the common way.)
   if (side < 0 && side * side > reach) return;
   if (side * side <= reach) {
     const double len = dist(a, b), at = dot(root - a, b - a) / len;
-    if (at >= -eps && at <= len + eps) {  // the root is on the edge: all of the polygon beyond is in view
+    if (at >= -eps &&
+        at <= len + eps) {  // the root is on the edge: all of the polygon beyond is in view
       fresh_.push_back({beyond, entry, b, a, root, root_vertex, parent, g});
       return;
     }
@@ -100,7 +106,8 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
     const Vec2 c = mesh_.points()[near];
     const double gc = g + dist(root, c);
     if (!corner_improves(near, gc)) return;
-    if (!(nodes_[parent].root == root)) {  // a turn at `root` first: recorded for the path, never searched
+    if (!(nodes_[parent].root ==
+          root)) {  // a turn at `root` first: recorded for the path, never searched
       nodes_.push_back({-2, -1, {}, {}, root, root_vertex, parent, g});
       parent = static_cast<std::int32_t>(nodes_.size() - 1);
     }
@@ -116,16 +123,20 @@ void PolygonSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
   std::push_heap(open_.begin(), open_.end());
 }
 
-void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
-                                   std::int32_t polygon, std::int32_t except, bool from_start) {
+void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex,
+                                   double g, std::int32_t polygon, std::int32_t except,
+                                   bool from_start) {
   if (goal_stamp_[polygon] == search_) push_goal(parent, root, g + dist(root, goal_));
   if (flood_) record_in_view(polygon, root, g);
   const double eps = mesh_.tolerance();
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
-    if (k == except || mesh_.neighbour(polygon, k) < 0 || dead_ends_.leads_nowhere(polygon, mesh_.neighbour(polygon, k)))
+    if (k == except || mesh_.neighbour(polygon, k) < 0 ||
+        dead_ends_.leads_nowhere(polygon, mesh_.neighbour(polygon, k)))
       continue;
-    const Vec2 a = mesh_.points()[mesh_.vertex(polygon, k)], b = mesh_.points()[mesh_.vertex(polygon, k + 1)];
-    if (from_start) {  // the start on this edge: the polygon beyond holds it too and is searched from it
+    const Vec2 a = mesh_.points()[mesh_.vertex(polygon, k)],
+               b = mesh_.points()[mesh_.vertex(polygon, k + 1)];
+    if (from_start) {  // the start on this edge: the polygon beyond holds it too and is searched
+                       // from it
       const double len = dist(a, b), at = dot(root - a, b - a) / len;
       if (std::fabs(cross(b - a, root - a)) <= eps * len && at >= -eps && at <= len + eps) continue;
     }
@@ -148,8 +159,12 @@ void PolygonSearch::expand(std::int32_t index) {
   const Vec2 L = n.left, R = n.right;
   const double lr = dist(r, R), ll = dist(r, L);
   const Vec2 uR{(R.x - r.x) / lr, (R.y - r.y) / lr}, uL{(L.x - r.x) / ll, (L.y - r.y) / ll};
-  const auto right_side = [&](Vec2 p) { return cross(uR, p - r); };  // >= 0: not right of the ray through R
-  const auto left_side = [&](Vec2 p) { return cross(uL, p - r); };   // <= 0: not left of the ray through L
+  const auto right_side = [&](Vec2 p) {
+    return cross(uR, p - r);
+  };  // >= 0: not right of the ray through R
+  const auto left_side = [&](Vec2 p) {
+    return cross(uL, p - r);
+  };  // <= 0: not left of the ray through L
   const bool turn_right = mesh_.is_corner(rv) && dot(R - B, R - B) <= eps * eps;
   const bool turn_left = mesh_.is_corner(lv) && dot(L - A, L - A) <= eps * eps;
   const double gR = turn_right ? n.g + dist(r, B) : 0, gL = turn_left ? n.g + dist(r, A) : 0;
@@ -179,12 +194,14 @@ void PolygonSearch::expand(std::int32_t index) {
     const double rb = right_side(b), lb = left_side(b);
     // Walls, dead ends, and edges wholly right of the view with no turn there or wholly left:
     // nothing.
-    if (beyond[k] >= 0 && (rb >= -eps || use_right) && (la <= eps || use_left) && !dead_ends_.leads_nowhere(Q, beyond[k])) {
+    if (beyond[k] >= 0 && (rb >= -eps || use_right) && (la <= eps || use_left) &&
+        !dead_ends_.leads_nowhere(Q, beyond[k])) {
       // The part in view: not right of the ray through R, not left of the ray through L. (Each
       // side is a range of the edge, though not always at its same end: a ray through an end
       // of the entry edge may run inside Q and meet the far side twice.)
       const Range seen = nonnegative(ra, rb, eps).meet(nonnegative(-la, -lb, eps));
-      if (seen.lo <= seen.hi + 1e-12) push(index, Q, k, along(a, b, seen.lo), along(a, b, seen.hi), r, n.root_vertex, n.g);
+      if (seen.lo <= seen.hi + 1e-12)
+        push(index, Q, k, along(a, b, seen.lo), along(a, b, seen.hi), r, n.root_vertex, n.g);
       if (use_right && std::min(ra, rb) < -eps) {
         const Range hidden = nonnegative(-ra, -rb, eps);
         push(index, Q, k, along(a, b, hidden.lo), along(a, b, hidden.hi), B, rv, gR);
@@ -201,7 +218,8 @@ void PolygonSearch::expand(std::int32_t index) {
 void PolygonSearch::queue_fresh() {
   for (const Node& n : fresh_) {
     nodes_.push_back(n);
-    const double h = flood_ ? 0 : std::max(heuristic(n.left, n.right, n.root), landmark_bound(n.root_vertex));
+    const double h =
+        flood_ ? 0 : std::max(heuristic(n.left, n.right, n.root), landmark_bound(n.root_vertex));
     open_.push_back({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
     std::push_heap(open_.begin(), open_.end());
   }
@@ -265,9 +283,10 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
   if (use_landmarks_) {
     bound_landmark_distances(last, goal, goal_low_, goal_high_);
     bound_landmark_distances(first, start, start_low_, start_high_);
-    start_bound_ = at_pinch(first, start) ? 0
-                                          : planner::landmark_bound(start_low_.data(), start_high_.data(), goal_low_,
-                                                                    goal_high_, mesh_.tolerance());
+    start_bound_ = at_pinch(first, start)
+                       ? 0
+                       : planner::landmark_bound(start_low_.data(), start_high_.data(), goal_low_,
+                                                 goal_high_, mesh_.tolerance());
   }
   nodes_.push_back({-1, -1, {}, {}, start, -1, -1, 0});
   fresh_.clear();
@@ -285,12 +304,14 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
 // polygon on it holding the start to the first after it holding the goal. So only when no
 // polygon holding the start lies beyond the row's first bridge (the start would be on both its
 // sides) and none holding the goal before its last.
-bool PolygonSearch::through_channel(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& last,
-                                    Vec2 start, Vec2 goal, IntervalPath& out) {
+bool PolygonSearch::through_channel(const std::vector<std::int32_t>& first,
+                                    const std::vector<std::int32_t>& last, Vec2 start, Vec2 goal,
+                                    IntervalPath& out) {
   if (!dead_ends_.bridge_path(first.front(), last.front(), channel_)) return false;
   const auto length = static_cast<std::ptrdiff_t>(channel_.size());
   const auto at = [&](std::int32_t polygon) {
-    return static_cast<std::ptrdiff_t>(std::find(channel_.begin(), channel_.end(), polygon) - channel_.begin());
+    return static_cast<std::ptrdiff_t>(std::find(channel_.begin(), channel_.end(), polygon) -
+                                       channel_.begin());
   };
   std::ptrdiff_t from = 0, to = length - 1;
   for (const std::int32_t p : first)
@@ -323,7 +344,8 @@ bool PolygonSearch::at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) 
   for (const std::int32_t q : polygons)
     for (std::int32_t k = 0; k < mesh_.size(q); ++k) {
       const std::int32_t v = mesh_.vertex(q, k);
-      if (mesh_.is_pinch(v) && dot(mesh_.points()[v] - p, mesh_.points()[v] - p) <= eps * eps) return true;
+      if (mesh_.is_pinch(v) && dot(mesh_.points()[v] - p, mesh_.points()[v] - p) <= eps * eps)
+        return true;
     }
   return false;
 }
@@ -337,8 +359,8 @@ void PolygonSearch::record_in_view(std::int32_t polygon, Vec2 r, double g) {
 
 // The polygon's vertices in the node's view get the straight way; those right (left) of it,
 // the way bending at the interval's right (left) end when that is a corner.
-void PolygonSearch::record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B, double gR,
-                                bool left, Vec2 A, double gL) {
+void PolygonSearch::record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL,
+                                bool right, Vec2 B, double gR, bool left, Vec2 A, double gL) {
   const double eps = mesh_.tolerance();
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
     const std::int32_t v = mesh_.vertex(polygon, k);
@@ -360,7 +382,8 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
   if (first.empty()) return out;
   flood_ = &out;
   dead_ends_.set_goal(nullptr, 0);
-  begin({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // a goal nowhere
+  begin({std::numeric_limits<double>::quiet_NaN(),
+         std::numeric_limits<double>::quiet_NaN()});  // a goal nowhere
   nodes_.push_back({-1, -1, {}, {}, source, -1, -1, 0});
   fresh_.clear();
   for (const std::int32_t p : first) expand_in_view(0, source, -1, 0, p, -1, true);
@@ -389,7 +412,8 @@ void PolygonSearch::add_landmarks(int count) {
 // holding p, give or take the straight way between them; reached through whichever polygon
 // holding p is nearest, so the bounds through each are combined by their minimum. (Through one
 // polygon alone they would fail where p is a pinch point, reached from the other side.)
-void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p, std::vector<double>& low,
+void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p,
+                                             std::vector<double>& low,
                                              std::vector<double>& high) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   low.assign(landmarks_, kInf);
@@ -408,10 +432,12 @@ void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& po
         side_high[k] = std::min(side_high[k], d + to);
       }
     }
-    for (int k = 0; k < landmarks_; ++k) low[k] = std::min(low[k], side_low[k]), high[k] = std::min(high[k], side_high[k]);
+    for (int k = 0; k < landmarks_; ++k)
+      low[k] = std::min(low[k], side_low[k]), high[k] = std::min(high[k], side_high[k]);
   }
   for (int k = 0; k < landmarks_; ++k)
-    if (!std::isfinite(low[k]) || !std::isfinite(high[k])) low[k] = high[k] = std::numeric_limits<double>::quiet_NaN();
+    if (!std::isfinite(low[k]) || !std::isfinite(high[k]))
+      low[k] = high[k] = std::numeric_limits<double>::quiet_NaN();
 }
 
 // max over landmarks of |d(L, goal) - d(L, root)|, bounded from below; a hair less, so that

@@ -39,9 +39,10 @@ class PolygonSearch {
 
  private:
   struct Node {
-    std::int32_t polygon;  ///< entered; -1: the goal itself; -2: a turn on the way (for the path only)
-    std::int32_t entry;    ///< the edge entered by, in `polygon`: from its left end to its right end
-    Vec2 left, right;      ///< the interval, as seen from the root
+    std::int32_t
+        polygon;  ///< entered; -1: the goal itself; -2: a turn on the way (for the path only)
+    std::int32_t entry;  ///< the edge entered by, in `polygon`: from its left end to its right end
+    Vec2 left, right;    ///< the interval, as seen from the root
     Vec2 root;
     std::int32_t root_vertex;  ///< -1 for the start
     std::int32_t parent;
@@ -54,28 +55,29 @@ class PolygonSearch {
   };
   void expand(std::int32_t node);
   /// The root lies on the polygon's boundary: all of the polygon is in view.
-  void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g, std::int32_t polygon,
-                      std::int32_t except, bool from_start);
+  void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
+                      std::int32_t polygon, std::int32_t except, bool from_start);
   /// A successor through edge k of `polygon`, the part of it from `right` to `left` (the
   /// polygon beyond is not a dead end: callers look first).
-  void push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left, Vec2 root,
-            std::int32_t root_vertex, double g);
+  void push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right, Vec2 left,
+            Vec2 root, std::int32_t root_vertex, double g);
   void push_goal(std::int32_t parent, Vec2 root, double g);
   bool corner_improves(std::int32_t vertex, double g);
   double heuristic(Vec2 left, Vec2 right, Vec2 root) const;
   double landmark_bound(std::int32_t root_vertex);
   bool at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) const;
   /// Bounds on each landmark's distance to p, from the vertices of the polygons holding it.
-  void bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p, std::vector<double>& low,
-                                std::vector<double>& high) const;
+  void bound_landmark_distances(const std::vector<std::int32_t>& polygons, Vec2 p,
+                                std::vector<double>& low, std::vector<double>& high) const;
   /// While measuring distances: what the node's view of its polygon tells of its vertices.
-  void record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B, double gR, bool left,
-                   Vec2 A, double gL);
+  void record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR, Vec2 uL, bool right, Vec2 B,
+                   double gR, bool left, Vec2 A, double gL);
   void record_in_view(std::int32_t polygon, Vec2 r, double g);
   /// When every way from the start to the goal crosses the same row of polygons (each step a
   /// bridge), the path pulled taut through it (funnel_path) into `out`; else false.
-  bool through_channel(const std::vector<std::int32_t>& first, const std::vector<std::int32_t>& last, Vec2 start,
-                       Vec2 goal, IntervalPath& out);
+  bool through_channel(const std::vector<std::int32_t>& first,
+                       const std::vector<std::int32_t>& last, Vec2 start, Vec2 goal,
+                       IntervalPath& out);
   void begin(Vec2 goal);
   void queue_fresh();
   /// The goal's node, or -1: none reached, or the search passed its memory budget (then

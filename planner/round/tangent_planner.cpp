@@ -88,9 +88,11 @@ bool in_quadrants(double a, unsigned mask) {
 
 // Points strictly inside the arc of circle (c, r) from angle `from` in `sense` through `sweep`,
 // at most 2 degrees apart (its ends are the tangent points, added by the caller).
-void append_arc_samples(Vec2 c, double r, double from, int sense, double sweep, std::vector<Vec2>& out) {
+void append_arc_samples(Vec2 c, double r, double from, int sense, double sweep,
+                        std::vector<Vec2>& out) {
   const int steps = static_cast<int>(std::ceil(sweep / kArcSampleRad));
-  for (int i = 1; i < steps; ++i) out.push_back(c + r * geom::unit_from_angle(from + sense * sweep * i / steps));
+  for (int i = 1; i < steps; ++i)
+    out.push_back(c + r * geom::unit_from_angle(from + sense * sweep * i / steps));
 }
 
 }  // namespace
@@ -101,9 +103,12 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
       radius_(input.inflation_m) {
   const auto t0 = std::chrono::steady_clock::now();
   if (raw_.size() > kMaxObstacles)
-    throw std::invalid_argument("vg-round: " + std::to_string(raw_.size()) + " obstacles; it plans among at most " +
-                                std::to_string(kMaxObstacles) + " (use vg with --corner-steps for larger worlds)");
-  if (!(radius_ > 0)) throw std::invalid_argument("vg-round: the inflation must be positive (it is the rounding radius)");
+    throw std::invalid_argument(
+        "vg-round: " + std::to_string(raw_.size()) + " obstacles; it plans among at most " +
+        std::to_string(kMaxObstacles) + " (use vg with --corner-steps for larger worlds)");
+  if (!(radius_ > 0))
+    throw std::invalid_argument(
+        "vg-round: the inflation must be positive (it is the rounding radius)");
   const std::size_t obstacles = raw_.size();
   // The walls as rectangles thick enough that only their inner faces matter: at the clearance
   // from them lies the floor shrunk by it, corners square (the walls are flat).
@@ -119,7 +124,9 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
   std::vector<Corner> corners;
   for (std::size_t i = 0; i < obstacles; ++i) {
     const Rect& o = raw_[i];
-    const Corner own[4] = {{{o.xmax, o.ymax}, i, 1u}, {{o.xmin, o.ymax}, i, 2u}, {{o.xmin, o.ymin}, i, 4u},
+    const Corner own[4] = {{{o.xmax, o.ymax}, i, 1u},
+                           {{o.xmin, o.ymax}, i, 2u},
+                           {{o.xmin, o.ymin}, i, 4u},
                            {{o.xmax, o.ymin}, i, 8u}};
     for (const Corner& k : own) {
       if (!geom::in_closed_rect(reach, k.c)) continue;
@@ -140,14 +147,17 @@ RoundTangentPlanner::RoundTangentPlanner(const PlannerInput& input)
     while (j < corners.size() && corners[j].c == corners[i].c) {
       unsigned mine = 0;
       const std::size_t rect = corners[j].rect;
-      for (; j < corners.size() && corners[j].c == corners[i].c && corners[j].rect == rect; ++j) mine |= corners[j].quadrants;
+      for (; j < corners.size() && corners[j].c == corners[i].c && corners[j].rect == rect; ++j)
+        mine |= corners[j].quadrants;
       common &= mine;
     }
     circles_.push_back(corners[i].c);
-    allowed_.push_back(common == 0 ? 15u : common);  // none in common: touching rectangles; no pruning
+    allowed_.push_back(common == 0 ? 15u
+                                   : common);  // none in common: touching rectangles; no pruning
     i = j;
   }
-  if (input.snap_to_free) square_.emplace(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m);
+  if (input.snap_to_free)
+    square_.emplace(inflate(input.obstacles, input.inflation_m), input.floor, input.inflation_m);
   build_ms_ = util::ms_since(t0);
 }
 
@@ -165,8 +175,8 @@ bool RoundTangentPlanner::segment_clear(Vec2 p, Vec2 q) const {
   return true;
 }
 
-void RoundTangentPlanner::append_drive_corners(Vec2 c, double from, int sense, double sweep, Vec2 arr, Vec2 dep,
-                                               std::vector<Vec2>& out) const {
+void RoundTangentPlanner::append_drive_corners(Vec2 c, double from, int sense, double sweep,
+                                               Vec2 arr, Vec2 dep, std::vector<Vec2>& out) const {
   if (sweep <= 0) return;
   // The arc split into k equal turns, each replaced by the corner where the tangents at its
   // ends meet (r / cos(turn / 2) from the center: outside the circle, inside the square
@@ -174,9 +184,11 @@ void RoundTangentPlanner::append_drive_corners(Vec2 c, double from, int sense, d
   for (int k = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * M_PI)))); k <= 64; k *= 2) {
     const double turn = sweep / k, reach = radius_ / std::cos(0.5 * turn);
     std::vector<Vec2> corners;
-    for (int i = 0; i < k; ++i) corners.push_back(c + reach * geom::unit_from_angle(from + sense * turn * (i + 0.5)));
+    for (int i = 0; i < k; ++i)
+      corners.push_back(c + reach * geom::unit_from_angle(from + sense * turn * (i + 0.5)));
     bool clear = segment_clear(arr, corners.front()) && segment_clear(corners.back(), dep);
-    for (std::size_t i = 1; clear && i < corners.size(); ++i) clear = segment_clear(corners[i - 1], corners[i]);
+    for (std::size_t i = 1; clear && i < corners.size(); ++i)
+      clear = segment_clear(corners[i - 1], corners[i]);
     if (clear) {
       out.insert(out.end(), corners.begin(), corners.end());
       return;
@@ -206,8 +218,9 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   };
   // A blocked end moves to the square inflation's nearest free point (free here too: the square
   // grows every obstacle at least as far as the disk does), when snapping is on.
-  for (auto [p, snapped, blocked] : {std::tuple{&start, &out.start_snapped, PlanStatus::kStartBlocked},
-                                     std::tuple{&goal, &out.goal_snapped, PlanStatus::kGoalBlocked}}) {
+  for (auto [p, snapped, blocked] :
+       {std::tuple{&start, &out.start_snapped, PlanStatus::kStartBlocked},
+        std::tuple{&goal, &out.goal_snapped, PlanStatus::kGoalBlocked}}) {
     if (point_clear(*p)) continue;
     const auto moved = square_ ? nearest_free_point(*square_, *p) : std::nullopt;
     if (!moved) {
@@ -224,7 +237,7 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   struct State {
     std::int32_t circle;  // kStart for the start
     std::int8_t sense;
-    Vec2 dep, arr;        // the tangent it arrived by: left its parent at dep, reached arr
+    Vec2 dep, arr;  // the tangent it arrived by: left its parent at dep, reached arr
     double arr_angle;
     std::int32_t parent;
   };
@@ -233,7 +246,7 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
     std::int32_t circle, parent;  // circle kGoal: the goal
     std::int8_t sense;
     Vec2 dep, arr;
-    double sweep;                 // the turn on the parent's circle before dep
+    double sweep;  // the turn on the parent's circle before dep
     bool operator>(const Entry& o) const {
       if (f != o.f) return f > o.f;
       if (g != o.g) return g < o.g;
@@ -247,12 +260,16 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   auto key = [&](std::int32_t circle, int sense, std::int32_t parent) {
     const State& p = states[static_cast<std::size_t>(parent)];
     const auto from = static_cast<std::uint64_t>(p.circle + 1) * 2 + (p.sense > 0);
-    return (static_cast<std::uint64_t>(circle) * 2 + (sense > 0)) * (2 * static_cast<std::uint64_t>(n) + 2) + from;
+    return (static_cast<std::uint64_t>(circle) * 2 + (sense > 0)) *
+               (2 * static_cast<std::uint64_t>(n) + 2) +
+           from;
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  auto push = [&](std::int32_t circle, int sense, std::int32_t parent, const Tangent& t, double sweep, double g) {
+  auto push = [&](std::int32_t circle, int sense, std::int32_t parent, const Tangent& t,
+                  double sweep, double g) {
     const Vec2 target = circle == kGoal ? goal : t.arr;
-    open.push({g + geom::distance(target, goal), g, circle, parent, static_cast<std::int8_t>(sense), t.dep, t.arr, sweep});
+    open.push({g + geom::distance(target, goal), g, circle, parent, static_cast<std::int8_t>(sense),
+               t.dep, t.arr, sweep});
   };
 
   auto may_touch = [&](std::int32_t circle, Vec2 p) {
@@ -284,7 +301,9 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
     for (std::int32_t j = 0; j < n; ++j) {
       if (j == s.circle) continue;
       for (int sj : {1, -1})
-        if (const auto t = circle_to_circle(ci, s.sense, circles_[static_cast<std::size_t>(j)], sj, r)) leave(j, sj, *t);
+        if (const auto t =
+                circle_to_circle(ci, s.sense, circles_[static_cast<std::size_t>(j)], sj, r))
+          leave(j, sj, *t);
     }
   };
 
@@ -306,7 +325,8 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
     if (e.circle == kGoal) {
       // The path: back through the states, each arc sampled, then forwards.
       std::vector<std::int32_t> chain;
-      for (std::int32_t v = e.parent; v != -1; v = states[static_cast<std::size_t>(v)].parent) chain.push_back(v);
+      for (std::int32_t v = e.parent; v != -1; v = states[static_cast<std::size_t>(v)].parent)
+        chain.push_back(v);
       std::reverse(chain.begin(), chain.end());
       out.path.push_back(start);
       out.drive_path.push_back(start);
@@ -332,7 +352,8 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
       }
       out.status = PlanStatus::kOk;
       out.length = e.g;
-      out.note = "segments and arcs of radius " + std::to_string(r) + " m around corners; arcs sampled every 2 degrees, length exact";
+      out.note = "segments and arcs of radius " + std::to_string(r) +
+                 " m around corners; arcs sampled every 2 degrees, length exact";
       out.stats.expanded = expanded;
       return finish();
     }

@@ -9,8 +9,9 @@
 // of segments and arcs. A controller cannot follow an arc as tight as the clearance without
 // cutting into it (pure pursuit starts turning a lookahead early), so `drive_path` replaces each
 // arc by the corner where its tangents meet (split in two or more where a neighbour is near):
-// the robot turns there in place, as at a square corner, never inside the clearance. No planner of the source documents or
-// the anchors offers this; its square- and staircase-inflated counterparts are `vg` with
+// the robot turns there in place, as at a square corner, never inside the clearance. No planner of
+// the source documents or the anchors offers this; its square- and staircase-inflated counterparts
+// are `vg` with
 // --corner-steps 1 and more.
 #pragma once
 
@@ -39,16 +40,18 @@ class RoundTangentPlanner : public Planner {
   bool arc_clear(std::int32_t circle, double from, double sweep) const;
   /// Appends the corners the controller turns at for the arc of circle c from angle `from`
   /// in `sense` through `sweep`, entered at `arr` and left at `dep`.
-  void append_drive_corners(Vec2 c, double from, int sense, double sweep, Vec2 arr, Vec2 dep, std::vector<Vec2>& out) const;
+  void append_drive_corners(Vec2 c, double from, int sense, double sweep, Vec2 arr, Vec2 dep,
+                            std::vector<Vec2>& out) const;
   const std::vector<Vec2>& circles() const { return circles_; }
   double radius() const { return radius_; }
 
  private:
-  std::vector<Rect> raw_;      // obstacles as given, not inflated
-  Rect free_floor_;            // the floor shrunk by the clearance (walls are flat)
+  std::vector<Rect> raw_;  // obstacles as given, not inflated
+  Rect free_floor_;        // the floor shrunk by the clearance (walls are flat)
   double radius_;
   std::vector<Vec2> circles_;  // distinct corners of the obstacles that are not inside one
-  std::vector<unsigned> allowed_;  // per circle, the quadrants a tangent may touch it in (bit q: [q, q + 1] pi/2)
+  std::vector<unsigned>
+      allowed_;  // per circle, the quadrants a tangent may touch it in (bit q: [q, q + 1] pi/2)
   std::optional<ObstacleMap> square_;  // the square inflation, for snapping a blocked end (a subset
                                        // of free space); built only when snapping is on
   double build_ms_ = 0;

@@ -23,8 +23,8 @@ void AngleCoverage::add(double lo, double hi) {
 }
 
 void AngleCoverage::insert(double lo, double hi) {
-  auto it = intervals_.insert(std::lower_bound(intervals_.begin(), intervals_.end(), std::make_pair(lo, hi)),
-                              {lo, hi});
+  auto it = intervals_.insert(
+      std::lower_bound(intervals_.begin(), intervals_.end(), std::make_pair(lo, hi)), {lo, hi});
   // Merge only overlapping neighbours: open intervals that merely touch leave a gap.
   if (it != intervals_.begin() && it->first < std::prev(it)->second) {
     auto prev = std::prev(it);
@@ -38,13 +38,15 @@ void AngleCoverage::insert(double lo, double hi) {
 }
 
 bool AngleCoverage::covers(double a) const {
-  auto it = std::upper_bound(intervals_.begin(), intervals_.end(), a,
-                             [](double x, const std::pair<double, double>& iv) { return x < iv.first; });
+  auto it =
+      std::upper_bound(intervals_.begin(), intervals_.end(), a,
+                       [](double x, const std::pair<double, double>& iv) { return x < iv.first; });
   return it != intervals_.begin() && a < std::prev(it)->second && a > std::prev(it)->first;
 }
 
 bool AngleCoverage::full() const {
-  return intervals_.size() == 1 && intervals_[0].first <= 0.0 && intervals_[0].second >= kPseudoAnglePeriod;
+  return intervals_.size() == 1 && intervals_[0].first <= 0.0 &&
+         intervals_[0].second >= kPseudoAnglePeriod;
 }
 
 }  // namespace plantsim::planner

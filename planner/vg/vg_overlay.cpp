@@ -27,14 +27,21 @@ std::optional<Vec2> out_of_added(const ObstacleMap& map, const std::vector<Rect>
   std::vector<Vec2> tries;
   for (const Rect& r : added) {
     if (!geom::in_open_rect(r, p)) continue;
-    tries.insert(tries.end(), {{r.xmin, p.y}, {r.xmax, p.y}, {p.x, r.ymin}, {p.x, r.ymax}, {r.xmin, r.ymin},
-                               {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}});
+    tries.insert(tries.end(), {{r.xmin, p.y},
+                               {r.xmax, p.y},
+                               {p.x, r.ymin},
+                               {p.x, r.ymax},
+                               {r.xmin, r.ymin},
+                               {r.xmax, r.ymin},
+                               {r.xmax, r.ymax},
+                               {r.xmin, r.ymax}});
   }
   // Exits of one rectangle may lie inside another: try every exit, and the exits' exits.
   for (std::size_t k = 0; k < tries.size() && k < 256; ++k) {
     const Vec2 q = tries[k];
     if (!inside_any(added, q)) {
-      if (map.point_free(q) && geom::distance(p, q) < best_d) best_d = geom::distance(p, q), best = q;
+      if (map.point_free(q) && geom::distance(p, q) < best_d)
+        best_d = geom::distance(p, q), best = q;
       continue;
     }
     for (const Rect& r : added)
@@ -46,8 +53,8 @@ std::optional<Vec2> out_of_added(const ObstacleMap& map, const std::vector<Rect>
 
 }  // namespace
 
-PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector<Rect>& added, Vec2 start, Vec2 goal,
-                           OverlayStats* stats) {
+PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector<Rect>& added,
+                           Vec2 start, Vec2 goal, OverlayStats* stats) {
   const auto t0 = std::chrono::steady_clock::now();
   const VisibilityGraph& graph = base.graph();
   const ObstacleMap& map = base.map();
@@ -74,14 +81,17 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
   // The added rectangles' corners that lie in free space.
   std::vector<Vec2> corners;
   for (const Rect& r : added)
-    for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
+    for (Vec2 c :
+         {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
       if (map.point_free(c) && !inside_any(added, c)) corners.push_back(c);
 
   const auto& vertices = graph.vertices();
   const auto n = static_cast<std::int32_t>(vertices.size());
   const auto m = static_cast<std::int32_t>(corners.size());
   const std::int32_t s = n + m, g = n + m + 1;
-  auto point = [&](std::int32_t v) { return v < n ? vertices[v].p : v < s ? corners[v - n] : v == s ? start : goal; };
+  auto point = [&](std::int32_t v) {
+    return v < n ? vertices[v].p : v < s ? corners[v - n] : v == s ? start : goal;
+  };
   auto clear_of_added = [&](Vec2 a, Vec2 b) {
     for (const Rect& r : added) {
       ++st.added_tests;
@@ -122,8 +132,10 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
     if (e.parent >= 0) {
       // The map's verdict (cached in its graph), then the added rectangles.
       const Vec2 a = point(e.parent), b = point(e.node);
-      const bool on_map = e.candidate == kUntested ? graph.visible(a, b)
-                                                   : graph.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
+      const bool on_map =
+          e.candidate == kUntested
+              ? graph.visible(a, b)
+              : graph.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
       if (!on_map || !clear_of_added(a, b)) continue;
     }
     closed[e.node] = 1;
@@ -139,11 +151,14 @@ PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector
       st.base_candidates += static_cast<std::int64_t>(cands.size());
       for (std::size_t i = 0; i < cands.size(); ++i) {
         const std::int32_t to = cands[i].to;
-        if (closed[to] || inside_any(added, vertices[to].p) || !graph.taut(prev, e.node, vertices[to].p)) continue;
+        if (closed[to] || inside_any(added, vertices[to].p) ||
+            !graph.taut(prev, e.node, vertices[to].p))
+          continue;
         push(to, e.node, static_cast<std::int32_t>(i), e.g + cands[i].length);
       }
       for (std::int32_t k = 0; k < m; ++k)
-        if (VisibilityGraph::tangent(vertices[e.node], corners[k] - u) && graph.taut(prev, e.node, corners[k]))
+        if (VisibilityGraph::tangent(vertices[e.node], corners[k] - u) &&
+            graph.taut(prev, e.node, corners[k]))
           push(n + k, e.node, kUntested, e.g + geom::distance(u, corners[k]));
       if (VisibilityGraph::tangent(vertices[e.node], goal - u) && graph.taut(prev, e.node, goal))
         push(g, e.node, kUntested, e.g + geom::distance(u, goal));

@@ -24,7 +24,7 @@ struct OverlayStats {
 /// of what it sensed) moves to the nearest point outside them, and the result says so; a
 /// start or goal blocked on the map, or a goal inside an added rectangle, is kStartBlocked /
 /// kGoalBlocked. `base` is only read through its lazily filled caches (not thread-safe).
-PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector<Rect>& added, Vec2 start, Vec2 goal,
-                           OverlayStats* stats = nullptr);
+PlanResult plan_with_added(const VisibilityGraphPlanner& base, const std::vector<Rect>& added,
+                           Vec2 start, Vec2 goal, OverlayStats* stats = nullptr);
 
 }  // namespace plantsim::planner

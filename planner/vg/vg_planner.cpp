@@ -38,30 +38,34 @@ void fill_path(const SearchResult& found, const std::vector<Vec2>& points, PlanR
 VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input)
     : build_start_(std::chrono::steady_clock::now()),
       input_(input),
-      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
+           input.inflation_m),
       graph_(map_),
       snap_(input.snap_to_free) {
   build_ms_ = util::ms_since(build_start_);
 }
 
-VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base,
+VisibilityGraphPlanner::VisibilityGraphPlanner(const PlannerInput& input,
+                                               const VisibilityGraphPlanner& base,
                                                const std::vector<Rect>& changed)
     : build_start_(std::chrono::steady_clock::now()),
       input_(input),
-      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+      map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
+           input.inflation_m),
       graph_(map_, base.graph_, changed),
       snap_(input.snap_to_free) {
   build_ms_ = util::ms_since(build_start_);
 }
 
-std::unique_ptr<VisibilityGraphPlanner> VisibilityGraphPlanner::with_changes(const std::vector<Rect>& added,
-                                                                             const std::vector<std::size_t>& removed) const {
+std::unique_ptr<VisibilityGraphPlanner> VisibilityGraphPlanner::with_changes(
+    const std::vector<Rect>& added, const std::vector<std::size_t>& removed) const {
   PlannerInput next = input_;
   std::vector<Rect> changed_raw = added;
   std::vector<char> drop(input_.obstacles.size(), 0);
   for (std::size_t i : removed) {
     if (i >= drop.size())
-      throw std::out_of_range("vg: obstacle " + std::to_string(i) + " to remove; the world has " + std::to_string(drop.size()));
+      throw std::out_of_range("vg: obstacle " + std::to_string(i) + " to remove; the world has " +
+                              std::to_string(drop.size()));
     drop[i] = 1;
     changed_raw.push_back(input_.obstacles[i]);
   }
@@ -132,7 +136,8 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
   // are still pushed, so that ties resolve exactly as before.
   std::vector<double> best_known(n + 2, std::numeric_limits<double>::infinity());
   SearchResult result;
-  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv, bool known_visible) {
+  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv,
+                  bool known_visible) {
     if (closed[v] || gv > best_known[v]) return;
     if (known_visible) best_known[v] = std::min(best_known[v], gv);
     open.push({gv + geom::distance(point(v), goal), gv, v, from, candidate});
@@ -151,8 +156,10 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
     open.pop();
     if (closed[e.node]) continue;
     if (e.parent >= 0) {
-      const bool ok = e.candidate == kUntested ? graph_.visible(point(e.parent), point(e.node))
-                                               : graph_.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
+      const bool ok =
+          e.candidate == kUntested
+              ? graph_.visible(point(e.parent), point(e.node))
+              : graph_.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
       if (!ok) continue;
     }
     closed[e.node] = 1;
@@ -195,7 +202,8 @@ std::vector<std::pair<Vec2, Vec2>> VisibilityGraphPlanner::graph_edges() const {
   for (std::int32_t v = 0; v < static_cast<std::int32_t>(graph_.vertices().size()); ++v)
     if (!graph_.resolved(v)) graph_.resolve(v);
   std::vector<std::pair<Vec2, Vec2>> out;
-  for (const auto& [a, b] : graph_.visible_edges()) out.emplace_back(graph_.vertices()[a].p, graph_.vertices()[b].p);
+  for (const auto& [a, b] : graph_.visible_edges())
+    out.emplace_back(graph_.vertices()[a].p, graph_.vertices()[b].p);
   return out;
 }
 
@@ -208,13 +216,14 @@ std::vector<std::pair<Vec2, Vec2>> TraditionalVisibilityPlanner::graph_edges() c
 }
 
 TraditionalVisibilityPlanner::TraditionalVisibilityPlanner(const PlannerInput& input)
-    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor, input.inflation_m),
+    : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
+           input.inflation_m),
       snap_(input.snap_to_free) {
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < map_.obstacle_count(); ++i) {
     const Rect& r = map_.rects()[i];
-    for (Vec2 c : {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax},
-                   Vec2{r.xmin, r.ymax}})
+    for (Vec2 c :
+         {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
       // A pinch point is never a bend of a valid path: both its edges would have to lie in
       // one free quadrant (no shortcut needed), or cross between the two (not allowed).
       if (map_.point_free(c) && !map_.is_pinch_point(c)) corners_.push_back(c);
@@ -244,8 +253,10 @@ PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
     // Start and goal joined to every visible corner, as the traditional method does.
     std::vector<GraphEdge> from_start, to_goal;
     for (std::int32_t w = 0; w < n; ++w) {
-      if (map_.segment_free(start, corners_[w])) from_start.push_back({w, geom::distance(start, corners_[w])});
-      if (map_.segment_free(corners_[w], goal)) to_goal.push_back({w, geom::distance(corners_[w], goal)});
+      if (map_.segment_free(start, corners_[w]))
+        from_start.push_back({w, geom::distance(start, corners_[w])});
+      if (map_.segment_free(corners_[w], goal))
+        to_goal.push_back({w, geom::distance(corners_[w], goal)});
     }
     std::vector<double> goal_edge(n, -1.0);
     for (const auto& e : to_goal) goal_edge[e.to] = e.length;

@@ -21,8 +21,8 @@ class VisibilityGraphPlanner : public Planner {
   /// `removed` (into the input's obstacles) taken away: a parked cart that arrived or left. It
   /// takes over every vertex's edges that the change cannot reach, so the next query searches
   /// mostly a warm graph. Throws std::out_of_range for an index past the obstacles.
-  std::unique_ptr<VisibilityGraphPlanner> with_changes(const std::vector<Rect>& added,
-                                                       const std::vector<std::size_t>& removed) const;
+  std::unique_ptr<VisibilityGraphPlanner> with_changes(
+      const std::vector<Rect>& added, const std::vector<std::size_t>& removed) const;
   const PlannerInput& input() const { return input_; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;  ///< the whole reduced graph
@@ -30,7 +30,8 @@ class VisibilityGraphPlanner : public Planner {
   const VisibilityGraph& graph() const { return graph_; }
 
  private:
-  VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base, const std::vector<Rect>& changed);
+  VisibilityGraphPlanner(const PlannerInput& input, const VisibilityGraphPlanner& base,
+                         const std::vector<Rect>& changed);
   SearchResult lazy_astar(Vec2 start, Vec2 goal) const;
 
   std::chrono::steady_clock::time_point build_start_;  // first member: times the build

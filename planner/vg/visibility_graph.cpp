@@ -20,10 +20,13 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
   for (std::size_t i = 0; i < map.obstacle_count(); ++i) {
     const Rect& r = rects[i];
     // Each corner with the diagonal pointing away from its rectangle.
-    const struct { Vec2 c; int sx, sy; } corners[4] = {{{r.xmin, r.ymin}, -1, -1},
-                                                       {{r.xmax, r.ymin}, 1, -1},
-                                                       {{r.xmax, r.ymax}, 1, 1},
-                                                       {{r.xmin, r.ymax}, -1, 1}};
+    const struct {
+      Vec2 c;
+      int sx, sy;
+    } corners[4] = {{{r.xmin, r.ymin}, -1, -1},
+                    {{r.xmax, r.ymin}, 1, -1},
+                    {{r.xmax, r.ymax}, 1, 1},
+                    {{r.xmin, r.ymax}, -1, 1}};
     for (const auto& k : corners) {
       if (!geom::in_closed_rect(map.free_floor(), k.c)) continue;
       const auto self = static_cast<std::int32_t>(i);
@@ -31,16 +34,18 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
           map.quadrant_occupied(k.c, -k.sx, k.sy, self) ||
           map.quadrant_occupied(k.c, k.sx, -k.sy, self))
         continue;
-      vertices_.push_back({k.c, r.center(), static_cast<std::int8_t>(k.sx), static_cast<std::int8_t>(k.sy)});
+      vertices_.push_back(
+          {k.c, r.center(), static_cast<std::int8_t>(k.sx), static_cast<std::int8_t>(k.sy)});
     }
   }
   // Nested rectangles sharing a corner give the same vertex twice.
   auto key = [](const GraphVertex& v) { return std::make_tuple(v.p.x, v.p.y, v.sx, v.sy); };
   std::sort(vertices_.begin(), vertices_.end(),
             [&](const GraphVertex& a, const GraphVertex& b) { return key(a) < key(b); });
-  vertices_.erase(std::unique(vertices_.begin(), vertices_.end(),
-                              [&](const GraphVertex& a, const GraphVertex& b) { return key(a) == key(b); }),
-                  vertices_.end());
+  vertices_.erase(
+      std::unique(vertices_.begin(), vertices_.end(),
+                  [&](const GraphVertex& a, const GraphVertex& b) { return key(a) == key(b); }),
+      vertices_.end());
   vertices_in_cell_.resize(static_cast<std::size_t>(map.grid_width()) * map.grid_height());
   for (std::size_t i = 0; i < vertices_.size(); ++i)
     vertices_in_cell_[static_cast<std::size_t>(map.cell_y(vertices_[i].p.y)) * map.grid_width() +
@@ -53,7 +58,8 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map) : map_(map) {
   rect_seen_.assign(map.rects().size(), 0);
 }
 
-VisibilityGraph::VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base, const std::vector<Rect>& changed)
+VisibilityGraph::VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base,
+                                 const std::vector<Rect>& changed)
     : VisibilityGraph(map) {
   // A vertex's candidates and verdicts came from the rectangles inside the square its scan
   // covered, and its segments to them lie in that square: where no changed rectangle reaches
@@ -63,9 +69,12 @@ VisibilityGraph::VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& 
   const auto& old_vertices = base.vertices_;
   std::vector<std::int32_t> old_to_new(old_vertices.size(), -1);
   for (std::size_t i = 0, j = 0; i < old_vertices.size() && j < vertices_.size();) {
-    if (before(old_vertices[i], vertices_[j])) ++i;
-    else if (before(vertices_[j], old_vertices[i])) ++j;
-    else old_to_new[i++] = static_cast<std::int32_t>(j++);
+    if (before(old_vertices[i], vertices_[j]))
+      ++i;
+    else if (before(vertices_[j], old_vertices[i]))
+      ++j;
+    else
+      old_to_new[i++] = static_cast<std::int32_t>(j++);
   }
   const double margin = std::max(map.cell_size(), base.map_.cell_size());
   for (std::size_t i = 0; i < old_vertices.size(); ++i) {
@@ -165,13 +174,19 @@ void VisibilityGraph::add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) c
   // which of the eight regions around the rectangle u lies in.
   Vec2 cw, ccw;
   if (u.x < r.xmin) {
-    if (u.y < r.ymin) cw = {r.xmax, r.ymin}, ccw = {r.xmin, r.ymax};
-    else if (u.y > r.ymax) cw = {r.xmin, r.ymin}, ccw = {r.xmax, r.ymax};
-    else cw = {r.xmin, r.ymin}, ccw = {r.xmin, r.ymax};
+    if (u.y < r.ymin)
+      cw = {r.xmax, r.ymin}, ccw = {r.xmin, r.ymax};
+    else if (u.y > r.ymax)
+      cw = {r.xmin, r.ymin}, ccw = {r.xmax, r.ymax};
+    else
+      cw = {r.xmin, r.ymin}, ccw = {r.xmin, r.ymax};
   } else if (u.x > r.xmax) {
-    if (u.y < r.ymin) cw = {r.xmax, r.ymax}, ccw = {r.xmin, r.ymin};
-    else if (u.y > r.ymax) cw = {r.xmin, r.ymax}, ccw = {r.xmax, r.ymin};
-    else cw = {r.xmax, r.ymax}, ccw = {r.xmax, r.ymin};
+    if (u.y < r.ymin)
+      cw = {r.xmax, r.ymax}, ccw = {r.xmin, r.ymin};
+    else if (u.y > r.ymax)
+      cw = {r.xmin, r.ymax}, ccw = {r.xmax, r.ymin};
+    else
+      cw = {r.xmax, r.ymax}, ccw = {r.xmax, r.ymin};
   } else if (u.y < r.ymin) {
     cw = {r.xmax, r.ymin}, ccw = {r.xmin, r.ymin};
   } else if (u.y > r.ymax) {
@@ -205,18 +220,22 @@ void VisibilityGraph::drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size
   for (const Span& sp : spans_) by_shell_[fill_at_[span_shell(sp)]++] = sp;
   // Candidates by shell too (a shell past the last span's is treated as that one).
   cand_at_.assign(shells + 2, 0);
-  for (std::size_t i = first; i < out.size(); ++i) ++cand_at_[std::min(shell_of(out[i].length), shells) + 1];
+  for (std::size_t i = first; i < out.size(); ++i)
+    ++cand_at_[std::min(shell_of(out[i].length), shells) + 1];
   for (std::size_t k = 1; k < cand_at_.size(); ++k) cand_at_[k] += cand_at_[k - 1];
   fill_at_.assign(cand_at_.begin(), cand_at_.end() - 1);
   cand_by_shell_.resize(out.size() - first);
-  for (std::size_t i = first; i < out.size(); ++i) cand_by_shell_[fill_at_[std::min(shell_of(out[i].length), shells)]++] = out[i];
+  for (std::size_t i = first; i < out.size(); ++i)
+    cand_by_shell_[fill_at_[std::min(shell_of(out[i].length), shells)]++] = out[i];
   AngleCoverage nearer;
   std::size_t next_span = 0, kept = first;
   for (std::size_t k = 0; k <= shells; ++k) {
     // Spans in shells before k end nearer than any candidate of shell k starts.
-    for (; next_span < nearer_than_[k]; ++next_span) nearer.add(by_shell_[next_span].lo, by_shell_[next_span].hi);
+    for (; next_span < nearer_than_[k]; ++next_span)
+      nearer.add(by_shell_[next_span].lo, by_shell_[next_span].hi);
     for (std::size_t i = cand_at_[k]; i < cand_at_[k + 1]; ++i)
-      if (!nearer.covers(pseudo_angle(vertices_[cand_by_shell_[i].to].p - u))) out[kept++] = cand_by_shell_[i];
+      if (!nearer.covers(pseudo_angle(vertices_[cand_by_shell_[i].to].p - u)))
+        out[kept++] = cand_by_shell_[i];
   }
   out.resize(kept);
 }
@@ -230,7 +249,7 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
     scan_stamp_ = 1;
   }
   AngleCoverage coverage;
-  if (self) {  // the corner's own rectangle fills one open quadrant
+  if (self) {                                  // the corner's own rectangle fills one open quadrant
     const int qx = -self->sx, qy = -self->sy;  // quadrant of the rectangle
     const double lo = qy > 0 ? (qx > 0 ? 0.0 : 1.0) : (qx < 0 ? 2.0 : 3.0);
     coverage.add(lo, lo + 1.0);
@@ -282,9 +301,11 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
     std::size_t kept = 0;
     for (std::int32_t i : big_rects_) {
       const Rect& r = rects[i];
-      add_span(coverage, u, {std::max(r.xmin, box.xmin), std::max(r.ymin, box.ymin),
-                             std::min(r.xmax, box.xmax), std::min(r.ymax, box.ymax)});
-      if (!(r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax)) big_rects_[kept++] = i;
+      add_span(coverage, u,
+               {std::max(r.xmin, box.xmin), std::max(r.ymin, box.ymin), std::min(r.xmax, box.xmax),
+                std::min(r.ymax, box.ymax)});
+      if (!(r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax))
+        big_rects_[kept++] = i;
     }
     big_rects_.resize(kept);
     if (coverage.full()) {
@@ -299,8 +320,9 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
   }
   drop_hidden(u, out, first);
   if (self_index >= 0)
-    scan_box_[static_cast<std::size_t>(self_index)] = {m.cell_bounds(cx0 - k_last, 0).xmin, m.cell_bounds(0, cy0 - k_last).ymin,
-                                                       m.cell_bounds(cx0 + k_last, 0).xmax, m.cell_bounds(0, cy0 + k_last).ymax};
+    scan_box_[static_cast<std::size_t>(self_index)] = {
+        m.cell_bounds(cx0 - k_last, 0).xmin, m.cell_bounds(0, cy0 - k_last).ymin,
+        m.cell_bounds(cx0 + k_last, 0).xmax, m.cell_bounds(0, cy0 + k_last).ymax};
 }
 
 }  // namespace plantsim::planner

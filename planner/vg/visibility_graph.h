@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "planner/vg/angle_coverage.h"
 #include "planner/obstacle_map.h"
+#include "planner/vg/angle_coverage.h"
 
 namespace plantsim::planner {
 
@@ -40,7 +40,8 @@ class VisibilityGraph {
   /// The graph of `map`, a copy of `base`'s map with the (inflated) rectangles `changed` added
   /// or removed: what `base` found for a vertex whose scan no changed rectangle reaches is
   /// taken over as it is; the rest is found anew, lazily.
-  VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base, const std::vector<Rect>& changed);
+  VisibilityGraph(const ObstacleMap& map, const VisibilityGraph& base,
+                  const std::vector<Rect>& changed);
   /// Vertices whose candidates were taken over from a base graph.
   std::int64_t reused() const { return reused_; }
 
@@ -87,7 +88,8 @@ class VisibilityGraph {
   std::int64_t segment_tests() const { return segment_tests_; }
 
  private:
-  void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index, std::vector<GraphEdge>& out) const;
+  void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index,
+            std::vector<GraphEdge>& out) const;
   void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
   void drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const;
   std::size_t bytes_of(std::size_t v) const {
@@ -111,11 +113,12 @@ class VisibilityGraph {
   mutable std::size_t candidate_bytes_ = 0;
   mutable std::vector<std::uint32_t> rect_seen_;  // stamp per rectangle, for one scan
   mutable std::uint32_t scan_stamp_ = 0;
-  mutable std::vector<std::int32_t> big_rects_;   // scratch: rectangles reaching past a ring
-  mutable std::vector<Span> spans_;               // scratch: every rectangle's span in one scan
-  mutable std::vector<Span> by_shell_;            // scratch: spans_ bucketed by depth
-  mutable std::vector<std::size_t> nearer_than_, cand_at_, fill_at_;  // scratch: the bucket sorts' counts
-  mutable std::vector<GraphEdge> cand_by_shell_;                        // scratch: candidates bucketed
+  mutable std::vector<std::int32_t> big_rects_;  // scratch: rectangles reaching past a ring
+  mutable std::vector<Span> spans_;              // scratch: every rectangle's span in one scan
+  mutable std::vector<Span> by_shell_;           // scratch: spans_ bucketed by depth
+  mutable std::vector<std::size_t> nearer_than_, cand_at_,
+      fill_at_;                                   // scratch: the bucket sorts' counts
+  mutable std::vector<GraphEdge> cand_by_shell_;  // scratch: candidates bucketed
   mutable std::int64_t edges_found_ = 0;
   mutable std::int64_t segment_tests_ = 0;
 };
