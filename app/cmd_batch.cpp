@@ -9,7 +9,9 @@
 #include "app/commands.h"
 #include "app/episode_outputs.h"
 #include "batch/batch_gate.h"
+#include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
+#include "batch/episode_runner.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
-#include "batch/batch_runner.h"
+#include "batch/wilson_interval.h"
 
 namespace plantsim::batch {
 const char* statistic_name(GateStatistic s) {

@@ -8,8 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/batch_gate.h"
-#include "batch/batch_runner.h"
 #include "batch/batch_summary.h"
+#include "batch/summary_tables.h"
+#include "batch/wilson_interval.h"
 #include "planner/planner.h"
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"

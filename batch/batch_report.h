@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "batch/batch_runner.h"
 #include "batch/batch_spec.h"
+#include "batch/episode_runner.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {

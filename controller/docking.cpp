@@ -79,8 +79,10 @@ void DockingController::miss() {
   // Always back away from the charger first; after the last allowed retry, fail there.
   if (retries_ >= params_.max_retries)
     giving_up_ = true;
-  else
+  else {
     ++retries_;
+    events_.retried = true;
+  }
   phase_ = DockPhase::kBackOff;
 }
 
@@ -121,6 +123,7 @@ DockingCommand DockingController::recover(const DockingInput& in) {
     // (the odometry never saw the shove, so the dock estimate in its frame is stale).
     recovering_ = false;
     ++recoveries_;
+    events_.recovered = true;
     phase_ = DockPhase::kTravel;
     dock_placed_ = false;
     pressing_ = false;
@@ -156,6 +159,13 @@ bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
 }
 
 DockingCommand DockingController::step(const DockingInput& in) {
+  events_ = {};
+  DockingCommand out = step_phase(in);
+  out.events = events_;
+  return out;
+}
+
+DockingCommand DockingController::step_phase(const DockingInput& in) {
   const bool docking = phase_ != DockPhase::kDocked && phase_ != DockPhase::kFailed &&
                        phase_ != DockPhase::kUndock && phase_ != DockPhase::kUndocked;
   if (in.displaced && docking && !pressing_ && !recovering_) {
@@ -189,9 +199,7 @@ bool DockingController::guard(const DockingInput& in, const Twist& twist, bool s
   if (arc_clear(in.pose, twist, std::max(v, 0.1), ahead,
                 params_.footprint_radius_m + params_.safety_margin_m, boxes))
     return true;
-  if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
-  was_blocked_ = true;
-  clear_time_s_ = 0;
+  note_blocked();
   return false;
 }
 
@@ -213,6 +221,15 @@ bool DockingController::reverse_to_staging(const DockingInput& in, DockingComman
     note_clear(in.dt_s);
   }
   return false;
+}
+
+void DockingController::note_blocked() {
+  if (!was_blocked_ && clear_time_s_ >= 1.0) {
+    ++stops_;
+    events_.stopped = true;
+  }
+  was_blocked_ = true;
+  clear_time_s_ = 0;
 }
 
 void DockingController::note_clear(double dt_s) {
@@ -245,9 +262,7 @@ DockingCommand DockingController::decide(const DockingInput& in) {
                      params_.footprint_radius_m + params_.safety_margin_m, in.nearby_obstacles)) {
         // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
         // check with it; a go of less than a second between two blocks is the same stop.
-        if (!was_blocked_ && clear_time_s_ >= 1.0) ++stops_;
-        was_blocked_ = true;
-        clear_time_s_ = 0;
+        note_blocked();
         out.twist = {};
         out.blocked = true;
         // Stopped in something's way (it does not yield): back out along the stretch just driven.

@@ -88,6 +88,15 @@ struct DockingInput {
   double position_sigma_m = 0;  ///< 1-sigma of the position estimate (largest direction)
 };
 
+/// What one control step did that the episode reports as an event (each one is also counted).
+/// Reported by the part that did it: the docking controller, or the travel for a replan.
+struct StepEvents {
+  bool stopped = false;    ///< stopped for something in the way (a new encounter)
+  bool retried = false;    ///< backed off to try the docking again
+  bool recovered = false;  ///< settled and set off again after a displacement
+  bool replanned = false;  ///< a new plan around what blocked the way
+};
+
 struct DockingCommand {
   Twist twist;
   DockPhase phase = DockPhase::kTravel;
@@ -96,6 +105,7 @@ struct DockingCommand {
   bool replan_requested = false;   ///< blocked long enough: plan again around what is seen
   bool recover_requested = false;  ///< settled after a displacement: plan a new way to the staging
                                    ///< pose (the controller is travelling again; give it the path)
+  StepEvents events;
 };
 
 class DockingController {
@@ -118,6 +128,7 @@ class DockingController {
   void replace_path(std::vector<Vec2> path);
 
  private:
+  DockingCommand step_phase(const DockingInput& in);
   DockingCommand decide(const DockingInput& in);
   DockingCommand approach(const DockingInput& in);
   DockingCommand recover(const DockingInput& in);
@@ -131,6 +142,8 @@ class DockingController {
   /// what lies at the charger when `spare_charger`.
   bool guard(const DockingInput& in, const Twist& twist, bool spare_charger);
   void note_clear(double dt_s);
+  /// A block met: counted (and reported) as a stop unless it follows the last one closely.
+  void note_blocked();
   void fail(DockFailure why);
   /// Backs straight out along the axis (guarded); true once at the staging pose.
   bool reverse_to_staging(const DockingInput& in, DockingCommand& out);
@@ -160,6 +173,7 @@ class DockingController {
       0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
   std::optional<Pose2> rejected_detection_;  // the last detection the gate held back
+  StepEvents events_;                        // of the step under way
 };
 
 }  // namespace plantsim::controller

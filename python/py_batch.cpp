@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "batch/batch_runner.h"
+#include "batch/summary_tables.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
 #include "worlds/world.h"

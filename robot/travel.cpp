@@ -85,7 +85,8 @@ FailureReason reason_of(controller::DockFailure why) {
 }  // namespace
 
 Decision decision_of(const controller::DockingCommand& cmd, controller::DockFailure why) {
-  Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked, std::nullopt};
+  Decision d{cmd.twist,    cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked,
+             std::nullopt, cmd.events};
   if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
   if (cmd.phase == controller::DockPhase::kUndocked) d.finished = "undocked";
   if (cmd.phase == controller::DockPhase::kFailed) {

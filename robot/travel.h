@@ -37,6 +37,7 @@ struct Decision {
   std::string finished;           ///< "docked", "failed" or "trapped" when the travel has ended
   bool blocked = false;           ///< holding still because the way ahead is not clear
   std::optional<GiveUp> give_up;  ///< why, when it ended without success
+  controller::StepEvents events;  ///< what this step did that the episode reports
 };
 
 /// What a travel mode has counted.

@@ -28,11 +28,12 @@ class PathTravel : public Travel {
         need_plan_ = false;
       }
       if (need_plan_) {  // no way yet: wait
-        Decision wait = decision_of({{}, cmd.phase, 0, true, false, false});
+        Decision wait = decision_of({{}, cmd.phase, 0, true, false, false, cmd.events});
         wait.blocked = true;
         return wait;
       }
     }
+    bool replanned = false;
     if (cmd.replan_requested) {
       // Plan again with what blocks the way as extra obstacles, from the nearest free point
       // if the robot stands inside their margin.
@@ -41,9 +42,12 @@ class PathTravel : public Travel {
         control_.replace_path(*path);
         plan_ = std::move(*path);
         ++replans_;
+        replanned = true;
       }
     }
-    return decision_of(cmd, control_.failure());
+    Decision d = decision_of(cmd, control_.failure());
+    d.events.replanned = replanned;
+    return d;
   }
   TravelCounts counts() const override {
     return {control_.retries(), control_.stops(), replans_, 0, 0, control_.recoveries()};

@@ -16,6 +16,7 @@ class PursuitTravel : public Travel {
         next_plan_s_(s.pursuit_replan_period_s) {}
 
   Decision decide(const Perception& p) override {
+    bool replanned = false;
     if (p.target && (p.t_s >= next_plan_s_ || control_.phase() != controller::DockPhase::kTravel)) {
       next_plan_s_ = p.t_s + s_.pursuit_replan_period_s;
       if (auto path = plan_around(map_, planner_, s_.docking, p.pose, *p.target, p.obstacles,
@@ -25,10 +26,13 @@ class PursuitTravel : public Travel {
         else
           control_ = controller::DockingController(s_.tracking, s_.docking, *path, map_.charger);
         ++replans_;
+        replanned = true;
       }
     }
     const controller::DockingCommand cmd = control_.step(docking_input(p));
-    Decision d{cmd.twist, cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked, std::nullopt};
+    Decision d{cmd.twist,    cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked,
+               std::nullopt, cmd.events};
+    d.events.replanned = replanned;
     if (cmd.phase != controller::DockPhase::kTravel)
       d.twist = {};  // at the path's end: wait for the next plan
     return d;

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
+#include "batch/wilson_interval.h"
 #include "batch_folder_test.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"

@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/batch_gate.h"
+#include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
+#include "batch/episode_runner.h"
 #include "batch_folder_test.h"
 #include "test_paths.h"
 #include "util/csv.h"

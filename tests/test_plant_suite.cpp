@@ -14,6 +14,7 @@
 
 #include "batch/batch_runner.h"
 #include "batch/plant_faults.h"
+#include "batch/wilson_interval.h"
 #include "planner/planner.h"
 #include "sim/episode.h"
 #include "test_paths.h"

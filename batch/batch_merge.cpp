@@ -1,0 +1,177 @@
+// Merging the shards of a batch (see the header): read the shards' records, find the scenario
+// again, check the ids against it, write the joined records and the report.
+#include "batch/batch_merge.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "batch/batch_report.h"
+#include "batch/episode_records.h"
+#include "batch/scenario_setup.h"
+#include "util/atomic_file.h"
+#include "util/folder_lock.h"
+
+namespace plantsim::batch {
+namespace {
+
+using nlohmann::json;
+
+/// The shards' records by id, of one scenario.
+struct ShardRecords {
+  std::map<std::string, std::pair<std::int64_t, std::string>> by_id;  // id -> (index, line)
+  std::string fingerprint, first_dir, scenario_file;
+  std::int64_t expected = 0;
+};
+
+/// The same episode from a run whose lists were ordered otherwise differs in its index and
+/// scenario file only; anything else is a different result.
+json result_of(const std::string& record) {
+  json r = json::parse(record);
+  r.erase("index"), r.erase("scenario_file");
+  return r;
+}
+
+void add_record(ShardRecords& s, const std::string& dir, const std::string& path,
+                std::string&& line) {
+  const json j = json::parse(line);
+  const std::string theirs = j["scenario"].get<std::string>();
+  if (s.fingerprint.empty()) {
+    s.fingerprint = theirs, s.first_dir = dir;
+    s.expected = j.value("scenario_episodes", std::int64_t{0});
+    s.scenario_file = j.value("scenario_file", std::string());
+  } else if (theirs != s.fingerprint) {
+    throw std::invalid_argument("cannot merge episodes of different scenarios: " + s.first_dir +
+                                " holds scenario " + s.fingerprint + ", " + dir + " holds " +
+                                theirs);
+  }
+  const std::string id = j["id"].get<std::string>();
+  const std::int64_t index = j["index"].get<std::int64_t>();
+  if (index < 0 || index >= s.expected)
+    throw std::invalid_argument("merge: " + path + " holds episode '" + id + "' with index " +
+                                std::to_string(index) + ", outside the scenario's " +
+                                std::to_string(s.expected) + " episodes");
+  const auto [at, fresh] = s.by_id.try_emplace(id, index, line);
+  if (!fresh && at->second.second != line && result_of(at->second.second) != result_of(line))
+    throw std::invalid_argument("merge: episode '" + id +
+                                "' appears twice with different results (" + path +
+                                " and an earlier folder); shards of one batch never disagree: "
+                                "merge each run's shards apart");
+}
+
+ShardRecords read_shards(const std::vector<std::string>& dirs) {
+  ShardRecords s;
+  for (const std::string& d : dirs) {
+    const std::string path = d + "/episodes.jsonl";
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path)))
+      throw std::invalid_argument(d + ": no episodes.jsonl to merge");
+    const JsonlScan scan =
+        scan_jsonl(path, [&](std::string&& line) { add_record(s, d, path, std::move(line)); });
+    if (scan.bad_lines > 0)
+      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out\n",
+                   path.c_str(), static_cast<long long>(scan.bad_lines));
+  }
+  if (s.by_id.empty())
+    throw std::invalid_argument("nothing to merge: the folders hold no episodes");
+  return s;
+}
+
+/// The scenario the records name, when its file is still there and unchanged: the figures need
+/// its worlds, and the ids are checked against its own.
+struct MergedScenario {
+  std::vector<worlds::World> worlds;
+  std::vector<std::string> planners;
+  Gate gate;
+  std::vector<Episode> episodes;
+};
+
+MergedScenario find_scenario(const ShardRecords& s) {
+  MergedScenario out;
+  std::error_code ec;
+  if (s.scenario_file.empty() || !std::filesystem::exists(s.scenario_file, ec)) return out;
+  try {
+    const BatchSpec spec = load_batch_spec(s.scenario_file);
+    ScenarioWorlds loaded = load_scenario_worlds(spec);
+    if (scenario_identity(spec, loaded.contents, loaded.names, s.expected).fingerprint ==
+        s.fingerprint) {
+      out.worlds = std::move(loaded.worlds);
+      out.planners = spec.planners;
+      out.gate = spec.gate;
+      out.episodes = all_episodes(spec, loaded.names);
+    }
+  } catch (const std::exception&) {
+    out.worlds.clear();
+  }
+  return out;
+}
+
+/// Refuses a record foreign to the scenario, and missing episodes unless `allow_partial`.
+void check_against_scenario(const ShardRecords& s, const MergedScenario& scenario,
+                            bool allow_partial) {
+  std::set<std::string_view> scenario_ids;
+  for (const Episode& e : scenario.episodes) scenario_ids.insert(e.id);
+  if (!scenario_ids.empty())  // else only their count is checked
+    for (const auto& [id, entry] : s.by_id)
+      if (!scenario_ids.count(id))
+        throw std::invalid_argument("merge: episode '" + id +
+                                    "' is not one of the scenario's episodes (" + s.scenario_file +
+                                    "): a record of another run");
+  if (scenario.worlds.empty())
+    std::fprintf(
+        stderr,
+        "merge: note: the scenario file %s is gone or changed; the report has no plan figures\n",
+        s.scenario_file.c_str());
+  const auto merged = static_cast<std::int64_t>(s.by_id.size());
+  if (merged >= s.expected || allow_partial) return;
+  std::string missing;
+  int named = 0;
+  for (const Episode& e : scenario.episodes)
+    if (named < 5 && !s.by_id.count(e.id)) missing += (named++ ? ", " : " (") + e.id;
+  if (named > 0) missing += s.expected - merged > named ? ", ...)" : ")";
+  throw IncompleteBatch("merge: " + std::to_string(s.expected - merged) + " of the scenario's " +
+                        std::to_string(s.expected) + " episodes are missing" + missing +
+                        " (a shard not run or not finished?); rerun them, or pass --allow-partial");
+}
+
+}  // namespace
+
+MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir,
+                           const MergeOptions& options) {
+  // Before any work: never a user's folder, never through a link.
+  check_batch_output_folder(out_dir, options.own_files);
+  const ShardRecords shards = read_shards(dirs);
+  const MergedScenario scenario = find_scenario(shards);
+  check_against_scenario(shards, scenario, options.allow_partial);
+  std::vector<std::pair<std::int64_t, std::string>> ordered;
+  for (const auto& [id, entry] : shards.by_id) ordered.push_back(entry);
+  std::sort(ordered.begin(), ordered.end());
+  std::string text;
+  std::vector<std::string> lines;
+  for (const auto& [index, line] : ordered) {
+    text += line + "\n";
+    lines.push_back(line);
+  }
+  MergeOutcome outcome;
+  outcome.gate = scenario.gate;
+  outcome.episodes = static_cast<std::int64_t>(shards.by_id.size());
+  outcome.expected = shards.expected;
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir))
+    throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
+  const util::FolderLock lock(out_dir);
+  util::write_file_atomically(out_dir + "/episodes.jsonl", text);
+  std::string command = "plantsim merge";
+  for (const auto& d : dirs) command += " " + d;
+  write_batch_report(
+      lines, out_dir, "plantsim merge",
+      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
+      scenario.worlds.empty() ? nullptr : &scenario.worlds, scenario.planners,
+      options.gate.applied_to(outcome.gate), true);
+  return outcome;
+}
+
+}  // namespace plantsim::batch

@@ -1,0 +1,39 @@
+// Merging the shards of a batch: their episodes.jsonl joined into one folder, exactly what one
+// run of the whole scenario writes, with the summary, report and figures made again. Refuses
+// records of different scenarios, a record foreign to the scenario, one episode with two results,
+// and (unless asked) missing episodes.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "batch/batch_spec.h"
+
+namespace plantsim::batch {
+
+struct MergeOptions {
+  bool allow_partial = false;          ///< merge even when episodes of the scenario are missing
+  std::vector<std::string> own_files;  ///< further files of this merge in its output folder
+  GateOverride gate;
+};
+
+struct MergeOutcome {
+  std::int64_t episodes = 0, expected = 0;
+  Gate gate;  ///< the scenario's gate, when its file could be read again (else none)
+};
+
+/// A merge that would lose episodes: shards missing (exit 1, not bad input).
+struct IncompleteBatch : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Joins the episodes.jsonl of shard folders (duplicates by id dropped) into out_dir, with the
+/// summary, report and figures recomputed. Refuses (std::invalid_argument) records of different
+/// scenarios or without a scenario fingerprint; throws IncompleteBatch when episodes are missing
+/// unless options.allow_partial.
+MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir,
+                           const MergeOptions& options = {});
+
+}  // namespace plantsim::batch

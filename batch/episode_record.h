@@ -1,0 +1,19 @@
+// One episode's line of episodes.jsonl: its id and place in the scenario, its settings' names,
+// the metrics of its result, the exact optimum, its driven path thinned for the report.
+#pragma once
+
+#include <string>
+
+#include "batch/batch_spec.h"
+#include "batch/scenario_setup.h"
+#include "sim/episode.h"
+#include "worlds/world.h"
+
+namespace plantsim::batch {
+
+/// The JSON record (one line, no newline) of episode `e` run on `plant` with result `r`;
+/// `optimal_m` is the exact shortest path to the staging pose.
+std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
+                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m);
+
+}  // namespace plantsim::batch

@@ -1,0 +1,164 @@
+// The episode's record, from what each stage of the loop produced (see the header).
+#include "sim/episode_recorder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plantsim::sim {
+
+using robot::Decision;
+using robot::Perception;
+
+EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig& config,
+                                 EpisodeResult& result)
+    : config_(config),
+      r_(result),
+      metrics_(plant, result, config.catch_distance_m, config.step.dt_s) {
+  r_.status = "timeout";  // until something ends the episode sooner
+  const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s));
+  const std::int64_t max_samples = max_steps / std::max(1, config.control_period_steps) + 1;
+  r_.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_samples, 1 << 20)));
+}
+
+bool EpisodeRecorder::first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start) {
+  r_.plan_stats = plan.stats;
+  r_.explored = plan.explored;
+  r_.explored_label = plan.explored_label;
+  r_.tried = plan.tried;
+  r_.marks = plan.marks;
+  r_.plan_note = plan.note;
+  if (plan.status != planner::PlanStatus::kOk) {
+    if (needed) {
+      r_.status = std::string(planner::to_string(plan.status));
+      r_.failure = robot::Failure{
+          robot::FailureReason::kNoPath, 0.0, start,
+          "the planner: " + r_.status + (plan.note.empty() ? "" : " (" + plan.note + ")")};
+      event(Kind::kFailure, 0.0, start.position());
+      return false;
+    }
+    r_.plan_note =
+        "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
+  }
+  r_.plan = plan.path;
+  r_.first_plan = plan.path;
+  r_.path_length_m = plan.length;
+  return true;
+}
+
+void EpisodeRecorder::before_step(const PhysicsWorld& physics, const ContactState& contact) {
+  metrics_.before_step(physics, contact);
+}
+
+void EpisodeRecorder::after_step(const PhysicsWorld& physics) { metrics_.after_step(physics); }
+
+bool EpisodeRecorder::perceived(double t_s, const PhysicsWorld& physics,
+                                const robot::SensorReadings& readings, const Perception& p,
+                                const robot::Perceiver& perceiver) {
+  metrics_.compare_estimate(physics, p.pose);
+  metrics_.compare_obstacles(p.obstacles);
+  metrics_.charging(physics, readings.charging);
+  worst_health_ = std::max(worst_health_, p.health);  // ok < degraded < lost
+  r_.time_s = t_s;
+  if (metrics_.target_caught(physics)) {
+    r_.caught = true;
+    r_.status = "caught";
+    sample(t_s, physics, p, nullptr);
+    return true;
+  }
+  if (config_.scan_log_period_s > 0 && t_s >= next_snapshot_s_) {
+    next_snapshot_s_ = t_s + config_.scan_log_period_s;
+    r_.perception_log.push_back(
+        {t_s, perceiver.last_scan(), perceiver.tracker().boxes(t_s), p.layer});
+  }
+  return false;
+}
+
+bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Perception& p,
+                              const Decision& d) {
+  const Pose2 truth = physics.robot_pose();
+  watch_.observe(t_s, truth, p.pose, p.health, d.blocked);
+  if (d.events.stopped) event(Kind::kStop, t_s, truth.position());
+  if (d.events.replanned) event(Kind::kReplan, t_s, truth.position());
+  if (d.events.recovered) event(Kind::kRecovery, t_s, truth.position());
+  if (d.events.retried) event(Kind::kRetry, t_s, truth.position());
+  track_moving_obstacles(t_s, physics);
+  r_.max_cross_track_m = std::max(r_.max_cross_track_m, d.cross_track_m);
+  sample(t_s, physics, p, &d);
+  if (d.finished.empty()) return false;
+  // Success is the charger's signal with no collision on the way (and, undocking, the staging
+  // pose reached again).
+  const bool charged = d.finished == "docked" || d.finished == "undocked";
+  r_.docked = charged && r_.collisions == 0;
+  r_.undocked = d.finished == "undocked";
+  r_.status = charged && !r_.docked ? "docked_with_collision" : d.finished;
+  if (!charged) metrics_.measure_final_error(physics);
+  give_up_ = d.give_up;
+  return true;
+}
+
+void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perception& p,
+                             const Decision* d) {
+  const Pose2 truth = physics.robot_pose();
+  const double speed = geom::dot(physics.robot_velocity(), truth.heading());
+  const std::optional<robot::ActorState> target = physics.target();
+  const Vec2 target_at = target ? target->box.center() : Vec2{};
+  if (d)
+    r_.trajectory.push_back({t_s, truth, p.pose, p.position_sigma_m, speed, d->cross_track_m,
+                             d->phase, d->wall_following, target_at});
+  else
+    r_.trajectory.push_back({t_s, truth, p.pose, p.position_sigma_m, speed, 0,
+                             controller::DockPhase::kTravel, false, target_at});
+}
+
+void EpisodeRecorder::track_moving_obstacles(double t_s, const PhysicsWorld& physics) {
+  constexpr double kMovingTrackPeriod_s = 0.25;
+  if (t_s < next_track_s_) return;
+  next_track_s_ = t_s + kMovingTrackPeriod_s;
+  const std::vector<robot::ActorState> actors = physics.actors();
+  r_.moving_tracks.resize(actors.size());
+  for (std::size_t i = 0; i < actors.size(); ++i) {
+    r_.moving_tracks[i].t_s.push_back(t_s);
+    r_.moving_tracks[i].boxes.push_back(actors[i].box);
+  }
+}
+
+void EpisodeRecorder::close(const PhysicsWorld& physics, const robot::Travel& travel,
+                            const controller::TractionGovernor& governor,
+                            const robot::Perceiver& perceiver, bool pursuit) {
+  for (const robot::ActorState& a : physics.actors()) r_.moving_final.push_back(a.box);
+  if (r_.status == "timeout") metrics_.measure_final_error(physics);
+  r_.localization_status = std::string(to_string(worst_health_));
+  const robot::TravelCounts counts = travel.counts();
+  r_.retries = counts.retries;
+  r_.stops = counts.stops;
+  r_.replans = counts.replans;
+  r_.local_minima = counts.local_minima;
+  r_.wall_follows = counts.wall_follows;
+  r_.recoveries = counts.recoveries;
+  r_.slips = governor.slips();
+  if (auto final_plan = travel.final_plan()) r_.plan = *final_plan;
+  r_.last_scan = perceiver.last_scan();
+  r_.relocalizations = perceiver.relocalizations();
+  r_.tracked_final = perceiver.tracker().boxes(r_.time_s);
+  r_.layer_final = perceiver.current().layer;
+  if (r_.succeeded()) return;
+  r_.failure =
+      watch_.judge(r_.time_s, physics.robot_pose(), give_up_, first_collision(physics), pursuit);
+  event(Kind::kFailure, r_.failure->time_s, r_.failure->pose.position());
+}
+
+std::optional<std::pair<double, Pose2>> EpisodeRecorder::first_collision(
+    const PhysicsWorld& physics) const {
+  for (const EpisodeResult::Event& e : r_.events) {
+    if (e.kind != Kind::kCollision) continue;
+    // The heading from the last logged sample at or before the contact (the event keeps a
+    // position).
+    double yaw = physics.robot_pose().yaw;
+    for (const TrajectorySample& s : r_.trajectory)
+      if (s.t_s <= e.t_s) yaw = s.truth.yaw;
+    return std::pair{e.t_s, Pose2{e.at.x, e.at.y, yaw}};
+  }
+  return std::nullopt;
+}
+
+}  // namespace plantsim::sim

@@ -1,0 +1,63 @@
+// The episode's record: everything an episode writes into its result besides driving the robot,
+// the trajectory log, the events, the perception snapshots, the moving obstacles' tracks, the
+// referee's metrics (episode_metrics.h) and its verdict on a failure (failure_watch.h). The loop
+// (episode.cpp) hands it what each stage produced; nothing here feeds back into the robot.
+#pragma once
+
+#include <optional>
+
+#include "controller/traction.h"
+#include "planner/planner.h"
+#include "robot/perception.h"
+#include "robot/travel.h"
+#include "sim/episode.h"
+#include "sim/episode_metrics.h"
+#include "sim/failure_watch.h"
+
+namespace plantsim::sim {
+
+class EpisodeRecorder {
+ public:
+  EpisodeRecorder(const worlds::World& plant, const EpisodeConfig& config, EpisodeResult& result);
+
+  /// The first plan and what the planner said about it. False when the planner found no way
+  /// and the travel `needed` one: the episode ends at `start` before it begins.
+  bool first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start);
+
+  /// Every physics step, before and after it (collisions, driven length).
+  void before_step(const PhysicsWorld& physics, const ContactState& contact);
+  void after_step(const PhysicsWorld& physics);
+
+  /// Every control step, once perception has spoken: its errors against the truth, its health,
+  /// a snapshot of what it saw. True when the episode ends here: the moving target is caught.
+  bool perceived(double t_s, const PhysicsWorld& physics, const robot::SensorReadings& readings,
+                 const robot::Perception& p, const robot::Perceiver& perceiver);
+  /// The travel's decision: the trajectory sample, the events the travel reported, and the end
+  /// when the decision ends the travel (true then).
+  bool decided(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
+               const robot::Decision& d);
+  /// At the end: the counts, the robot's last view, and the referee's verdict on a failure.
+  void close(const PhysicsWorld& physics, const robot::Travel& travel,
+             const controller::TractionGovernor& governor, const robot::Perceiver& perceiver,
+             bool pursuit);
+
+ private:
+  using Kind = EpisodeResult::Event::Kind;
+  void event(Kind kind, double t_s, Vec2 at) { r_.events.push_back({kind, t_s, at}); }
+  /// One trajectory sample; `d` null when the episode ended before a decision.
+  void sample(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
+              const robot::Decision* d);
+  void track_moving_obstacles(double t_s, const PhysicsWorld& physics);
+  std::optional<std::pair<double, Pose2>> first_collision(const PhysicsWorld& physics) const;
+
+  const EpisodeConfig& config_;
+  EpisodeResult& r_;
+  EpisodeMetrics metrics_;
+  FailureWatch watch_;
+  robot::LocalizationHealth worst_health_ = robot::LocalizationHealth::kOk;
+  std::optional<robot::GiveUp> give_up_;
+  double next_snapshot_s_ = 0;
+  double next_track_s_ = 0;
+};
+
+}  // namespace plantsim::sim
