@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "render/comparison_figure.h"
 #include "render/png_io.h"
 #include "render/report.h"

@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode_config_json.h"
 
 namespace plantsim::app {

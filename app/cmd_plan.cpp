@@ -9,6 +9,7 @@
 #include "planner/grid/grid_astar.h"
 #include "planner/mesh/interval_planner.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "worlds/grid_map.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"

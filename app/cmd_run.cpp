@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "render/animation.h"
 #include "sim/episode_config_json.h"
 #include "util/atomic_file.h"

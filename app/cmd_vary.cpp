@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "util/atomic_file.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"

@@ -10,10 +10,9 @@ namespace plantsim::app {
 std::vector<CoverageRun> plan_coverage_methods(const worlds::World& world,
                                                const planner::CoverageParams& params) {
   planner::PlannerInput input = planner::planner_input(world, true);
-  input.coverage = params;
   std::vector<CoverageRun> runs;
   for (const std::string& name : coverage_method_names()) {
-    CoverageRun run{name, std::make_unique<planner::CoveragePlanner>(input, name), {}};
+    CoverageRun run{name, std::make_unique<planner::CoveragePlanner>(input, name, params), {}};
     run.result = run.planner->plan(world.start.position(), worlds::staging_pose(world).position());
     if (!run.planned() && run.planner->last_plan().ok)
       throw std::invalid_argument(world.source + ": " + run.result.note);

@@ -12,6 +12,7 @@
 #include "batch/summary_tables.h"
 #include "batch/wilson_interval.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
 #include "render/png_io.h"

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode_config_json.h"
 #include "util/data_dir.h"
 #include "worlds/known_keys.h"

@@ -14,6 +14,7 @@
 #include "batch/batch_spec.h"
 #include "batch/scenario_setup.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "worlds/world.h"
 

@@ -7,6 +7,7 @@
 
 #include "geometry/predicates.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "worlds/charger_placement.h"
 
 namespace plantsim::batch {

@@ -21,6 +21,7 @@
 #include "planner/mesh/polygon_search.h"
 #include "planner/obstacle_map.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "worlds/grid_map.h"
 #include "worlds/random_plant.h"
 

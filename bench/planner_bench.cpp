@@ -12,6 +12,7 @@
 #include "bench/large_map_bench.h"
 #include "geometry/clearance.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "planner/vg/vg_overlay.h"
 #include "render/png_io.h"
 #include "render/scaling_chart.h"

@@ -10,6 +10,7 @@
 
 #include "bench/bench_report.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "planner/coverage/coverage_params.h"
 #include "planner/search_budget.h"
 #include "worlds/world.h"
 
@@ -75,7 +74,6 @@ struct PlannerInput {
   std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;
   double gcr_step_m = 0.1;                 ///< step of the gradient / coordinate-rotation walk
   std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
-  CoverageParams coverage;                 ///< seed 004's cell size, weights and network constants
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.
@@ -89,11 +87,5 @@ class Planner {
   /// The graph the planner has built so far, as segments, for figures (may be empty).
   virtual std::vector<std::pair<Vec2, Vec2>> graph_edges() const { return {}; }
 };
-
-/// Names accepted by make_planner, in the order reports list them.
-std::vector<std::string> planner_names();
-
-/// Builds the named planner; throws std::invalid_argument for an unknown name.
-std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input);
 
 }  // namespace plantsim::planner

@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "python/py_bindings.h"
 #include "python/py_world.h"
 

@@ -7,6 +7,7 @@
 
 #include "app/episode_outputs.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
 #include "python/py_world.h"

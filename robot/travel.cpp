@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "planner/registry.h"
 #include "planner/vg/vg_overlay.h"
 
 namespace plantsim::robot {

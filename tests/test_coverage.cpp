@@ -20,6 +20,7 @@
 #include "planner/coverage/coverage_planner.h"
 #include "planner/coverage/order_lp.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "test_paths.h"
 #include "util/input_file.h"
@@ -299,11 +300,12 @@ TEST(Hopfield, SettlesOnAValidOrderInAStatedShareOfRestartsOnThePit) {
 
 TEST(Hopfield, WithTheOriginalActivityTargetItSettlesNowhereAndThePlannerSaysSo) {
   const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
-  PlannerInput in = planner_input(w, true);
-  in.coverage.chnn.eta = 500;
-  in.coverage.chnn.target_ratio = 1.0;
-  in.coverage.chnn.restarts = 10;
-  CoveragePlanner p(in, "coverage-chnn");
+  const PlannerInput in = planner_input(w, true);
+  CoverageParams params;
+  params.chnn.eta = 500;
+  params.chnn.target_ratio = 1.0;
+  params.chnn.restarts = 10;
+  CoveragePlanner p(in, "coverage-chnn", params);
   const PlanResult r = p.plan(w.start.position(), worlds::staging_pose(w).position());
   EXPECT_EQ(r.status, PlanStatus::kNoPath);
   EXPECT_NE(r.note.find("0 of 10 restarts"), std::string::npos) << r.note;
@@ -363,11 +365,12 @@ class Shares : public ::testing::TestWithParam<double> {};
 TEST_P(Shares, EveryMethodCoversAllReachableCellsAndEndsAtTheCharger) {
   for (std::uint64_t seed = 1; seed <= (test::full_size() ? 3u : 1u); ++seed) {
     const worlds::World w = worlds::cell_block_world({GetParam(), seed});
-    PlannerInput in = planner_input(w, true);
-    in.coverage.exact.max_prefixes = 200000;
+    const PlannerInput in = planner_input(w, true);
+    CoverageParams params;
+    params.exact.max_prefixes = 200000;
     for (const char* name : {"coverage-chnn", "coverage-potts", "coverage-exact", "coverage-greedy",
                              "coverage-cells"}) {
-      CoveragePlanner planner(in, name);
+      CoveragePlanner planner(in, name, params);
       const PlanResult r = planner.plan(w.start.position(), worlds::staging_pose(w).position());
       if (r.status != PlanStatus::kOk) {  // only the network may find no order, and it says so
         EXPECT_STREQ(name, "coverage-chnn");

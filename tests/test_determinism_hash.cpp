@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "tests/test_paths.h"
 #include "worlds/world_loader.h"

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"

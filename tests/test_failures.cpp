@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "sim/failure_watch.h"
 #include "test_paths.h"

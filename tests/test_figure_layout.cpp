@@ -11,6 +11,7 @@
 #include "figure_checks.h"
 #include "planner/coverage/coverage_planner.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "robot/scan_matcher.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "robot/ekf_localizer.h"
 #include "sim/episode.h"
 #include "sim/episode_config_json.h"

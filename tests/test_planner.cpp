@@ -4,6 +4,7 @@
 
 #include "planner/obstacle_map.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "planner/vg/vg_planner.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"

@@ -25,6 +25,7 @@
 #include "planner/mesh/interval_search.h"
 #include "planner/mesh/polygon_search.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "planner/vg/vg_planner.h"
 #include "test_paths.h"
 #include "worlds/grid_map.h"

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "robot/local_obstacle_layer.h"
 #include "sim/charger_pads.h"
 #include "sim/episode.h"

@@ -16,6 +16,7 @@
 #include "batch/plant_faults.h"
 #include "batch/wilson_interval.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/charger_placement.h"

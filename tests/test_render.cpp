@@ -8,6 +8,7 @@
 
 #include "figure_checks.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "render/colormap.h"
 #include "render/comparison_figure.h"
 #include "render/figure.h"

@@ -10,6 +10,7 @@
 #include "geometry/clearance.h"
 #include "planner/inflation.h"
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "planner/round/tangent_planner.h"
 #include "sim/episode.h"
 #include "test_paths.h"

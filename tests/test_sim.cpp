@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "planner/planner.h"
+#include "planner/registry.h"
 #include "sim/episode.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"

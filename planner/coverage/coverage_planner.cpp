@@ -11,11 +11,12 @@
 
 namespace plantsim::planner {
 
-CoveragePlanner::CoveragePlanner(const PlannerInput& input, std::string_view name)
-    : grid_(input.floor, input.coverage.cell_m, input.obstacles, input.inflation_m),
+CoveragePlanner::CoveragePlanner(const PlannerInput& input, std::string_view name,
+                                 const CoverageParams& params)
+    : grid_(input.floor, params.cell_m, input.obstacles, input.inflation_m),
       name_(name),
       method_(coverage_method(name)),
-      params_(input.coverage) {}
+      params_(params) {}
 
 bool is_coverage_planner(std::string_view n) {
   return n == "coverage" || n == "coverage-chnn" || n == "coverage-potts" ||

@@ -7,6 +7,7 @@
 // for coverage figures.
 #pragma once
 
+#include "planner/coverage/coverage_params.h"
 #include "planner/coverage/coverage_plan.h"
 #include "planner/planner.h"
 
@@ -16,8 +17,10 @@ enum class CoverageMethod { kChnn, kPotts, kExact, kGreedy, kCells };
 
 class CoveragePlanner : public Planner {
  public:
-  /// `name` is one the registry accepts (is_coverage_planner).
-  CoveragePlanner(const PlannerInput& input, std::string_view name);
+  /// `name` is one the registry accepts (is_coverage_planner). The coverage parameters come
+  /// apart from the point-to-point planners' input.
+  CoveragePlanner(const PlannerInput& input, std::string_view name,
+                  const CoverageParams& params = {});
   std::string name() const override { return name_; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
 
