@@ -83,43 +83,21 @@ void IntervalSearch::push(std::int32_t parent, std::int32_t portal, std::int32_t
   const MeshPortal& p = mesh_.portals()[portal];
   ya = std::clamp(ya, p.y0, p.y1);
   yb = std::clamp(yb, ya, p.y1);
-  fresh_.push_back({portal, cell, ya, yb, root, root_vertex, parent, g});
+  q_.fresh.push_back({portal, cell, ya, yb, root, root_vertex, parent, g});
 }
 
-void IntervalSearch::push_open(Entry e) {
-  open_.push_back(e);
-  std::push_heap(open_.begin(), open_.end());
+double IntervalSearch::priority(const Node& n) const {
+  if (flood_) return 0;
+  const double x = mesh_.portals()[n.portal].x;
+  return std::max(heuristic(x, n.ya, n.yb, n.root), landmark_bound(n.root_vertex));
 }
 
 void IntervalSearch::queue_fresh() {
-  for (const Node& n : fresh_) {
-    nodes_.push_back(n);
-    const double x = mesh_.portals()[n.portal].x;
-    const double h =
-        flood_ ? 0 : std::max(heuristic(x, n.ya, n.yb, n.root), landmark_bound(n.root_vertex));
-    push_open({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
-  }
-}
-
-void IntervalSearch::expand_and_queue(std::int32_t index, std::int64_t& expanded) {
-  fresh_.clear();
-  expand(index);
-  ++expanded;
-  // A lone successor (a corridor of cells) is expanded at once: its f is no smaller than its
-  // parent's, so A* would take it next anyway, and the queue is spared (Polyanya's
-  // intermediate pruning).
-  while (fresh_.size() == 1) {
-    nodes_.push_back(fresh_.front());
-    fresh_.clear();
-    expand(static_cast<std::int32_t>(nodes_.size() - 1));
-    ++expanded;
-  }
-  queue_fresh();
+  q_.queue_fresh([&](const Node& n) { return priority(n); });
 }
 
 void IntervalSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
-  nodes_.push_back({-1, -1, 0, 0, root, -1, parent, g});
-  push_open({g, g, static_cast<std::int32_t>(nodes_.size() - 1)});
+  q_.push_goal({-1, -1, 0, 0, root, -1, parent, g}, g);
 }
 
 // `from` lies on the portal's line but off the portal: the way goes along the line to the
@@ -131,10 +109,10 @@ void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, s
   const Vec2 c{q.x, end ? q.y1 : q.y0};
   const double gc = g + dist(from, c);
   if (!corner_improves(2 * portal + end, gc, from, c)) return;
-  if (!(nodes_[parent].root ==
+  if (!(q_.nodes[parent].root ==
         from)) {  // a turn at `from` first: recorded for the path, never searched
-    nodes_.push_back({-2, -1, 0, 0, from, -1, parent, g});
-    parent = static_cast<std::int32_t>(nodes_.size() - 1);
+    q_.nodes.push_back({-2, -1, 0, 0, from, -1, parent, g});
+    parent = static_cast<std::int32_t>(q_.nodes.size() - 1);
   }
   push(parent, portal, cell, q.y0, q.y1, c, 2 * portal + end, gc);
 }
@@ -157,7 +135,7 @@ void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t
 }
 
 void IntervalSearch::expand(std::int32_t index) {
-  const Node n = nodes_[index];
+  const Node n = q_.nodes[index];
   const MeshPortal& P = mesh_.portals()[n.portal];
   const double x = P.x, eps = mesh_.tolerance();
   const Vec2 r = n.root;
@@ -214,27 +192,18 @@ void IntervalSearch::expand(std::int32_t index) {
 
 // A* until the goal is popped (its node's index) or the queue runs dry (-1).
 std::int32_t IntervalSearch::run(IntervalPath& out) {
-  while (!open_.empty()) {
-    if (const std::size_t bytes = held_bytes(nodes_, open_); bytes > budget_bytes_) {
-      out.over_budget_bytes = bytes;
-      return -1;
-    }
-    std::pop_heap(open_.begin(), open_.end());
-    const Entry e = open_.back();
-    open_.pop_back();
-    const Node& n = nodes_[e.node];
-    if (n.portal == -1) return e.node;
-    // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
-    if (n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g) continue;
-    expand_and_queue(e.node, out.expanded);
-  }
-  return -1;
+  return q_.run(
+      budget_bytes_, out, [](const Node& n) { return n.portal == -1; },
+      // Its root was reached more cheaply since it was queued: the cheaper arrival covers it.
+      [&](const Node& n) {
+        return n.root_vertex >= 0 && best_[n.root_vertex].g + mesh_.tolerance() * 16 < n.g;
+      },
+      [&](std::int32_t index) { expand(index); }, [&](const Node& n) { return priority(n); });
 }
 
 void IntervalSearch::begin(Vec2 goal) {
   goal_ = goal;
-  nodes_.clear();
-  open_.clear();
+  q_.clear();
   if (++search_ == 0) {  // the stamps wrapped: forget them all
     std::fill(stamp_.begin(), stamp_.end(), 0);
     search_ = 1;
@@ -242,8 +211,8 @@ void IntervalSearch::begin(Vec2 goal) {
 }
 
 void IntervalSearch::queue_source(Vec2 source, const std::vector<std::int32_t>& cells) {
-  nodes_.push_back({-1, -1, 0, 0, source, -1, -1, 0});
-  fresh_.clear();
+  q_.nodes.push_back({-1, -1, 0, 0, source, -1, -1, 0});
+  q_.fresh.clear();
   for (const std::int32_t c : cells) expand_in_view(0, source, -1, 0, c, -1);
   queue_fresh();
 }
@@ -275,7 +244,7 @@ IntervalPath IntervalSearch::find(Vec2 start, Vec2 goal) {
   }
   queue_source(start, first);  // the start, as the first root
   const std::int32_t reached = run(out);
-  read_back(nodes_, reached, goal, out);
+  read_back(q_.nodes, reached, goal, out);
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "planner/mesh/dead_ends.h"
 #include "planner/mesh/free_space_mesh.h"
 #include "planner/mesh/interval_path.h"
+#include "planner/mesh/mesh_search.h"
 #include "planner/search_budget.h"
 
 namespace plantsim::planner {
@@ -46,19 +47,13 @@ class IntervalSearch {
     std::int32_t parent;
     double g;
   };
-  struct Entry {
-    double f, g;
-    std::int32_t node;
-    bool operator<(const Entry& o) const { return f != o.f ? f > o.f : g < o.g; }
-  };
   /// Forgets the last search (its nodes, queue and the corners' best arrivals).
   void begin(Vec2 goal);
   /// The first root, with every portal of the cells holding it in view, queued.
   void queue_source(Vec2 source, const std::vector<std::int32_t>& cells);
   void expand(std::int32_t node);
-  void expand_and_queue(std::int32_t node, std::int64_t& expanded);
   void queue_fresh();
-  void push_open(Entry e);
+  double priority(const Node& n) const;  // f - g: the heuristic, 0 while measuring distances
   /// The root lies in the closed cell: every portal of it is in view.
   void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
                       std::int32_t cell, std::int32_t except);
@@ -89,9 +84,7 @@ class IntervalSearch {
   DeadEnds dead_ends_;
   bool prune_dead_ends_ = true;
   Vec2 goal_;
-  std::vector<Node> nodes_;
-  std::vector<Node> fresh_;  // the successors of the node being expanded
-  std::vector<Entry> open_;  // a binary heap (std::push_heap), its storage kept across queries
+  MeshSearchQueue<Node> q_;
   struct Arrival {
     double g = 0;
     Vec2 dir;  // unit direction it came in along

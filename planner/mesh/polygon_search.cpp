@@ -98,7 +98,7 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
     const double len = dist(a, b), at = dot(root - a, b - a) / len;
     if (at >= -eps &&
         at <= len + eps) {  // the root is on the edge: all of the polygon beyond is in view
-      fresh_.push_back({beyond, entry, b, a, root, root_vertex, parent, g});
+      q_.fresh.push_back({beyond, entry, b, a, root, root_vertex, parent, g});
       return;
     }
     // On the edge's line, off the edge: along the line to its nearer end, turning there.
@@ -106,21 +106,19 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
     const Vec2 c = mesh_.points()[near];
     const double gc = g + dist(root, c);
     if (!corner_improves(near, gc)) return;
-    if (!(nodes_[parent].root ==
+    if (!(q_.nodes[parent].root ==
           root)) {  // a turn at `root` first: recorded for the path, never searched
-      nodes_.push_back({-2, -1, {}, {}, root, root_vertex, parent, g});
-      parent = static_cast<std::int32_t>(nodes_.size() - 1);
+      q_.nodes.push_back({-2, -1, {}, {}, root, root_vertex, parent, g});
+      parent = static_cast<std::int32_t>(q_.nodes.size() - 1);
     }
-    fresh_.push_back({beyond, entry, b, a, c, near, parent, gc});
+    q_.fresh.push_back({beyond, entry, b, a, c, near, parent, gc});
     return;
   }
-  fresh_.push_back({beyond, entry, left, right, root, root_vertex, parent, g});
+  q_.fresh.push_back({beyond, entry, left, right, root, root_vertex, parent, g});
 }
 
 void PolygonSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
-  nodes_.push_back({-1, -1, {}, {}, root, -1, parent, g});
-  open_.push_back({g, g, static_cast<std::int32_t>(nodes_.size() - 1)});
-  std::push_heap(open_.begin(), open_.end());
+  q_.push_goal({-1, -1, {}, {}, root, -1, parent, g}, g);
 }
 
 void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex,
@@ -145,7 +143,7 @@ void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t 
 }
 
 void PolygonSearch::expand(std::int32_t index) {
-  const Node n = nodes_[index];
+  const Node n = q_.nodes[index];
   const std::int32_t Q = n.polygon, j = n.entry;
   const std::int32_t lv = mesh_.vertex(Q, j), rv = mesh_.vertex(Q, j + 1);
   const Vec2 A = mesh_.points()[lv], B = mesh_.points()[rv], r = n.root;
@@ -215,48 +213,26 @@ void PolygonSearch::expand(std::int32_t index) {
   }
 }
 
+double PolygonSearch::priority(const Node& n) {
+  return flood_ ? 0 : std::max(heuristic(n.left, n.right, n.root), landmark_bound(n.root_vertex));
+}
+
 void PolygonSearch::queue_fresh() {
-  for (const Node& n : fresh_) {
-    nodes_.push_back(n);
-    const double h =
-        flood_ ? 0 : std::max(heuristic(n.left, n.right, n.root), landmark_bound(n.root_vertex));
-    open_.push_back({n.g + h, n.g, static_cast<std::int32_t>(nodes_.size() - 1)});
-    std::push_heap(open_.begin(), open_.end());
-  }
+  q_.queue_fresh([&](const Node& n) { return priority(n); });
 }
 
 std::int32_t PolygonSearch::run(IntervalPath& out) {
-  std::int64_t& expanded = out.expanded;
-  while (!open_.empty()) {
-    if (const std::size_t bytes = held_bytes(nodes_, open_); bytes > budget_bytes_) {
-      out.over_budget_bytes = bytes;
-      return -1;
-    }
-    std::pop_heap(open_.begin(), open_.end());
-    const Entry e = open_.back();
-    open_.pop_back();
-    const Node& n = nodes_[e.node];
-    if (n.polygon == -1) return e.node;
-    if (n.root_vertex >= 0 && best_[n.root_vertex] + mesh_.tolerance() * 16 < n.g) continue;
-    fresh_.clear();
-    expand(e.node);
-    ++expanded;
-    // A lone successor is expanded at once (its f is no smaller than its parent's).
-    while (fresh_.size() == 1) {
-      nodes_.push_back(fresh_.front());
-      fresh_.clear();
-      expand(static_cast<std::int32_t>(nodes_.size() - 1));
-      ++expanded;
-    }
-    queue_fresh();
-  }
-  return -1;
+  return q_.run(
+      budget_bytes_, out, [](const Node& n) { return n.polygon == -1; },
+      [&](const Node& n) {
+        return n.root_vertex >= 0 && best_[n.root_vertex] + mesh_.tolerance() * 16 < n.g;
+      },
+      [&](std::int32_t index) { expand(index); }, [&](const Node& n) { return priority(n); });
 }
 
 void PolygonSearch::begin(Vec2 goal) {
   goal_ = goal;
-  nodes_.clear();
-  open_.clear();
+  q_.clear();
   if (++search_ == 0) {  // the stamps wrapped: forget them all
     std::fill(stamp_.begin(), stamp_.end(), 0);
     std::fill(goal_stamp_.begin(), goal_stamp_.end(), 0);
@@ -288,12 +264,12 @@ IntervalPath PolygonSearch::find(Vec2 start, Vec2 goal) {
                        : planner::landmark_bound(start_low_.data(), start_high_.data(), goal_low_,
                                                  goal_high_, mesh_.tolerance());
   }
-  nodes_.push_back({-1, -1, {}, {}, start, -1, -1, 0});
-  fresh_.clear();
+  q_.nodes.push_back({-1, -1, {}, {}, start, -1, -1, 0});
+  q_.fresh.clear();
   for (const std::int32_t p : first) expand_in_view(0, start, -1, 0, p, -1, true);
   queue_fresh();
   const std::int32_t reached = run(out);
-  read_back(nodes_, reached, goal, out);
+  read_back(q_.nodes, reached, goal, out);
   return out;
 }
 
@@ -384,8 +360,8 @@ std::vector<double> PolygonSearch::distances_to_vertices(Vec2 source) {
   dead_ends_.set_goal(nullptr, 0);
   begin({std::numeric_limits<double>::quiet_NaN(),
          std::numeric_limits<double>::quiet_NaN()});  // a goal nowhere
-  nodes_.push_back({-1, -1, {}, {}, source, -1, -1, 0});
-  fresh_.clear();
+  q_.nodes.push_back({-1, -1, {}, {}, source, -1, -1, 0});
+  q_.fresh.clear();
   for (const std::int32_t p : first) expand_in_view(0, source, -1, 0, p, -1, true);
   queue_fresh();
   IntervalPath flood;

@@ -14,6 +14,7 @@
 #include "planner/mesh/convex_mesh.h"
 #include "planner/mesh/dead_ends.h"
 #include "planner/mesh/interval_path.h"
+#include "planner/mesh/mesh_search.h"
 #include "planner/search_budget.h"
 
 namespace plantsim::planner {
@@ -48,11 +49,6 @@ class PolygonSearch {
     std::int32_t parent;
     double g;
   };
-  struct Entry {
-    double f, g;
-    std::int32_t node;
-    bool operator<(const Entry& o) const { return f != o.f ? f > o.f : g < o.g; }
-  };
   void expand(std::int32_t node);
   /// The root lies on the polygon's boundary: all of the polygon is in view.
   void expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex, double g,
@@ -80,6 +76,7 @@ class PolygonSearch {
                        IntervalPath& out);
   void begin(Vec2 goal);
   void queue_fresh();
+  double priority(const Node& n);  // f - g: the heuristic, 0 while measuring distances
   /// The goal's node, or -1: none reached, or the search passed its memory budget (then
   /// `out.over_budget_bytes` says how far).
   std::int32_t run(IntervalPath& out);
@@ -91,8 +88,7 @@ class PolygonSearch {
   std::vector<Portal> portals_;
   Vec2 goal_;
   std::vector<std::uint32_t> goal_stamp_;  // polygons holding the goal: == search_
-  std::vector<Node> nodes_, fresh_;
-  std::vector<Entry> open_;
+  MeshSearchQueue<Node> q_;
   std::vector<double> best_;  // per vertex, the cheapest turn there this search
   // Landmarks: distances from each to every vertex, landmark-minor (NaN: unreachable).
   int landmarks_ = 0;
