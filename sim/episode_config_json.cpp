@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "util/input_file.h"
+#include "util/param_table.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::sim {
@@ -24,245 +25,258 @@ using nlohmann::json;
 // turn forces non-finite) and out of step counts (a timeout of 1e308 never ends).
 constexpr double kMaxParameter = 1e6;
 
-struct Field {
-  const char* section;
-  const char* name;
-  std::function<double&(EpisodeConfig&)> ref;
-  double lo = 0;  // closed range of valid values
-  double hi = kMaxParameter;
-  bool positive = false;  // lo excluded
-};
-
-#define PS_FIELD(section, member, name)                                 \
-  Field {                                                               \
-    section, name, [](EpisodeConfig& c) -> double& { return c.member; } \
-  }
-#define PS_RANGE(section, member, name, lo, hi, positive)                                 \
-  Field {                                                                                 \
-    section, name, [](EpisodeConfig& c) -> double& { return c.member; }, lo, hi, positive \
-  }
-#define PS_PROBABILITY(section, member, name) PS_RANGE(section, member, name, 0.0, 1.0, false)
-#define PS_POSITIVE(section, member, name) PS_RANGE(section, member, name, 0.0, kMaxParameter, true)
+using Field = util::Param<EpisodeConfig>;
 
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
-      PS_RANGE("step", step.dt_s, "dt_s", 1e-4, 0.1, false),
-      PS_FIELD("drive", drive.tyre_friction, "tyre_friction"),
-      PS_FIELD("odometry", odometry.wheel_speed_noise, "wheel_speed_noise"),
-      PS_RANGE("odometry", odometry.left_scale_error, "left_scale_error", -0.5, 0.5, false),
-      PS_RANGE("odometry", odometry.right_scale_error, "right_scale_error", -0.5, 0.5, false),
-      PS_FIELD("localization", localization.period_s, "period_s"),
-      PS_FIELD("localization", localization.position_noise_m, "position_noise_m"),
-      PS_FIELD("localization", localization.yaw_noise_rad, "yaw_noise_rad"),
-      PS_FIELD("detection", detection.range_m, "range_m"),
-      PS_FIELD("detection", detection.field_of_view_rad, "field_of_view_rad"),
-      PS_FIELD("detection", detection.position_noise_m, "position_noise_m"),
-      PS_FIELD("detection", detection.yaw_noise_rad, "yaw_noise_rad"),
-      PS_RANGE("detection", detection.rate_hz, "rate_hz", 0.0, 1000.0, true),
-      PS_RANGE("detection", detection.mount_x_m, "mount_x_m", -10.0, 10.0, false),
-      PS_PROBABILITY("detection", detection.false_negative_probability,
-                     "false_negative_probability"),
-      PS_PROBABILITY("detection", detection.outlier_probability, "outlier_probability"),
-      PS_FIELD("detection", detection.outlier_position_m, "outlier_position_m"),
-      PS_FIELD("detection", detection.outlier_yaw_rad, "outlier_yaw_rad"),
-      PS_RANGE("detection", detection.latency_s, "latency_s", 0.0, 1.5, false),
-      PS_RANGE("lidar", lidar.field_of_view_rad, "field_of_view_rad", 0.0, 2.0 * M_PI, true),
-      PS_FIELD("lidar", lidar.min_range_m, "min_range_m"),
-      PS_RANGE("lidar", lidar.max_range_m, "max_range_m", 0.0, 1000.0, true),
-      PS_RANGE("lidar", lidar.rate_hz, "rate_hz", 0.0, 1000.0, true),
-      PS_RANGE("lidar", lidar.mount_x_m, "mount_x_m", -10.0, 10.0, false),
-      PS_RANGE("lidar", lidar.mount_y_m, "mount_y_m", -10.0, 10.0, false),
-      PS_RANGE("lidar", lidar.mount_yaw_rad, "mount_yaw_rad", -M_PI, M_PI, false),
-      PS_RANGE("lidar", lidar.range_noise_m, "range_noise_m", 0.0, 10.0, false),
-      PS_PROBABILITY("lidar", lidar.dropout_probability, "dropout_probability"),
-      PS_RANGE("imu", imu.yaw_rate_noise_radps, "yaw_rate_noise_radps", 0.0, 10.0, false),
-      PS_RANGE("imu", imu.bias_radps, "bias_radps", 0.0, 10.0, false),
-      PS_RANGE("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0, 10.0,
-               false),
-      PS_RANGE("beacon", beacon.position_noise_m, "position_noise_m", 0.0, 100.0, false),
-      PS_POSITIVE("ekf", perception.ekf.initial_position_sigma_m, "initial_position_sigma_m"),
-      PS_POSITIVE("ekf", perception.ekf.initial_yaw_sigma_rad, "initial_yaw_sigma_rad"),
-      PS_POSITIVE("ekf", perception.ekf.initial_bias_sigma_radps, "initial_bias_sigma_radps"),
-      PS_FIELD("ekf", perception.ekf.distance_noise, "distance_noise"),
-      PS_FIELD("ekf", perception.ekf.lateral_noise, "lateral_noise"),
-      PS_FIELD("ekf", perception.ekf.gyro_noise_radps, "gyro_noise_radps"),
-      PS_FIELD("ekf", perception.ekf.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s"),
-      PS_POSITIVE("ekf", perception.ekf.range_sigma_m, "range_sigma_m"),
-      PS_POSITIVE("ekf", perception.ekf.gate_chi2, "gate_chi2"),
-      PS_PROBABILITY("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos"),
-      PS_FIELD("ekf", perception.ekf.gate_floor_m, "gate_floor_m"),
-      PS_POSITIVE("ekf", perception.ekf.constraint_sigma_m, "constraint_sigma_m"),
-      PS_PROBABILITY("ekf", perception.ekf.degraded_inlier_fraction, "degraded_inlier_fraction"),
-      PS_POSITIVE("ekf", perception.ekf.ok_position_sigma_m, "ok_position_sigma_m"),
-      PS_POSITIVE("ekf", perception.ekf.nis_quantile_z, "nis_quantile_z"),
-      PS_POSITIVE("ekf", perception.ekf.lost_position_sigma_m, "lost_position_sigma_m"),
-      PS_FIELD("tracker", perception.tracker.unexplained_margin_m, "unexplained_margin_m"),
-      PS_POSITIVE("tracker", perception.tracker.range_m, "range_m"),
-      PS_POSITIVE("tracker", perception.tracker.cluster_gap_m, "cluster_gap_m"),
-      PS_POSITIVE("tracker", perception.tracker.association_gate_m, "association_gate_m"),
-      PS_PROBABILITY("tracker", perception.tracker.alpha, "alpha"),
-      PS_PROBABILITY("tracker", perception.tracker.beta, "beta"),
-      PS_POSITIVE("tracker", perception.tracker.max_speed_mps, "max_speed_mps"),
-      PS_FIELD("tracker", perception.tracker.still_speed_mps, "still_speed_mps"),
-      PS_POSITIVE("tracker", perception.tracker.forget_after_s, "forget_after_s"),
-      PS_FIELD("tracker", perception.tracker.min_size_m, "min_size_m"),
-      PS_FIELD("tracker", perception.tracker.assumed_depth_m, "assumed_depth_m"),
-      PS_FIELD("perception", perception.target_exclusion_m, "target_exclusion_m"),
-      PS_FIELD("tracking", tracking.lookahead_min_m, "lookahead_min_m"),
-      PS_FIELD("tracking", tracking.lookahead_max_m, "lookahead_max_m"),
-      PS_FIELD("tracking", tracking.lookahead_time_s, "lookahead_time_s"),
-      PS_FIELD("tracking", tracking.sharp_turn_rad, "sharp_turn_rad"),
-      PS_FIELD("tracking", tracking.corner_release_m, "corner_release_m"),
-      PS_FIELD("tracking", tracking.max_linear_speed_mps, "max_linear_speed_mps"),
-      PS_FIELD("tracking", tracking.max_angular_speed_radps, "max_angular_speed_radps"),
-      PS_FIELD("tracking", tracking.min_approach_speed_mps, "min_approach_speed_mps"),
-      PS_FIELD("tracking", tracking.approach_slowdown_distance_m, "approach_slowdown_distance_m"),
-      PS_FIELD("tracking", tracking.regulated_min_radius_m, "regulated_min_radius_m"),
-      PS_FIELD("tracking", tracking.rotate_in_place_threshold_rad, "rotate_in_place_threshold_rad"),
-      PS_FIELD("tracking", tracking.rotate_in_place_exit_rad, "rotate_in_place_exit_rad"),
-      PS_FIELD("tracking", tracking.rotate_in_place_speed_radps, "rotate_in_place_speed_radps"),
-      PS_FIELD("tracking", tracking.goal_tolerance_m, "goal_tolerance_m"),
-      PS_FIELD("tracking", tracking.progress_window_m, "progress_window_m"),
-      PS_FIELD("docking", docking.approach_speed_mps, "approach_speed_mps"),
-      PS_FIELD("docking", docking.approach_lookahead_m, "approach_lookahead_m"),
-      PS_FIELD("docking", docking.align_tolerance_rad, "align_tolerance_rad"),
-      PS_FIELD("docking", docking.align_speed_radps, "align_speed_radps"),
-      PS_FIELD("docking", docking.backoff_speed_mps, "backoff_speed_mps"),
-      PS_FIELD("docking", docking.overshoot_limit_m, "overshoot_limit_m"),
-      PS_PROBABILITY("docking", docking.detection_blend, "detection_blend"),
-      PS_POSITIVE("docking", docking.detection_gate_m, "detection_gate_m"),
-      PS_FIELD("docking", docking.approach_timeout_s, "approach_timeout_s"),
-      PS_FIELD("docking", docking.safety_margin_m, "safety_margin_m"),
-      PS_FIELD("docking", docking.max_decel_mps2, "max_decel_mps2"),
-      PS_FIELD("docking", docking.check_extra_m, "check_extra_m"),
-      PS_FIELD("docking", docking.replan_after_s, "replan_after_s"),
-      PS_FIELD("docking", docking.yield_horizon_s, "yield_horizon_s"),
-      PS_FIELD("docking", docking.yield_speed_mps, "yield_speed_mps"),
-      PS_RANGE("kidnap", kidnap.at_s, "at_s", -1.0, 86400.0, false),
-      PS_RANGE("kidnap", kidnap.dx_m, "dx_m", -1000.0, 1000.0, false),
-      PS_RANGE("kidnap", kidnap.dy_m, "dy_m", -1000.0, 1000.0, false),
-      PS_RANGE("kidnap", kidnap.dyaw_rad, "dyaw_rad", -M_PI, M_PI, false),
-      PS_FIELD("docking", docking.confident_sigma_m, "confident_sigma_m"),
-      PS_FIELD("docking", docking.uncertain_sigma_m, "uncertain_sigma_m"),
-      PS_PROBABILITY("docking", docking.uncertain_speed_fraction, "uncertain_speed_fraction"),
-      PS_FIELD("potential_field", field.k_att, "k_att"),
-      PS_RANGE("potential_field", field.m, "m", 0.0, 10.0, false),  // exponents
-      PS_FIELD("potential_field", field.k_att_v, "k_att_v"),
-      PS_RANGE("potential_field", field.m_v, "m_v", 0.0, 10.0, false),  // exponents
-      PS_FIELD("potential_field", field.k_rep, "k_rep"),
-      PS_RANGE("potential_field", field.n, "n", 0.0, 10.0, false),  // exponents
-      PS_FIELD("potential_field", field.rho0_m, "rho0_m"),
-      PS_FIELD("potential_field", field.k_rep_v, "k_rep_v"),
-      PS_RANGE("potential_field", field.n_v, "n_v", 0.0, 10.0, false),  // exponents
-      PS_FIELD("potential_field", field.rho_min_m, "rho_min_m"),
-      PS_FIELD("potential_field", field.max_speed_mps, "max_speed_mps"),
-      PS_FIELD("potential_field", field.turn_gain, "turn_gain"),
-      PS_FIELD("potential_field", field.max_angular_speed_radps, "max_angular_speed_radps"),
-      PS_FIELD("potential_field", field.max_decel_mps2, "max_decel_mps2"),
-      PS_FIELD("potential_field", field.arrive_radius_m, "arrive_radius_m"),
-      PS_FIELD("potential_field", field.slow_force_ratio, "slow_force_ratio"),
-      PS_FIELD("potential_field", field.balance_ratio, "balance_ratio"),
-      PS_FIELD("potential_field", field.stall_window_s, "stall_window_s"),
-      PS_FIELD("potential_field", field.stall_distance_m, "stall_distance_m"),
-      PS_FIELD("potential_field", field.wall_distance_m, "wall_distance_m"),
-      PS_FIELD("potential_field", field.wall_gain, "wall_gain"),
-      PS_FIELD("potential_field", field.follow_angle_rad, "follow_angle_rad"),
-      PS_FIELD("potential_field", field.leave_margin_m, "leave_margin_m"),
-      PS_FIELD("potential_field", field.sensor_range_m, "sensor_range_m"),
-      PS_FIELD("pursuit", catch_distance_m, "catch_distance_m"),
-      PS_FIELD("pursuit", pursuit_replan_period_s, "replan_period_s"),
-      PS_FIELD("perception", perception.range_m, "range_m"),
-      PS_FIELD("tolerance", tolerance.position_m, "position_m"),
-      PS_FIELD("tolerance", tolerance.heading_rad, "heading_rad"),
-      PS_RANGE("tolerance", tolerance.dwell_s, "dwell_s", 0.0, 60.0, false),
-      PS_RANGE("tolerance", tolerance.min_press_m, "min_press_m", 0.0, 0.05, false),
-      PS_POSITIVE("docking", docking.press_speed_mps, "press_speed_mps"),
-      PS_POSITIVE("docking", docking.press_timeout_s, "press_timeout_s"),
-      PS_POSITIVE("docking", docking.stuck_timeout_s, "stuck_timeout_s"),
-      PS_RANGE("docking", docking.settle_s, "settle_s", 0.0, 60.0, false),
-      PS_POSITIVE("traction", traction.max_accel_mps2, "max_accel_mps2"),
-      PS_POSITIVE("traction", traction.max_angular_accel_radps2, "max_angular_accel_radps2"),
-      PS_PROBABILITY("traction", traction.slip_scale_factor, "slip_scale_factor"),
-      PS_PROBABILITY("traction", traction.min_scale, "min_scale"),
-      PS_RANGE("traction", traction.slip_hold_s, "slip_hold_s", 0.0, 60.0, false),
-      PS_RANGE("traction", traction.recover_per_s, "recover_per_s", 0.0, 10.0, false),
-      PS_RANGE("traction", traction.creep_mps, "creep_mps", 0.0, 10.0, false),
-      PS_RANGE("traction", traction.creep_radps, "creep_radps", 0.0, 10.0, false),
-      PS_POSITIVE("layer", perception.layer.cell_m, "cell_m"),
-      PS_POSITIVE("layer", perception.layer.clear_range_m, "clear_range_m"),
-      PS_FIELD("perception", perception.moving_speed_mps, "moving_speed_mps"),
-      PS_FIELD("perception", perception.explained_sigmas, "explained_sigmas"),
-      PS_FIELD("perception", perception.gyro_calibration_s, "gyro_calibration_s"),
-      PS_POSITIVE("perception", perception.displaced_jump_m, "displaced_jump_m"),
-      PS_POSITIVE("perception", perception.slip_jump_m, "slip_jump_m"),
-      PS_POSITIVE("perception", perception.slip_turn_radps, "slip_turn_radps"),
-      PS_RANGE("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0, false),
-      PS_RANGE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0, true),
-      PS_RANGE("perception", perception.global_match_sigma_m, "global_match_sigma_m", 0.0, 100.0,
-               true),
-      PS_RANGE("perception", perception.global_match_period_s, "global_match_period_s", 0.0, 100.0,
-               false),
-      PS_RANGE("perception", perception.global_match_max_window_m, "global_match_max_window_m", 0.1,
-               100.0, false),
-      PS_RANGE("", timeout_s, "timeout_s", 0.0, 86400.0, true),
+      PLANTSIM_PARAM("step", step.dt_s, "dt_s", 1e-4, 0.1),
+      PLANTSIM_PARAM("drive", drive.tyre_friction, "tyre_friction", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("odometry", odometry.wheel_speed_noise, "wheel_speed_noise", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("odometry", odometry.left_scale_error, "left_scale_error", -0.5, 0.5),
+      PLANTSIM_PARAM("odometry", odometry.right_scale_error, "right_scale_error", -0.5, 0.5),
+      PLANTSIM_PARAM("localization", localization.period_s, "period_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("localization", localization.position_noise_m, "position_noise_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("localization", localization.yaw_noise_rad, "yaw_noise_rad", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.range_m, "range_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.field_of_view_rad, "field_of_view_rad", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.position_noise_m, "position_noise_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.yaw_noise_rad, "yaw_noise_rad", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("detection", detection.rate_hz, "rate_hz", 0.0, 1000.0),
+      PLANTSIM_PARAM("detection", detection.mount_x_m, "mount_x_m", -10.0, 10.0),
+      PLANTSIM_PARAM("detection", detection.false_negative_probability,
+                     "false_negative_probability", 0.0, 1.0),
+      PLANTSIM_PARAM("detection", detection.outlier_probability, "outlier_probability", 0.0, 1.0),
+      PLANTSIM_PARAM("detection", detection.outlier_position_m, "outlier_position_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.outlier_yaw_rad, "outlier_yaw_rad", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("detection", detection.latency_s, "latency_s", 0.0, 1.5),
+      PLANTSIM_PARAM_ABOVE("lidar", lidar.field_of_view_rad, "field_of_view_rad", 0.0, 2.0 * M_PI),
+      PLANTSIM_PARAM("lidar", lidar.min_range_m, "min_range_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("lidar", lidar.max_range_m, "max_range_m", 0.0, 1000.0),
+      PLANTSIM_PARAM_ABOVE("lidar", lidar.rate_hz, "rate_hz", 0.0, 1000.0),
+      PLANTSIM_PARAM("lidar", lidar.mount_x_m, "mount_x_m", -10.0, 10.0),
+      PLANTSIM_PARAM("lidar", lidar.mount_y_m, "mount_y_m", -10.0, 10.0),
+      PLANTSIM_PARAM("lidar", lidar.mount_yaw_rad, "mount_yaw_rad", -M_PI, M_PI),
+      PLANTSIM_PARAM("lidar", lidar.range_noise_m, "range_noise_m", 0.0, 10.0),
+      PLANTSIM_PARAM("lidar", lidar.dropout_probability, "dropout_probability", 0.0, 1.0),
+      PLANTSIM_PARAM("imu", imu.yaw_rate_noise_radps, "yaw_rate_noise_radps", 0.0, 10.0),
+      PLANTSIM_PARAM("imu", imu.bias_radps, "bias_radps", 0.0, 10.0),
+      PLANTSIM_PARAM("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0,
+                     10.0),
+      PLANTSIM_PARAM("beacon", beacon.position_noise_m, "position_noise_m", 0.0, 100.0),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_position_sigma_m,
+                           "initial_position_sigma_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_yaw_sigma_rad, "initial_yaw_sigma_rad",
+                           0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_bias_sigma_radps,
+                           "initial_bias_sigma_radps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.distance_noise, "distance_noise", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.lateral_noise, "lateral_noise", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.gyro_noise_radps, "gyro_noise_radps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s",
+                     0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.range_sigma_m, "range_sigma_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.gate_chi2, "gate_chi2", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos", 0.0, 1.0),
+      PLANTSIM_PARAM("ekf", perception.ekf.gate_floor_m, "gate_floor_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.constraint_sigma_m, "constraint_sigma_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("ekf", perception.ekf.degraded_inlier_fraction, "degraded_inlier_fraction",
+                     0.0, 1.0),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.ok_position_sigma_m, "ok_position_sigma_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.nis_quantile_z, "nis_quantile_z", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.lost_position_sigma_m, "lost_position_sigma_m",
+                           0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracker", perception.tracker.unexplained_margin_m, "unexplained_margin_m",
+                     0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.range_m, "range_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.cluster_gap_m, "cluster_gap_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.association_gate_m, "association_gate_m",
+                           0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracker", perception.tracker.alpha, "alpha", 0.0, 1.0),
+      PLANTSIM_PARAM("tracker", perception.tracker.beta, "beta", 0.0, 1.0),
+      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.max_speed_mps, "max_speed_mps", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("tracker", perception.tracker.still_speed_mps, "still_speed_mps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.forget_after_s, "forget_after_s", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("tracker", perception.tracker.min_size_m, "min_size_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracker", perception.tracker.assumed_depth_m, "assumed_depth_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.target_exclusion_m, "target_exclusion_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.lookahead_min_m, "lookahead_min_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.lookahead_max_m, "lookahead_max_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.lookahead_time_s, "lookahead_time_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.sharp_turn_rad, "sharp_turn_rad", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.corner_release_m, "corner_release_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.max_linear_speed_mps, "max_linear_speed_mps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.max_angular_speed_radps, "max_angular_speed_radps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.min_approach_speed_mps, "min_approach_speed_mps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.approach_slowdown_distance_m,
+                     "approach_slowdown_distance_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.regulated_min_radius_m, "regulated_min_radius_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_threshold_rad,
+                     "rotate_in_place_threshold_rad", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_exit_rad, "rotate_in_place_exit_rad", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_speed_radps,
+                     "rotate_in_place_speed_radps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.goal_tolerance_m, "goal_tolerance_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tracking", tracking.progress_window_m, "progress_window_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.approach_speed_mps, "approach_speed_mps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.approach_lookahead_m, "approach_lookahead_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.align_tolerance_rad, "align_tolerance_rad", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.align_speed_radps, "align_speed_radps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.backoff_speed_mps, "backoff_speed_mps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.overshoot_limit_m, "overshoot_limit_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.detection_blend, "detection_blend", 0.0, 1.0),
+      PLANTSIM_PARAM_ABOVE("docking", docking.detection_gate_m, "detection_gate_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.approach_timeout_s, "approach_timeout_s", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.safety_margin_m, "safety_margin_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.max_decel_mps2, "max_decel_mps2", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.check_extra_m, "check_extra_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.replan_after_s, "replan_after_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.yield_horizon_s, "yield_horizon_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.yield_speed_mps, "yield_speed_mps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("kidnap", kidnap.at_s, "at_s", -1.0, 86400.0),
+      PLANTSIM_PARAM("kidnap", kidnap.dx_m, "dx_m", -1000.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", kidnap.dy_m, "dy_m", -1000.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", kidnap.dyaw_rad, "dyaw_rad", -M_PI, M_PI),
+      PLANTSIM_PARAM("docking", docking.confident_sigma_m, "confident_sigma_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.uncertain_sigma_m, "uncertain_sigma_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.uncertain_speed_fraction, "uncertain_speed_fraction", 0.0,
+                     1.0),
+      PLANTSIM_PARAM("potential_field", field.k_att, "k_att", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.m, "m", 0.0, 10.0),  // exponents
+      PLANTSIM_PARAM("potential_field", field.k_att_v, "k_att_v", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.m_v, "m_v", 0.0, 10.0),  // exponents
+      PLANTSIM_PARAM("potential_field", field.k_rep, "k_rep", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.n, "n", 0.0, 10.0),  // exponents
+      PLANTSIM_PARAM("potential_field", field.rho0_m, "rho0_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.k_rep_v, "k_rep_v", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.n_v, "n_v", 0.0, 10.0),  // exponents
+      PLANTSIM_PARAM("potential_field", field.rho_min_m, "rho_min_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.max_speed_mps, "max_speed_mps", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.turn_gain, "turn_gain", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.max_angular_speed_radps, "max_angular_speed_radps",
+                     0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.max_decel_mps2, "max_decel_mps2", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.arrive_radius_m, "arrive_radius_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.slow_force_ratio, "slow_force_ratio", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.balance_ratio, "balance_ratio", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.stall_window_s, "stall_window_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.stall_distance_m, "stall_distance_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.wall_distance_m, "wall_distance_m", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.wall_gain, "wall_gain", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.follow_angle_rad, "follow_angle_rad", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.leave_margin_m, "leave_margin_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("potential_field", field.sensor_range_m, "sensor_range_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("pursuit", catch_distance_m, "catch_distance_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("pursuit", pursuit_replan_period_s, "replan_period_s", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.range_m, "range_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tolerance", tolerance.position_m, "position_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tolerance", tolerance.heading_rad, "heading_rad", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("tolerance", tolerance.dwell_s, "dwell_s", 0.0, 60.0),
+      PLANTSIM_PARAM("tolerance", tolerance.min_press_m, "min_press_m", 0.0, 0.05),
+      PLANTSIM_PARAM_ABOVE("docking", docking.press_speed_mps, "press_speed_mps", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("docking", docking.press_timeout_s, "press_timeout_s", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("docking", docking.stuck_timeout_s, "stuck_timeout_s", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("docking", docking.settle_s, "settle_s", 0.0, 60.0),
+      PLANTSIM_PARAM_ABOVE("traction", traction.max_accel_mps2, "max_accel_mps2", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("traction", traction.max_angular_accel_radps2,
+                           "max_angular_accel_radps2", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("traction", traction.slip_scale_factor, "slip_scale_factor", 0.0, 1.0),
+      PLANTSIM_PARAM("traction", traction.min_scale, "min_scale", 0.0, 1.0),
+      PLANTSIM_PARAM("traction", traction.slip_hold_s, "slip_hold_s", 0.0, 60.0),
+      PLANTSIM_PARAM("traction", traction.recover_per_s, "recover_per_s", 0.0, 10.0),
+      PLANTSIM_PARAM("traction", traction.creep_mps, "creep_mps", 0.0, 10.0),
+      PLANTSIM_PARAM("traction", traction.creep_radps, "creep_radps", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("layer", perception.layer.cell_m, "cell_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("layer", perception.layer.clear_range_m, "clear_range_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.moving_speed_mps, "moving_speed_mps", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.explained_sigmas, "explained_sigmas", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.gyro_calibration_s, "gyro_calibration_s", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("perception", perception.displaced_jump_m, "displaced_jump_m", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("perception", perception.slip_jump_m, "slip_jump_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("perception", perception.slip_turn_radps, "slip_turn_radps", 0.0,
+                           kMaxParameter),
+      PLANTSIM_PARAM("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("perception", perception.global_match_sigma_m, "global_match_sigma_m",
+                           0.0, 100.0),
+      PLANTSIM_PARAM("perception", perception.global_match_period_s, "global_match_period_s", 0.0,
+                     100.0),
+      PLANTSIM_PARAM("perception", perception.global_match_max_window_m,
+                     "global_match_max_window_m", 0.1, 100.0),
+      PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0),
   };
   return table;
 }
-#undef PS_FIELD
-#undef PS_RANGE
-#undef PS_PROBABILITY
-#undef PS_POSITIVE
 
-// Integer and boolean parameters, kept apart from the double table.
-struct IntField {
-  const char* section;
-  const char* name;
-  std::function<int&(EpisodeConfig&)> ref;
-  int lo = 0, hi = 1000;
-};
-const std::vector<IntField>& int_fields() {
-  static const std::vector<IntField> table = {
-      {"step", "velocity_iterations",
-       [](EpisodeConfig& c) -> int& { return c.step.velocity_iterations; }},
-      {"step", "position_iterations",
-       [](EpisodeConfig& c) -> int& { return c.step.position_iterations; }},
-      {"docking", "max_retries", [](EpisodeConfig& c) -> int& { return c.docking.max_retries; }},
-      {"step", "control_period_steps",
-       [](EpisodeConfig& c) -> int& { return c.control_period_steps; }, 1, 1000},
-      {"potential_field", "max_wall_follows",
-       [](EpisodeConfig& c) -> int& { return c.field.max_wall_follows; }},
-      {"lidar", "beam_count", [](EpisodeConfig& c) -> int& { return c.lidar.beam_count; }, 1,
-       10000},
-      {"ekf", "beams_used", [](EpisodeConfig& c) -> int& { return c.perception.ekf.beams_used; }, 1,
-       10000},
-      {"ekf", "iterations", [](EpisodeConfig& c) -> int& { return c.perception.ekf.iterations; }, 1,
-       20},
-      {"ekf", "min_informative_beams",
-       [](EpisodeConfig& c) -> int& { return c.perception.ekf.min_informative_beams; }, 3, 10000},
-      {"ekf", "nis_window", [](EpisodeConfig& c) -> int& { return c.perception.ekf.nis_window; }, 1,
-       1000},
-      {"ekf", "lost_failed_matches",
-       [](EpisodeConfig& c) -> int& { return c.perception.ekf.lost_failed_matches; }, 1, 100000},
+// Whole-number and on/off parameters, kept apart from the real ones (and written after them).
+const std::vector<Field>& int_fields() {
+  static const std::vector<Field> table = {
+      PLANTSIM_PARAM("step", step.velocity_iterations, "velocity_iterations", 0, 1000),
+      PLANTSIM_PARAM("step", step.position_iterations, "position_iterations", 0, 1000),
+      PLANTSIM_PARAM("docking", docking.max_retries, "max_retries", 0, 1000),
+      PLANTSIM_PARAM("step", control_period_steps, "control_period_steps", 1, 1000),
+      PLANTSIM_PARAM("potential_field", field.max_wall_follows, "max_wall_follows", 0, 1000),
+      PLANTSIM_PARAM("lidar", lidar.beam_count, "beam_count", 1, 10000),
+      PLANTSIM_PARAM("ekf", perception.ekf.beams_used, "beams_used", 1, 10000),
+      PLANTSIM_PARAM("ekf", perception.ekf.iterations, "iterations", 1, 20),
+      PLANTSIM_PARAM("ekf", perception.ekf.min_informative_beams, "min_informative_beams", 3,
+                     10000),
+      PLANTSIM_PARAM("ekf", perception.ekf.nis_window, "nis_window", 1, 1000),
+      PLANTSIM_PARAM("ekf", perception.ekf.lost_failed_matches, "lost_failed_matches", 1, 100000),
   };
   return table;
 }
 
-// Boolean parameters.
-struct BoolField {
-  const char* section;
-  const char* name;
-  std::function<bool&(EpisodeConfig&)> ref;
-};
-const std::vector<BoolField>& bool_fields() {
-  static const std::vector<BoolField> table = {
-      {"detection", "enabled", [](EpisodeConfig& c) -> bool& { return c.detection.enabled; }},
-      {"detection", "occlusion", [](EpisodeConfig& c) -> bool& { return c.detection.occlusion; }},
-      {"lidar", "enabled", [](EpisodeConfig& c) -> bool& { return c.lidar.enabled; }},
-      {"lidar", "max_range_returns",
-       [](EpisodeConfig& c) -> bool& { return c.lidar.max_range_returns; }},
-      {"traction", "enabled", [](EpisodeConfig& c) -> bool& { return c.traction.enabled; }},
-      {"docking", "undock", [](EpisodeConfig& c) -> bool& { return c.docking.undock; }},
-      {"layer", "enabled", [](EpisodeConfig& c) -> bool& { return c.perception.layer.enabled; }},
+const std::vector<Field>& bool_fields() {
+  static const std::vector<Field> table = {
+      PLANTSIM_PARAM("detection", detection.enabled, "enabled", 0, 1),
+      PLANTSIM_PARAM("detection", detection.occlusion, "occlusion", 0, 1),
+      PLANTSIM_PARAM("lidar", lidar.enabled, "enabled", 0, 1),
+      PLANTSIM_PARAM("lidar", lidar.max_range_returns, "max_range_returns", 0, 1),
+      PLANTSIM_PARAM("traction", traction.enabled, "enabled", 0, 1),
+      PLANTSIM_PARAM("docking", docking.undock, "undock", 0, 1),
+      PLANTSIM_PARAM("layer", perception.layer.enabled, "enabled", 0, 1),
   };
   return table;
 }
@@ -303,31 +317,32 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
     const double d = v->get<double>();
     if (!std::isfinite(d))
       throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
-    if (d < f.lo || d > f.hi || (f.positive && d <= f.lo)) {
+    if (d < f.lo || d > f.hi || (f.above && d <= f.lo)) {
       std::ostringstream range;
-      range << "must be " << (f.positive ? "above " : "at least ") << f.lo << " and at most "
-            << f.hi;
+      range << "must be " << (f.above ? "above " : "at least ") << f.lo << " and at most " << f.hi;
       throw worlds::WorldError(source, path_of(f.section, f.name), range.str());
     }
-    f.ref(c) = d;
+    f.set(c, d);
   }
-  for (const IntField& f : int_fields()) {
+  for (const Field& f : int_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
     if (!v->is_number_integer() ||
         (v->is_number_unsigned() && v->get<std::uint64_t>() > 1000000000ULL) ||
-        v->get<std::int64_t>() < f.lo || v->get<std::int64_t>() > f.hi)
-      throw worlds::WorldError(
-          source, path_of(f.section, f.name),
-          "expected a whole number from " + std::to_string(f.lo) + " to " + std::to_string(f.hi));
-    f.ref(c) = v->get<int>();
+        v->get<std::int64_t>() < static_cast<std::int64_t>(f.lo) ||
+        v->get<std::int64_t>() > static_cast<std::int64_t>(f.hi))
+      throw worlds::WorldError(source, path_of(f.section, f.name),
+                               "expected a whole number from " +
+                                   std::to_string(static_cast<int>(f.lo)) + " to " +
+                                   std::to_string(static_cast<int>(f.hi)));
+    f.set(c, v->get<int>());
   }
-  for (const BoolField& f : bool_fields()) {
+  for (const Field& f : bool_fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
     if (!v->is_boolean())
       throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
-    f.ref(c) = v->get<bool>();
+    f.set(c, v->get<bool>() ? 1.0 : 0.0);
   }
   if (const json* v = lookup("perception", "mode")) {
     const std::string m = v->is_string() ? v->get<std::string>() : "";
@@ -403,12 +418,12 @@ std::string default_config_json() {
   nlohmann::ordered_json j;
   for (const Field& f : fields()) {
     if (std::string(f.section).empty())
-      j[f.name] = f.ref(c);
+      j[f.name] = f.get(c);
     else
-      j[f.section][f.name] = f.ref(c);
+      j[f.section][f.name] = f.get(c);
   }
-  for (const IntField& f : int_fields()) j[f.section][f.name] = f.ref(c);
-  for (const BoolField& f : bool_fields()) j[f.section][f.name] = f.ref(c);
+  for (const Field& f : int_fields()) j[f.section][f.name] = static_cast<int>(f.get(c));
+  for (const Field& f : bool_fields()) j[f.section][f.name] = f.get(c) != 0;
   j["perception"]["mode"] = std::string(to_string(c.perception.mode));
   j["travel"] = std::string(to_string(c.travel));
   j["seed"] = c.seed;

@@ -8,63 +8,45 @@
 #include <vector>
 
 #include "util/input_file.h"
+#include "util/param_table.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::planner {
 namespace {
 
-struct Field {
-  const char* section;
-  const char* name;
-  std::function<double(const CoverageParams&)> get;
-  std::function<void(CoverageParams&, double)> set;
-  double lo, hi;
-  bool integer = false;
-};
-
-#define CP_REAL(section, member, name, lo, hi)                                            \
-  Field {                                                                                 \
-    section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); }, \
-        [](CoverageParams& p, double v) { p.member = v; }, lo, hi                         \
-  }
-#define CP_INT(section, member, name, lo, hi)                                                   \
-  Field {                                                                                       \
-    section, name, [](const CoverageParams& p) { return static_cast<double>(p.member); },       \
-        [](CoverageParams& p, double v) { p.member = static_cast<decltype(p.member)>(v); }, lo, \
-        hi, true                                                                                \
-  }
+using Field = util::Param<CoverageParams>;
 
 const std::vector<Field>& fields() {
   static const std::vector<Field> table = {
-      CP_REAL("", cell_m, "cell_m", 0.2, 100.0),
-      CP_REAL("", weights.cells, "w1_cells", 0.0, 1.0),
-      CP_REAL("", weights.turns, "w2_turns", 0.0, 1.0),
-      CP_REAL("", turn_k, "turn_k", 0.0, 100.0),
-      CP_REAL("chnn", chnn.alpha, "alpha", 0.0, 1e6),
-      CP_REAL("chnn", chnn.beta, "beta", 0.0, 1e6),
-      CP_REAL("chnn", chnn.gamma, "gamma", 0.0, 1e6),
-      CP_REAL("chnn", chnn.eta, "eta", 0.0, 1e6),
-      CP_REAL("chnn", chnn.target_ratio, "target_ratio", 0.5, 3.0),
-      CP_REAL("chnn", chnn.u0, "u0", 1e-6, 10.0),
-      CP_REAL("chnn", chnn.tau, "tau", 1e-6, 1e6),
-      CP_REAL("chnn", chnn.dt, "dt", 1e-9, 1e-2),
-      CP_INT("chnn", chnn.max_steps, "max_steps", 1, 1e7),
-      CP_REAL("chnn", chnn.settle_change, "settle_change", 0.0, 1.0),
-      CP_INT("chnn", chnn.restarts, "restarts", 1, 10000),
-      CP_REAL("chnn", chnn.init_noise, "init_noise", 0.0, 10.0),
-      CP_INT("chnn", chnn.seed, "seed", 0, 9e15),
-      CP_REAL("potts", potts.a, "a", 0.0, 1e6),
-      CP_REAL("potts", potts.d, "d", 0.0, 1e6),
-      CP_REAL("potts", potts.t0, "t0", 1e-6, 1e6),
-      CP_REAL("potts", potts.cooling, "cooling", 0.01, 0.999),
-      CP_REAL("potts", potts.t_min, "t_min", 1e-9, 1e6),
-      CP_INT("potts", potts.sweeps, "sweeps", 1, 1000),
-      CP_INT("potts", potts.restarts, "restarts", 1, 10000),
-      CP_INT("potts", potts.seed, "seed", 0, 9e15),
-      CP_INT("exact", exact.max_prefixes, "max_prefixes", 0, 1e12),
-      CP_REAL("exact", exact.time_limit_s, "time_limit_s", 0.0, 3600.0),
-      CP_INT("exact", exact.max_table_states, "max_table_states", 0, 1e8),
+      PLANTSIM_PARAM("", cell_m, "cell_m", 0.2, 100.0),
+      PLANTSIM_PARAM("", weights.cells, "w1_cells", 0.0, 1.0),
+      PLANTSIM_PARAM("", weights.turns, "w2_turns", 0.0, 1.0),
+      PLANTSIM_PARAM("", turn_k, "turn_k", 0.0, 100.0),
+      PLANTSIM_PARAM("chnn", chnn.alpha, "alpha", 0.0, 1e6),
+      PLANTSIM_PARAM("chnn", chnn.beta, "beta", 0.0, 1e6),
+      PLANTSIM_PARAM("chnn", chnn.gamma, "gamma", 0.0, 1e6),
+      PLANTSIM_PARAM("chnn", chnn.eta, "eta", 0.0, 1e6),
+      PLANTSIM_PARAM("chnn", chnn.target_ratio, "target_ratio", 0.5, 3.0),
+      PLANTSIM_PARAM("chnn", chnn.u0, "u0", 1e-6, 10.0),
+      PLANTSIM_PARAM("chnn", chnn.tau, "tau", 1e-6, 1e6),
+      PLANTSIM_PARAM("chnn", chnn.dt, "dt", 1e-9, 1e-2),
+      PLANTSIM_PARAM("chnn", chnn.max_steps, "max_steps", 1, 1e7),
+      PLANTSIM_PARAM("chnn", chnn.settle_change, "settle_change", 0.0, 1.0),
+      PLANTSIM_PARAM("chnn", chnn.restarts, "restarts", 1, 10000),
+      PLANTSIM_PARAM("chnn", chnn.init_noise, "init_noise", 0.0, 10.0),
+      PLANTSIM_PARAM("chnn", chnn.seed, "seed", 0, 9e15),
+      PLANTSIM_PARAM("potts", potts.a, "a", 0.0, 1e6),
+      PLANTSIM_PARAM("potts", potts.d, "d", 0.0, 1e6),
+      PLANTSIM_PARAM("potts", potts.t0, "t0", 1e-6, 1e6),
+      PLANTSIM_PARAM("potts", potts.cooling, "cooling", 0.01, 0.999),
+      PLANTSIM_PARAM("potts", potts.t_min, "t_min", 1e-9, 1e6),
+      PLANTSIM_PARAM("potts", potts.sweeps, "sweeps", 1, 1000),
+      PLANTSIM_PARAM("potts", potts.restarts, "restarts", 1, 10000),
+      PLANTSIM_PARAM("potts", potts.seed, "seed", 0, 9e15),
+      PLANTSIM_PARAM("exact", exact.max_prefixes, "max_prefixes", 0, 1e12),
+      PLANTSIM_PARAM("exact", exact.time_limit_s, "time_limit_s", 0.0, 3600.0),
+      PLANTSIM_PARAM("exact", exact.max_table_states, "max_table_states", 0, 1e8),
   };
   return table;
 }
@@ -116,7 +98,7 @@ CoverageParams parse_coverage_params(const std::string& text, const std::string&
       throw worlds::WorldError(
           source, field,
           "must be between " + nlohmann::json(f.lo).dump() + " and " + nlohmann::json(f.hi).dump());
-    if (f.integer && x != std::floor(x))
+    if (f.kind == util::ParamKind::kWhole && x != std::floor(x))
       throw worlds::WorldError(source, field, "expected a whole number");
     f.set(p, x);
   }
@@ -140,8 +122,9 @@ std::string coverage_params_json(const CoverageParams& p) {
   nlohmann::ordered_json j;
   for (const Field& f : fields()) {
     const double v = f.get(p);
-    nlohmann::ordered_json value =
-        f.integer ? nlohmann::ordered_json(static_cast<long long>(v)) : nlohmann::ordered_json(v);
+    nlohmann::ordered_json value = f.kind == util::ParamKind::kWhole
+                                       ? nlohmann::ordered_json(static_cast<long long>(v))
+                                       : nlohmann::ordered_json(v);
     if (std::string(f.section).empty())
       j[f.name] = value;
     else
