@@ -287,10 +287,7 @@ BatchSpec load_batch_spec(const std::string& path) {
 
 namespace {
 
-BatchSpec read_batch_spec(const std::string& path) {
-  const YAML::Node doc = worlds::load_yaml_input(path);
-  if (!doc.IsMap())
-    throw WorldError(path, "", "expected a mapping with worlds, planners, seeds ...");
+void check_top_keys(const YAML::Node& doc, const std::string& path) {
   for (const auto& kv : doc) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers", "faults",
@@ -298,10 +295,10 @@ BatchSpec read_batch_spec(const std::string& path) {
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, key, worlds::unknown_key_problem(key, known));
   }
-  BatchSpec s;
-  s.source = path;
-  s.name = scalar_text(doc, "name", path, std::filesystem::path(path).stem().string());
-  const std::string base = std::filesystem::path(path).parent_path().string();
+}
+
+void read_worlds(const YAML::Node& doc, const std::string& path, const std::string& base,
+                 BatchSpec& s) {
   if (!doc["worlds"] || !doc["worlds"].IsSequence() || doc["worlds"].size() == 0)
     throw WorldError(path, "worlds", "expected a non-empty list of world files");
   if (doc["worlds"].size() > 1000) throw WorldError(path, "worlds", "more than 1000 worlds");
@@ -317,6 +314,9 @@ BatchSpec read_batch_spec(const std::string& path) {
       throw WorldError(path, field, "'" + w.Scalar() + "' not found (looked for " + resolved + ")");
     s.world_files.push_back(resolved);
   }
+}
+
+void read_planners(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   if (doc["planners"]) {
     if (!doc["planners"].IsSequence())
       throw WorldError(path, "planners", "expected a list of planner names");
@@ -338,6 +338,9 @@ BatchSpec read_batch_spec(const std::string& path) {
   if (s.planners.empty())
     throw WorldError(path, "planners",
                      "an empty list: no episode would run (leave the key out for vg)");
+}
+
+void read_controllers(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   if (doc["controllers"]) {
     if (!doc["controllers"].IsMap())
       throw WorldError(path, "controllers", "expected a mapping name: {overrides}");
@@ -351,7 +354,13 @@ BatchSpec read_batch_spec(const std::string& path) {
   } else {
     s.controllers = {{"default", "{}"}};
   }
-  std::vector<std::pair<std::string, YAML::Node>> bodies;  // each fault's overrides as written
+}
+
+/// Each fault's overrides as written, by name.
+using FaultBodies = std::vector<std::pair<std::string, YAML::Node>>;
+
+FaultBodies read_fault_bodies(const YAML::Node& doc, const std::string& path) {
+  FaultBodies bodies;
   if (doc["faults"]) {
     if (!doc["faults"].IsMap())
       throw WorldError(path, "faults", "expected a mapping name: {overrides}");
@@ -361,43 +370,51 @@ BatchSpec read_batch_spec(const std::string& path) {
     for (const auto& kv : doc["faults"])
       bodies.emplace_back(checked_name(kv.first, path, "faults"), YAML::Clone(kv.second));
   }
-  if (doc["sweep"]) {
-    // One fault per value (per fault, when faults are given too): success-rate curves.
-    const YAML::Node sw = doc["sweep"];
-    if (!sw.IsMap() || !sw["parameter"] || !sw["parameter"].IsScalar())
-      throw WorldError(path, "sweep", "expected {parameter: <name>, values: [...]}");
-    const std::string parameter = sw["parameter"].Scalar();
-    if (!worlds::valid_utf8(parameter) || parameter.size() > 100)
-      throw WorldError(path, "sweep.parameter", "expected a parameter name");
-    if (!sw["values"] || !sw["values"].IsSequence() || sw["values"].size() == 0)
-      throw WorldError(path, "sweep.values", "expected a non-empty list of values");
-    if (sw["values"].size() > 100) throw WorldError(path, "sweep.values", "more than 100 values");
-    s.sweep_parameter = parameter;
-    if (bodies.empty()) bodies.emplace_back("", YAML::Node(YAML::NodeType::Map));
-    std::vector<std::pair<std::string, YAML::Node>> swept;
-    std::vector<std::string> values;
-    for (const auto& v : sw["values"]) {
-      values.push_back(value_text(v));
-      if (!worlds::valid_utf8(values.back()) || values.back().size() > 100)
-        throw WorldError(path, "sweep.values", "values must be at most 100 characters of UTF-8");
-    }
-    for (const auto& [name, body] : bodies)
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        YAML::Node one = merged(body, sweep_override(parameter, sw["values"][i]));
-        swept.emplace_back((name.empty() ? "" : name + " ") + parameter + "=" + values[i], one);
-      }
-    bodies = std::move(swept);
-    try {
-      // The parameter must be a plant key or a config key: try the first value.
-      YAML::Node probe = YAML::Clone(sweep_override(parameter, sw["values"][0]));
-      FaultSetting f;
-      take_plant_keys(probe, f, path, "sweep.values[0]");
-      overrides_json(probe, path, "sweep");
-    } catch (const WorldError& e) {
-      throw WorldError(path, "sweep.parameter",
-                       "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
-    }
+  return bodies;
+}
+
+/// One fault per value of the swept parameter (per fault, when faults are given too): the
+/// success-rate curves.
+void apply_sweep(const YAML::Node& doc, const std::string& path, BatchSpec& s,
+                 FaultBodies& bodies) {
+  if (!doc["sweep"]) return;
+  const YAML::Node sw = doc["sweep"];
+  if (!sw.IsMap() || !sw["parameter"] || !sw["parameter"].IsScalar())
+    throw WorldError(path, "sweep", "expected {parameter: <name>, values: [...]}");
+  const std::string parameter = sw["parameter"].Scalar();
+  if (!worlds::valid_utf8(parameter) || parameter.size() > 100)
+    throw WorldError(path, "sweep.parameter", "expected a parameter name");
+  if (!sw["values"] || !sw["values"].IsSequence() || sw["values"].size() == 0)
+    throw WorldError(path, "sweep.values", "expected a non-empty list of values");
+  if (sw["values"].size() > 100) throw WorldError(path, "sweep.values", "more than 100 values");
+  s.sweep_parameter = parameter;
+  if (bodies.empty()) bodies.emplace_back("", YAML::Node(YAML::NodeType::Map));
+  std::vector<std::pair<std::string, YAML::Node>> swept;
+  std::vector<std::string> values;
+  for (const auto& v : sw["values"]) {
+    values.push_back(value_text(v));
+    if (!worlds::valid_utf8(values.back()) || values.back().size() > 100)
+      throw WorldError(path, "sweep.values", "values must be at most 100 characters of UTF-8");
   }
+  for (const auto& [name, body] : bodies)
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      YAML::Node one = merged(body, sweep_override(parameter, sw["values"][i]));
+      swept.emplace_back((name.empty() ? "" : name + " ") + parameter + "=" + values[i], one);
+    }
+  bodies = std::move(swept);
+  try {
+    // The parameter must be a plant key or a config key: try the first value.
+    YAML::Node probe = YAML::Clone(sweep_override(parameter, sw["values"][0]));
+    FaultSetting f;
+    take_plant_keys(probe, f, path, "sweep.values[0]");
+    overrides_json(probe, path, "sweep");
+  } catch (const WorldError& e) {
+    throw WorldError(path, "sweep.parameter",
+                     "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
+  }
+}
+
+void make_faults(FaultBodies& bodies, const std::string& path, BatchSpec& s) {
   for (auto& [name, body] : bodies) {
     FaultSetting f;
     f.name = name;
@@ -416,6 +433,9 @@ BatchSpec read_batch_spec(const std::string& path) {
     none.json = "{}";
     s.faults.push_back(none);
   }
+}
+
+void read_seeds(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   const YAML::Node seeds = doc["seeds"];
   if (!seeds) throw WorldError(path, "seeds", "missing (a count, or a list of seeds)");
   try {
@@ -444,15 +464,20 @@ BatchSpec read_batch_spec(const std::string& path) {
   } catch (const YAML::Exception&) {
     throw WorldError(path, "seeds", "expected a count or a list of whole numbers");
   }
+}
+
+void read_starts(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   if (doc["starts"]) {
     const std::string v = scalar_text(doc, "starts", path, "");
     if (v != "random" && v != "world")
       throw WorldError(path, "starts", "must be 'random' or 'world'");
     s.random_starts = v == "random";
   }
-  s.gate = read_gate(doc["gate"], path);
-  // A gate rule that matches no configuration judges nothing: a typo, refused (worlds are named
-  // by their files' contents: checked once they are loaded, batch_runner.cpp).
+}
+
+/// A gate rule that matches no configuration judges nothing: a typo, refused (worlds are named by
+/// their files' contents: checked once they are loaded, scenario_setup.cpp).
+void check_gate_rules(const std::string& path, const BatchSpec& s) {
   for (std::size_t i = 0; i < s.gate.rules.size(); ++i) {
     const GateRule& r = s.gate.rules[i];
     const std::string field = "gate.configurations[" + std::to_string(i) + "]";
@@ -474,6 +499,9 @@ BatchSpec read_batch_spec(const std::string& path) {
           path, field + ".fault",
           "'" + r.fault + "' is not one of the scenario's faults: the rule would judge nothing");
   }
+}
+
+void check_episode_count(const std::string& path, const BatchSpec& s) {
   // Episodes are counted before any is made: a cross product of 1e9 is a typo, not a batch.
   const double total = static_cast<double>(s.world_files.size()) * s.planners.size() *
                        s.controllers.size() * s.faults.size() * s.seeds.size();
@@ -481,6 +509,27 @@ BatchSpec read_batch_spec(const std::string& path) {
     throw WorldError(path, "seeds",
                      "the scenario makes " + std::to_string(static_cast<long long>(total)) +
                          " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
+}
+
+BatchSpec read_batch_spec(const std::string& path) {
+  const YAML::Node doc = worlds::load_yaml_input(path);
+  if (!doc.IsMap())
+    throw WorldError(path, "", "expected a mapping with worlds, planners, seeds ...");
+  check_top_keys(doc, path);
+  BatchSpec s;
+  s.source = path;
+  s.name = scalar_text(doc, "name", path, std::filesystem::path(path).stem().string());
+  read_worlds(doc, path, std::filesystem::path(path).parent_path().string(), s);
+  read_planners(doc, path, s);
+  read_controllers(doc, path, s);
+  FaultBodies bodies = read_fault_bodies(doc, path);
+  apply_sweep(doc, path, s, bodies);
+  make_faults(bodies, path, s);
+  read_seeds(doc, path, s);
+  read_starts(doc, path, s);
+  s.gate = read_gate(doc["gate"], path);
+  check_gate_rules(path, s);
+  check_episode_count(path, s);
   return s;
 }
 

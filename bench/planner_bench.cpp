@@ -53,14 +53,13 @@ FirstQuery build_and_query(const std::string& name, const worlds::World& w, int 
   return out;
 }
 
-}  // namespace
+struct Named {
+  std::string name;
+  worlds::World world;
+  bool traditional;  ///< also time the traditional graph (the baseline) here
+};
 
-int run_planner_bench(const std::string& shared_data, bool quick, const std::string& chart_png) {
-  struct Named {
-    std::string name;
-    worlds::World world;
-    bool traditional;
-  };
+std::vector<Named> bench_worlds(const std::string& shared_data, bool quick) {
   std::vector<Named> worlds;
   for (int n : {10, 50, 200, 1000}) {
     std::string count = std::to_string(n);  // (built stepwise: GCC 12 warns falsely on "N" + ...)
@@ -75,188 +74,210 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
   big.width_m = 100.0 * std::sqrt(5.0);
   big.height_m = 60.0 * std::sqrt(5.0);
   worlds.push_back({"N5000", worlds::random_plant(big), false});
+  return worlds;
+}
 
+struct ScalingCurves {
+  render::ScalingSeries vg{"vg (visibility graph, A*)", {}, {}},
+      trad{"vg-traditional (all pairs tested)", {}, {}}, grid{"grid (0.1 m cells, A*)", {}, {}},
+      interval{"interval (mesh, interval search)", {}, {}};
+};
+
+/// The graph's counts against the traditional graph's (none without it).
+void report_graph_sizes(const Named& nw, const FirstQuery& fast,
+                        const std::optional<FirstQuery>& trad) {
+  const auto count = [&](const std::string& what, const std::string& theirs, auto stat) {
+    report("planner", {nw.name + "/vg/" + what, static_cast<double>(stat(fast)), "count"},
+           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/" + theirs,
+                                                 static_cast<double>(stat(*trad)), "count"})
+                : std::nullopt);
+  };
+  count("vertices", "vertices", [](const FirstQuery& q) { return q.result.stats.vertices; });
+  count("edges_tested_visible", "edges", [](const FirstQuery& q) { return q.result.stats.edges; });
+  count("segment_tests", "segment_tests",
+        [](const FirstQuery& q) { return q.result.stats.segment_tests; });
+}
+
+/// Build and first query of vg, interval, the traditional graph and (for the chart) the grid;
+/// false when two exact planners disagree on the length.
+bool bench_first_queries(const Named& nw, int reps, bool quick, bool chart, ScalingCurves& curves,
+                         std::optional<Measure>& previous_first, FirstQuery& fast) {
+  fast = build_and_query("vg", nw.world, reps);
+  // The same question answered by interval search over the free-space mesh.
+  const FirstQuery interval = build_and_query("interval", nw.world, reps);
+  const Measure first{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"};
+  report("planner", {nw.name + "/interval/build_plus_first_query", interval.total_ms, "ms"}, first);
+  if (std::abs(interval.result.length - fast.result.length) > 1e-9 * (1 + fast.result.length)) {
+    std::cerr << "bench: interval and vg lengths differ on " << nw.name << "\n";
+    return false;
+  }
+  std::optional<FirstQuery> trad;
+  if (nw.traditional)
+    trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
+  const double obstacles = static_cast<double>(nw.world.obstacles.size());
+  curves.vg.size.push_back(obstacles);
+  curves.vg.cost.push_back(fast.total_ms);
+  curves.interval.size.push_back(obstacles);
+  curves.interval.cost.push_back(interval.total_ms);
+  if (trad) curves.trad.size.push_back(obstacles), curves.trad.cost.push_back(trad->total_ms);
+  if (chart) {
+    const FirstQuery grid = build_and_query("grid", nw.world, quick ? 1 : 3);
+    report("planner", {nw.name + "/grid/build_plus_first_query", grid.total_ms, "ms"}, first);
+    curves.grid.size.push_back(obstacles);
+    curves.grid.cost.push_back(grid.total_ms);
+  }
+  auto base = [&](const std::string& metric, double v) -> std::optional<Measure> {
+    if (!trad) return std::nullopt;
+    return Measure{nw.name + "/vg-traditional/" + metric, v, "ms"};
+  };
+  report("planner", {nw.name + "/vg/build", fast.build_ms, "ms"},
+         base("build", trad ? trad->build_ms : 0));
+  // Without a traditional run (N5000), growth against the previous world size.
+  report("planner", first, trad ? base("build_plus_first_query", trad->total_ms) : previous_first);
+  previous_first = first;
+  report_graph_sizes(nw, fast, trad);
+  if (trad && std::abs(trad->result.length - fast.result.length) > 1e-9) {
+    std::cerr << "bench: length mismatch on " << nw.name << "\n";
+    return false;
+  }
+  return true;
+}
+
+/// Later queries on one planner: the same query again, then random pairs of free points.
+void bench_later_queries(const Named& nw, planner::Planner& p, const FirstQuery& fast, bool quick) {
+  p.plan(nw.world.start.position(), nw.world.charger.position());
+  std::vector<double> again;
+  for (int r = 0; r < 20; ++r) {
+    const auto t0 = Clock::now();
+    p.plan(nw.world.start.position(), nw.world.charger.position());
+    again.push_back(ms_since(t0));
+  }
+  const Measure first{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"};
+  report("planner", {nw.name + "/vg/repeat_query", median(again), "ms"}, first);
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> ux(nw.world.floor.xmin, nw.world.floor.xmax),
+      uy(nw.world.floor.ymin, nw.world.floor.ymax);
+  std::vector<double> random_ms;
+  const int queries = quick ? 50 : 200;
+  while (static_cast<int>(random_ms.size()) < queries) {
+    const auto t0 = Clock::now();
+    const auto r = p.plan({ux(rng), uy(rng)}, {ux(rng), uy(rng)});
+    if (r.status == planner::PlanStatus::kOk) random_ms.push_back(ms_since(t0));
+  }
+  double mean = 0;
+  for (double v : random_ms) mean += v;
+  mean /= static_cast<double>(random_ms.size());
+  report("planner", {nw.name + "/vg/random_query_mean", mean, "ms"}, first);
+}
+
+/// A replan around 1 and 5 sensed boxes on the way (0.6 m, on the optimal path): on the warm
+/// map graph with the boxes added on top, against a planner rebuilt with them. False when the
+/// two lengths differ.
+bool bench_replans_around_boxes(const Named& nw, const planner::VisibilityGraphPlanner& vg,
+                                const planner::PlanResult& way, int reps) {
+  const planner::PlannerInput in = planner::planner_input(nw.world, false);
+  const geom::Vec2 start = nw.world.start.position(), goal = nw.world.charger.position();
+  for (const int boxes : {1, 5}) {
+    std::vector<geom::Rect> raw, grown;
+    for (int k = 1; k <= boxes; ++k) {
+      const double f = static_cast<double>(k) / (boxes + 1);
+      const std::size_t i =
+          std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
+      const geom::Vec2 c = way.path[i] + 0.5 * (way.path[i + 1] - way.path[i]);
+      raw.push_back({c.x - 0.3, c.y - 0.3, c.x + 0.3, c.y + 0.3});
+      grown.push_back(raw.back().inflated(in.inflation_m));
+    }
+    planner::PlannerInput with = in;
+    with.obstacles.insert(with.obstacles.end(), raw.begin(), raw.end());
+    with.snap_to_free = true;
+    std::vector<double> rebuild_ms, overlay_ms;
+    double rebuild_len = 0, overlay_len = 0;
+    for (int r = 0; r < reps; ++r) {
+      auto t0 = Clock::now();
+      rebuild_len = planner::make_planner("vg", with)->plan(start, goal).length;
+      rebuild_ms.push_back(ms_since(t0));
+      t0 = Clock::now();
+      overlay_len = planner::plan_with_added(vg, grown, start, goal).length;
+      overlay_ms.push_back(ms_since(t0));
+    }
+    if (std::abs(rebuild_len - overlay_len) > 1e-9 * std::max(1.0, rebuild_len)) {
+      std::cerr << "bench: replan length mismatch on " << nw.name << " with " << boxes
+                << " boxes\n";
+      return false;
+    }
+    const std::string what =
+        "/vg/replan_" + std::to_string(boxes) + (boxes == 1 ? "_box" : "_boxes");
+    report("planner", {nw.name + what + "_on_map_graph", median(overlay_ms), "ms"},
+           Measure{nw.name + what + "_rebuilt", median(rebuild_ms), "ms"});
+  }
+  return true;
+}
+
+/// A mapped obstacle that is gone (the one nearest the middle of the way): the changed planner
+/// takes over what the removal cannot reach, against a planner built for the changed world.
+bool bench_replan_removed(const Named& nw, const planner::VisibilityGraphPlanner& vg,
+                          const planner::PlanResult& way, int reps) {
+  const planner::PlannerInput in = planner::planner_input(nw.world, false);
+  if (in.obstacles.empty()) return true;
+  const geom::Vec2 start = nw.world.start.position(), goal = nw.world.charger.position();
+  const geom::Vec2 mid = way.path[way.path.size() / 2];
+  std::size_t gone = 0;
+  for (std::size_t i = 1; i < in.obstacles.size(); ++i)
+    if (geom::distance_to_rect(mid, in.obstacles[i]) <
+        geom::distance_to_rect(mid, in.obstacles[gone]))
+      gone = i;
+  std::vector<double> changed_ms, rebuild_ms;
+  double changed_len = 0, rebuild_len = 0;
+  for (int r = 0; r < reps; ++r) {
+    auto t0 = Clock::now();
+    const auto changed = vg.with_changes({}, {gone});
+    changed_len = changed->plan(start, goal).length;
+    changed_ms.push_back(ms_since(t0));
+    t0 = Clock::now();
+    rebuild_len = planner::make_planner("vg", changed->input())->plan(start, goal).length;
+    rebuild_ms.push_back(ms_since(t0));
+  }
+  if (std::abs(rebuild_len - changed_len) > 1e-9 * std::max(1.0, rebuild_len)) {
+    std::cerr << "bench: replan length mismatch on " << nw.name << " with an obstacle removed\n";
+    return false;
+  }
+  report("planner", {nw.name + "/vg/replan_1_removed_on_changed_graph", median(changed_ms), "ms"},
+         Measure{nw.name + "/vg/replan_1_removed_rebuilt", median(rebuild_ms), "ms"});
+  return true;
+}
+
+void draw_chart(const ScalingCurves& c, int reps, bool quick, const std::string& chart_png) {
+  const render::Image img = render::draw_scaling_chart(
+      {c.vg, c.trad, c.grid, c.interval}, "Planning time against the number of obstacles",
+      "build plus first query, median of " + std::to_string(reps) +
+          " runs (grid and vg-traditional fewer), on world_N10..N1000 "
+          "and a random N5000; vg-traditional " +
+          std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
+      "obstacles (rectangles)", "time (ms)");
+  render::write_png(img, chart_png);
+  std::cerr << "bench: chart -> " << chart_png << "\n";
+}
+
+}  // namespace
+
+int run_planner_bench(const std::string& shared_data, bool quick, const std::string& chart_png) {
   const int reps = quick ? 3 : 7;
   std::optional<Measure> previous_first;
-  render::ScalingSeries vg_series{"vg (visibility graph, A*)", {}, {}},
-      trad_series{"vg-traditional (all pairs tested)", {}, {}},
-      grid_series{"grid (0.1 m cells, A*)", {}, {}},
-      interval_series{"interval (mesh, interval search)", {}, {}};
-  for (const Named& nw : worlds) {
-    const FirstQuery fast = build_and_query("vg", nw.world, reps);
-    // The same question answered by interval search over the free-space mesh.
-    const FirstQuery interval = build_and_query("interval", nw.world, reps);
-    report("planner", {nw.name + "/interval/build_plus_first_query", interval.total_ms, "ms"},
-           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
-    if (std::abs(interval.result.length - fast.result.length) > 1e-9 * (1 + fast.result.length)) {
-      std::cerr << "bench: interval and vg lengths differ on " << nw.name << "\n";
+  ScalingCurves curves;
+  for (const Named& nw : bench_worlds(shared_data, quick)) {
+    FirstQuery fast;
+    if (!bench_first_queries(nw, reps, quick, !chart_png.empty(), curves, previous_first, fast))
       return 1;
-    }
-    std::optional<FirstQuery> trad;
-    if (nw.traditional)
-      trad = build_and_query("vg-traditional", nw.world, nw.name == "N1000" ? 1 : 3);
-    const double obstacles = static_cast<double>(nw.world.obstacles.size());
-    vg_series.size.push_back(obstacles);
-    vg_series.cost.push_back(fast.total_ms);
-    interval_series.size.push_back(obstacles);
-    interval_series.cost.push_back(interval.total_ms);
-    if (trad) trad_series.size.push_back(obstacles), trad_series.cost.push_back(trad->total_ms);
-    if (!chart_png.empty()) {
-      const FirstQuery grid = build_and_query("grid", nw.world, quick ? 1 : 3);
-      report("planner", {nw.name + "/grid/build_plus_first_query", grid.total_ms, "ms"},
-             Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
-      grid_series.size.push_back(obstacles);
-      grid_series.cost.push_back(grid.total_ms);
-    }
-    auto base = [&](const std::string& metric, double v) -> std::optional<Measure> {
-      if (!trad) return std::nullopt;
-      return Measure{nw.name + "/vg-traditional/" + metric, v, "ms"};
-    };
-    report("planner", {nw.name + "/vg/build", fast.build_ms, "ms"},
-           base("build", trad ? trad->build_ms : 0));
-    const Measure first{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"};
-    // Without a traditional run (N5000), growth against the previous world size.
-    report("planner", first,
-           trad ? base("build_plus_first_query", trad->total_ms) : previous_first);
-    previous_first = first;
-    report("planner",
-           {nw.name + "/vg/vertices", static_cast<double>(fast.result.stats.vertices), "count"},
-           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/vertices",
-                                                 static_cast<double>(trad->result.stats.vertices),
-                                                 "count"})
-                : std::nullopt);
-    report("planner",
-           {nw.name + "/vg/edges_tested_visible", static_cast<double>(fast.result.stats.edges),
-            "count"},
-           trad ? std::optional<Measure>(Measure{nw.name + "/vg-traditional/edges",
-                                                 static_cast<double>(trad->result.stats.edges),
-                                                 "count"})
-                : std::nullopt);
-    report("planner",
-           {nw.name + "/vg/segment_tests", static_cast<double>(fast.result.stats.segment_tests),
-            "count"},
-           trad ? std::optional<Measure>(
-                      Measure{nw.name + "/vg-traditional/segment_tests",
-                              static_cast<double>(trad->result.stats.segment_tests), "count"})
-                : std::nullopt);
-    if (trad && std::abs(trad->result.length - fast.result.length) > 1e-9) {
-      std::cerr << "bench: length mismatch on " << nw.name << "\n";
-      return 1;
-    }
-
-    // Later queries on one planner: the same query again, then random pairs of free points.
     auto p = planner::make_planner("vg", planner::planner_input(nw.world, false));
-    p->plan(nw.world.start.position(), nw.world.charger.position());
-    std::vector<double> again;
-    for (int r = 0; r < 20; ++r) {
-      const auto t0 = Clock::now();
-      p->plan(nw.world.start.position(), nw.world.charger.position());
-      again.push_back(ms_since(t0));
-    }
-    report("planner", {nw.name + "/vg/repeat_query", median(again), "ms"},
-           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
-    std::mt19937_64 rng(99);
-    std::uniform_real_distribution<double> ux(nw.world.floor.xmin, nw.world.floor.xmax),
-        uy(nw.world.floor.ymin, nw.world.floor.ymax);
-    std::vector<double> random_ms;
-    const int queries = quick ? 50 : 200;
-    while (static_cast<int>(random_ms.size()) < queries) {
-      const auto t0 = Clock::now();
-      const auto r = p->plan({ux(rng), uy(rng)}, {ux(rng), uy(rng)});
-      if (r.status == planner::PlanStatus::kOk) random_ms.push_back(ms_since(t0));
-    }
-    double mean = 0;
-    for (double v : random_ms) mean += v;
-    mean /= static_cast<double>(random_ms.size());
-    report("planner", {nw.name + "/vg/random_query_mean", mean, "ms"},
-           Measure{nw.name + "/vg/build_plus_first_query", fast.total_ms, "ms"});
-    // A replan around 1 and 5 sensed boxes on the way (0.6 m, on the optimal path): on the warm
-    // map graph with the boxes added on top, against a planner rebuilt with them.
-    const planner::PlannerInput in = planner::planner_input(nw.world, false);
+    bench_later_queries(nw, *p, fast, quick);
     const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(p.get());
     const planner::PlanResult way = p->plan(nw.world.start.position(), nw.world.charger.position());
     if (!vg || way.status != planner::PlanStatus::kOk || way.path.size() < 2) continue;
-    for (const int boxes : {1, 5}) {
-      std::vector<geom::Rect> raw, grown;
-      for (int k = 1; k <= boxes; ++k) {
-        const double f = static_cast<double>(k) / (boxes + 1);
-        const std::size_t i =
-            std::min(way.path.size() - 2, static_cast<std::size_t>(f * (way.path.size() - 1)));
-        const geom::Vec2 c = way.path[i] + 0.5 * (way.path[i + 1] - way.path[i]);
-        raw.push_back({c.x - 0.3, c.y - 0.3, c.x + 0.3, c.y + 0.3});
-        grown.push_back(raw.back().inflated(in.inflation_m));
-      }
-      planner::PlannerInput with = in;
-      with.obstacles.insert(with.obstacles.end(), raw.begin(), raw.end());
-      with.snap_to_free = true;
-      std::vector<double> rebuild_ms, overlay_ms;
-      double rebuild_len = 0, overlay_len = 0;
-      for (int r = 0; r < reps; ++r) {
-        auto t0 = Clock::now();
-        rebuild_len = planner::make_planner("vg", with)
-                          ->plan(nw.world.start.position(), nw.world.charger.position())
-                          .length;
-        rebuild_ms.push_back(ms_since(t0));
-        t0 = Clock::now();
-        overlay_len = planner::plan_with_added(*vg, grown, nw.world.start.position(),
-                                               nw.world.charger.position())
-                          .length;
-        overlay_ms.push_back(ms_since(t0));
-      }
-      if (std::abs(rebuild_len - overlay_len) > 1e-9 * std::max(1.0, rebuild_len)) {
-        std::cerr << "bench: replan length mismatch on " << nw.name << " with " << boxes
-                  << " boxes\n";
-        return 1;
-      }
-      const std::string what =
-          "/vg/replan_" + std::to_string(boxes) + (boxes == 1 ? "_box" : "_boxes");
-      report("planner", {nw.name + what + "_on_map_graph", median(overlay_ms), "ms"},
-             Measure{nw.name + what + "_rebuilt", median(rebuild_ms), "ms"});
-    }
-    // A mapped obstacle that is gone (the one nearest the middle of the way): the changed planner
-    // takes over what the removal cannot reach, against a planner built for the changed world.
-    if (!in.obstacles.empty()) {
-      const geom::Vec2 mid = way.path[way.path.size() / 2];
-      std::size_t gone = 0;
-      for (std::size_t i = 1; i < in.obstacles.size(); ++i)
-        if (geom::distance_to_rect(mid, in.obstacles[i]) <
-            geom::distance_to_rect(mid, in.obstacles[gone]))
-          gone = i;
-      std::vector<double> changed_ms, rebuild_ms;
-      double changed_len = 0, rebuild_len = 0;
-      for (int r = 0; r < reps; ++r) {
-        auto t0 = Clock::now();
-        const auto changed = vg->with_changes({}, {gone});
-        changed_len = changed->plan(nw.world.start.position(), nw.world.charger.position()).length;
-        changed_ms.push_back(ms_since(t0));
-        t0 = Clock::now();
-        rebuild_len = planner::make_planner("vg", changed->input())
-                          ->plan(nw.world.start.position(), nw.world.charger.position())
-                          .length;
-        rebuild_ms.push_back(ms_since(t0));
-      }
-      if (std::abs(rebuild_len - changed_len) > 1e-9 * std::max(1.0, rebuild_len)) {
-        std::cerr << "bench: replan length mismatch on " << nw.name
-                  << " with an obstacle removed\n";
-        return 1;
-      }
-      report("planner",
-             {nw.name + "/vg/replan_1_removed_on_changed_graph", median(changed_ms), "ms"},
-             Measure{nw.name + "/vg/replan_1_removed_rebuilt", median(rebuild_ms), "ms"});
-    }
+    if (!bench_replans_around_boxes(nw, *vg, way, reps) ||
+        !bench_replan_removed(nw, *vg, way, reps))
+      return 1;
   }
-  if (!chart_png.empty()) {
-    const render::Image img = render::draw_scaling_chart(
-        {vg_series, trad_series, grid_series, interval_series},
-        "Planning time against the number of obstacles",
-        "build plus first query, median of " + std::to_string(reps) +
-            " runs (grid and vg-traditional fewer), on world_N10..N1000 "
-            "and a random N5000; vg-traditional " +
-            std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
-        "obstacles (rectangles)", "time (ms)");
-    render::write_png(img, chart_png);
-    std::cerr << "bench: chart -> " << chart_png << "\n";
-  }
+  if (!chart_png.empty()) draw_chart(curves, reps, quick, chart_png);
   const int anyangle = run_anyangle_cases(shared_data, quick);
   const int plants = run_random_plant_scaling(quick);
   return anyangle != 0 ? anyangle : plants;
