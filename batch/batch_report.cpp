@@ -142,6 +142,163 @@ std::string failure_table_html(const std::vector<std::string>& lines, std::size_
   return h + rows + "</table>\n";
 }
 
+/// What the charts draw, read from the same records the table sums.
+struct ChartData {
+  std::vector<render::EpisodeOutcome> episodes;
+  std::map<std::string, std::vector<render::EpisodePath>> paths;   // by world name
+  std::map<double, std::pair<long long, long long>> sweep_counts;  // value -> (succeeded, n)
+  std::string sweep_parameter;
+  bool pursuit = false;  // the records are of a pursuit: success is a catch
+};
+
+render::EpisodeOutcome outcome_of(const json& j) {
+  render::EpisodeOutcome e;
+  e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() + " / " +
+             j["fault"].get<std::string>();
+  e.docked = j["docked"].get<bool>();
+  e.position_error_m = j.value("position_error_m", 0.0);
+  e.heading_error_deg = j.value("heading_error_deg", 0.0);
+  const double optimum = j.value("optimal_driven_m", j.value("optimal_length_m", 0.0));
+  if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
+  e.time_s = j.value("time_s", 0.0);
+  if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())
+    e.localization_error_max_m = j["localization_error_max_m"].get<double>();
+  e.localization_ok = j.value("localization_status", std::string("ok")) == "ok";
+  return e;
+}
+
+ChartData read_chart_data(const std::vector<std::string>& lines) {
+  ChartData d;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    d.episodes.push_back(outcome_of(j));
+    render::EpisodePath path;
+    path.succeeded = record_succeeded(j);
+    d.pursuit = d.pursuit || record_is_pursuit(j);
+    if (j.contains("path_mm") && j["path_mm"].is_array())
+      for (std::size_t k = 0; k + 1 < j["path_mm"].size(); k += 2)
+        path.points.push_back(
+            {0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
+    d.paths[j["world"].get<std::string>()].push_back(std::move(path));
+    if (!j.contains("sweep_parameter")) continue;
+    d.sweep_parameter = j["sweep_parameter"].get<std::string>();
+    char* end = nullptr;
+    const std::string value = j["sweep_value"].get<std::string>();
+    const double x = std::strtod(value.c_str(), &end);
+    if (end && *end == '\0' && end != value.c_str()) {
+      auto& [k, n] = d.sweep_counts[x];
+      k += record_succeeded(j);
+      ++n;
+    }
+  }
+  return d;
+}
+
+/// Writes one figure into the report's folder and lists it.
+class FigureWriter {
+ public:
+  FigureWriter(render::Report& report, std::string out_dir)
+      : report_(report), out_dir_(std::move(out_dir)) {}
+  void operator()(const render::Image& img, const std::string& file, const std::string& caption) {
+    render::write_png(img, out_dir_ + "/" + file, render::PngSettings::fast());
+    report_.figures.push_back({file, caption});
+  }
+
+ private:
+  render::Report& report_;
+  std::string out_dir_;
+};
+
+void add_charts(FigureWriter& chart, const ChartData& d,
+                const std::vector<ConfigurationVerdict>& verdicts, const std::string& title,
+                const Gate& gate) {
+  std::vector<render::RateRow> rates;
+  for (const ConfigurationVerdict& v : verdicts)
+    rates.push_back({v.name(), v.succeeded, v.episodes, v.wilson_low, v.wilson_high,
+                     v.threshold.value_or(-1.0)});
+  chart(render::draw_success_chart(rates, title), "chart_success.png",
+        "Success rate per configuration with its Wilson 95 % interval; the black tick is the gate");
+  chart(render::draw_error_strips(d.episodes, {}), "chart_errors.png",
+        "Position and heading error of every docked episode against the 2 cm / 2 degree gates");
+  chart(render::draw_localization_chart(d.episodes), "chart_localization.png",
+        "Each episode's worst localisation error (true against estimated) per method, against 10 "
+        "cm, and how many episodes' estimator reported worse than ok");
+  chart(render::draw_efficiency_chart(d.episodes), "chart_efficiency.png",
+        "Driven length over the exact optimum (ECDF) and time to dock, per method");
+  if (d.sweep_counts.empty()) return;
+  std::vector<double> values;
+  std::vector<render::RateRow> rows;
+  for (const auto& [x, kn] : d.sweep_counts) {
+    const auto [lo, hi] = wilson_interval(kn.first, kn.second);
+    values.push_back(x);
+    rows.push_back({fixed(x, 3), kn.first, kn.second, lo, hi, gate.min_success.value_or(-1.0)});
+  }
+  chart(render::draw_sweep_chart(d.sweep_parameter, values, rows), "chart_sweep.png",
+        "Success rate against " + d.sweep_parameter + " with its Wilson 95 % band");
+}
+
+void add_world_paths(FigureWriter& chart, const ChartData& d,
+                     const std::vector<worlds::World>& worlds) {
+  for (const worlds::World& w : worlds) {
+    const auto it = d.paths.find(w.name);
+    if (it == d.paths.end()) continue;
+    chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path",
+                                     d.pursuit ? "caught" : "docked"),
+          "paths_" + worlds::file_name_component(w.name) + ".png",
+          w.name +
+              ": every episode's driven path from its own start; failures in vermillion, on top");
+  }
+}
+
+void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& failures,
+                         const std::string& out_dir, const std::string& scenario_path) {
+  if (failures.empty()) return;
+  std::filesystem::create_directories(out_dir + "/failures");
+  for (const FailedEpisode& f : failures) {
+    render::RunFigureOptions options;
+    options.setting = "episode " + f.id;
+    options.dock_tolerance_m = f.config.tolerance.position_m;
+    std::string why = f.result.status;
+    if (f.result.failure)
+      why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
+            fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
+    chart(render::draw_run_figure(f.plant, f.result, options),
+          "failures/" + worlds::file_name_component(f.id) + ".png",
+          "FAILED " + f.id + ": " + why + ". Re-run it alone: plantsim batch " + scenario_path +
+              " --episode '" + f.id + "' --out DIR");
+  }
+}
+
+/// Each planner's plan on each world from the world file's start, side by side.
+void add_plan_comparisons(const std::vector<worlds::World>& worlds,
+                          const std::vector<std::string>& planners, const std::string& out_dir,
+                          render::Report& report) {
+  for (const worlds::World& w : worlds) {
+    std::vector<render::ComparisonPanel> panels;
+    for (const std::string& name : planners) {
+      auto p = planner::make_planner(name, planner::planner_input(w, true));
+      const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
+      render::ComparisonPanel panel{name, {}, {}, false};
+      panel.run.planner = name;
+      panel.run.status = std::string(planner::to_string(r.status));
+      panel.run.plan = r.path;
+      panel.run.path_length_m = r.length;
+      panel.run.plan_stats = r.stats;
+      panels.push_back(panel);
+    }
+    const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
+    // One panel needs no 1800-pixel canvas.
+    const int width = panels.size() == 1 ? 1000 : panels.size() == 2 ? 1500 : 1800;
+    render::write_png(
+        render::draw_comparison(
+            w, panels, w.name + ": plans from the world file's start (not an episode's)", width),
+        out_dir + "/" + file, render::PngSettings::fast());
+    report.figures.push_back(
+        {file, w.name + ": each planner's plan from the world file's start to the staging pose "
+                        "(episodes start from random poses)"});
+  }
+}
+
 }  // namespace
 
 void write_batch_report(const std::vector<std::string>& lines, const std::string& out_dir,
@@ -169,136 +326,13 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   report.files = {"episodes.jsonl", "summary.csv", "summary.json"};
   if (!sweep.empty()) report.files.push_back("sweep.csv");
   report.body_html = failure_table_html(lines, failures.size(), scenario_path);
-
-  // Charts, from the same records the table sums.
-  std::vector<render::RateRow> rates;
-  for (const ConfigurationVerdict& v : verdicts)
-    rates.push_back({v.name(), v.succeeded, v.episodes, v.wilson_low, v.wilson_high,
-                     v.threshold.value_or(-1.0)});
-  std::vector<render::EpisodeOutcome> episodes;
-  std::map<std::string, std::vector<render::EpisodePath>> paths;  // by world name
-  std::map<double, std::pair<long long, long long>> sweep_counts;
-  std::string sweep_parameter;
-  bool pursuit = false;  // the records are of a pursuit: success is a catch
-  for (const std::string& line : lines) {
-    const json j = json::parse(line);
-    render::EpisodeOutcome e;
-    e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() +
-               " / " + j["fault"].get<std::string>();
-    e.docked = j["docked"].get<bool>();
-    e.position_error_m = j.value("position_error_m", 0.0);
-    e.heading_error_deg = j.value("heading_error_deg", 0.0);
-    const double optimum = j.value("optimal_driven_m", j.value("optimal_length_m", 0.0));
-    if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
-    e.time_s = j.value("time_s", 0.0);
-    if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())
-      e.localization_error_max_m = j["localization_error_max_m"].get<double>();
-    e.localization_ok = j.value("localization_status", std::string("ok")) == "ok";
-    episodes.push_back(e);
-    render::EpisodePath path;
-    path.succeeded = record_succeeded(j);
-    pursuit = pursuit || record_is_pursuit(j);
-    if (j.contains("path_mm") && j["path_mm"].is_array())
-      for (std::size_t k = 0; k + 1 < j["path_mm"].size(); k += 2)
-        path.points.push_back(
-            {0.001 * j["path_mm"][k].get<double>(), 0.001 * j["path_mm"][k + 1].get<double>()});
-    paths[j["world"].get<std::string>()].push_back(std::move(path));
-    if (j.contains("sweep_parameter")) {
-      sweep_parameter = j["sweep_parameter"].get<std::string>();
-      char* end = nullptr;
-      const std::string value = j["sweep_value"].get<std::string>();
-      const double x = std::strtod(value.c_str(), &end);
-      if (end && *end == '\0' && end != value.c_str()) {
-        auto& [k, n] = sweep_counts[x];
-        k += record_succeeded(j);
-        ++n;
-      }
-    }
-  }
-  if (!charts) {
-    render::write_report(report, out_dir + "/report.html");
-    return;
-  }
-  auto chart = [&](const render::Image& img, const std::string& file, const std::string& caption) {
-    render::write_png(img, out_dir + "/" + file, render::PngSettings::fast());
-    report.figures.push_back({file, caption});
-  };
-  chart(render::draw_success_chart(rates, title), "chart_success.png",
-        "Success rate per configuration with its Wilson 95 % interval; the black tick is the gate");
-  chart(render::draw_error_strips(episodes, {}), "chart_errors.png",
-        "Position and heading error of every docked episode against the 2 cm / 2 degree gates");
-  chart(render::draw_localization_chart(episodes), "chart_localization.png",
-        "Each episode's worst localisation error (true against estimated) per method, against 10 "
-        "cm, and how many "
-        "episodes' estimator reported worse than ok");
-  chart(render::draw_efficiency_chart(episodes), "chart_efficiency.png",
-        "Driven length over the exact optimum (ECDF) and time to dock, per method");
-  if (!sweep_counts.empty()) {
-    std::vector<double> values;
-    std::vector<render::RateRow> rows;
-    for (const auto& [x, kn] : sweep_counts) {
-      const auto [lo, hi] = wilson_interval(kn.first, kn.second);
-      values.push_back(x);
-      rows.push_back({fixed(x, 3), kn.first, kn.second, lo, hi, gate.min_success.value_or(-1.0)});
-    }
-    chart(render::draw_sweep_chart(sweep_parameter, values, rows), "chart_sweep.png",
-          "Success rate against " + sweep_parameter + " with its Wilson 95 % band");
-  }
-  if (worlds_for_figures) {
-    for (const worlds::World& w : *worlds_for_figures) {
-      const auto it = paths.find(w.name);
-      if (it == paths.end()) continue;
-      chart(render::draw_episode_paths(w, it->second, w.name + ": every episode's driven path",
-                                       pursuit ? "caught" : "docked"),
-            "paths_" + worlds::file_name_component(w.name) + ".png",
-            w.name +
-                ": every episode's driven path from its own start; failures in vermillion, on top");
-    }
-  }
-  if (!failures.empty()) {
-    std::filesystem::create_directories(out_dir + "/failures");
-    for (const FailedEpisode& f : failures) {
-      const std::string file = "failures/" + worlds::file_name_component(f.id) + ".png";
-      render::RunFigureOptions options;
-      options.setting = "episode " + f.id;
-      options.dock_tolerance_m = f.config.tolerance.position_m;
-      render::write_png(render::draw_run_figure(f.plant, f.result, options), out_dir + "/" + file,
-                        render::PngSettings::fast());
-      std::string why = f.result.status;
-      if (f.result.failure)
-        why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
-              fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
-      report.figures.push_back({file, "FAILED " + f.id + ": " + why +
-                                          ". Re-run it alone: plantsim batch " + scenario_path +
-                                          " --episode '" + f.id + "' --out DIR"});
-    }
-  }
-  if (worlds_for_figures) {
-    for (const worlds::World& w : *worlds_for_figures) {
-      std::vector<render::ComparisonPanel> panels;
-      for (const std::string& name : planners) {
-        auto p = planner::make_planner(name, planner::planner_input(w, true));
-        const planner::PlanResult r =
-            p->plan(w.start.position(), worlds::staging_pose(w).position());
-        render::ComparisonPanel panel{name, {}, {}, false};
-        panel.run.planner = name;
-        panel.run.status = std::string(planner::to_string(r.status));
-        panel.run.plan = r.path;
-        panel.run.path_length_m = r.length;
-        panel.run.plan_stats = r.stats;
-        panels.push_back(panel);
-      }
-      const std::string file = "plans_" + worlds::file_name_component(w.name) + ".png";
-      // One panel needs no 1800-pixel canvas.
-      const int width = panels.size() == 1 ? 1000 : panels.size() == 2 ? 1500 : 1800;
-      render::write_png(
-          render::draw_comparison(
-              w, panels, w.name + ": plans from the world file's start (not an episode's)", width),
-          out_dir + "/" + file, render::PngSettings::fast());
-      report.figures.push_back(
-          {file, w.name + ": each planner's plan from the world file's start to the staging pose "
-                          "(episodes start from random poses)"});
-    }
+  if (charts) {
+    const ChartData data = read_chart_data(lines);
+    FigureWriter chart(report, out_dir);
+    add_charts(chart, data, verdicts, title, gate);
+    if (worlds_for_figures) add_world_paths(chart, data, *worlds_for_figures);
+    add_failure_figures(chart, failures, out_dir, scenario_path);
+    if (worlds_for_figures) add_plan_comparisons(*worlds_for_figures, planners, out_dir, report);
   }
   render::write_report(report, out_dir + "/report.html");
 }
