@@ -20,23 +20,86 @@
 
 namespace plantsim::app {
 
+namespace {
+
 constexpr const char* kFieldEntry = "potential-field";
+
+struct CompareOptions {
+  std::string scen;
+  int query = 0;
+  std::string world;
+  std::vector<std::string> planners = {"vg", "vg-traditional", "grid"};
+  std::string out;
+  std::string title;
+  std::string config;
+  bool graph = false;
+  bool plan_only = false;
+};
+
+/// One planner's panel: its plan alone (--plan-only), or the episode it drives.
+render::ComparisonPanel compare_one(const std::string& name, const worlds::World& world,
+                                    const CompareOptions& opt, const sim::EpisodeConfig& config) {
+  render::ComparisonPanel panel;
+  panel.label = name;
+  panel.drove = !opt.plan_only;
+  if (opt.plan_only) {
+    auto p = planner::make_planner(name, planner::planner_input(world, false));
+    // As `plan`: a ROS map's charger stands against a wall inside the planning inflation, so
+    // its plans end at the staging pose (`run` plans there for every world).
+    const std::string ext = std::filesystem::path(opt.world).extension().string();
+    const bool ros_map = ext == ".yaml" || ext == ".yml";
+    const planner::PlanResult r =
+        p->plan(world.start.position(),
+                ros_map ? worlds::staging_pose(world).position() : world.charger.position());
+    panel.run.planner = name;
+    panel.run.status = std::string(planner::to_string(r.status));
+    panel.run.plan = r.path;
+    panel.run.path_length_m = r.length;
+    panel.run.plan_stats = r.stats;
+    if (opt.graph) panel.graph_edges = p->graph_edges();
+    return panel;
+  }
+  // The potential field has no plan of its own: the visibility graph's is its reference.
+  const bool field = name == kFieldEntry;
+  auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
+  sim::EpisodeConfig c = config;
+  if (field) c.travel = sim::TravelMode::kPotentialField;
+  panel.run = sim::run_episode(world, *p, c);
+  if (opt.graph) panel.graph_edges = p->graph_edges();
+  return panel;
+}
+
+/// The figure's numbers, for whoever quotes them.
+nlohmann::ordered_json comparison_json(const worlds::World& world, const std::string& title,
+                                       const std::string& command,
+                                       const std::vector<render::ComparisonPanel>& panels) {
+  nlohmann::ordered_json data;
+  data["world"] = world.name;
+  data["title"] = title;
+  data["command"] = command;
+  for (const auto& panel : panels) {
+    const planner::PlanStats& st = panel.run.plan_stats;
+    data["panels"].push_back({{"label", panel.label},
+                              {"status", panel.run.status},
+                              {"path_length_m", panel.run.path_length_m},
+                              {"build_ms", st.build_ms},
+                              {"query_ms", st.query_ms},
+                              {"vertices", st.vertices},
+                              {"edges_evaluated", st.edges},
+                              {"segment_tests", st.segment_tests},
+                              {"expanded", st.expanded},
+                              {"graph_edges_drawn", panel.graph_edges.size()}});
+  }
+  if (panels.size() == 2) data["differences"] = render::what_differs(panels[0], panels[1]);
+  return data;
+}
+
+}  // namespace
 
 std::function<int()> add_compare_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
-  struct Options {
-    std::string scen;
-    int query = 0;
-    std::string world;
-    std::vector<std::string> planners = {"vg", "vg-traditional", "grid"};
-    std::string out;
-    std::string title;
-    std::string config;
-    bool graph = false;
-    bool plan_only = false;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<CompareOptions>();
   cmd->add_option("world", opt->world,
                   "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
       ->required();
@@ -74,35 +137,8 @@ std::function<int()> add_compare_command(CLI::App& app) {
     report.headers = metric_headers();
     bool all_ok = true;
     for (const std::string& name : opt->planners) {
-      render::ComparisonPanel panel;
-      panel.label = name;
-      panel.drove = !opt->plan_only;
-      if (opt->plan_only) {
-        auto p = planner::make_planner(name, planner::planner_input(world, false));
-        // As `plan`: a ROS map's charger stands against a wall inside the planning inflation, so
-        // its plans end at the staging pose (`run` plans there for every world).
-        const std::string ext = std::filesystem::path(opt->world).extension().string();
-        const bool ros_map = ext == ".yaml" || ext == ".yml";
-        const planner::PlanResult r =
-            p->plan(world.start.position(),
-                    ros_map ? worlds::staging_pose(world).position() : world.charger.position());
-        panel.run.planner = name;
-        panel.run.status = std::string(planner::to_string(r.status));
-        panel.run.plan = r.path;
-        panel.run.path_length_m = r.length;
-        panel.run.plan_stats = r.stats;
-        all_ok = all_ok && r.status == planner::PlanStatus::kOk;
-        if (opt->graph) panel.graph_edges = p->graph_edges();
-      } else {
-        // The potential field has no plan of its own: the visibility graph's is its reference.
-        const bool field = name == kFieldEntry;
-        auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
-        sim::EpisodeConfig c = config;
-        if (field) c.travel = sim::TravelMode::kPotentialField;
-        panel.run = sim::run_episode(world, *p, c);
-        all_ok = all_ok && panel.run.succeeded();
-        if (opt->graph) panel.graph_edges = p->graph_edges();
-      }
+      render::ComparisonPanel panel = compare_one(name, world, *opt, config);
+      all_ok = all_ok && (opt->plan_only ? panel.run.status == "ok" : panel.run.succeeded());
       report.rows.push_back(metric_row(panel.run, world.name));
       std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m
                 << " m, plan " << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms
@@ -111,26 +147,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
     }
     const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;
     render::write_png(render::draw_comparison(world, panels, title), out_dir + "/comparison.png");
-    // The figure's numbers, for whoever quotes them.
-    nlohmann::ordered_json data;
-    data["world"] = world.name;
-    data["title"] = title;
-    data["command"] = command_line(cmd);
-    for (const auto& panel : panels) {
-      const planner::PlanStats& st = panel.run.plan_stats;
-      data["panels"].push_back({{"label", panel.label},
-                                {"status", panel.run.status},
-                                {"path_length_m", panel.run.path_length_m},
-                                {"build_ms", st.build_ms},
-                                {"query_ms", st.query_ms},
-                                {"vertices", st.vertices},
-                                {"edges_evaluated", st.edges},
-                                {"segment_tests", st.segment_tests},
-                                {"expanded", st.expanded},
-                                {"graph_edges_drawn", panel.graph_edges.size()}});
-    }
-    if (panels.size() == 2) data["differences"] = render::what_differs(panels[0], panels[1]);
-    util::write_file_atomically(out_dir + "/comparison.json", data.dump(2) + "\n");
+    util::write_file_atomically(
+        out_dir + "/comparison.json",
+        comparison_json(world, title, command_line(cmd), panels).dump(2) + "\n");
     report.title = title;
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};

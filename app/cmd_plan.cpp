@@ -68,47 +68,43 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
   return exit_code;
 }
 
-}  // namespace
+struct PlanOptions {
+  std::string world;
+  std::string planner = "vg";
+  double inflate = -1;
+  int corner_steps = 1;
+  std::string inflation = "square";
+  bool snap = false;
+  int landmarks = 0;
+  int search_memory_mb = static_cast<int>(planner::kSearchMemoryBudgetBytes >> 20);
+  std::string map, scen, goal;
+};
 
-std::function<int()> add_plan_command(CLI::App& app) {
-  auto* cmd =
-      app.add_subcommand("plan", "Plan a path from the start to the charger; JSON on stdout");
-  struct Options {
-    std::string world;
-    std::string planner = "vg";
-    double inflate = -1;
-    int corner_steps = 1;
-    std::string inflation = "square";
-    bool snap = false;
-    int landmarks = 0;
-    int search_memory_mb = static_cast<int>(planner::kSearchMemoryBudgetBytes >> 20);
-    std::string map, scen, goal;
-  };
-  auto opt = std::make_shared<Options>();
+void add_plan_options(CLI::App* cmd, PlanOptions& o) {
   auto* world_opt =
-      cmd->add_option("world", opt->world, "World file (plantsim JSON or a plain world)");
-  auto* map_opt = cmd->add_option("--map", opt->map, "MovingAI .map file (with --scen)");
+      cmd->add_option("world", o.world, "World file (plantsim JSON or a plain world)");
+  auto* map_opt = cmd->add_option("--map", o.map, "MovingAI .map file (with --scen)");
   auto* scen_opt =
-      cmd->add_option("--scen", opt->scen, "MovingAI .scen file: one output line per query");
+      cmd->add_option("--scen", o.scen, "MovingAI .scen file: one output line per query");
   map_opt->needs(scen_opt);
   scen_opt->needs(map_opt);
   world_opt->excludes(map_opt);
-  cmd->add_option("--corner-steps", opt->corner_steps,
+  cmd->add_option("--corner-steps", o.corner_steps,
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
       ->check(CLI::Range(1, 16));
-  cmd->add_option("--inflation", opt->inflation,
+  cmd->add_option("--inflation", o.inflation,
                   "square (rectangles grown to rectangles, the document's; see --corner-steps) or "
                   "round (grown by a "
                   "disk, rounded corners: the disk robot's true optimum, segments and arcs; "
                   "planner vg-round)")
       ->check(CLI::IsMember({"square", "round"}));
-  cmd->add_option("--goal", opt->goal,
+  cmd->add_option("--goal", o.goal,
                   "docked (the charger's docked position; default for world files) or staging (the "
                   "staging pose "
                   "`run` plans to; default for ROS maps, whose charger stands against a wall "
                   "inside the planning inflation)")
       ->check(CLI::IsMember({"docked", "staging"}));
-  cmd->add_option("--landmarks", opt->landmarks,
+  cmd->add_option("--landmarks", o.landmarks,
                   "Planners interval and polyanya: this many landmarks for a stronger heuristic "
                   "(the same answers, fewer "
                   "nodes); "
@@ -118,73 +114,90 @@ std::function<int()> add_plan_command(CLI::App& app) {
                       std::to_string(planner::kLandmarkCellBudget) +
                       " (refused, with the most the map allows)")
       ->check(CLI::Range(0, 64));
-  cmd->add_option("--search-memory-mb", opt->search_memory_mb,
+  cmd->add_option("--search-memory-mb", o.search_memory_mb,
                   "Planners vg, interval, polyanya: a query whose search holds more than this "
                   "(MiB) stops with status \"search limit\" and exit 1 (default " +
                       std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
       ->check(CLI::Range(1, 1 << 20));
-  cmd->add_flag("--snap", opt->snap,
+  cmd->add_flag("--snap", o.snap,
                 "Move a blocked start or charger to the nearest free point (reported)");
-  cmd->add_option("--planner", opt->planner, "Planner name")
+  cmd->add_option("--planner", o.planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
-  cmd->add_option("--inflate", opt->inflate,
+  cmd->add_option("--inflate", o.inflate,
                   "Inflation in metres (default: robot radius + the world's margin)")
       ->check(CLI::NonNegativeNumber);
-  return [opt]() {
-    if (opt->landmarks > 0 && opt->planner != "interval" && opt->planner != "polyanya")
+}
+
+nlohmann::json plan_json(const planner::PlanResult& r, const std::string& planner_name,
+                         const std::string& goal_kind, geom::Vec2 goal) {
+  nlohmann::json out;
+  out["status"] = std::string(planner::to_string(r.status));
+  out["goal_kind"] = goal_kind;
+  out["goal"] = {goal.x, goal.y};
+  out["planner"] = planner_name;
+  out["length"] = r.length;
+  out["start_snapped"] = r.start_snapped;
+  out["goal_snapped"] = r.goal_snapped;
+  if (!r.note.empty()) out["note"] = r.note;
+  auto path = nlohmann::json::array();
+  for (const auto& v : r.path) path.push_back({v.x, v.y});
+  out["path"] = path;
+  if (!r.drive_path.empty()) {
+    auto drive = nlohmann::json::array();
+    for (const auto& v : r.drive_path) drive.push_back({v.x, v.y});
+    out["drive_path"] = drive;
+  }
+  out["stats"] = {{"build_ms", r.stats.build_ms}, {"query_ms", r.stats.query_ms},
+                  {"vertices", r.stats.vertices}, {"edges", r.stats.edges},
+                  {"expanded", r.stats.expanded}, {"segment_tests", r.stats.segment_tests}};
+  return out;
+}
+
+/// A world file: its start to its charger (or staging pose), as JSON on stdout.
+int plan_world(PlanOptions& o) {
+  if (o.landmarks > 0 && o.planner != "interval" && o.planner != "polyanya")
+    throw std::invalid_argument(
+        "plan: --landmarks is for the mesh planners (interval, polyanya), not " + o.planner);
+  if (!o.map.empty())
+    return plan_scenarios(o.map, o.scen, o.planner, o.landmarks,
+                          static_cast<std::size_t>(o.search_memory_mb) << 20);
+  if (o.world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
+  const worlds::World world = worlds::load_world(o.world);
+  planner::PlannerInput input = planner::planner_input(world, false);
+  input.corner_steps = o.corner_steps;
+  input.snap_to_free = o.snap;
+  input.landmarks = o.landmarks;
+  input.search_budget_bytes = static_cast<std::size_t>(o.search_memory_mb) << 20;
+  if (o.inflate >= 0) input.inflation_m = o.inflate;
+  if (o.inflation == "round") {
+    if (o.planner != "vg" && o.planner != "vg-round")
       throw std::invalid_argument(
-          "plan: --landmarks is for the mesh planners (interval, polyanya), not " + opt->planner);
-    if (!opt->map.empty())
-      return plan_scenarios(opt->map, opt->scen, opt->planner, opt->landmarks,
-                            static_cast<std::size_t>(opt->search_memory_mb) << 20);
-    if (opt->world.empty())
-      throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
-    const worlds::World world = worlds::load_world(opt->world);
-    planner::PlannerInput input = planner::planner_input(world, false);
-    input.corner_steps = opt->corner_steps;
-    input.snap_to_free = opt->snap;
-    input.landmarks = opt->landmarks;
-    input.search_budget_bytes = static_cast<std::size_t>(opt->search_memory_mb) << 20;
-    if (opt->inflate >= 0) input.inflation_m = opt->inflate;
-    if (opt->inflation == "round") {
-      if (opt->planner != "vg" && opt->planner != "vg-round")
-        throw std::invalid_argument(
-            "plan: --inflation round is the visibility graph's (planner vg), not " + opt->planner +
-            "'s");
-      if (opt->corner_steps != 1)
-        throw std::invalid_argument("plan: --corner-steps is for --inflation square");
-      opt->planner = "vg-round";
-    }
-    auto p = planner::make_planner(opt->planner, input);
-    const std::string ext = std::filesystem::path(opt->world).extension().string();
-    const bool ros_map = ext == ".yaml" || ext == ".yml";
-    const std::string goal_kind = opt->goal.empty() ? (ros_map ? "staging" : "docked") : opt->goal;
-    const geom::Vec2 goal =
-        goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
-    const planner::PlanResult r = p->plan(world.start.position(), goal);
-    nlohmann::json out;
-    out["status"] = std::string(planner::to_string(r.status));
-    out["goal_kind"] = goal_kind;
-    out["goal"] = {goal.x, goal.y};
-    out["planner"] = p->name();
-    out["length"] = r.length;
-    out["start_snapped"] = r.start_snapped;
-    out["goal_snapped"] = r.goal_snapped;
-    if (!r.note.empty()) out["note"] = r.note;
-    auto path = nlohmann::json::array();
-    for (const auto& v : r.path) path.push_back({v.x, v.y});
-    out["path"] = path;
-    if (!r.drive_path.empty()) {
-      auto drive = nlohmann::json::array();
-      for (const auto& v : r.drive_path) drive.push_back({v.x, v.y});
-      out["drive_path"] = drive;
-    }
-    out["stats"] = {{"build_ms", r.stats.build_ms}, {"query_ms", r.stats.query_ms},
-                    {"vertices", r.stats.vertices}, {"edges", r.stats.edges},
-                    {"expanded", r.stats.expanded}, {"segment_tests", r.stats.segment_tests}};
-    std::cout << std::setprecision(12) << out.dump() << "\n";
-    return r.status == planner::PlanStatus::kOk ? kExitOk : kExitFailed;
-  };
+          "plan: --inflation round is the visibility graph's (planner vg), not " + o.planner +
+          "'s");
+    if (o.corner_steps != 1)
+      throw std::invalid_argument("plan: --corner-steps is for --inflation square");
+    o.planner = "vg-round";
+  }
+  auto p = planner::make_planner(o.planner, input);
+  const std::string ext = std::filesystem::path(o.world).extension().string();
+  const bool ros_map = ext == ".yaml" || ext == ".yml";
+  const std::string goal_kind = o.goal.empty() ? (ros_map ? "staging" : "docked") : o.goal;
+  const geom::Vec2 goal =
+      goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
+  const planner::PlanResult r = p->plan(world.start.position(), goal);
+  const nlohmann::json out = plan_json(r, p->name(), goal_kind, goal);
+  std::cout << std::setprecision(12) << out.dump() << "\n";
+  return r.status == planner::PlanStatus::kOk ? kExitOk : kExitFailed;
+}
+
+}  // namespace
+
+std::function<int()> add_plan_command(CLI::App& app) {
+  auto* cmd =
+      app.add_subcommand("plan", "Plan a path from the start to the charger; JSON on stdout");
+  auto opt = std::make_shared<PlanOptions>();
+  add_plan_options(cmd, *opt);
+  return [opt]() { return plan_world(*opt); };
 }
 
 }  // namespace plantsim::app
