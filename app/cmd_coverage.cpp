@@ -41,17 +41,85 @@ std::string percent(double share) {
   return s;
 }
 
+struct CoverageOptions {
+  std::string world, out, config, params;
+  double cell_m = 0;
+  bool drive = false;
+};
+
+/// One method's plan driven in the simulation: its panel's driven path and note, its JSON entry
+/// and table cells; false unless it docked.
+bool drive_coverage(const worlds::World& world, const sim::EpisodeConfig& config, CoverageRun& run,
+                    render::CoveragePanel& panel, nlohmann::ordered_json& j, std::string& driven,
+                    std::string& status) {
+  const sim::EpisodeResult e = sim::run_episode(world, *run.planner, config);
+  for (const auto& s : e.trajectory) panel.driven.push_back(s.truth.position());
+  const auto start_cell = run.planner->grid().nearest_free(world.start.position());
+  const double dc =
+      start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
+                e.status.c_str(), e.time_s, 100 * dc, e.collisions);
+  panel.extra = buf;
+  j["driven"] = {{"status", e.status},
+                 {"time_s", e.time_s},
+                 {"driven_coverage", dc},
+                 {"collisions", e.collisions},
+                 {"driven_length_m", e.driven_length_m}};
+  std::snprintf(buf, sizeof buf, "%.1f", 100 * dc);
+  driven = buf;
+  status = e.status;
+  return e.docked;
+}
+
+/// Every method's panel, summary entry and table row; false when one leaves a reachable cell
+/// uncovered (or, driven, does not dock).
+bool cover_all(const worlds::World& world, const CoverageOptions& opt,
+               const sim::EpisodeConfig& config, std::vector<CoverageRun>& runs,
+               std::vector<render::CoveragePanel>& panels, nlohmann::ordered_json& summary,
+               render::Report& report) {
+  bool all_covered = true;
+  for (CoverageRun& run : runs) {
+    render::CoveragePanel panel{run.method, &run.planner->grid(), run.planner->last_plan(), {}, ""};
+    const planner::CoverageMetrics& m = panel.plan.metrics;
+    all_covered = all_covered && run.planned() && m.covered_cells == m.reachable_cells;
+    nlohmann::ordered_json j = coverage_plan_json(run);
+    std::string driven, status;
+    if (opt.drive && run.planned())
+      all_covered = drive_coverage(world, config, run, panel, j, driven, status) && all_covered;
+    summary["methods"][run.method] = j;
+    char f[3][32];
+    std::snprintf(f[0], 32, "%.2f", 100 * m.coverage);
+    std::snprintf(f[1], 32, "%.2f", 100 * m.repetition);
+    std::snprintf(f[2], 32, "%.1f", m.length_m);
+    report.rows.push_back({run.method, std::to_string(panel.plan.regions.size()),
+                           run.planned() ? f[0] : "-", run.planned() ? f[1] : "-",
+                           std::to_string(m.turns), std::to_string(m.dead_ends), f[2],
+                           render::describe_order(panel.plan), driven, status});
+    std::cout << run.method << ": " << run.result.note
+              << (panel.extra.empty() ? "" : "; " + panel.extra) << "\n";
+    panels.push_back(std::move(panel));
+  }
+  return all_covered;
+}
+
+/// The document's two numbers beside ours: its map is not published, so this is the same
+/// measure on this work area, not the same experiment.
+std::string document_subtitle(const std::vector<CoverageRun>& runs) {
+  const planner::CoveragePlan& chnn = runs[0].planner->last_plan();
+  const planner::CoveragePlan& cells = runs.back().planner->last_plan();
+  return "Repetition, document (its own 40 x 20 m map) vs here: CHNN " +
+         percent(kDocumentRepetitionChnn) + " vs " +
+         (chnn.ok ? percent(chnn.metrics.repetition) : std::string("no plan")) + "; cell by cell " +
+         percent(kDocumentRepetitionCells) + " vs " + percent(cells.metrics.repetition);
+}
+
 }  // namespace
 
 std::function<int()> add_coverage_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("coverage", "Seed 004: full-coverage methods compared on one work area");
-  struct Options {
-    std::string world, out, config, params;
-    double cell_m = 0;
-    bool drive = false;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<CoverageOptions>();
   cmd->add_option("world", opt->world, "World file")->required();
   cmd->add_option("--out", opt->out, "Output folder (default results/<world>_coverage)");
   cmd->add_option("--params", opt->params,
@@ -73,14 +141,12 @@ std::function<int()> add_coverage_command(CLI::App& app) {
                          : opt->out,
         {"coverage.png", "coverage.json", "report.html"});
     const std::string& out_dir = staged.path();
-
     std::vector<CoverageRun> runs = plan_coverage_methods(world, params);
     std::vector<render::CoveragePanel> panels;
     nlohmann::ordered_json summary;
     summary["world"] = world.name;
     summary["command"] = command_line(cmd);
     summary["parameters"] = nlohmann::ordered_json::parse(planner::coverage_params_json(params));
-    bool all_covered = true;
     render::Report report;
     report.headers = {"method",
                       "regions",
@@ -92,58 +158,10 @@ std::function<int()> add_coverage_command(CLI::App& app) {
                       "how the order was found",
                       "driven coverage (%)",
                       "episode"};
-    for (CoverageRun& run : runs) {
-      render::CoveragePanel panel{
-          run.method, &run.planner->grid(), run.planner->last_plan(), {}, ""};
-      const planner::CoverageMetrics& m = panel.plan.metrics;
-      all_covered = all_covered && run.planned() && m.covered_cells == m.reachable_cells;
-      nlohmann::ordered_json j = coverage_plan_json(run);
-      std::string driven, status;
-      if (opt->drive && run.planned()) {
-        const sim::EpisodeResult e = sim::run_episode(world, *run.planner, config);
-        for (const auto& s : e.trajectory) panel.driven.push_back(s.truth.position());
-        const auto start_cell = run.planner->grid().nearest_free(world.start.position());
-        const double dc =
-            start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
-                      e.status.c_str(), e.time_s, 100 * dc, e.collisions);
-        panel.extra = buf;
-        j["driven"] = {{"status", e.status},
-                       {"time_s", e.time_s},
-                       {"driven_coverage", dc},
-                       {"collisions", e.collisions},
-                       {"driven_length_m", e.driven_length_m}};
-        std::snprintf(buf, sizeof buf, "%.1f", 100 * dc);
-        driven = buf;
-        status = e.status;
-        all_covered = all_covered && e.docked;
-      }
-      summary["methods"][run.method] = j;
-      char f[3][32];
-      std::snprintf(f[0], 32, "%.2f", 100 * m.coverage);
-      std::snprintf(f[1], 32, "%.2f", 100 * m.repetition);
-      std::snprintf(f[2], 32, "%.1f", m.length_m);
-      report.rows.push_back({run.method, std::to_string(panel.plan.regions.size()),
-                             run.planned() ? f[0] : "-", run.planned() ? f[1] : "-",
-                             std::to_string(m.turns), std::to_string(m.dead_ends), f[2],
-                             render::describe_order(panel.plan), driven, status});
-      std::cout << run.method << ": " << run.result.note
-                << (panel.extra.empty() ? "" : "; " + panel.extra) << "\n";
-      panels.push_back(std::move(panel));
-    }
-    // The document's two numbers beside ours: its map is not published, so this is the same
-    // measure on this work area, not the same experiment.
-    const planner::CoveragePlan& chnn = runs[0].planner->last_plan();
-    const planner::CoveragePlan& cells = runs.back().planner->last_plan();
+    const bool all_covered = cover_all(world, *opt, config, runs, panels, summary, report);
     summary["document"] = {{"repetition_chnn", kDocumentRepetitionChnn},
                            {"repetition_cells", kDocumentRepetitionCells}};
-    const std::string subtitle =
-        "Repetition, document (its own 40 x 20 m map) vs here: CHNN " +
-        percent(kDocumentRepetitionChnn) + " vs " +
-        (chnn.ok ? percent(chnn.metrics.repetition) : std::string("no plan")) + "; cell by cell " +
-        percent(kDocumentRepetitionCells) + " vs " + percent(cells.metrics.repetition);
+    const std::string subtitle = document_subtitle(runs);
     const std::string title =
         world.name +
         ": full coverage by sub-regions (CHNN, Potts, proven optimum, greedy) and cell by cell";
@@ -154,17 +172,14 @@ std::function<int()> add_coverage_command(CLI::App& app) {
     report.command = command_line(cmd);
     report.figures = {{"coverage.png",
                        "Cells by visits (blue once, orange twice, purple more), sub-regions "
-                       "numbered in visiting order, "
-                       "green dots where each sweep starts. " +
+                       "numbered in visiting order, green dots where each sweep starts. " +
                            subtitle}};
     report.files = {"coverage.json"};
     report.notes =
         "Repetition = visits beyond the first / reachable cells, the way from the start to the "
-        "charger's cell "
-        "included; order cost = sum of D = w1 cells + w2 turns from each sweep's end to the next "
-        "sweep's start and "
-        "through it (w1 = 0.8, w2 = 0.2, the document's). docs/seeds.md says what is the "
-        "document's and what is not.";
+        "charger's cell included; order cost = sum of D = w1 cells + w2 turns from each sweep's "
+        "end to the next sweep's start and through it (w1 = 0.8, w2 = 0.2, the document's). "
+        "docs/seeds.md says what is the document's and what is not.";
     render::write_report(report, out_dir + "/report.html");
     staged.commit();
     return all_covered ? kExitOk : kExitFailed;

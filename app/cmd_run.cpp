@@ -28,25 +28,67 @@ geom::Pose2 parse_pose(const std::string& text, const std::string& option) {
   return p;
 }
 
+struct RunCommandOptions {
+  std::string world;
+  std::string planner = "vg";
+  std::string out;
+  std::uint64_t seed = 1;
+  std::string start;
+  std::string charger;
+  std::string config;
+  std::string travel;
+  bool animate = false;
+  bool undock = false;
+  std::string scen;
+  int query = 0;
+};
+
+/// One episode, its folder written: the exit code by its outcome.
+int run_one(const RunCommandOptions& opt, const std::string& command) {
+  worlds::PoseOverrides overrides;
+  if (!opt.start.empty()) overrides.start = parse_pose(opt.start, "--start");
+  if (!opt.charger.empty()) overrides.charger = parse_pose(opt.charger, "--charger");
+  overrides.movingai_scen = opt.scen;
+  overrides.movingai_query = opt.query;
+  const worlds::World world = worlds::load_world(opt.world, overrides);
+  sim::EpisodeConfig config =
+      opt.config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt.config);
+  auto p = planner::make_planner(opt.planner, planner::planner_input(world, true));
+  // Every input is valid by now. The outputs are written into a staging folder beside the
+  // destination (an unwritable place fails here, before the simulation) and moved into place
+  // as a set: a rerun never mixes files of two runs.
+  util::StagedFolder staged(
+      opt.out.empty() ? "results/" + worlds::file_name_component(world.name) : opt.out,
+      run_folder_names());
+  const std::string& out_dir = staged.path();
+  config.seed = opt.seed;
+  if (!opt.travel.empty())
+    config.travel =
+        opt.travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
+  if (opt.undock) config.docking.undock = true;
+  if (opt.animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
+  const sim::EpisodeResult r = sim::run_episode(world, *p, config);
+
+  const std::string line = command;
+  std::string setting;
+  if (!opt.config.empty())
+    setting = "config " + std::filesystem::path(opt.config).filename().string();
+  if (opt.seed != 1)
+    setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt.seed);
+  write_run_folder(world, r, config, out_dir, line, setting, opt.animate);
+  staged.commit();
+  std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
+            << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
+            << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans
+            << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
+  return r.succeeded() ? kExitOk : kExitFailed;
+}
+
 }  // namespace
 
 std::function<int()> add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Simulate one docking episode and write its results");
-  struct Options {
-    std::string world;
-    std::string planner = "vg";
-    std::string out;
-    std::uint64_t seed = 1;
-    std::string start;
-    std::string charger;
-    std::string config;
-    std::string travel;
-    bool animate = false;
-    bool undock = false;
-    std::string scen;
-    int query = 0;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<RunCommandOptions>();
   cmd->add_option("world", opt->world,
                   "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
       ->required();
@@ -71,45 +113,7 @@ std::function<int()> add_run_command(CLI::App& app) {
                 "After charging starts, reverse to the staging pose (docking.undock)");
   cmd->add_flag("--animate", opt->animate,
                 "Also write animation frames (and an MP4 when ffmpeg is installed)");
-  return [opt, cmd]() {
-    worlds::PoseOverrides overrides;
-    if (!opt->start.empty()) overrides.start = parse_pose(opt->start, "--start");
-    if (!opt->charger.empty()) overrides.charger = parse_pose(opt->charger, "--charger");
-    overrides.movingai_scen = opt->scen;
-    overrides.movingai_query = opt->query;
-    const worlds::World world = worlds::load_world(opt->world, overrides);
-    sim::EpisodeConfig config =
-        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
-    auto p = planner::make_planner(opt->planner, planner::planner_input(world, true));
-    // Every input is valid by now. The outputs are written into a staging folder beside the
-    // destination (an unwritable place fails here, before the simulation) and moved into place
-    // as a set: a rerun never mixes files of two runs.
-    util::StagedFolder staged(
-        opt->out.empty() ? "results/" + worlds::file_name_component(world.name) : opt->out,
-        run_folder_names());
-    const std::string& out_dir = staged.path();
-    config.seed = opt->seed;
-    if (!opt->travel.empty())
-      config.travel =
-          opt->travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
-    if (opt->undock) config.docking.undock = true;
-    if (opt->animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
-    const sim::EpisodeResult r = sim::run_episode(world, *p, config);
-
-    const std::string line = command_line(cmd);
-    std::string setting;
-    if (!opt->config.empty())
-      setting = "config " + std::filesystem::path(opt->config).filename().string();
-    if (opt->seed != 1)
-      setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt->seed);
-    write_run_folder(world, r, config, out_dir, line, setting, opt->animate);
-    staged.commit();
-    std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
-              << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
-              << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans
-              << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
-    return r.succeeded() ? kExitOk : kExitFailed;
-  };
+  return [opt, cmd]() { return run_one(*opt, command_line(cmd)); };
 }
 
 }  // namespace plantsim::app

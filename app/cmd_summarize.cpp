@@ -99,18 +99,118 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
   return l;
 }
 
+nlohmann::json read_summary(const std::string& dir) {
+  try {
+    return nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+  } catch (const util::InputFileError& e) {
+    throw std::invalid_argument(dir + "/summary.json: " + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(dir + "/summary.json: malformed JSON: " + e.what());
+  }
+}
+
+/// The run's row of the Markdown table, its figure linked from `link`.
+std::string markdown_row(const nlohmann::json& j, const std::string& link) {
+  char row[512];
+  std::snprintf(row, sizeof row,
+                "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | "
+                "[run.png](%s/run.png) |\n",
+                j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
+                j.value("travel", "path").c_str(), j.value("status", "?").c_str(),
+                100.0 * j.value("position_error_m", 0.0), j.value("heading_error_deg", 0.0),
+                j.value("collisions", 0), j.value("retries", 0), j.value("time_s", 0.0),
+                j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0), link.c_str());
+  return row;
+}
+
+std::string fixed_text(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+/// The run's card on the dashboard (its cells in the order of kDashboardHeaders).
+render::DashboardRun dashboard_run(const nlohmann::json& j, const std::string& dir,
+                                   const std::string& html_base) {
+  const bool measured = j.value("error_measured", true);
+  render::DashboardRun run;
+  run.folder = std::filesystem::relative(dir, html_base.empty() ? "." : html_base).string();
+  run.world = j.value("world", "?");
+  run.setting = setting_of(j.value("command", ""));
+  run.status = j.value("status", "?");
+  run.succeeded = j.value("docked", false) || j.value("caught", false);
+  run.cells = {j.value("planner", "?") +
+                   (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
+               measured ? fixed_text(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
+               measured ? fixed_text(j.value("heading_error_deg", 0.0), 2) : "n/a",
+               std::to_string(j.value("collisions", 0)),
+               std::to_string(j.value("retries", 0)),
+               std::to_string(j.value("stops", 0)),
+               std::to_string(j.value("replans", 0)),
+               fixed_text(j.value("time_s", 0.0), 1),
+               fixed_text(j.value("path_length_m", 0.0), 2),
+               fixed_text(j.value("driven_length_m", 0.0), 2)};
+  for (const char* f : {"run.png", "timeplots.png"})
+    if (std::filesystem::exists(dir + "/" + f)) run.figures.push_back(f);
+  return run;
+}
+
+const std::vector<std::string> kDashboardHeaders = {"planner",
+                                                    "position error (cm)",
+                                                    "heading error (deg)",
+                                                    "collisions",
+                                                    "retries",
+                                                    "stops",
+                                                    "replans",
+                                                    "time (s)",
+                                                    "planned (m)",
+                                                    "driven (m)"};
+
+struct SummarizeOptions {
+  std::vector<std::string> dirs;
+  std::string out;
+  std::string html;
+  std::vector<std::string> links;
+};
+
+int summarize(const SummarizeOptions& opt) {
+  std::string md =
+      "# plantsim results\n\n| world | planner | travel | status | position error (cm) | "
+      "heading error (deg) | collisions | retries | time (s) | planned (m) | driven (m) | figure "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  bool all_docked = true;
+  std::vector<render::DashboardRun> runs;
+  const std::string html_base =
+      opt.html.empty() ? "." : std::filesystem::path(opt.html).parent_path().string();
+  // Links relative to where the table is written, so they work when it is opened.
+  const std::string base =
+      opt.out.empty() ? "." : std::filesystem::path(opt.out).parent_path().string();
+  for (const auto& d : opt.dirs) {
+    const nlohmann::json j = read_summary(d);
+    md += markdown_row(j, std::filesystem::relative(d, base.empty() ? "." : base).string());
+    runs.push_back(dashboard_run(j, d, html_base));
+    all_docked = all_docked && runs.back().succeeded;
+  }
+  if (!opt.html.empty()) {
+    std::vector<render::DashboardLink> links;
+    for (const auto& l : opt.links)
+      links.push_back(link_to(l, html_base.empty() ? "." : html_base));
+    util::write_file_atomically(
+        opt.html, render::dashboard_html("plantsim results", kDashboardHeaders, runs, links));
+  }
+  if (opt.out.empty())
+    std::cout << md;
+  else
+    util::write_file_atomically(opt.out, md);
+  return all_docked ? kExitOk : kExitFailed;
+}
+
 }  // namespace
 
 std::function<int()> add_summarize_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
-  struct Options {
-    std::vector<std::string> dirs;
-    std::string out;
-    std::string html;
-    std::vector<std::string> links;
-  };
-  auto opt = std::make_shared<Options>();
+  auto opt = std::make_shared<SummarizeOptions>();
   cmd->add_option("dirs", opt->dirs, "Run output folders")
       ->required()
       ->check(CLI::ExistingDirectory);
@@ -120,92 +220,7 @@ std::function<int()> add_summarize_command(CLI::App& app) {
                   "the linked reports");
   cmd->add_option("--link", opt->links,
                   "Further reports (or PNG charts) to link from the dashboard");
-  return [opt]() {
-    std::string md =
-        "# plantsim results\n\n| world | planner | travel | status | position error (cm) | heading "
-        "error (deg) | "
-        "collisions | retries | time (s) | planned (m) | driven (m) | figure |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    bool all_docked = true;
-    std::vector<render::DashboardRun> runs;
-    const std::vector<std::string> headers = {"planner",
-                                              "position error (cm)",
-                                              "heading error (deg)",
-                                              "collisions",
-                                              "retries",
-                                              "stops",
-                                              "replans",
-                                              "time (s)",
-                                              "planned (m)",
-                                              "driven (m)"};
-    const std::string html_base =
-        opt->html.empty() ? "." : std::filesystem::path(opt->html).parent_path().string();
-    for (const auto& d : opt->dirs) {
-      nlohmann::json j;
-      try {
-        j = nlohmann::json::parse(util::read_input_file(d + "/summary.json", 64u << 20));
-      } catch (const util::InputFileError& e) {
-        throw std::invalid_argument(d + "/summary.json: " + e.what());
-      } catch (const nlohmann::json::exception& e) {
-        throw std::invalid_argument(d + "/summary.json: malformed JSON: " + e.what());
-      }
-      // Links relative to where the table is written, so they work when it is opened.
-      const std::string base =
-          opt->out.empty() ? "." : std::filesystem::path(opt->out).parent_path().string();
-      const std::string link = std::filesystem::relative(d, base.empty() ? "." : base).string();
-      char row[512];
-      std::snprintf(row, sizeof row,
-                    "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | "
-                    "[run.png](%s/run.png) |\n",
-                    j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
-                    j.value("travel", "path").c_str(), j.value("status", "?").c_str(),
-                    100.0 * j.value("position_error_m", 0.0), j.value("heading_error_deg", 0.0),
-                    j.value("collisions", 0), j.value("retries", 0), j.value("time_s", 0.0),
-                    j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0), link.c_str());
-      md += row;
-      auto fmt = [](double v, int d) {
-        char b[64];
-        std::snprintf(b, sizeof b, "%.*f", d, v);
-        return std::string(b);
-      };
-      const bool measured = j.value("error_measured", true);
-      render::DashboardRun run;
-      run.folder = std::filesystem::relative(d, html_base.empty() ? "." : html_base).string();
-      run.world = j.value("world", "?");
-      run.setting = setting_of(j.value("command", ""));
-      run.status = j.value("status", "?");
-      run.succeeded = j.value("docked", false) || j.value("caught", false);
-      run.cells = {
-          j.value("planner", "?") +
-              (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
-          measured ? fmt(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
-          measured ? fmt(j.value("heading_error_deg", 0.0), 2) : "n/a",
-          std::to_string(j.value("collisions", 0)),
-          std::to_string(j.value("retries", 0)),
-          std::to_string(j.value("stops", 0)),
-          std::to_string(j.value("replans", 0)),
-          fmt(j.value("time_s", 0.0), 1),
-          fmt(j.value("path_length_m", 0.0), 2),
-          fmt(j.value("driven_length_m", 0.0), 2)};
-      for (const char* f : {"run.png", "timeplots.png"})
-        if (std::filesystem::exists(d + "/" + f)) run.figures.push_back(f);
-      runs.push_back(run);
-      all_docked = all_docked && run.succeeded;
-    }
-    if (!opt->html.empty()) {
-      std::vector<render::DashboardLink> links;
-      for (const auto& l : opt->links)
-        links.push_back(link_to(l, html_base.empty() ? "." : html_base));
-      util::write_file_atomically(opt->html,
-                                  render::dashboard_html("plantsim results", headers, runs, links));
-    }
-    if (opt->out.empty()) {
-      std::cout << md;
-    } else {
-      util::write_file_atomically(opt->out, md);
-    }
-    return all_docked ? kExitOk : kExitFailed;
-  };
+  return [opt]() { return summarize(*opt); };
 }
 
 }  // namespace plantsim::app
