@@ -19,97 +19,117 @@ namespace plantsim::batch {
 
 using nlohmann::json;
 
-std::string summary_csv(const std::vector<std::string>& lines) {
-  struct Acc {
-    std::int64_t n = 0, succeeded = 0, docked = 0, collisions = 0, retries = 0, trapped = 0,
-                 timeouts = 0;
-    std::int64_t robot_collisions = 0, localization_not_ok = 0, charging = 0;
-    double stops = 0, replans = 0, recoveries = 0;
-    double localization_error_max = 0;
-    double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0,
-           wall_follows = 0;
-    std::int64_t ratio_n = 0, driven_n = 0;
-    std::array<std::int64_t, robot::kAllFailureReasons.size()>
-        failed{};  // per reason, in kAllFailureReasons' order
-  };
-  std::map<std::tuple<std::string, std::string, std::string, std::string>, Acc> acc;
-  for (const std::string& line : lines) {
-    const json j = json::parse(line);
-    Acc& a = acc[{j["world"], j["planner"], j["controller"], j["fault"]}];
-    ++a.n;
-    const bool docked = j["docked"].get<bool>();
-    a.succeeded += record_succeeded(j);
-    a.docked += docked;  // docking errors are means over these
-    a.collisions += j["collisions"].get<int>();
-    a.retries += j["retries"].get<int>();
-    a.time += j["time_s"].get<double>();
-    const double opt = j["optimal_length_m"].get<double>(), len = j["path_length_m"].get<double>();
-    if (opt > 0 && len > 0) a.ratio += len / opt, ++a.ratio_n;
-    if (docked)
-      a.pos += j["position_error_m"].get<double>(),
-          a.heading += j["heading_error_deg"].get<double>();
-    // Driven length over the optimum on success: how far a reactive method wanders.
-    const double opt_driven =
-        j.value("optimal_driven_m", opt);  // records before it: the plan's optimum
-    if (docked && opt_driven > 0)
-      a.driven_ratio += j["driven_length_m"].get<double>() / opt_driven, ++a.driven_n;
-    a.local_minima += j.value("local_minima", 0);
-    a.wall_follows += j.value("wall_follows", 0);
-    const std::string status = j["status"].get<std::string>();
-    a.trapped += status == "trapped";
-    a.timeouts += status == "timeout";
-    a.robot_collisions += j.value("collisions_robot_moving", 0);
-    a.localization_error_max =
-        std::max(a.localization_error_max, j.value("localization_error_max_m", 0.0));
-    a.localization_not_ok += j.value("localization_status", std::string("ok")) != "ok";
-    a.stops += j.value("stops", 0);
-    a.replans += j.value("replans", 0);
-    a.recoveries += j.value("recoveries", 0);
-    a.charging += j.value("charging", false);
-    if (j.contains("failure") && j["failure"].is_string())
-      if (const auto reason = robot::failure_reason_from_string(j["failure"].get<std::string>()))
-        ++a.failed[static_cast<std::size_t>(*reason)];
+namespace {
+
+/// One configuration's episodes summed (summary.csv's row).
+struct ConfigurationTally {
+  std::int64_t n = 0, succeeded = 0, docked = 0, collisions = 0, retries = 0, trapped = 0,
+               timeouts = 0;
+  std::int64_t robot_collisions = 0, localization_not_ok = 0, charging = 0;
+  double stops = 0, replans = 0, recoveries = 0;
+  double localization_error_max = 0;
+  double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0,
+         wall_follows = 0;
+  std::int64_t ratio_n = 0, driven_n = 0;
+  std::array<std::int64_t, robot::kAllFailureReasons.size()>
+      failed{};  // per reason, in kAllFailureReasons' order
+  void add(const json& j);
+  /// The row's numbers after its four names, comma first, newline last.
+  std::string row() const;
+};
+
+void ConfigurationTally::add(const json& j) {
+  ConfigurationTally& a = *this;
+  ++a.n;
+  const bool docked = j["docked"].get<bool>();
+  a.succeeded += record_succeeded(j);
+  a.docked += docked;  // docking errors are means over these
+  a.collisions += j["collisions"].get<int>();
+  a.retries += j["retries"].get<int>();
+  a.time += j["time_s"].get<double>();
+  const double opt = j["optimal_length_m"].get<double>(), len = j["path_length_m"].get<double>();
+  if (opt > 0 && len > 0) a.ratio += len / opt, ++a.ratio_n;
+  if (docked)
+    a.pos += j["position_error_m"].get<double>(), a.heading += j["heading_error_deg"].get<double>();
+  // Driven length over the optimum on success: how far a reactive method wanders.
+  const double opt_driven =
+      j.value("optimal_driven_m", opt);  // records before it: the plan's optimum
+  if (docked && opt_driven > 0)
+    a.driven_ratio += j["driven_length_m"].get<double>() / opt_driven, ++a.driven_n;
+  a.local_minima += j.value("local_minima", 0);
+  a.wall_follows += j.value("wall_follows", 0);
+  const std::string status = j["status"].get<std::string>();
+  a.trapped += status == "trapped";
+  a.timeouts += status == "timeout";
+  a.robot_collisions += j.value("collisions_robot_moving", 0);
+  a.localization_error_max =
+      std::max(a.localization_error_max, j.value("localization_error_max_m", 0.0));
+  a.localization_not_ok += j.value("localization_status", std::string("ok")) != "ok";
+  a.stops += j.value("stops", 0);
+  a.replans += j.value("replans", 0);
+  a.recoveries += j.value("recoveries", 0);
+  a.charging += j.value("charging", false);
+  if (j.contains("failure") && j["failure"].is_string())
+    if (const auto reason = robot::failure_reason_from_string(j["failure"].get<std::string>()))
+      ++a.failed[static_cast<std::size_t>(*reason)];
+}
+
+std::string ConfigurationTally::row() const {
+  const ConfigurationTally& a = *this;
+  const auto [lo, hi] = wilson_interval(a.succeeded, a.n);
+  char row[800];
+  std::snprintf(
+      row, sizeof row,
+      ",%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%."
+      "2f,%lld,"
+      "%.3f,%.3f,%.3f,%lld\n",
+      static_cast<long long>(a.n), static_cast<long long>(a.succeeded),
+      static_cast<double>(a.succeeded) / a.n, lo, hi, a.time / a.n,
+      a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
+      a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
+      static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
+      a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
+      static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
+      1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok), a.stops / a.n,
+      a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
+  std::string failed;
+  for (std::int64_t count : a.failed) {
+    failed += ',';
+    failed += std::to_string(count);
   }
+  std::string line(row, std::strlen(row) - 1);  // without its newline
+  line += failed + "\n";
+  return line;
+}
+
+/// summary.csv's header line.
+std::string summary_header() {
   std::string out =
-      "world,planner,controller,fault,episodes,succeeded,success_rate,ci95_low,ci95_high,mean_time_"
-      "s,"
-      "path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,mean_retries,"
-      "driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,collisions_robot_"
-      "moving,"
-      "max_localization_error_mm,localization_not_ok,mean_stops,mean_replans,mean_recoveries,"
-      "charging";
+      "world,planner,controller,fault,episodes,succeeded,success_rate,ci95_low,ci95_high,"
+      "mean_time_s,path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,"
+      "mean_retries,driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,"
+      "collisions_robot_moving,max_localization_error_mm,localization_not_ok,mean_stops,"
+      "mean_replans,mean_recoveries,charging";
   for (robot::FailureReason reason : robot::kAllFailureReasons) {
     out += ",failed_";
     out += robot::to_string(reason);
   }
   out += "\n";
-  for (const auto& [key, a] : acc) {
-    const auto [lo, hi] = wilson_interval(a.succeeded, a.n);
-    char row[800];
-    std::snprintf(
-        row, sizeof row,
-        ",%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%."
-        "2f,%lld,"
-        "%.3f,%.3f,%.3f,%lld\n",
-        static_cast<long long>(a.n), static_cast<long long>(a.succeeded),
-        static_cast<double>(a.succeeded) / a.n, lo, hi, a.time / a.n,
-        a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
-        a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
-        static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
-        a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
-        static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
-        1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok),
-        a.stops / a.n, a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
-    std::string failed;
-    for (std::int64_t count : a.failed) {
-      failed += ',';
-      failed += std::to_string(count);
-    }
-    std::string line(row, std::strlen(row) - 1);  // without its newline
-    line += failed + "\n";
-    out += util::csv_field(std::get<0>(key)) + "," + util::csv_field(std::get<1>(key)) + "," +
-           util::csv_field(std::get<2>(key)) + "," + util::csv_field(std::get<3>(key)) + line;
+  return out;
+}
+
+}  // namespace
+
+std::string summary_csv(const std::vector<std::string>& lines) {
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationTally> acc;
+  for (const std::string& line : lines) {
+    const json j = json::parse(line);
+    acc[{j["world"], j["planner"], j["controller"], j["fault"]}].add(j);
   }
+  std::string out = summary_header();
+  for (const auto& [key, a] : acc)
+    out += util::csv_field(std::get<0>(key)) + "," + util::csv_field(std::get<1>(key)) + "," +
+           util::csv_field(std::get<2>(key)) + "," + util::csv_field(std::get<3>(key)) + a.row();
   return out;
 }
 

@@ -287,28 +287,45 @@ std::string path_of(const char* section, const std::string& name) {
 
 }  // namespace
 
-EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
-                                   EpisodeConfig c) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    throw worlds::WorldError(source, "", std::string("malformed JSON: ") + e.what());
-  }
-  if (!doc.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
-  std::set<std::string> known;
-  auto lookup = [&](const char* section, const char* name) -> const json* {
-    known.insert(path_of(section, name));
-    const json* obj = &doc;
+namespace {
+
+/// The document's values looked up by section and name, each lookup remembered: what was never
+/// looked up is an unknown parameter.
+class ConfigLookup {
+ public:
+  ConfigLookup(const json& doc, const std::string& source) : doc_(doc), source_(source) {}
+  const json* operator()(const char* section, const char* name) {
+    known_.insert(path_of(section, name));
+    const json* obj = &doc_;
     if (std::string(section).size()) {
-      auto it = doc.find(section);
-      if (it == doc.end()) return nullptr;
-      if (!it->is_object()) throw worlds::WorldError(source, section, "expected an object");
+      auto it = doc_.find(section);
+      if (it == doc_.end()) return nullptr;
+      if (!it->is_object()) throw worlds::WorldError(source_, section, "expected an object");
       obj = &*it;
     }
     auto it = obj->find(name);
     return it == obj->end() ? nullptr : &*it;
-  };
+  }
+  /// Refuses a key no lookup asked for.
+  void refuse_unknown() const {
+    for (const auto& [key, value] : doc_.items()) {
+      if (value.is_object()) {
+        for (const auto& [sub, _] : value.items())
+          if (!known_.count(key + "." + sub))
+            throw worlds::WorldError(source_, key + "." + sub, "unknown parameter");
+      } else if (!known_.count(key) && key != "comment") {
+        throw worlds::WorldError(source_, key, "unknown parameter");
+      }
+    }
+  }
+
+ private:
+  const json& doc_;
+  const std::string& source_;
+  std::set<std::string> known_;
+};
+
+void read_tables(ConfigLookup& lookup, const std::string& source, EpisodeConfig& c) {
   for (const Field& f : fields()) {
     const json* v = lookup(f.section, f.name);
     if (!v) continue;
@@ -344,6 +361,9 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
       throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
     f.set(c, v->get<bool>() ? 1.0 : 0.0);
   }
+}
+
+void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& c) {
   if (const json* v = lookup("perception", "mode")) {
     const std::string m = v->is_string() ? v->get<std::string>() : "";
     if (m == "sensors")
@@ -367,15 +387,10 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
       throw worlds::WorldError(source, "seed", "expected a whole number");
     c.seed = v->get<std::uint64_t>();
   }
-  for (const auto& [key, value] : doc.items()) {
-    if (value.is_object()) {
-      for (const auto& [sub, _] : value.items())
-        if (!known.count(key + "." + sub))
-          throw worlds::WorldError(source, key + "." + sub, "unknown parameter");
-    } else if (!known.count(key) && key != "comment") {
-      throw worlds::WorldError(source, key, "unknown parameter");
-    }
-  }
+}
+
+/// Values each in range that do not fit together.
+void check_consistency(const std::string& source, const EpisodeConfig& c) {
   if (c.field.k_att <= 0)
     throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
   if (c.field.rho0_m <= c.field.rho_min_m)
@@ -400,6 +415,24 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
         "timeout_s / step.dt_s asks for " + std::to_string(static_cast<long long>(steps)) +
             " physics steps, more than the limit of " + std::to_string(kMaxEpisodeSteps) +
             " (docs/config.md): shorten the timeout or lengthen the step");
+}
+
+}  // namespace
+
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
+                                   EpisodeConfig c) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    throw worlds::WorldError(source, "", std::string("malformed JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
+  ConfigLookup lookup(doc, source);
+  read_tables(lookup, source, c);
+  read_modes(lookup, source, c);
+  lookup.refuse_unknown();
+  check_consistency(source, c);
   return c;
 }
 
