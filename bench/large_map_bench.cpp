@@ -189,108 +189,132 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
   return failures == 0 ? 0 : 1;
 }
 
+namespace {
+
+/// One planner on one random plant: build, first query, random queries, memory.
+struct PlantRun {
+  double build_ms = 0, total_ms = 0, memory_mb = 0, random_expanded = 0;
+  std::vector<double> random_ms;
+  std::vector<AnsweredQuery> answered;
+};
+
+std::optional<PlantRun> measure_plant(const std::string& method, const worlds::World& w, int n,
+                                      bool quick) {
+  PlantRun run;
+  reset_peak_memory();
+  const double before = current_memory_mb().value_or(0);
+  const auto t0 = Clock::now();
+  auto planner = planner::make_planner(method, planner::planner_input(w, false));
+  run.build_ms = us_since(t0) / 1000;
+  const planner::PlanResult first = planner->plan(w.start.position(), w.charger.position());
+  run.total_ms = us_since(t0) / 1000;
+  if (first.status != planner::PlanStatus::kOk) {
+    std::cerr << "bench: random plant of " << n << " rectangles: no path from start to charger\n";
+    return std::nullopt;
+  }
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
+      uy(w.floor.ymin, w.floor.ymax);
+  for (int tries = 0; tries < 200 && run.random_ms.size() < (quick ? 10u : 20u); ++tries) {
+    const Vec2 from{ux(rng), uy(rng)}, to{ux(rng), uy(rng)};
+    const auto t = Clock::now();
+    const planner::PlanResult r = planner->plan(from, to);
+    if (r.status != planner::PlanStatus::kOk) continue;
+    run.random_ms.push_back(us_since(t) / 1000);
+    run.answered.push_back({from, to, r.length});
+    run.random_expanded += static_cast<double>(r.stats.expanded);
+  }
+  run.memory_mb = grown_mb(before);
+  return run;
+}
+
+/// The whole exact reduced visibility graph (every vertex's edges found), what a distance oracle
+/// over the corners (contraction, hub labels) would be built on: its edges and the time to find
+/// them, on a fresh planner. Not on 200,000 rectangles (about a minute).
+void report_whole_graph(const worlds::World& w, int n, const std::string& name,
+                        const Measure& first_query) {
+  if (n > 50000) return;
+  const auto t = Clock::now();
+  const std::size_t edges =
+      planner::make_planner("vg", planner::planner_input(w, false))->graph_edges().size();
+  const double whole_ms = us_since(t) / 1000;
+  report("planner", {name + "whole_reduced_graph_edges", static_cast<double>(edges), "edges"});
+  report("planner", {name + "whole_reduced_graph_build", whole_ms, "ms"}, first_query);
+}
+
+/// Why a random query on a large plant costs what it does (README, `bench`): the corners any
+/// straight-line-guided search must expand, against what polyanya expands, and what one expansion
+/// per such corner would cost at polyanya's measured time per expansion. Each count is a search
+/// of the whole mesh per query: not done on 200,000 rectangles.
+void report_unavoidable_corners(const worlds::World& w, const PlantRun& run,
+                                const std::string& name, const Measure& random) {
+  const double queries = static_cast<double>(run.random_ms.size());
+  const Measure floor{name + "random_query_unavoidable_corners",
+                      mean_unavoidable_corners(planner::planner_input(w, false), run.answered),
+                      "corners"};
+  const double expanded = run.random_expanded / queries;
+  report("planner", floor);
+  report("planner", {name + "random_query_expanded_mean", expanded, "intervals"}, floor);
+  const double per_interval_ms = random.value / expanded;
+  report("planner",
+         {name + "random_query_one_expansion_per_unavoidable_corner", floor.value * per_interval_ms,
+          "ms"},
+         random);
+}
+
+/// Least-squares slope of log time against log count: time ~ N^exponent.
+void report_growth(const std::string& method, const std::vector<int>& sizes,
+                   const std::vector<double>& log_n, const std::vector<double>& log_ms) {
+  const double k = static_cast<double>(log_n.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < log_n.size(); ++i)
+    sx += log_n[i], sy += log_ms[i], sxx += log_n[i] * log_n[i], sxy += log_n[i] * log_ms[i];
+  report("planner",
+         {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) + "/" +
+              method + "/build_plus_first_query_growth_exponent",
+          (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
+}
+
+}  // namespace
+
 int run_random_plant_scaling(bool quick) {
   std::vector<int> sizes{1000, 5000, 20000};
   if (!quick) sizes.insert(sizes.end(), {50000, 200000});
   // vg first; the mesh searches' figures are printed against vg's at the same size.
   std::vector<Measure> vg_first, vg_random;
   std::vector<worlds::World> plants;  // made once: generating 200,000 rectangles takes minutes
-  for (int n : sizes) {
-    plants.push_back(worlds::random_plant(worlds::as_dense_as_n1000(n, 6000)));
-  }
+  for (int n : sizes) plants.push_back(worlds::random_plant(worlds::as_dense_as_n1000(n, 6000)));
   for (const std::string method : {"vg", "interval", "polyanya"}) {
     std::vector<double> log_n, log_ms;
     std::optional<Measure> smallest;
     for (std::size_t i = 0; i < sizes.size(); ++i) {
       const int n = sizes[i];
       const worlds::World& w = plants[i];
-      reset_peak_memory();
-      const double before = current_memory_mb().value_or(0);
-      const auto t0 = Clock::now();
-      auto planner = planner::make_planner(method, planner::planner_input(w, false));
-      const double build_ms = us_since(t0) / 1000;
-      const planner::PlanResult first = planner->plan(w.start.position(), w.charger.position());
-      const double total_ms = us_since(t0) / 1000;
-      if (first.status != planner::PlanStatus::kOk) {
-        std::cerr << "bench: random plant of " << n
-                  << " rectangles: no path from start to charger\n";
-        return 1;
-      }
-      std::mt19937_64 rng(99);
-      std::uniform_real_distribution<double> ux(w.floor.xmin, w.floor.xmax),
-          uy(w.floor.ymin, w.floor.ymax);
-      std::vector<double> random_ms;
-      std::vector<AnsweredQuery> answered;
-      double random_expanded = 0;
-      for (int tries = 0; tries < 200 && random_ms.size() < (quick ? 10u : 20u); ++tries) {
-        const Vec2 from{ux(rng), uy(rng)}, to{ux(rng), uy(rng)};
-        const auto t = Clock::now();
-        const planner::PlanResult r = planner->plan(from, to);
-        if (r.status != planner::PlanStatus::kOk) continue;
-        random_ms.push_back(us_since(t) / 1000);
-        answered.push_back({from, to, r.length});
-        random_expanded += static_cast<double>(r.stats.expanded);
-      }
-      const double memory_mb = grown_mb(before);
-      planner.reset();
+      const std::optional<PlantRun> run = measure_plant(method, w, n, quick);
+      if (!run) return 1;
       const std::string name = "plant_" + std::to_string(n) + "/" + method + "/";
-      const Measure first_query{name + "build_plus_first_query", total_ms, "ms"};
+      const Measure first_query{name + "build_plus_first_query", run->total_ms, "ms"};
       const Measure random{name + "random_query_mean",
-                           random_ms.empty() ? 0 : spread(random_ms).mean, "ms"};
-      report("planner", {name + "build", build_ms, "ms"});
+                           run->random_ms.empty() ? 0 : spread(run->random_ms).mean, "ms"};
+      report("planner", {name + "build", run->build_ms, "ms"});
       if (method == "vg") {
         report("planner", first_query, smallest);
-        if (!random_ms.empty()) report("planner", random);
+        if (!run->random_ms.empty()) report("planner", random);
         vg_first.push_back(first_query);
         vg_random.push_back(random);
-        // The whole exact reduced visibility graph (every vertex's edges found), what a distance
-        // oracle over the corners (contraction, hub labels) would be built on: its edges and the
-        // time to find them, on a fresh planner. Not on 200,000 rectangles (about a minute).
-        if (n <= 50000) {
-          const auto t = Clock::now();
-          const std::size_t edges =
-              planner::make_planner("vg", planner::planner_input(w, false))->graph_edges().size();
-          const double whole_ms = us_since(t) / 1000;
-          report("planner",
-                 {name + "whole_reduced_graph_edges", static_cast<double>(edges), "edges"});
-          report("planner", {name + "whole_reduced_graph_build", whole_ms, "ms"}, first_query);
-        }
+        report_whole_graph(w, n, name, first_query);
       } else {
         report("planner", first_query, vg_first[i]);
-        if (!random_ms.empty()) report("planner", random, vg_random[i]);
+        if (!run->random_ms.empty()) report("planner", random, vg_random[i]);
       }
-      report("planner", {name + "peak_memory_growth", memory_mb, "MB"});
-      // Why a random query on a large plant costs what it does (README, `bench`): the
-      // corners any straight-line-guided search must expand, against what polyanya expands, and
-      // what one expansion per such corner would cost at polyanya's measured time per expansion.
-      // Each count is a search of the whole mesh per query: not done on 200,000 rectangles.
-      if (method == "polyanya" && !random_ms.empty() && n <= 50000) {
-        const double queries = static_cast<double>(random_ms.size());
-        const Measure floor{name + "random_query_unavoidable_corners",
-                            mean_unavoidable_corners(planner::planner_input(w, false), answered),
-                            "corners"};
-        const double expanded = random_expanded / queries;
-        report("planner", floor);
-        report("planner", {name + "random_query_expanded_mean", expanded, "intervals"}, floor);
-        const double per_interval_ms = random.value / expanded;
-        report("planner",
-               {name + "random_query_one_expansion_per_unavoidable_corner",
-                floor.value * per_interval_ms, "ms"},
-               random);
-      }
+      report("planner", {name + "peak_memory_growth", run->memory_mb, "MB"});
+      if (method == "polyanya" && !run->random_ms.empty() && n <= 50000)
+        report_unavoidable_corners(w, *run, name, random);
       if (!smallest) smallest = first_query;
       log_n.push_back(std::log(n));
-      log_ms.push_back(std::log(total_ms));
+      log_ms.push_back(std::log(run->total_ms));
     }
-    // Least-squares slope of log time against log count: time ~ N^exponent.
-    const double k = static_cast<double>(log_n.size());
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < log_n.size(); ++i)
-      sx += log_n[i], sy += log_ms[i], sxx += log_n[i] * log_n[i], sxy += log_n[i] * log_ms[i];
-    report("planner",
-           {"plant_" + std::to_string(sizes.front()) + "_to_" + std::to_string(sizes.back()) + "/" +
-                method + "/build_plus_first_query_growth_exponent",
-            (k * sxy - sx * sy) / (k * sxx - sx * sx), "exponent"});
+    report_growth(method, sizes, log_n, log_ms);
   }
   return 0;
 }
