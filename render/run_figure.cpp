@@ -176,16 +176,11 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   fig.note_inset({box.left, box.top, box.right, lo.y + 35});
 }
 
-}  // namespace
-
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
-                      const RunFigureOptions& o, PixelTransform* transform_out,
-                      FigureLayout* layout_out) {
-  Figure fig(o.width_px, o.height_px);
-  const double column = o.width_px - 300.0;  // the right column: colour bar, legend, close-up
-  const PixelBox panel{70, 76, column - 30, o.height_px - 50.0};
-  const PixelTransform t = fig.world_panel(world.floor, panel);
-  fig.clip_to_world(world.floor, t);
+/// Every layer of the world panel, bottom to top, and the legend of what was drawn.
+std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
+                                           const worlds::World& world,
+                                           const sim::EpisodeResult& run,
+                                           const RunFigureOptions& o) {
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
   auto listed = [&](bool drawn, Rgb colour, const std::string& label,
@@ -247,8 +242,12 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger", Swatch::kOutline);
   for (const LegendEntry& e : draw_plan_marks(fig, t, run.marks)) legend.push_back(e);
   if (!world.moving.empty()) draw_time_ticks(fig, run, t);
-  fig.world_axes(world.floor, t);
+  return legend;
+}
 
+/// The title (world, method, setting, why it failed) and the result line under it.
+void draw_titles(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
+                 const RunFigureOptions& o) {
   std::string title = world.name + "  |  " + method_label(run);
   if (!o.setting.empty()) title += "  |  " + o.setting;
   if (run.failure) {
@@ -261,22 +260,39 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
                   true);
   fig.text_fitted(result_line(run) + "  |  " + length_line(run), 70, 46, 13, palette::kAxis,
                   o.width_px - 90.0);
+}
+
+/// A pursuit ends at the target, not at the charger, and a robot that never came near the
+/// charger has no docking to show.
+bool came_near_dock(const worlds::World& world, const sim::EpisodeResult& run) {
+  return !run.trajectory.empty() &&
+         (std::any_of(run.trajectory.begin(), run.trajectory.end(),
+                      [](const auto& s) {
+                        return s.phase != controller::DockPhase::kTravel &&
+                               s.phase != controller::DockPhase::kFailed;
+                      }) ||
+          geom::distance(run.trajectory.back().truth.position(), world.charger.position()) < 3.0);
+}
+
+}  // namespace
+
+Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+                      const RunFigureOptions& o, PixelTransform* transform_out,
+                      FigureLayout* layout_out) {
+  Figure fig(o.width_px, o.height_px);
+  const double column = o.width_px - 300.0;  // the right column: colour bar, legend, close-up
+  const PixelBox panel{70, 76, column - 30, o.height_px - 50.0};
+  const PixelTransform t = fig.world_panel(world.floor, panel);
+  fig.clip_to_world(world.floor, t);
+  const std::vector<LegendEntry> legend = draw_world_layers(fig, t, world, run, o);
+  fig.world_axes(world.floor, t);
+  draw_titles(fig, world, run, o);
   fig.colour_bar({column, 96, column + 240, 108}, 0.0, world.robot.max_speed_mps,
                  "speed (m/s), 0 to the robot's maximum");
   const int legend_columns = legend.size() > 9 ? 2 : 1;
   const PixelBox legend_box = fig.legend(column, 156, legend, legend_columns, 140);
   const double inset_top = std::max(legend_box.bottom + 12, o.height_px - 340.0);
-  // A pursuit ends at the target, not at the charger, and a robot that never came near the
-  // charger has no docking to show.
-  const bool near_dock =
-      !run.trajectory.empty() &&
-      (std::any_of(run.trajectory.begin(), run.trajectory.end(),
-                   [](const auto& s) {
-                     return s.phase != controller::DockPhase::kTravel &&
-                            s.phase != controller::DockPhase::kFailed;
-                   }) ||
-       geom::distance(run.trajectory.back().truth.position(), world.charger.position()) < 3.0);
-  if (near_dock && !world.target && inset_top + 150 < o.height_px)
+  if (came_near_dock(world, run) && !world.target && inset_top + 150 < o.height_px)
     draw_docking_inset(fig, world, run, o,
                        {column, inset_top, o.width_px - 20.0, o.height_px - 52.0});
   if (transform_out) *transform_out = t;
