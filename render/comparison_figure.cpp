@@ -39,20 +39,9 @@ std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
 
 namespace {
 
-/// The legend of what the panels draw, each label once.
-class PanelLegend {
- public:
-  void operator()(bool drawn, Rgb colour, const std::string& label) {
-    const bool known = std::any_of(entries.begin(), entries.end(),
-                                   [&](const LegendEntry& e) { return e.label == label; });
-    if (drawn && !known) entries.push_back({colour, label});
-  }
-  std::vector<LegendEntry> entries;
-};
-
 /// One panel's world layers; true when it drew a driven path.
 bool draw_panel_layers(Figure& fig, const PixelTransform& t, const worlds::World& world,
-                       const ComparisonPanel& p, PanelLegend& listed) {
+                       const ComparisonPanel& p, UniqueLegend& listed) {
   bool drove_any = false;
   GlCanvas& c = fig.canvas();
   draw_floor(c, world);
@@ -148,7 +137,7 @@ Image draw_comparison(const worlds::World& world, const std::vector<ComparisonPa
   if (!differences.empty())
     fig.text_fitted(differences, 20, 54, 13, palette::kAxis, width_px - 40.0);
   const double cell_w = grid.panel_width_px;
-  PanelLegend listed;
+  UniqueLegend listed;
   bool drove_any = false;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const ComparisonPanel& p = panels[i];

@@ -50,6 +50,90 @@ std::string describe_order(const planner::CoveragePlan& p) {
   return s;
 }
 
+namespace {
+
+/// The grid's cells by visits (blocked, once, twice, more).
+void draw_cells(GlCanvas& c, const planner::CoverageGrid& g, const CoveragePanel& p,
+                UniqueLegend& listed) {
+  std::vector<int> visits(static_cast<std::size_t>(g.columns()) * g.rows(), 0);
+  for (const planner::Cell& cell : p.plan.cells) ++visits[g.index(cell)];
+  for (int r = 0; r < g.rows(); ++r)
+    for (int col = 0; col < g.columns(); ++col) {
+      const planner::Cell cell{col, r};
+      const int v = visits[g.index(cell)];
+      if (!g.free(cell))
+        c.fill_rect(g.cell_rect(cell), kBlocked);
+      else if (v == 1)
+        c.fill_rect(g.cell_rect(cell), kCoveredOnce);
+      else if (v == 2)
+        c.fill_rect(g.cell_rect(cell), kCoveredTwice);
+      else if (v > 2)
+        c.fill_rect(g.cell_rect(cell), kCoveredMore);
+      listed(!g.free(cell), kBlocked, "blocked cell");
+      listed(g.free(cell) && v == 1, kCoveredOnce, "covered once");
+      listed(g.free(cell) && v == 2, kCoveredTwice, "covered twice");
+      listed(g.free(cell) && v > 2, kCoveredMore, "covered 3+ times");
+    }
+}
+
+/// The sub-regions' outlines, where each sweep starts, the coverage path and the driven one.
+void draw_regions_and_paths(GlCanvas& c, const planner::CoverageGrid& g, const CoveragePanel& p,
+                            UniqueLegend& listed) {
+  for (const planner::CellRect& r : p.plan.regions) {
+    const geom::Rect a = g.cell_rect({r.column, r.row}),
+                     b = g.cell_rect({r.column + r.width - 1, r.row + r.height - 1});
+    c.polyline(
+        {{a.xmin, a.ymin}, {b.xmax, a.ymin}, {b.xmax, b.ymax}, {a.xmin, b.ymax}, {a.xmin, a.ymin}},
+        2.0, kRegionOutline);
+  }
+  listed(!p.plan.regions.empty(), kRegionOutline, "sub-region, order");
+  // Where each sweep starts: its lanes run from there.
+  bool sweep_starts = false;
+  for (const planner::Cell& first : p.plan.sweep_starts) {
+    c.fill_disk(g.centre(first), 0.18 * g.cell_m(), kSweepStart);
+    c.ring(g.centre(first), 0.18 * g.cell_m(), 1.0,
+           kCoveragePath);  // yellow needs an edge on pale tints
+    sweep_starts = true;
+  }
+  listed(sweep_starts, kSweepStart, "sweep start");
+  std::vector<Vec2> path;
+  for (const planner::Cell& cell : p.plan.cells) path.push_back(g.centre(cell));
+  c.polyline(path, 1.5, kCoveragePath);
+  listed(path.size() > 1, kCoveragePath, "coverage path");
+  if (!p.driven.empty()) c.polyline(p.driven, 1.5, palette::kPlan);
+  listed(p.driven.size() > 1, palette::kPlan, "driven");
+}
+
+/// The visiting order, numbered at each sub-region's centre.
+void draw_order_numbers(Figure& fig, const PixelTransform& t, const planner::CoverageGrid& g,
+                        const CoveragePanel& p) {
+  for (std::size_t k = 0; k < p.plan.order.size(); ++k) {
+    const planner::CellRect& r = p.plan.regions[p.plan.order[k]];
+    const Vec2 centre = 0.5 * (g.centre({r.column, r.row}) +
+                               g.centre({r.column + r.width - 1, r.row + r.height - 1}));
+    const Vec2 px = t.to_pixel(centre);
+    fig.text(std::to_string(k + 1), px.x, px.y + 6, 15, kRegionOutline, Anchor::kCenter, true);
+  }
+}
+
+void draw_panel_text(Figure& fig, const CoveragePanel& p, double x0, double y0, double cell_w) {
+  const planner::CoverageMetrics& m = p.plan.metrics;
+  char line1[256];
+  if (p.plan.ok)
+    std::snprintf(line1, sizeof line1,
+                  "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
+                  p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends,
+                  m.length_m);
+  else
+    std::snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
+  fig.text_fitted(line1, x0 + 60, y0 + 20, 15,
+                  p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
+  fig.text_fitted(describe_order(p.plan), x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
+  if (!p.extra.empty()) fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
+}
+
+}  // namespace
+
 Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>& panels,
                     const std::string& title, const std::string& subtitle, int width_px,
                     int panel_height_px, FigureLayout* layout_out) {
@@ -58,12 +142,7 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
   const int legend_columns = std::max(1, std::min(6, (width_px - 40) / 170));
   grid.top_px = 64 + 22 + 2 * 19 + 16;
   Figure fig(width_px, grid.height_px());
-  std::vector<LegendEntry> legend;
-  auto listed = [&](bool drawn, Rgb colour, const std::string& label) {
-    const bool known = std::any_of(legend.begin(), legend.end(),
-                                   [&](const LegendEntry& e) { return e.label == label; });
-    if (drawn && !known) legend.push_back({colour, label});
-  };
+  UniqueLegend listed;
   fig.text_fitted(title, 20, 32, 20, palette::kAxis, width_px - 40.0, true);
   fig.text_fitted(subtitle, 20, 58, 14, palette::kAxis, width_px - 40.0);
   const double cell_w = grid.panel_width_px;
@@ -75,83 +154,20 @@ Image draw_coverage(const worlds::World& world, const std::vector<CoveragePanel>
     const PixelTransform t = fig.world_panel(world.floor, box);
     GlCanvas& c = fig.canvas();
     draw_floor(c, world);
-    std::vector<int> visits(static_cast<std::size_t>(g.columns()) * g.rows(), 0);
-    for (const planner::Cell& cell : p.plan.cells) ++visits[g.index(cell)];
-    for (int r = 0; r < g.rows(); ++r)
-      for (int col = 0; col < g.columns(); ++col) {
-        const planner::Cell cell{col, r};
-        const int v = visits[g.index(cell)];
-        if (!g.free(cell))
-          c.fill_rect(g.cell_rect(cell), kBlocked);
-        else if (v == 1)
-          c.fill_rect(g.cell_rect(cell), kCoveredOnce);
-        else if (v == 2)
-          c.fill_rect(g.cell_rect(cell), kCoveredTwice);
-        else if (v > 2)
-          c.fill_rect(g.cell_rect(cell), kCoveredMore);
-        listed(!g.free(cell), kBlocked, "blocked cell");
-        listed(g.free(cell) && v == 1, kCoveredOnce, "covered once");
-        listed(g.free(cell) && v == 2, kCoveredTwice, "covered twice");
-        listed(g.free(cell) && v > 2, kCoveredMore, "covered 3+ times");
-      }
+    draw_cells(c, g, p, listed);
     const bool obstacles = draw_obstacles(c, world);
     listed(obstacles, palette::kObstacle, "obstacle");
     listed(obstacles && world.planning_inflation_m() > 0, palette::kInflation, "margin");
-    for (const planner::CellRect& r : p.plan.regions) {
-      const geom::Rect a = g.cell_rect({r.column, r.row}),
-                       b = g.cell_rect({r.column + r.width - 1, r.row + r.height - 1});
-      c.polyline({{a.xmin, a.ymin},
-                  {b.xmax, a.ymin},
-                  {b.xmax, b.ymax},
-                  {a.xmin, b.ymax},
-                  {a.xmin, a.ymin}},
-                 2.0, kRegionOutline);
-    }
-    listed(!p.plan.regions.empty(), kRegionOutline, "sub-region, order");
-    // Where each sweep starts: its lanes run from there.
-    bool sweep_starts = false;
-    for (const planner::Cell& first : p.plan.sweep_starts) {
-      c.fill_disk(g.centre(first), 0.18 * g.cell_m(), kSweepStart);
-      c.ring(g.centre(first), 0.18 * g.cell_m(), 1.0,
-             kCoveragePath);  // yellow needs an edge on pale tints
-      sweep_starts = true;
-    }
-    listed(sweep_starts, kSweepStart, "sweep start");
-    std::vector<Vec2> path;
-    for (const planner::Cell& cell : p.plan.cells) path.push_back(g.centre(cell));
-    c.polyline(path, 1.5, kCoveragePath);
-    listed(path.size() > 1, kCoveragePath, "coverage path");
-    if (!p.driven.empty()) c.polyline(p.driven, 1.5, palette::kPlan);
-    listed(p.driven.size() > 1, palette::kPlan, "driven");
+    draw_regions_and_paths(c, g, p, listed);
     draw_start(c, world);
     draw_charger(c, world);
     fig.world_axes(world.floor, t);
-    // The visiting order, numbered at each sub-region's centre.
-    for (std::size_t k = 0; k < p.plan.order.size(); ++k) {
-      const planner::CellRect& r = p.plan.regions[p.plan.order[k]];
-      const Vec2 centre = 0.5 * (g.centre({r.column, r.row}) +
-                                 g.centre({r.column + r.width - 1, r.row + r.height - 1}));
-      const Vec2 px = t.to_pixel(centre);
-      fig.text(std::to_string(k + 1), px.x, px.y + 6, 15, kRegionOutline, Anchor::kCenter, true);
-    }
-    const planner::CoverageMetrics& m = p.plan.metrics;
-    char line1[256];
-    if (p.plan.ok)
-      std::snprintf(line1, sizeof line1,
-                    "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
-                    p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends,
-                    m.length_m);
-    else
-      std::snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
-    fig.text_fitted(line1, x0 + 60, y0 + 20, 15,
-                    p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
-    fig.text_fitted(describe_order(p.plan), x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
-    if (!p.extra.empty())
-      fig.text_fitted(p.extra, x0 + 60, y0 + 54, 12, palette::kAxis, cell_w - 80);
+    draw_order_numbers(fig, t, g, p);
+    draw_panel_text(fig, p, x0, y0, cell_w);
   }
   listed(true, palette::kStart, "start");
   listed(true, palette::kCharger, "charger");
-  fig.legend(20, 86, legend, legend_columns, 170);
+  fig.legend(20, 86, listed.entries, legend_columns, 170);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

@@ -29,6 +29,17 @@ struct LegendEntry {
   Swatch swatch = Swatch::kBar;
 };
 
+/// A legend of what panels drew: an entry only when its layer was drawn, each label once.
+class UniqueLegend {
+ public:
+  void operator()(bool drawn, Rgb colour, const std::string& label) {
+    for (const LegendEntry& e : entries)
+      if (e.label == label) return;
+    if (drawn) entries.push_back({colour, label});
+  }
+  std::vector<LegendEntry> entries;
+};
+
 /// What a finished figure put where, for tests: every text's box, every legend entry and the
 /// boxes legends and insets cover (a legend swatch is not evidence that its layer was drawn).
 struct FigureLayout {
