@@ -237,84 +237,98 @@ void DockingController::note_clear(double dt_s) {
   clear_time_s_ += dt_s;
 }
 
+DockingCommand DockingController::travel(const DockingInput& in) {
+  DockingCommand out;
+  TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
+  // Slower when unsure where it is: the same arc, at a share of the speed.
+  const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
+  t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};
+  out.cross_track_error_m = t.cross_track_error_m;
+  out.twist = t.twist;
+  // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
+  const double v = std::max(std::fabs(t.twist.v_mps), std::fabs(in.speed_mps));
+  // Never beyond the corner where it will stop and turn in place: a straight arc past it
+  // would clip what the path itself turns away from.
+  const double braking = v * v / (2.0 * params_.max_decel_mps2);
+  const double ahead =
+      std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
+  // Slow (starting or slowing) robots take longer to get there: never assume less than
+  // a walking pace's worth of time for the obstacles to move.
+  const double travel_speed =
+      std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
+  if (!arc_clear(in.pose, t.twist, travel_speed, ahead,
+                 params_.footprint_radius_m + params_.safety_margin_m, in.nearby_obstacles)) {
+    hold_blocked(in, t, out);
+    return out;
+  }
+  blocked_time_s_ = 0;
+  was_blocked_ = false;
+  clear_time_s_ += in.dt_s;
+  if (std::fabs(t.twist.omega_radps) < 0.05)
+    straight_run_m_ += t.twist.v_mps * in.dt_s;
+  else
+    straight_run_m_ = 0;
+  if (t.goal_reached) {
+    // At the staging pose the map's charger is placed in the odometry frame, once.
+    dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
+    phase_ = DockPhase::kAlign;
+    dock_placed_ = true;
+    out.twist = {};
+  }
+  return out;
+}
+
+void DockingController::hold_blocked(const DockingInput& in, const TrackingCommand& t,
+                                     DockingCommand& out) {
+  // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
+  // check with it; a go of less than a second between two blocks is the same stop.
+  note_blocked();
+  out.twist = {};
+  out.blocked = true;
+  // Stopped in something's way (it does not yield): back out along the stretch just driven.
+  const bool threatened = position_threatened(
+      in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
+      in.nearby_obstacles, params_.yield_horizon_s);
+  const Twist back{-params_.yield_speed_mps, 0.0};
+  if (straight_run_m_ > 0.05 && threatened && guard(in, back, false)) {
+    // ... only while what it senses leaves that stretch clear (a person may be behind too).
+    out.twist = back;
+    straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
+  } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
+    // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
+    // so that the next arc is straight, not one that bulges into what blocked the curve.
+    out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps,
+                                 params_.align_speed_radps)};
+  }
+  blocked_time_s_ += in.dt_s;
+  if (blocked_time_s_ >= params_.replan_after_s) {
+    out.replan_requested = true;
+    blocked_time_s_ = 0;
+  }
+}
+
+DockingCommand DockingController::align(const DockingInput& in) {
+  DockingCommand out;
+  if (yield(in, out)) return out;  // someone walking at the robot while it turns: out of the way
+  const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
+  if (std::fabs(err) <= params_.align_tolerance_rad) {
+    phase_ = DockPhase::kApproach;
+    approach_time_s_ = 0;
+  } else {
+    out.twist = {0.0, std::clamp(2.0 * err, -params_.align_speed_radps, params_.align_speed_radps)};
+  }
+  return out;
+}
+
 DockingCommand DockingController::decide(const DockingInput& in) {
   DockingCommand out;
   switch (phase_) {
-    case DockPhase::kTravel: {
-      TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
-      // Slower when unsure where it is: the same arc, at a share of the speed.
-      const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
-      t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};
-      out.cross_track_error_m = t.cross_track_error_m;
-      out.twist = t.twist;
-      // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
-      const double v = std::max(std::fabs(t.twist.v_mps), std::fabs(in.speed_mps));
-      // Never beyond the corner where it will stop and turn in place: a straight arc past it
-      // would clip what the path itself turns away from.
-      const double braking = v * v / (2.0 * params_.max_decel_mps2);
-      const double ahead =
-          std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
-      // Slow (starting or slowing) robots take longer to get there: never assume less than
-      // a walking pace's worth of time for the obstacles to move.
-      const double travel_speed =
-          std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
-      if (!arc_clear(in.pose, t.twist, travel_speed, ahead,
-                     params_.footprint_radius_m + params_.safety_margin_m, in.nearby_obstacles)) {
-        // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
-        // check with it; a go of less than a second between two blocks is the same stop.
-        note_blocked();
-        out.twist = {};
-        out.blocked = true;
-        // Stopped in something's way (it does not yield): back out along the stretch just driven.
-        const bool threatened = position_threatened(
-            in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
-            in.nearby_obstacles, params_.yield_horizon_s);
-        const Twist back{-params_.yield_speed_mps, 0.0};
-        if (straight_run_m_ > 0.05 && threatened && guard(in, back, false)) {
-          // ... only while what it senses leaves that stretch clear (a person may be behind too).
-          out.twist = back;
-          straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
-        } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
-          // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
-          // so that the next arc is straight, not one that bulges into what blocked the curve.
-          out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps,
-                                       params_.align_speed_radps)};
-        }
-        blocked_time_s_ += in.dt_s;
-        if (blocked_time_s_ >= params_.replan_after_s) {
-          out.replan_requested = true;
-          blocked_time_s_ = 0;
-        }
-        break;
-      }
-      blocked_time_s_ = 0;
-      was_blocked_ = false;
-      clear_time_s_ += in.dt_s;
-      if (std::fabs(t.twist.omega_radps) < 0.05)
-        straight_run_m_ += t.twist.v_mps * in.dt_s;
-      else
-        straight_run_m_ = 0;
-      if (t.goal_reached) {
-        // At the staging pose the map's charger is placed in the odometry frame, once.
-        dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
-        phase_ = DockPhase::kAlign;
-        dock_placed_ = true;
-        out.twist = {};
-      }
+    case DockPhase::kTravel:
+      out = travel(in);
       break;
-    }
-    case DockPhase::kAlign: {
-      if (yield(in, out)) break;  // someone walking at the robot while it turns: out of the way
-      const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
-      if (std::fabs(err) <= params_.align_tolerance_rad) {
-        phase_ = DockPhase::kApproach;
-        approach_time_s_ = 0;
-      } else {
-        out.twist = {0.0,
-                     std::clamp(2.0 * err, -params_.align_speed_radps, params_.align_speed_radps)};
-      }
+    case DockPhase::kAlign:
+      out = align(in);
       break;
-    }
     case DockPhase::kApproach:
       out = approach(in);
       break;

@@ -130,6 +130,13 @@ class DockingController {
  private:
   DockingCommand step_phase(const DockingInput& in);
   DockingCommand decide(const DockingInput& in);
+  /// Along the path by pure pursuit, stopping short of what moves into the arc ahead.
+  DockingCommand travel(const DockingInput& in);
+  /// Stopped for something in the way: back out of a threat, or face the carrot; a replan asked
+  /// for when it lasts.
+  void hold_blocked(const DockingInput& in, const TrackingCommand& t, DockingCommand& out);
+  /// Turning in place onto the dock's axis.
+  DockingCommand align(const DockingInput& in);
   DockingCommand approach(const DockingInput& in);
   DockingCommand recover(const DockingInput& in);
   /// Backs straight away from a moving obstacle about to reach the robot, if the way back is

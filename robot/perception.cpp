@@ -187,7 +187,7 @@ bool Perceiver::relocalize(const LidarScan& scan) {
   return true;  // the local update refines the match
 }
 
-const Perception& Perceiver::update(const SensorReadings& r) {
+void Perceiver::take_readings(const SensorReadings& r) {
   now_.t_s = r.t_s;
   now_.dt_s = r.dt_s;
   now_.odom_pose = r.odom_pose;
@@ -200,20 +200,42 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   odom_history_.emplace_back(r.t_s, r.odom_pose);
   while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0)
     odom_history_.pop_front();
+}
 
-  if (r.oracle) {
-    now_.pose = r.oracle->pose_fix.value_or(r.odom_pose);
-    now_.obstacles = known_actors(*r.oracle, now_.pose, p_.range_m);
-    now_.field = map_near(map_, now_.pose.position(), p_.field_range_m);
-    for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
-    now_.charger_in_robot = r.charger ? std::optional(r.charger->dock_in_robot) : std::nullopt;
-    if (r.oracle->target) {
-      now_.target = r.oracle->target->box.center();
-      now_.target_velocity = r.oracle->target->velocity;
-    }
-    return now_;
+const Perception& Perceiver::update_oracle(const SensorReadings& r) {
+  now_.pose = r.oracle->pose_fix.value_or(r.odom_pose);
+  now_.obstacles = known_actors(*r.oracle, now_.pose, p_.range_m);
+  now_.field = map_near(map_, now_.pose.position(), p_.field_range_m);
+  for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
+  now_.charger_in_robot = r.charger ? std::optional(r.charger->dock_in_robot) : std::nullopt;
+  if (r.oracle->target) {
+    now_.target = r.oracle->target->box.center();
+    now_.target_velocity = r.oracle->target->velocity;
   }
+  return now_;
+}
 
+bool Perceiver::turn_slipped(const SensorReadings& r) {
+  // Slip: the encoders' turn against the gyro's, averaged over a window so that the encoders'
+  // noise does not pass for it; or a scan correction beyond what the prediction allows.
+  const double encoder_turn = geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_);
+  odom_yaw_before_ = r.odom_pose.yaw;
+  if (r.dt_s > 0) {
+    const double gap = encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps()) * r.dt_s;
+    turn_gap_.emplace_back(r.dt_s, gap);
+    turn_gap_sum_ += gap;
+    turn_gap_time_ += r.dt_s;
+    while (turn_gap_time_ > p_.slip_window_s + 1e-9 && turn_gap_.size() > 1) {
+      turn_gap_sum_ -= turn_gap_.front().second;
+      turn_gap_time_ -= turn_gap_.front().first;
+      turn_gap_.pop_front();
+    }
+  }
+  return turn_gap_time_ >= 0.5 * p_.slip_window_s &&
+         std::fabs(turn_gap_sum_) > p_.slip_turn_radps * turn_gap_time_;
+}
+
+void Perceiver::localize(const SensorReadings& r) {
   // Wheels that did not turn at all: the robot stands still and the gyro reads its own bias.
   const bool wheels_still =
       r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
@@ -230,23 +252,7 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   const double correction = geom::distance(predicted.position(), ekf_.pose().position());
   // A correction within three sigmas of the prediction is the filter doing its work.
   const bool jumped = correction > std::max(p_.displaced_jump_m, 3.0 * predicted_sigma);
-  // Slip: the encoders' turn against the gyro's, averaged over a window so that the encoders'
-  // noise does not pass for it; or a scan correction beyond what the prediction allows.
-  const double encoder_turn = geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_);
-  odom_yaw_before_ = r.odom_pose.yaw;
-  if (r.dt_s > 0) {
-    const double gap = encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps()) * r.dt_s;
-    turn_gap_.emplace_back(r.dt_s, gap);
-    turn_gap_sum_ += gap;
-    turn_gap_time_ += r.dt_s;
-    while (turn_gap_time_ > p_.slip_window_s + 1e-9 && turn_gap_.size() > 1) {
-      turn_gap_sum_ -= turn_gap_.front().second;
-      turn_gap_time_ -= turn_gap_.front().first;
-      turn_gap_.pop_front();
-    }
-  }
-  const bool turn_slip = turn_gap_time_ >= 0.5 * p_.slip_window_s &&
-                         std::fabs(turn_gap_sum_) > p_.slip_turn_radps * turn_gap_time_;
+  const bool turn_slip = turn_slipped(r);
   now_.slipping = correction > std::max(p_.slip_jump_m, 3.0 * predicted_sigma) || turn_slip;
   const bool unexplained = ekf_.failed_matches() >= 2;
   const bool became_unexplained = unexplained && failed_before < 2;
@@ -259,6 +265,9 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   // on open ground, with nothing in range, it goes on slowly on odometry towards what it will see.)
   const bool lost_in_view = ekf_.health() == LocalizationHealth::kLost && unmatched_;
   now_.displaced = touched || jumped || unexplained || lost_in_view;
+}
+
+void Perceiver::publish_estimate() {
   now_.pose = ekf_.pose();
   now_.position_sigma_m = ekf_.position_sigma_m();
   now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();
@@ -267,20 +276,24 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       now_.pose_covariance[static_cast<std::size_t>(3 * i + j)] = covariance(i, j);
-  if (r.target_in_robot) {
-    // The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
-    const geom::Vec2 seen =
-        geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0})
-            .position();
-    if (!now_.target || r.dt_s <= 0) {
-      now_.target = seen;
-    } else {
-      const geom::Vec2 predicted = *now_.target + r.dt_s * now_.target_velocity;
-      const geom::Vec2 innovation = seen - predicted;
-      now_.target = predicted + 0.5 * innovation;
-      now_.target_velocity = now_.target_velocity + (0.1 / r.dt_s) * innovation;
-    }
+}
+
+void Perceiver::follow_target(const SensorReadings& r) {
+  // The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
+  const geom::Vec2 seen =
+      geom::compose(now_.pose, geom::Pose2{r.target_in_robot->x, r.target_in_robot->y, 0})
+          .position();
+  if (!now_.target || r.dt_s <= 0) {
+    now_.target = seen;
+  } else {
+    const geom::Vec2 predicted = *now_.target + r.dt_s * now_.target_velocity;
+    const geom::Vec2 innovation = seen - predicted;
+    now_.target = predicted + 0.5 * innovation;
+    now_.target_velocity = now_.target_velocity + (0.1 / r.dt_s) * innovation;
   }
+}
+
+void Perceiver::publish_obstacles(const SensorReadings& r) {
   if (r.scan) interpret_scan(*r.scan);
   // What stands is the layer's (tight to the returns, remembered); what moves is the tracks'
   // (a standing track's box is a guess about depth and jitters with the face it sees).
@@ -293,6 +306,15 @@ const Perception& Perceiver::update(const SensorReadings& r) {
   now_.field = static_field_;
   for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
   now_.charger_in_robot = r.charger ? carry_to_now(*r.charger) : std::nullopt;
+}
+
+const Perception& Perceiver::update(const SensorReadings& r) {
+  take_readings(r);
+  if (r.oracle) return update_oracle(r);
+  localize(r);
+  publish_estimate();
+  if (r.target_in_robot) follow_target(r);
+  publish_obstacles(r);
   return now_;
 }
 

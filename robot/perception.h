@@ -122,6 +122,17 @@ class Perceiver {
   int relocalizations() const { return relocalizations_; }
 
  private:
+  /// The stages of update, in order.
+  void take_readings(const SensorReadings& r);
+  const Perception& update_oracle(const SensorReadings& r);
+  /// The EKF's prediction and correction, and what they say: displaced, slipping.
+  void localize(const SensorReadings& r);
+  /// The encoders' turn against the gyro's over the slip window (odometry noise averaged out).
+  bool turn_slipped(const SensorReadings& r);
+  void publish_estimate();
+  /// The beacon's fixes, smoothed; the velocity from their change (alpha-beta, as the tracker).
+  void follow_target(const SensorReadings& r);
+  void publish_obstacles(const SensorReadings& r);
   void interpret_scan(const LidarScan& scan);
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
   /// Wide estimate: match the scan globally; true when the filter may also update locally.
