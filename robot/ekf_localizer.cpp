@@ -174,6 +174,79 @@ void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
   P_ = 0.5 * (P_ + P_.transpose());
 }
 
+void EkfLocalizer::associate(const LidarScan& scan, const State& x, std::size_t stride) {
+  faces_.clear();
+  const geom::Pose2 matched_from = geom::compose({x(0), x(1), x(2)}, scan.mount);
+  const std::span<const geom::Vec2> all = directions_.in_world(scan, matched_from.yaw);
+  fan_.clear();
+  for (std::size_t i = 0; i < scan.ranges.size(); i += stride) fan_.push_back(all[i]);
+  map_.cast_fan(matched_from.position(), fan_, matched_from.yaw + scan.angle(0),
+                static_cast<double>(stride) * scan.angle_increment_rad, scan.max_range_m, hits_);
+  for (std::size_t k = 0; k < fan_.size(); ++k)
+    if (scan.valid(k * stride) && hits_[k])
+      faces_.push_back({k * stride, hits_[k]->point, hits_[k]->normal});
+}
+
+EkfLocalizer::ScanTerms EkfLocalizer::scan_terms(const LidarScan& scan, const State& xi,
+                                                 const Covariance& P0) {
+  ScanTerms terms;
+  Covariance& scan_info = terms.info;
+  State& gradient = terms.gradient;
+  int& used = terms.used;
+  int& expected = terms.expected;
+  const double r_var = p_.range_sigma_m * p_.range_sigma_m;
+  const geom::Pose2 robot{xi(0), xi(1), xi(2)};
+  const geom::Pose2 sensor = geom::compose(robot, scan.mount);
+  const geom::Vec2 mount_world = geom::rotate({scan.mount.x, scan.mount.y}, robot.yaw);
+  const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
+  for (const Face& f : faces_) {
+    const geom::Vec2 u = directions[f.beam];
+    const double nu = geom::dot(f.normal, u);
+    if (-nu < p_.min_incidence_cos) continue;  // grazing: the range jumps with the pose
+    const double predicted = geom::dot(f.normal, f.point - sensor.position()) / nu;
+    if (!(predicted > 0)) continue;
+    // Point-to-line: r = n.(q - s) / (n.u); dr/ds = -n / (n.u), dr/dphi = -r (n.u') / (n.u).
+    const geom::Vec2 dr_ds = (-1.0 / nu) * f.normal;
+    const geom::Vec2 u_perp{-u.y, u.x};
+    const double dr_dphi = -predicted * geom::dot(f.normal, u_perp) / nu;
+    Eigen::RowVector4d H;
+    H << dr_ds.x, dr_ds.y, geom::dot(dr_ds, {-mount_world.y, mount_world.x}) + dr_dphi, 0.0;
+    const double innovation = scan.ranges[f.beam] - predicted;
+    // Gate against the prior's spread, moved to this iterate.
+    const double s = (H * P0 * H.transpose())(0, 0) + r_var;
+    const bool outlier =
+        innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m);
+    // A return short of the mapped face: something the map lacks stands in front of it (a
+    // box, a person). It neither confirms the map nor contradicts it (the beam model's
+    // "unexpected object"); only a return from beyond a mapped face contradicts it. Counted
+    // against the match, a box beside the robot in an open yard would fail every scan.
+    if (outlier && innovation < 0) continue;
+    ++expected;
+    if (outlier) continue;
+    scan_info += H.transpose() * H / r_var;
+    gradient += H.transpose() * innovation / r_var;
+    ++used;
+  }
+  return terms;
+}
+
+void EkfLocalizer::check_consistency(const State& x0, const Covariance& P0, int kept) {
+  // Consistency: the correction against the spread the prior and the update predict for it,
+  // dx' (P0 - P1)^+ dx, chi-square with as many degrees of freedom as directions updated.
+  State correction = x_ - x0;
+  correction(2) = geom::wrap_angle(correction(2));
+  const Eigen::Matrix3d spread = (P0 - P_).topLeftCorner<3, 3>();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(spread);
+  const Eigen::Vector3d along = es.eigenvectors().transpose() * correction.head<3>();
+  double nis = 0;
+  int dof = 0;
+  const double floor = 1e-9 * std::max(es.eigenvalues().maxCoeff(), 1e-12);
+  for (int i = 0; i < 3; ++i)
+    if (es.eigenvalues()(i) > floor) nis += along(i) * along(i) / es.eigenvalues()(i), ++dof;
+  dof = std::min(dof, kept);
+  if (dof > 0) record_nis(nis, dof);
+}
+
 double EkfLocalizer::correct(const LidarScan& scan) {
   // Beams spread evenly over the scan, each matched to the mapped face it meets from the prior
   // pose by one fan of ray casts; the iterations move the pose against those faces' lines, as a
@@ -183,112 +256,46 @@ double EkfLocalizer::correct(const LidarScan& scan) {
   const std::size_t n = scan.ranges.size();
   const std::size_t stride =
       std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1, p_.beams_used)));
-  struct Face {
-    std::size_t beam;
-    geom::Vec2 point, normal;  // a point on the mapped face and its outward normal
-  };
-  std::vector<Face> faces;
-  auto associate = [&](const State& x) {
-    faces.clear();
-    const geom::Pose2 matched_from = geom::compose({x(0), x(1), x(2)}, scan.mount);
-    const std::span<const geom::Vec2> all = directions_.in_world(scan, matched_from.yaw);
-    fan_.clear();
-    for (std::size_t i = 0; i < n; i += stride) fan_.push_back(all[i]);
-    map_.cast_fan(matched_from.position(), fan_, matched_from.yaw + scan.angle(0),
-                  static_cast<double>(stride) * scan.angle_increment_rad, scan.max_range_m, hits_);
-    for (std::size_t k = 0; k < fan_.size(); ++k)
-      if (scan.valid(k * stride) && hits_[k])
-        faces.push_back({k * stride, hits_[k]->point, hits_[k]->normal});
-  };
-  associate(x_);
-
+  associate(scan, x_, stride);
   const State x0 = x_;
   const Covariance P0 = P_;
   const Covariance P0_inv = P0.inverse();
-  const double r_var = p_.range_sigma_m * p_.range_sigma_m;
   State xi = x0;
-  Covariance scan_info = Covariance::Zero();
-  int used = 0, expected = 0, kept = 0;
+  ScanTerms terms;
+  int kept = 0;
   for (int iter = 0; iter < std::max(1, p_.iterations); ++iter) {
     // Minimises the prior's and the beams' squared errors about this iterate:
     // (P0^-1 + sum H'H/r) dx = P0^-1 (x0 - xi) + sum H' innovation / r,
     // the beams' terms kept only along the directions they constrain.
-    if (iter == 1) associate(xi);
+    if (iter == 1) associate(scan, xi, stride);
     State dx = x0 - xi;
     dx(2) = geom::wrap_angle(dx(2));
-    scan_info.setZero();
-    State gradient = State::Zero();
-    used = expected = 0;
-    const geom::Pose2 robot{xi(0), xi(1), xi(2)};
-    const geom::Pose2 sensor = geom::compose(robot, scan.mount);
-    const geom::Vec2 mount_world = geom::rotate({scan.mount.x, scan.mount.y}, robot.yaw);
-    const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
-    for (const Face& f : faces) {
-      const geom::Vec2 u = directions[f.beam];
-      const double nu = geom::dot(f.normal, u);
-      if (-nu < p_.min_incidence_cos) continue;  // grazing: the range jumps with the pose
-      const double predicted = geom::dot(f.normal, f.point - sensor.position()) / nu;
-      if (!(predicted > 0)) continue;
-      // Point-to-line: r = n.(q - s) / (n.u); dr/ds = -n / (n.u), dr/dphi = -r (n.u') / (n.u).
-      const geom::Vec2 dr_ds = (-1.0 / nu) * f.normal;
-      const geom::Vec2 u_perp{-u.y, u.x};
-      const double dr_dphi = -predicted * geom::dot(f.normal, u_perp) / nu;
-      Eigen::RowVector4d H;
-      H << dr_ds.x, dr_ds.y, geom::dot(dr_ds, {-mount_world.y, mount_world.x}) + dr_dphi, 0.0;
-      const double innovation = scan.ranges[f.beam] - predicted;
-      // Gate against the prior's spread, moved to this iterate.
-      const double s = (H * P0 * H.transpose())(0, 0) + r_var;
-      const bool outlier =
-          innovation * innovation > std::max(p_.gate_chi2 * s, p_.gate_floor_m * p_.gate_floor_m);
-      // A return short of the mapped face: something the map lacks stands in front of it (a
-      // box, a person). It neither confirms the map nor contradicts it (the beam model's
-      // "unexpected object"); only a return from beyond a mapped face contradicts it. Counted
-      // against the match, a box beside the robot in an open yard would fail every scan.
-      if (outlier && innovation < 0) continue;
-      ++expected;
-      if (outlier) continue;
-      scan_info += H.transpose() * H / r_var;
-      gradient += H.transpose() * innovation / r_var;
-      ++used;
-    }
-    if (expected < p_.min_informative_beams || used < 3) break;
-    kept = keep_constrained(scan_info, gradient, p_.constraint_sigma_m);
+    terms = scan_terms(scan, xi, P0);
+    if (terms.expected < p_.min_informative_beams || terms.used < 3) break;
+    kept = keep_constrained(terms.info, terms.gradient, p_.constraint_sigma_m);
     if (kept == 0) break;
-    const Covariance info = P0_inv + scan_info;
-    const State step = info.ldlt().solve(P0_inv * dx + gradient);
+    const Covariance info = P0_inv + terms.info;
+    const State step = info.ldlt().solve(P0_inv * dx + terms.gradient);
     xi += step;
     xi(2) = geom::wrap_angle(xi(2));
     if (step.head<2>().norm() < 1e-4 && std::fabs(step(2)) < 1e-5) break;
   }
-  informative_ = expected >= p_.min_informative_beams;
+  informative_ = terms.expected >= p_.min_informative_beams;
   if (!informative_) {
     // Open ground: nothing to match. Odometry and the gyro carry the estimate on.
     constrained_ = 0;
     update_health();
     return 0.0;
   }
-  const double inliers = static_cast<double>(used) / static_cast<double>(expected);
-  if (used >= 3 && kept > 0 && inliers >= p_.degraded_inlier_fraction) {
+  const double inliers = static_cast<double>(terms.used) / static_cast<double>(terms.expected);
+  if (terms.used >= 3 && kept > 0 && inliers >= p_.degraded_inlier_fraction) {
     x_ = xi;
-    P_ = (P0_inv + scan_info).inverse();
+    P_ = (P0_inv + terms.info).inverse();
     P_ = 0.5 * (P_ + P_.transpose());
     constrained_ = kept;
     failed_matches_ = 0;
-    // Consistency: the correction against the spread the prior and the update predict for it,
-    // dx' (P0 - P1)^+ dx, chi-square with as many degrees of freedom as directions updated.
-    State correction = x_ - x0;
-    correction(2) = geom::wrap_angle(correction(2));
-    const Eigen::Matrix3d spread = (P0 - P_).topLeftCorner<3, 3>();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(spread);
-    const Eigen::Vector3d along = es.eigenvectors().transpose() * correction.head<3>();
-    double nis = 0;
-    int dof = 0;
-    const double floor = 1e-9 * std::max(es.eigenvalues().maxCoeff(), 1e-12);
-    for (int i = 0; i < 3; ++i)
-      if (es.eigenvalues()(i) > floor) nis += along(i) * along(i) / es.eigenvalues()(i), ++dof;
-    dof = std::min(dof, kept);
-    if (dof > 0) record_nis(nis, dof);
-  } else if (kept > 0 || used < 3) {
+    check_consistency(x0, P0, kept);
+  } else if (kept > 0 || terms.used < 3) {
     ++failed_matches_;
   }
   update_health();

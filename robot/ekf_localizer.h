@@ -98,6 +98,23 @@ class EkfLocalizer {
   void reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance);
 
  private:
+  /// A beam matched to the mapped face it meets: a point on the face and its outward normal.
+  struct Face {
+    std::size_t beam;
+    geom::Vec2 point, normal;
+  };
+  /// The scan's information and gradient about an iterate, from the faces' point-to-line errors.
+  struct ScanTerms {
+    Covariance info = Covariance::Zero();
+    State gradient = State::Zero();
+    int used = 0;      // beams in the update
+    int expected = 0;  // beams that should have met their face (returns short of it left out)
+  };
+  /// Every stride-th beam matched to its mapped face from pose x, by one fan of ray casts.
+  void associate(const LidarScan& scan, const State& x, std::size_t stride);
+  ScanTerms scan_terms(const LidarScan& scan, const State& xi, const Covariance& P0);
+  /// The correction against the spread the prior and the update predict for it (NIS).
+  void check_consistency(const State& x0, const Covariance& P0, int kept);
   void update_health();
   void record_nis(double nis, int dof);
   EkfParams p_;
@@ -116,6 +133,7 @@ class EkfLocalizer {
   BeamDirections directions_;  // scratch, reused scan to scan
   std::vector<geom::Vec2> fan_;
   std::vector<std::optional<RayHit>> hits_;
+  std::vector<Face> faces_;
 };
 
 }  // namespace plantsim::robot
