@@ -118,17 +118,20 @@ double ScanMatcher::likelihood(geom::Vec2 p) const {
               static_cast<long>(std::floor((p.y - origin_.y) / res_)));
 }
 
-std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior,
-                                            const MatchWindow& window) const {
-  // The returns in the robot frame, spread evenly over the scan.
+namespace {
+
+/// The valid returns in the robot frame, at most `max_points` spread evenly over the scan, and
+/// the farthest one's distance; none when fewer than 10 are valid.
+std::optional<std::vector<geom::Vec2>> returns_in_robot(const LidarScan& scan, int max_points,
+                                                        double& reach) {
   std::vector<geom::Vec2> points;
   std::vector<std::size_t> valid;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i)
     if (scan.valid(i)) valid.push_back(i);
   if (valid.size() < 10) return std::nullopt;
   const std::size_t stride =
-      std::max<std::size_t>(1, valid.size() / static_cast<std::size_t>(std::max(1, p_.max_points)));
-  double reach = 0;
+      std::max<std::size_t>(1, valid.size() / static_cast<std::size_t>(std::max(1, max_points)));
+  reach = 0;
   for (std::size_t k = 0; k < valid.size(); k += stride) {
     const std::size_t i = valid[k];
     const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
@@ -136,7 +139,12 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
         geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
     reach = std::max(reach, geom::norm(points.back()));
   }
-  const double n_points = static_cast<double>(points.size());
+  return points;
+}
+
+}  // namespace
+
+ScanMatcher::SearchSteps ScanMatcher::search_steps(const MatchWindow& window, double reach) const {
   // Rotation steps that move the farthest return by about one cell.
   const long b = std::max(1, p_.block);
   long n_xy = static_cast<long>(std::ceil(window.xy_m / res_));
@@ -147,9 +155,22 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
   dyaw =
       std::min(p_.max_yaw_step_rad,
                std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, double(budget) / blocks(n_xy))));
-  long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
+  const long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
   while ((2 * n_yaw + 1) * blocks(n_xy) > budget && n_xy > b) n_xy = n_xy * 3 / 4;
+  return {b, n_xy, n_yaw, dyaw};
+}
 
+std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior,
+                                            const MatchWindow& window) const {
+  double reach = 0;
+  const std::optional<std::vector<geom::Vec2>> returns =
+      returns_in_robot(scan, p_.max_points, reach);
+  if (!returns) return std::nullopt;
+  const std::vector<geom::Vec2>& points = *returns;
+  const double n_points = static_cast<double>(points.size());
+  const SearchSteps steps = search_steps(window, reach);
+  const long b = steps.b, n_xy = steps.n_xy, n_yaw = steps.n_yaw;
+  const double dyaw = steps.dyaw;
   struct Candidate {
     double bound;
     long yaw_step, i, j;  // block's first translation

@@ -61,6 +61,13 @@ class ScanMatcher {
   double likelihood(geom::Vec2 p) const;
 
  private:
+  /// The search's grid: translation blocks of b cells, n_xy cells and n_yaw rotation steps of
+  /// dyaw each way, bounded in work (coarser rotation for wide windows, then a narrower window).
+  struct SearchSteps {
+    long b, n_xy, n_yaw;
+    double dyaw;
+  };
+  SearchSteps search_steps(const MatchWindow& window, double reach) const;
   double fine(long i, long j) const {
     return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
   }
