@@ -100,14 +100,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("compare", "Several planners on one world, side by side, with a report");
   auto opt = std::make_shared<CompareOptions>();
-  cmd->add_option("world", opt->world,
-                  "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
-      ->required();
-  cmd->add_option(
-      "--scen", opt->scen,
-      "For a MovingAI .map: the .scen file whose query gives the start and the charger");
-  cmd->add_option("--query", opt->query, "That query's number, from 0")
-      ->check(CLI::Range(0, 100000000));
+  add_world_options(cmd, opt->world, opt->scen, opt->query);
   std::vector<std::string> choices = planner::planner_names();
   choices.push_back(kFieldEntry);
   cmd->add_option("--planners", opt->planners,

@@ -89,14 +89,7 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
 std::function<int()> add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Simulate one docking episode and write its results");
   auto opt = std::make_shared<RunCommandOptions>();
-  cmd->add_option("world", opt->world,
-                  "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
-      ->required();
-  cmd->add_option(
-      "--scen", opt->scen,
-      "For a MovingAI .map: the .scen file whose query gives the start and the charger");
-  cmd->add_option("--query", opt->query, "That query's number, from 0")
-      ->check(CLI::Range(0, 100000000));
+  add_world_options(cmd, opt->world, opt->scen, opt->query);
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");

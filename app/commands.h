@@ -14,6 +14,10 @@ inline constexpr int kExitBadInput = 2;
 /// "plantsim SUB ARGS..." as typed (positional arguments and the options given), for reports.
 std::string command_line(const CLI::App* sub);
 
+/// The world argument of `run` and `compare` (any format the loaders read) with the MovingAI
+/// query that gives a .map its start and charger.
+void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int& query);
+
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);

@@ -26,6 +26,16 @@ std::string shell_word(const std::string& word) {
 
 }  // namespace
 
+void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int& query) {
+  cmd->add_option("world", world,
+                  "World file: plantsim JSON, a plain world, a ROS map YAML or a MovingAI .map")
+      ->required();
+  cmd->add_option(
+      "--scen", scen,
+      "For a MovingAI .map: the .scen file whose query gives the start and the charger");
+  cmd->add_option("--query", query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
+}
+
 std::string command_line(const CLI::App* sub) {
   // Re-runs exactly: each option once, flags without values, values quoted for the shell.
   std::string line = "plantsim";

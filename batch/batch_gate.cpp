@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "batch/wilson_interval.h"
+#include "render/report.h"
 
 namespace plantsim::batch {
 const char* statistic_name(GateStatistic s) {
@@ -22,28 +23,16 @@ bool matches(const GateRule& r, const ConfigurationVerdict& v) {
          (r.fault.empty() || r.fault == v.fault);
 }
 
+// HTML's escapes, then what XML also escapes in attributes, and no control characters but tab
+// and newline (XML 1.0 refuses them).
 std::string xml_escaped(const std::string& s) {
   std::string out;
-  for (unsigned char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c < 0x20 && c != '\n' && c != '\t' ? '?' : static_cast<char>(c);
-    }
+  for (const char c : render::html_escape(s)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\'')
+      out += "&apos;";
+    else
+      out += u < 0x20 && c != '\n' && c != '\t' ? '?' : c;
   }
   return out;
 }
