@@ -3,6 +3,7 @@
 // Predicates that decide geometry questions live in predicates.h, not here.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -70,6 +71,18 @@ struct Rect {
   }
   friend bool operator==(const Rect&, const Rect&) = default;
 };
+
+/// Whether the closed rectangle `outer` holds all of `inner` (exact comparisons).
+inline bool holds(const Rect& outer, const Rect& inner) {
+  return inner.xmin >= outer.xmin && inner.xmax <= outer.xmax && inner.ymin >= outer.ymin &&
+         inner.ymax <= outer.ymax;
+}
+
+/// The part of r within `to` (empty, with xmin > xmax or ymin > ymax, when they do not meet).
+inline Rect clipped(const Rect& r, const Rect& to) {
+  return {std::max(r.xmin, to.xmin), std::max(r.ymin, to.ymin), std::min(r.xmax, to.xmax),
+          std::min(r.ymax, to.ymax)};
+}
 
 /// The point of the closed rectangle nearest to p (p itself when inside).
 inline Vec2 closest_point(const Rect& r, Vec2 p) {

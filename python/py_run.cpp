@@ -37,6 +37,27 @@ py::array_t<double> scan_angles(const robot::LidarScan& s) {
   return a;
 }
 
+py::array_t<double> covariance_matrix(const Observation& o) {
+  py::array_t<double> a({3, 3});
+  auto v = a.mutable_unchecked<2>();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      v(i, j) = o.perception.pose_covariance[static_cast<std::size_t>(3 * i + j)];
+  return a;
+}
+
+py::array_t<double> tracked_obstacles(const Observation& o) {
+  py::array_t<double> a({static_cast<py::ssize_t>(o.perception.obstacles.size()), py::ssize_t{6}});
+  auto v = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < o.perception.obstacles.size(); ++i) {
+    const auto& b = o.perception.obstacles[i];
+    const auto k = static_cast<py::ssize_t>(i);
+    v(k, 0) = b.box.xmin, v(k, 1) = b.box.ymin, v(k, 2) = b.box.xmax, v(k, 3) = b.box.ymax;
+    v(k, 4) = b.velocity.x, v(k, 5) = b.velocity.y;
+  }
+  return a;
+}
+
 void bind_observation(py::module_& m) {
   py::class_<Observation, std::shared_ptr<Observation>>(
       m, "Observation",
@@ -46,17 +67,7 @@ void bind_observation(py::module_& m) {
       .def_property_readonly(
           "pose", [](const Observation& o) { return pose_array(o.perception.pose); },
           "estimated [x, y, yaw] in the map frame")
-      .def_property_readonly(
-          "covariance",
-          [](const Observation& o) {
-            py::array_t<double> a({3, 3});
-            auto v = a.mutable_unchecked<2>();
-            for (int i = 0; i < 3; ++i)
-              for (int j = 0; j < 3; ++j)
-                v(i, j) = o.perception.pose_covariance[static_cast<std::size_t>(3 * i + j)];
-            return a;
-          },
-          "3 x 3 covariance of (x, y, yaw)")
+      .def_property_readonly("covariance", &covariance_matrix, "3 x 3 covariance of (x, y, yaw)")
       .def_property_readonly("position_sigma",
                              [](const Observation& o) { return o.perception.position_sigma_m; })
       .def_property_readonly(
@@ -93,20 +104,7 @@ void bind_observation(py::module_& m) {
           "staging", [](const Observation& o) { return pose_array(o.staging); },
           "the staging pose on the map: docking takes over within the goal tolerance of it")
       .def_property_readonly(
-          "obstacles",
-          [](const Observation& o) {
-            py::array_t<double> a(
-                {static_cast<py::ssize_t>(o.perception.obstacles.size()), py::ssize_t{6}});
-            auto v = a.mutable_unchecked<2>();
-            for (std::size_t i = 0; i < o.perception.obstacles.size(); ++i) {
-              const auto& b = o.perception.obstacles[i];
-              const auto k = static_cast<py::ssize_t>(i);
-              v(k, 0) = b.box.xmin, v(k, 1) = b.box.ymin, v(k, 2) = b.box.xmax,
-                   v(k, 3) = b.box.ymax;
-              v(k, 4) = b.velocity.x, v(k, 5) = b.velocity.y;
-            }
-            return a;
-          },
+          "obstacles", &tracked_obstacles,
           "N x 6 tracked obstacles off the map: [xmin, ymin, xmax, ymax, vx, vy]")
       .def_property_readonly(
           "charger",

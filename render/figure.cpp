@@ -176,13 +176,25 @@ PixelBox Figure::legend(double x, double y, const std::vector<LegendEntry>& entr
   return box;
 }
 
-void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
-                  const std::string& y_label, const PlotOptions& options) {
+namespace {
+
+// The data range a plot shows: every finite x (even where y is undefined), y from zero or below,
+// never less than the options' minimum span, padded at the top.
+struct PlotScale {
+  double xmin, xmax, ymin, ymax;
+  bool empty;  // no finite y at all
+  Vec2 to_pixel(const PixelBox& box, double x, double y) const {
+    return Vec2{box.left + box.width() * (x - xmin) / (xmax - xmin),
+                box.bottom - box.height() * (y - ymin) / (ymax - ymin)};
+  }
+};
+
+PlotScale plot_scale(const std::vector<Figure::Series>& series, double min_y_span) {
   double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
-  for (const Series& s : series)
+  for (const Figure::Series& s : series)
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
       if (!std::isfinite(s.x[i])) continue;
-      xmin = std::min(xmin, s.x[i]);  // the whole time range, even where y is undefined
+      xmin = std::min(xmin, s.x[i]);
       xmax = std::max(xmax, s.x[i]);
       if (!std::isfinite(s.y[i])) continue;
       ymin = std::min(ymin, s.y[i]);
@@ -193,23 +205,27 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
   if (!(ymax > ymin)) ymin = std::isfinite(ymin) ? ymin - 1 : 0, ymax = ymin + 2;
   ymin = std::min(ymin, 0.0);
   // Rounding noise around zero must not be blown up into a full-height signal.
-  if (ymax - ymin < options.min_y_span) ymax = ymin + options.min_y_span;
-  const double pad = 0.05 * (ymax - ymin);
-  ymax += pad;
-  auto px = [&](double x, double y) {
-    return Vec2{box.left + box.width() * (x - xmin) / (xmax - xmin),
-                box.bottom - box.height() * (y - ymin) / (ymax - ymin)};
-  };
+  if (ymax - ymin < min_y_span) ymax = ymin + min_y_span;
+  ymax += 0.05 * (ymax - ymin);
+  return {xmin, xmax, ymin, ymax, empty};
+}
+
+}  // namespace
+
+void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
+                  const std::string& y_label, const PlotOptions& options) {
+  const PlotScale scale = plot_scale(series, options.min_y_span);
+  auto px = [&](double x, double y) { return scale.to_pixel(box, x, y); };
   for (const Band& b : options.bands) {
-    const double x0 = px(std::clamp(b.x0, xmin, xmax), ymin).x,
-                 x1 = px(std::clamp(b.x1, xmin, xmax), ymin).x;
+    const double x0 = px(std::clamp(b.x0, scale.xmin, scale.xmax), scale.ymin).x,
+                 x1 = px(std::clamp(b.x1, scale.xmin, scale.xmax), scale.ymin).x;
     if (x1 > x0)
       canvas_.pixel_line({0.5 * (x0 + x1), box.top}, {0.5 * (x0 + x1), box.bottom}, x1 - x0,
                          b.colour);
   }
   canvas_.pixel_line({box.left, box.top}, {box.right, box.top}, 1.0, palette::kGrid);
-  for (double y : nice_ticks(ymin, ymax, 4)) {
-    const double py = px(xmin, y).y;
+  for (double y : nice_ticks(scale.ymin, scale.ymax, 4)) {
+    const double py = px(scale.xmin, y).y;
     canvas_.pixel_line({box.left, py}, {box.right, py}, 1.0, palette::kGrid);
   }
   for (const Series& s : series) {
@@ -218,52 +234,60 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
       if (std::isfinite(s.y[i])) pts.push_back(px(s.x[i], s.y[i]));
     canvas_.pixel_polyline(pts, 1.6, s.colour);
   }
+  plot_axes(box, scale.xmin, scale.xmax, scale.ymin, scale.ymax);
+  text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14,
+       palette::kAxis, Anchor::kLeft, true);
+  if (!options.x_label.empty())
+    text(options.x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis,
+         Anchor::kCenter);
+  if (scale.empty && !options.note.empty())
+    text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13,
+         palette::kAxis, Anchor::kCenter);
+  if (options.legend) plot_legend(box, series, options.bands);
+}
+
+void Figure::plot_axes(const PixelBox& box, double xmin, double xmax, double ymin, double ymax) {
+  const PlotScale scale{xmin, xmax, ymin, ymax, false};
   canvas_.pixel_line({box.left, box.bottom}, {box.right, box.bottom}, 1.0, palette::kAxis);
   canvas_.pixel_line({box.left, box.bottom}, {box.left, box.top}, 1.0, palette::kAxis);
   const auto xs = nice_ticks(xmin, xmax, 8), ys = nice_ticks(ymin, ymax, 4);
   const double xstep = xs.size() > 1 ? xs[1] - xs[0] : 1.0,
                ystep = ys.size() > 1 ? ys[1] - ys[0] : 1.0;
   for (double x : xs) {
-    const Vec2 p = px(x, ymin);
+    const Vec2 p = scale.to_pixel(box, x, ymin);
     canvas_.pixel_line({p.x, box.bottom}, {p.x, box.bottom + 4}, 1.0, palette::kAxis);
     text(tick_label(x, xstep), p.x, box.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
   }
   for (double y : ys) {
-    const Vec2 p = px(xmin, y);
+    const Vec2 p = scale.to_pixel(box, xmin, y);
     canvas_.pixel_line({box.left - 4, p.y}, {box.left, p.y}, 1.0, palette::kAxis);
     text(tick_label(y, ystep), box.left - 7, p.y + 4, 12, palette::kAxis, Anchor::kRight);
   }
-  text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14,
-       palette::kAxis, Anchor::kLeft, true);
-  if (!options.x_label.empty())
-    text(options.x_label, 0.5 * (box.left + box.right), box.bottom + 32, 12, palette::kAxis,
-         Anchor::kCenter);
-  if (empty && !options.note.empty())
-    text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13,
-         palette::kAxis, Anchor::kCenter);
-  if (options.legend) {
-    // Entries right-aligned along the top edge, above the plot, last one at the right.
-    std::vector<LegendEntry> entries;
-    for (const Series& s : series) entries.push_back({s.colour, s.label});
-    std::vector<std::string> seen;
-    for (const Band& b : options.bands)
-      if (std::find(seen.begin(), seen.end(), b.label) == seen.end()) {
-        seen.push_back(b.label);
-        entries.push_back({b.colour, b.label});
-      }
-    TextRenderer& tr = shared_text_renderer();
-    double x = box.right;
-    for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
-      const TextBox m = tr.measure(it->label, 0, 0, 12);
-      x -= m.x1 - m.x0;
-      text(it->label, x, box.top - 8, 12, palette::kAxis);
-      x -= 26;
-      canvas_.pixel_line({x, box.top - 12}, {x + 20, box.top - 12}, 8.0, it->colour);
-      layout_.legend.push_back(*it);
-      x -= 14;
+}
+
+// Entries right-aligned along the top edge, above the plot, the last one at the right.
+void Figure::plot_legend(const PixelBox& box, const std::vector<Series>& series,
+                         const std::vector<Band>& bands) {
+  std::vector<LegendEntry> entries;
+  for (const Series& s : series) entries.push_back({s.colour, s.label});
+  std::vector<std::string> seen;
+  for (const Band& b : bands)
+    if (std::find(seen.begin(), seen.end(), b.label) == seen.end()) {
+      seen.push_back(b.label);
+      entries.push_back({b.colour, b.label});
     }
-    layout_.legend_boxes.push_back({x, box.top - 22, box.right, box.top - 2});
+  TextRenderer& tr = shared_text_renderer();
+  double x = box.right;
+  for (auto it = entries.rbegin(); it != entries.rend(); ++it) {
+    const TextBox m = tr.measure(it->label, 0, 0, 12);
+    x -= m.x1 - m.x0;
+    text(it->label, x, box.top - 8, 12, palette::kAxis);
+    x -= 26;
+    canvas_.pixel_line({x, box.top - 12}, {x + 20, box.top - 12}, 8.0, it->colour);
+    layout_.legend.push_back(*it);
+    x -= 14;
   }
+  layout_.legend_boxes.push_back({x, box.top - 22, box.right, box.top - 2});
 }
 
 Image Figure::finish() {

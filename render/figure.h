@@ -137,6 +137,9 @@ class Figure {
 
  private:
   void draw_swatch(double x, double y, const LegendEntry& e);
+  void plot_axes(const PixelBox& box, double xmin, double xmax, double ymin, double ymax);
+  void plot_legend(const PixelBox& box, const std::vector<Series>& series,
+                   const std::vector<Band>& bands);
   struct QueuedText {
     std::string s;
     double x, y;

@@ -23,16 +23,7 @@ NOT_YET_SPLIT = {
     ("planner/round/tangent_planner.cpp", "RoundTangentPlanner::plan"): 162,
     ("planner/vg/vg_overlay.cpp", "plan_with_added"): 140,
     ("planner/mesh/free_space_mesh.cpp", "FreeSpaceMesh::FreeSpaceMesh"): 118,
-    ("planner/maze/maze_planner.cpp", "MazePlanner::plan"): 103,
     ("geometry/ray_grid.cpp", "RayGrid::cast_fan"): 99,
-    ("planner/gcr/gcr_planner.cpp", "GcrPlanner::walk"): 93,
-    ("python/py_run.cpp", "bind_observation"): 91,
-    ("worlds/world_loader.cpp", "read_plantsim_schema"): 88,
-    ("render/figure.cpp", "Figure::plot"): 88,
-    ("planner/vg/vg_planner.cpp", "VisibilityGraphPlanner::lazy_astar"): 88,
-    ("planner/coverage/coverage_planner.cpp", "CoveragePlanner::plan"): 85,
-    ("planner/vg/visibility_graph.cpp", "VisibilityGraph::scan"): 83,
-    ("planner/coverage/order_lp.cpp", "OrderRelaxation::solve"): 83,
 }
 
 MODULES = ["app", "batch", "bench", "controller", "fuzz", "geometry", "planner", "python", "render",

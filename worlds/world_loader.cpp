@@ -244,16 +244,9 @@ std::string read_name(const json& doc, const FieldReader& in, const std::string&
   return name;
 }
 
-World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
-  in.keys(doc, "",
-          {"name", "comment", "description", "floor", "obstacles", "robot", "start", "charger",
-           "inflation_margin_m", "unmapped", "charger_map_offset", "moving_obstacles", "target",
-           "tunnel_maze"});
-  World w;
-  w.source = source;
-  w.name = read_name(doc, in, source);
+// The floor and the obstacles: given, or a tunnel maze's lattice (to which obstacles may be added).
+void read_floor_and_obstacles(const json& doc, const FieldReader& in, World& w) {
   if (doc.contains("tunnel_maze")) {
-    // The floor and the rock come from the lattice; further obstacles may be added.
     if (doc.contains("floor"))
       in.fail("floor", "a tunnel_maze world takes its floor from the lattice");
     w.maze = read_tunnel_maze(in, doc["tunnel_maze"]);
@@ -263,16 +256,18 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
       const std::vector<Rect> extra = in.rects(doc["obstacles"], "obstacles");
       w.obstacles.insert(w.obstacles.end(), extra.begin(), extra.end());
     }
-  } else {
-    const json& floor = in.member(doc, "floor", "");
-    in.keys(floor, "floor", {"xmin", "ymin", "xmax", "ymax"});
-    w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
-               in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
-    if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
-      in.fail("floor", "needs xmax > xmin and ymax > ymin (a negative or zero size)");
-    w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
+    return;
   }
+  const json& floor = in.member(doc, "floor", "");
+  in.keys(floor, "floor", {"xmin", "ymin", "xmax", "ymax"});
+  w.floor = {in.number(floor, "xmin", "floor"), in.number(floor, "ymin", "floor"),
+             in.number(floor, "xmax", "floor"), in.number(floor, "ymax", "floor")};
+  if (w.floor.xmax <= w.floor.xmin || w.floor.ymax <= w.floor.ymin)
+    in.fail("floor", "needs xmax > xmin and ymax > ymin (a negative or zero size)");
+  w.obstacles = in.rects(in.member(doc, "obstacles", ""), "obstacles");
+}
 
+void read_robot(const json& doc, const FieldReader& in, World& w) {
   const json& robot = in.member(doc, "robot", "");
   in.keys(robot, "robot",
           {"radius_m", "footprint", "wheel_base_m", "wheel_radius_m", "max_speed_mps",
@@ -294,8 +289,9 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot", 20.0);
   w.robot.max_accel_mps2 = in.positive(robot, "max_accel_mps2", "robot", 100.0);
   if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot", 100000.0);
+}
 
-  w.start = in.pose(in.member(doc, "start", ""), "start");
+void read_charger(const json& doc, const FieldReader& in, World& w) {
   w.charger = in.pose(in.member(doc, "charger", ""), "charger",
                       {"width_m", "depth_m", "staging_distance_m", "pad_travel_m"});
   const json& charger = doc["charger"];
@@ -311,9 +307,10 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
   if (charger.contains("staging_distance_m"))
     w.charger_spec.staging_distance_m =
         in.positive(charger, "staging_distance_m", "charger", 100.0);
-  if (doc.contains("inflation_margin_m"))
-    w.inflation_margin_m = in.bounded(doc, "inflation_margin_m", "", 0.0, 100.0);
-  read_map_mismatch(doc, in, w);
+}
+
+// What moves: scripted obstacles and the target a robot may be asked to follow.
+void read_movers(const json& doc, const FieldReader& in, World& w) {
   if (doc.contains("moving_obstacles")) {
     const json& list = doc["moving_obstacles"];
     if (!list.is_array()) in.fail("moving_obstacles", "expected an array");
@@ -330,6 +327,24 @@ World read_plantsim_schema(const json& doc, const FieldReader& in, const std::st
         in.fail("target.waypoints[" + std::to_string(k) + "]", "lies outside the floor");
     }
   }
+}
+
+World read_plantsim_schema(const json& doc, const FieldReader& in, const std::string& source) {
+  in.keys(doc, "",
+          {"name", "comment", "description", "floor", "obstacles", "robot", "start", "charger",
+           "inflation_margin_m", "unmapped", "charger_map_offset", "moving_obstacles", "target",
+           "tunnel_maze"});
+  World w;
+  w.source = source;
+  w.name = read_name(doc, in, source);
+  read_floor_and_obstacles(doc, in, w);
+  read_robot(doc, in, w);
+  w.start = in.pose(in.member(doc, "start", ""), "start");
+  read_charger(doc, in, w);
+  if (doc.contains("inflation_margin_m"))
+    w.inflation_margin_m = in.bounded(doc, "inflation_margin_m", "", 0.0, 100.0);
+  read_map_mismatch(doc, in, w);
+  read_movers(doc, in, w);
   return w;
 }
 

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "geometry/polyline.h"
@@ -32,6 +33,85 @@ CoverageMethod coverage_method(std::string_view n) {
   throw std::invalid_argument("not a coverage planner: " + std::string(n));
 }
 
+namespace {
+
+// Cell centres between the two points, keeping only where the heading changes.
+std::vector<Vec2> cell_path(const CoverageGrid& grid, const std::vector<Cell>& cells, Vec2 start,
+                            Vec2 goal) {
+  std::vector<Vec2> path{start};
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const bool straight =
+        i > 0 && i + 1 < cells.size() &&
+        cells[i].column - cells[i - 1].column == cells[i + 1].column - cells[i].column &&
+        cells[i].row - cells[i - 1].row == cells[i + 1].row - cells[i].row;
+    if (!straight) path.push_back(grid.centre(cells[i]));
+  }
+  path.push_back(goal);
+  return path;
+}
+
+// The document's metrics, the order's cost, and what the network or the exact search did.
+std::string coverage_note(const CoveragePlan& plan, CoverageMethod method) {
+  const CoverageMetrics& m = plan.metrics;
+  char note[400];
+  std::snprintf(note, sizeof note,
+                "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, "
+                "%d dead ends, "
+                "%.1f m from start to end cell",
+                static_cast<int>(plan.regions.size()), 100 * m.coverage, m.reachable_cells,
+                100 * m.repetition, m.turns, m.dead_ends, m.length_m);
+  std::string text = note;
+  if (method != CoverageMethod::kCells) {
+    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", plan.order_cost,
+                  plan.greedy_cost);
+    text += note;
+  }
+  if (method == CoverageMethod::kChnn || method == CoverageMethod::kPotts) {
+    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts",
+                  plan.network_valid, plan.network_restarts);
+    text += note;
+  }
+  if (plan.exact) {
+    if (!plan.exact->searched)
+      std::snprintf(note, sizeof note,
+                    "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
+                    static_cast<int>(plan.regions.size()));
+    else if (plan.exact->proven)
+      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)",
+                    plan.exact->seconds, static_cast<unsigned long long>(plan.exact->prefixes));
+    else
+      std::snprintf(note, sizeof note,
+                    "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
+                    plan.exact->seconds, plan.exact->lower_bound);
+    text += note;
+  }
+  return text;
+}
+
+}  // namespace
+
+// Covers from the start's cell to the goal's by the planner's method into last_; the reason when
+// it cannot.
+std::optional<std::string> CoveragePlanner::cover(const Cell& first, const Cell& last) {
+  if (!grid_.reachable(first)[grid_.index(last)])
+    return "the goal's cell cannot be reached from the covered area";
+  if (method_ == CoverageMethod::kCells) {
+    last_ = plan_cell_coverage(grid_, first, last, params_);
+  } else {
+    const RegionOrdering o = method_ == CoverageMethod::kChnn    ? RegionOrdering::kChnn
+                             : method_ == CoverageMethod::kPotts ? RegionOrdering::kPotts
+                             : method_ == CoverageMethod::kExact ? RegionOrdering::kExact
+                                                                 : RegionOrdering::kGreedy;
+    try {
+      last_ = plan_region_coverage(grid_, first, last, o, params_);
+    } catch (const std::invalid_argument& e) {  // too many sub-regions
+      return e.what();
+    }
+  }
+  if (!last_.ok) return last_.failure;
+  return std::nullopt;
+}
+
 PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
   if (last_query_ && last_query_->first == start && last_query_->second == goal)
     return last_result_;
@@ -42,76 +122,15 @@ PlanResult CoveragePlanner::plan(Vec2 start, Vec2 goal) {
     r.note = "no free coverage cell";
     return r;
   }
-  if (!grid_.reachable(*first)[grid_.index(*last)]) {
-    r.note = "the goal's cell cannot be reached from the covered area";
+  if (const auto failure = cover(*first, *last)) {
+    r.note = *failure;
     return r;
   }
-  if (method_ == CoverageMethod::kCells) {
-    last_ = plan_cell_coverage(grid_, *first, *last, params_);
-  } else {
-    const RegionOrdering o = method_ == CoverageMethod::kChnn    ? RegionOrdering::kChnn
-                             : method_ == CoverageMethod::kPotts ? RegionOrdering::kPotts
-                             : method_ == CoverageMethod::kExact ? RegionOrdering::kExact
-                                                                 : RegionOrdering::kGreedy;
-    try {
-      last_ = plan_region_coverage(grid_, *first, *last, o, params_);
-    } catch (const std::invalid_argument& e) {  // too many sub-regions
-      r.note = e.what();
-      return r;
-    }
-  }
-  if (!last_.ok) {
-    r.note = last_.failure;
-    return r;
-  }
-  const std::vector<Cell>& cells = last_.cells;
-  // Cell centres, keeping only where the heading changes.
-  std::vector<Vec2> path{start};
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const bool straight =
-        i > 0 && i + 1 < cells.size() &&
-        cells[i].column - cells[i - 1].column == cells[i + 1].column - cells[i].column &&
-        cells[i].row - cells[i - 1].row == cells[i + 1].row - cells[i].row;
-    if (!straight) path.push_back(grid_.centre(cells[i]));
-  }
-  path.push_back(goal);
   r.status = PlanStatus::kOk;
-  r.path = path;
-  r.length = geom::polyline_length(path);
-  const CoverageMetrics& m = last_.metrics;
-  char note[400];
-  std::snprintf(note, sizeof note,
-                "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, "
-                "%d dead ends, "
-                "%.1f m from start to end cell",
-                static_cast<int>(last_.regions.size()), 100 * m.coverage, m.reachable_cells,
-                100 * m.repetition, m.turns, m.dead_ends, m.length_m);
-  r.note = note;
-  if (method_ != CoverageMethod::kCells) {
-    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", last_.order_cost,
-                  last_.greedy_cost);
-    r.note += note;
-  }
-  if (method_ == CoverageMethod::kChnn || method_ == CoverageMethod::kPotts) {
-    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts",
-                  last_.network_valid, last_.network_restarts);
-    r.note += note;
-  }
-  if (last_.exact) {
-    if (!last_.exact->searched)
-      std::snprintf(note, sizeof note,
-                    "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
-                    static_cast<int>(last_.regions.size()));
-    else if (last_.exact->proven)
-      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)",
-                    last_.exact->seconds, static_cast<unsigned long long>(last_.exact->prefixes));
-    else
-      std::snprintf(note, sizeof note,
-                    "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
-                    last_.exact->seconds, last_.exact->lower_bound);
-    r.note += note;
-  }
-  r.stats.vertices = m.reachable_cells;
+  r.path = cell_path(grid_, last_.cells, start, goal);
+  r.length = geom::polyline_length(r.path);
+  r.note = coverage_note(last_, method_);
+  r.stats.vertices = last_.metrics.reachable_cells;
   r.stats.query_ms = util::ms_since(t0);
   last_query_ = {start, goal};
   last_result_ = r;

@@ -7,6 +7,10 @@
 // for coverage figures.
 #pragma once
 
+#include <optional>
+#include <string>
+#include <utility>
+
 #include "planner/coverage/coverage_params.h"
 #include "planner/coverage/coverage_plan.h"
 #include "planner/planner.h"
@@ -29,6 +33,7 @@ class CoveragePlanner : public Planner {
   CoverageMethod method() const { return method_; }
 
  private:
+  std::optional<std::string> cover(const Cell& first, const Cell& last);
   CoverageGrid grid_;
   std::string name_;
   CoverageMethod method_;

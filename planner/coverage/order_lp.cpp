@@ -10,6 +10,15 @@
 #include <memory>
 
 namespace plantsim::planner {
+
+// A column of the relaxation: one way between sweeps. Outside the anonymous namespace because
+// OrderRelaxation::Lp holds them.
+struct OrderWay {
+  int from_node, to_node;      // the start 0, sweeps, the end
+  int from_region, to_region;  // -1 the start, n the end
+  double cost;
+};
+
 namespace {
 
 constexpr int kMaxCutRounds = 200;
@@ -18,17 +27,11 @@ constexpr int kMaxCutRounds = 200;
 constexpr double kFlowScale = 1e9;
 constexpr double kCutSlack = 1e-5;
 
-struct Way {
-  int from_node, to_node;      // the start 0, sweeps, the end
-  int from_region, to_region;  // -1 the start, n the end
-  double cost;
-};
-
 using Graph = std::unique_ptr<glp_graph, decltype(&glp_delete_graph)>;
 
 // Sets of regions the relaxation leaves less than one unit out of: for every region, the source
 // side of a minimum cut between it and the end in the graph of regions, if below one.
-std::vector<std::vector<char>> violated_cuts(const std::vector<Way>& ways,
+std::vector<std::vector<char>> violated_cuts(const std::vector<OrderWay>& ways,
                                              const std::vector<double>& x, int n) {
   std::vector<double> share(static_cast<std::size_t>(n) * (n + 1), 0.0);
   for (std::size_t k = 0; k < ways.size(); ++k)
@@ -68,7 +71,7 @@ std::vector<std::vector<char>> violated_cuts(const std::vector<Way>& ways,
 
 struct OrderRelaxation::Lp {
   glp_prob* problem = glp_create_prob();
-  std::vector<Way> ways;
+  std::vector<OrderWay> ways;
   int n = 0, end = 0, start_row = 0;
   std::vector<std::vector<char>> cut_sides;
   std::vector<std::vector<int>> columns_out;  // per region + 1 (0: the start): its ways' columns
@@ -113,7 +116,7 @@ OrderRelaxation::OrderRelaxation(const SweepModel& m) : lp_(std::make_unique<Lp>
   lp.columns_out.assign(n + 1, {});
   for (std::size_t k = 0; k < lp.ways.size(); ++k) {
     const int col = static_cast<int>(k) + 1;
-    const Way& w = lp.ways[k];
+    const OrderWay& w = lp.ways[k];
     glp_set_col_bnds(p, col, GLP_DB, 0, 1);
     glp_set_obj_coef(p, col, w.cost);
     if (w.to_node != lp.end) put(w.to_region + 1, col, 1), put(n + w.to_node, col, 1);
@@ -130,6 +133,36 @@ OrderRelaxation::~OrderRelaxation() = default;
 
 int OrderRelaxation::cuts() const { return static_cast<int>(lp_->cut_sides.size()); }
 
+// Closes every way out of the start and the prefix's regions but the one the prefix takes
+// (and opens again those the previous prefix closed).
+void OrderRelaxation::close_all_but(const std::vector<int>& prefix) {
+  Lp& lp = *lp_;
+  for (int col : lp.closed) glp_set_col_bnds(lp.problem, col, GLP_DB, 0, 1);
+  lp.closed.clear();
+  for (std::size_t t = 0; t < prefix.size(); ++t) {
+    const int from = t == 0 ? SweepModel::kStart : prefix[t - 1];
+    for (int col : lp.columns_out[from + 1])
+      if (lp.ways[col - 1].to_region != prefix[t])
+        glp_set_col_bnds(lp.problem, col, GLP_FX, 0, 0), lp.closed.push_back(col);
+  }
+}
+
+namespace {
+
+// A subtour cut: at least one unit on the ways leaving the regions of `side`.
+void add_cut(glp_prob* p, const std::vector<OrderWay>& ways, const std::vector<char>& side) {
+  const int row = glp_add_rows(p, 1);
+  glp_set_row_bnds(p, row, GLP_LO, 1, 0);
+  std::vector<int> index{0};
+  std::vector<double> ones{0};
+  for (std::size_t k = 0; k < ways.size(); ++k)
+    if (ways[k].from_region >= 0 && side[ways[k].from_region] && !side[ways[k].to_region])
+      index.push_back(static_cast<int>(k) + 1), ones.push_back(1);
+  glp_set_mat_row(p, row, static_cast<int>(index.size()) - 1, index.data(), ones.data());
+}
+
+}  // namespace
+
 OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
                                               std::chrono::steady_clock::time_point deadline) {
   Bound bound;
@@ -137,15 +170,7 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
   const int n = lp.n;
   if (n == 0) return bound;
   glp_prob* p = lp.problem;
-  // Close every way out of the start and the prefix's regions but the one the prefix takes.
-  for (int col : lp.closed) glp_set_col_bnds(p, col, GLP_DB, 0, 1);
-  lp.closed.clear();
-  for (std::size_t t = 0; t < prefix.size(); ++t) {
-    const int from = t == 0 ? SweepModel::kStart : prefix[t - 1];
-    for (int col : lp.columns_out[from + 1])
-      if (lp.ways[col - 1].to_region != prefix[t])
-        glp_set_col_bnds(p, col, GLP_FX, 0, 0), lp.closed.push_back(col);
-  }
+  close_all_but(prefix);
 
   glp_smcp parm;
   glp_init_smcp(&parm);
@@ -173,23 +198,20 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
     const std::vector<std::vector<char>> cuts = violated_cuts(lp.ways, x, n);
     if (cuts.empty()) break;
     for (const std::vector<char>& side : cuts) {
-      const int row = glp_add_rows(p, 1);
-      glp_set_row_bnds(p, row, GLP_LO, 1, 0);
-      std::vector<int> index{0};
-      std::vector<double> ones{0};
-      for (std::size_t k = 0; k < lp.ways.size(); ++k)
-        if (lp.ways[k].from_region >= 0 && side[lp.ways[k].from_region] &&
-            !side[lp.ways[k].to_region])
-          index.push_back(static_cast<int>(k) + 1), ones.push_back(1);
-      glp_set_mat_row(p, row, static_cast<int>(index.size()) - 1, index.data(), ones.data());
+      add_cut(p, lp.ways, side);
       lp.cut_sides.push_back(side);
     }
   }
-  if (!bound.solved) return bound;
+  if (bound.solved) reduce(bound, cuts_in_solution);
+  return bound;
+}
 
-  // The bound holds for any y and any z >= 0, so the reduced costs are computed here from them
-  // rather than taken from the solver. Closed ways are never on the orders it bounds.
-  auto dual = [&](int row) { return glp_get_row_dual(p, row); };
+// The bound holds for any y and any z >= 0, so the reduced costs are computed here from them
+// rather than taken from the solver. Closed ways are never on the orders it bounds.
+void OrderRelaxation::reduce(Bound& bound, std::size_t cuts_in_solution) const {
+  const Lp& lp = *lp_;
+  const int n = lp.n;
+  auto dual = [&](int row) { return glp_get_row_dual(lp.problem, row); };
   std::vector<double> z(lp.cut_sides.size());
   double base = 0, magnitude = 0;
   for (int r = 1; r <= n; ++r) base += dual(r);
@@ -200,7 +222,7 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
   }
   bound.reduced.assign(nodes_ * nodes_, 0.0);
   for (std::size_t k = 0; k < lp.ways.size(); ++k) {
-    const Way& w = lp.ways[k];
+    const OrderWay& w = lp.ways[k];
     double rc = w.cost;
     if (w.to_node != lp.end) rc -= dual(w.to_region + 1) + dual(n + w.to_node);
     rc -= w.from_node == 0 ? dual(lp.start_row) : -dual(n + w.from_node);
@@ -212,7 +234,6 @@ OrderRelaxation::Bound OrderRelaxation::solve(const std::vector<int>& prefix,
   }
   // Rounding in the duals' sums: a margin far below any cost difference the weights make.
   bound.base = base - 1e-9 * (1 + std::abs(base) + magnitude) * static_cast<double>(n + 1);
-  return bound;
 }
 
 }  // namespace plantsim::planner

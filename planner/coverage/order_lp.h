@@ -43,6 +43,8 @@ class OrderRelaxation {
 
  private:
   std::size_t node(int i, int v) const { return i == SweepModel::kStart ? 0 : offset_[i] + v; }
+  void close_all_but(const std::vector<int>& prefix);
+  void reduce(Bound& bound, std::size_t cuts_in_solution) const;
 
   struct Lp;
   std::vector<std::size_t> offset_;

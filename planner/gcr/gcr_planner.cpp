@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
+#include <tuple>
 
 #include "geometry/polyline.h"
 #include "planner/inflation.h"
@@ -26,25 +28,72 @@ Vec2 GcrPlanner::gradient_step(Vec2 p, Vec2 goal, double unit) {
   return minor > unit ? (unit / minor) * d : d;
 }
 
+namespace {
+
+// One run of coordinate rotation: the priorities fixed at the point of contact, the axis kept
+// while it is free, and the whole steps taken from the contact.
+struct RotationRun {
+  std::vector<Vec2> priorities;
+  int priority_key = 0;
+  Vec2 axis{0, 0};
+  Vec2 contact{0, 0};  // where the run began
+  long steps_x = 0, steps_y = 0;
+
+  RotationRun(Vec2 p, Vec2 to_goal) : contact(p) {
+    const double sx = to_goal.x >= 0 ? 1.0 : -1.0, sy = to_goal.y >= 0 ? 1.0 : -1.0;
+    const Vec2 tx{sx, 0}, ty{0, sy};
+    const bool x_first = std::fabs(to_goal.x) >= std::fabs(to_goal.y);
+    priorities = x_first ? std::vector<Vec2>{tx, ty, -1.0 * ty, -1.0 * tx}
+                         : std::vector<Vec2>{ty, tx, -1.0 * tx, -1.0 * ty};
+    priority_key = (x_first ? 4 : 0) + (sx > 0 ? 2 : 0) + (sy > 0 ? 1 : 0);
+  }
+
+  // The chosen axis while it is free; else the best free one, never straight back; (0, 0) when
+  // every way is blocked.
+  Vec2 next_axis(const ObstacleMap& map, Vec2 p, double step_m) const {
+    if (!(axis == Vec2{0, 0}) && map.segment_free(p, p + step_m * axis)) return axis;
+    for (const Vec2& a : priorities) {
+      if (a == -1.0 * axis) continue;
+      if (map.segment_free(p, p + step_m * a)) return a;
+    }
+    return {0, 0};
+  }
+
+  // On the lattice of whole steps from the contact point, so that coming back to a place gives
+  // the same coordinates to the bit (a sum of steps would drift in the last digits).
+  Vec2 step(double step_m) {
+    steps_x += static_cast<int>(axis.x);
+    steps_y += static_cast<int>(axis.y);
+    return contact + Vec2{step_m * steps_x, step_m * steps_y};
+  }
+
+  // The walk is deterministic: in rotation its future depends only on where the run began (to
+  // the bit), the whole steps taken from there, the axis and the priorities.
+  std::tuple<double, double, long, long, int, int, int> state() const {
+    return {contact.x,
+            contact.y,
+            steps_x,
+            steps_y,
+            static_cast<int>(axis.x),
+            static_cast<int>(axis.y),
+            priority_key};
+  }
+};
+
+}  // namespace
+
 GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
   Walk w;
   w.points.push_back(start);
   Vec2 p = start;
-  bool rotating = false;
-  Vec2 axis{0, 0};
-  std::vector<Vec2> priorities;
-  int priority_key = 0;
-  Vec2 contact{0, 0};  // where the rotation run began
-  long steps_x = 0, steps_y = 0;
+  std::optional<RotationRun> run;
   // 20 times the straight distance in steps, plus room for short trips around large obstacles.
   const long budget = static_cast<long>(20.0 * geom::distance(start, goal) / step_m_) + 20000;
-  // The walk is deterministic: in rotation its future depends only on where the run began (to
-  // the bit), the whole steps taken from there, the axis and the priorities. The same state
-  // again means a loop for ever: no walk that would arrive is stopped. Anything less exact
-  // fails walks that do arrive: on the substation yard, counting passes through the same
-  // step-sized cell failed walks that arrived after 105 m and 382 m, even when allowed ten
-  // passes. A walk that circles with a drift (up and down inside a cup, a little further each
-  // time) runs into the step budget instead and says so.
+  // The same rotation state again means a loop for ever: no walk that would arrive is stopped.
+  // Anything less exact fails walks that do arrive: on the substation yard, counting passes
+  // through the same step-sized cell failed walks that arrived after 105 m and 382 m, even when
+  // allowed ten passes. A walk that circles with a drift (up and down inside a cup, a little
+  // further each time) runs into the step budget instead and says so.
   std::set<std::tuple<double, double, long, long, int, int, int>> rotation_states;
 
   for (long k = 0; k < budget; ++k) {
@@ -57,63 +106,35 @@ GcrPlanner::Walk GcrPlanner::walk(Vec2 start, Vec2 goal) const {
     const Vec2 grad_next =
         step == to_goal ? goal : p + step;  // the last step ends on the goal exactly
     const bool gradient_free = map_.segment_free(p, grad_next);
-    if (!rotating) {
+    if (!run) {
       if (gradient_free) {
         p = grad_next;
         w.points.push_back(p);
         continue;
       }
       // Blocked: coordinate rotation, with the priorities fixed at the point of contact.
-      rotating = true;
       ++w.rotations;
-      const double sx = to_goal.x >= 0 ? 1.0 : -1.0, sy = to_goal.y >= 0 ? 1.0 : -1.0;
-      const Vec2 tx{sx, 0}, ty{0, sy};
-      const bool x_first = std::fabs(to_goal.x) >= std::fabs(to_goal.y);
-      priorities = x_first ? std::vector<Vec2>{tx, ty, -1.0 * ty, -1.0 * tx}
-                           : std::vector<Vec2>{ty, tx, -1.0 * tx, -1.0 * ty};
-      priority_key = (x_first ? 4 : 0) + (sx > 0 ? 2 : 0) + (sy > 0 ? 1 : 0);
-      axis = {0, 0};
-      contact = p;
-      steps_x = steps_y = 0;
+      run.emplace(p, to_goal);
     } else if (gradient_free) {
       // Clear of the obstacle: back to the gradient from here.
-      rotating = false;
+      run.reset();
       w.rotation_ends.push_back(w.points.size() - 1);
       continue;
     }
-    // Keep the chosen axis while it is free; else the best free one, never straight back.
-    Vec2 chosen{0, 0};
-    if (!(axis == Vec2{0, 0}) && map_.segment_free(p, p + step_m_ * axis)) {
-      chosen = axis;
-    } else {
-      for (const Vec2& a : priorities) {
-        if (a == -1.0 * axis) continue;
-        if (map_.segment_free(p, p + step_m_ * a)) {
-          chosen = a;
-          break;
-        }
-      }
-    }
+    const Vec2 chosen = run->next_axis(map_, p, step_m_);
     if (chosen == Vec2{0, 0}) {
       w.failure = "trapped: no free step in any direction";
       return w;
     }
-    if (axis == Vec2{0, 0}) w.first_rotation_axes.push_back(chosen);
-    axis = chosen;
-    const int ax = static_cast<int>(axis.x), ay = static_cast<int>(axis.y);
-    if (!rotation_states.emplace(contact.x, contact.y, steps_x, steps_y, ax, ay, priority_key)
-             .second) {
+    if (run->axis == Vec2{0, 0}) w.first_rotation_axes.push_back(chosen);
+    run->axis = chosen;
+    if (!rotation_states.insert(run->state()).second) {
       w.failure =
           "oscillating: coordinate rotation came back to a state it was in (it would loop for "
           "ever)";
       return w;
     }
-
-    // On the lattice of whole steps from the contact point, so that coming back to a place gives
-    // the same coordinates to the bit (a sum of steps would drift in the last digits).
-    steps_x += ax;
-    steps_y += ay;
-    p = contact + Vec2{step_m_ * steps_x, step_m_ * steps_y};
+    p = run->step(step_m_);
     w.points.push_back(p);
   }
   w.failure = "timed out: " + std::to_string(budget) + " steps without arriving (circling)";

@@ -18,6 +18,94 @@ MazePlanner::MazePlanner(const PlannerInput& input, Hand hand, bool drive_explor
       drive_exploration_(drive_exploration),
       third_string_(third_string) {}
 
+namespace {
+
+// Whether p lies inside the corridor between two lattice nodes (not at either end).
+bool in_corridor(const TunnelMaze& maze, Vec2 p, LatticeNode a, LatticeNode b) {
+  const Vec2 pa = maze.position(a), pb = maze.position(b), d = pb - pa;
+  const double t = geom::dot(p - pa, d) / geom::dot(d, d);
+  return t > 0 && t < 1 &&
+         std::fabs(geom::cross(d, p - pa)) / std::sqrt(geom::dot(d, d)) < 0.5 * maze.corridor_m();
+}
+
+// Start and goal lie in corridors near their nodes; a point already on the first (last) corridor
+// of the route joins it there instead of doubling back from the node.
+std::vector<Vec2> lattice_path(const TunnelMaze& maze, const std::vector<LatticeNode>& nodes,
+                               Vec2 start, Vec2 goal, bool to_goal) {
+  std::vector<Vec2> p{start};
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (i == 0 && nodes.size() > 1 && in_corridor(maze, start, nodes[0], nodes[1])) continue;
+    if (to_goal && i + 1 == nodes.size() && nodes.size() > 1 &&
+        in_corridor(maze, goal, nodes[i - 1], nodes[i]))
+      continue;
+    p.push_back(maze.position(nodes[i]));
+  }
+  if (to_goal) p.push_back(goal);
+  return p;
+}
+
+// Every search walk drawn, and where each ended: "tries 1, 2: closed" where several ended alike
+// in one place.
+void add_tries(const TunnelMaze& maze, const MazeSolution& s, Vec2 start, Vec2 goal,
+               PlanResult& r) {
+  std::map<std::pair<std::pair<int, int>, WalkEnd>, std::vector<std::size_t>> ended_at;
+  for (std::size_t k = 0; k < s.attempts.size(); ++k) {
+    const MazeWalk& w = s.attempts[k];
+    r.tried.push_back(lattice_path(maze, w.nodes, start, goal, false));
+    ended_at[{{w.nodes.back().column, w.nodes.back().row}, w.end}].push_back(k + 1);
+  }
+  for (const auto& [where, tries] : ended_at) {
+    const WalkEnd end = where.second;
+    std::string text = tries.size() > 1 ? "tries " : "try ";
+    for (std::size_t i = 0; i < tries.size(); ++i)
+      text += (i ? ", " : "") + std::to_string(tries[i]);
+    text += end == WalkEnd::kExit             ? ": exit"
+            : end == WalkEnd::kBackAtEntrance ? ": back"
+            : end == WalkEnd::kBlocked        ? ": closed"
+                                              : ": step limit";
+    r.marks.push_back(
+        {maze.position({where.first.first, where.first.second}), text, PlanMark::Kind::kTriedEnd});
+  }
+}
+
+// One label per junction and walk: the letters recorded there in the order they were ("S U L"
+// where the walk came back from a dead end).
+void label_junctions(const TunnelMaze& maze, const MazeWalk& w, PlanMark::Kind kind,
+                     std::vector<PlanMark>& marks) {
+  std::map<std::pair<int, int>, std::size_t> label_of;
+  for (std::size_t i = 0; i < w.turns.size() && i < w.turn_at.size(); ++i) {
+    const LatticeNode n = w.nodes[w.turn_at[i]];
+    const auto [it, fresh] = label_of.try_emplace({n.column, n.row}, marks.size());
+    if (fresh)
+      marks.push_back({maze.position(n), std::string(1, w.turns[i]), kind});
+    else
+      marks[it->second].text += std::string(" ") + w.turns[i];
+  }
+}
+
+}  // namespace
+
+// The strings of the document: explored, simplified, the ring search's, the route's, and the
+// shortest corridor route beside them.
+std::string MazePlanner::note(const MazeSolution& s, double shortest_m) const {
+  char line[512];
+  std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
+                hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
+                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_),
+                s.simplified.c_str());
+  std::string text = line;
+  if (s.ring_search)
+    text += "ring search: " + s.search_log + "third string " + s.third +
+            (third_string_ == ThirdString::kResimplified
+                 ? " (simplified again where that still reaches the exit)"
+                 : " (driven as recorded)") +
+            "; ";
+  std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
+                s.route.turns.c_str(), s.route.length_m(*maze_),
+                std::string(to_string(s.route.end)).c_str(), shortest_m);
+  return text + line;
+}
+
 PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult r;
@@ -32,79 +120,11 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   }
   const MazeSolution s = solve_maze(*maze_, *entrance, Heading::kEast, *exit, hand_, third_string_);
   const std::vector<LatticeNode> best = shortest_route(*maze_, *entrance, *exit);
-  // Start and goal lie in corridors near their nodes; a point already on the first (last)
-  // corridor of the route joins it there instead of doubling back from the node.
-  auto on_edge = [&](Vec2 p, LatticeNode a, LatticeNode b) {
-    const Vec2 pa = maze_->position(a), pb = maze_->position(b), d = pb - pa;
-    const double t = geom::dot(p - pa, d) / geom::dot(d, d);
-    return t > 0 && t < 1 &&
-           std::fabs(geom::cross(d, p - pa)) / std::sqrt(geom::dot(d, d)) <
-               0.5 * maze_->corridor_m();
-  };
-  auto to_path = [&](const std::vector<LatticeNode>& nodes, bool to_goal) {
-    std::vector<Vec2> p{start};
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      if (i == 0 && nodes.size() > 1 && on_edge(start, nodes[0], nodes[1])) continue;
-      if (to_goal && i + 1 == nodes.size() && nodes.size() > 1 &&
-          on_edge(goal, nodes[i - 1], nodes[i]))
-        continue;
-      p.push_back(maze_->position(nodes[i]));
-    }
-    if (to_goal) p.push_back(goal);
-    return p;
-  };
-  r.explored = to_path(s.exploration.nodes, false);
-  // Where each search walk ended: "tries 1, 2: closed" where several ended alike in one place.
-  std::map<std::pair<std::pair<int, int>, WalkEnd>, std::vector<std::size_t>> ended_at;
-  for (std::size_t k = 0; k < s.attempts.size(); ++k) {
-    const MazeWalk& w = s.attempts[k];
-    r.tried.push_back(to_path(w.nodes, false));
-    ended_at[{{w.nodes.back().column, w.nodes.back().row}, w.end}].push_back(k + 1);
-  }
-  for (const auto& [where, tries] : ended_at) {
-    const WalkEnd end = where.second;
-    std::string text = tries.size() > 1 ? "tries " : "try ";
-    for (std::size_t i = 0; i < tries.size(); ++i)
-      text += (i ? ", " : "") + std::to_string(tries[i]);
-    text += end == WalkEnd::kExit             ? ": exit"
-            : end == WalkEnd::kBackAtEntrance ? ": back"
-            : end == WalkEnd::kBlocked        ? ": closed"
-                                              : ": step limit";
-    r.marks.push_back({maze_->position({where.first.first, where.first.second}), text,
-                       PlanMark::Kind::kTriedEnd});
-  }
-  // One label per junction and walk: the letters recorded there in the order they were ("S U L"
-  // where the walk came back from a dead end).
-  auto label_junctions = [&](const MazeWalk& w, PlanMark::Kind kind) {
-    std::map<std::pair<int, int>, std::size_t> label_of;
-    for (std::size_t i = 0; i < w.turns.size() && i < w.turn_at.size(); ++i) {
-      const LatticeNode n = w.nodes[w.turn_at[i]];
-      const auto [it, fresh] = label_of.try_emplace({n.column, n.row}, r.marks.size());
-      if (fresh)
-        r.marks.push_back({maze_->position(n), std::string(1, w.turns[i]), kind});
-      else
-        r.marks[it->second].text += std::string(" ") + w.turns[i];
-    }
-  };
-  label_junctions(s.exploration, PlanMark::Kind::kExplorationLetters);
-  if (s.solved()) label_junctions(s.route, PlanMark::Kind::kRouteLetters);
-  char line[512];
-  std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
-                hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
-                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_),
-                s.simplified.c_str());
-  r.note = line;
-  if (s.ring_search)
-    r.note += "ring search: " + s.search_log + "third string " + s.third +
-              (third_string_ == ThirdString::kResimplified
-                   ? " (simplified again where that still reaches the exit)"
-                   : " (driven as recorded)") +
-              "; ";
-  std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
-                s.route.turns.c_str(), s.route.length_m(*maze_),
-                std::string(to_string(s.route.end)).c_str(),
-                best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
-  r.note += line;
+  r.explored = lattice_path(*maze_, s.exploration.nodes, start, goal, false);
+  add_tries(*maze_, s, start, goal, r);
+  label_junctions(*maze_, s.exploration, PlanMark::Kind::kExplorationLetters, r.marks);
+  if (s.solved()) label_junctions(*maze_, s.route, PlanMark::Kind::kRouteLetters, r.marks);
+  r.note = note(s, best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
   if (s.solved()) {
     r.status = PlanStatus::kOk;
     std::vector<LatticeNode> nodes = s.route.nodes;
@@ -113,7 +133,7 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
       if (s.exploration.end != WalkEnd::kExit)
         nodes.insert(nodes.end(), s.route.nodes.begin() + 1, s.route.nodes.end());
     }
-    r.path = to_path(nodes, true);
+    r.path = lattice_path(*maze_, nodes, start, goal, true);
     r.length = geom::polyline_length(r.path);
   }
   r.stats.vertices = static_cast<std::int64_t>(maze_->columns()) * maze_->rows();

@@ -27,6 +27,7 @@ class MazePlanner : public Planner {
   PlanResult plan(Vec2 start, Vec2 goal) override;
 
  private:
+  std::string note(const MazeSolution& s, double shortest_m) const;
   std::optional<TunnelMaze> maze_;
   Hand hand_;
   bool drive_exploration_;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "geometry/vec2.h"
 #include "planner/mesh/landmarks.h"
 
 namespace plantsim::planner {
@@ -14,12 +15,6 @@ namespace {
 
 // A landmark's distance not known (the point is unreachable from it).
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
-
-// Not std::hypot: coordinates are bounded by the world's limits, and hypot's care for overflow
-// cost a third of a query's time.
-double dist(Vec2 a, Vec2 b) {
-  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
-}
 
 DeadEnds dead_ends_of(const FreeSpaceMesh& mesh) {
   std::vector<std::int32_t> first{0}, neighbour;
@@ -48,18 +43,18 @@ std::int32_t IntervalSearch::other_side(std::int32_t portal, std::int32_t cell) 
 
 double IntervalSearch::heuristic(double x, double ya, double yb, Vec2 root) const {
   if (std::fabs(root.x - x) <= mesh_.tolerance())
-    return dist(root, goal_);  // the root is on the interval
+    return geom::distance(root, goal_);  // the root is on the interval
   Vec2 t = goal_;
   if ((t.x - x) * (root.x - x) > 0) t.x = 2 * x - t.x;  // mirrored: the way must cross the line
   const double yc = root.y + (t.y - root.y) * ((x - root.x) / (t.x - root.x));
-  if (yc >= ya && yc <= yb) return dist(root, t);
+  if (yc >= ya && yc <= yb) return geom::distance(root, t);
   const Vec2 e{x, yc < ya ? ya : yb};
-  return dist(root, e) + dist(e, t);
+  return geom::distance(root, e) + geom::distance(e, t);
 }
 
 bool IntervalSearch::corner_improves(std::int32_t vertex, double g, Vec2 from, Vec2 corner) {
   const double tol = mesh_.tolerance() * 16;
-  const double len = dist(from, corner);
+  const double len = geom::distance(from, corner);
   const Vec2 dir =
       len > 0 ? Vec2{(corner.x - from.x) / len, (corner.y - from.y) / len} : Vec2{0, 0};
   if (stamp_[vertex] == search_) {
@@ -107,7 +102,7 @@ void IntervalSearch::push_along_line(std::int32_t parent, Vec2 from, double g, s
   const MeshPortal& q = mesh_.portals()[portal];
   const int end = from.y > q.y1 ? 1 : 0;
   const Vec2 c{q.x, end ? q.y1 : q.y0};
-  const double gc = g + dist(from, c);
+  const double gc = g + geom::distance(from, c);
   if (!corner_improves(2 * portal + end, gc, from, c)) return;
   if (!(q_.nodes[parent].root ==
         from)) {  // a turn at `from` first: recorded for the path, never searched
@@ -121,7 +116,7 @@ void IntervalSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t
                                     double g, std::int32_t cell, std::int32_t except) {
   const double eps = mesh_.tolerance();
   if (flood_) record_corners_in_view(cell, root, g);
-  if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + dist(root, goal_));
+  if (mesh_.cell_holds(cell, goal_)) push_goal(parent, root, g + geom::distance(root, goal_));
   for (const auto side : {mesh_.left_portals(cell), mesh_.right_portals(cell)})
     for (const std::int32_t q : side) {
       if (q == except || dead_ends_.leads_nowhere(cell, other_side(q, cell))) continue;
@@ -152,7 +147,8 @@ void IntervalSearch::expand(std::int32_t index) {
   const bool turn_low = P.corner0 && n.ya <= P.y0 + eps,
              turn_high = P.corner1 && n.yb >= P.y1 - eps;
   const Vec2 a{x, P.y0}, b{x, P.y1};
-  const double ga = turn_low ? n.g + dist(r, a) : 0, gb = turn_high ? n.g + dist(r, b) : 0;
+  const double ga = turn_low ? n.g + geom::distance(r, a) : 0,
+               gb = turn_high ? n.g + geom::distance(r, b) : 0;
   const bool use_low = turn_low && corner_improves(2 * n.portal, ga, r, a);
   const bool use_high = turn_high && corner_improves(2 * n.portal + 1, gb, r, b);
   if (flood_) record_corners(n.cell, r, n.g, x, n.ya, n.yb, turn_low, a, ga, turn_high, b, gb);
@@ -161,11 +157,11 @@ void IntervalSearch::expand(std::int32_t index) {
     const double sg = (goal_.x - r.x) / (x - r.x);
     const double lo = r.y + (n.ya - r.y) * sg, hi = r.y + (n.yb - r.y) * sg;
     if (goal_.y >= lo - eps && goal_.y <= hi + eps)
-      push_goal(index, r, n.g + dist(r, goal_));
+      push_goal(index, r, n.g + geom::distance(r, goal_));
     else if (goal_.y < lo && use_low)
-      push_goal(index, a, ga + dist(a, goal_));
+      push_goal(index, a, ga + geom::distance(a, goal_));
     else if (goal_.y > hi && use_high)
-      push_goal(index, b, gb + dist(b, goal_));
+      push_goal(index, b, gb + geom::distance(b, goal_));
   }
   const auto far_side = rightward ? mesh_.right_portals(n.cell) : mesh_.left_portals(n.cell);
   for (const std::int32_t q : far_side) {
@@ -296,7 +292,7 @@ void IntervalSearch::for_each_point(std::int32_t cell, F&& f) const {
 
 void IntervalSearch::record_corners_in_view(std::int32_t cell, Vec2 r, double g) {
   for_each_point(cell, [&](Vec2 p, std::int32_t id) {
-    (*flood_)[id] = std::min((*flood_)[id], g + dist(r, p));
+    (*flood_)[id] = std::min((*flood_)[id], g + geom::distance(r, p));
   });
 }
 
@@ -311,11 +307,11 @@ void IntervalSearch::record_corners(std::int32_t cell, Vec2 r, double g, double 
     const double lo = r.y + (ya - r.y) * s, hi = r.y + (yb - r.y) * s;
     double& d = (*flood_)[id];
     if (p.y >= lo - eps && p.y <= hi + eps)
-      d = std::min(d, g + dist(r, p));
+      d = std::min(d, g + geom::distance(r, p));
     else if (p.y < lo && low)
-      d = std::min(d, ga + dist(a, p));
+      d = std::min(d, ga + geom::distance(a, p));
     else if (p.y > hi && high)
-      d = std::min(d, gb + dist(b, p));
+      d = std::min(d, gb + geom::distance(b, p));
   });
 }
 
@@ -382,8 +378,8 @@ void IntervalSearch::set_goal_bounds(std::int32_t cell, Vec2 p) {
     for (int i = 0; i < 4; ++i) {
       const double d = corner_distance_[(4 * static_cast<std::size_t>(cell) + i) * landmarks_ + k];
       if (!std::isfinite(d)) continue;
-      low = std::max(low, d - dist(corners[i], p));
-      high = std::min(high, d + dist(corners[i], p));
+      low = std::max(low, d - geom::distance(corners[i], p));
+      high = std::min(high, d + geom::distance(corners[i], p));
     }
     const bool known = std::isfinite(low);
     goal_low_[k] = known ? low : kUnknown, goal_high_[k] = known ? high : kUnknown;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "geometry/vec2.h"
 #include "planner/mesh/landmarks.h"
 
 namespace plantsim::planner {
@@ -24,9 +25,6 @@ DeadEnds dead_ends_of(const ConvexMesh& mesh) {
   return DeadEnds(first, neighbour);
 }
 
-double dist(Vec2 a, Vec2 b) {
-  return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
-}
 // A range of an edge's parameter t in [0, 1]; empty when lo > hi.
 struct Range {
   double lo, hi;
@@ -74,14 +72,15 @@ bool PolygonSearch::corner_improves(std::int32_t vertex, double g) {
 double PolygonSearch::heuristic(Vec2 left, Vec2 right, Vec2 root) const {
   const Vec2 d = right - left;
   const double dd = dot(d, d);
-  if (dd <= 0) return dist(root, left) + dist(left, goal_);
+  if (dd <= 0) return geom::distance(root, left) + geom::distance(left, goal_);
   const double sr = cross(d, root - left), st = cross(d, goal_ - left);
-  if (std::fabs(sr) <= mesh_.tolerance() * std::sqrt(dd)) return dist(root, goal_);
+  if (std::fabs(sr) <= mesh_.tolerance() * std::sqrt(dd)) return geom::distance(root, goal_);
   Vec2 t = goal_;
   if ((sr > 0) == (st > 0)) t = goal_ - (2 * st / dd) * Vec2{-d.y, d.x};
   const double o1 = cross(t - root, left - root), o2 = cross(t - root, right - root);
-  if ((o1 <= 0 && o2 >= 0) || (o1 >= 0 && o2 <= 0)) return dist(root, t);
-  return std::min(dist(root, left) + dist(left, t), dist(root, right) + dist(right, t));
+  if ((o1 <= 0 && o2 >= 0) || (o1 >= 0 && o2 <= 0)) return geom::distance(root, t);
+  return std::min(geom::distance(root, left) + geom::distance(left, t),
+                  geom::distance(root, right) + geom::distance(right, t));
 }
 
 void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t k, Vec2 right,
@@ -95,7 +94,7 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
   // end, passing by. (Sides compared squared: no square root on the common way.)
   if (side < 0 && side * side > reach) return;
   if (side * side <= reach) {
-    const double len = dist(a, b), at = dot(root - a, b - a) / len;
+    const double len = geom::distance(a, b), at = dot(root - a, b - a) / len;
     if (at >= -eps &&
         at <= len + eps) {  // the root is on the edge: all of the polygon beyond is in view
       q_.fresh.push_back({beyond, entry, b, a, root, root_vertex, parent, g});
@@ -104,7 +103,7 @@ void PolygonSearch::push(std::int32_t parent, std::int32_t polygon, std::int32_t
     // On the edge's line, off the edge: along the line to its nearer end, turning there.
     const std::int32_t near = mesh_.corners(polygon)[at < 0 ? k : k1];
     const Vec2 c = mesh_.points()[near];
-    const double gc = g + dist(root, c);
+    const double gc = g + geom::distance(root, c);
     if (!corner_improves(near, gc)) return;
     if (!(q_.nodes[parent].root ==
           root)) {  // a turn at `root` first: recorded for the path, never searched
@@ -124,7 +123,7 @@ void PolygonSearch::push_goal(std::int32_t parent, Vec2 root, double g) {
 void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t root_vertex,
                                    double g, std::int32_t polygon, std::int32_t except,
                                    bool from_start) {
-  if (goal_stamp_[polygon] == search_) push_goal(parent, root, g + dist(root, goal_));
+  if (goal_stamp_[polygon] == search_) push_goal(parent, root, g + geom::distance(root, goal_));
   if (flood_) record_in_view(polygon, root, g);
   const double eps = mesh_.tolerance();
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
@@ -135,7 +134,7 @@ void PolygonSearch::expand_in_view(std::int32_t parent, Vec2 root, std::int32_t 
                b = mesh_.points()[mesh_.vertex(polygon, k + 1)];
     if (from_start) {  // the start on this edge: the polygon beyond holds it too and is searched
                        // from it
-      const double len = dist(a, b), at = dot(root - a, b - a) / len;
+      const double len = geom::distance(a, b), at = dot(root - a, b - a) / len;
       if (std::fabs(cross(b - a, root - a)) <= eps * len && at >= -eps && at <= len + eps) continue;
     }
     push(parent, polygon, k, a, b, root, root_vertex, g);
@@ -155,7 +154,7 @@ void PolygonSearch::expand(std::int32_t index) {
     return expand_in_view(index, r, n.root_vertex, n.g, Q, j, false);
 
   const Vec2 L = n.left, R = n.right;
-  const double lr = dist(r, R), ll = dist(r, L);
+  const double lr = geom::distance(r, R), ll = geom::distance(r, L);
   const Vec2 uR{(R.x - r.x) / lr, (R.y - r.y) / lr}, uL{(L.x - r.x) / ll, (L.y - r.y) / ll};
   const auto right_side = [&](Vec2 p) {
     return cross(uR, p - r);
@@ -165,7 +164,8 @@ void PolygonSearch::expand(std::int32_t index) {
   };  // <= 0: not left of the ray through L
   const bool turn_right = mesh_.is_corner(rv) && dot(R - B, R - B) <= eps * eps;
   const bool turn_left = mesh_.is_corner(lv) && dot(L - A, L - A) <= eps * eps;
-  const double gR = turn_right ? n.g + dist(r, B) : 0, gL = turn_left ? n.g + dist(r, A) : 0;
+  const double gR = turn_right ? n.g + geom::distance(r, B) : 0,
+               gL = turn_left ? n.g + geom::distance(r, A) : 0;
   const bool use_right = turn_right && corner_improves(rv, gR);
   const bool use_left = turn_left && corner_improves(lv, gL);
   if (flood_) record_view(Q, r, n.g, uR, uL, turn_right, B, gR, turn_left, A, gL);
@@ -173,11 +173,11 @@ void PolygonSearch::expand(std::int32_t index) {
   if (goal_stamp_[Q] == search_) {
     const double gr = right_side(goal_), gl = left_side(goal_);
     if (gr >= -eps && gl <= eps)
-      push_goal(index, r, n.g + dist(r, goal_));
+      push_goal(index, r, n.g + geom::distance(r, goal_));
     else if (gr < -eps && use_right)
-      push_goal(index, B, gR + dist(B, goal_));
+      push_goal(index, B, gR + geom::distance(B, goal_));
     else if (gl > eps && use_left)
-      push_goal(index, A, gL + dist(A, goal_));
+      push_goal(index, A, gL + geom::distance(A, goal_));
   }
   // Round the far side from the entry edge's right end, each vertex's sides measured once.
   const std::int32_t count = mesh_.size(Q);
@@ -329,7 +329,7 @@ bool PolygonSearch::at_pinch(const std::vector<std::int32_t>& polygons, Vec2 p) 
 void PolygonSearch::record_in_view(std::int32_t polygon, Vec2 r, double g) {
   for (std::int32_t k = 0; k < mesh_.size(polygon); ++k) {
     const std::int32_t v = mesh_.vertex(polygon, k);
-    (*flood_)[v] = std::min((*flood_)[v], g + dist(r, mesh_.points()[v]));
+    (*flood_)[v] = std::min((*flood_)[v], g + geom::distance(r, mesh_.points()[v]));
   }
 }
 
@@ -344,11 +344,11 @@ void PolygonSearch::record_view(std::int32_t polygon, Vec2 r, double g, Vec2 uR,
     const double rs = cross(uR, p - r), ls = cross(uL, p - r);
     double& d = (*flood_)[v];
     if (rs >= -eps && ls <= eps)
-      d = std::min(d, g + dist(r, p));
+      d = std::min(d, g + geom::distance(r, p));
     else if (rs < -eps && right)
-      d = std::min(d, gR + dist(B, p));
+      d = std::min(d, gR + geom::distance(B, p));
     else if (ls > eps && left)
-      d = std::min(d, gL + dist(A, p));
+      d = std::min(d, gL + geom::distance(A, p));
   }
 }
 
@@ -400,7 +400,7 @@ void PolygonSearch::bound_landmark_distances(const std::vector<std::int32_t>& po
     std::fill(side_high.begin(), side_high.end(), kInf);
     for (std::int32_t i = 0; i < mesh_.size(polygon); ++i) {
       const std::int32_t v = mesh_.vertex(polygon, i);
-      const double to = dist(mesh_.points()[v], p);
+      const double to = geom::distance(mesh_.points()[v], p);
       for (int k = 0; k < landmarks_; ++k) {
         const double d = vertex_distance_[static_cast<std::size_t>(v) * landmarks_ + k];
         if (!std::isfinite(d)) continue;  // unreachable, or a pinch (NaN)

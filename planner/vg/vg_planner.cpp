@@ -108,13 +108,56 @@ PlanResult VisibilityGraphPlanner::plan(Vec2 start, Vec2 goal) {
 // untested, and its visibility is tested only when it is popped. With a consistent
 // heuristic the first valid pop of a node carries its optimal cost, and candidates whose
 // f exceeds the goal's are never tested at all.
-SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
-  const auto& vertices = graph_.vertices();
-  const auto n = static_cast<std::int32_t>(vertices.size());
-  const std::int32_t s = n, g = n + 1;
-  auto point = [&](std::int32_t v) { return v == s ? start : v == g ? goal : vertices[v].p; };
-  constexpr std::int32_t kUntested = -1;  // candidate index for edges from start or to goal
+namespace {
 
+// One query's A* state over the graph's vertices and the two query points (start n, goal n + 1).
+class LazySearch {
+ public:
+  LazySearch(const VisibilityGraph& graph, std::vector<std::uint16_t>& expansions, Vec2 start,
+             Vec2 goal)
+      : graph_(graph),
+        vertices_(graph.vertices()),
+        expansions_(expansions),
+        start_(start),
+        goal_(goal),
+        s_(static_cast<std::int32_t>(vertices_.size())),
+        g_(s_ + 1),
+        closed_(s_ + 2, 0),
+        parent_(s_ + 2, -1),
+        cost_(s_ + 2, 0.0),
+        best_known_(s_ + 2, std::numeric_limits<double>::infinity()) {
+    expansions_.resize(vertices_.size(), 0);
+    open_.push({geom::distance(start, goal), 0.0, s_, -1, kUntested});
+  }
+
+  SearchResult run(std::size_t budget_bytes) {
+    while (!open_.empty()) {
+      // The graph kept across queries counts too: it is what this query's candidates grow.
+      if (const std::size_t bytes = graph_.candidate_bytes() + open_.size() * sizeof(Entry);
+          bytes > budget_bytes) {
+        result_.over_budget_bytes = bytes;
+        break;
+      }
+      const Entry e = open_.top();
+      open_.pop();
+      if (!settle(e)) continue;
+      if (e.node == g_) break;
+      if (e.node == s_)
+        expand_start();
+      else
+        expand(e);
+    }
+    if (closed_[g_]) {
+      result_.found = true;
+      result_.cost = cost_[g_];
+      for (std::int32_t v = g_; v != -1; v = parent_[v]) result_.nodes.push_back(v);
+      std::reverse(result_.nodes.begin(), result_.nodes.end());
+    }
+    return result_;
+  }
+
+ private:
+  static constexpr std::int32_t kUntested = -1;  // candidate index for edges from start or to goal
   struct Entry {
     double f, g;
     std::int32_t node, parent, candidate;
@@ -125,76 +168,77 @@ SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
       return parent > o.parent;
     }
   };
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  std::vector<char> closed(n + 2, 0);
-  std::vector<std::uint16_t>& expansions = expansions_;  // per vertex, across queries
-  expansions.resize(n, 0);
-  std::vector<std::int32_t> parent(n + 2, -1);
-  std::vector<double> cost(n + 2, 0.0);
+
+  Vec2 point(std::int32_t v) const { return v == s_ ? start_ : v == g_ ? goal_ : vertices_[v].p; }
+
   // The cheapest cost pushed along an edge known to be visible (from a resolved vertex): a
-  // later, dearer push can never be the one popped first, so it is not pushed. Equal costs
-  // are still pushed, so that ties resolve exactly as before.
-  std::vector<double> best_known(n + 2, std::numeric_limits<double>::infinity());
-  SearchResult result;
-  auto push = [&](std::int32_t v, std::int32_t from, std::int32_t candidate, double gv,
-                  bool known_visible) {
-    if (closed[v] || gv > best_known[v]) return;
-    if (known_visible) best_known[v] = std::min(best_known[v], gv);
-    open.push({gv + geom::distance(point(v), goal), gv, v, from, candidate});
-    ++result.stats.pushed;
-  };
-  open.push({geom::distance(start, goal), 0.0, s, -1, kUntested});
-  std::vector<GraphEdge> from_start;
-  while (!open.empty()) {
-    // The graph kept across queries counts too: it is what this query's candidates grow.
-    if (const std::size_t bytes = graph_.candidate_bytes() + open.size() * sizeof(Entry);
-        bytes > input_.search_budget_bytes) {
-      result.over_budget_bytes = bytes;
-      break;
-    }
-    const Entry e = open.top();
-    open.pop();
-    if (closed[e.node]) continue;
+  // later, dearer push can never be the one popped first, so it is not pushed. Equal costs are
+  // still pushed, so that ties resolve exactly as before.
+  void push(std::int32_t v, std::int32_t from, std::int32_t candidate, double gv,
+            bool known_visible) {
+    if (closed_[v] || gv > best_known_[v]) return;
+    if (known_visible) best_known_[v] = std::min(best_known_[v], gv);
+    open_.push({gv + geom::distance(point(v), goal_), gv, v, from, candidate});
+    ++result_.stats.pushed;
+  }
+
+  // The edge an entry was pushed along is tested now, when popped; true if it closed the node.
+  bool settle(const Entry& e) {
+    if (closed_[e.node]) return false;
     if (e.parent >= 0) {
       const bool ok =
           e.candidate == kUntested
               ? graph_.visible(point(e.parent), point(e.node))
               : graph_.candidate_visible(e.parent, static_cast<std::size_t>(e.candidate));
-      if (!ok) continue;
+      if (!ok) return false;
     }
-    closed[e.node] = 1;
-    parent[e.node] = e.parent;
-    cost[e.node] = e.g;
-    ++result.stats.expanded;
-    if (e.node == g) break;
-    const Vec2 u = point(e.node);
-    if (e.node == s) {
-      graph_.candidates_from_point(start, from_start);
-      for (const GraphEdge& c : from_start) push(c.to, s, kUntested, c.length, false);
-      push(g, s, kUntested, geom::distance(start, goal), false);
-      continue;
-    }
+    closed_[e.node] = 1;
+    parent_[e.node] = e.parent;
+    cost_[e.node] = e.g;
+    ++result_.stats.expanded;
+    return true;
+  }
+
+  void expand_start() {
+    graph_.candidates_from_point(start_, from_start_);
+    for (const GraphEdge& c : from_start_) push(c.to, s_, kUntested, c.length, false);
+    push(g_, s_, kUntested, geom::distance(start_, goal_), false);
+  }
+
+  void expand(const Entry& e) {
     // A vertex met again in a later search is worth resolving to its exact edges.
-    if (expansions[e.node] < 2 && ++expansions[e.node] == 2) graph_.resolve(e.node);
+    if (expansions_[e.node] < 2 && ++expansions_[e.node] == 2) graph_.resolve(e.node);
     const auto& cands = graph_.candidates(e.node);
     const bool exact = graph_.resolved(e.node);
-    const Vec2 prev = point(e.parent);
+    const Vec2 u = point(e.node), prev = point(e.parent);
     for (std::size_t i = 0; i < cands.size(); ++i) {
       const std::int32_t w = cands[i].to;
       const double gw = e.g + cands[i].length;
-      if (closed[w] || gw > best_known[w] || !graph_.taut(prev, e.node, vertices[w].p)) continue;
+      if (closed_[w] || gw > best_known_[w] || !graph_.taut(prev, e.node, vertices_[w].p)) continue;
       push(w, e.node, static_cast<std::int32_t>(i), gw, exact);
     }
-    if (VisibilityGraph::tangent(vertices[e.node], goal - u) && graph_.taut(prev, e.node, goal))
-      push(g, e.node, kUntested, e.g + geom::distance(u, goal), false);
+    if (VisibilityGraph::tangent(vertices_[e.node], goal_ - u) && graph_.taut(prev, e.node, goal_))
+      push(g_, e.node, kUntested, e.g + geom::distance(u, goal_), false);
   }
-  if (closed[g]) {
-    result.found = true;
-    result.cost = cost[g];
-    for (std::int32_t v = g; v != -1; v = parent[v]) result.nodes.push_back(v);
-    std::reverse(result.nodes.begin(), result.nodes.end());
-  }
-  return result;
+
+  const VisibilityGraph& graph_;
+  const std::vector<GraphVertex>& vertices_;
+  std::vector<std::uint16_t>& expansions_;  // per vertex, across queries
+  const Vec2 start_, goal_;
+  const std::int32_t s_, g_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open_;
+  std::vector<char> closed_;
+  std::vector<std::int32_t> parent_;
+  std::vector<double> cost_;
+  std::vector<double> best_known_;
+  std::vector<GraphEdge> from_start_;
+  SearchResult result_;
+};
+
+}  // namespace
+
+SearchResult VisibilityGraphPlanner::lazy_astar(Vec2 start, Vec2 goal) const {
+  return LazySearch(graph_, expansions_, start, goal).run(input_.search_budget_bytes);
 }
 
 std::vector<std::pair<Vec2, Vec2>> VisibilityGraphPlanner::graph_edges() const {

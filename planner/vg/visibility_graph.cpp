@@ -240,6 +240,40 @@ void VisibilityGraph::drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size
   out.resize(kept);
 }
 
+namespace {
+
+// World bounds of the (unclipped) square of cells within ring k around cell (cx, cy).
+Rect ring_square(const ObstacleMap& m, int cx, int cy, int k) {
+  return {m.cell_bounds(cx - k, 0).xmin, m.cell_bounds(0, cy - k).ymin,
+          m.cell_bounds(cx + k, 0).xmax, m.cell_bounds(0, cy + k).ymax};
+}
+
+// The ring beyond which no vertex is visible from u once every ray is blocked within `square`:
+// none farther than its farthest corner.
+int last_visible_ring(Vec2 u, const Rect& square, double cell_size) {
+  double reach = 0;
+  for (Vec2 corner : {Vec2{square.xmin, square.ymin}, Vec2{square.xmax, square.ymin},
+                      Vec2{square.xmax, square.ymax}, Vec2{square.xmin, square.ymax}})
+    reach = std::max(reach, geom::distance(u, corner));
+  return static_cast<int>(std::floor(reach / cell_size)) + 1;
+}
+
+}  // namespace
+
+// Rectangles reaching past the square count with their part inside it; one the square has grown
+// to hold whole counts once more and is done.
+void VisibilityGraph::add_big_rect_spans(AngleCoverage& coverage, Vec2 u,
+                                         const Rect& square) const {
+  const auto& rects = map_.rects();
+  std::size_t kept = 0;
+  for (std::int32_t i : big_rects_) {
+    const Rect& r = rects[i];
+    add_span(coverage, u, geom::clipped(r, square));
+    if (!geom::holds(square, r)) big_rects_[kept++] = i;
+  }
+  big_rects_.resize(kept);
+}
+
 void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_index,
                            std::vector<GraphEdge>& out) const {
   const ObstacleMap& m = map_;
@@ -260,7 +294,6 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
   const int cx0 = m.cell_x(u.x), cy0 = m.cell_y(u.y);
   const int last_ring = std::max({cx0, cy0, m.grid_width() - 1 - cx0, m.grid_height() - 1 - cy0});
   int stop_ring = INT_MAX;
-  const double cs = m.cell_size();
 
   auto visit_cell = [&](int cx, int cy, const Rect& box) {
     for (std::int32_t w : vertices_in_cell_[static_cast<std::size_t>(cy) * m.grid_width() + cx]) {
@@ -275,7 +308,7 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
       if (rect_seen_[i] == scan_stamp_) continue;
       rect_seen_[i] = scan_stamp_;
       const Rect& r = rects[i];
-      if (r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax)
+      if (geom::holds(box, r))
         add_span(coverage, u, r);
       else
         big_rects_.push_back(i);
@@ -285,9 +318,7 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
   int k_last = 0;
   for (int k = 0; k <= last_ring && k <= stop_ring; ++k) {
     k_last = k;
-    // World bounds of the (unclipped) square of cells within ring k.
-    const Rect box{m.cell_bounds(cx0 - k, 0).xmin, m.cell_bounds(0, cy0 - k).ymin,
-                   m.cell_bounds(cx0 + k, 0).xmax, m.cell_bounds(0, cy0 + k).ymax};
+    const Rect box = ring_square(m, cx0, cy0, k);
     for (int cy = cy0 - k; cy <= cy0 + k; ++cy) {
       if (cy < 0 || cy >= m.grid_height()) continue;
       const bool edge_row = cy == cy0 - k || cy == cy0 + k;
@@ -296,33 +327,13 @@ void VisibilityGraph::scan(Vec2 u, const GraphVertex* self, std::int32_t self_in
       }
     }
     if (stop_ring != INT_MAX) continue;
-    // Rectangles reaching past the square count with their part inside it; one the square has
-    // grown to hold whole counts once more and is done.
-    std::size_t kept = 0;
-    for (std::int32_t i : big_rects_) {
-      const Rect& r = rects[i];
-      add_span(coverage, u,
-               {std::max(r.xmin, box.xmin), std::max(r.ymin, box.ymin), std::min(r.xmax, box.xmax),
-                std::min(r.ymax, box.ymax)});
-      if (!(r.xmin >= box.xmin && r.xmax <= box.xmax && r.ymin >= box.ymin && r.ymax <= box.ymax))
-        big_rects_[kept++] = i;
-    }
-    big_rects_.resize(kept);
-    if (coverage.full()) {
-      // Every ray is blocked within the square, so no vertex farther than its farthest
-      // corner is visible; finish the rings that can still hold nearer vertices.
-      double reach = 0;
-      for (Vec2 k2 : {Vec2{box.xmin, box.ymin}, Vec2{box.xmax, box.ymin}, Vec2{box.xmax, box.ymax},
-                      Vec2{box.xmin, box.ymax}})
-        reach = std::max(reach, geom::distance(u, k2));
-      stop_ring = static_cast<int>(std::floor(reach / cs)) + 1;
-    }
+    add_big_rect_spans(coverage, u, box);
+    // Every ray blocked within the square: finish the rings that can still hold nearer vertices.
+    if (coverage.full()) stop_ring = last_visible_ring(u, box, m.cell_size());
   }
   drop_hidden(u, out, first);
   if (self_index >= 0)
-    scan_box_[static_cast<std::size_t>(self_index)] = {
-        m.cell_bounds(cx0 - k_last, 0).xmin, m.cell_bounds(0, cy0 - k_last).ymin,
-        m.cell_bounds(cx0 + k_last, 0).xmax, m.cell_bounds(0, cy0 + k_last).ymax};
+    scan_box_[static_cast<std::size_t>(self_index)] = ring_square(m, cx0, cy0, k_last);
 }
 
 }  // namespace plantsim::planner

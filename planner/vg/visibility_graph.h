@@ -91,6 +91,7 @@ class VisibilityGraph {
   void scan(Vec2 u, const GraphVertex* self, std::int32_t self_index,
             std::vector<GraphEdge>& out) const;
   void add_span(AngleCoverage& coverage, Vec2 u, const Rect& r) const;
+  void add_big_rect_spans(AngleCoverage& coverage, Vec2 u, const Rect& square) const;
   void drop_hidden(Vec2 u, std::vector<GraphEdge>& out, std::size_t first) const;
   std::size_t bytes_of(std::size_t v) const {
     return candidates_[v].capacity() * sizeof(GraphEdge) +
