@@ -8,6 +8,7 @@
 
 #include "batch/wilson_interval.h"
 #include "render/report.h"
+#include "util/fixed_text.h"
 
 namespace plantsim::batch {
 const char* statistic_name(GateStatistic s) {
@@ -37,11 +38,7 @@ std::string xml_escaped(const std::string& s) {
   return out;
 }
 
-std::string fixed(double v, int digits = 3) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
+using util::fixed;
 
 std::string verdict_line(const ConfigurationVerdict& v, GateStatistic statistic) {
   const double value = statistic == GateStatistic::kWilsonLow ? v.wilson_low : v.success_rate;

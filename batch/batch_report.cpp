@@ -20,6 +20,7 @@
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
 #include "util/csv.h"
+#include "util/fixed_text.h"
 #include "worlds/known_keys.h"
 
 namespace plantsim::batch {
@@ -27,11 +28,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
+using util::fixed;
 
 /// The columns of summary.csv a reader looks at first, with readable headers; all of them stay
 /// in summary.csv.

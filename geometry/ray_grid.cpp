@@ -210,27 +210,102 @@ std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 ori
   return std::pair{lo, hi};
 }
 
+// One fan in flight: its rays, the hits found so far and the cell entries not yet visited.
+struct RayGrid::Fan {
+  Vec2 origin;
+  std::span<const Vec2> directions;
+  double first_angle, increment, max_range_m;
+  std::vector<std::optional<RayGridHit>>& hits;
+  long n;
+  bool spread;  // rays spaced evenly by angle: a box is tried only on those its extent covers
+  double last;  // the last ray's angle from the first
+  std::uint32_t query;
+  long unvisited = 0;  // cell entries (a box counts once per cell it spans) not yet visited
+};
+
+namespace {
+constexpr double kFanAngleTolerance = 1e-6;
+// A ray cast singly walks a few cells of a few boxes each; the rings' remaining boxes each cost an
+// angular extent. Past this many boxes left per open ray, the open rays are cast singly.
+constexpr long kBoxesPerOpenRay = 2;
+}  // namespace
+
+void RayGrid::fan_try_box(Fan& fan, int box) const {
+  const Rect& b = bounds_[static_cast<std::size_t>(box)];
+  const Vec2 o = fan.origin;
+  const double gap_x = std::max({b.xmin - o.x, o.x - b.xmax, 0.0});
+  const double gap_y = std::max({b.ymin - o.y, o.y - b.ymax, 0.0});
+  const double nearest = std::hypot(gap_x, gap_y);
+  if (nearest > fan.max_range_m) return;
+  // A box no nearer than a ray's hit cannot change it.
+  auto try_ray = [&](long r) {
+    auto& best = fan.hits[static_cast<std::size_t>(r)];
+    if (best && best->range_m <= nearest) return;
+    const auto e = enter(box, o, fan.directions[static_cast<std::size_t>(r)]);
+    if (e && e->first <= fan.max_range_m && (!best || e->first < best->range_m))
+      best = RayGridHit{e->first, e->second, box};
+  };
+  const auto extent = fan.spread ? angular_extent(box, o) : std::nullopt;
+  if (!extent) {
+    for (long r = 0; r < fan.n; ++r) try_ray(r);
+    return;
+  }
+  // The extent relative to the first ray, its start brought into [0, 2 pi); then the rays it
+  // covers at each whole turn that can hold some.
+  const double turn = 2 * M_PI;
+  double lo = extent->first - fan.first_angle - kFanAngleTolerance,
+         hi = extent->second - fan.first_angle + kFanAngleTolerance;
+  const double turns = std::floor(lo / turn) * turn;
+  lo -= turns, hi -= turns;
+  for (double shift = -turn; lo + shift <= fan.last + kFanAngleTolerance; shift += turn) {
+    const long r0 = std::max(0L, static_cast<long>(std::ceil((lo + shift) / fan.increment)));
+    const long r1 =
+        std::min(fan.n - 1, static_cast<long>(std::floor((hi + shift) / fan.increment)));
+    for (long r = r0; r <= r1; ++r) try_ray(r);
+  }
+}
+
+void RayGrid::fan_visit_cell(Fan& fan, long i, long j) const {
+  const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
+  fan.unvisited -= first_[c + 1] - first_[c];
+  for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
+    const int box = members_[m];
+    if (stamp_[static_cast<std::size_t>(box)] == fan.query) continue;
+    stamp_[static_cast<std::size_t>(box)] = fan.query;
+    fan_try_box(fan, box);
+  }
+}
+
+// Every cell of ring k lies at least (k - 1) cells from the origin: a ray with a hit that near is
+// settled. When few rays remain open (they pass through gaps into the distance), each walks its
+// own cells (cast()) rather than the rings visiting every box out to the range. True when every
+// ray is settled.
+bool RayGrid::fan_settled_before_ring(Fan& fan, long k) const {
+  if (k < 2) return false;
+  const double ring_near = static_cast<double>(k - 1) * cell_;
+  std::vector<long>& open = open_rays_;
+  open.clear();
+  for (long r = 0; r < fan.n; ++r) {
+    const auto& h = fan.hits[static_cast<std::size_t>(r)];
+    if (!h || h->range_m > ring_near) open.push_back(r);
+  }
+  if (open.empty()) return true;
+  if (static_cast<long>(open.size()) * kBoxesPerOpenRay >= fan.unvisited) return false;
+  for (long r : open)
+    fan.hits[static_cast<std::size_t>(r)] =
+        cast(fan.origin, fan.directions[static_cast<std::size_t>(r)], fan.max_range_m);
+  return true;
+}
+
 void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle,
                        double increment, double max_range_m,
                        std::vector<std::optional<RayGridHit>>& hits) const {
   const long n = static_cast<long>(directions.size());
   hits.assign(directions.size(), std::nullopt);
   if (bounds_.empty() || !(max_range_m > 0) || n == 0) return;
-  constexpr double kAngleTolerance = 1e-6;
-  // A ray cast singly walks a few cells of a few boxes each; the rings' remaining boxes each cost
-  // an angular extent. Past this many boxes left per open ray, the open rays are cast singly.
-  constexpr long kBoxesPerOpenRay = 2;
-  const bool spread =
-      n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
-  auto try_ray = [&](long r, int box) {
-    const auto e = enter(box, origin, directions[static_cast<std::size_t>(r)]);
-    auto& best = hits[static_cast<std::size_t>(r)];
-    if (e && e->first <= max_range_m && (!best || e->first < best->range_m))
-      best = RayGridHit{e->first, e->second, box};
-  };
   // Each box within reach, once, against the rays whose angles its extent covers; cells in rings
   // about the origin's, near to far, so that a ray's hit is usually known before the boxes
-  // behind it come up (a box no nearer than a ray's hit cannot change it).
+  // behind it come up.
   const Rect reach{origin.x - max_range_m, origin.y - max_range_m, origin.x + max_range_m,
                    origin.y + max_range_m};
   if (reach.xmax < area_.xmin || reach.xmin > area_.xmax || reach.ymax < area_.ymin ||
@@ -240,74 +315,25 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
   cells_of(reach, i0, i1, j0, j1);
   long ci, cj, unused_i, unused_j;
   cells_of({origin.x, origin.y, origin.x, origin.y}, ci, unused_i, cj, unused_j);
-  const std::uint32_t query = next_query();
-  const double turn = 2 * M_PI, last = static_cast<double>(n - 1) * increment;
-  long unvisited = 0;  // cell entries (a box counts once per cell it spans) not yet visited
+  const bool spread =
+      n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
+  Fan fan{origin,      directions,  first_angle,
+          increment,   max_range_m, hits,
+          n,           spread,      static_cast<double>(n - 1) * increment,
+          next_query()};
   for (long j = j0; j <= j1; ++j)
-    unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] -
-                 first_[static_cast<std::size_t>(j * nx_ + i0)];
-  auto visit_cell = [&](long i, long j) {
-    const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
-    unvisited -= first_[c + 1] - first_[c];
-    for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
-      const int box = members_[m];
-      if (stamp_[static_cast<std::size_t>(box)] == query) continue;
-      stamp_[static_cast<std::size_t>(box)] = query;
-      const Rect& b = bounds_[static_cast<std::size_t>(box)];
-      const double gap_x = std::max({b.xmin - origin.x, origin.x - b.xmax, 0.0});
-      const double gap_y = std::max({b.ymin - origin.y, origin.y - b.ymax, 0.0});
-      const double nearest = std::hypot(gap_x, gap_y);
-      if (nearest > max_range_m) continue;
-      auto try_unless_nearer = [&](long r) {
-        const auto& best = hits[static_cast<std::size_t>(r)];
-        if (!best || best->range_m > nearest) try_ray(r, box);
-      };
-      const auto extent = spread ? angular_extent(box, origin) : std::nullopt;
-      if (!extent) {
-        for (long r = 0; r < n; ++r) try_unless_nearer(r);
-        continue;
-      }
-      // The extent relative to the first ray, its start brought into [0, 2 pi); then the rays
-      // it covers at each whole turn that can hold some.
-      double lo = extent->first - first_angle - kAngleTolerance,
-             hi = extent->second - first_angle + kAngleTolerance;
-      const double turns = std::floor(lo / turn) * turn;
-      lo -= turns, hi -= turns;
-      for (double shift = -turn; lo + shift <= last + kAngleTolerance; shift += turn) {
-        const long r0 = std::max(0L, static_cast<long>(std::ceil((lo + shift) / increment)));
-        const long r1 = std::min(n - 1, static_cast<long>(std::floor((hi + shift) / increment)));
-        for (long r = r0; r <= r1; ++r) try_unless_nearer(r);
-      }
-    }
-  };
+    fan.unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] -
+                     first_[static_cast<std::size_t>(j * nx_ + i0)];
   const long rings = std::max({ci - i0, i1 - ci, cj - j0, j1 - cj});
-  std::vector<long>& open = open_rays_;
   for (long k = 0; k <= rings; ++k) {
-    // Every cell of ring k lies at least (k - 1) cells from the origin: a ray with a hit that
-    // near is settled. When few rays remain open (they pass through gaps into the distance), each
-    // walks its own cells (cast()) rather than the rings visiting every box out to the range.
-    if (k >= 2) {
-      const double ring_near = static_cast<double>(k - 1) * cell_;
-      open.clear();
-      for (long r = 0; r < n; ++r) {
-        const auto& h = hits[static_cast<std::size_t>(r)];
-        if (!h || h->range_m > ring_near) open.push_back(r);
-      }
-      if (open.empty()) return;
-      if (static_cast<long>(open.size()) * kBoxesPerOpenRay < unvisited) {
-        for (long r : open)
-          hits[static_cast<std::size_t>(r)] =
-              cast(origin, directions[static_cast<std::size_t>(r)], max_range_m);
-        return;
-      }
-    }
+    if (fan_settled_before_ring(fan, k)) return;
     for (long i = std::max(i0, ci - k); i <= std::min(i1, ci + k); ++i) {
-      if (cj - k >= j0) visit_cell(i, cj - k);
-      if (k > 0 && cj + k <= j1) visit_cell(i, cj + k);
+      if (cj - k >= j0) fan_visit_cell(fan, i, cj - k);
+      if (k > 0 && cj + k <= j1) fan_visit_cell(fan, i, cj + k);
     }
     for (long j = std::max(j0, cj - k + 1); j <= std::min(j1, cj + k - 1); ++j) {
-      if (ci - k >= i0) visit_cell(ci - k, j);
-      if (k > 0 && ci + k <= i1) visit_cell(ci + k, j);
+      if (ci - k >= i0) fan_visit_cell(fan, ci - k, j);
+      if (k > 0 && ci + k <= i1) fan_visit_cell(fan, ci + k, j);
     }
   }
 }

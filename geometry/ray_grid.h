@@ -65,6 +65,12 @@ class RayGrid {
   void cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const;
   /// A fresh stamp for a query that must visit each box once.
   std::uint32_t next_query() const;
+  /// cast_fan's steps: one box tried on the rays it can cover, one cell's boxes, and before a
+  /// ring, whether every ray is settled (casting the few still open singly).
+  struct Fan;
+  void fan_try_box(Fan& fan, int box) const;
+  void fan_visit_cell(Fan& fan, long i, long j) const;
+  bool fan_settled_before_ring(Fan& fan, long k) const;
   /// The angular extent [lo, hi] (radians, hi - lo < pi) box i covers seen from `origin`; none
   /// when the origin lies in the box or so near it that the extent is ill-conditioned.
   std::optional<std::pair<double, double>> angular_extent(int i, Vec2 origin) const;

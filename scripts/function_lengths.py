@@ -16,16 +16,6 @@ DATA_TABLES = {
     ("sim/episode_config_json.cpp", "fields"),
 }
 
-# Functions still over the limit, each with the length it may not pass: issue 39's remaining work
-# (the planners' searches, the ray grid's fan, the Python observation's bindings). The check fails
-# on any other function over the limit and on any of these grown; split one, and take it off.
-NOT_YET_SPLIT = {
-    ("planner/round/tangent_planner.cpp", "RoundTangentPlanner::plan"): 162,
-    ("planner/vg/vg_overlay.cpp", "plan_with_added"): 140,
-    ("planner/mesh/free_space_mesh.cpp", "FreeSpaceMesh::FreeSpaceMesh"): 118,
-    ("geometry/ray_grid.cpp", "RayGrid::cast_fan"): 99,
-}
-
 MODULES = ["app", "batch", "bench", "controller", "fuzz", "geometry", "planner", "python", "render",
            "robot", "sim", "util", "worlds"]
 
@@ -107,22 +97,19 @@ def main():
                 for first, count, name in function_bodies(path):
                     if count > args.limit:
                         too_long.append((count, path, first, name))
-    failed = waiting = 0
+    failed = 0
     for count, path, first, name in sorted(too_long, reverse=True):
         table = (path, name) in DATA_TABLES
-        cap = NOT_YET_SPLIT.get((path, name))
-        allowed = table or (cap is not None and count <= cap)
-        waiting += allowed and cap is not None
-        if allowed and not args.all:
+        if table and not args.all:
             continue
-        failed += not allowed
-        note = " (a data table)" if table else f" (not yet split, at most {cap})" if cap else ""
+        failed += not table
+        note = " (a data table)" if table else ""
         print(f"{path}:{first}: {name} is {count} lines{note}")
     if failed:
         print(f"function_lengths: {failed} functions over {args.limit} lines (docs/architecture.md)")
         return 1
-    print(f"function_lengths: no new function over {args.limit} lines outside tests "
-          f"({len(DATA_TABLES)} data tables; {waiting} functions not yet split, none grown)")
+    print(f"function_lengths: no function over {args.limit} lines outside tests "
+          f"({len(DATA_TABLES)} data table)")
     return 0
 
 

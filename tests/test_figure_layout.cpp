@@ -169,10 +169,14 @@ TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
       worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
   std::vector<std::unique_ptr<planner::CoveragePlanner>> planners;
   std::vector<CoveragePanel> panels;
+  // The sanitizer tree cuts the exact search short (the Release tree proves the pit's order):
+  // the panel then says "NOT proven optimal" and draws the best order found.
+  planner::CoverageParams params;
+  if (!test::full_size()) params.exact.max_prefixes = 2000;
   for (const char* name :
        {"coverage-chnn", "coverage-exact", "coverage-greedy", "coverage-cells"}) {
     planners.push_back(
-        std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), name));
+        std::make_unique<planner::CoveragePlanner>(planner::planner_input(w, true), name, params));
     ASSERT_EQ(planners.back()->plan(w.start.position(), worlds::staging_pose(w).position()).status,
               planner::PlanStatus::kOk);
     panels.push_back({name, &planners.back()->grid(), planners.back()->last_plan(), {}, ""});
@@ -194,7 +198,7 @@ TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
     return std::any_of(layout.texts.begin(), layout.texts.end(),
                        [&](const std::string& t) { return t.find(part) != std::string::npos; });
   };
-  EXPECT_TRUE(said("proven optimal"));
+  EXPECT_TRUE(said(test::full_size() ? "proven optimal in" : "NOT proven optimal"));
   EXPECT_TRUE(said("valid order in"));
   EXPECT_TRUE(said("NO PLAN"));
   EXPECT_TRUE(said("settled on a valid order in 0 of 50 restarts"));

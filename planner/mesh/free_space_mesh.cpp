@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace plantsim::planner {
 namespace {
@@ -67,17 +68,134 @@ struct OpenCell {
   std::int32_t id;
 };
 
-}  // namespace
+// The floor swept left to right: the elementary y-intervals between the rectangles' edges, how
+// many rectangles cover each, and the open cells by their lower y. Closing and opening cells
+// where the coverage changes, it appends cells and the portals between them.
+class Sweep {
+ public:
+  Sweep(std::vector<double> ys, std::vector<MeshCell>& cells, std::vector<MeshPortal>& portals)
+      : ys_(std::move(ys)), coverage_(ys_.size() - 1), cells_(cells), portals_(portals) {}
 
-FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) {
-  eps_ = 1e-13 * std::max({1.0, std::fabs(floor.xmin), std::fabs(floor.xmax), std::fabs(floor.ymin),
-                           std::fabs(floor.ymax)});
-  if (!(floor.xmax > floor.xmin && floor.ymax > floor.ymin)) return;  // no free floor: no cells
+  int leaf(double y) const {
+    return static_cast<int>(std::lower_bound(ys_.begin(), ys_.end(), y) - ys_.begin());
+  }
+  double y(int leaf) const { return ys_[static_cast<std::size_t>(leaf)]; }
+  void cover(const Event& e) { coverage_.add(e.lo, e.hi, e.sign); }
+
+  // The cells at the floor's left edge: every stretch the rectangles there leave free.
+  void open_first_cells(double x) {
+    runs_.clear();
+    coverage_.uncovered(0, static_cast<int>(ys_.size()) - 2, runs_);
+    for (const auto& [a, b] : runs_) open_cell(x, ys_[a], ys_[b + 1]);
+  }
+
+  // After the events at x (ranges: the y-ranges they changed): cells whose interval changed end
+  // here, new ones begin, and portals join them.
+  void renew_at(double x, std::vector<std::pair<double, double>>& ranges) {
+    closed_now_.clear();
+    opened_now_.clear();
+    for (const auto& [lo, hi] : changed_hulls(ranges)) renew_within(x, lo, hi);
+    add_portals(x);
+  }
+
+  // Every cell still open ends at the floor's right edge.
+  void close_all(double x) {
+    for (auto& [ylo, c] : open_) cells_[c.id].xhi = x;
+  }
+
+ private:
+  std::int32_t open_cell(double x, double ylo, double yhi) {
+    const auto id = static_cast<std::int32_t>(cells_.size());
+    cells_.push_back({x, std::numeric_limits<double>::quiet_NaN(), ylo, yhi});
+    open_[ylo] = {yhi, id};
+    return id;
+  }
+
+  // The open cells whose intervals overlap or touch [lo, hi], as map iterators [first, last).
+  auto touching(double lo, double hi) {
+    auto first = open_.upper_bound(lo);
+    if (first != open_.begin() && std::prev(first)->second.yhi >= lo) --first;
+    auto last = first;
+    while (last != open_.end() && last->first <= hi) ++last;
+    return std::make_pair(first, last);
+  }
+
+  // Each changed y-range grown by the open cells it reaches; grown ranges that meet are one.
+  const std::vector<std::pair<double, double>>& changed_hulls(
+      std::vector<std::pair<double, double>>& ranges) {
+    std::sort(ranges.begin(), ranges.end());
+    hulls_.clear();
+    for (const auto& [a, b] : ranges) {
+      double lo = a, hi = b;
+      const auto [first, last] = touching(a, b);
+      for (auto it = first; it != last; ++it)
+        lo = std::min(lo, it->first), hi = std::max(hi, it->second.yhi);
+      if (!hulls_.empty() && lo <= hulls_.back().second)
+        hulls_.back().second = std::max(hulls_.back().second, hi);
+      else
+        hulls_.emplace_back(lo, hi);
+    }
+    return hulls_;
+  }
+
+  // Cells within [lo, hi] whose interval is unchanged live on; the others end at x and the free
+  // stretches there that no live cell holds begin new ones.
+  void renew_within(double x, double lo, double hi) {
+    runs_.clear();
+    coverage_.uncovered(leaf(lo), leaf(hi) - 1, runs_);
+    auto [first, last] = touching(lo, hi);
+    std::vector<std::pair<double, double>> fresh;
+    for (const auto& [a, b] : runs_) fresh.emplace_back(ys_[a], ys_[b + 1]);
+    std::size_t k = 0;
+    for (auto it = first; it != last;) {
+      while (k < fresh.size() && fresh[k].first < it->first) ++k;
+      if (k < fresh.size() && fresh[k].first == it->first && fresh[k].second == it->second.yhi) {
+        fresh[k].first = std::numeric_limits<double>::quiet_NaN();  // taken
+        ++it;
+        continue;
+      }
+      cells_[it->second.id].xhi = x;
+      closed_now_.push_back(it->second.id);
+      it = open_.erase(it);
+    }
+    for (const auto& [a, b] : fresh)
+      if (!std::isnan(a)) opened_now_.push_back(open_cell(x, a, b));
+  }
+
+  // Portals: every closing cell against every opening one that shares a stretch of y.
+  void add_portals(double x) {
+    std::sort(opened_now_.begin(), opened_now_.end(),
+              [&](std::int32_t a, std::int32_t b) { return cells_[a].ylo < cells_[b].ylo; });
+    std::size_t j = 0;
+    for (std::int32_t l : closed_now_) {
+      const MeshCell& L = cells_[l];
+      while (j < opened_now_.size() && cells_[opened_now_[j]].yhi <= L.ylo) ++j;
+      for (std::size_t k = j; k < opened_now_.size() && cells_[opened_now_[k]].ylo < L.yhi; ++k) {
+        const MeshCell& R = cells_[opened_now_[k]];
+        const double y0 = std::max(L.ylo, R.ylo), y1 = std::min(L.yhi, R.yhi);
+        if (y1 > y0)
+          portals_.push_back({x, y0, y1, l, opened_now_[k], L.ylo != R.ylo, L.yhi != R.yhi});
+      }
+    }
+  }
+
+  std::vector<double> ys_;
+  Coverage coverage_;
+  std::map<double, OpenCell> open_;  // by ylo
+  std::vector<MeshCell>& cells_;
+  std::vector<MeshPortal>& portals_;
+  std::vector<std::pair<int, int>> runs_;
+  std::vector<std::pair<double, double>> hulls_;
+  std::vector<std::int32_t> closed_now_, opened_now_;
+};
+
+// The rectangles' parts on the floor, and every y where one begins or ends (sorted, unique).
+std::pair<std::vector<Rect>, std::vector<double>> blocked_parts(const std::vector<Rect>& rects,
+                                                                const Rect& floor) {
   std::vector<Rect> blocked;
   std::vector<double> ys{floor.ymin, floor.ymax};
   for (const Rect& r : rects) {
-    const Rect c{std::max(r.xmin, floor.xmin), std::max(r.ymin, floor.ymin),
-                 std::min(r.xmax, floor.xmax), std::min(r.ymax, floor.ymax)};
+    const Rect c = geom::clipped(r, floor);
     if (c.xmax > c.xmin && c.ymax > c.ymin) {
       blocked.push_back(c);
       ys.push_back(c.ymin);
@@ -86,104 +204,40 @@ FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) 
   }
   std::sort(ys.begin(), ys.end());
   ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
-  const auto leaf = [&](double y) {
-    return static_cast<int>(std::lower_bound(ys.begin(), ys.end(), y) - ys.begin());
-  };
+  return {std::move(blocked), std::move(ys)};
+}
+
+}  // namespace
+
+FreeSpaceMesh::FreeSpaceMesh(const std::vector<Rect>& rects, const Rect& floor) {
+  eps_ = 1e-13 * std::max({1.0, std::fabs(floor.xmin), std::fabs(floor.xmax), std::fabs(floor.ymin),
+                           std::fabs(floor.ymax)});
+  if (!(floor.xmax > floor.xmin && floor.ymax > floor.ymin)) return;  // no free floor: no cells
+  auto [blocked, ys] = blocked_parts(rects, floor);
+  Sweep sweep(std::move(ys), cells_, portals_);
   std::vector<Event> events;
   events.reserve(2 * blocked.size());
   for (const Rect& r : blocked) {
-    const int lo = leaf(r.ymin), hi = leaf(r.ymax) - 1;
+    const int lo = sweep.leaf(r.ymin), hi = sweep.leaf(r.ymax) - 1;
     events.push_back({r.xmin, +1, lo, hi});
     if (r.xmax < floor.xmax) events.push_back({r.xmax, -1, lo, hi});
   }
   std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.x < b.x; });
 
-  Coverage coverage(ys.size() - 1);
-  std::map<double, OpenCell> open;  // by ylo
-  std::vector<std::pair<int, int>> runs;
-  std::vector<std::pair<double, double>> ranges, hulls;
-  std::vector<std::int32_t> closed_now, opened_now;
-  const auto open_cell = [&](double x, double ylo, double yhi) {
-    const auto id = static_cast<std::int32_t>(cells_.size());
-    cells_.push_back({x, std::numeric_limits<double>::quiet_NaN(), ylo, yhi});
-    open[ylo] = {yhi, id};
-    return id;
-  };
-  // The open cells whose intervals overlap or touch [lo, hi], as map iterators [first, last).
-  const auto touching = [&](double lo, double hi) {
-    auto first = open.upper_bound(lo);
-    if (first != open.begin() && std::prev(first)->second.yhi >= lo) --first;
-    auto last = first;
-    while (last != open.end() && last->first <= hi) ++last;
-    return std::make_pair(first, last);
-  };
-
   std::size_t e = 0;
-  while (e < events.size() && events[e].x == floor.xmin)
-    coverage.add(events[e].lo, events[e].hi, events[e].sign), ++e;
-  coverage.uncovered(0, static_cast<int>(ys.size()) - 2, runs);
-  for (const auto& [a, b] : runs) open_cell(floor.xmin, ys[a], ys[b + 1]);
-
+  while (e < events.size() && events[e].x == floor.xmin) sweep.cover(events[e++]);
+  sweep.open_first_cells(floor.xmin);
+  std::vector<std::pair<double, double>> ranges;
   while (e < events.size()) {
     const double x = events[e].x;
     ranges.clear();
     for (; e < events.size() && events[e].x == x; ++e) {
-      coverage.add(events[e].lo, events[e].hi, events[e].sign);
-      ranges.emplace_back(ys[events[e].lo], ys[events[e].hi + 1]);
+      sweep.cover(events[e]);
+      ranges.emplace_back(sweep.y(events[e].lo), sweep.y(events[e].hi + 1));
     }
-    std::sort(ranges.begin(), ranges.end());
-    // Each changed y-range grown by the open cells it reaches; grown ranges that meet are one.
-    hulls.clear();
-    for (const auto& [a, b] : ranges) {
-      double lo = a, hi = b;
-      const auto [first, last] = touching(a, b);
-      for (auto it = first; it != last; ++it)
-        lo = std::min(lo, it->first), hi = std::max(hi, it->second.yhi);
-      if (!hulls.empty() && lo <= hulls.back().second)
-        hulls.back().second = std::max(hulls.back().second, hi);
-      else
-        hulls.emplace_back(lo, hi);
-    }
-    closed_now.clear();
-    opened_now.clear();
-    for (const auto& [lo, hi] : hulls) {
-      runs.clear();
-      coverage.uncovered(leaf(lo), leaf(hi) - 1, runs);
-      auto [first, last] = touching(lo, hi);
-      std::vector<std::pair<double, double>> fresh;
-      for (const auto& [a, b] : runs) fresh.emplace_back(ys[a], ys[b + 1]);
-      // Cells whose interval is unchanged live on; the others end here and new ones begin.
-      std::size_t k = 0;
-      for (auto it = first; it != last;) {
-        while (k < fresh.size() && fresh[k].first < it->first) ++k;
-        if (k < fresh.size() && fresh[k].first == it->first && fresh[k].second == it->second.yhi) {
-          fresh[k].first = std::numeric_limits<double>::quiet_NaN();  // taken
-          ++it;
-          continue;
-        }
-        cells_[it->second.id].xhi = x;
-        closed_now.push_back(it->second.id);
-        it = open.erase(it);
-      }
-      for (const auto& [a, b] : fresh)
-        if (!std::isnan(a)) opened_now.push_back(open_cell(x, a, b));
-    }
-    // Portals: every closing cell against every opening one that shares a stretch of x.
-    std::sort(opened_now.begin(), opened_now.end(),
-              [&](std::int32_t a, std::int32_t b) { return cells_[a].ylo < cells_[b].ylo; });
-    std::size_t j = 0;
-    for (std::int32_t l : closed_now) {
-      const MeshCell& L = cells_[l];
-      while (j < opened_now.size() && cells_[opened_now[j]].yhi <= L.ylo) ++j;
-      for (std::size_t k = j; k < opened_now.size() && cells_[opened_now[k]].ylo < L.yhi; ++k) {
-        const MeshCell& R = cells_[opened_now[k]];
-        const double y0 = std::max(L.ylo, R.ylo), y1 = std::min(L.yhi, R.yhi);
-        if (y1 > y0)
-          portals_.push_back({x, y0, y1, l, opened_now[k], L.ylo != R.ylo, L.yhi != R.yhi});
-      }
-    }
+    sweep.renew_at(x, ranges);
   }
-  for (auto& [ylo, c] : open) cells_[c.id].xhi = floor.xmax;
+  sweep.close_all(floor.xmax);
   index_portals();
   index_cells();
 }

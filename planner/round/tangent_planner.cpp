@@ -205,6 +205,166 @@ bool RoundTangentPlanner::arc_clear(std::int32_t circle, double from, double swe
   return true;
 }
 
+// One query's lazy A* over (circle, sense) states, each reached by a tangent from its parent: a
+// tangent and the arc on the parent's circle before it are checked only when popped.
+class RoundTangentPlanner::Search {
+ public:
+  static constexpr std::int32_t kStart = -1, kGoal = -2;
+  struct State {
+    std::int32_t circle;  // kStart for the start
+    std::int8_t sense;
+    Vec2 dep, arr;  // the tangent it arrived by: left its parent at dep, reached arr
+    double arr_angle;
+    std::int32_t parent;
+  };
+  struct Entry {
+    double f, g;
+    std::int32_t circle, parent;  // circle kGoal: the goal
+    std::int8_t sense;
+    Vec2 dep, arr;
+    double sweep;  // the turn on the parent's circle before dep
+    bool operator>(const Entry& o) const {
+      if (f != o.f) return f > o.f;
+      if (g != o.g) return g < o.g;
+      if (circle != o.circle) return circle > o.circle;
+      if (sense != o.sense) return sense > o.sense;
+      return parent > o.parent;
+    }
+  };
+
+  Search(RoundTangentPlanner& planner, Vec2 start, Vec2 goal)
+      : p_(planner),
+        r_(planner.radius_),
+        n_(static_cast<std::int32_t>(planner.circles_.size())),
+        start_(start),
+        goal_(goal),
+        states_{{kStart, 0, start, start, 0.0, -1}} {}
+
+  // The entry that reached the goal, or none.
+  std::optional<Entry> run() {
+    expand(0);
+    while (!open_.empty()) {
+      const Entry e = open_.top();
+      open_.pop();
+      const std::uint64_t k = e.circle == kGoal ? 0 : key(e.circle, e.sense, e.parent);
+      if (e.circle != kGoal && closed_.count(k)) continue;
+      if (!clear(e)) continue;
+      if (e.circle == kGoal) return e;
+      closed_.insert(k);
+      const Vec2 c = circle(e.circle);
+      states_.push_back({e.circle, e.sense, e.dep, e.arr, angle_of(e.arr, c), e.parent});
+      cost_.push_back(e.g);
+      expand(static_cast<std::int32_t>(states_.size() - 1));
+    }
+    return std::nullopt;
+  }
+
+  // The path to the goal's entry: back through the states, each arc sampled (path) and turned at
+  // its corners (drive_path), then forwards.
+  void trace(const Entry& goal_entry, PlanResult& out) const {
+    std::vector<std::int32_t> chain;
+    for (std::int32_t v = goal_entry.parent; v != -1; v = state(v).parent) chain.push_back(v);
+    std::reverse(chain.begin(), chain.end());
+    out.path.push_back(start_);
+    out.drive_path.push_back(start_);
+    auto add_arc = [&](const State& on, Vec2 dep) {
+      if (on.circle == kStart) return;
+      const Vec2 c = circle(on.circle);
+      const double sweep = sweep_between(on.arr_angle, angle_of(dep, c), on.sense);
+      append_arc_samples(c, r_, on.arr_angle, on.sense, sweep, out.path);
+      p_.append_drive_corners(c, on.arr_angle, on.sense, sweep, on.arr, dep, out.drive_path);
+    };
+    for (std::size_t i = 1; i < chain.size(); ++i) {
+      const State& s = state(chain[i]);
+      add_arc(state(chain[i - 1]), s.dep);
+      for (auto* line : {&out.path, &out.drive_path}) {
+        if (!(line->back() == s.dep)) line->push_back(s.dep);
+        line->push_back(s.arr);
+      }
+    }
+    add_arc(state(chain.back()), goal_entry.dep);
+    for (auto* line : {&out.path, &out.drive_path}) {
+      if (!(line->back() == goal_entry.dep)) line->push_back(goal_entry.dep);
+      if (!(line->back() == goal_)) line->push_back(goal_);
+    }
+  }
+
+  std::int64_t expanded() const { return expanded_; }
+
+ private:
+  Vec2 circle(std::int32_t i) const { return p_.circles_[static_cast<std::size_t>(i)]; }
+  const State& state(std::int32_t i) const { return states_[static_cast<std::size_t>(i)]; }
+
+  std::uint64_t key(std::int32_t circle, int sense, std::int32_t parent) const {
+    const State& p = state(parent);
+    const auto from = static_cast<std::uint64_t>(p.circle + 1) * 2 + (p.sense > 0);
+    return (static_cast<std::uint64_t>(circle) * 2 + (sense > 0)) *
+               (2 * static_cast<std::uint64_t>(n_) + 2) +
+           from;
+  }
+
+  void push(std::int32_t circle, int sense, std::int32_t parent, const Tangent& t, double sweep,
+            double g) {
+    const Vec2 target = circle == kGoal ? goal_ : t.arr;
+    open_.push({g + geom::distance(target, goal_), g, circle, parent,
+                static_cast<std::int8_t>(sense), t.dep, t.arr, sweep});
+  }
+
+  bool may_touch(std::int32_t i, Vec2 p) const {
+    return in_quadrants(angle_of(p, circle(i)), p_.allowed_[static_cast<std::size_t>(i)]);
+  }
+
+  // The turn on the parent's circle, then the segment.
+  bool clear(const Entry& e) {
+    const State& parent = state(e.parent);
+    if (parent.circle != kStart && e.sweep > 0) {
+      const double a = parent.arr_angle, from = parent.sense > 0 ? a : a - e.sweep;
+      if (!p_.arc_clear(parent.circle, from, e.sweep)) return false;
+    }
+    ++p_.segment_tests_;
+    if (!p_.segment_clear(e.dep, e.arr)) return false;
+    ++p_.tangents_kept_;
+    return true;
+  }
+
+  void expand(std::int32_t at) {
+    ++expanded_;
+    const State s = state(at);
+    const double g = cost_[static_cast<std::size_t>(at)];
+    if (s.circle == kStart) {
+      push(kGoal, 0, at, {start_, goal_}, 0, geom::distance(start_, goal_));
+      for (std::int32_t j = 0; j < n_; ++j)
+        for (int sj : {1, -1})
+          if (const auto t = point_to_circle(start_, circle(j), sj, r_))
+            if (may_touch(j, t->arr)) push(j, sj, at, *t, 0, g + geom::distance(t->dep, t->arr));
+      return;
+    }
+    const Vec2 ci = circle(s.circle);
+    auto leave = [&](std::int32_t to, int sense, const Tangent& t) {
+      if (!may_touch(s.circle, t.dep) || (to != kGoal && !may_touch(to, t.arr))) return;
+      const double sweep = sweep_between(s.arr_angle, angle_of(t.dep, ci), s.sense);
+      if (sweep > M_PI) return;  // around one corner a shortest path turns by at most half a turn
+      push(to, sense, at, t, sweep, g + r_ * sweep + geom::distance(t.dep, t.arr));
+    };
+    if (const auto t = circle_to_point(ci, s.sense, goal_, r_)) leave(kGoal, 0, *t);
+    for (std::int32_t j = 0; j < n_; ++j) {
+      if (j == s.circle) continue;
+      for (int sj : {1, -1})
+        if (const auto t = circle_to_circle(ci, s.sense, circle(j), sj, r_)) leave(j, sj, *t);
+    }
+  }
+
+  RoundTangentPlanner& p_;
+  const double r_;
+  const std::int32_t n_;
+  const Vec2 start_, goal_;
+  std::vector<State> states_;
+  std::vector<double> cost_{0.0};
+  std::unordered_set<std::uint64_t> closed_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open_;
+  std::int64_t expanded_ = 0;
+};
+
 PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
   const auto t0 = std::chrono::steady_clock::now();
   PlanResult out;
@@ -230,141 +390,18 @@ PlanResult RoundTangentPlanner::plan(Vec2 start, Vec2 goal) {
     *p = *moved;
     *snapped = true;
   }
-
-  const double r = radius_;
-  const auto n = static_cast<std::int32_t>(circles_.size());
-  constexpr std::int32_t kStart = -1, kGoal = -2;
-  struct State {
-    std::int32_t circle;  // kStart for the start
-    std::int8_t sense;
-    Vec2 dep, arr;  // the tangent it arrived by: left its parent at dep, reached arr
-    double arr_angle;
-    std::int32_t parent;
-  };
-  struct Entry {
-    double f, g;
-    std::int32_t circle, parent;  // circle kGoal: the goal
-    std::int8_t sense;
-    Vec2 dep, arr;
-    double sweep;  // the turn on the parent's circle before dep
-    bool operator>(const Entry& o) const {
-      if (f != o.f) return f > o.f;
-      if (g != o.g) return g < o.g;
-      if (circle != o.circle) return circle > o.circle;
-      if (sense != o.sense) return sense > o.sense;
-      return parent > o.parent;
-    }
-  };
-  std::vector<State> states{{kStart, 0, start, start, 0.0, -1}};
-  std::unordered_set<std::uint64_t> closed;
-  auto key = [&](std::int32_t circle, int sense, std::int32_t parent) {
-    const State& p = states[static_cast<std::size_t>(parent)];
-    const auto from = static_cast<std::uint64_t>(p.circle + 1) * 2 + (p.sense > 0);
-    return (static_cast<std::uint64_t>(circle) * 2 + (sense > 0)) *
-               (2 * static_cast<std::uint64_t>(n) + 2) +
-           from;
-  };
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  auto push = [&](std::int32_t circle, int sense, std::int32_t parent, const Tangent& t,
-                  double sweep, double g) {
-    const Vec2 target = circle == kGoal ? goal : t.arr;
-    open.push({g + geom::distance(target, goal), g, circle, parent, static_cast<std::int8_t>(sense),
-               t.dep, t.arr, sweep});
-  };
-
-  auto may_touch = [&](std::int32_t circle, Vec2 p) {
-    const Vec2 c = circles_[static_cast<std::size_t>(circle)];
-    return in_quadrants(angle_of(p, c), allowed_[static_cast<std::size_t>(circle)]);
-  };
-  std::vector<double> cost{0.0};
-  std::int64_t expanded = 0;
-  auto expand_state = [&](std::int32_t at) {
-    ++expanded;
-    const State s = states[static_cast<std::size_t>(at)];
-    const double g = cost[static_cast<std::size_t>(at)];
-    if (s.circle == kStart) {
-      push(kGoal, 0, at, {start, goal}, 0, geom::distance(start, goal));
-      for (std::int32_t j = 0; j < n; ++j)
-        for (int sj : {1, -1})
-          if (const auto t = point_to_circle(start, circles_[static_cast<std::size_t>(j)], sj, r))
-            if (may_touch(j, t->arr)) push(j, sj, at, *t, 0, g + geom::distance(t->dep, t->arr));
-      return;
-    }
-    const Vec2 ci = circles_[static_cast<std::size_t>(s.circle)];
-    auto leave = [&](std::int32_t circle, int sense, const Tangent& t) {
-      if (!may_touch(s.circle, t.dep) || (circle != kGoal && !may_touch(circle, t.arr))) return;
-      const double sweep = sweep_between(s.arr_angle, angle_of(t.dep, ci), s.sense);
-      if (sweep > M_PI) return;  // around one corner a shortest path turns by at most half a turn
-      push(circle, sense, at, t, sweep, g + r * sweep + geom::distance(t.dep, t.arr));
-    };
-    if (const auto t = circle_to_point(ci, s.sense, goal, r)) leave(kGoal, 0, *t);
-    for (std::int32_t j = 0; j < n; ++j) {
-      if (j == s.circle) continue;
-      for (int sj : {1, -1})
-        if (const auto t =
-                circle_to_circle(ci, s.sense, circles_[static_cast<std::size_t>(j)], sj, r))
-          leave(j, sj, *t);
-    }
-  };
-
-  expand_state(0);
-  while (!open.empty()) {
-    const Entry e = open.top();
-    open.pop();
-    const State& parent = states[static_cast<std::size_t>(e.parent)];
-    const std::uint64_t k = e.circle == kGoal ? 0 : key(e.circle, e.sense, e.parent);
-    if (e.circle != kGoal && closed.count(k)) continue;
-    // The turn on the parent's circle, then the segment.
-    if (parent.circle != kStart && e.sweep > 0) {
-      const double a = parent.arr_angle, from = parent.sense > 0 ? a : a - e.sweep;
-      if (!arc_clear(parent.circle, from, e.sweep)) continue;
-    }
-    ++segment_tests_;
-    if (!segment_clear(e.dep, e.arr)) continue;
-    ++tangents_kept_;
-    if (e.circle == kGoal) {
-      // The path: back through the states, each arc sampled, then forwards.
-      std::vector<std::int32_t> chain;
-      for (std::int32_t v = e.parent; v != -1; v = states[static_cast<std::size_t>(v)].parent)
-        chain.push_back(v);
-      std::reverse(chain.begin(), chain.end());
-      out.path.push_back(start);
-      out.drive_path.push_back(start);
-      auto add_arc = [&](const State& on, Vec2 dep) {
-        if (on.circle == kStart) return;
-        const Vec2 c = circles_[static_cast<std::size_t>(on.circle)];
-        const double sweep = sweep_between(on.arr_angle, angle_of(dep, c), on.sense);
-        append_arc_samples(c, r, on.arr_angle, on.sense, sweep, out.path);
-        append_drive_corners(c, on.arr_angle, on.sense, sweep, on.arr, dep, out.drive_path);
-      };
-      for (std::size_t i = 1; i < chain.size(); ++i) {
-        const State& s = states[static_cast<std::size_t>(chain[i])];
-        add_arc(states[static_cast<std::size_t>(chain[i - 1])], s.dep);
-        for (auto* line : {&out.path, &out.drive_path}) {
-          if (!(line->back() == s.dep)) line->push_back(s.dep);
-          line->push_back(s.arr);
-        }
-      }
-      add_arc(states[static_cast<std::size_t>(chain.back())], e.dep);
-      for (auto* line : {&out.path, &out.drive_path}) {
-        if (!(line->back() == e.dep)) line->push_back(e.dep);
-        if (!(line->back() == goal)) line->push_back(goal);
-      }
-      out.status = PlanStatus::kOk;
-      out.length = e.g;
-      out.note = "segments and arcs of radius " + std::to_string(r) +
-                 " m around corners; arcs sampled every 2 degrees, length exact";
-      out.stats.expanded = expanded;
-      return finish();
-    }
-    closed.insert(k);
-    const Vec2 c = circles_[static_cast<std::size_t>(e.circle)];
-    states.push_back({e.circle, e.sense, e.dep, e.arr, angle_of(e.arr, c), e.parent});
-    cost.push_back(e.g);
-    expand_state(static_cast<std::int32_t>(states.size() - 1));
+  Search search(*this, start, goal);
+  const auto reached = search.run();
+  out.stats.expanded = search.expanded();
+  if (!reached) {
+    out.status = PlanStatus::kNoPath;
+    return finish();
   }
-  out.status = PlanStatus::kNoPath;
-  out.stats.expanded = expanded;
+  search.trace(*reached, out);
+  out.status = PlanStatus::kOk;
+  out.length = reached->g;
+  out.note = "segments and arcs of radius " + std::to_string(radius_) +
+             " m around corners; arcs sampled every 2 degrees, length exact";
   return finish();
 }
 

@@ -46,6 +46,7 @@ class RoundTangentPlanner : public Planner {
   double radius() const { return radius_; }
 
  private:
+  class Search;            // one query's search (tangent_planner.cpp)
   std::vector<Rect> raw_;  // obstacles as given, not inflated
   Rect free_floor_;        // the floor shrunk by the clearance (walls are flat)
   double radius_;

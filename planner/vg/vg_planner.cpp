@@ -15,6 +15,7 @@
 #include "planner/free_point.h"
 #include "planner/inflation.h"
 #include "planner/search_budget.h"
+#include "planner/vg/lazy_entry.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -157,17 +158,8 @@ class LazySearch {
   }
 
  private:
-  static constexpr std::int32_t kUntested = -1;  // candidate index for edges from start or to goal
-  struct Entry {
-    double f, g;
-    std::int32_t node, parent, candidate;
-    bool operator>(const Entry& o) const {
-      if (f != o.f) return f > o.f;
-      if (g != o.g) return g < o.g;  // deeper first on ties
-      if (node != o.node) return node > o.node;
-      return parent > o.parent;
-    }
-  };
+  using Entry = LazyEntry;
+  static constexpr std::int32_t kUntested = LazyEntry::kUntested;
 
   Vec2 point(std::int32_t v) const { return v == s_ ? start_ : v == g_ ? goal_ : vertices_[v].p; }
 
@@ -226,7 +218,7 @@ class LazySearch {
   std::vector<std::uint16_t>& expansions_;  // per vertex, across queries
   const Vec2 start_, goal_;
   const std::int32_t s_, g_;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open_;
+  LazyOpenList open_;
   std::vector<char> closed_;
   std::vector<std::int32_t> parent_;
   std::vector<double> cost_;
