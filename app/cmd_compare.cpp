@@ -8,12 +8,13 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "render/comparison_figure.h"
 #include "render/png_io.h"
 #include "render/report.h"
-#include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
@@ -64,7 +65,7 @@ render::ComparisonPanel compare_one(const std::string& name, const worlds::World
   auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
   sim::EpisodeConfig c = config;
   if (field) c.travel = sim::TravelMode::kPotentialField;
-  panel.run = sim::run_episode(world, *p, c);
+  panel.run = episode::run_episode(world, *p, c);
   if (opt.graph) panel.graph_edges = p->graph_edges();
   return panel;
 }
@@ -119,7 +120,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     poses.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, poses);
     const sim::EpisodeConfig config =
-        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+        opt->config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt->config);
     util::StagedFolder staged(
         opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare"
                          : opt->out,

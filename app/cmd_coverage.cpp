@@ -10,11 +10,12 @@
 
 #include "app/commands.h"
 #include "app/coverage_runs.h"
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/coverage/coverage_params_json.h"
 #include "render/coverage_figure.h"
 #include "render/png_io.h"
 #include "render/report.h"
-#include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
@@ -52,7 +53,7 @@ struct CoverageOptions {
 bool drive_coverage(const worlds::World& world, const sim::EpisodeConfig& config, CoverageRun& run,
                     render::CoveragePanel& panel, nlohmann::ordered_json& j, std::string& driven,
                     std::string& status) {
-  const sim::EpisodeResult e = sim::run_episode(world, *run.planner, config);
+  const sim::EpisodeResult e = episode::run_episode(world, *run.planner, config);
   for (const auto& s : e.trajectory) panel.driven.push_back(s.truth.position());
   const auto start_cell = run.planner->grid().nearest_free(world.start.position());
   const double dc =
@@ -131,7 +132,7 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
     sim::EpisodeConfig config =
-        opt->config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt->config);
+        opt->config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt->config);
     planner::CoverageParams params = opt->params.empty()
                                          ? planner::CoverageParams{}
                                          : planner::load_coverage_params(opt->params);

@@ -2,9 +2,9 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "episode/episode_config_json.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode_config_json.h"
 
 namespace plantsim::app {
 
@@ -22,7 +22,7 @@ std::function<int()> add_config_command(CLI::App& app) {
   app.add_subcommand("config",
                      "Print every episode parameter with its default, as a --config file");
   return []() {
-    std::cout << sim::default_config_json();
+    std::cout << episode::default_config_json();
     return kExitOk;
   };
 }

@@ -6,10 +6,11 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "render/animation.h"
-#include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
@@ -52,7 +53,7 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   overrides.movingai_query = opt.query;
   const worlds::World world = worlds::load_world(opt.world, overrides);
   sim::EpisodeConfig config =
-      opt.config.empty() ? sim::EpisodeConfig{} : sim::load_episode_config(opt.config);
+      opt.config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt.config);
   auto p = planner::make_planner(opt.planner, planner::planner_input(world, true));
   // Every input is valid by now. The outputs are written into a staging folder beside the
   // destination (an unwritable place fails here, before the simulation) and moved into place
@@ -67,7 +68,7 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
         opt.travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
   if (opt.undock) config.docking.undock = true;
   if (opt.animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
-  const sim::EpisodeResult r = sim::run_episode(world, *p, config);
+  const sim::EpisodeResult r = episode::run_episode(world, *p, config);
 
   const std::string line = command;
   std::string setting;

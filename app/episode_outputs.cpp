@@ -6,12 +6,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "episode/episode_json.h"
 #include "render/animation.h"
 #include "render/png_io.h"
 #include "render/replay_html.h"
 #include "render/report.h"
 #include "render/run_figure.h"
-#include "sim/episode_json.h"
 #include "util/atomic_file.h"
 
 namespace plantsim::app {
@@ -21,7 +21,7 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   nlohmann::ordered_json j;
   j["world"] = world_name;
   j["planner"] = r.planner;
-  sim::add_episode_metrics(j, r);
+  episode::add_episode_metrics(j, r);
   j["command"] = command_line;
   auto plan = nlohmann::ordered_json::array();
   for (const auto& v : r.plan) plan.push_back({v.x, v.y});

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <set>
 
-#include "sim/episode_config_json.h"
+#include "episode/episode_config_json.h"
 #include "worlds/world_error.h"
 #include "worlds/yaml_input.h"
 
@@ -316,8 +316,8 @@ Nav2Import import_nav2_params(const std::string& path) {
   if (out.config.contains("step") && out.config["step"].contains("control_period_steps"))
     out.config["step"]["control_period_steps"] =
         static_cast<int>(out.config["step"]["control_period_steps"].get<double>());
-  sim::parse_episode_config(out.config.dump(),
-                            path + " (as a plantsim config)");  // throws naming the field
+  episode::parse_episode_config(out.config.dump(),
+                                path + " (as a plantsim config)");  // throws naming the field
   return out;
 }
 

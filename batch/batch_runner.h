@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "batch/batch_spec.h"
+#include "episode/run_episode.h"
 
 namespace plantsim::batch {
 
@@ -26,7 +27,7 @@ struct RunOptions {
   GateOverride gate;  ///< the command line's changes to the scenario's gate (drawn in the charts)
   /// An outside controller for every episode (the Python module's); its name joins each
   /// controller's, so the ids and the scenario's fingerprint tell its episodes apart.
-  sim::EpisodeSteering steering;
+  episode::EpisodeSteering steering;
   /// Further files of this run in the output folder (a --junit report written there).
   std::vector<std::string> own_files;
 };

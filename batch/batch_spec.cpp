@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "episode/episode_config_json.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode_config_json.h"
 #include "util/data_dir.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
@@ -75,7 +75,7 @@ std::string overrides_json(const YAML::Node& node, const std::string& source,
   } catch (const nlohmann::json::type_error&) {
     throw WorldError(source, field, "holds text that is not valid UTF-8");
   }
-  sim::parse_episode_config(text, source + " (" + field + ")");  // throws on a bad key or value
+  episode::parse_episode_config(text, source + " (" + field + ")");  // throws on a bad key or value
   return text;
 }
 

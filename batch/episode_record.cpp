@@ -5,8 +5,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "episode/episode_json.h"
 #include "geometry/predicates.h"
-#include "sim/episode_json.h"
 
 namespace plantsim::batch {
 
@@ -34,7 +34,7 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioI
   j["start"] = {start.x, start.y, start.yaw};
   j["goal"] = plant.target ? "catch" : "dock";
   j["succeeded"] = r.succeeded();
-  sim::add_episode_metrics(j, r);
+  episode::add_episode_metrics(j, r);
   j["optimal_length_m"] = optimal_m;
   // What a perfect robot drives: the optimum to the staging pose and the straight approach from
   // there to the docked pose, so that driven length is compared with like (issue 37: without the

@@ -9,6 +9,7 @@
 #include "batch/batch_gate.h"
 #include "batch/plant_faults.h"
 #include "batch/random_start.h"
+#include "episode/run_episode.h"
 #include "util/fingerprint.h"
 
 namespace plantsim::batch {
@@ -42,8 +43,8 @@ EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
       w.moving.push_back(person_standing_at_dock(w, optimal.length, fault.standing_at_dock_s));
   }
   out.optimal_m = optimal.length;
-  out.result = sim::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault),
-                                out.config, steering_);
+  out.result = episode::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault),
+                                    out.config, steering_);
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "batch/batch_spec.h"
 #include "batch/scenario_setup.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -27,7 +28,7 @@ class EpisodeRunner {
   EpisodeRunner(const BatchSpec& spec, const std::vector<worlds::World>& worlds,
                 const std::vector<std::uint64_t>& contents,
                 const std::vector<sim::EpisodeConfig>& configs,
-                const sim::EpisodeSteering& steering = {})
+                const episode::EpisodeSteering& steering = {})
       : spec_(spec), worlds_(worlds), contents_(contents), configs_(configs), steering_(steering) {}
 
   struct Run {
@@ -57,7 +58,7 @@ class EpisodeRunner {
   const std::vector<sim::EpisodeConfig>& configs_;
   // A copy: the gallery and the replay pass the default, a temporary that a reference would
   // outlive.
-  const sim::EpisodeSteering steering_;
+  const episode::EpisodeSteering steering_;
   std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>>
       planners_;
 };

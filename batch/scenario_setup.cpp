@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "sim/episode_config_json.h"
+#include "episode/episode_config_json.h"
 #include "util/fingerprint.h"
 #include "worlds/world_error.h"
 #include "worlds/world_fingerprint.h"
@@ -70,8 +70,8 @@ std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec) {
   std::vector<sim::EpisodeConfig> configs;  // controller x fault
   for (const auto& c : spec.controllers)
     for (const auto& f : spec.faults)
-      configs.push_back(sim::parse_episode_config(f.json, spec.source,
-                                                  sim::parse_episode_config(c.json, spec.source)));
+      configs.push_back(episode::parse_episode_config(
+          f.json, spec.source, episode::parse_episode_config(c.json, spec.source)));
   return configs;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -113,7 +114,7 @@ EpisodeTiming time_episode(const worlds::World& w, const sim::EpisodeConfig& con
   auto for_episode = planner::make_planner("vg", planner::planner_input(w, true));
   const auto t0 = Clock::now();
   EpisodeTiming out;
-  out.result = sim::run_episode(w, *for_episode, config);
+  out.result = episode::run_episode(w, *for_episode, config);
   const double total = seconds_since(t0);
   const double steps = static_cast<double>(out.result.physics_steps);
   out.steps_per_s = steps / std::max(total - plan_s, 1e-9);

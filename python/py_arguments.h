@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "episode/run_episode.h"
 #include "python/py_convert.h"
 #include "sim/episode.h"
 
@@ -14,8 +15,8 @@ sim::EpisodeConfig config_argument(const py::handle& config);
 
 /// The travel and docking callables (either may be None) as an episode's steering named
 /// `name`; nothing when both are None.
-sim::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
-                                       const std::string& name);
+episode::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
+                                           const std::string& name);
 
 /// A callable's __name__ (or its type's), for records.
 std::string callable_name(const py::object& f);

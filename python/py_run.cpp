@@ -6,6 +6,8 @@
 #include <memory>
 
 #include "app/episode_outputs.h"
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "python/py_arguments.h"
@@ -13,7 +15,6 @@
 #include "python/py_world.h"
 #include "robot/travel_steered.h"
 #include "sim/episode.h"
-#include "sim/episode_config_json.h"
 #include "util/atomic_file.h"
 
 namespace plantsim::python {
@@ -198,21 +199,21 @@ py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
 sim::EpisodeConfig config_argument(const py::handle& config) {
   if (config.is_none()) return {};
   if (py::isinstance<py::dict>(config))
-    return sim::parse_episode_config(to_json_text(config), "<config dict>");
+    return episode::parse_episode_config(to_json_text(config), "<config dict>");
   if (py::isinstance<py::str>(config) || py::hasattr(config, "__fspath__"))
-    return sim::load_episode_config(
+    return episode::load_episode_config(
         py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
   throw std::invalid_argument(
       "config must be a dict or the path of a config file (docs/config.md)");
 }
 
-sim::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
-                                       const std::string& name) {
+episode::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
+                                           const std::string& name) {
   if (controller.is_none() && docking.is_none()) return {};
   if (name.empty() || name.find_first_of("|/\\\n\"") != std::string::npos)
     throw std::invalid_argument("controller_name '" + name +
                                 "' must be non-empty, without | / \\ or quotes");
-  sim::EpisodeSteering s;
+  episode::EpisodeSteering s;
   s.name = name;
   s.wrap = [travel = steering_of(controller, "controller"), dock = steering_of(docking, "docking")](
                std::unique_ptr<robot::Travel> builtin, const worlds::World& map,
@@ -244,7 +245,7 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
       controller_name.empty()
           ? "python:" + callable_name(controller.is_none() ? docking : controller)
           : controller_name;
-  const sim::EpisodeSteering steering = steering_argument(controller, docking, name);
+  const episode::EpisodeSteering steering = steering_argument(controller, docking, name);
   std::unique_ptr<util::StagedFolder> staged;  // checked before the run, as `plantsim run` does
   if (!out.is_none())
     staged = std::make_unique<util::StagedFolder>(
@@ -253,10 +254,10 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
   auto p = planner::make_planner(planner_name, planner::planner_input(*w.world, true));
   sim::EpisodeResult r;
   if (steering) {
-    r = sim::run_episode(*w.world, *p, config, steering);  // the controller needs the GIL held
+    r = episode::run_episode(*w.world, *p, config, steering);  // the controller needs the GIL held
   } else {
     py::gil_scoped_release free_python;
-    r = sim::run_episode(*w.world, *p, config);
+    r = episode::run_episode(*w.world, *p, config);
   }
   const std::string line = "plantsim.run('" + w.world->source + "', seed=" + std::to_string(seed) +
                            (steering ? ", controller=" + steering.name : "") + ")";

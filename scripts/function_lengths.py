@@ -13,10 +13,10 @@ import sys
 # Functions that are data tables (one row per parameter or per case), at most three: splitting
 # them would scatter one table over several functions. Keyed by file and function name.
 DATA_TABLES = {
-    ("sim/episode_config_json.cpp", "fields"),
+    ("episode/episode_config_json.cpp", "fields"),
 }
 
-MODULES = ["app", "batch", "bench", "controller", "fuzz", "geometry", "planner", "python", "render",
+MODULES = ["app", "batch", "bench", "controller", "episode", "fuzz", "geometry", "planner", "python", "render",
            "robot", "sim", "util", "worlds"]
 
 CONTROL = re.compile(r"\b(if|for|while|switch|catch)\s*\(")

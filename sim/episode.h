@@ -1,8 +1,7 @@
-// One docking episode: plan to the staging pose, then the closed loop of sensing (the sensor
-// suite), perception (EKF and tracker, or the oracle), the travel mode, the wheel drive and a
-// fixed Box2D step, until docked, failed or timed out. Returns the metrics (from the truth,
-// kept apart in episode_metrics) and the full trajectory log.
-// Deterministic: the same world, planner, config and seed give the same trajectory.
+// What one docking episode is asked to do (EpisodeConfig: the controllers', drive's, sensors'
+// and docking's parameters, faults) and what it gives back (EpisodeResult: the metrics the
+// referee measured from the truth, the trajectory log, events). The loop that runs it is
+// episode/run_episode.h.
 #pragma once
 
 #include <cstdint>
@@ -37,7 +36,9 @@ struct DockTolerance {
 /// path by pure pursuit, or by seed 001's potential field with wall following (the planner's
 /// path is then only the reference the result is measured against).
 enum class TravelMode { kPath, kPotentialField };
-std::string_view to_string(TravelMode m);
+inline std::string_view to_string(TravelMode m) {
+  return m == TravelMode::kPath ? "path" : "potential-field";
+}
 
 /// A kidnap: at `at_s` the robot is lifted and set down moved by (dx, dy) and turned by dyaw
 /// (in the world frame), at rest; nothing it senses says so but the scans that follow. Off
@@ -167,26 +168,5 @@ struct EpisodeResult {
   };
   std::vector<Event> events;
 };
-
-/// A controller from outside plantsim in the loop (the Python module's): `wrap` receives the
-/// travel plantsim built, the robot's map and the first plan, and returns the travel to drive with
-/// (one made by robot::steered_by). `name` is recorded in the result. Empty: plantsim's own
-/// controller.
-struct EpisodeSteering {
-  std::string name;
-  std::function<std::unique_ptr<robot::Travel>(std::unique_ptr<robot::Travel> builtin,
-                                               const worlds::World& map,
-                                               const std::vector<Vec2>& first_plan)>
-      wrap;
-  explicit operator bool() const { return static_cast<bool>(wrap); }
-};
-
-/// `planner` plans the initial path; replans build fresh planners of the same name with the
-/// sensed obstacles added. The loop: sense (sensor readings from the physics), estimate
-/// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world
-/// with a moving target the episode is a pursuit: the plan goes to where the target will park, and
-/// success is reaching the target.
-EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
-                          const EpisodeConfig& config, const EpisodeSteering& steering = {});
 
 }  // namespace plantsim::sim

@@ -15,6 +15,7 @@
 #include <numeric>
 #include <random>
 
+#include "episode/run_episode.h"
 #include "planner/coverage/cell_coverage.h"
 #include "planner/coverage/coverage_params_json.h"
 #include "planner/coverage/coverage_planner.h"
@@ -406,7 +407,7 @@ TEST(Coverage, TheRobotSweepsThePitAndDocks) {
   auto p = make_planner("coverage-cells", planner_input(w, true));
   sim::EpisodeConfig config;
   config.timeout_s = 3600;
-  const sim::EpisodeResult e = sim::run_episode(w, *p, config);
+  const sim::EpisodeResult e = episode::run_episode(w, *p, config);
   EXPECT_TRUE(e.docked) << e.status;
   EXPECT_EQ(e.collisions, 0);
   // Cells the robot's centre passed: nearly all (it turns inside corner cells).

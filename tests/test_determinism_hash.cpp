@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -17,6 +18,7 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::run_episode;
 namespace {
 
 // FNV-1a over the bytes of every sample's time, true pose and estimated pose.

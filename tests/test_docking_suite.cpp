@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <random>
 
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -13,6 +15,8 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::load_episode_config;
+using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {
@@ -88,14 +92,6 @@ TEST(DockingSuite, RandomStartsInN50AndN200) {
   EXPECT_EQ(n50.collisions + n200.collisions, 0);
   EXPECT_LE(n50.median_error_m(), 0.01);
 }
-
-}  // namespace
-}  // namespace plantsim::sim
-
-#include "sim/episode_config_json.h"
-
-namespace plantsim::sim {
-namespace {
 
 TEST(DockingSuite, NoisyOracleSensingDocksThanksToDetectionAndFailsWithout) {
   const EpisodeConfig noisy = load_episode_config(test::source_file("configs/oracle_noisy.json"));

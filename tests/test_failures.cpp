@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -12,6 +13,7 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {

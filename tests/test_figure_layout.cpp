@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include "episode/episode_json.h"
+#include "episode/run_episode.h"
 #include "figure_checks.h"
 #include "planner/coverage/coverage_planner.h"
 #include "planner/planner.h"
@@ -20,7 +22,6 @@
 #include "render/run_figure.h"
 #include "render/scaling_chart.h"
 #include "sim/episode.h"
-#include "sim/episode_json.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -37,7 +38,7 @@ Case simulate(const std::string& file, sim::TravelMode travel = sim::TravelMode:
   auto p = planner::make_planner("vg", planner::planner_input(c.world, true));
   sim::EpisodeConfig config;
   config.travel = travel;
-  c.run = sim::run_episode(c.world, *p, config);
+  c.run = episode::run_episode(c.world, *p, config);
   return c;
 }
 
@@ -54,7 +55,7 @@ std::string format(const char* f, double v) {
 // The subtitle carries summary.json's numbers, as summary.json has them.
 void expect_title_matches_summary(const FigureLayout& layout, const sim::EpisodeResult& run) {
   nlohmann::ordered_json j;
-  sim::add_episode_metrics(j, run);
+  episode::add_episode_metrics(j, run);
   std::string sub;
   for (const std::string& s : layout.texts)
     if (s.find("  |  planned ") != std::string::npos) sub = s;
@@ -319,7 +320,7 @@ TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
 TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
   Case c{worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")), {}};
   auto p = planner::make_planner("maze-left", planner::planner_input(c.world, true));
-  c.run = sim::run_episode(c.world, *p, {});
+  c.run = episode::run_episode(c.world, *p, {});
   FigureLayout layout;
   const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
   keep(img, "layout_maze");

@@ -5,15 +5,18 @@
 
 #include <cmath>
 
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/scan_matcher.h"
 #include "sim/episode.h"
-#include "sim/episode_config_json.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::load_episode_config;
+using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "episode/run_episode.h"
 #include "planner/maze/hand_rule.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -107,7 +108,7 @@ TEST(MazePlanner, PlansInsideTheCorridorsAndTheRobotDocks) {
     EXPECT_TRUE(stays_in_corridors(r.path, w.obstacles)) << name;
     EXPECT_FALSE(r.explored.empty());
     EXPECT_NE(r.note.find("ring search"), std::string::npos) << r.note;
-    const sim::EpisodeResult e = sim::run_episode(w, *p, sim::EpisodeConfig{});
+    const sim::EpisodeResult e = episode::run_episode(w, *p, sim::EpisodeConfig{});
     EXPECT_TRUE(e.docked) << name << ": " << e.status;
     EXPECT_EQ(e.collisions, 0) << name;
   }
@@ -124,7 +125,7 @@ TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
   EXPECT_GT(first.length,
             2.0 * next.length);  // the exploration and the search before the route is known
   EXPECT_TRUE(stays_in_corridors(first.path, w.obstacles));
-  const sim::EpisodeResult e = sim::run_episode(w, *explore, sim::EpisodeConfig{});
+  const sim::EpisodeResult e = episode::run_episode(w, *explore, sim::EpisodeConfig{});
   EXPECT_TRUE(e.docked) << e.status;
   EXPECT_EQ(e.collisions, 0);
   EXPECT_GT(e.driven_length_m, 0.95 * first.length);  // it really went into the dead ends

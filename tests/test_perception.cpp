@@ -10,11 +10,12 @@
 #include <set>
 #include <sstream>
 
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/ekf_localizer.h"
 #include "sim/episode.h"
-#include "sim/episode_config_json.h"
 #include "sim/episode_metrics.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"
@@ -24,6 +25,8 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::parse_episode_config;
+using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {

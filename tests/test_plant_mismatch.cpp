@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/local_obstacle_layer.h"
@@ -139,7 +140,7 @@ TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
   auto planner = planner::make_planner("vg", planner::planner_input(plant, true));
   sim::EpisodeConfig c;
   c.timeout_s = 300;
-  const sim::EpisodeResult r = sim::run_episode(plant, *planner, c);
+  const sim::EpisodeResult r = episode::run_episode(plant, *planner, c);
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.unmapped_seen, 3);
@@ -154,6 +155,7 @@ TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
 }  // namespace plantsim
 
 namespace plantsim::sim {
+using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
 namespace {

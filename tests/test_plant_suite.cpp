@@ -15,6 +15,7 @@
 #include "batch/batch_runner.h"
 #include "batch/plant_faults.h"
 #include "batch/wilson_interval.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -139,7 +140,7 @@ TEST(PlantSuite, APersonStandingAtTheDockIsWaitedForAtASafeDistance) {
       w.moving.push_back(person);
       sim::EpisodeConfig config;
       config.seed = seed;
-      const sim::EpisodeResult r = sim::run_episode(w, *exact, config);
+      const sim::EpisodeResult r = episode::run_episode(w, *exact, config);
       EXPECT_TRUE(r.docked) << file << " seed " << seed << ": " << r.status;
       EXPECT_EQ(r.collisions, 0) << file << " seed " << seed;
       double closest = INFINITY;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "episode/run_episode.h"
 #include "figure_checks.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -29,7 +30,7 @@ class RenderedRun : public ::testing::Test {
   static void SetUpTestSuite() {
     world_ = new worlds::World(worlds::load_world(test::shared_data("worlds/world_N10.json")));
     auto p = planner::make_planner("vg", planner::planner_input(*world_, true));
-    run_ = new sim::EpisodeResult(sim::run_episode(*world_, *p, {}));
+    run_ = new sim::EpisodeResult(episode::run_episode(*world_, *p, {}));
     path_ = (std::filesystem::temp_directory_path() /
              ("plantsim_run_" + std::to_string(::getpid()) + ".png"))
                 .string();
@@ -206,7 +207,7 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
   const worlds::World w =
       worlds::load_world(test::source_file("worlds/examples/small_plant_mismatch.json"));
   auto p = planner::make_planner("vg", planner::planner_input(w, true));
-  const sim::EpisodeResult run = sim::run_episode(w, *p, {});
+  const sim::EpisodeResult run = episode::run_episode(w, *p, {});
   ASSERT_FALSE(run.layer_final.empty());
   RunFigureOptions o;
   o.width_px = 1600;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -141,7 +142,7 @@ TEST(SharedRosMaps, AutomaticPlacementDocksOnBothMaps) {
   for (const char* name : {"depot", "tb3_sandbox"}) {
     const World w = load_world(test::shared_data(std::string("ros_maps/") + name + ".yaml"));
     auto p = planner::make_planner("vg", planner::planner_input(w, true));
-    const sim::EpisodeResult r = sim::run_episode(w, *p, {});
+    const sim::EpisodeResult r = episode::run_episode(w, *p, {});
     EXPECT_TRUE(r.docked) << name << ": " << r.status;
     EXPECT_EQ(r.collisions, 0) << name;
   }

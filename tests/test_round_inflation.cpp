@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "episode/run_episode.h"
 #include "geometry/clearance.h"
 #include "planner/inflation.h"
 #include "planner/planner.h"
@@ -221,7 +222,7 @@ TEST_P(RoundPlansDriven, TheRobotDocksWithoutTouchingAWall) {
   const auto world = worlds::load_world(
       test::source_file(std::string("worlds/scenarios/") + GetParam() + ".json"));
   auto p = make_planner("vg-round", planner_input(world, true));
-  const sim::EpisodeResult r = sim::run_episode(world, *p, sim::EpisodeConfig{});
+  const sim::EpisodeResult r = episode::run_episode(world, *p, sim::EpisodeConfig{});
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_EQ(r.collisions, 0);
   EXPECT_LE(r.position_error_m, 0.02);

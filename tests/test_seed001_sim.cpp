@@ -3,6 +3,7 @@
 // plant, and the moving target as a scripted sensor body.
 #include <gtest/gtest.h>
 
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -11,13 +12,14 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::run_episode;
 namespace {
 
 EpisodeResult run(const worlds::World& world, TravelMode travel) {
   auto p = planner::make_planner("vg", planner::planner_input(world, true));
   EpisodeConfig config;
   config.travel = travel;
-  return run_episode(world, *p, config);
+  return episode::run_episode(world, *p, config);
 }
 
 // When the scripted target reaches the end of its track.
@@ -70,7 +72,7 @@ TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
                                  planner::planner_input(world, true));  // no lattice: no path
   EpisodeConfig config;
   config.travel = TravelMode::kPotentialField;
-  const EpisodeResult r = run_episode(world, *p, config);
+  const EpisodeResult r = episode::run_episode(world, *p, config);
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_TRUE(r.plan.empty());
   EXPECT_NE(r.plan_note.find("no reference plan"), std::string::npos);

@@ -2,6 +2,8 @@
 // worlds, the wheel model, and bit-for-bit determinism.
 #include <gtest/gtest.h>
 
+#include "episode/episode_config_json.h"
+#include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -11,6 +13,9 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using episode::default_config_json;
+using episode::parse_episode_config;
+using episode::run_episode;
 namespace {
 
 EpisodeResult dock(const worlds::World& world, std::uint64_t seed = 1) {
@@ -202,14 +207,6 @@ TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
   EXPECT_EQ(r.collisions, 0);
   EXPECT_LE(r.position_error_m, 0.02);
 }
-
-}  // namespace
-}  // namespace plantsim::sim
-
-#include "sim/episode_config_json.h"
-
-namespace plantsim::sim {
-namespace {
 
 TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
   const EpisodeConfig c = parse_episode_config(

@@ -1,10 +1,12 @@
 // The episode's record, from what each stage of the loop produced (see the header).
-#include "sim/episode_recorder.h"
+#include "episode/episode_recorder.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using namespace plantsim::sim;  // the simulator's parts and the episode's types
 
 using robot::Decision;
 using robot::Perception;
@@ -161,4 +163,4 @@ std::optional<std::pair<double, Pose2>> EpisodeRecorder::first_collision(
   return std::nullopt;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

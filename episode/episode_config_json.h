@@ -7,7 +7,9 @@
 
 #include "sim/episode.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using sim::EpisodeConfig;
 
 /// Applies the file's values over `base`. Throws worlds::WorldError naming file and field.
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base = {});
@@ -17,4 +19,4 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
 /// The defaults as JSON (what `plantsim config` prints).
 std::string default_config_json();
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

@@ -1,7 +1,9 @@
 // Episode metrics as JSON.
-#include "sim/episode_json.h"
+#include "episode/episode_json.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using namespace plantsim::sim;  // the simulator's parts and the episode's types
 
 void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["status"] = r.status;
@@ -44,4 +46,4 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["unmapped_seen"] = r.unmapped_seen;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

@@ -1,7 +1,7 @@
 // The episode's record: everything an episode writes into its result besides driving the robot,
 // the trajectory log, the events, the perception snapshots, the moving obstacles' tracks, the
 // referee's metrics (episode_metrics.h) and its verdict on a failure (failure_watch.h). The loop
-// (episode.cpp) hands it what each stage produced; nothing here feeds back into the robot.
+// (run_episode.cpp) hands it what each stage produced; nothing here feeds back into the robot.
 #pragma once
 
 #include <optional>
@@ -14,7 +14,17 @@
 #include "sim/episode_metrics.h"
 #include "sim/failure_watch.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+// The simulator's side the recorder reads (the truth, for the referee), by their own names.
+using geom::Pose2;
+using geom::Vec2;
+using sim::ContactState;
+using sim::EpisodeConfig;
+using sim::EpisodeMetrics;
+using sim::EpisodeResult;
+using sim::FailureWatch;
+using sim::PhysicsWorld;
 
 class EpisodeRecorder {
  public:
@@ -60,4 +70,4 @@ class EpisodeRecorder {
   double next_track_s_ = 0;
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

@@ -1,13 +1,15 @@
 // The episode loop: sense, estimate, decide, actuate, step, record. The stages are the parts'
 // own (sensor suite, perceiver, travel, drive, physics); the recorder writes the result.
-#include "sim/episode.h"
+#include "episode/run_episode.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sim/episode_recorder.h"
+#include "episode/episode_recorder.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using namespace plantsim::sim;  // the simulator's parts and the episode's types
 
 namespace {
 
@@ -171,10 +173,6 @@ class Episode {
 
 }  // namespace
 
-std::string_view to_string(TravelMode m) {
-  return m == TravelMode::kPath ? "path" : "potential-field";
-}
-
 EpisodeResult run_episode(const worlds::World& plant, planner::Planner& planner,
                           const EpisodeConfig& config, const EpisodeSteering& steering) {
   EpisodeResult result;
@@ -193,4 +191,4 @@ EpisodeResult run_episode(const worlds::World& plant, planner::Planner& planner,
   return result;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

@@ -1,5 +1,5 @@
 // A table of every parameter, read and written by the same entries.
-#include "sim/episode_config_json.h"
+#include "episode/episode_config_json.h"
 
 #include <cmath>
 #include <filesystem>
@@ -13,7 +13,9 @@
 #include "util/param_table.h"
 #include "worlds/world_error.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using namespace plantsim::sim;  // the simulator's parts and the episode's types
 
 using robot::PerceptionMode;
 
@@ -463,4 +465,4 @@ std::string default_config_json() {
   return j.dump(2) + "\n";
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

@@ -6,9 +6,11 @@
 
 #include "sim/episode.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using sim::EpisodeResult;
 
 /// Adds status, docked, errors, collisions, retries, stops, replans, time and lengths to j.
 void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r);
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

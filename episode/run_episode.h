@@ -1,0 +1,43 @@
+// One docking episode: plan to the staging pose, then the closed loop of sensing (the sensor
+// suite), perception (EKF and tracker, or the oracle), the travel mode, the wheel drive and a
+// fixed Box2D step, until docked, failed or timed out. Returns the metrics (from the truth, kept
+// apart in sim/episode_metrics) and the full trajectory log.
+// Deterministic: the same world, planner, config and seed give the same trajectory.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/vec2.h"
+#include "planner/planner.h"
+#include "robot/travel.h"
+#include "sim/episode.h"
+#include "worlds/world.h"
+
+namespace plantsim::episode {
+
+/// A controller from outside plantsim in the loop (the Python module's): `wrap` receives the
+/// travel plantsim built, the robot's map and the first plan, and returns the travel to drive with
+/// (one made by robot::steered_by). `name` is recorded in the result. Empty: plantsim's own
+/// controller.
+struct EpisodeSteering {
+  std::string name;
+  std::function<std::unique_ptr<robot::Travel>(std::unique_ptr<robot::Travel> builtin,
+                                               const worlds::World& map,
+                                               const std::vector<geom::Vec2>& first_plan)>
+      wrap;
+  explicit operator bool() const { return static_cast<bool>(wrap); }
+};
+
+/// `planner` plans the initial path; replans build fresh planners of the same name with the
+/// sensed obstacles added. The loop: sense (sensor readings from the physics), estimate
+/// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world
+/// with a moving target the episode is a pursuit: the plan goes to where the target will park, and
+/// success is reaching the target.
+sim::EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
+                               const sim::EpisodeConfig& config,
+                               const EpisodeSteering& steering = {});
+
+}  // namespace plantsim::episode
