@@ -133,7 +133,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     for (const std::string& name : opt->planners) {
       render::ComparisonPanel panel = compare_one(name, world, *opt, config);
       all_ok = all_ok && (opt->plan_only ? panel.run.status == "ok" : panel.run.succeeded());
-      report.rows.push_back(metric_row(panel.run, world.name));
+      report.rows.push_back(metric_row(panel.run, world.name, panel.drove));
       std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m
                 << " m, plan " << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms
                 << " ms\n";

@@ -12,10 +12,13 @@
 #include "app/commands.h"
 #include "render/dashboard.h"
 #include "util/atomic_file.h"
+#include "util/fixed_text.h"
 #include "util/input_file.h"
 
 namespace plantsim::app {
 namespace {
+
+using util::fixed;
 
 /// What a run's command changed from the defaults: "config noisy_sensing.json, seed 3".
 std::string setting_of(const std::string& command) {
@@ -109,24 +112,20 @@ nlohmann::json read_summary(const std::string& dir) {
   }
 }
 
-/// The run's row of the Markdown table, its figure linked from `link`.
+/// The run's row of the Markdown table (the dashboard's columns), its figure linked from `link`.
 std::string markdown_row(const nlohmann::json& j, const std::string& link) {
-  char row[512];
-  std::snprintf(row, sizeof row,
-                "| %s | %s | %s | %s | %.2f | %.2f | %d | %d | %.1f | %.2f | %.2f | "
-                "[run.png](%s/run.png) |\n",
-                j.value("world", "?").c_str(), j.value("planner", "?").c_str(),
-                j.value("travel", "path").c_str(), j.value("status", "?").c_str(),
-                100.0 * j.value("position_error_m", 0.0), j.value("heading_error_deg", 0.0),
-                j.value("collisions", 0), j.value("retries", 0), j.value("time_s", 0.0),
-                j.value("path_length_m", 0.0), j.value("driven_length_m", 0.0), link.c_str());
-  return row;
-}
-
-std::string fixed_text(double v, int digits) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
+  const bool measured = j.value("error_measured", true);
+  std::string row = "| " + j.value("world", "?") + " | " + j.value("planner", "?") + " | " +
+                    j.value("travel", "path") + " | " + j.value("status", "?");
+  for (const std::string& cell :
+       {measured ? fixed(1000.0 * j.value("position_error_m", 0.0), 1) : std::string("n/a"),
+        measured ? fixed(j.value("heading_error_deg", 0.0), 2) : std::string("n/a"),
+        std::to_string(j.value("collisions", 0)), std::to_string(j.value("retries", 0)),
+        std::to_string(j.value("stops", 0)), std::to_string(j.value("replans", 0)),
+        fixed(j.value("time_s", 0.0), 1), fixed(j.value("path_length_m", 0.0), 2),
+        fixed(j.value("driven_length_m", 0.0), 2)})
+    row += " | " + cell;
+  return row + " | [run.png](" + link + "/run.png) |\n";
 }
 
 /// The run's card on the dashboard (its cells in the order of kDashboardHeaders).
@@ -141,22 +140,22 @@ render::DashboardRun dashboard_run(const nlohmann::json& j, const std::string& d
   run.succeeded = j.value("docked", false) || j.value("caught", false);
   run.cells = {j.value("planner", "?") +
                    (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),
-               measured ? fixed_text(100.0 * j.value("position_error_m", 0.0), 2) : "n/a",
-               measured ? fixed_text(j.value("heading_error_deg", 0.0), 2) : "n/a",
+               measured ? fixed(1000.0 * j.value("position_error_m", 0.0), 1) : "n/a",
+               measured ? fixed(j.value("heading_error_deg", 0.0), 2) : "n/a",
                std::to_string(j.value("collisions", 0)),
                std::to_string(j.value("retries", 0)),
                std::to_string(j.value("stops", 0)),
                std::to_string(j.value("replans", 0)),
-               fixed_text(j.value("time_s", 0.0), 1),
-               fixed_text(j.value("path_length_m", 0.0), 2),
-               fixed_text(j.value("driven_length_m", 0.0), 2)};
+               fixed(j.value("time_s", 0.0), 1),
+               fixed(j.value("path_length_m", 0.0), 2),
+               fixed(j.value("driven_length_m", 0.0), 2)};
   for (const char* f : {"run.png", "timeplots.png"})
     if (std::filesystem::exists(dir + "/" + f)) run.figures.push_back(f);
   return run;
 }
 
 const std::vector<std::string> kDashboardHeaders = {"planner",
-                                                    "position error (cm)",
+                                                    "position error (mm)",
                                                     "heading error (deg)",
                                                     "collisions",
                                                     "retries",
@@ -175,9 +174,9 @@ struct SummarizeOptions {
 
 int summarize(const SummarizeOptions& opt) {
   std::string md =
-      "# plantsim results\n\n| world | planner | travel | status | position error (cm) | "
-      "heading error (deg) | collisions | retries | time (s) | planned (m) | driven (m) | figure "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "# plantsim results\n\n| world | planner | travel | status | position error (mm) | "
+      "heading error (deg) | collisions | retries | stops | replans | time (s) | planned (m) | "
+      "driven (m) | figure |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   bool all_docked = true;
   std::vector<render::DashboardRun> runs;
   const std::string html_base =
@@ -185,7 +184,12 @@ int summarize(const SummarizeOptions& opt) {
   // Links relative to where the table is written, so they work when it is opened.
   const std::string base =
       opt.out.empty() ? "." : std::filesystem::path(opt.out).parent_path().string();
+  std::vector<std::filesystem::path> seen;
   for (const auto& d : opt.dirs) {
+    // A folder named twice (by two globs, or with and without a trailing slash) is one run.
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(d);
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
+    seen.push_back(canonical);
     const nlohmann::json j = read_summary(d);
     md += markdown_row(j, std::filesystem::relative(d, base.empty() ? "." : base).string());
     runs.push_back(dashboard_run(j, d, html_base));

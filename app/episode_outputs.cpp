@@ -13,6 +13,7 @@
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
+#include "util/fixed_text.h"
 
 namespace plantsim::app {
 
@@ -35,7 +36,7 @@ std::vector<std::string> metric_headers() {
           "planner",
           "travel",
           "status",
-          "position error (cm)",
+          "position error (mm)",
           "heading error (deg)",
           "collisions",
           "retries",
@@ -47,32 +48,36 @@ std::vector<std::string> metric_headers() {
           "plan (ms)",
           "planned (m)",
           "driven (m)",
-          "max cross-track (cm)"};
+          "max cross-track (mm)"};
 }
 
-std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name) {
-  auto f = [](double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return std::string(buf);
-  };
+std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name,
+                                    bool drove) {
+  using util::fixed;
+  const std::string plan_ms = fixed(r.plan_stats.build_ms + r.plan_stats.query_ms, 2),
+                    planned = fixed(r.path_length_m, 2);
+  if (!drove) {  // a plan alone: nothing was driven, so nothing driven is measured
+    const std::string none = "-";
+    return {world_name, r.planner, none, r.status, none,    none,    none, none, none,
+            none,       none,      none, none,     plan_ms, planned, none, none};
+  }
   return {world_name,
           r.planner,
           r.travel,
           r.status,
-          f(100 * r.position_error_m, 2),
-          f(r.heading_error_deg, 2),
+          fixed(1000 * r.position_error_m, 1),
+          fixed(r.heading_error_deg, 2),
           std::to_string(r.collisions),
           std::to_string(r.retries),
           std::to_string(r.stops),
           std::to_string(r.replans),
           std::to_string(r.local_minima),
           std::to_string(r.wall_follows),
-          f(r.time_s, 1),
-          f(r.plan_stats.build_ms + r.plan_stats.query_ms, 2),
-          f(r.path_length_m, 2),
-          f(r.driven_length_m, 2),
-          f(100 * r.max_cross_track_m, 1)};
+          fixed(r.time_s, 1),
+          plan_ms,
+          planned,
+          fixed(r.driven_length_m, 2),
+          fixed(1000 * r.max_cross_track_m, 0)};
 }
 
 std::string trajectory_csv(const sim::EpisodeResult& r) {

@@ -16,7 +16,10 @@ std::string trajectory_csv(const sim::EpisodeResult& r);
 
 /// The metrics table of reports: headers, and one row per episode.
 std::vector<std::string> metric_headers();
-std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name);
+/// The run's row under metric_headers(); `drove` false (a plan alone): "-" for what only driving
+/// measures.
+std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name,
+                                    bool drove = true);
 
 /// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run
 /// figure's title; `animate` adds frames/ (and animation.mp4 when ffmpeg is installed).

@@ -303,6 +303,11 @@ TEST_F(Cli, PlanOnARosMapPlansWhereRunDoes) {
   EXPECT_GT(j["length"].get<double>(), 1.0);
   o = run("compare '$data/ros_maps/depot.yaml' --plan-only --planners vg --out cmp", 120);
   EXPECT_EQ(o.exit_code, 0) << o.out << o.err;
+  // Nothing was driven: what only driving measures is "-", not a perfect 0.0 mm and 0 collisions.
+  const std::string report = read(dir_ / "cmp" / "report.html");
+  EXPECT_NE(report.find("position error (mm)"), std::string::npos) << report;
+  EXPECT_NE(report.find("<td>-</td><td>ok</td><td>-</td><td>-</td><td>-</td>"), std::string::npos)
+      << report;
 }
 
 // `plan --inflation round`: shorter than the square inflation on a plant with corners to turn,
@@ -500,7 +505,14 @@ TEST_F(Cli, ABatchBelowItsGateIsShownFailedOnTheDashboard) {
         << report;
   o = run("run " + test::shared_data("worlds/world_N10.json") + " --out r", 120);
   ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
-  o = run("summarize r --html index.html --link b/report.html", 60);
+  // The run named twice is one row; the Markdown table has the dashboard's columns, in mm.
+  o = run("summarize r r/ --out summary.md --html index.html --link b/report.html", 60);
+  const std::string md = read(dir_ / "summary.md");
+  EXPECT_NE(md.find("| position error (mm) | heading error (deg) | collisions | retries | stops | "
+                    "replans |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("world_N10 |"), md.rfind("world_N10 |")) << md;
   const std::string html = read(dir_ / "index.html");
   EXPECT_NE(html.find("1 of 1 single runs succeeded; of 1 batches, 0 passed their gates"),
             std::string::npos)
