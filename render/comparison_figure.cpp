@@ -54,7 +54,8 @@ bool draw_panel_layers(Figure& fig, const PixelTransform& t, const worlds::World
          searches_a_mesh(p.run.planner) ? "mesh portals" : "graph");
   for (const LegendEntry& e : draw_walks_before_answer(c, p.run)) listed(true, e.colour, e.label);
   if (p.drove) {
-    listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving, "moving (swept)");
+    listed(draw_moving_tracks(c, p.run.moving_tracks), palette::kMoving,
+           moving_tracks_label(p.run.moving_tracks));
     listed(draw_target(c, world, p.run.trajectory), palette::kTarget, "target");
     listed(draw_wall_following(c, p.run.trajectory), palette::kWallFollow, "wall following");
     const bool drove = draw_trajectory_by_speed(c, p.run.trajectory, world.robot.max_speed_mps);

@@ -128,6 +128,19 @@ bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
   return !w.moving.empty();
 }
 
+std::string moving_tracks_label(const std::vector<sim::EpisodeResult::MovingTrack>& tracks) {
+  constexpr double kMovedM = 0.01;  // less than this from where it began: it stood
+  bool moved = false, stood = false;
+  for (const auto& track : tracks) {
+    if (track.boxes.empty()) continue;
+    double farthest = 0;
+    for (const geom::Rect& box : track.boxes)
+      farthest = std::max(farthest, geom::distance(track.boxes.front().center(), box.center()));
+    (farthest >= kMovedM ? moved : stood) = true;
+  }
+  return moved && stood ? "moving (swept) or parked" : moved ? "moving (swept)" : "parked";
+}
+
 bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::MovingTrack>& tracks) {
   bool drew = false;
   for (const auto& track : tracks) {

@@ -3,6 +3,7 @@
 // to draw return whether they drew, so that a legend lists exactly what is in the picture.
 #pragma once
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,9 @@ void draw_start(GlCanvas& c, const worlds::World& w);
 /// Routes, and the boxes where given (else where their scripts put them at t).
 bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
                  const std::vector<geom::Rect>& boxes = {});
+/// The legend's words for the tracks drawn: "moving (swept)", "parked" when none moved (a cart
+/// standing where it was put), or both when some did.
+std::string moving_tracks_label(const std::vector<sim::EpisodeResult::MovingTrack>& tracks);
 /// Where the moving obstacles went: the area each swept (faint), its centre track, and its box
 /// where it ended. Drawn at one instant alone they would make a passing look like a collision.
 bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::MovingTrack>& tracks);

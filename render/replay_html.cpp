@@ -54,6 +54,11 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   j["plan"] = points(run.plan);
   j["first_plan"] =
       run.replans > 0 && run.plan != run.first_plan ? points(run.first_plan) : json::array();
+  // The final plan exists from the last replan on; before it the first plan is the one in force.
+  double last_replan_s = 0;
+  for (const auto& e : run.events)
+    if (e.kind == sim::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
+  j["plan_from_t"] = j["first_plan"].empty() ? 0.0 : round_to(last_replan_s, 1e-3);
   const std::size_t n = run.trajectory.size();
   const std::size_t step =
       std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
@@ -148,12 +153,14 @@ constexpr const char* kPlayer = R"JS(
     rect(g, full, C.floor, C.axis);
     D.obstacles.forEach(r => rect(g, r, C.obstacle));
     D.unmapped.forEach(r => rect(g, r, null, C.unmapped));
-    line(g, D.first_plan, C.first_plan, 1.5, [6, 5]);
+    // Before the last replan the first plan is the one being followed: drawn as the plan.
+    const replanned = time >= D.plan_from_t;
+    if (replanned) line(g, D.first_plan, C.first_plan, 1.5, [6, 5]);
     for (let k = 1; k <= i; k++) {
       ctx.beginPath(); ctx.strokeStyle = speedColour(D.v[k]); ctx.lineWidth = 4; ctx.lineCap = 'round';
       ctx.moveTo(g.px(D.x[k - 1]), g.py(D.y[k - 1])); ctx.lineTo(g.px(D.x[k]), g.py(D.y[k])); ctx.stroke();
     }
-    line(g, D.plan, C.plan, 1.5);
+    line(g, replanned || !D.first_plan.length ? D.plan : D.first_plan, C.plan, 1.5);
     D.moving.forEach(m => { if (m.t.length) rect(g, movingBox(m, time), C.moving, C.axis); });
     const cb = D.charger;
     ctx.save(); ctx.translate(g.px(cb[0]), g.py(cb[1])); ctx.rotate(-cb[4]);
@@ -177,7 +184,7 @@ constexpr const char* kPlayer = R"JS(
     const items = [['plan', C.plan], ['driven (speed)', speedColour(D.max_speed * 0.6)], ['robot', C.robot],
                    ['charger', C.charger], ['start', C.start]];
     if (D.obstacles.length) items.push(['obstacle', C.obstacle]);
-    if (D.first_plan.length) items.push(['first plan', C.first_plan]);
+    if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan]);
     if (D.moving.length) items.push(['moving', C.moving]);
     if (D.unmapped.length) items.push(['not on map', C.unmapped]);
     ctx.font = '13px DejaVu Sans, sans-serif';

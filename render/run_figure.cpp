@@ -197,7 +197,8 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
   listed(draw_graph(c, o.graph_edges), palette::kGraph,
          searches_a_mesh(run.planner) ? "mesh portals" : "graph");
   if (!run.moving_tracks.empty())
-    listed(draw_moving_tracks(c, run.moving_tracks), palette::kMoving, "moving (swept)");
+    listed(draw_moving_tracks(c, run.moving_tracks), palette::kMoving,
+           moving_tracks_label(run.moving_tracks));
   else
     listed(draw_moving(c, world, run.trajectory.empty() ? 0.0 : run.trajectory.back().t_s,
                        run.moving_final),

@@ -87,12 +87,13 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   keep(img, "layout_parked_cart");
   test::expect_sound_layout(img, layout, "parked_cart run figure");
   expect_title_matches_summary(layout, c.run);
-  for (const char* label : {"first plan", "final plan", "replan", "moving (swept)",
-                            "driven (speed)", "start", "charger"})
+  // The cart stands where it was put (one waypoint): "parked", not "moving (swept)".
+  for (const char* label :
+       {"first plan", "final plan", "replan", "parked", "driven (speed)", "start", "charger"})
     EXPECT_TRUE(test::has_legend(layout, label)) << label;
   // Absent things are not listed.
-  for (const char* label :
-       {"wall following", "target", "collision", "not on map", "plan", "explored", "graph"})
+  for (const char* label : {"wall following", "target", "collision", "not on map", "plan",
+                            "explored", "graph", "moving (swept)"})
     EXPECT_FALSE(test::has_legend(layout, label)) << label;
   // No two entries look alike: the same colour is drawn as a different swatch (a stop's black
   // ring, the first plan's black dashes, a tracked box's black outline).

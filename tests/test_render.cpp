@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "episode/run_episode.h"
 #include "figure_checks.h"
@@ -15,6 +16,7 @@
 #include "render/figure.h"
 #include "render/palette.h"
 #include "render/png_io.h"
+#include "render/replay_html.h"
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "render/text.h"
@@ -263,6 +265,21 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
               0);
   }
   EXPECT_EQ(replans, run.replans);
+  // The replay shows the plan in force: the first until the last replan, the final one after.
+  const std::string html = replay_html(w, run);
+  const std::size_t data_at = html.find("<script type=\"application/json\" id=\"replay-data\">");
+  ASSERT_NE(data_at, std::string::npos);
+  const std::size_t begin = html.find('>', data_at) + 1;
+  const auto data =
+      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  double last_replan_s = 0;
+  for (const auto& e : run.events)
+    if (e.kind == sim::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
+  if (!data["first_plan"].empty())
+    EXPECT_NEAR(data["plan_from_t"].get<double>(), last_replan_s, 1e-3);
+  else
+    EXPECT_EQ(data["plan_from_t"].get<double>(), 0.0);
+  EXPECT_GT(data["plan_from_t"].get<double>() + data["first_plan"].empty(), 0.0);
 }
 
 }  // namespace
