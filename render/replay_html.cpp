@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "render/layers.h"
 #include "render/palette.h"
 
 namespace plantsim::render {
@@ -82,6 +83,7 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   j["yaw"] = yaw;
   j["v"] = v;
   j["docking"] = docking;
+  j["moving_label"] = moving_tracks_label(run.moving_tracks);  // as the run figure's legend
   j["moving"] = json::array();
   for (const auto& track : run.moving_tracks) {
     json m;
@@ -185,7 +187,7 @@ constexpr const char* kPlayer = R"JS(
                    ['charger', C.charger], ['start', C.start]];
     if (D.obstacles.length) items.push(['obstacle', C.obstacle]);
     if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan]);
-    if (D.moving.length) items.push(['moving', C.moving]);
+    if (D.moving.length) items.push([D.moving_label, C.moving]);
     if (D.unmapped.length) items.push(['not on map', C.unmapped]);
     ctx.font = '13px DejaVu Sans, sans-serif';
     items.forEach((it, k) => {

@@ -14,6 +14,7 @@
 #include "render/colormap.h"
 #include "render/comparison_figure.h"
 #include "render/figure.h"
+#include "render/layers.h"
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/replay_html.h"
@@ -280,6 +281,7 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
   else
     EXPECT_EQ(data["plan_from_t"].get<double>(), 0.0);
   EXPECT_GT(data["plan_from_t"].get<double>() + data["first_plan"].empty(), 0.0);
+  EXPECT_EQ(data["moving_label"], moving_tracks_label(run.moving_tracks));
 }
 
 }  // namespace
