@@ -140,7 +140,12 @@ worlds::MovingObstacle final_approach_crosser(const worlds::World& w, double pla
   m.name = "person crossing the final approach";
   m.width_m = m.height_m = 0.5;
   const AcrossFinalApproach a = across_final_approach(w, m.width_m);
-  m.waypoints = {a.left, a.right};
+  // From the side with less room to the side with more: the walk ends as far from the approach
+  // as the plant allows (ended on a side too narrow to stand clear, it would block the dock
+  // for good, a different fault from a crossing).
+  const bool right_roomier = geom::distance(a.at, a.right) >= geom::distance(a.at, a.left);
+  m.waypoints = right_roomier ? std::vector<geom::Vec2>{a.left, a.right}
+                              : std::vector<geom::Vec2>{a.right, a.left};
   m.speed_mps = 0.8;
   // The robot approaches at 0.08 m/s: the person arrives when it is a quarter of the way in.
   const double robot_there_s =

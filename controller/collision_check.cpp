@@ -4,10 +4,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/predicates.h"
+
 namespace plantsim::controller {
 
 double distance_to_box(geom::Vec2 p, const geom::Rect& r) {
   return geom::distance(p, geom::closest_point(r, p));
+}
+
+double segment_distance_to_box(geom::Vec2 a, geom::Vec2 b, const geom::Rect& r) {
+  if (geom::in_closed_rect(r, a) || geom::segment_enters_open_rect(a, b, r)) return 0.0;
+  // Apart, the nearest pair has an endpoint of the segment or a corner of the box in it.
+  double d = std::min(distance_to_box(a, r), distance_to_box(b, r));
+  const geom::Vec2 corners[] = {
+      {r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
+  for (const geom::Vec2& c : corners)
+    d = std::min(d, geom::distance(c, geom::closest_point_on_segment(a, b, c)));
+  return d;
 }
 
 bool arc_clear(const geom::Pose2& pose, Twist twist, double travel_speed_mps, double distance_m,

@@ -14,6 +14,9 @@ namespace plantsim::controller {
 /// Distance from point p to the closed box r (0 inside).
 double distance_to_box(geom::Vec2 p, const geom::Rect& r);
 
+/// Distance from the segment ab to the closed box r (0 when they meet).
+double segment_distance_to_box(geom::Vec2 a, geom::Vec2 b, const geom::Rect& r);
+
 /// A sensed obstacle: its box now and its velocity (map frame).
 struct MovingBox {
   geom::Rect box;

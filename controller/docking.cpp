@@ -183,15 +183,33 @@ DockingCommand DockingController::step_phase(const DockingInput& in) {
   return out;
 }
 
+Vec2 DockingController::charger_in_map(const DockingInput& in) const {
+  // What is sensed there is the charger (a charger off its mapped pose returns off the map),
+  // not a hazard.
+  const Pose2 dock_in_map =
+      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
+  return dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
+}
+
+bool DockingController::bystander_near_approach(const DockingInput& in) const {
+  const Pose2 dock_in_map =
+      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
+  const Vec2 charger_at = charger_in_map(in);
+  const double near =
+      params_.footprint_radius_m + params_.safety_margin_m + params_.bystander_reach_m;
+  for (const MovingBox& b : in.nearby_obstacles) {
+    if (distance_to_box(charger_at, b.box) <= 0.25) continue;
+    if (std::max(b.box.width(), b.box.height()) > params_.bystander_max_size_m) continue;
+    if (segment_distance_to_box(in.pose.position(), dock_in_map.position(), b.box) < near)
+      return true;
+  }
+  return false;
+}
+
 bool DockingController::guard(const DockingInput& in, const Twist& twist, bool spare_charger) {
   std::vector<MovingBox> boxes;
   boxes.reserve(in.nearby_obstacles.size());
-  // The charger's block as the dock estimate places it in the map frame: what is sensed
-  // there is the charger (a charger off its mapped pose returns off the map), not a hazard.
-  const Pose2 dock_in_map =
-      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
-  const Vec2 charger_at =
-      dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
+  const Vec2 charger_at = charger_in_map(in);
   for (const MovingBox& b : in.nearby_obstacles)
     if (!spare_charger || distance_to_box(charger_at, b.box) > 0.25) boxes.push_back(b);
   const double v = std::max(std::fabs(twist.v_mps), std::fabs(in.speed_mps));
@@ -312,6 +330,12 @@ DockingCommand DockingController::align(const DockingInput& in) {
   if (yield(in, out)) return out;  // someone walking at the robot while it turns: out of the way
   const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
   if (std::fabs(err) <= params_.align_tolerance_rad) {
+    if (bystander_waited_s_ < params_.bystander_wait_s && bystander_near_approach(in)) {
+      bystander_waited_s_ += in.dt_s;
+      note_blocked();
+      out.blocked = true;
+      return out;
+    }
     phase_ = DockPhase::kApproach;
     approach_time_s_ = 0;
   } else {

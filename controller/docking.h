@@ -61,6 +61,11 @@ struct DockingParams {
   double replan_after_s = 3.0;      ///< blocked this long: ask for a new plan
   double yield_horizon_s = 3.0;     ///< something reaching the robot this soon: back away
   double yield_speed_mps = 0.6;     ///< reversing speed when backing away
+  // Someone standing beside the final approach may step into it (a blind walker gives the
+  // robot under a second there): aligned at the staging pose, the robot waits for them to go.
+  double bystander_reach_m = 1.5;     ///< standing this close to the approach's corridor
+  double bystander_max_size_m = 1.0;  ///< ... and no larger (a fixture, not a person)
+  double bystander_wait_s = 60.0;     ///< at most this long per episode, then it docks anyway
   // Travel slows as the estimate grows uncertain, instead of stopping.
   double confident_sigma_m = 0.05;  ///< full speed up to this 1-sigma of the position estimate
   double uncertain_sigma_m =
@@ -142,6 +147,11 @@ class DockingController {
   /// Backs straight away from a moving obstacle about to reach the robot, if the way back is
   /// clear; false when nothing threatens.
   bool yield(const DockingInput& in, DockingCommand& out);
+  /// Something person-sized stands near the corridor the approach will sweep, the charger's
+  /// own block left out.
+  bool bystander_near_approach(const DockingInput& in) const;
+  /// Where the dock estimate puts the charger's block, in the map frame.
+  Vec2 charger_in_map(const DockingInput& in) const;
   Vec2 in_dock_frame(Vec2 p) const;
   void miss();
   void use_detection(const Pose2& seen_in_odom);
@@ -179,6 +189,7 @@ class DockingController {
   double straight_run_m_ =
       0;  // driven straight ahead since the last turn: known free to reverse into
   int stops_ = 0;
+  double bystander_waited_s_ = 0;            // at the staging pose, over the episode
   std::optional<Pose2> rejected_detection_;  // the last detection the gate held back
   StepEvents events_;                        // of the step under way
 };

@@ -90,6 +90,14 @@ inline Vec2 closest_point(const Rect& r, Vec2 p) {
           p.y < r.ymin ? r.ymin : (p.y > r.ymax ? r.ymax : p.y)};
 }
 
+/// The point of the segment ab nearest to p (a when the segment is a point).
+inline Vec2 closest_point_on_segment(Vec2 a, Vec2 b, Vec2 p) {
+  const Vec2 d = b - a;
+  const double dd = dot(d, d);
+  const double t = dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
+  return a + t * d;
+}
+
 /// Four rectangles of the given thickness surrounding `inner` (left, right, bottom, top),
 /// overlapping at the corners: a floor's boundary as solid walls.
 inline std::array<Rect, 4> surrounding_walls(const Rect& inner, double thickness) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "controller/collision_check.h"
 #include "controller/diff_drive.h"
 #include "controller/docking.h"
 #include "controller/pure_pursuit.h"
@@ -199,6 +200,47 @@ TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
   for (int i = 0; i < 2000 && c.phase == DockPhase::kBackOff; ++i) c = dc.step(back);
   EXPECT_EQ(c.phase, DockPhase::kFailed);
   EXPECT_EQ(c.twist.v_mps, 0.0);
+}
+
+// Someone person-sized standing beside the approach may step into it: aligned at the staging
+// pose the robot waits for them to go (at most bystander_wait_s), then docks anyway; a fixture
+// larger than a person, or the charger's own block, does not hold it.
+TEST(Docking, APersonStandingBesideTheApproachIsWaitedForAtTheStagingPose) {
+  DockingParams p;
+  p.bystander_wait_s = 2.0;
+  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);
+  DockingInput in = at({1, 0, 0});
+  in.nearby_obstacles = {{{1.3, 0.9, 1.8, 1.4}, {0, 0}}};  // 0.9 m to the side, halfway in
+  DockingCommand c = dc.step(in);
+  EXPECT_EQ(c.phase, DockPhase::kAlign);
+  EXPECT_TRUE(c.blocked);
+  EXPECT_EQ(c.twist.v_mps, 0.0);
+  for (int i = 0; i < 90; ++i) c = dc.step(in);  // 1.8 s: still waiting
+  EXPECT_EQ(c.phase, DockPhase::kAlign);
+  for (int i = 0; i < 20 && c.phase == DockPhase::kAlign; ++i) c = dc.step(in);
+  EXPECT_EQ(c.phase, DockPhase::kApproach);                        // waited its 2 s: docks anyway
+  for (const geom::Rect& other : {geom::Rect{1.3, 0.9, 2.8, 1.4},  // a 1.5 m fixture
+                                  geom::Rect{1.3, 2.5, 1.8, 3.0},  // 2.5 m away
+                                  geom::Rect{2.2, -0.15, 2.3, 0.15}})  // the charger
+  {
+    DockingController fresh({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+    fresh.step(at({1, 0, 0}));
+    DockingInput near = at({1, 0, 0});
+    near.nearby_obstacles = {{other, {0, 0}}};
+    EXPECT_EQ(fresh.step(near).phase, DockPhase::kApproach) << other.xmin << " " << other.ymin;
+  }
+}
+
+TEST(CollisionCheck, SegmentToBoxDistance) {
+  const geom::Rect box{1, 1, 2, 2};
+  EXPECT_DOUBLE_EQ(segment_distance_to_box({0, 0}, {3, 0}, box), 1.0);          // passes below
+  EXPECT_DOUBLE_EQ(segment_distance_to_box({0, 0}, {3, 3}, box), 0.0);          // through it
+  EXPECT_DOUBLE_EQ(segment_distance_to_box({1.5, 1.5}, {1.6, 1.5}, box), 0.0);  // inside
+  EXPECT_NEAR(segment_distance_to_box({0, 4}, {4, 0}, box), 0.0, 1e-12);        // touches a corner
+  EXPECT_NEAR(segment_distance_to_box({0, 5}, {5, 0}, box), std::sqrt(0.5),
+              1e-12);                                                       // corner nearest
+  EXPECT_DOUBLE_EQ(segment_distance_to_box({5, 1.5}, {5, 1.5}, box), 3.0);  // a point
 }
 
 TEST(Docking, DetectionsReanchorTheDockInTheOdometryFrame) {

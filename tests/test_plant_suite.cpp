@@ -124,6 +124,27 @@ TEST(PlantSuite, UnmappedObstaclesAShiftedChargerWetFloorsAndACrossingPerson) {
   fs::remove_all(dir);
 }
 
+// The crossing person walks from the side of the final approach with less room to the side with
+// more, so that the walk ends as far from the approach as the plant allows (ended in a niche too
+// narrow to stand clear, they would block the dock for good: not a crossing).
+TEST(PlantFaults, TheFinalApproachIsCrossedTowardsTheSideWithRoom) {
+  for (const double narrow_side : {1.0, -1.0}) {
+    worlds::World w;
+    w.floor = {0, 0, 10, 6};
+    w.charger = {9.0, 3.0, 0.0};  // the approach runs along y = 3, crossed at x = 8.5
+    w.start = {1.0, 3.0, 0.0};
+    const double wall_y = 3.0 + narrow_side * 0.9;  // 0.9 m to one side: 0.65 m of room for them
+    w.obstacles = {{8.0, std::min(wall_y, wall_y + narrow_side * 0.6), 9.0,
+                    std::max(wall_y, wall_y + narrow_side * 0.6)}};
+    const worlds::MovingObstacle m = final_approach_crosser(w, 10.0);
+    ASSERT_EQ(m.waypoints.size(), 2u);
+    EXPECT_NEAR(m.waypoints.front().x, 8.5, 1e-9);
+    EXPECT_NEAR(m.waypoints.front().y, 3.0 + narrow_side * 0.65, 0.051);  // starts in the niche
+    EXPECT_NEAR(m.waypoints.back().y, 3.0 - narrow_side * 2.75, 0.051);   // ends 2.75 m off
+    EXPECT_FALSE(m.loop);
+  }
+}
+
 // A person standing on the final approach for 30 s after the robot could be at the staging pose:
 // the robot waits, never closer than a safe gap (0.3 m between its edge and theirs, set before
 // measuring), touches nothing, and docks once they walk off.
