@@ -129,6 +129,11 @@ double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) cons
     // it (a box, a person): it neither confirms nor contradicts the pose. Only a beam that
     // passes where the map has a surface, or meets one where the map has none, contradicts.
     if (scan.valid(i) && hit && scan.ranges[i] < hit->range_m - p_.verify_tolerance_m) continue;
+    // A surface the map puts at the edge of the lidar's range may read as a return or as none
+    // with a few centimetres of error in the pose: such a beam judges nothing. (On open ground
+    // most of the map in range is a far wall at that edge: counted, a pose off by half a metre
+    // would turn dozens of beams from "nothing in range" to "a wall", or back.)
+    if (hit && hit->range_m > scan.max_range_m - p_.verify_tolerance_m) continue;
     ++beams;
     if (!scan.valid(i))
       agree += !hit;  // no return: right where the map has nothing in range

@@ -51,21 +51,28 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
   nx_ = std::max(1L, static_cast<long>(std::ceil(area.width() / res_)));
   ny_ = std::max(1L, static_cast<long>(std::ceil(area.height() / res_)));
   const std::size_t cells = static_cast<std::size_t>(nx_ * ny_);
-  // Surfaces: every cell whose centre lies in a mapped rectangle, a wall or the charger.
+  // Surfaces: the outline of every mapped rectangle, wall and the charger, as the cells along
+  // its edges whose centres lie in it. Only the outline: a lidar return lies on a surface, and a
+  // return placed inside a solid block is as wrong as one in the open (a grid that scored a
+  // wall's inside would let a scan of one long wall slide half a metre into it and fit
+  // perfectly).
   const double far = 1e12;  // squared cells: far beyond any floor, and exact in the sums below
   std::vector<double> grid(cells, far);
   auto mark = [&](const geom::Rect& r) {
-    const long i0 = std::max(0L, static_cast<long>(std::ceil((r.xmin - origin_.x) / res_ - 0.5)));
-    const long i1 =
-        std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5)));
-    const long j0 = std::max(0L, static_cast<long>(std::ceil((r.ymin - origin_.y) / res_ - 0.5)));
-    const long j1 =
-        std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5)));
+    const long first_i = static_cast<long>(std::ceil((r.xmin - origin_.x) / res_ - 0.5));
+    const long last_i = static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5));
+    const long first_j = static_cast<long>(std::ceil((r.ymin - origin_.y) / res_ - 0.5));
+    const long last_j = static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5));
+    const long i0 = std::max(0L, first_i), i1 = std::min(nx_ - 1, last_i);
+    const long j0 = std::max(0L, first_j), j1 = std::min(ny_ - 1, last_j);
     for (long j = j0; j <= j1; ++j)
-      for (long i = i0; i <= i1; ++i) grid[static_cast<std::size_t>(j * nx_ + i)] = 0;
+      for (long i = i0; i <= i1; ++i)
+        if (i == first_i || i == last_i || j == first_j || j == last_j)
+          grid[static_cast<std::size_t>(j * nx_ + i)] = 0;
   };
   for (const geom::Rect& r : map.obstacles) mark(r);
-  for (const geom::Rect& r : geom::surrounding_walls(map.floor, 1.0)) mark(r);
+  // The floor's walls one cell thick: their far side is never seen.
+  for (const geom::Rect& r : geom::surrounding_walls(map.floor, res_)) mark(r);
   mark(worlds::charger_body(map).bounding_box());
   // Exact squared distances in cells: columns, then rows.
   const long longest = std::max(nx_, ny_);

@@ -1,12 +1,13 @@
 // Global relocalisation: a correlative scan matcher (Olson 2009, "Real-time correlative scan
 // matching"; the idea of Cartographer's real-time correlative matcher) over the robot's map.
 // Once per map it builds a likelihood grid (each cell scored by its distance to the nearest
-// mapped surface) and a coarser grid of maxima over blocks of cells; a match scores every pose
-// of a window (translations on the grid, rotations in steps that move the farthest return by
-// about a cell) by the likelihood of the scan's returns, bounding whole blocks of translations
-// by the coarse grid first (branch and bound), so that most are never scored exactly. It says
-// how sure it is: the best pose's score, and the best score of any pose clearly apart from it
-// (a plant of repeated racks matches in many places). Robot side: the map only, no truth.
+// mapped surface: the rectangles' outlines, not their insides) and a coarser grid of maxima over
+// blocks of cells; a match scores every pose of a window (translations on the grid, rotations in
+// steps that move the farthest return by about a cell) by the likelihood of the scan's returns,
+// bounding whole blocks of translations by the coarse grid first (branch and bound), so that most
+// are never scored exactly. It says how sure it is: the best pose's score, and the best score of
+// any pose clearly apart from it (a plant of repeated racks matches in many places). Robot side:
+// the map only, no truth.
 #pragma once
 
 #include <optional>

@@ -96,6 +96,30 @@ TEST(ScanMatcher, ALongFeaturelessCorridorIsAmbiguous) {
   EXPECT_FALSE(m->accepted) << "score " << m->score << ", runner-up " << m->runner_up;
 }
 
+// A scan of one long wall alone (the floor's edge, 5 m ahead, nothing else in range): the match
+// puts the returns on the wall's face, never inside the wall (a grid that scored a solid's inside
+// let such a scan slide half a metre into it with a perfect score, on open ground a robot then
+// believed itself lost), and along the wall it stays ambiguous.
+TEST(ScanMatcher, ReturnsFitAWallsFaceNotItsInside) {
+  worlds::World w;
+  w.name = "yard";
+  w.floor = {0, 0, 100, 60};
+  w.start = {5, 30, 0};
+  w.charger = {5, 5, M_PI};  // far out of range
+  const ScanMatcher matcher(w);
+  const geom::Pose2 truth{95, 30, 0};
+  const LidarScan scan = exact_scan(w, truth);
+  for (const double toward_wall : {0.3, 0.6}) {
+    const auto m = matcher.match(scan, {95 + toward_wall, 30, 0.02}, {1.0, 0.1});
+    ASSERT_TRUE(m.has_value());
+    EXPECT_NEAR(m->pose.x, truth.x, 0.1 + 1e-9) << toward_wall;
+    EXPECT_NEAR(m->pose.yaw, truth.yaw, 0.011) << toward_wall;
+    EXPECT_FALSE(m->accepted) << "along the wall nothing places it";
+    EXPECT_LT(matcher.likelihood({100.5, 30}), 0.01);  // half a metre inside the wall
+    EXPECT_GT(matcher.likelihood({100.02, 30}), 0.9);  // on its face
+  }
+}
+
 EpisodeResult run(const worlds::World& w, const EpisodeConfig& c) {
   auto p = planner::make_planner("vg", planner::planner_input(w, true));
   return run_episode(w, *p, c);
