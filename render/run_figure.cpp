@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "geometry/polyline.h"
+#include "geometry/predicates.h"
 #include "render/colormap.h"
 #include "render/layers.h"
 #include "render/method_marks.h"
@@ -265,6 +266,52 @@ void draw_titles(Figure& fig, const worlds::World& world, const sim::EpisodeResu
 
 /// A pursuit ends at the target, not at the charger, and a robot that never came near the
 /// charger has no docking to show.
+/// Where a run failed away from the charger: a square of `kFailureView_m` around the failure's
+/// pose, with what stood and moved there and the path through it (the whole map's scale would
+/// make it a few pixels).
+constexpr double kFailureView_m = 6.0;
+
+void draw_failure_inset(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
+                        const PixelBox& box) {
+  GlCanvas& c = fig.canvas();
+  const robot::Failure& f = *run.failure;
+  const double half = 0.5 * kFailureView_m;
+  const geom::Rect view{f.pose.x - half, f.pose.y - half, f.pose.x + half, f.pose.y + half};
+  const PixelBox inner{box.left, box.top + 22, box.right, box.bottom};
+  const PixelTransform t = fig.world_panel(view, inner);
+  const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
+  c.set_clip(lo.x, hi.y, hi.x, lo.y);
+  c.fill_rect(view, palette::kBackground);
+  worlds::World near = world;
+  const geom::Rect reach = view.inflated(world.planning_inflation_m());
+  auto outside = [&](const geom::Rect& r) { return !geom::rects_overlap_open(r, reach); };
+  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside),
+                       near.obstacles.end());
+  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside),
+                      near.unmapped.end());
+  draw_floor(c, near);
+  draw_obstacles(c, near, margin_shape(run.planner));
+  draw_unmapped(c, near);
+  draw_moving_tracks(c, run.moving_tracks);
+  draw_plan(c, run.plan, palette::kPlan);
+  draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
+  draw_events(c, run.events);
+  draw_footprint(c, world.robot, f.pose, palette::kRobot, 2.0);
+  c.clear_clip();
+  c.set_transform(PixelTransform{});
+  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
+                   palette::kAxis);
+  char head[160], foot[80];
+  const std::string_view reason = robot::to_string(f.reason);
+  std::snprintf(head, sizeof head, "%.*s at %.1f s", static_cast<int>(reason.size()), reason.data(),
+                f.time_s);
+  std::snprintf(foot, sizeof foot, "%.0f m around where it failed:", kFailureView_m);
+  fig.text_fitted(head, box.left, box.top + 12, 13, palette::kAxis, box.width(), true);
+  fig.text_fitted(foot, box.left, lo.y + 16, 12, palette::kAxis, box.width());
+  fig.text_fitted(f.detail, box.left, lo.y + 31, 12, palette::kAxis, box.width());
+  fig.note_inset({box.left, box.top, box.right, lo.y + 35});
+}
+
 bool came_near_dock(const worlds::World& world, const sim::EpisodeResult& run) {
   return !run.trajectory.empty() &&
          (std::any_of(run.trajectory.begin(), run.trajectory.end(),
@@ -293,9 +340,11 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   const int legend_columns = legend.size() > 9 ? 2 : 1;
   const PixelBox legend_box = fig.legend(column, 156, legend, legend_columns, 140);
   const double inset_top = std::max(legend_box.bottom + 12, o.height_px - 340.0);
+  const PixelBox inset{column, inset_top, o.width_px - 20.0, o.height_px - 52.0};
   if (came_near_dock(world, run) && !world.target && inset_top + 150 < o.height_px)
-    draw_docking_inset(fig, world, run, o,
-                       {column, inset_top, o.width_px - 20.0, o.height_px - 52.0});
+    draw_docking_inset(fig, world, run, o, inset);
+  else if (run.failure && inset_top + 150 < o.height_px)
+    draw_failure_inset(fig, world, run, inset);
   if (transform_out) *transform_out = t;
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();

@@ -133,6 +133,46 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   EXPECT_TRUE(contact_line);
 }
 
+// A run that failed far from the charger gets a close-up of where it failed (6 m around the
+// failure's pose, its reason, time and detail), not the docking close-up of a charger it never
+// reached. The run is cut at a pose halfway along and given a failure there.
+TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
+  Case c = simulate(test::source_file("worlds/examples/small_plant.json"));
+  ASSERT_GT(c.run.trajectory.size(), 100u);
+  std::size_t mid = c.run.trajectory.size() / 2;
+  while (mid > 0 &&
+         geom::distance(c.run.trajectory[mid].truth.position(), c.world.charger.position()) < 4.0)
+    --mid;
+  c.run.trajectory.resize(mid + 1);
+  for (auto& s : c.run.trajectory) s.phase = controller::DockPhase::kTravel;
+  c.run.docked = c.run.charging = c.run.error_measured = false;
+  c.run.status = "failed";
+  const geom::Pose2 at = c.run.trajectory.back().truth;
+  c.run.failure = robot::Failure{robot::FailureReason::kLocalizationLost, 12.25, at,
+                                 "the estimate was 0.40 m off"};
+  FigureLayout layout;
+  PixelTransform map;
+  const Image img = draw_run_figure(c.world, c.run, {}, &map, &layout);
+  keep(img, "layout_failure_close_up");
+  test::expect_sound_layout(img, layout, "failed run figure");
+  ASSERT_EQ(layout.insets.size(), 1u);
+  auto has = [&](const std::string& line) {
+    return std::find(layout.texts.begin(), layout.texts.end(), line) != layout.texts.end();
+  };
+  EXPECT_TRUE(has("localization_lost at 12.2 s") || has("localization_lost at 12.3 s"));
+  EXPECT_TRUE(has("6 m around where it failed:"));
+  EXPECT_TRUE(has("the estimate was 0.40 m off"));
+  // The robot's outline at the failure, drawn at the close-up's scale (a ring of kRobot pixels
+  // around the inset's centre, 0.2 m of 6 m: about 8 of its 270 pixels).
+  const PixelBox& inset = layout.insets[0];
+  const double cx = 0.5 * (inset.left + inset.right);
+  int robot_pixels = 0;
+  for (int y = static_cast<int>(inset.top); y < static_cast<int>(inset.bottom); ++y)
+    for (int x = static_cast<int>(inset.left); x < static_cast<int>(inset.right); ++x)
+      if (std::abs(x - cx) < 20 && img.at(x, y) == palette::kRobot) ++robot_pixels;
+  EXPECT_GT(robot_pixels, 20);
+}
+
 TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
   const Case c = simulate(test::source_file("worlds/scenarios/seed001_slow_target.json"),
                           sim::TravelMode::kPotentialField);
