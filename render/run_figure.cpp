@@ -20,7 +20,7 @@ std::string result_line(const sim::EpisodeResult& run) {
   if (run.trajectory.empty()) return run.status;
   std::string error = "error n/a";
   if (run.error_measured) {
-    std::snprintf(buf, sizeof buf, "error %.1f cm / %.1f deg", 100 * run.position_error_m,
+    std::snprintf(buf, sizeof buf, "error %.1f mm / %.1f deg", 1000 * run.position_error_m,
                   run.heading_error_deg);
     error = buf;
   }
@@ -161,17 +161,17 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
                    palette::kAxis);
   char head[160];
-  std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f cm)", o.close_up_m,
-                100 * tol);
+  std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f mm)", o.close_up_m,
+                1000 * tol);
   fig.text(head, box.left, box.top + 12, 13, palette::kAxis, Anchor::kLeft, true);
   char foot[160], gate[80];
   if (run.error_measured)
-    std::snprintf(foot, sizeof foot, "%s: %.1f cm, %.1f deg off",
-                  run.charging ? "at contact" : "at the end", 100 * run.position_error_m,
+    std::snprintf(foot, sizeof foot, "%s: %.1f mm, %.1f deg off",
+                  run.charging ? "at contact" : "at the end", 1000 * run.position_error_m,
                   run.heading_error_deg);
   else
     std::snprintf(foot, sizeof foot, "no docking error measured");
-  std::snprintf(gate, sizeof gate, "gates: %.0f cm, %.0f deg", 100 * tol, o.dock_tolerance_deg);
+  std::snprintf(gate, sizeof gate, "gates: %.0f mm, %.0f deg", 1000 * tol, o.dock_tolerance_deg);
   fig.text_fitted(foot, box.left, lo.y + 16, 12, palette::kAxis, box.width());
   fig.text_fitted(gate, box.left, lo.y + 31, 12, palette::kAxis, box.width());
   fig.note_inset({box.left, box.top, box.right, lo.y + 35});

@@ -62,7 +62,7 @@ void expect_title_matches_summary(const FigureLayout& layout, const sim::Episode
   ASSERT_FALSE(sub.empty());
   EXPECT_EQ(sub.rfind(j["status"].get<std::string>() + ",", 0), 0u) << sub;
   if (run.error_measured) {
-    EXPECT_NE(sub.find(format("error %.1f cm", 100 * j["position_error_m"].get<double>())),
+    EXPECT_NE(sub.find(format("error %.1f mm", 1000 * j["position_error_m"].get<double>())),
               std::string::npos)
         << sub;
   } else {
@@ -129,7 +129,7 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   EXPECT_LE(layout.insets[0].bottom, img.height);
   bool contact_line = false;
   for (const std::string& s : layout.texts)
-    contact_line = contact_line || s.rfind("at contact: 0.", 0) == 0;
+    contact_line = contact_line || (s.rfind("at contact: ", 0) == 0 && s.find(" mm, ") != s.npos);
   EXPECT_TRUE(contact_line);
 }
 
