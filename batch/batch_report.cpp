@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "batch/batch_gate.h"
 #include "batch/batch_summary.h"
@@ -152,6 +153,7 @@ render::EpisodeOutcome outcome_of(const json& j) {
   render::EpisodeOutcome e;
   e.method = j["planner"].get<std::string>() + " / " + j["controller"].get<std::string>() + " / " +
              j["fault"].get<std::string>();
+  e.world = j.value("world", std::string());
   e.docked = j["docked"].get<bool>();
   e.position_error_m = j.value("position_error_m", 0.0);
   e.heading_error_deg = j.value("heading_error_deg", 0.0);
@@ -222,6 +224,11 @@ void add_charts(FigureWriter& chart, const ChartData& d,
         "cm, and how many episodes' estimator reported worse than ok");
   chart(render::draw_efficiency_chart(d.episodes), "chart_efficiency.png",
         "Driven length over the exact optimum (ECDF) and time to dock, per method");
+  std::set<std::string> worlds;
+  for (const render::EpisodeOutcome& e : d.episodes) worlds.insert(e.world);
+  if (worlds.size() > 1)
+    chart(render::draw_time_by_world(d.episodes), "chart_time_by_world.png",
+          "Time to dock world by world (each on its own scale), per method");
   if (d.sweep_counts.empty()) return;
   std::vector<double> values;
   std::vector<render::RateRow> rows;

@@ -322,6 +322,56 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   return img;
 }
 
+Image draw_time_by_world(const std::vector<EpisodeOutcome>& episodes, int width_px,
+                         FigureLayout* layout_out) {
+  const std::vector<std::string> methods = methods_of(episodes);
+  std::vector<std::string> worlds;  // in first-met order, as the methods
+  for (const auto& e : episodes)
+    if (std::find(worlds.begin(), worlds.end(), e.world) == worlds.end()) worlds.push_back(e.world);
+  const double row_h = 34, panel_gap = 74, top = 100;
+  const double panel_h = row_h * static_cast<double>(std::max<std::size_t>(methods.size(), 1));
+  const int height = static_cast<int>(top + worlds.size() * (panel_h + panel_gap) + 10);
+  Figure fig(width_px, height);
+  fig.text("Time to dock, world by world", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text(
+      "docked episodes, one dot each (spread vertically to be seen); each world on its own "
+      "scale, as worlds differ in size",
+      20, 48, 13, palette::kAxis);
+  std::vector<LegendEntry> legend;
+  for (std::size_t m = 0; m < methods.size(); ++m) legend.push_back({method_colour(m), methods[m]});
+  fig.legend(20, 62, legend, std::max(1, std::min(6, static_cast<int>(legend.size()))),
+             (width_px - 40.0) / 6);
+  GlCanvas& c = fig.canvas();
+  for (std::size_t w = 0; w < worlds.size(); ++w) {
+    std::vector<std::vector<double>> times(methods.size());
+    std::vector<std::size_t> counts(methods.size(), 0);
+    double tmax = 1;
+    for (const auto& e : episodes)
+      if (e.world == worlds[w] && e.docked) {
+        const std::size_t m = method_index(methods, e.method);
+        times[m].push_back(e.time_s);
+        ++counts[m];
+        tmax = std::max(tmax, e.time_s * 1.05);
+      }
+    const double y0 = top + 30 + w * (panel_h + panel_gap);
+    const PixelBox box{300, y0, width_px - 40.0, y0 + panel_h};
+    const Axes a{box, 0, tmax, 0, 1};
+    axis(fig, a, true, "time to dock (s)");
+    c.pixel_line({box.left, box.bottom}, {box.left, box.top}, 1.0, palette::kAxis);
+    method_labels(fig, box, methods, counts);
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      for (std::size_t i = 0; i < times[m].size(); ++i) {
+        const double x = a.px(times[m][i]),
+                     y = box.top + (m + 0.5) * row_h + 0.3 * row_h * jitter(i);
+        c.pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
+      }
+    fig.text_fitted(worlds[w], 20, box.top - 10, 14, palette::kAxis, width_px - 40.0, true);
+  }
+  Image img = fig.finish();
+  if (layout_out) *layout_out = fig.layout();
+  return img;
+}
+
 Image draw_episode_paths(const worlds::World& world, const std::vector<EpisodePath>& paths,
                          const std::string& title, const std::string& success_word, int width_px,
                          int height_px, FigureLayout* layout_out) {

@@ -23,6 +23,7 @@ struct RateRow {
 /// One episode, as the charts need it.
 struct EpisodeOutcome {
   std::string method;  ///< planner / controller: the strip, ECDF line and time row it joins
+  std::string world;   ///< the world it ran on (time to dock is compared within a world)
   bool docked = false;
   double position_error_m = 0;
   double heading_error_deg = 0;
@@ -56,6 +57,10 @@ Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int w
 /// ECDF of driven length over the optimum (docked episodes) and time to dock, per method.
 Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
                             FigureLayout* layout = nullptr);
+/// Time to dock of docked episodes per world (worlds differ in size: each its own scale), one
+/// strip per method within each world's panel, methods coloured as in the other charts.
+Image draw_time_by_world(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
+                         FigureLayout* layout = nullptr);
 /// Every episode's driven path over the world, those that succeeded thin in blue (named
 /// `success_word`: "docked", or "caught" in a pursuit), failed ones on top in vermillion, with
 /// their starts and the charger.

@@ -426,6 +426,20 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (20)"));  // every episode, not only the docked
   EXPECT_TRUE(has_text("4 of 20 not ok"));                 // gcr: episodes 0, 10, 20, 30
   EXPECT_TRUE(has_text("0 of 20 not ok, 1 past 1 m"));     // vg: episode 3, 12 m off
+  // Time to dock world by world: a panel per world on its own scale, its strips counting only
+  // that world's docked episodes.
+  for (std::size_t i = 0; i < episodes.size(); ++i) {
+    episodes[i].world = i < 30 ? "large_plant" : "small_room";
+    if (i >= 30) episodes[i].time_s = 10 + static_cast<double>(i - 30);
+  }
+  img = draw_time_by_world(episodes, 1400, &layout);
+  keep(img, "layout_time_by_world");
+  test::expect_sound_layout(img, layout, "time by world");
+  EXPECT_TRUE(has_text("large_plant"));
+  EXPECT_TRUE(has_text("small_room"));
+  EXPECT_TRUE(has_text("vg / pure-pursuit / dry (13)"));  // odd i < 30, not 7 or 21
+  EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (5)"));  // even i in 30..38, not 35
+  EXPECT_EQ(layout.legend.size(), 2u);
   img = draw_efficiency_chart(episodes, 1400, &layout);
   keep(img, "layout_efficiency");
   test::expect_sound_layout(img, layout, "efficiency chart");
