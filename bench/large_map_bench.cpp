@@ -277,7 +277,7 @@ void report_growth(const std::string& method, const std::vector<int>& sizes,
 
 }  // namespace
 
-int run_random_plant_scaling(bool quick) {
+int run_random_plant_scaling(bool quick, std::vector<render::ScalingSeries>* curves) {
   std::vector<int> sizes{1000, 5000, 20000};
   if (!quick) sizes.insert(sizes.end(), {50000, 200000});
   // vg first; the mesh searches' figures are printed against vg's at the same size.
@@ -286,6 +286,7 @@ int run_random_plant_scaling(bool quick) {
   for (int n : sizes) plants.push_back(worlds::random_plant(worlds::as_dense_as_n1000(n, 6000)));
   for (const std::string method : {"vg", "interval", "polyanya"}) {
     std::vector<double> log_n, log_ms;
+    render::ScalingSeries curve{method + ", random plants as dense as N1000", {}, {}, true, method};
     std::optional<Measure> smallest;
     for (std::size_t i = 0; i < sizes.size(); ++i) {
       const int n = sizes[i];
@@ -313,8 +314,11 @@ int run_random_plant_scaling(bool quick) {
       if (!smallest) smallest = first_query;
       log_n.push_back(std::log(n));
       log_ms.push_back(std::log(run->total_ms));
+      curve.size.push_back(n);
+      curve.cost.push_back(run->total_ms);
     }
     report_growth(method, sizes, log_n, log_ms);
+    if (curves) curves->push_back(std::move(curve));
   }
   return 0;
 }

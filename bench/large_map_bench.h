@@ -7,12 +7,16 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "render/scaling_chart.h"
 
 namespace plantsim::bench {
 
 /// Returns a process exit code: 1 when a length differs from the reference or a query fails.
 int run_anyangle_cases(const std::string& shared_data, bool quick);
 /// Quick: 1,000 to 20,000 rectangles; otherwise up to 200,000. Returns a process exit code.
-int run_random_plant_scaling(bool quick);
+/// Each method's build plus first query against the size is appended to `curves`, if given.
+int run_random_plant_scaling(bool quick, std::vector<render::ScalingSeries>* curves = nullptr);
 
 }  // namespace plantsim::bench

@@ -78,9 +78,10 @@ std::vector<Named> bench_worlds(const std::string& shared_data, bool quick) {
 }
 
 struct ScalingCurves {
-  render::ScalingSeries vg{"vg (visibility graph, A*)", {}, {}},
-      trad{"vg-traditional (all pairs tested)", {}, {}}, grid{"grid (0.1 m cells, A*)", {}, {}},
-      interval{"interval (mesh, interval search)", {}, {}};
+  render::ScalingSeries vg{"vg (visibility graph, A*)", {}, {}, false, "vg"},
+      trad{"vg-traditional (all pairs tested)", {}, {}, false, "vg-traditional"},
+      grid{"grid (0.1 m cells, A*)", {}, {}, false, "grid"},
+      interval{"interval (mesh, interval search)", {}, {}, false, "interval"};
 };
 
 /// The graph's counts against the traditional graph's (none without it).
@@ -246,13 +247,18 @@ bool bench_replan_removed(const Named& nw, const planner::VisibilityGraphPlanner
   return true;
 }
 
-void draw_chart(const ScalingCurves& c, int reps, bool quick, const std::string& chart_png) {
+void draw_chart(const ScalingCurves& c, const std::vector<render::ScalingSeries>& plants, int reps,
+                bool quick, const std::string& chart_png) {
+  std::vector<render::ScalingSeries> series{c.vg, c.trad, c.grid, c.interval};
+  series.insert(series.end(), plants.begin(), plants.end());
   const render::Image img = render::draw_scaling_chart(
-      {c.vg, c.trad, c.grid, c.interval}, "Planning time against the number of obstacles",
+      series, "Planning time against the number of obstacles",
       "build plus first query, median of " + std::to_string(reps) +
-          " runs (grid and vg-traditional fewer), on world_N10..N1000 "
-          "and a random N5000; vg-traditional " +
-          std::string(quick ? "only up to N200 (--quick)" : "up to N1000"),
+          " runs (grid and vg-traditional fewer); solid: world_N10..N1000 and a random N5000 "
+          "(vg-traditional " +
+          std::string(quick ? "only up to N200, --quick" : "up to N1000") +
+          "); dashed: random plants of 1,000 to " + std::string(quick ? "20,000" : "200,000") +
+          " rectangles",
       "obstacles (rectangles)", "time (ms)");
   render::write_png(img, chart_png);
   std::cerr << "bench: chart -> " << chart_png << "\n";
@@ -277,9 +283,10 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
         !bench_replan_removed(nw, *vg, way, reps))
       return 1;
   }
-  if (!chart_png.empty()) draw_chart(curves, reps, quick, chart_png);
   const int anyangle = run_anyangle_cases(shared_data, quick);
-  const int plants = run_random_plant_scaling(quick);
+  std::vector<render::ScalingSeries> plant_curves;
+  const int plants = run_random_plant_scaling(quick, &plant_curves);
+  if (!chart_png.empty()) draw_chart(curves, plant_curves, reps, quick, chart_png);
   return anyangle != 0 ? anyangle : plants;
 }
 

@@ -20,6 +20,25 @@ std::string decade_label(double v) {
   return buf;
 }
 
+/// A polyline in dashes of `dash_px` (pixel coordinates).
+void dashed_polyline(GlCanvas& c, const std::vector<Vec2>& pts, double width, double dash_px,
+                     Rgb colour) {
+  bool on = true;
+  double left = dash_px;
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    Vec2 a = pts[i - 1];
+    double len = geom::distance(a, pts[i]);
+    const Vec2 u = len > 0 ? (1.0 / len) * (pts[i] - a) : Vec2{0, 0};
+    while (len > 0) {
+      const double step = std::min(left, len);
+      const Vec2 b = a + step * u;
+      if (on) c.pixel_line(a, b, width, colour);
+      a = b, len -= step, left -= step;
+      if (left <= 0) on = !on, left = dash_px;
+    }
+  }
+}
+
 }  // namespace
 
 Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title,
@@ -41,7 +60,27 @@ Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::st
                lx1 = std::max(lx0 + 1, std::ceil(std::log10(xhi)));
   const double ly0 = std::floor(std::log10(ylo)),
                ly1 = std::max(ly0 + 1, std::ceil(std::log10(yhi)));
-  const PixelBox box{90, 100, width_px - 40.0, height_px - 70.0};
+  // A colour per method (Okabe-Ito), the legend three entries a row above the plot.
+  static const Rgb kColours[] = {palette::kOkabeBlue,        palette::kOkabeVermillion,
+                                 palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
+                                 palette::kOkabeOrange,      palette::kOkabeSkyBlue,
+                                 palette::kOkabeBlack};
+  std::vector<std::string> methods;
+  std::vector<LegendEntry> legend;
+  std::vector<Rgb> colour_of(series.size());
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const std::string& m = series[k].method.empty() ? series[k].label : series[k].method;
+    auto it = std::find(methods.begin(), methods.end(), m);
+    if (it == methods.end()) it = methods.insert(methods.end(), m);
+    colour_of[k] = kColours[static_cast<std::size_t>(it - methods.begin()) % 7];
+    const bool drawn =
+        std::any_of(series[k].size.begin(), series[k].size.end(), [](double v) { return v > 0; });
+    if (drawn)
+      legend.push_back(
+          {colour_of[k], series[k].label, series[k].dashed ? Swatch::kDashed : Swatch::kBar});
+  }
+  const PixelBox legend_box = fig.legend(20, 74, legend, 3, (width_px - 40.0) / 3);
+  const PixelBox box{90, legend_box.bottom + 36, width_px - 40.0, height_px - 70.0};
   auto px = [&](double x, double y) {
     return Vec2{box.left + box.width() * (std::log10(x) - lx0) / (lx1 - lx0),
                 box.bottom - box.height() * (std::log10(y) - ly0) / (ly1 - ly0)};
@@ -72,22 +111,19 @@ Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::st
   fig.text(x_label + " (log scale)", 0.5 * (box.left + box.right), box.bottom + 36, 13,
            palette::kAxis, Anchor::kCenter);
   fig.text(y_label + " (log scale)", box.left, box.top - 10, 13, palette::kAxis);
-  static const Rgb kColours[] = {palette::kOkabeBlue, palette::kOkabeVermillion,
-                                 palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
-                                 palette::kOkabeOrange};
-  std::vector<LegendEntry> legend;
   for (std::size_t k = 0; k < series.size(); ++k) {
-    const Rgb colour = kColours[k % 5];
+    const Rgb colour = colour_of[k];
     std::vector<Vec2> pts;
     for (std::size_t i = 0; i < series[k].size.size() && i < series[k].cost.size(); ++i)
       if (series[k].size[i] > 0 && series[k].cost[i] > 0)
         pts.push_back(px(series[k].size[i], series[k].cost[i]));
     if (pts.empty()) continue;
-    c.pixel_polyline(pts, 2.2, colour);
+    if (series[k].dashed)
+      dashed_polyline(c, pts, 2.2, 9.0, colour);
+    else
+      c.pixel_polyline(pts, 2.2, colour);
     for (const Vec2& p : pts) c.pixel_line({p.x - 4, p.y}, {p.x + 4, p.y}, 8.0, colour);
-    legend.push_back({colour, series[k].label});
   }
-  fig.legend(20, 74, legend, static_cast<int>(std::max<std::size_t>(legend.size(), 1)), 260);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

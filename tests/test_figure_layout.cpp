@@ -482,12 +482,21 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_TRUE(test::has_legend(layout, "failed"));
   EXPECT_TRUE(test::has_legend(layout, "caught"));  // a pursuit's successes are catches
 
+  // Two families of maps: a method keeps its colour, the second family dashed; the legend wraps.
   img = draw_scaling_chart(
-      {{"vg", {10, 100, 1000}, {0.03, 2, 16}}, {"grid", {10, 100, 1000}, {19, 13, 15}}}, "time",
-      "subtitle", "obstacles", "time (ms)", 1100, 700, &layout);
+      {{"vg", {10, 100, 1000}, {0.03, 2, 16}, false, "vg"},
+       {"grid", {10, 100, 1000}, {19, 13, 15}, false, "grid"},
+       {"vg, plants", {1000, 5000, 20000}, {20, 90, 900}, true, "vg"},
+       {"polyanya, plants", {1000, 5000, 20000}, {30, 200, 1000}, true, "polyanya"},
+       {"nothing measured", {}, {}, true, "none"}},
+      "time", "subtitle", "obstacles", "time (ms)", 1300, 760, &layout);
   keep(img, "layout_scaling");
   test::expect_sound_layout(img, layout, "scaling chart");
-  EXPECT_EQ(layout.legend.size(), 2u);
+  ASSERT_EQ(layout.legend.size(), 4u);                          // what has no points is not listed
+  EXPECT_EQ(layout.legend[0].colour, layout.legend[2].colour);  // vg, both families
+  EXPECT_NE(layout.legend[0].colour, layout.legend[3].colour);
+  EXPECT_EQ(layout.legend[2].swatch, Swatch::kDashed);
+  EXPECT_EQ(layout.legend[0].swatch, Swatch::kBar);
 }
 
 }  // namespace
