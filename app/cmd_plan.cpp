@@ -163,7 +163,10 @@ int plan_world(PlanOptions& o) {
                           static_cast<std::size_t>(o.search_memory_mb) << 20);
   if (o.world.empty()) throw std::invalid_argument("plan: give a WORLD file, or --map with --scen");
   const worlds::World world = worlds::load_world(o.world);
-  planner::PlannerInput input = planner::planner_input(world, false);
+  // A coverage plan covers the cells the charger's body leaves free and ends at the staging pose,
+  // as `plantsim coverage` and an episode plan it: one world, one answer.
+  const bool coverage = o.planner.rfind("coverage-", 0) == 0;
+  planner::PlannerInput input = planner::planner_input(world, coverage);
   input.corner_steps = o.corner_steps;
   input.snap_to_free = o.snap;
   input.landmarks = o.landmarks;
@@ -181,7 +184,8 @@ int plan_world(PlanOptions& o) {
   auto p = planner::make_planner(o.planner, input);
   const std::string ext = std::filesystem::path(o.world).extension().string();
   const bool ros_map = ext == ".yaml" || ext == ".yml";
-  const std::string goal_kind = o.goal.empty() ? (ros_map ? "staging" : "docked") : o.goal;
+  const std::string goal_kind =
+      o.goal.empty() ? (ros_map || coverage ? "staging" : "docked") : o.goal;
   const geom::Vec2 goal =
       goal_kind == "staging" ? worlds::staging_pose(world).position() : world.charger.position();
   const planner::PlanResult r = p->plan(world.start.position(), goal);

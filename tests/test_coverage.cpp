@@ -99,6 +99,25 @@ TEST(Coverage, AnEmptyRectangleIsOneSweepAlongItsLongSideWithoutRepetition) {
   }
 }
 
+// A dead end, one definition for every method: a stretch over covered cells that ends on a new
+// one. Two here (back along the bottom row to reach the top one, and back over two top cells to
+// the last new cell); the way home over covered cells after the last new cell is not one.
+TEST(Coverage, DeadEndsAreStretchesOverCoveredCellsThatEndOnANewOne) {
+  const CoverageGrid g = CoverageGrid::from_rows({"....", "...."});
+  const std::vector<Cell> path = {{0, 0}, {1, 0}, {2, 0}, {1, 0}, {1, 1}, {2, 1}, {3, 1},
+                                  {3, 0}, {3, 1}, {2, 1}, {1, 1}, {0, 1}, {1, 1}, {1, 0}};
+  const CoverageMetrics m = measure_coverage(g, path, {0, 0});
+  EXPECT_DOUBLE_EQ(m.coverage, 1.0);
+  EXPECT_EQ(m.dead_ends, 2);
+  // Every method reports the count of its own path so measured.
+  const CoverageGrid pit = CoverageGrid::from_rows({"......", "..##..", "......"});
+  for (RegionOrdering o : {RegionOrdering::kGreedy, RegionOrdering::kExact}) {
+    const CoveragePlan p = plan_region_coverage(pit, {0, 0}, Cell{5, 0}, o);
+    ASSERT_TRUE(p.ok);
+    EXPECT_EQ(p.metrics.dead_ends, measure_coverage(pit, p.cells, {0, 0}).dead_ends);
+  }
+}
+
 // What D adds up along an order is what the assembled path travels and turns: cells stepped
 // outside the sweeps (w1) and every turn (w2), the way to the end included; except the turn
 // the path may make inside a one-cell region (at most two quarter turns each), which depends

@@ -53,8 +53,7 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optio
   ++visits[grid.index(start)];
   --left;
   const double w_value = params.weights.cells, w_turn = params.weights.turns;
-  int heading = 0;  // facing east at the start, as the document's figures do
-  int dead_ends = 0;
+  int heading = 0;             // facing east at the start, as the document's figures do
   std::optional<Cell> target;  // the nearest uncovered cell while in a dead zone
   std::vector<int> target_dist;
   // Among equal scores: straight on, then left, right, back.
@@ -67,7 +66,6 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optio
       uncovered_next = uncovered_next || (grid.free(n) && visits[grid.index(n)] == 0);
     }
     if (!uncovered_next && !target) {
-      ++dead_ends;
       target = ring_search(grid, at, visits, reach);
       target_dist = grid.distances_from({*target});
     }
@@ -100,7 +98,6 @@ CoveragePlan plan_cell_coverage(const CoverageGrid& grid, Cell start, std::optio
   if (end)
     append_cells(plan.cells, grid.descend(grid.distances_from({*end}), plan.cells.back(), heading));
   plan.metrics = measure_coverage(grid, plan.cells, start);
-  plan.metrics.dead_ends = dead_ends;
   return plan;
 }
 

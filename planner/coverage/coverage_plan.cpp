@@ -28,6 +28,16 @@ CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cel
       m.reachable_cells ? static_cast<double>(m.repeated_visits) / m.reachable_cells : 0.0;
   m.turns = turns_along(path);
   m.length_m = path.empty() ? 0.0 : grid.cell_m() * (path.size() - 1.0);
+  // A dead end: a stretch of the path over covered cells that ends on a new one (the robot had
+  // to go back over covered ground to go on covering). The same count for every method; the way
+  // home after the last new cell is not one.
+  std::fill(visits.begin(), visits.end(), 0);
+  bool over_covered = false;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const bool fresh = visits[grid.index(path[i])]++ == 0;
+    if (fresh && over_covered) ++m.dead_ends;
+    over_covered = !fresh && i > 0;
+  }
   return m;
 }
 
@@ -91,34 +101,22 @@ CoveragePlan plan_region_coverage(const CoverageGrid& grid, Cell start, std::opt
   plan.sweeps = sweeps.variants;
   plan.order_cost = sweeps.cost;
 
-  // The path: the way to each region's sweep, the sweep, and at last the way to the end. A way
-  // that crosses covered cells is a dead end the order could not avoid.
-  std::vector<int> visits(static_cast<std::size_t>(grid.columns()) * grid.rows(), 0);
+  // The path: the way to each region's sweep, the sweep, and at last the way to the end.
   plan.cells.push_back(start);
-  ++visits[grid.index(start)];
-  int dead_ends = 0;
-  auto walk = [&](const std::vector<Cell>& cells, bool is_way) {
-    bool crossed = false;
-    for (std::size_t i = 1; i + (is_way ? 1 : 0) < cells.size(); ++i)
-      crossed = crossed || visits[grid.index(cells[i])] > 0;
-    dead_ends += is_way && crossed;
+  auto walk = [&](const std::vector<Cell>& cells) {
     for (std::size_t i = 0; i < cells.size(); ++i)
-      if (!(i == 0 && plan.cells.back() == cells[0])) {
-        plan.cells.push_back(cells[i]);
-        ++visits[grid.index(cells[i])];
-      }
+      if (!(i == 0 && plan.cells.back() == cells[0])) plan.cells.push_back(cells[i]);
   };
   int last = SweepModel::kStart, last_variant = 0;
   for (std::size_t k = 0; k < plan.order.size(); ++k) {
     const int region = plan.order[k], variant = plan.sweeps[k];
-    walk(model.travel(last, last_variant, region, variant), true);
-    walk(model.variant(region, variant).cells, false);
+    walk(model.travel(last, last_variant, region, variant));
+    walk(model.variant(region, variant).cells);
     plan.sweep_starts.push_back(model.variant(region, variant).cells.front());
     last = region, last_variant = variant;
   }
-  if (end) walk(model.travel_to_end(last, last_variant), true);
+  if (end) walk(model.travel_to_end(last, last_variant));
   plan.metrics = measure_coverage(grid, plan.cells, start);
-  plan.metrics.dead_ends = dead_ends;
   return plan;
 }
 

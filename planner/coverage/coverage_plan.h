@@ -27,11 +27,12 @@ struct CoverageMetrics {
   int repeated_visits = 0;  ///< visits beyond the first, over all cells
   double repetition = 0;    ///< repeated visits / reachable cells (the document's rate)
   int turns = 0;            ///< changes of heading along the path (a U-turn counts two)
-  int dead_ends = 0;        ///< times the robot had to cross covered cells to go on
+  int dead_ends = 0;  ///< stretches over covered cells that end on a new one (the robot had to go
+                      ///< back over covered ground to go on covering; the way home not counted)
   double length_m = 0;
 };
 
-/// Visits, turns and length of a cell path; dead ends are counted by the planners.
+/// Visits, turns, dead ends and length of a cell path: one definition for every method.
 CoverageMetrics measure_coverage(const CoverageGrid& grid, const std::vector<Cell>& path,
                                  Cell start);
 
