@@ -106,6 +106,38 @@ std::size_t close_up_start(const std::vector<sim::TrajectorySample>& t, double l
   return i;
 }
 
+/// A close-up's panel under its title line: `view` mapped into `box`, clipped to it, with the
+/// floor and what stands near it (a thousand-obstacle plant need not be drawn twice). Returns
+/// the panel's corners in pixels (lower left, upper right).
+std::pair<Vec2, Vec2> open_close_up(Figure& fig, const worlds::World& world,
+                                    const sim::EpisodeResult& run, const geom::Rect& view,
+                                    const PixelBox& box) {
+  GlCanvas& c = fig.canvas();
+  const PixelTransform t = fig.world_panel(view, {box.left, box.top + 22, box.right, box.bottom});
+  const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
+  c.set_clip(lo.x, hi.y, hi.x, lo.y);
+  c.fill_rect(view, palette::kBackground);
+  worlds::World near = world;
+  const geom::Rect reach = view.inflated(world.planning_inflation_m());
+  auto outside = [&](const geom::Rect& r) { return !geom::rects_overlap_open(r, reach); };
+  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside),
+                       near.obstacles.end());
+  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside),
+                      near.unmapped.end());
+  draw_floor(c, near);
+  draw_obstacles(c, near, margin_shape(run.planner));
+  draw_unmapped(c, near);
+  return {lo, hi};
+}
+
+/// Ends a close-up: the clip lifted and the panel framed.
+void close_close_up(GlCanvas& c, Vec2 lo, Vec2 hi) {
+  c.clear_clip();
+  c.set_transform(PixelTransform{});
+  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
+                   palette::kAxis);
+}
+
 /// The docking close-up: the last stretch of the path around the charger at a scale where the
 /// tolerance is visible, with the tolerance band on the approach axis and the pose at contact.
 void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
@@ -124,24 +156,7 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
   const double side = std::max(view.width(), view.height()) + 2.4 * world.robot.radius_m + 0.2;
   const Vec2 mid = view.center();
   view = {mid.x - 0.5 * side, mid.y - 0.5 * side, mid.x + 0.5 * side, mid.y + 0.5 * side};
-  const PixelBox inner{box.left, box.top + 22, box.right, box.bottom};
-  const PixelTransform t = fig.world_panel(view, inner);
-  const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
-  c.set_clip(lo.x, hi.y, hi.x, lo.y);
-  c.fill_rect(view, palette::kBackground);
-  // Only what the close-up shows: a thousand-obstacle plant need not be drawn twice.
-  worlds::World near = world;
-  const geom::Rect reach = view.inflated(world.planning_inflation_m());
-  auto outside = [&](const geom::Rect& r) {
-    return r.xmax < reach.xmin || r.xmin > reach.xmax || r.ymax < reach.ymin || r.ymin > reach.ymax;
-  };
-  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside),
-                       near.obstacles.end());
-  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside),
-                      near.unmapped.end());
-  draw_floor(c, near);
-  draw_obstacles(c, near, margin_shape(run.planner));
-  draw_unmapped(c, near);
+  const auto [lo, hi] = open_close_up(fig, world, run, view, box);
   // The tolerance: the band of centres within it, 0.3 m along the approach axis up to the dock.
   const geom::Pose2& dock = world.charger;
   const Vec2 along = dock.heading(), across{-along.y, along.x};
@@ -156,10 +171,7 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
                                           traj.end());
   draw_trajectory_by_speed(c, tail, world.robot.max_speed_mps);
   if (run.error_measured) draw_footprint(c, world.robot, run.measured_pose, palette::kRobot, 2.0);
-  c.clear_clip();
-  c.set_transform(PixelTransform{});
-  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
-                   palette::kAxis);
+  close_close_up(c, lo, hi);
   char head[160];
   std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f mm)", o.close_up_m,
                 1000 * tol);
@@ -277,30 +289,13 @@ void draw_failure_inset(Figure& fig, const worlds::World& world, const sim::Epis
   const robot::Failure& f = *run.failure;
   const double half = 0.5 * kFailureView_m;
   const geom::Rect view{f.pose.x - half, f.pose.y - half, f.pose.x + half, f.pose.y + half};
-  const PixelBox inner{box.left, box.top + 22, box.right, box.bottom};
-  const PixelTransform t = fig.world_panel(view, inner);
-  const Vec2 lo = t.to_pixel({view.xmin, view.ymin}), hi = t.to_pixel({view.xmax, view.ymax});
-  c.set_clip(lo.x, hi.y, hi.x, lo.y);
-  c.fill_rect(view, palette::kBackground);
-  worlds::World near = world;
-  const geom::Rect reach = view.inflated(world.planning_inflation_m());
-  auto outside = [&](const geom::Rect& r) { return !geom::rects_overlap_open(r, reach); };
-  near.obstacles.erase(std::remove_if(near.obstacles.begin(), near.obstacles.end(), outside),
-                       near.obstacles.end());
-  near.unmapped.erase(std::remove_if(near.unmapped.begin(), near.unmapped.end(), outside),
-                      near.unmapped.end());
-  draw_floor(c, near);
-  draw_obstacles(c, near, margin_shape(run.planner));
-  draw_unmapped(c, near);
+  const auto [lo, hi] = open_close_up(fig, world, run, view, box);
   draw_moving_tracks(c, run.moving_tracks);
   draw_plan(c, run.plan, palette::kPlan);
   draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
   draw_events(c, run.events);
   draw_footprint(c, world.robot, f.pose, palette::kRobot, 2.0);
-  c.clear_clip();
-  c.set_transform(PixelTransform{});
-  c.pixel_polyline({{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}, {lo.x, lo.y}}, 1.0,
-                   palette::kAxis);
+  close_close_up(c, lo, hi);
   char head[160], foot[80];
   const std::string_view reason = robot::to_string(f.reason);
   std::snprintf(head, sizeof head, "%.*s at %.1f s", static_cast<int>(reason.size()), reason.data(),
