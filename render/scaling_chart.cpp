@@ -39,6 +39,30 @@ void dashed_polyline(GlCanvas& c, const std::vector<Vec2>& pts, double width, do
   }
 }
 
+/// A colour per method (Okabe-Ito; series of one method share it), and the legend of the series
+/// that have points to draw.
+std::vector<Rgb> series_colours(const std::vector<ScalingSeries>& series,
+                                std::vector<LegendEntry>& legend) {
+  static const Rgb kColours[] = {palette::kOkabeBlue,        palette::kOkabeVermillion,
+                                 palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
+                                 palette::kOkabeOrange,      palette::kOkabeSkyBlue,
+                                 palette::kOkabeBlack};
+  std::vector<std::string> methods;
+  std::vector<Rgb> colour_of(series.size());
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const std::string& m = series[k].method.empty() ? series[k].label : series[k].method;
+    auto it = std::find(methods.begin(), methods.end(), m);
+    if (it == methods.end()) it = methods.insert(methods.end(), m);
+    colour_of[k] = kColours[static_cast<std::size_t>(it - methods.begin()) % 7];
+    const bool drawn =
+        std::any_of(series[k].size.begin(), series[k].size.end(), [](double v) { return v > 0; });
+    if (drawn)
+      legend.push_back(
+          {colour_of[k], series[k].label, series[k].dashed ? Swatch::kDashed : Swatch::kBar});
+  }
+  return colour_of;
+}
+
 }  // namespace
 
 Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::string& title,
@@ -60,25 +84,9 @@ Image draw_scaling_chart(const std::vector<ScalingSeries>& series, const std::st
                lx1 = std::max(lx0 + 1, std::ceil(std::log10(xhi)));
   const double ly0 = std::floor(std::log10(ylo)),
                ly1 = std::max(ly0 + 1, std::ceil(std::log10(yhi)));
-  // A colour per method (Okabe-Ito), the legend three entries a row above the plot.
-  static const Rgb kColours[] = {palette::kOkabeBlue,        palette::kOkabeVermillion,
-                                 palette::kOkabeBluishGreen, palette::kOkabeReddishPurple,
-                                 palette::kOkabeOrange,      palette::kOkabeSkyBlue,
-                                 palette::kOkabeBlack};
-  std::vector<std::string> methods;
+  // A colour per method, the legend three entries a row above the plot.
   std::vector<LegendEntry> legend;
-  std::vector<Rgb> colour_of(series.size());
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    const std::string& m = series[k].method.empty() ? series[k].label : series[k].method;
-    auto it = std::find(methods.begin(), methods.end(), m);
-    if (it == methods.end()) it = methods.insert(methods.end(), m);
-    colour_of[k] = kColours[static_cast<std::size_t>(it - methods.begin()) % 7];
-    const bool drawn =
-        std::any_of(series[k].size.begin(), series[k].size.end(), [](double v) { return v > 0; });
-    if (drawn)
-      legend.push_back(
-          {colour_of[k], series[k].label, series[k].dashed ? Swatch::kDashed : Swatch::kBar});
-  }
+  const std::vector<Rgb> colour_of = series_colours(series, legend);
   const PixelBox legend_box = fig.legend(20, 74, legend, 3, (width_px - 40.0) / 3);
   const PixelBox box{90, legend_box.bottom + 36, width_px - 40.0, height_px - 70.0};
   auto px = [&](double x, double y) {
