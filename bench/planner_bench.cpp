@@ -254,9 +254,8 @@ void draw_chart(const ScalingCurves& c, const std::vector<render::ScalingSeries>
   const render::Image img = render::draw_scaling_chart(
       series, "Planning time against the number of obstacles",
       "build plus first query, median of " + std::to_string(reps) +
-          " runs (grid and vg-traditional fewer); solid: world_N10..N1000 and a random N5000 "
-          "(vg-traditional " +
-          std::string(quick ? "only up to N200, --quick" : "up to N1000") +
+          " runs (grid and vg-traditional fewer); solid: world_N10..N1000, N5000 (vg-traditional " +
+          std::string(quick ? "to N200, --quick" : "to N1000") +
           "); dashed: random plants of 1,000 to " + std::string(quick ? "20,000" : "200,000") +
           " rectangles",
       "obstacles (rectangles)", "time (ms)");
