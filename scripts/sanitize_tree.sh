@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the ASan + UBSan tree build-sanitize with clang: the tests and the libFuzzer harnesses
-# in one tree (every file instrumented for both), at -O1 with line tables only, which compiles
-# about a third faster than -O2 -g and is what the sanitizers' authors advise. Used by
-# scripts/test.sh and scripts/fuzz.sh; a no-op when the tree is current.
+# in one tree (every file under ASan + UBSan, the loaders also with the fuzzers' coverage
+# feedback), at -O1 with line tables only, which compiles about a third faster than -O2 -g and
+# is what the sanitizers' authors advise. Used by scripts/test.sh and scripts/fuzz.sh; a no-op
+# when the tree is current.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 CC=clang CXX=clang++ ./scripts/build.sh build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo \
