@@ -147,6 +147,7 @@ class Episode {
     const Pose2 was = physics_.robot_pose();
     physics_.place_robot(
         {was.x + kidnap.dx_m, was.y + kidnap.dy_m, geom::wrap_angle(was.yaw + kidnap.dyaw_rad)});
+    sensors_.robot_placed(physics_.robot_pose());
   }
 
   void step(double dt_s) {

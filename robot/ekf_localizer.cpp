@@ -162,6 +162,22 @@ int keep_constrained(Eigen::Matrix4d& info, Eigen::Vector4d& gradient, double si
 
 }  // namespace
 
+bool EkfLocalizer::update_pose(const geom::Pose2& z, const Eigen::Matrix3d& r, double gate_chi2) {
+  const Eigen::Vector3d innovation(z.x - x_(0), z.y - x_(1), geom::wrap_angle(z.yaw - x_(2)));
+  const Eigen::Matrix3d s = P_.topLeftCorner<3, 3>() + r;
+  const Eigen::LDLT<Eigen::Matrix3d> s_ldlt(s);
+  if (s_ldlt.info() != Eigen::Success) return false;
+  if (!(innovation.dot(s_ldlt.solve(innovation)) <= gate_chi2)) return false;
+  // K = P H' S^-1 with H = [I 0]: the gain for the whole state (the bias through its correlation).
+  const Eigen::Matrix<double, 4, 3> gain = s_ldlt.solve(P_.topRows<3>()).transpose();
+  x_ += gain * innovation;
+  x_(2) = geom::wrap_angle(x_(2));
+  P_ -= gain * P_.topRows<3>();
+  P_ = 0.5 * (P_ + P_.transpose());
+  update_health();
+  return true;
+}
+
 void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
   // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading.
   const double r = p_.gyro_noise_radps * p_.gyro_noise_radps;

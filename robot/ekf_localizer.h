@@ -94,6 +94,10 @@ class EkfLocalizer {
   /// The wheels did not turn since the last reading: the robot stands still, so the gyro's rate
   /// is its bias plus noise (a zero-velocity update, as inertial navigation does at rest).
   void standstill(double gyro_yaw_rate_radps);
+  /// A pose measured directly with covariance `r` (a global match that leaves some directions
+  /// open): the Kalman update of the estimate, unless the measurement lies beyond `gate_chi2` of
+  /// its predicted spread (then nothing changes and it returns false).
+  bool update_pose(const geom::Pose2& z, const Eigen::Matrix3d& r, double gate_chi2);
   /// Replaces the estimate (a global relocalisation), with the given pose covariance.
   void reset(const geom::Pose2& pose, const Eigen::Matrix3d& pose_covariance);
 

@@ -117,7 +117,15 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   }
 }
 
-double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) const {
+// A measured pose within this normalised distance of the estimate (chi-square, 3 degrees of
+// freedom, 0.999) updates it; farther, it is a look-alike the window happened to hold.
+constexpr double kPoseGateChi2 = 16.27;
+
+// Fewer beams than this that can confirm or contradict a pose (a mapped surface in range):
+// no judgement either way.
+constexpr int kMinJudgingBeams = 10;
+
+std::optional<double> Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) const {
   const geom::Pose2 sensor = geom::compose(pose, scan.mount);
   const std::size_t n = scan.ranges.size(), stride = std::max<std::size_t>(1, n / 90);
   int agree = 0, beams = 0;
@@ -125,22 +133,25 @@ double Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) cons
     if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
     const auto hit =
         raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
-    // A return short of the mapped surface may be something the map lacks standing in front of
-    // it (a box, a person): it neither confirms nor contradicts the pose. Only a beam that
-    // passes where the map has a surface, or meets one where the map has none, contradicts.
-    if (scan.valid(i) && hit && scan.ranges[i] < hit->range_m - p_.verify_tolerance_m) continue;
+    // A return short of the mapped surface, or where the map has none in range, may be
+    // something the map lacks (a box, a person): it neither confirms nor contradicts the pose.
+    // Only a beam that passes where the map has a surface contradicts it. (Counted against the
+    // pose, a box the map lacks in an open yard turned a right estimate into a lost one as the
+    // robot came up to it.)
+    if (scan.valid(i) && (!hit || scan.ranges[i] < hit->range_m - p_.verify_tolerance_m)) continue;
     // A surface the map puts at the edge of the lidar's range may read as a return or as none
     // with a few centimetres of error in the pose: such a beam judges nothing. (On open ground
     // most of the map in range is a far wall at that edge: counted, a pose off by half a metre
     // would turn dozens of beams from "nothing in range" to "a wall", or back.)
     if (hit && hit->range_m > scan.max_range_m - p_.verify_tolerance_m) continue;
+    // No return where the map has nothing in range agrees with every pose on open ground: it
+    // judges nothing. (Counted, an estimate metres off in a yard read 95 % "agreement".)
+    if (!scan.valid(i) && !hit) continue;
     ++beams;
-    if (!scan.valid(i))
-      agree += !hit;  // no return: right where the map has nothing in range
-    else if (hit)
-      agree += std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
+    agree += scan.valid(i) && std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
   }
-  return beams > 0 ? static_cast<double>(agree) / beams : 0.0;
+  if (beams < kMinJudgingBeams) return std::nullopt;
+  return static_cast<double>(agree) / beams;
 }
 
 bool Perceiver::relocalize(const LidarScan& scan) {
@@ -167,18 +178,34 @@ bool Perceiver::relocalize(const LidarScan& scan) {
     unmatched_ = false;
     return local_ok;
   }
-  const double agree = agreement(scan, m->pose);
-  if (!m->accepted && (m->score >= p_.matcher.min_score || agree >= p_.verify_agreement)) {
-    // Not placed, yet nothing contradicts the estimate: the returns fit the map well in more
-    // than one place of the window (a long wall seen alone), or their fit is weak only because
-    // many fall on things the map lacks while the best pose reads, beam by beam, what the map
-    // predicts (boxes beside the robot in an open yard). There is only too little to place the
-    // robot: it goes on (slowly, by its uncertainty) towards what will tell the places apart,
-    // and the window is not widened, which would only add look-alikes.
+  // Confirmed: enough beams read what the map predicts from the pose; contradicted: enough pass
+  // where it has surfaces; neither: too few beams meet a mapped surface to tell.
+  auto confirmed = [&](const std::optional<double>& a) { return a && *a >= p_.verify_agreement; };
+  const std::optional<double> agree = agreement(scan, m->pose);
+  const bool contradicted = agree && *agree < p_.verify_agreement;
+  const bool placed = m->accepted && !contradicted;
+  // Not placed, yet nothing contradicts the estimate: the returns fit the map well in more than
+  // one place of the window (a long wall seen alone), or their fit is weak only because many
+  // fall on things the map lacks while the best pose reads, beam by beam, what the map predicts
+  // (boxes beside the robot in an open yard), or the estimate itself reads what the map predicts
+  // (its spread grew over open ground while it stayed right, and what is now in view, a wall's
+  // end and boxes the map lacks, places the robot nowhere). There is only too little to place
+  // the robot: it goes on (slowly, by its uncertainty) towards what will tell the places apart,
+  // and the window is not widened, which would only add look-alikes.
+  const bool undecided = !m->accepted && (m->score >= p_.matcher.min_score || !contradicted);
+  if (!placed && (undecided || confirmed(agreement(scan, ekf_.pose())))) {
     unmatched_ = false;
-    return local_ok;
+    // Ambiguous is not uninformative: a lone wall with its end in view leaves the estimate
+    // open along the wall, yet pins it across the wall and in heading. A match that fits well
+    // and reads, beam by beam, what the map predicts updates the estimate with the spread of its
+    // near-best poses: in the directions they agree on, not in those they leave open. (Seen:
+    // the matcher's best pose within 0.2 m of the truth for 10 s beside a wall's end while the
+    // estimate, 2.5 m off after open ground, went on blind and the episode failed.)
+    if (m->score >= p_.matcher.min_score && confirmed(agree))
+      ekf_.update_pose(m->pose, m->spread, kPoseGateChi2);
+    return ekf_.position_sigma_m() <= p_.local_update_max_sigma_m;
   }
-  unmatched_ = !m->accepted || agree < p_.verify_agreement;
+  unmatched_ = !placed;
   if (unmatched_) {
     // Returns, but no place that fits them alone: search wider next time.
     if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);

@@ -65,9 +65,10 @@ struct PerceptionParams {
   /// window by half (a growing search, up to global_match_max_window_m).
   double local_update_max_sigma_m = 0.3;
   /// A global match must also be confirmed beam by beam: ray cast through the map from it, at
-  /// least this share of the scan's beams must read what the map predicts (within
-  /// verify_tolerance_m, a beam with no return where the map has no surface in range counting
-  /// as agreeing). The matcher scores only where returns fall; this adds what they pass through.
+  /// least this share of the beams that meet a mapped surface in range must read it (within
+  /// verify_tolerance_m); a return short of it, or where the map has none, is something the map
+  /// lacks and judges nothing, as does no return where the map has nothing in range. The
+  /// matcher scores only where returns fall; this adds what they pass through.
   double verify_agreement = 0.8;
   double verify_tolerance_m = 0.2;
   int global_match_min_returns = 30;  ///< fewer returns: too little to place the robot anywhere
@@ -138,7 +139,7 @@ class Perceiver {
   /// Wide estimate: match the scan globally; true when the filter may also update locally.
   bool relocalize(const LidarScan& scan);
   /// Share of the scan's beams that read, from `pose`, what the map predicts.
-  double agreement(const LidarScan& scan, const geom::Pose2& pose) const;
+  std::optional<double> agreement(const LidarScan& scan, const geom::Pose2& pose) const;
 
   const worlds::World& map_;
   PerceptionParams p_;

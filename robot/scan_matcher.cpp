@@ -167,6 +167,23 @@ ScanMatcher::SearchSteps ScanMatcher::search_steps(const MatchWindow& window, do
   return {b, n_xy, n_yaw, dyaw};
 }
 
+Eigen::Matrix3d ScanMatcher::near_best_spread(const std::vector<Scored>& good,
+                                              const ScanMatch& best, const geom::Pose2& prior,
+                                              double dyaw) const {
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  int near = 0;
+  for (const Scored& g : good) {
+    if (g.score < p_.max_ambiguity * best.score) continue;
+    const Eigen::Vector3d d(prior.x + g.i * res_ - best.pose.x, prior.y + g.j * res_ - best.pose.y,
+                            geom::wrap_angle(prior.yaw + g.s * dyaw - best.pose.yaw));
+    spread += d * d.transpose();
+    ++near;
+  }
+  spread /= std::max(1, near);
+  spread.diagonal() += Eigen::Vector3d(res_ * res_, res_ * res_, dyaw * dyaw);
+  return spread;
+}
+
 std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior,
                                             const MatchWindow& window) const {
   double reach = 0;
@@ -206,10 +223,6 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
 
   ScanMatch best;
   best.score = -1;
-  struct Scored {
-    double score;
-    long s, i, j;
-  };
   std::vector<Scored> good;  // every exact score close enough to the best to matter for ambiguity
   for (const Candidate& c : candidates) {
     // Nothing left can beat the best, or come close enough to make it ambiguous.
@@ -243,6 +256,7 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
     if (apart) best.runner_up = std::max(best.runner_up, g.score);
   }
   best.accepted = best.score >= p_.min_score && best.runner_up < p_.max_ambiguity * best.score;
+  best.spread = near_best_spread(good, best, prior, dyaw);
   return best;
 }
 

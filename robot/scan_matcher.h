@@ -10,6 +10,7 @@
 // the map only, no truth.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <vector>
 
@@ -48,6 +49,10 @@ struct ScanMatch {
   double runner_up = 0;   ///< best score of a pose apart from it
   bool accepted = false;  ///< good enough and unambiguous
   long scored = 0;        ///< poses scored exactly (the rest were bounded away)
+  /// Covariance (x, y, yaw) of the poses that score within max_ambiguity of the best, about the
+  /// best, plus the search grid's step: small along what the scan pins down, large along what it
+  /// leaves open (along a lone wall), as Olson 2009 derives a match's covariance.
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
 };
 
 class ScanMatcher {
@@ -69,6 +74,14 @@ class ScanMatcher {
     double dyaw;
   };
   SearchSteps search_steps(const MatchWindow& window, double reach) const;
+  /// A pose scored exactly: its score, rotation step and translation in cells from the prior.
+  struct Scored {
+    double score;
+    long s, i, j;
+  };
+  /// ScanMatch::spread from the scored poses near the best.
+  Eigen::Matrix3d near_best_spread(const std::vector<Scored>& good, const ScanMatch& best,
+                                   const geom::Pose2& prior, double dyaw) const;
   double fine(long i, long j) const {
     return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
   }

@@ -36,6 +36,7 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
       pads_(p_.pads),
       rng_(seed ^ 0x2545f4914f6cdd1dULL),
       last_odom_(plant.start),
+      last_yaw_(plant.start.yaw),
       charger_marker_(worlds::charger_body(plant).center) {}
 
 void SensorSuite::count(const PhysicsWorld& physics, const ContactState& c, const WheelDrive& drive,
@@ -61,7 +62,14 @@ SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {
   const geom::Pose2 step = geom::compose(geom::inverse(last_odom_), r.odom_pose);
   r.encoder_distance_m = step.x;
   last_odom_ = r.odom_pose;
-  r.gyro_yaw_rate_radps = imu_.read_yaw_rate(physics.robot_yaw_rate(), r.dt_s);
+  // The gyro's rate over the control period: its heading increment, as a MEMS gyro's driver
+  // integrates it from samples at a kilohertz. Sampled once per period instead, a rate that
+  // oscillates from step to step (a wheel that sticks and slips on a wet floor) would alias into
+  // a steady error, which the estimator would learn as the gyro's bias.
+  const double true_rate =
+      r.dt_s > 0 ? geom::wrap_angle(truth.yaw - last_yaw_) / r.dt_s : physics.robot_yaw_rate();
+  last_yaw_ = truth.yaw;
+  r.gyro_yaw_rate_radps = imu_.read_yaw_rate(true_rate, r.dt_s);
   if (lidar_.due(t_s)) r.scan = lidar_.scan(physics, truth, t_s);
   r.charger = detector_.update(physics, truth, plant_.charger, charger_marker_, t_s);
   r.bumper = read_bumper(contact_points_, truth);

@@ -44,6 +44,9 @@ struct SensorParams {
 class SensorSuite {
  public:
   SensorSuite(const worlds::World& plant, const SensorParams& params, std::uint64_t seed);
+  /// The robot was put elsewhere by a fault (a kidnap is a teleport, no motion): the gyro felt
+  /// none.
+  void robot_placed(const geom::Pose2& pose) { last_yaw_ = pose.yaw; }
   /// Counts one physics step of encoder travel and latches the contacts it left (every step).
   void count(const PhysicsWorld& physics, const ContactState& contact, const WheelDrive& drive,
              double dt_s);
@@ -63,6 +66,7 @@ class SensorSuite {
   std::normal_distribution<double> gauss_{0.0, 1.0};
   double last_read_s_ = 0;
   geom::Pose2 last_odom_;
+  double last_yaw_ = 0;  // the body's true heading at the last reading, for the gyro's increment
   bool contact_ = false, charging_ = false;
   std::vector<geom::Vec2> contact_points_;
   geom::Vec2 charger_marker_;

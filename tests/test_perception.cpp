@@ -163,6 +163,50 @@ TEST(ChargerDetection, LatencyDeliversTheImageLaterWithItsCaptureTime) {
   EXPECT_DOUBLE_EQ(late->captured_s, 0.0);
 }
 
+// The gyro reports each control period's heading increment (as a MEMS gyro's driver integrates
+// its kilohertz samples), not the rate at the period's last instant: on a very wet floor, where
+// wheels that spin the robot in place stick and slip from step to step, its readings still add
+// up to the true heading. (Sampled once per period, the rate aliased into a steady error that the
+// estimator took for the gyro's bias: 5 m off after 100 s in an open yard.)
+TEST(Gyro, ReadingsAddUpToTheTrueHeadingWhileTheWheelsSlip) {
+  worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
+  w.obstacles.clear();
+  w.floor = {0, 0, 30, 30};
+  w.start = {15, 15, 0};
+  w.charger = {29.5, 1, 0};
+  SensorParams sp;
+  sp.imu.yaw_rate_noise_radps = 0;
+  sp.imu.bias_radps = 0;
+  sp.imu.bias_walk_radps_per_sqrt_s = 0;
+  DriveParams slippery;
+  slippery.tyre_friction = 0.05;
+  PhysicsWorld physics(w);
+  WheelDrive drive(w.robot, slippery);
+  SensorSuite sensors(w, sp, 7);
+  const double dt = 1.0 / 60;
+  double integrated = 0, truth = 0, truth_at_read = 0, yaw_before = physics.robot_pose().yaw;
+  double rate_change = 0, last_rate = 0;
+  for (int k = 0; k <= 60 * 10; ++k) {
+    if (k % 2 == 0) {
+      const SensorReadings r = sensors.read(physics, k * dt);
+      integrated += r.gyro_yaw_rate_radps * r.dt_s;
+      truth_at_read = truth;
+      rate_change = std::max(rate_change, std::fabs(physics.robot_yaw_rate() - last_rate));
+      last_rate = physics.robot_yaw_rate();
+      const double spin = (k / 60) % 2 == 0 ? 0.6 : -0.6;  // reverse every second
+      drive.command({-spin, spin}, 2 * dt);
+    }
+    drive.apply(physics, dt);
+    physics.step({});
+    sensors.count(physics, physics.contacts(), drive, dt);
+    truth += geom::wrap_angle(physics.robot_pose().yaw - yaw_before);
+    yaw_before = physics.robot_pose().yaw;
+  }
+  EXPECT_GT(rate_change, 0.1);  // the spin did change speed between readings
+  EXPECT_GT(std::fabs(truth), 0.1);
+  EXPECT_NEAR(integrated, truth_at_read, 1e-9);
+}
+
 // Chi-square quantile (Wilson-Hilferty), good to a fraction of a percent for 60+ degrees.
 double chi2_quantile(double dof, double z) {
   const double h = 2.0 / (9.0 * dof);
