@@ -138,7 +138,8 @@ class Perceiver {
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
   /// Wide estimate: match the scan globally; true when the filter may also update locally.
   bool relocalize(const LidarScan& scan);
-  /// Share of the scan's beams that read, from `pose`, what the map predicts.
+  /// Share of the beams meeting a mapped surface that read it from `pose`; none when fewer than
+  /// 10 beams meet one (too few to judge the pose either way).
   std::optional<double> agreement(const LidarScan& scan, const geom::Pose2& pose) const;
 
   const worlds::World& map_;
