@@ -11,6 +11,7 @@
 
 #include "util/input_file.h"
 #include "util/param_table.h"
+#include "worlds/json_input.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::episode {
@@ -427,12 +428,7 @@ void check_consistency(const std::string& source, const EpisodeConfig& c) {
 
 EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
                                    EpisodeConfig c) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    throw worlds::WorldError(source, "", std::string("malformed JSON: ") + e.what());
-  }
+  const json doc = worlds::parse_json_input(text, source);
   if (!doc.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
   ConfigLookup lookup(doc, source);
   read_tables(lookup, source, c);

@@ -123,6 +123,15 @@ TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
           "unknown parameter");
   refused(write("f.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\n"),
           "field 'seeds'");
+  // yaml-cpp keeps the first copy of a repeated key: seeds 1 or 2? The file is refused.
+  refused(write("h.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
+                              "]\nseeds: 1\nfaults:\n  wet: {drive: {tyre_friction: 0.2}}\n"
+                              "  dry: {}\nseeds: 2\n"),
+          "field 'seeds': given twice in one mapping");
+  refused(write("i.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
+                              "]\nseeds: 1\nfaults:\n  wet: {lidar: {range_noise_m: 0.01, "
+                              "range_noise_m: 0.05}}\n"),
+          "field 'faults.wet.lidar.range_noise_m': given twice");
   write("file_in_the_way", "x");
   refused(
       write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"),

@@ -179,7 +179,7 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
                  c.world_json([](nlohmann::json& j) { j["robot"]["max_speed_mps"] = 1e5; }));
          return std::string("run w.json");
        },
-       "field 'robot.max_speed_mps': must be at most 20"},
+       "field 'robot.max_speed_mps': must be from 0.01 to 20"},
       {"scenario worlds as a mapping",
        [](Cli& c) {
          c.write("s.yaml", "worlds: {a: 1}\nseeds: 1\n");

@@ -467,6 +467,8 @@ TEST(CoverageParams, BadFilesAreRefusedNamingTheField) {
   EXPECT_TRUE(refused(R"({"exact": {"time_limit_s": "ten"}})", "exact.time_limit_s"));
   EXPECT_TRUE(refused(R"({"cell_m": 1e400})", "p.json"));  // not a double: refused as JSON
   EXPECT_TRUE(refused(R"([1, 2])", "p.json"));
+  EXPECT_TRUE(refused(R"({"chnn": {"restarts": 5, "restarts": 50}})",
+                      "field 'chnn.restarts': given twice"));
   EXPECT_FALSE(refused(R"({"comment": "defaults", "chnn": {"restarts": 5}})", ""));
 }
 

@@ -192,6 +192,11 @@ TEST(GridMaps, BadFilesNameTheFileAndTheField) {
   expect(write("short.map", "type octile\nheight 3\nwidth 2\nmap\n..\n..\n"), "row 2");
   expect(write("wide.map", "type octile\nheight 1\nwidth 2\nmap\n...\n"), "has 3 cells");
   expect(write("nohead.map", "height 1\n"), "type");
+  // A byte that is no terrain letter is refused where it is, not read as a wall.
+  expect(write("nul.map", std::string("type octile\nheight 2\nwidth 3\nmap\n...\n.") +
+                              std::string(1, '\0') + ".\n"),
+         "field 'row 1': column 1 holds a character that is not MovingAI terrain");
+  expect(write("lower.map", "type octile\nheight 1\nwidth 3\nmap\n.t.\n"), "column 1");
   expect(dir.string(), "is a directory");
   std::filesystem::remove_all(dir);
 }

@@ -110,6 +110,11 @@ TEST_F(TinyMaps, BadFilesNameFileAndField) {
                "0.65\nfree_thresh: 0.2\n"),
          "file ends before the last pixel");
   expect(write("f.yaml", "[1, 2"), "malformed YAML");
+  // yaml-cpp keeps the first of two copies of a key silently: which resolution was meant?
+  expect(write("twice.yaml",
+               "image: x.pgm\nresolution: 0.05\nresolution: 0.5\norigin: [0,0,0]\n"
+               "occupied_thresh: 0.65\nfree_thresh: 0.2\n"),
+         "field 'resolution': given twice in one mapping");
   write("text.pgm",
         "P2\n1000000 1000000\n255\n0 0 0\n");  // a header promising more than the file holds
   expect(write("g.yaml",

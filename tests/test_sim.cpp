@@ -231,6 +231,8 @@ TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
   fails_with(R"({"step": {"dt_s": 0}})", "step.dt_s");
   fails_with(R"({"docking": {"max_retries": -1}})", "docking.max_retries");
   fails_with("{oops", "malformed JSON");
+  fails_with(R"({"step": {"dt_s": 0.01}, "step": {"dt_s": 0.02}})",
+             "field 'step': given twice in one object");
   // The printed defaults read back to the defaults.
   const EpisodeConfig round = parse_episode_config(default_config_json(), "defaults");
   EXPECT_DOUBLE_EQ(round.step.dt_s, EpisodeConfig{}.step.dt_s);

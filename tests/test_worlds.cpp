@@ -140,5 +140,54 @@ TEST_F(WorldFiles, HugeWorldIsRefused) {
   expect_error(write("w.json", j.dump()), "huge world");
 }
 
+// A parser keeps one copy of a repeated key silently (nlohmann-json the last): the file that
+// says both has no single meaning, so the field is named and the file refused.
+TEST_F(WorldFiles, AKeyGivenTwiceIsRefusedWhereverItIs) {
+  const std::string text = good().dump();
+  auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const auto at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return t.replace(at, from.size(), to);
+  };
+  expect_error(write("top.json", with("\"name\":\"small_plant\"",
+                                      "\"name\":\"small_plant\",\"name\":\"other\"")),
+               "field 'name': given twice in one object");
+  expect_error(write("nested.json", with("\"mass_kg\":30", "\"mass_kg\":30,\"mass_kg\":3")),
+               "field 'robot.mass_kg': given twice");
+  auto j = good();
+  j["moving_obstacles"] = nlohmann::json::array(
+      {{{"name", "a"}, {"size_m", {0.5, 0.5}}, {"waypoints", {{1.0, 1.0}}}},
+       {{"name", "b"}, {"size_m", {0.5, 0.5}}, {"waypoints", {{1.0, 13.0}}}}});
+  std::string in_array = j.dump();
+  in_array.replace(in_array.find("\"name\":\"b\""), 10, "\"name\":\"b\",\"name\":\"c\"");
+  expect_error(write("array.json", in_array), "field 'moving_obstacles[1].name': given twice");
+  // The same key in two different objects is no repeat.
+  EXPECT_NO_THROW(load_world(write("ok.json", j.dump())));
+}
+
+// Inside the documented ranges the physics works; below them it did not (a 1e-300 kg robot
+// never moved, a 1e-9 m wheel base spun on the spot until the timeout), and an angle is
+// judged as an angle, not as a coordinate.
+TEST_F(WorldFiles, ImplausibleRobotsAreRefusedAndAnglesAreJudgedAsAngles) {
+  const std::vector<std::pair<std::string, double>> too_small = {{"mass_kg", 1e-300},
+                                                                 {"wheel_base_m", 1e-9},
+                                                                 {"wheel_radius_m", 1e-6},
+                                                                 {"max_speed_mps", 1e-9},
+                                                                 {"max_accel_mps2", 1e-9}};
+  for (const auto& [key, value] : too_small) {
+    auto j = good();
+    j["robot"][key] = value;
+    expect_error(write(key + ".json", j.dump()), "field 'robot." + key + "': must be from");
+  }
+  auto j = good();
+  j["robot"]["mass_kg"] = 0.1;
+  j["robot"]["wheel_base_m"] = 0.01;
+  EXPECT_NO_THROW(load_world(write("smallest.json", j.dump())));
+  j = good();
+  j["charger"]["yaw"] = 1e300;
+  expect_error(write("yaw.json", j.dump()), "field 'charger.yaw': must be from -100 to 100");
+}
+
 }  // namespace
 }  // namespace plantsim::worlds

@@ -59,6 +59,13 @@ GridMap load_movingai_map(const std::string& path) {
       throw WorldError(
           path, "row " + std::to_string(y),
           "has " + std::to_string(row.size()) + " cells, expected " + std::to_string(m.width));
+    // The benchmark's own terrain letters only: any other byte (a stray NUL, a letter of another
+    // format) has no defined meaning, and reading it as a wall would plan round a typo.
+    const std::size_t bad = row.find_first_not_of(".G@OTSW");
+    if (bad != std::string::npos)
+      throw WorldError(path, "row " + std::to_string(y),
+                       "column " + std::to_string(bad) +
+                           " holds a character that is not MovingAI terrain (. G @ O T S W)");
     m.cells.insert(m.cells.end(), row.begin(), row.end());
   }
   return m;

@@ -14,6 +14,7 @@
 #include "util/data_dir.h"
 #include "util/input_file.h"
 #include "worlds/charger_placement.h"
+#include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 #include "worlds/movingai_world.h"
 #include "worlds/ros_map.h"
@@ -40,10 +41,16 @@ class FieldReader {
     return *it;
   }
 
-  double number(const json& value, const std::string& path) const {
+  double finite(const json& value, const std::string& path) const {
     if (!value.is_number()) fail(path, std::string("expected a number, got ") + value.type_name());
     const double v = value.get<double>();
     if (!std::isfinite(v)) fail(path, "must be finite");
+    return v;
+  }
+
+  /// A length or a coordinate.
+  double number(const json& value, const std::string& path) const {
+    const double v = finite(value, path);
     // Beyond this, differences of coordinates lose the millimetres docking is judged by.
     if (std::fabs(v) > kMaxCoordinate_m) fail(path, "beyond +-1e7 m: no plant is that large");
     return v;
@@ -52,7 +59,7 @@ class FieldReader {
   /// A number from lo to hi (a robot 1e6 m wide, a speed of 1e300 are refused at load).
   double bounded(const json& obj, const std::string& key, const std::string& path, double lo,
                  double hi) const {
-    const double v = number(obj, key, path);
+    const double v = finite(member(obj, key, path), join(path, key));
     if (v < lo || v > hi)
       fail(join(path, key), "must be from " + short_number(lo) + " to " + short_number(hi));
     return v;
@@ -284,11 +291,15 @@ void read_robot(const json& doc, const FieldReader& in, World& w) {
   } else {
     w.robot.radius_m = in.positive(robot, "radius_m", "robot", 10.0);
   }
-  w.robot.wheel_base_m = in.positive(robot, "wheel_base_m", "robot", 20.0);
-  w.robot.wheel_radius_m = in.positive(robot, "wheel_radius_m", "robot", 5.0);
-  w.robot.max_speed_mps = in.positive(robot, "max_speed_mps", "robot", 20.0);
-  w.robot.max_accel_mps2 = in.positive(robot, "max_accel_mps2", "robot", 100.0);
-  if (robot.contains("mass_kg")) w.robot.mass_kg = in.positive(robot, "mass_kg", "robot", 100000.0);
+  // Lower limits where the physics (Box2D holds single-precision floats) or the drive's
+  // arithmetic stops meaning anything: a 1e-300 kg robot never moved, a wheel base of 1e-9 m
+  // turned the robot on the spot until the timeout.
+  w.robot.wheel_base_m = in.bounded(robot, "wheel_base_m", "robot", 0.01, 20.0);
+  w.robot.wheel_radius_m = in.bounded(robot, "wheel_radius_m", "robot", 0.001, 5.0);
+  w.robot.max_speed_mps = in.bounded(robot, "max_speed_mps", "robot", 0.01, 20.0);
+  w.robot.max_accel_mps2 = in.bounded(robot, "max_accel_mps2", "robot", 0.01, 100.0);
+  if (robot.contains("mass_kg"))
+    w.robot.mass_kg = in.bounded(robot, "mass_kg", "robot", 0.1, 100000.0);
 }
 
 void read_charger(const json& doc, const FieldReader& in, World& w) {
@@ -468,12 +479,7 @@ void validate_world(const World& w) {
 World parse_world_json(const std::string& text, const std::string& source) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw WorldError(source, "", "file is empty");
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    throw WorldError(source, "", std::string("malformed JSON: ") + e.what());
-  }
+  const json doc = parse_json_input(text, source);
   if (!doc.is_object()) throw WorldError(source, "", "expected a JSON object at the top level");
   FieldReader in(source);
   World w;

@@ -9,6 +9,7 @@
 
 #include "util/input_file.h"
 #include "util/param_table.h"
+#include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 
@@ -54,12 +55,7 @@ const std::vector<Field>& fields() {
 }  // namespace
 
 CoverageParams parse_coverage_params(const std::string& text, const std::string& source) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // syntax, or a number no double holds
-    throw worlds::WorldError(source, "", std::string("not valid JSON: ") + e.what());
-  }
+  const nlohmann::json j = worlds::parse_json_input(text, source);  // syntax, repeated keys
   if (!j.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
   CoverageParams p;
   std::vector<std::string> top{"comment"}, sections;
