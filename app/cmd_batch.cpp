@@ -102,6 +102,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
   cmd->add_option("--out", opt->out, "Output folder (default results/batch_<scenario name>)");
   cmd->add_option("--shard", opt->shard, "Run only shard i of n (i/n, from 0)");
   cmd->add_option("--threads", opt->threads, "Worker threads (default: one per core)")
+      ->transform(decimal_whole_number())
       ->check(CLI::Range(0, 256));
   cmd->add_flag("--quiet", opt->quiet, "No progress bar");
   cmd->add_flag("--no-figures", opt->no_figures, "Skip the report's figures");

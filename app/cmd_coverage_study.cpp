@@ -188,11 +188,13 @@ std::function<int()> add_coverage_study_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("coverage-study",
                                  "Seed 004's experiment on generated 40 x 20 m work areas");
   auto opt = std::make_shared<StudyOptions>();
-  cmd->add_option("--maps", opt->maps, "Maps per obstacle share")->check(CLI::Range(1, 1000));
+  cmd->add_option("--maps", opt->maps, "Maps per obstacle share")
+      ->transform(decimal_whole_number())
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--shares", opt->shares, "Shares of blocked cells")
       ->check(CLI::Range(0.0, 0.5))
       ->delimiter(',');
-  cmd->add_option("--seed", opt->seed, "Seed of the first map");
+  add_seed_option(cmd, opt->seed, "Seed of the first map");
   cmd->add_option("--params", opt->params, "Coverage parameters (JSON)");
   cmd->add_option("--out", opt->out, "Output folder");
   return [opt, cmd]() {

@@ -23,8 +23,10 @@ std::function<int()> add_generate_command(CLI::App& app) {
                       "; docs/world_format.md#generated-plants) on --width x --height, "
                       "from --seed; --count, --density, --min-gap and --overlap do not apply")
       ->check(CLI::IsMember(worlds::plant_style_names()));
-  cmd->add_option("--count", opt->rect_count, "Number of rectangles")->check(CLI::Range(0, 200000));
-  cmd->add_option("--seed", opt->seed, "Random seed");
+  cmd->add_option("--count", opt->rect_count, "Number of rectangles")
+      ->transform(decimal_whole_number())
+      ->check(CLI::Range(0, 200000));
+  add_seed_option(cmd, opt->seed, "Random seed");
   cmd->add_option("--width", opt->width_m, "Floor width (m)")->check(CLI::Range(5.0, 10000.0));
   cmd->add_option("--height", opt->height_m, "Floor height (m)")->check(CLI::Range(5.0, 10000.0));
   cmd->add_option("--density", opt->coverage, "Fraction of the floor covered (0 to 0.6)")

@@ -91,6 +91,7 @@ void add_plan_options(CLI::App* cmd, PlanOptions& o) {
   world_opt->excludes(map_opt);
   cmd->add_option("--corner-steps", o.corner_steps,
                   "Corner inflation: 1 square (the document), more for a tighter staircase")
+      ->transform(decimal_whole_number())
       ->check(CLI::Range(1, 16));
   cmd->add_option("--inflation", o.inflation,
                   "square (rectangles grown to rectangles, the document's; see --corner-steps) or "
@@ -113,11 +114,13 @@ void add_plan_options(CLI::App* cmd, PlanOptions& o) {
                   "landmarks x mesh cells may not pass " +
                       std::to_string(planner::kLandmarkCellBudget) +
                       " (refused, with the most the map allows)")
+      ->transform(decimal_whole_number())
       ->check(CLI::Range(0, 64));
   cmd->add_option("--search-memory-mb", o.search_memory_mb,
                   "Planners vg, interval, polyanya: a query whose search holds more than this "
                   "(MiB) stops with status \"search limit\" and exit 1 (default " +
                       std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
+      ->transform(decimal_whole_number())
       ->check(CLI::Range(1, 1 << 20));
   cmd->add_flag("--snap", o.snap,
                 "Move a blocked start or charger to the nearest free point (reported)");

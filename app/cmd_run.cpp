@@ -94,7 +94,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--planner", opt->planner, "Planner name")
       ->check(CLI::IsMember(planner::planner_names()));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");
-  cmd->add_option("--seed", opt->seed, "Random seed for noise");
+  add_seed_option(cmd, opt->seed, "Random seed for noise");
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
   cmd->add_option("--charger", opt->charger, "Override the charger's docked pose: x,y,yaw");
   cmd->add_option("--config", opt->config,

@@ -8,12 +8,16 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <tuple>
+#include <vector>
 
 #include "app/commands.h"
 #include "render/dashboard.h"
 #include "util/atomic_file.h"
 #include "util/fixed_text.h"
 #include "util/input_file.h"
+#include "worlds/json_input.h"
+#include "worlds/world_error.h"
 
 namespace plantsim::app {
 namespace {
@@ -41,14 +45,8 @@ std::string setting_of(const std::string& command) {
   return out.empty() ? "defaults" : out;
 }
 
-/// A batch folder in one line from its summary.json: episodes, failures by reason, the gate.
-std::string batch_line(const std::string& dir, std::string& verdict) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
-  } catch (const std::exception&) {
-    return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
-  }
+/// The batch line's counts (throws nlohmann::json::exception on a field of another type).
+std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
   verdict = j.value("verdict", "");
   std::string line = std::to_string(j.value("succeeded", 0LL)) + " of " +
                      std::to_string(j.value("episodes", 0LL)) + " episodes succeeded";
@@ -68,6 +66,22 @@ std::string batch_line(const std::string& dir, std::string& verdict) {
             std::to_string(gate.value("lower_bound_below_threshold", 0LL)) +
             " with the 95 % lower bound below it";
   return line;
+}
+
+/// A batch folder in one line from its summary.json: episodes, failures by reason, the gate.
+std::string batch_line(const std::string& dir, std::string& verdict) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+  } catch (const std::exception&) {
+    return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
+  }
+  try {
+    return batch_counts(j, verdict);
+  } catch (const nlohmann::json::exception&) {  // a field of another type: not plantsim's file
+    verdict.clear();
+    return "a summary.json plantsim did not write (a field of the wrong type): see its report";
+  }
 }
 
 /// A linked report, its kind told by what its folder holds, with the figure that shows it best.
@@ -102,14 +116,42 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
   return l;
 }
 
+/// A run's summary.json with every field the table reads of its type (a hand-edited or foreign
+/// file is refused naming the field, never half-read).
 nlohmann::json read_summary(const std::string& dir) {
+  const std::string path = dir + "/summary.json";
+  nlohmann::json j;
   try {
-    return nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+    j = worlds::parse_json_input(util::read_input_file(path, 64u << 20), path);
   } catch (const util::InputFileError& e) {
-    throw std::invalid_argument(dir + "/summary.json: " + e.what());
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(dir + "/summary.json: malformed JSON: " + e.what());
+    throw std::invalid_argument(path + ": " + e.what());
   }
+  if (!j.is_object()) throw worlds::WorldError(path, "", "expected a JSON object");
+  using Check = bool (nlohmann::json::*)() const noexcept;
+  const std::vector<std::tuple<const char*, Check, const char*>> fields = {
+      {"world", &nlohmann::json::is_string, "text"},
+      {"planner", &nlohmann::json::is_string, "text"},
+      {"travel", &nlohmann::json::is_string, "text"},
+      {"status", &nlohmann::json::is_string, "text"},
+      {"command", &nlohmann::json::is_string, "text"},
+      {"error_measured", &nlohmann::json::is_boolean, "true or false"},
+      {"docked", &nlohmann::json::is_boolean, "true or false"},
+      {"caught", &nlohmann::json::is_boolean, "true or false"},
+      {"position_error_m", &nlohmann::json::is_number, "a number"},
+      {"heading_error_deg", &nlohmann::json::is_number, "a number"},
+      {"time_s", &nlohmann::json::is_number, "a number"},
+      {"path_length_m", &nlohmann::json::is_number, "a number"},
+      {"driven_length_m", &nlohmann::json::is_number, "a number"},
+      {"collisions", &nlohmann::json::is_number_unsigned, "a whole number from 0"},
+      {"retries", &nlohmann::json::is_number_unsigned, "a whole number from 0"},
+      {"stops", &nlohmann::json::is_number_unsigned, "a whole number from 0"},
+      {"replans", &nlohmann::json::is_number_unsigned, "a whole number from 0"}};
+  for (const auto& [key, is_kind, kind] : fields) {
+    const auto it = j.find(key);
+    if (it != j.end() && !((*it).*is_kind)())
+      throw worlds::WorldError(path, key, std::string("expected ") + kind);
+  }
+  return j;
 }
 
 /// The run's row of the Markdown table (the dashboard's columns), its figure linked from `link`.

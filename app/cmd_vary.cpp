@@ -31,10 +31,11 @@ std::function<int()> add_vary_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   cmd->add_option("world", o->world, "World file (plantsim JSON)")->required();
   cmd->add_option("--unmapped", o->unmapped, "Boxes the map lacks, across the optimal path")
+      ->transform(decimal_whole_number())
       ->check(CLI::Range(0, 50));
   cmd->add_option("--charger-offset", o->offset,
                   "The charger's mapped pose minus its real one: dx,dy,dyaw (m, m, rad)");
-  cmd->add_option("--seed", o->seed, "Random seed for the boxes' sizes and places");
+  add_seed_option(cmd, o->seed, "Random seed for the boxes' sizes and places");
   cmd->add_option("--name", o->name, "Name of the variant (default: <name>_mismatch)");
   cmd->add_option("--out", o->out, "Output file (default: stdout)");
   return [o]() {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
+#include <string>
 
 namespace plantsim::app {
 
@@ -17,6 +19,15 @@ std::string command_line(const CLI::App* sub);
 /// The world argument of `run` and `compare` (any format the loaders read) with the MovingAI
 /// query that gives a .map its start and charger.
 void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int& query);
+
+/// The transform every whole-number option takes: plain decimal digits (leading zeros dropped),
+/// at most 2^64 - 1, before CLI11 converts them. CLI11 alone reads "010" as octal 8 and "0x10"
+/// as 16, and an unsigned "-1" or any number past 2^64 - 1 as the largest value, so that three
+/// different seeds ran one episode. The option's own range check follows it.
+const CLI::Validator& decimal_whole_number();
+
+/// `--seed`, from 0 to 2^64 - 1.
+void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& description);
 
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);

@@ -33,7 +33,31 @@ void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int
   cmd->add_option(
       "--scen", scen,
       "For a MovingAI .map: the .scen file whose query gives the start and the charger");
-  cmd->add_option("--query", query, "That query's number, from 0")->check(CLI::Range(0, 100000000));
+  cmd->add_option("--query", query, "That query's number, from 0")
+      ->transform(decimal_whole_number())
+      ->check(CLI::Range(0, 100000000));
+}
+
+const CLI::Validator& decimal_whole_number() {
+  static const CLI::Validator whole_number(
+      [](std::string& text) -> std::string {
+        static const std::string kMax = "18446744073709551615";
+        const std::size_t first = text.find_first_not_of('0');
+        const std::string digits = first == std::string::npos ? "0" : text.substr(first);
+        const bool plain =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        if (!plain || digits.size() > kMax.size() ||
+            (digits.size() == kMax.size() && digits > kMax))
+          return "expects a whole number from 0 to " + kMax + ", got '" + text + "'";
+        text = digits;  // CLI11 would read a leading 0 as octal: "010" as 8
+        return "";
+      },
+      "");
+  return whole_number;
+}
+
+void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& description) {
+  cmd->add_option("--seed", seed, description)->transform(decimal_whole_number());
 }
 
 std::string command_line(const CLI::App* sub) {

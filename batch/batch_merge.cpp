@@ -71,8 +71,9 @@ ShardRecords read_shards(const std::vector<std::string>& dirs) {
     const JsonlScan scan =
         scan_jsonl(path, [&](std::string&& line) { add_record(s, d, path, std::move(line)); });
     if (scan.bad_lines > 0)
-      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out\n",
-                   path.c_str(), static_cast<long long>(scan.bad_lines));
+      std::fprintf(stderr, "merge: warning: %s has %lld malformed line(s), left out (%s)\n",
+                   path.c_str(), static_cast<long long>(scan.bad_lines),
+                   scan.first_problem.c_str());
   }
   if (s.by_id.empty())
     throw std::invalid_argument("nothing to merge: the folders hold no episodes");

@@ -24,9 +24,10 @@ struct MergeOutcome {
   Gate gate;  ///< the scenario's gate, when its file could be read again (else none)
 };
 
-/// A merge that would lose episodes: shards missing (exit 1, not bad input).
-struct IncompleteBatch : std::runtime_error {
-  using std::runtime_error::runtime_error;
+/// A merge that would lose episodes (shards missing): refused like any other input that cannot
+/// make the batch, exit 2, naming the first missing ids.
+struct IncompleteBatch : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
 };
 
 /// Joins the episodes.jsonl of shard folders (duplicates by id dropped) into out_dir, with the

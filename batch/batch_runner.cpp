@@ -109,8 +109,9 @@ std::set<std::string> resume(const std::string& jsonl, const RunOptions& o,
     util::write_file_atomically(jsonl, kept);
     std::fprintf(stderr,
                  "batch: warning: cut %lld malformed, unfinished, repeated or foreign line(s) from "
-                 "%s; their episodes run again\n",
-                 static_cast<long long>(cut), jsonl.c_str());
+                 "%s; their episodes run again%s\n",
+                 static_cast<long long>(cut), jsonl.c_str(),
+                 scan.first_problem.empty() ? "" : (" (" + scan.first_problem + ")").c_str());
   }
   return done;
 }

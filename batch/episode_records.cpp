@@ -13,20 +13,13 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "batch/record_schema.h"
 #include "util/atomic_file.h"
 
 namespace plantsim::batch {
 namespace {
 
 using nlohmann::json;
-
-bool usable_record(const std::string& line) {
-  const json j = json::parse(line, nullptr, false);
-  return j.is_object() && j.contains("id") && j["id"].is_string() && j.contains("scenario") &&
-         j["scenario"].is_string() && j.contains("index") && j["index"].is_number_integer() &&
-         j.contains("world") && j["world"].is_string() && j.contains("docked") &&
-         j["docked"].is_boolean();
-}
 
 /// Closes the descriptor on every way out.
 struct Fd {
@@ -64,13 +57,22 @@ JsonlScan scan_jsonl(const std::string& path, const std::function<void(std::stri
     throw std::invalid_argument(path + " is not a regular file");
   std::string line, chunk(1 << 16, '\0');
   bool too_long = false;
+  std::int64_t line_number = 0;
+  auto bad = [&](const std::string& problem) {
+    if (scan.bad_lines++ == 0)
+      scan.first_problem = "line " + std::to_string(line_number) + ": " + problem;
+  };
   auto finish_line = [&]() {
-    if (too_long)
-      ++scan.bad_lines;
-    else if (usable_record(line))
-      each(std::move(line));
-    else if (line.find_first_not_of(" \t\r") != std::string::npos)
-      ++scan.bad_lines;
+    ++line_number;
+    if (too_long) {
+      bad("longer than any record");
+    } else if (line.find_first_not_of(" \t\r") != std::string::npos) {
+      const std::string problem = record_problem(line);
+      if (problem.empty())
+        each(std::move(line));
+      else
+        bad(problem);
+    }
     line.clear();
     too_long = false;
   };

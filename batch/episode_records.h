@@ -15,12 +15,13 @@ inline constexpr std::size_t kMaxRecordBytes = 1u << 20;
 
 struct JsonlScan {
   std::int64_t bad_lines = 0;  ///< malformed, too long, or not a record of a batch
+  std::string first_problem;   ///< the first bad line's number and problem, for the warning
   bool torn_tail = false;      ///< a last line without its newline (a killed run)
 };
 
-/// Calls `each` with every usable record of the file (a JSON object with an id, an index, a
-/// scenario, a world and docked); a missing file has none. The file must be a regular file
-/// (never a link, a FIFO or a device): else std::invalid_argument naming it.
+/// Calls `each` with every usable record of the file (batch/record_schema.h: every field of its
+/// type, each key once, an id that is the record's own); a missing file has none. The file must be
+/// a regular file (never a link, a FIFO or a device): else std::invalid_argument naming it.
 JsonlScan scan_jsonl(const std::string& path, const std::function<void(std::string&& line)>& each);
 
 /// Every usable record of the file, in order.

@@ -62,6 +62,37 @@ TEST_F(Cli, AHugeWorldFileIsRefusedBeforeItIsParsed) {
   EXPECT_LT(seconds_since(t0), 3.0);
 }
 
+TEST_F(Cli, WholeNumbersAreReadAsDecimalsThatFitOrRefused) {
+  // CLI11 alone read all three as 2^64 - 1: three seeds asked for, one world written three times.
+  for (const std::string seed :
+       {"-1", "99999999999999999999999", "18446744073709551616", "1.5", "", "7x"}) {
+    const Outcome o = run("generate --seed '" + seed + "'");
+    EXPECT_EQ(o.exit_code, 2) << seed << ": " << o.err;
+    EXPECT_NE(o.err.find("expects a whole number from 0 to 18446744073709551615"),
+              std::string::npos)
+        << o.err;
+    EXPECT_TRUE(o.out.empty()) << seed;
+  }
+  const Outcome largest = run("generate --seed 18446744073709551615");
+  const Outcome padded = run("generate --seed 018446744073709551615");
+  const Outcome next = run("generate --seed 18446744073709551614");
+  ASSERT_EQ(largest.exit_code, 0) << largest.err;
+  EXPECT_EQ(padded.out, largest.out);
+  EXPECT_NE(next.out, largest.out);
+  EXPECT_EQ(run("generate --seed 010").out, run("generate --seed 10").out);  // not octal 8
+  EXPECT_NE(run("generate --seed 010").out, run("generate --seed 8").out);
+  // Every whole-number option reads decimal digits: ten rectangles, not eight or sixteen.
+  for (const std::string count : {"010", "10"}) {
+    const Outcome o = run("generate --count " + count + " --seed 3");
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+    EXPECT_EQ(nlohmann::json::parse(o.out)["obstacles"].size(), 10u) << count;
+  }
+  EXPECT_EQ(run("generate --count 0x10").exit_code, 2);
+  EXPECT_EQ(run("batch " + kCorridor + " --threads -1 --check").exit_code, 2);
+  EXPECT_EQ(run("run " + kCorridor + " --seed -1 --out out").exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {
   const std::string head = "worlds: [" + kCorridor + "]\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -121,6 +152,36 @@ TEST_F(Cli, AMapWithoutBorderWallsGetsAStartInsideIt) {
   EXPECT_EQ(o.exit_code, 0) << o.err;
 }
 
+// summarize reads summary.json files a user may have edited or another tool written: a field of
+// another type once ended it with nlohmann's "type must be number" (exit 1).
+TEST_F(Cli, ASummaryOfAnotherShapeIsRefusedNamingItsField) {
+  ASSERT_EQ(run("run " + kCorridor + " --out r", 120).exit_code, 0);
+  const std::string text = read(dir_ / "r/summary.json");
+  nlohmann::json j = nlohmann::json::parse(text);
+  const std::vector<std::pair<nlohmann::json, std::string>> cases = {
+      {"far", "field 'position_error_m': expected a number"},
+      {nullptr, "field 'position_error_m': expected a number"},
+  };
+  fs::create_directories(dir_ / "r2");
+  for (const auto& [value, problem] : cases) {
+    j["position_error_m"] = value;
+    write("r2/summary.json", j.dump());
+    const Outcome o = run("summarize r r2 --out table.md");
+    EXPECT_EQ(o.exit_code, 2) << o.err;
+    EXPECT_NE(o.err.find("r2/summary.json: " + problem), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "table.md"));
+  }
+  j = nlohmann::json::parse(text);
+  j["retries"] = -3;
+  write("r2/summary.json", j.dump());
+  EXPECT_NE(run("summarize r r2").err.find("field 'retries': expected a whole number from 0"),
+            std::string::npos);
+  write("r2/summary.json", text.substr(0, text.rfind('}')) + R"(, "docked": false})");
+  EXPECT_NE(run("summarize r r2").err.find("field 'docked': given twice"), std::string::npos);
+  write("r2/summary.json", text);
+  EXPECT_EQ(run("summarize r r2").exit_code, 0);
+}
+
 class ShardFolders : public Cli {
  protected:
   // A small finished batch in two shards, and its scenario.
@@ -168,10 +229,10 @@ TEST_F(ShardFolders, AMergeRefusesConflictingCopiesAndForeignOrMissingEpisodes) 
   EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
   EXPECT_NE(o.err.find("|999"), std::string::npos) << o.err;
   EXPECT_EQ(o.out.find("4 of 4"), std::string::npos);
-  // Only missing: exit 1 naming the missing episode's index.
+  // Only missing: refused, exit 2, naming the missing episode.
   put("b", {b[0]});
   o = run("merge a b --out m5");
-  EXPECT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_EQ(o.exit_code, 2) << o.err;
   EXPECT_NE(o.err.find("are missing ("), std::string::npos) << o.err;
 }
 
@@ -230,6 +291,49 @@ TEST_F(ShardFolders, AResumeReadsRecordsAsAStreamAndCutsLinesNoRecordIsAsLongAs)
   EXPECT_EQ(o.exit_code, 0) << o.err;
   EXPECT_NE(o.err.find("cut 1"), std::string::npos) << o.err;
   EXPECT_EQ(lines("a"), a);
+}
+
+// A record is read whole or not at all: a field of the wrong type once stopped a merge with
+// nlohmann's own "type must be number" (exit 1) or, for a flag written as text, was counted.
+TEST_F(ShardFolders, ARecordThatIsNotWhatTheBatchWritesIsMalformedNeverHalfRead) {
+  const auto a = lines("a");
+  const nlohmann::json good = nlohmann::json::parse(a[0]);
+  auto with = [&](const std::string& key, const nlohmann::json& value) {
+    nlohmann::json j = good;
+    j[key] = value;
+    return j.dump();
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {with("position_error_m", "far"), "field 'position_error_m': expected a number"},
+      {with("succeeded", "yes"), "field 'succeeded': expected true or false"},
+      {with("collisions", -1), "field 'collisions': expected a whole number from 0"},
+      {with("seed", 99), "is not the record's own episode"},
+      {good.dump().substr(0, good.dump().size() - 1) + R"(,"succeeded":false})",
+       "field 'succeeded': given twice"},
+  };
+  for (const auto& [record, problem] : cases) {
+    put("a", {record, a[1]});
+    const Outcome o = run("merge a b --out m");
+    EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
+    EXPECT_NE(o.err.find("a/episodes.jsonl has 1 malformed line(s), left out (line 1: "),
+              std::string::npos)
+        << o.err;
+    EXPECT_NE(o.err.find(problem), std::string::npos) << o.err;
+    EXPECT_NE(
+        o.err.find("1 of the scenario's 4 episodes are missing (" + good["id"].get<std::string>()),
+        std::string::npos)
+        << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "m"));
+  }
+  // A resume reruns the episode the malformed line claimed, and the merge is whole again.
+  const Outcome o = run("batch s.yaml --shard 0/2 --out a --quiet --no-figures");
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.err.find("(line 1: field 'succeeded': given twice"), std::string::npos) << o.err;
+  ASSERT_EQ(lines("a").size(), 2u);
+  EXPECT_EQ(nlohmann::json::parse(lines("a")[1]), good);  // rerun: the same episode exactly
+  const Outcome merged = run("merge a b --out m");
+  EXPECT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_NE(merged.out.find("4 of 4 episodes"), std::string::npos) << merged.out;
 }
 
 }  // namespace
