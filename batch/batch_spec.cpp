@@ -395,6 +395,15 @@ void apply_sweep(const YAML::Node& doc, const std::string& path, BatchSpec& s,
     values.push_back(value_text(v));
     if (!worlds::valid_utf8(values.back()) || values.back().size() > 100)
       throw WorldError(path, "sweep.values", "values must be at most 100 characters of UTF-8");
+    // Each value names its configuration (and its episodes' ids): a value twice, or 1 and 1.0,
+    // would run one setting as two that share ids.
+    const std::string& value = values.back();
+    for (std::size_t i = 0; i + 1 < values.size(); ++i)
+      if (values[i] == value ||
+          (decimal_number(values[i]) && decimal_number(value) &&
+           std::strtod(values[i].c_str(), nullptr) == std::strtod(value.c_str(), nullptr)))
+        throw WorldError(path, "sweep.values",
+                         "'" + value + "' is the value '" + values[i] + "' again");
   }
   for (const auto& [name, body] : bodies)
     for (std::size_t i = 0; i < values.size(); ++i) {

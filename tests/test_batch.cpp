@@ -132,6 +132,12 @@ TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
                               "]\nseeds: 1\nfaults:\n  wet: {lidar: {range_noise_m: 0.01, "
                               "range_noise_m: 0.05}}\n"),
           "field 'faults.wet.lidar.range_noise_m': given twice");
+  // A sweep value twice ran two configurations with one name and one id per episode.
+  for (const std::string values : {"[0.2, 0.2]", "[0.5, 5e-1]", "[1, 1.0]"})
+    refused(write("j.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
+                                "]\nseeds: 1\nsweep: {parameter: drive.tyre_friction, values: " +
+                                values + "}\n"),
+            "field 'sweep.values'");
   write("file_in_the_way", "x");
   refused(
       write("g.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") + "]\nseeds: 1\n"),
