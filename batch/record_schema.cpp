@@ -15,13 +15,13 @@ using nlohmann::json;
 enum class Kind {
   kText,
   kFlag,
-  kNumber,         // a finite number (read as such by every summary)
-  kNumberOrNull,   // a metric that is NaN, written as null, where it was not measured
-  kCount,          // a whole number from 0
-  kTextOrNull,     // the failure reason: null when none
-  kPose,           // [x, y, yaw]
-  kNumberList,     // the driven path, in millimetres
-  kBoxList,        // the unmapped boxes, [[xmin, ymin, xmax, ymax], ...]
+  kNumber,        // a finite number (read as such by every summary)
+  kNumberOrNull,  // a metric that is NaN, written as null, where it was not measured
+  kCount,         // a whole number from 0
+  kTextOrNull,    // the failure reason: null when none
+  kPose,          // [x, y, yaw]
+  kNumberList,    // the driven path, in millimetres
+  kBoxList,       // the unmapped boxes, [[xmin, ymin, xmax, ymax], ...]
 };
 
 struct Field {
@@ -144,11 +144,10 @@ std::string record_problem(const std::string& line) {
   }
   // The id names the episode (world|planner|controller|fault|seed, names that hold no '|'):
   // a record whose fields say otherwise is not the episode its id claims.
-  const std::string expected = j["world"].get<std::string>() + "|" +
-                               j["planner"].get<std::string>() + "|" +
-                               j["controller"].get<std::string>() + "|" +
-                               j["fault"].get<std::string>() + "|" +
-                               std::to_string(j["seed"].get<std::uint64_t>());
+  const std::string expected =
+      j["world"].get<std::string>() + "|" + j["planner"].get<std::string>() + "|" +
+      j["controller"].get<std::string>() + "|" + j["fault"].get<std::string>() + "|" +
+      std::to_string(j["seed"].get<std::uint64_t>());
   if (j["id"].get<std::string>() != expected)
     return "field 'id': '" + j["id"].get<std::string>() + "' is not the record's own episode ('" +
            expected + "')";
