@@ -12,7 +12,23 @@ import csv
 import io
 import json
 import os
+import pathlib
 import tempfile
+
+
+def _find_shared_data():
+    """The shared data folder ("$data/" in scenarios and world paths) beside the checkout this
+    module was built in, as the command line finds it beside its binary: the C++ side looks beside
+    the running executable, which here is the Python interpreter, and fell back to a folder
+    relative to the working folder (a shipped scenario then failed from anywhere else)."""
+    for folder in pathlib.Path(__file__).resolve().parents:
+        if (folder / "shared" / "data").is_dir():
+            return str(folder / "shared" / "data")
+    return None
+
+
+if not os.environ.get("PLANTSIM_DATA") and _find_shared_data():
+    os.environ["PLANTSIM_DATA"] = _find_shared_data()  # read by the C++ loaders; yours wins
 
 from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, load_world, nav2_import, plan,
                         planners, run)

@@ -1,6 +1,7 @@
 """The Python module against the command line and known answers: worlds of every format, plans
 of known optimal length, runs equal to `plantsim run`, a controller in the loop, errors."""
 import json
+import os
 import subprocess
 import sys
 
@@ -149,3 +150,14 @@ def test_help_tells_the_whole_call():
     doc = plantsim.run.__doc__
     for word in ("controller", "docking", "config", "seed", "planner", "out", "InputError"):
         assert word in doc
+
+
+def test_shared_data_is_found_from_any_working_folder(source, tmp_path):
+    # "$data/" resolves beside the checkout, as for the command line, not from the working folder.
+    env = {k: v for k, v in os.environ.items() if k != "PLANTSIM_DATA"}
+    env["PYTHONPATH"] = os.path.dirname(os.path.dirname(os.path.abspath(plantsim.__file__)))
+    script = ("import plantsim; w = plantsim.load_world('$data/worlds/world_N10.json'); "
+              "print(w.obstacles.shape[0])")
+    out = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "10"
