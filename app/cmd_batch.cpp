@@ -11,6 +11,7 @@
 #include "batch/batch_gate.h"
 #include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
+#include "batch/episode_records.h"
 #include "batch/episode_runner.h"
 #include "util/atomic_file.h"
 #include "worlds/known_keys.h"
@@ -46,11 +47,24 @@ struct GateOptions {
   }
 
   // Before any episode runs: a report that could not be written would waste the batch. A
-  // report inside the output folder (made by the batch) is one of the folder's own files.
-  std::vector<std::string> check_outputs(const std::string& out_dir) const {
+  // report inside the output folder (made by the batch) is one of the folder's own files; it may
+  // not take the name of a file the batch writes there or a merge reads from its shards
+  // (`--junit DIR/episodes.jsonl` once replaced the records with XML, and the next resume
+  // reran every episode).
+  std::vector<std::string> check_outputs(const std::string& out_dir,
+                                         const std::vector<std::string>& shard_dirs = {}) const {
     if (junit.empty()) return {};
     namespace fs = std::filesystem;
     const fs::path report = fs::path(junit).lexically_normal();
+    std::error_code ec;
+    const fs::path report_dir = fs::weakly_canonical(fs::absolute(report, ec).parent_path(), ec);
+    std::vector<std::string> batch_dirs = shard_dirs;
+    batch_dirs.push_back(out_dir);
+    for (const std::string& d : batch_dirs)
+      if (report_dir == fs::weakly_canonical(fs::absolute(d, ec), ec) &&
+          batch::is_batch_output_name(report.filename().string()))
+        throw std::invalid_argument("--junit: '" + junit + "' is " + report.filename().string() +
+                                    " of the batch folder '" + d + "'; name the report otherwise");
     if (fs::path(report).remove_filename().lexically_normal() ==
         (fs::path(out_dir) / "").lexically_normal()) {
       if (fs::exists(fs::symlink_status(junit))) util::check_output_file(junit, "--junit");
@@ -174,7 +188,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
   opt->gate.add_to(cmd);
   return [opt]() {
     batch::MergeOptions m;
-    m.own_files = opt->gate.check_outputs(opt->out);
+    m.own_files = opt->gate.check_outputs(opt->out, opt->dirs);
     m.allow_partial = opt->allow_partial;
     m.gate = opt->gate.as_override();
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
@@ -115,6 +116,11 @@ std::function<int()> add_compare_command(CLI::App& app) {
   cmd->add_flag("--graph", opt->graph, "Draw each planner's graph");
   cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
   return [opt, cmd]() {
+    // One panel per planner: a name twice drew the same method twice, as if compared with itself.
+    for (std::size_t i = 0; i < opt->planners.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (opt->planners[i] == opt->planners[j])
+          throw std::invalid_argument("--planners: '" + opt->planners[i] + "' is listed twice");
     worlds::PoseOverrides poses;
     poses.movingai_scen = opt->scen;
     poses.movingai_query = opt->query;

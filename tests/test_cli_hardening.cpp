@@ -93,6 +93,13 @@ TEST_F(Cli, WholeNumbersAreReadAsDecimalsThatFitOrRefused) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+TEST_F(Cli, APlannerComparedWithItselfIsRefused) {
+  const Outcome twice = run("compare " + kCorridor + " --planners vg,grid,vg --out c");
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("'vg' is listed twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(fs::exists(dir_ / "c"));
+}
+
 TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {
   const std::string head = "worlds: [" + kCorridor + "]\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -282,6 +289,27 @@ TEST_F(ShardFolders, ReportsThatCannotBeWrittenAreRefusedBeforeTheEpisodes) {
   EXPECT_EQ(run("generate --style sparse --out link.json").exit_code, 2);
   EXPECT_EQ(read(dir_ / "target.json"), "mine");
   EXPECT_TRUE(fs::is_symlink(dir_ / "link.json"));
+}
+
+TEST_F(ShardFolders, AJUnitReportNeverTakesTheNameOfABatchFile) {
+  const std::string records = read(dir_ / "a/episodes.jsonl");
+  const std::string summary = read(dir_ / "a/summary.json");
+  for (const std::string& args :
+       {std::string(
+            "batch s.yaml --shard 0/2 --out a --quiet --no-figures --junit a/episodes.jsonl"),
+        std::string("batch s.yaml --shard 0/2 --out a --quiet --junit ./a/../a/summary.json"),
+        std::string("merge a b --out m --junit a/episodes.jsonl"),
+        std::string("merge a b --out m --junit m/report.html")}) {
+    const Outcome o = run(args);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.err;
+    EXPECT_NE(o.err.find("name the report otherwise"), std::string::npos) << o.err;
+  }
+  EXPECT_EQ(read(dir_ / "a/episodes.jsonl"), records);
+  EXPECT_EQ(read(dir_ / "a/summary.json"), summary);
+  EXPECT_FALSE(fs::exists(dir_ / "m"));
+  // Any other name in the folder is the report's own.
+  EXPECT_EQ(run("merge a b --out m --junit m/junit.xml").exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "m/junit.xml"));
 }
 
 TEST_F(ShardFolders, AResumeReadsRecordsAsAStreamAndCutsLinesNoRecordIsAsLongAs) {
