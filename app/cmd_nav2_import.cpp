@@ -18,6 +18,7 @@ std::function<int()> add_nav2_import_command(CLI::App& app) {
   cmd->add_option("params", *params, "Nav2 parameter YAML (e.g. nav2_params.yaml)")->required();
   cmd->add_option("--out", *out, "Write the config here (default: stdout)");
   return [params, out]() {
+    refuse_output_over_input(*out, *params);
     const Nav2Import im = import_nav2_params(*params);
     const std::string text = im.config.dump(2) + "\n";
     std::cerr << nav2_report(im);

@@ -29,6 +29,10 @@ const CLI::Validator& decimal_whole_number();
 /// `--seed`, from 0 to 2^64 - 1.
 void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& description);
 
+/// Refuses (std::invalid_argument, before any work) an output file that is the input it is made
+/// from (`vary W.json --out W.json` replaced the user's world with its variant).
+void refuse_output_over_input(const std::string& out, const std::string& input);
+
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);

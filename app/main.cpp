@@ -56,6 +56,13 @@ const CLI::Validator& decimal_whole_number() {
   return whole_number;
 }
 
+void refuse_output_over_input(const std::string& out, const std::string& input) {
+  std::error_code ec;
+  if (!out.empty() && std::filesystem::equivalent(out, input, ec))
+    throw std::invalid_argument("--out: '" + out + "' is the input '" + input +
+                                "' itself; write the output elsewhere");
+}
+
 void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& description) {
   cmd->add_option("--seed", seed, description)->transform(decimal_whole_number());
 }

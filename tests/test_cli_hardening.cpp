@@ -93,6 +93,20 @@ TEST_F(Cli, WholeNumbersAreReadAsDecimalsThatFitOrRefused) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+TEST_F(Cli, AnOutputIsNeverTheInputItIsMadeFrom) {
+  write("w.json", read(kCorridor));
+  const Outcome o = run("vary w.json --unmapped 1 --out ./w.json");
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("is the input"), std::string::npos) << o.err;
+  EXPECT_EQ(read(dir_ / "w.json"), read(kCorridor));
+  write("nav2.yaml",
+        "controller_server:\n  ros__parameters:\n    FollowPath:\n      plugin: "
+        "nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController\n");
+  EXPECT_EQ(run("nav2-import nav2.yaml --out nav2.yaml").exit_code, 2);
+  EXPECT_NE(read(dir_ / "nav2.yaml").find("FollowPath"), std::string::npos);
+  EXPECT_EQ(run("vary w.json --unmapped 1 --out v.json").exit_code, 0);
+}
+
 TEST_F(Cli, APlannerComparedWithItselfIsRefused) {
   const Outcome twice = run("compare " + kCorridor + " --planners vg,grid,vg --out c");
   EXPECT_EQ(twice.exit_code, 2);
