@@ -7,24 +7,12 @@
 
 #include "app/commands.h"
 #include "util/data_dir.h"
+#include "util/shell_word.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::app {
 
-namespace {
-
-// A word as a POSIX shell reads it back: quoted when it holds anything but safe characters.
-std::string shell_word(const std::string& word) {
-  const bool safe = !word.empty() && word.find_first_not_of(
-                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-                                         "0123456789_-./,:=+@%") == std::string::npos;
-  if (safe) return word;
-  std::string quoted = "'";
-  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-}  // namespace
+using util::shell_word;
 
 void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int& query) {
   cmd->add_option("world", world,

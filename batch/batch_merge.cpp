@@ -164,6 +164,8 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   if (ec || !std::filesystem::is_directory(out_dir))
     throw std::invalid_argument("cannot create output folder '" + out_dir + "'");
   const util::FolderLock lock(out_dir);
+  remove_batch_temporaries(out_dir);
+  remove_batch_outputs(out_dir, true);  // no figure of an earlier merge beside this one's
   util::write_file_atomically(out_dir + "/episodes.jsonl", text);
   std::string command = "plantsim merge";
   for (const auto& d : dirs) command += " " + d;

@@ -22,6 +22,7 @@
 #include "util/atomic_file.h"
 #include "util/csv.h"
 #include "util/fixed_text.h"
+#include "util/shell_word.h"
 #include "worlds/known_keys.h"
 
 namespace plantsim::batch {
@@ -101,6 +102,12 @@ void fill_table(render::Report& report, const std::string& csv,
   }
 }
 
+/// The command that re-runs one episode, quoted for the shell (names may hold anything).
+std::string rerun_command(const std::string& scenario_path, const std::string& id) {
+  return "plantsim batch " + util::shell_word(scenario_path) + " --episode " +
+         util::shell_word(id) + " --out DIR";
+}
+
 /// Every failed episode in one table (reason, when, why, the command that re-runs it), and how
 /// many of them the gallery below draws.
 std::string failure_table_html(const std::vector<std::string>& lines, std::size_t drawn,
@@ -122,8 +129,8 @@ std::string failure_table_html(const std::vector<std::string>& lines, std::size_
             render::html_escape(text("failure")) + "</td><td>" +
             (at != j.end() && at->is_number() ? fixed(at->get<double>(), 1) : "-") +
             "</td><td class=\"l\">" + render::html_escape(text("failure_detail")) +
-            "</td><td class=\"l\"><code>plantsim batch " + render::html_escape(scenario_path) +
-            " --episode '" + render::html_escape(id) + "' --out DIR</code></td></tr>\n";
+            "</td><td class=\"l\"><code>" + render::html_escape(rerun_command(scenario_path, id)) +
+            "</code></td></tr>\n";
   }
   if (failed == 0) return "<h2>Failures</h2>\n<p>None: every episode succeeded.</p>\n";
   std::string h =
@@ -268,8 +275,7 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
             fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
     chart(render::draw_run_figure(f.plant, f.result, options),
           "failures/" + worlds::file_name_component(f.id) + ".png",
-          "FAILED " + f.id + ": " + why + ". Re-run it alone: plantsim batch " + scenario_path +
-              " --episode '" + f.id + "' --out DIR");
+          "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id));
   }
 }
 

@@ -231,8 +231,10 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const util::FolderLock lock(o.out_dir);  // one batch per folder, or both run every episode
   check_batch_output_folder(o.out_dir, o.own_files);  // again, now that no other plantsim writes
   const std::string jsonl = o.out_dir + "/episodes.jsonl";
-  std::error_code ec;
-  if (o.fresh) std::filesystem::remove(jsonl, ec);
+  remove_batch_temporaries(o.out_dir);
+  // The report is written anew from every record at the end: no summary, chart or failure
+  // figure of an earlier run stays beside it (with --fresh, nor do the records).
+  remove_batch_outputs(o.out_dir, !o.fresh);
   const std::set<std::string> done =
       resume(jsonl, o, all, scenario.fingerprint, outcome.malformed_lines_cut);
   std::vector<Episode> todo;

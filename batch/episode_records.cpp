@@ -109,7 +109,23 @@ std::vector<std::string> read_records(const std::string& path) {
   return records;
 }
 
-bool is_batch_output_name(const std::string& name) {
+namespace {
+
+/// "X.tmp.PID.N": what util::write_file_atomically leaves of X when killed mid-write.
+std::string temporary_target(const std::string& name) {
+  const std::size_t at = name.rfind(".tmp.");
+  if (at == std::string::npos || at == 0) return "";
+  const std::string tail = name.substr(at + 5);
+  const std::size_t dot = tail.find('.');
+  const auto digits = [](const std::string& t) {
+    return !t.empty() && t.size() <= 20 && t.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (dot == std::string::npos || !digits(tail.substr(0, dot)) || !digits(tail.substr(dot + 1)))
+    return "";
+  return name.substr(0, at);
+}
+
+bool is_written_output_name(const std::string& name) {
   static const char* const exact[] = {"episodes.jsonl", "summary.csv", "summary.json",
                                       "sweep.csv",      "report.html", ".plantsim.lock",
                                       "failures"};
@@ -119,7 +135,43 @@ bool is_batch_output_name(const std::string& name) {
     return name.rfind(prefix, 0) == 0 && name.size() > prefix.size() + 4 &&
            name.compare(name.size() - 4, 4, ".png") == 0;
   };
-  return png_with_prefix("chart_") || png_with_prefix("paths_");
+  return png_with_prefix("chart_") || png_with_prefix("paths_") || png_with_prefix("plans_");
+}
+
+}  // namespace
+
+bool is_batch_output_name(const std::string& name) {
+  if (is_written_output_name(name)) return true;
+  const std::string target = temporary_target(name);
+  return !target.empty() && target != "failures" && target != ".plantsim.lock" &&
+         is_written_output_name(target);
+}
+
+void remove_batch_temporaries(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (const fs::path& folder : {fs::path(dir), fs::path(dir) / "failures"}) {
+    if (!fs::is_directory(fs::symlink_status(folder, ec))) continue;
+    std::vector<fs::path> stale;
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+      if (!temporary_target(e.path().filename().string()).empty() && e.is_regular_file(ec) &&
+          !e.is_symlink(ec))
+        stale.push_back(e.path());
+    for (const fs::path& p : stale) fs::remove(p, ec);
+  }
+}
+
+void remove_batch_outputs(const std::string& dir, bool keep_records) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::vector<fs::path> old;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name != ".plantsim.lock" && !(keep_records && name == "episodes.jsonl") &&
+        is_batch_output_name(name) && !e.is_symlink(ec))
+      old.push_back(e.path());
+  }
+  for (const fs::path& p : old) fs::remove_all(p, ec);
 }
 
 void check_batch_output_folder(const std::string& dir, const std::vector<std::string>& own) {

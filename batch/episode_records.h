@@ -27,8 +27,19 @@ JsonlScan scan_jsonl(const std::string& path, const std::function<void(std::stri
 /// Every usable record of the file, in order.
 std::vector<std::string> read_records(const std::string& path);
 
-/// The entries a batch or a merge writes into its output folder.
+/// The entries a batch or a merge writes into its output folder, and what a kill mid-write
+/// leaves of them ("summary.csv.tmp.PID.N").
 bool is_batch_output_name(const std::string& name);
+
+/// Removes the temporaries a killed run left in the folder and its failures/ (call it holding
+/// the folder's lock: no other plantsim is writing them).
+void remove_batch_temporaries(const std::string& dir);
+
+/// Removes every batch output of the folder but its lock (--fresh: nothing of an earlier run
+/// stays beside the new one). Only names is_batch_output_name knows; a user's file is never
+/// there, for check_batch_output_folder refused the folder before. A merge keeps the records
+/// (it replaces them atomically afterwards; they may be one of its inputs).
+void remove_batch_outputs(const std::string& dir, bool keep_records = false);
 
 /// Refuses (std::invalid_argument, before any work) an output folder that holds a symbolic
 /// link, anything a batch does not write, or batch outputs without their episodes.jsonl (a

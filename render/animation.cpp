@@ -2,14 +2,15 @@
 #include "render/animation.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 #include "render/figure.h"
 #include "render/layers.h"
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/png_pipeline.h"
+#include "util/process.h"
 
 namespace plantsim::render {
 
@@ -72,13 +73,26 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
     writer.push(fig.finish(), frames + name);
   }
   writer.close();
-  if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0) return "";
-  const std::string cmd =
-      "ffmpeg -y -loglevel error -framerate " + std::to_string(o.frames_per_second) + " -i '" +
-      frames + "/frame_%04d.png' -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" + out_dir +
-      "/animation.mp4.tmp.mp4' && mv '" + out_dir + "/animation.mp4.tmp.mp4' '" + out_dir +
-      "/animation.mp4'";
-  return std::system(cmd.c_str()) == 0 ? "animation.mp4" : "";
+  // ffmpeg with an argument vector: the folder (a world's name by default) reaches it as one
+  // argument, never through a shell.
+  if (util::find_on_path("ffmpeg").empty()) return "";
+  // Absolute paths: a folder named "-x" is not read as an option; a '%' in it is doubled, for
+  // ffmpeg's frame pattern reads %d.
+  const std::string dir = std::filesystem::absolute(out_dir).string();
+  std::string pattern;
+  for (char c : dir + "/frames/") pattern += c == '%' ? std::string("%%") : std::string(1, c);
+  pattern += "frame_%04d.png";
+  const std::string partial = dir + "/animation.mp4.tmp.mp4";
+  const std::vector<std::string> argv = {"ffmpeg", "-y", "-loglevel", "error", "-framerate",
+                                         std::to_string(o.frames_per_second), "-i", pattern, "-pix_fmt", "yuv420p", "-vf",
+                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", partial};
+  std::error_code ec;
+  if (util::run_program(argv) != 0) {
+    std::filesystem::remove(partial, ec);
+    return "";
+  }
+  std::filesystem::rename(partial, dir + "/animation.mp4", ec);
+  return ec ? "" : "animation.mp4";
 }
 
 }  // namespace plantsim::render

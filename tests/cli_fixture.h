@@ -12,9 +12,12 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "test_paths.h"
+#include "util/process.h"
 
 namespace plantsim {
 
@@ -47,14 +50,55 @@ class Cli : public ::testing::Test {
     std::ifstream in(p);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   }
+  // The words of `args` as a POSIX shell splits them ('...', "..." and \ quote; nothing is
+  // expanded): the tests write command lines as a person would type them, and run them with an
+  // argument vector, no shell.
+  static std::vector<std::string> words(const std::string& args) {
+    std::vector<std::string> out;
+    std::string word;
+    bool in_word = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      const char c = args[i];
+      if (c == '\'') {
+        const std::size_t end = args.find('\'', i + 1);
+        if (end == std::string::npos) throw std::invalid_argument("unclosed ' in " + args);
+        word += args.substr(i + 1, end - i - 1);
+        i = end;
+        in_word = true;
+      } else if (c == '"') {
+        for (++i; i < args.size() && args[i] != '"'; ++i) {
+          if (args[i] == '\\' && i + 1 < args.size() &&
+              std::string("\"\\$`").find(args[i + 1]) != std::string::npos)
+            ++i;
+          word += args[i];
+        }
+        if (i >= args.size()) throw std::invalid_argument("unclosed \" in " + args);
+        in_word = true;
+      } else if (c == '\\' && i + 1 < args.size()) {
+        word += args[++i];
+        in_word = true;
+      } else if (c == ' ' || c == '\t' || c == '\n') {
+        if (in_word) out.push_back(word);
+        word.clear();
+        in_word = false;
+      } else {
+        word += c;
+        in_word = true;
+      }
+    }
+    if (in_word) out.push_back(word);
+    return out;
+  }
   // Runs plantsim in dir_ with a time limit; 124 is timeout's code for a hang.
   Outcome run(const std::string& args, int seconds = 30) {
-    const std::string cmd = "cd '" + dir_.string() + "' && timeout " + std::to_string(seconds) +
-                            " " PLANTSIM_BINARY " " + args + " > '" + (root_ / "out.txt").string() +
-                            "' 2> '" + (root_ / "err.txt").string() + "'";
-    const int status = std::system(cmd.c_str());
+    std::vector<std::string> argv = {"timeout", std::to_string(seconds), PLANTSIM_BINARY};
+    for (std::string& w : words(args)) argv.push_back(std::move(w));
+    util::SpawnOptions spawn;
+    spawn.working_dir = dir_.string();
+    spawn.stdout_path = (root_ / "out.txt").string();
+    spawn.stderr_path = (root_ / "err.txt").string();
     Outcome o;
-    o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    o.exit_code = util::run_program(argv, spawn);
     o.out = read(root_ / "out.txt");
     o.err = read(root_ / "err.txt");
     return o;

@@ -2,6 +2,7 @@
 #include "util/atomic_file.h"
 
 #include <fcntl.h>
+#include <fnmatch.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -118,6 +119,38 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   sync_path(parent_or_dot(path));
 }
 
+namespace {
+
+/// "" when the entry is one an earlier run wrote: a file named in `replaceable`, or a folder
+/// named by a "folder/pattern" entry holding only files that match the pattern (fnmatch). Else
+/// the entry in the way, as the message names it: a user's frames/ folder is never deleted.
+std::string not_replaceable(const fs::directory_entry& entry,
+                            const std::vector<std::string>& replaceable) {
+  std::error_code ec;
+  const std::string name = entry.path().filename().string();
+  if (entry.is_symlink(ec)) return name;
+  for (const std::string& r : replaceable) {
+    const std::size_t slash = r.find('/');
+    if (slash == std::string::npos) {
+      if (r == name && entry.is_regular_file(ec)) return "";
+      continue;
+    }
+    if (r.compare(0, slash, name) != 0 || slash != name.size() || !entry.is_directory(ec))
+      continue;
+    const std::string pattern = r.substr(slash + 1);
+    for (const auto& inner : fs::directory_iterator(entry.path(), ec)) {
+      const std::string inner_name = inner.path().filename().string();
+      if (inner.is_symlink(ec) || !inner.is_regular_file(ec) ||
+          ::fnmatch(pattern.c_str(), inner_name.c_str(), FNM_PATHNAME | FNM_PERIOD) != 0)
+        return name + "/" + inner_name;
+    }
+    return "";
+  }
+  return name;
+}
+
+}  // namespace
+
 StagedFolder::StagedFolder(std::string destination, const std::vector<std::string>& replaceable)
     : destination_(std::move(destination)) {
   std::error_code ec;
@@ -133,10 +166,11 @@ StagedFolder::StagedFolder(std::string destination, const std::vector<std::strin
       throw std::invalid_argument("output folder '" + destination_ + "' is a file");
     for (const auto& entry : fs::directory_iterator(destination_, ec)) {
       const std::string name = entry.path().filename().string();
-      if (std::find(replaceable.begin(), replaceable.end(), name) == replaceable.end())
-        throw std::invalid_argument(
-            "output folder '" + destination_ + "' holds '" + name +
-            "', not a plantsim output; it is replaced as a whole, so choose a new or empty folder");
+      const std::string problem = not_replaceable(entry, replaceable);
+      if (!problem.empty())
+        throw std::invalid_argument("output folder '" + destination_ + "' holds '" + problem +
+                                    "', not a plantsim output; it is replaced as a whole, so "
+                                    "choose a new or empty folder");
     }
   }
   staging_ = destination_ + ".partial-" + std::to_string(::getpid());

@@ -33,7 +33,9 @@ class StagedFolder {
  public:
   /// Creates "<destination>.partial-<pid>" next to the destination (parents created). An
   /// existing destination is replaced on commit only if it is empty or holds nothing but
-  /// entries named in `replaceable` (an earlier run's outputs); a folder holding anything else
+  /// entries named in `replaceable` (an earlier run's outputs: regular files by name, and a
+  /// sub-folder as "folder/pattern", accepted only when every file in it matches the pattern
+  /// and is a regular file); a folder holding anything else
   /// (a user's own files, `--out .`) is refused here, before any work, with
   /// std::invalid_argument naming what is in the way.
   StagedFolder(std::string destination, const std::vector<std::string>& replaceable);
