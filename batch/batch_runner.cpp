@@ -153,6 +153,9 @@ void run_episodes(const RunContext& run, const std::vector<Episode>& todo, std::
     try {
       for (std::size_t k = next++; k < todo.size(); k = next++) {
         const Episode& e = todo[k];
+        if (run.options.steering.interrupted && run.options.steering.interrupted())
+          throw BatchInterrupted("the batch was interrupted; its finished episodes are in " +
+                                 jsonl);
         const EpisodeRunner::Run r = runner.run(e);
         const std::string line =
             record_line(e, run.spec, run.scenario, r.plant, r.result, r.optimal_m) + "\n";

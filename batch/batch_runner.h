@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,13 @@ struct RunOptions {
   episode::EpisodeSteering steering;
   /// Further files of this run in the output folder (a --junit report written there).
   std::vector<std::string> own_files;
+};
+
+/// A batch stopped by its steering's `interrupted` poll (episode::EpisodeSteering): the episodes
+/// finished before it are on disk, the next run resumes from them.
+class BatchInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct BatchOutcome {

@@ -113,18 +113,34 @@ class Episode {
 
   /// Physics, tyres, encoders and contacts every step; sensing, estimation, control and the
   /// trajectory log every control period, seeing the contacts latched since the last one.
-  void run() {
+  /// Returns false when `interrupted` stopped it; an exception from the loop (an outside
+  /// controller's) leaves after the recorder has closed the episode so far.
+  bool run(const std::function<bool()>& interrupted) {
     const double dt = config_.step.dt_s;
     const auto max_steps = static_cast<std::int64_t>(std::ceil(config_.timeout_s / dt));
     const int period = std::max(1, config_.control_period_steps);
-    for (std::int64_t k = 0; k <= max_steps; ++k) {
-      recorder_.before_step(physics_, contact_);
-      if (k % period == 0 && control(k * dt, period * dt)) break;
-      apply_faults(k * dt);
-      step(dt);
+    bool finished = true;
+    std::exception_ptr thrown;
+    try {
+      for (std::int64_t k = 0; k <= max_steps; ++k) {
+        time_s_ = k * dt;
+        if (k % period == 0 && interrupted && interrupted()) {
+          finished = false;
+          break;
+        }
+        recorder_.before_step(physics_, contact_);
+        if (k % period == 0 && control(k * dt, period * dt)) break;
+        apply_faults(k * dt);
+        step(dt);
+      }
+    } catch (...) {
+      thrown = std::current_exception();
     }
     recorder_.close(physics_, *travel_, governor_, perceiver_, pursuit_);
+    if (thrown) std::rethrow_exception(thrown);
+    return finished;
   }
+  double time_s() const { return time_s_; }
 
  private:
   /// One control period; true when the episode has ended.
@@ -170,6 +186,7 @@ class Episode {
   EpisodeRecorder& recorder_;
   ContactState contact_;
   bool kidnapped_ = false;
+  double time_s_ = 0;
 };
 
 }  // namespace
@@ -188,7 +205,16 @@ EpisodeResult run_episode(const worlds::World& plant, planner::Planner& planner,
   if (!recorder.first_plan(plan, needs_plan, map.get().start)) return result;
   Episode episode(plant, map.get(), config,
                   make_travel(map.get(), planner, config, plan, steering, result), recorder);
-  episode.run();
+  bool finished = false;
+  try {
+    finished = episode.run(steering.interrupted);
+  } catch (...) {
+    throw EpisodeStopped(std::move(result), episode.time_s(), std::current_exception());
+  }
+  if (!finished) {
+    result.status = "interrupted";
+    throw EpisodeStopped(std::move(result), episode.time_s(), nullptr);
+  }
   return result;
 }
 

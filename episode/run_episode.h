@@ -6,7 +6,9 @@
 #pragma once
 
 #include <functional>
+#include <exception>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,26 @@ struct EpisodeSteering {
                                                const worlds::World& map,
                                                const std::vector<geom::Vec2>& first_plan)>
       wrap;
+  /// Polled every control period (and by a batch between episodes): true stops the work (the
+  /// Python module's Ctrl-C). Empty: never. Independent of `wrap`.
+  std::function<bool()> interrupted;
   explicit operator bool() const { return static_cast<bool>(wrap); }
+};
+
+/// An episode that did not end by itself: stopped by `interrupted` (cause empty), or ended by an
+/// exception from inside the loop (an outside controller's, in `cause`). Carries the episode so
+/// far, recorded and closed as far as it went, and the simulated time it stopped at.
+class EpisodeStopped : public std::runtime_error {
+ public:
+  EpisodeStopped(sim::EpisodeResult partial, double time_s, std::exception_ptr cause)
+      : std::runtime_error(cause ? "the episode ended by an exception"
+                                 : "the episode was interrupted"),
+        partial(std::move(partial)),
+        time_s(time_s),
+        cause(std::move(cause)) {}
+  sim::EpisodeResult partial;
+  double time_s;
+  std::exception_ptr cause;
 };
 
 /// `planner` plans the initial path; replans build fresh planners of the same name with the
@@ -39,5 +60,7 @@ struct EpisodeSteering {
 sim::EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
                                const sim::EpisodeConfig& config,
                                const EpisodeSteering& steering = {});
+// Throws EpisodeStopped when steering.interrupted asks it to stop or an exception leaves the
+// loop (a controller's); bad input is refused before the loop as before.
 
 }  // namespace plantsim::episode

@@ -2,10 +2,15 @@
 // with a Python controller in every episode (then on one thread: Python runs one call at a time).
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <nlohmann/json.hpp>
+
+#include "batch/batch_gate.h"
 #include "batch/batch_runner.h"
 #include "batch/summary_tables.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
+#include "python/py_interrupt.h"
 #include "worlds/world.h"
 
 namespace plantsim::python {
@@ -25,18 +30,34 @@ py::dict batch(const std::string& scenario, const std::string& out, const py::ob
           ? "python:" + callable_name(controller.is_none() ? docking : controller)
           : controller_name;
   o.steering = steering_argument(controller, docking, name);
+  // One thread with a Python controller: its state sees one episode at a time. The batch runs
+  // off the GIL either way (the controller takes it for each call); Ctrl-C stops it between
+  // control periods, the finished episodes kept in episodes.jsonl for a resume.
+  if (o.steering) o.threads = 1;
+  std::atomic<bool> stop{false};
+  o.steering.interrupted = [&stop] { return stop.load(std::memory_order_relaxed); };
   batch::BatchOutcome r;
-  if (o.steering) {
-    o.threads = 1;
-    r = batch::run_batch(scenario, o);
-  } else {
-    py::gil_scoped_release free_python;
-    r = batch::run_batch(scenario, o);
+  Interruptible done = run_interruptibly([&] { r = batch::run_batch(scenario, o); }, stop);
+  if (done.signal) {
+    done.signal->restore();
+    throw py::error_already_set();
+  }
+  if (done.failure) {
+    try {
+      std::rethrow_exception(done.failure);
+    } catch (const episode::EpisodeStopped& stopped) {
+      py::error_already_set error = python_error_of(stopped.cause);
+      raise_with_partial(error, py::none(), stopped.time_s);
+    }
   }
   const std::vector<std::string> records = batch::read_episode_records(out);
+  // Over the whole folder, as the rows count: after a resume this call ran only some of them.
+  std::int64_t succeeded = 0;
+  for (const std::string& line : records)
+    succeeded += batch::record_succeeded(nlohmann::json::parse(line));
   py::dict d;
   d["episodes"] = r.episodes, d["ran"] = r.ran, d["skipped"] = r.skipped,
-  d["succeeded"] = r.succeeded;
+  d["succeeded"] = succeeded, d["succeeded_now"] = r.succeeded;
   d["collisions"] = r.collisions, d["fingerprint"] = r.scenario_fingerprint;
   d["summary_csv"] = batch::summary_csv(records);
   return d;

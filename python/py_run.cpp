@@ -2,6 +2,7 @@
 // controller that sees only the robot's perception (plantsim.Observation).
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 
@@ -12,6 +13,7 @@
 #include "planner/registry.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
+#include "python/py_interrupt.h"
 #include "python/py_world.h"
 #include "robot/travel_steered.h"
 #include "sim/episode.h"
@@ -128,26 +130,31 @@ void bind_observation(py::module_& m) {
           "(v, omega) plantsim's own controller would command now");
 }
 
-/// A Python callable as a steering: (v, omega) or None (plantsim's command this period).
+/// A Python callable as a steering: (v, omega) or None (plantsim's command this period). The
+/// episode may run on any thread: the GIL is taken around the call and every Python object.
 robot::Steering steering_of(py::object callable, const std::string& role) {
   if (callable.is_none()) return {};
   if (!PyCallable_Check(callable.ptr()))
     throw std::invalid_argument(role + " must be callable: f(observation) -> (v, omega) or None");
-  return [callable, role](const robot::SteeringInput& in) -> std::optional<controller::Twist> {
+  return [f = share_across_threads(std::move(callable)),
+          role](const robot::SteeringInput& in) -> std::optional<controller::Twist> {
+    py::gil_scoped_acquire gil;
     auto o = std::make_shared<Observation>(
         Observation{in.perception, in.plan, in.phase, in.builtin.twist, in.staging});
-    const py::object out = callable(o);
+    const py::object out = (*f)(o);
     if (out.is_none()) return std::nullopt;
     double v = NAN, w = NAN;
+    const auto at = " at t = " + std::to_string(in.perception.t_s) + " s";
     try {
       const auto pair = out.cast<std::pair<double, double>>();
       v = pair.first, w = pair.second;
     } catch (const py::cast_error&) {
-      throw std::invalid_argument(role + " returned " + py::repr(out).cast<std::string>() +
+      throw std::invalid_argument(role + " returned " + py::repr(out).cast<std::string>() + at +
                                   "; expected (v m/s, omega rad/s) or None");
     }
     if (!std::isfinite(v) || !std::isfinite(w))
-      throw std::invalid_argument(role + " returned a non-finite command");
+      throw std::invalid_argument(role + " returned a non-finite command (" + std::to_string(v) +
+                                  ", " + std::to_string(w) + ")" + at);
     return controller::Twist{v, w};
   };
 }
@@ -252,15 +259,40 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
         py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>(),
         app::run_folder_names());
   auto p = planner::make_planner(planner_name, planner::planner_input(*w.world, true));
-  sim::EpisodeResult r;
-  if (steering) {
-    r = episode::run_episode(*w.world, *p, config, steering);  // the controller needs the GIL held
-  } else {
-    py::gil_scoped_release free_python;
-    r = episode::run_episode(*w.world, *p, config);
-  }
   const std::string line = "plantsim.run('" + w.world->source + "', seed=" + std::to_string(seed) +
                            (steering ? ", controller=" + steering.name : "") + ")";
+  // The episode runs off the GIL (other Python threads run meanwhile); the controller takes it
+  // for each call. Ctrl-C stops it within a control period.
+  std::atomic<bool> stop{false};
+  episode::EpisodeSteering hooks = steering;
+  hooks.interrupted = [&stop] { return stop.load(std::memory_order_relaxed); };
+  sim::EpisodeResult r;
+  Interruptible done =
+      run_interruptibly([&] { r = episode::run_episode(*w.world, *p, config, hooks); }, stop);
+  if (done.failure) {
+    try {
+      std::rethrow_exception(done.failure);
+    } catch (episode::EpisodeStopped& stopped) {
+      const sim::EpisodeResult& part = stopped.partial;
+      const py::object partial = py::cast(
+          PyRun{from_json_text(app::summary_json(part, w.world->name, line)), trajectory_array(part),
+                trajectory_columns(), part.status, part.docked});
+      // A controller's exception keeps what was driven, as a folder of the run so far; Ctrl-C
+      // answers at once (figures take a while) and leaves the folder as it was.
+      if (staged && !done.signal) {
+        app::write_run_folder(*w.world, part, config, staged->path(), line,
+                              "stopped at " + std::to_string(stopped.time_s) + " s", false);
+        staged->commit();
+      }
+      py::error_already_set error =
+          done.signal ? *done.signal : python_error_of(stopped.cause);
+      raise_with_partial(error, partial, stopped.time_s);
+    }
+  }
+  if (done.signal) {  // the episode ended by itself as the key was pressed: still interrupted
+    done.signal->restore();
+    throw py::error_already_set();
+  }
   PyRun result{from_json_text(app::summary_json(r, w.world->name, line)), trajectory_array(r),
                trajectory_columns(), r.status, r.docked};
   if (staged) {
@@ -303,9 +335,12 @@ manoeuvre within the goal tolerance of the staging pose, and judges docked or fa
 docking: the same for the docking phases (align, approach, back off); None: plantsim's manoeuvre.
 controller_name: recorded in the summary as "steered_by" (default "python:" + the callable's name).
 out: also write the folder `plantsim run --out` writes (summary.json, trajectory.csv, figures).
+The episode runs with the GIL released (other Python threads run meanwhile; the controller takes
+the GIL for each call). Ctrl-C raises KeyboardInterrupt within a fraction of a second; an
+exception from the controller (or a bad command, named with its time and value) ends the
+episode; either exception carries .partial (a Run of the episode so far) and .time (seconds).
 The robot holds still for its first second (the gyro is calibrated at rest) before the controller
-is called. Returns a Run. Bad input raises plantsim.InputError with the command line's message;
-an exception raised by the controller ends the episode and propagates.)");
+is called. Returns a Run. Bad input raises plantsim.InputError with the command line's message.)");
 }
 
 }  // namespace plantsim::python

@@ -69,7 +69,11 @@ def batch(scenario, out=None, *, controller=None, docking=None, controller_name=
     by it, on one thread, and its name joins each controller's name in the episode ids.
     threads: 0 for one per core. figures: draw the report's charts.
     Returns a dict: "rows" (one dict per configuration, the columns of summary.csv), "episodes",
-    "ran", "skipped", "succeeded", "collisions", "fingerprint", "out".
+    "ran", "skipped", "succeeded" (over every episode in the folder, as the rows count),
+    "succeeded_now" (of those this call ran), "collisions" (this call's), "fingerprint", "out".
+    Per-episode records are the lines of OUT/episodes.jsonl (one JSON object each).
+    The batch runs with the GIL released; Ctrl-C raises KeyboardInterrupt within a fraction of a
+    second, the finished episodes kept in episodes.jsonl (the same call again resumes them).
     """
     with tempfile.TemporaryDirectory(prefix="plantsim_batch_") as scratch:
         if isinstance(scenario, dict):

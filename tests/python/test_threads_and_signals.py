@@ -1,0 +1,168 @@
+"""The module under threads and Ctrl-C (issue 50): C++ runs with the GIL released and takes it
+for each call into Python from whatever thread; Ctrl-C raises KeyboardInterrupt promptly from
+run() and batch(), with plantsim's controller or the user's, keeping what was finished; a
+controller's exception carries the episode so far and its time."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+import time
+
+import pytest
+
+import plantsim
+
+MODULE_PATH = os.path.dirname(os.path.dirname(os.path.abspath(plantsim.__file__)))
+
+
+def slow_world(source, tmp_path):
+    """The corridor with a robot at a crawl: an episode of hours simulated, many seconds of work."""
+    world = json.loads((source / "worlds/examples/corridor_crossing.json").read_text())
+    world["robot"]["max_speed_mps"] = 0.01
+    world["robot"]["max_accel_mps2"] = 0.01
+    world.pop("moving_obstacles", None)
+    path = tmp_path / "crawl.json"
+    path.write_text(json.dumps(world))
+    return path
+
+
+def python(script, timeout=60):
+    env = dict(os.environ, PYTHONPATH=MODULE_PATH)
+    return subprocess.run([sys.executable, "-c", textwrap.dedent(script)], env=env, capture_output=True,
+                          text=True, timeout=timeout)
+
+
+def test_two_threads_whose_first_call_is_run_finish(source):
+    # numpy not imported first: binding its C API lazily once deadlocked two such threads.
+    out = python(f"""
+        import threading, plantsim
+        results = []
+        def go():
+            results.append(plantsim.run({str(source / 'worlds/examples/corridor_crossing.json')!r}).status)
+        threads = [threading.Thread(target=go) for _ in range(2)]
+        [t.start() for t in threads]
+        [t.join(30) for t in threads]
+        print(sorted(results))
+    """, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "['docked', 'docked']"
+
+
+def test_other_python_threads_run_while_an_episode_runs(source, tmp_path):
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    started = time.monotonic()
+    for controller in (None, lambda o: None):  # plantsim's controller, then the user's
+        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=controller)
+    elapsed = time.monotonic() - started
+    stop.set()
+    counter.join()
+    # Starved, the counter would tick only at the few switches between calls.
+    assert len(ticks) > 0.3 * elapsed / 0.001 * 0.5, (len(ticks), elapsed)
+
+
+def test_a_steered_batch_calls_python_on_a_worker_thread_holding_the_gil(source, tmp_path):
+    seen = []
+
+    def controller(obs):
+        seen.append(threading.get_ident())
+        return None
+
+    scenario = {"name": "threads", "worlds": [str(source / "worlds/examples/corridor_crossing.json")],
+                "seeds": 2}
+    r = plantsim.batch(scenario, tmp_path / "b", controller=controller, figures=False)
+    assert r["succeeded"] == 2
+    assert seen and threading.get_ident() not in set(seen)
+
+
+@pytest.mark.parametrize("steered", [False, True])
+def test_ctrl_c_stops_run_promptly_with_the_partial_episode(source, tmp_path, steered):
+    world = slow_world(source, tmp_path)
+    out = python(f"""
+        import os, signal, threading, time, plantsim
+        threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        started = time.monotonic()
+        try:
+            plantsim.run({str(world)!r}, config={{"timeout_s": 80000}},
+                         controller={'lambda o: None' if steered else 'None'}, out={str(tmp_path / 'r')!r})
+            print("finished")
+        except KeyboardInterrupt as e:
+            late = time.monotonic() - started - 1.0
+            print("interrupted", round(late, 3), e.partial.status, len(e.partial.trajectory) > 10, e.time > 1)
+    """)
+    assert out.returncode == 0, out.stderr
+    words = out.stdout.split()
+    assert words[0] == "interrupted", out.stdout
+    assert float(words[1]) < 0.5, out.stdout
+    assert words[2:] == ["interrupted", "True", "True"], out.stdout
+    assert not (tmp_path / "r").exists()  # nothing half-written
+
+
+@pytest.mark.parametrize("steered", [False, True])
+def test_ctrl_c_stops_a_batch_keeping_its_finished_episodes(source, tmp_path, steered):
+    folder = tmp_path / "b"
+    out = python(f"""
+        import os, signal, threading, time, plantsim
+        scenario = {{"name": "long", "worlds": [{str(source / 'worlds/examples/corridor_crossing.json')!r}],
+                     "seeds": 400}}
+        threading.Timer(1.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        started = time.monotonic()
+        try:
+            plantsim.batch(scenario, {str(folder)!r}, figures=False,
+                           controller={'lambda o: None' if steered else 'None'})
+            print("finished")
+        except KeyboardInterrupt:
+            print("interrupted", round(time.monotonic() - started - 1.5, 3))
+    """, timeout=120)
+    assert out.returncode == 0, out.stderr
+    words = out.stdout.split()
+    assert words[0] == "interrupted", out.stdout
+    assert float(words[1]) < 0.5, out.stdout
+    done = (folder / "episodes.jsonl").read_text().splitlines()
+    assert 0 < len(done) < 400
+    assert all(line.endswith("}") for line in done)
+
+
+def test_a_controllers_exception_carries_the_episode_so_far(source, tmp_path):
+    class Stop(Exception):
+        pass
+
+    def boom(obs):
+        if obs.time > 3:
+            raise Stop("at 3 s")
+        return None
+
+    with pytest.raises(Stop) as e:
+        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=boom, out=tmp_path / "r")
+    assert 3 < e.value.time < 3.2
+    assert e.value.partial.trajectory[-1, 0] <= e.value.time
+    assert e.value.partial.trajectory.shape[0] > 50
+    assert (tmp_path / "r" / "summary.json").exists()
+
+
+def test_a_bad_command_names_its_time_and_value(source):
+    def nan_after_two(obs):
+        return (float("nan"), 0.0) if obs.time > 2 else None
+
+    with pytest.raises(plantsim.InputError, match=r"non-finite command \(nan, 0\.0+\) at t = 2\.0") as e:
+        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=nan_after_two)
+    assert e.value.partial.trajectory.shape[0] > 0
+
+
+def test_a_resumed_batch_counts_success_over_the_whole_folder(source, tmp_path):
+    scenario = {"name": "again", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "seeds": 3}
+    first = plantsim.batch(scenario, tmp_path / "b", figures=False)
+    again = plantsim.batch(scenario, tmp_path / "b", figures=False)
+    assert again["ran"] == 0 and again["skipped"] == 3
+    assert again["succeeded"] == first["succeeded"] == 3 and again["succeeded_now"] == 0
