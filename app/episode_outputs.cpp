@@ -134,7 +134,7 @@ void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
 }
 
 std::vector<std::string> run_folder_names() {
-  return {"summary.json", "trajectory.csv", "run.png",      "timeplots.png",
+  return {"summary.json", "trajectory.csv",          "run.png",      "timeplots.png",
           "report.html",  "frames/frame_[0-9]*.png", "animation.mp4"};
 }
 

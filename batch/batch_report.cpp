@@ -273,9 +273,10 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
     if (f.result.failure)
       why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
             fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
-    chart(render::draw_run_figure(f.plant, f.result, options),
-          "failures/" + worlds::file_name_component(f.id) + ".png",
-          "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id));
+    chart(
+        render::draw_run_figure(f.plant, f.result, options),
+        "failures/" + worlds::file_name_component(f.id) + ".png",
+        "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id));
   }
 }
 

@@ -43,6 +43,9 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["localization_error_max_m"] = r.localization_error_max_m;
   j["localization_status"] = r.localization_status;
   j["relocalizations"] = r.relocalizations;
+  j["worst_moving_error_m"] = r.integrity.worst_moving_error_m;
+  j["driven_off_estimate_s"] = r.integrity.driven_off_s;
+  j["ok_while_off_s"] = r.integrity.ok_while_off_s;
   j["unmapped_seen"] = r.unmapped_seen;
 }
 

@@ -79,6 +79,8 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
                               const Decision& d) {
   const Pose2 truth = physics.robot_pose();
   watch_.observe(t_s, truth, p.pose, p.health, d.blocked);
+  integrity_.observe(t_s, truth, geom::dot(physics.robot_velocity(), truth.heading()), p.pose,
+                     p.health);
   if (d.events.stopped) event(Kind::kStop, t_s, truth.position());
   if (d.events.replanned) event(Kind::kReplan, t_s, truth.position());
   if (d.events.recovered) event(Kind::kRecovery, t_s, truth.position());
@@ -88,11 +90,15 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
   sample(t_s, physics, p, &d);
   if (d.finished.empty()) return false;
   // Success is the charger's signal with no collision on the way (and, undocking, the staging
-  // pose reached again).
+  // pose reached again), on estimates the robot could trust: one that drove on an estimate
+  // 0.25 m off without knowing docked by luck (the charger's marker), not by design.
   const bool charged = d.finished == "docked" || d.finished == "undocked";
-  r_.docked = charged && r_.collisions == 0;
+  const bool breached = integrity_.record().breach.has_value();
+  r_.docked = charged && r_.collisions == 0 && !breached;
   r_.undocked = d.finished == "undocked";
-  r_.status = charged && !r_.docked ? "docked_with_collision" : d.finished;
+  r_.status = !charged || r_.docked ? d.finished
+              : r_.collisions > 0   ? "docked_with_collision"
+                                    : "docked_off_estimate";
   if (!charged) metrics_.measure_final_error(physics);
   give_up_ = d.give_up;
   return true;
@@ -130,6 +136,7 @@ void EpisodeRecorder::close(const PhysicsWorld& physics, const robot::Travel& tr
   for (const robot::ActorState& a : physics.actors()) r_.moving_final.push_back(a.box);
   if (r_.status == "timeout") metrics_.measure_final_error(physics);
   r_.localization_status = std::string(to_string(worst_health_));
+  r_.integrity = integrity_.record();
   const robot::TravelCounts counts = travel.counts();
   r_.retries = counts.retries;
   r_.stops = counts.stops;
@@ -144,8 +151,8 @@ void EpisodeRecorder::close(const PhysicsWorld& physics, const robot::Travel& tr
   r_.tracked_final = perceiver.tracker().boxes(r_.time_s);
   r_.layer_final = perceiver.current().layer;
   if (r_.succeeded()) return;
-  r_.failure =
-      watch_.judge(r_.time_s, physics.robot_pose(), give_up_, first_collision(physics), pursuit);
+  r_.failure = watch_.judge(r_.time_s, physics.robot_pose(), give_up_, first_collision(physics),
+                            pursuit ? std::nullopt : r_.integrity.breach, pursuit);
   event(Kind::kFailure, r_.failure->time_s, r_.failure->pose.position());
 }
 

@@ -13,6 +13,7 @@
 #include "sim/episode.h"
 #include "sim/episode_metrics.h"
 #include "sim/failure_watch.h"
+#include "sim/integrity_watch.h"
 
 namespace plantsim::episode {
 
@@ -64,6 +65,7 @@ class EpisodeRecorder {
   EpisodeResult& r_;
   EpisodeMetrics metrics_;
   FailureWatch watch_;
+  sim::IntegrityWatch integrity_;
   robot::LocalizationHealth worst_health_ = robot::LocalizationHealth::kOk;
   std::optional<robot::GiveUp> give_up_;
   double next_snapshot_s_ = 0;

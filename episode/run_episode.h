@@ -5,8 +5,8 @@
 // Deterministic: the same world, planner, config and seed give the same trajectory.
 #pragma once
 
-#include <functional>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>

@@ -16,8 +16,9 @@
 namespace plantsim::python {
 
 struct Interruptible {
-  std::exception_ptr failure;                   ///< what the work threw, if anything
-  std::optional<py::error_already_set> signal;  ///< a signal handler's exception (KeyboardInterrupt)
+  std::exception_ptr failure;  ///< what the work threw, if anything
+  std::optional<py::error_already_set>
+      signal;  ///< a signal handler's exception (KeyboardInterrupt)
 };
 
 /// Runs `work` off the GIL; sets `stop` when a signal handler raises. Call with the GIL held.

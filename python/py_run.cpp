@@ -274,9 +274,9 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
       std::rethrow_exception(done.failure);
     } catch (episode::EpisodeStopped& stopped) {
       const sim::EpisodeResult& part = stopped.partial;
-      const py::object partial = py::cast(
-          PyRun{from_json_text(app::summary_json(part, w.world->name, line)), trajectory_array(part),
-                trajectory_columns(), part.status, part.docked});
+      const py::object partial =
+          py::cast(PyRun{from_json_text(app::summary_json(part, w.world->name, line)),
+                         trajectory_array(part), trajectory_columns(), part.status, part.docked});
       // A controller's exception keeps what was driven, as a folder of the run so far; Ctrl-C
       // answers at once (figures take a while) and leaves the folder as it was.
       if (staged && !done.signal) {
@@ -284,8 +284,7 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
                               "stopped at " + std::to_string(stopped.time_s) + " s", false);
         staged->commit();
       }
-      py::error_already_set error =
-          done.signal ? *done.signal : python_error_of(stopped.cause);
+      py::error_already_set error = done.signal ? *done.signal : python_error_of(stopped.cause);
       raise_with_partial(error, partial, stopped.time_s);
     }
   }

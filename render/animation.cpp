@@ -83,9 +83,10 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
   for (char c : dir + "/frames/") pattern += c == '%' ? std::string("%%") : std::string(1, c);
   pattern += "frame_%04d.png";
   const std::string partial = dir + "/animation.mp4.tmp.mp4";
-  const std::vector<std::string> argv = {"ffmpeg", "-y", "-loglevel", "error", "-framerate",
-                                         std::to_string(o.frames_per_second), "-i", pattern, "-pix_fmt", "yuv420p", "-vf",
-                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", partial};
+  const std::vector<std::string> argv = {
+      "ffmpeg", "-y",    "-loglevel", "error",   "-framerate", std::to_string(o.frames_per_second),
+      "-i",     pattern, "-pix_fmt",  "yuv420p", "-vf",        "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+      partial};
   std::error_code ec;
   if (util::run_program(argv) != 0) {
     std::filesystem::remove(partial, ec);

@@ -48,7 +48,9 @@ struct EkfParams {
             ///< predicts (those read short of their face left out) is a failed match
   double ok_position_sigma_m =
       0.04;  ///< health ok only within this 1-sigma (10 cm is then 2.5 sigma)
-  double lost_position_sigma_m = 0.5;  ///< beyond this 1-sigma the localisation is lost
+  /// Beyond this 1-sigma the localisation is lost: its 2-sigma bound passes the 0.25 m the
+  /// referee's integrity rule allows (sim/integrity_watch.h), so it can no longer vouch for it.
+  double lost_position_sigma_m = 0.125;
   int nis_window = 15;  ///< informative scans whose normalised innovations are summed
   double nis_quantile_z =
       3.09;  ///< that sum beyond the chi-square quantile of this z (0.999): inconsistent

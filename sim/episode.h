@@ -18,6 +18,7 @@
 #include "robot/failure.h"
 #include "robot/perception.h"
 #include "robot/travel.h"
+#include "sim/integrity_watch.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"  // the parameter structs of every sensor
 #include "sim/wheel_drive.h"
@@ -93,10 +94,11 @@ struct TrajectorySample {
 
 struct EpisodeResult {
   std::optional<robot::Failure>
-      failure;          ///< why it did not succeed (set exactly when !succeeded())
-  std::string status;   ///< "docked", "docked_with_collision", "caught", "failed", "trapped",
-                        ///< "timeout", or a planner status
-  bool docked = false;  ///< charging and no collision in the whole episode (success)
+      failure;         ///< why it did not succeed (set exactly when !succeeded())
+  std::string status;  ///< "docked", "docked_with_collision", "docked_off_estimate" (charging
+                       ///< after driving on an estimate off without knowing), "caught", "failed",
+                       ///< "trapped", "timeout", or a planner status
+  bool docked = false;  ///< charging, no collision and localisation integrity (success)
   bool caught = false;  ///< a moving target was reached
   bool succeeded() const { return docked || caught; }
   double position_error_m = 0;  ///< true centre to docked pose, at contact or at the end
@@ -144,9 +146,10 @@ struct EpisodeResult {
   std::string perception_mode = "sensors";
   double localization_error_max_m = 0;  ///< true against estimated position, worst over the episode
   std::string localization_status =
-      "ok";                 ///< worst health the estimator reported: ok, degraded, lost
-  int relocalizations = 0;  ///< times the estimate restarted from a global scan match
-  int unmapped_seen = 0;    ///< unmapped obstacles perception marked at some time (of the plant's)
+      "ok";                   ///< worst health the estimator reported: ok, degraded, lost
+  IntegrityRecord integrity;  ///< driving on a bad estimate (sim/integrity_watch.h)
+  int relocalizations = 0;    ///< times the estimate restarted from a global scan match
+  int unmapped_seen = 0;  ///< unmapped obstacles perception marked at some time (of the plant's)
   robot::ScanView last_scan;  ///< the last scan as perception placed it
   /// What perception saw over time (every scan_log_period_s): the scan and the tracked boxes.
   struct PerceptionSnapshot {

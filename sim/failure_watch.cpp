@@ -37,8 +37,21 @@ bool FailureWatch::lost(const Localisation& l, std::string& detail) const {
 Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
                             const std::optional<GiveUp>& give_up,
                             const std::optional<std::pair<double, geom::Pose2>>& first_collision,
-                            bool pursuit) const {
+                            const std::optional<IntegrityBreach>& breach, bool pursuit) const {
   Failure f;
+  if (breach && (!first_collision || breach->time_s <= first_collision->first)) {
+    // It drove on an estimate it should not have trusted: whatever followed came of that.
+    f.reason = FailureReason::kLocalizationLost;
+    f.time_s = breach->time_s;
+    f.pose = breach->pose;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "drove on an estimate more than 0.25 m off (worst %.2f m) for %.1f s without "
+                  "reporting itself lost",
+                  breach->worst_error_m, breach->unnoticed_s);
+    f.detail = text;
+    return f;
+  }
   if (first_collision) {
     // Success needs an episode without contact, whatever happened after it.
     f.reason = FailureReason::kCollision;

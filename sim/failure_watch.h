@@ -9,6 +9,7 @@
 
 #include "robot/ekf_localizer.h"
 #include "robot/failure.h"
+#include "sim/integrity_watch.h"
 
 namespace plantsim::sim {
 
@@ -29,11 +30,13 @@ class FailureWatch {
 
   /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
   /// account when it stopped trying; `first_collision`: when and where the first contact
-  /// began (true pose), if any; `pursuit`: the episode chased a moving target.
+  /// began (true pose), if any; `breach`: the first drive on an estimate off the truth that
+  /// the estimator did not notice (whichever of the two came first is the reason); `pursuit`:
+  /// the episode chased a moving target.
   robot::Failure judge(double end_s, const geom::Pose2& end_pose,
                        const std::optional<robot::GiveUp>& give_up,
                        const std::optional<std::pair<double, geom::Pose2>>& first_collision,
-                       bool pursuit) const;
+                       const std::optional<IntegrityBreach>& breach, bool pursuit) const;
 
  private:
   struct Localisation {

@@ -54,7 +54,8 @@ TEST_F(FakeFfmpeg, AWorldsNameOrAnOutputFolderNeverReachesAShell) {
   // The folder (its staging copy, moved into place after) reached ffmpeg inside one argument.
   const std::vector<std::string> args = ffmpeg_args();
   ASSERT_FALSE(args.empty());
-  const std::string staging = fs::canonical(dir_ / "results").string() + "/plant';touch${IFS}X;'.partial-";
+  const std::string staging =
+      fs::canonical(dir_ / "results").string() + "/plant';touch${IFS}X;'.partial-";
   EXPECT_EQ(args.back().rfind(staging, 0), 0u) << args.back();
   EXPECT_NE(args.back().find("/animation.mp4.tmp.mp4"), std::string::npos) << args.back();
 

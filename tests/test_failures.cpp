@@ -27,7 +27,7 @@ TEST(FailureWatch, StandingStillIsStuckUnlessItsWayIsBlocked) {
       const double x = std::min(t, 10.0) * 0.5;  // drives 5 m, then stands for 50 s
       w.observe(t, {x, 0, 0}, {x, 0, 0}, LocalizationHealth::kOk, blocked && t > 10);
     }
-    const Failure f = w.judge(60.0, {5, 0, 0}, std::nullopt, std::nullopt, false);
+    const Failure f = w.judge(60.0, {5, 0, 0}, std::nullopt, std::nullopt, std::nullopt, false);
     EXPECT_EQ(f.reason, blocked ? FailureReason::kBlocked : FailureReason::kStuck);
     EXPECT_NEAR(f.time_s, 10.0,
                 1.1);  // when it last progressed (0.5 m before the end of its drive)
@@ -40,36 +40,39 @@ TEST(FailureWatch, ARobotStillMovingWhenTimeRunsOutTimedOut) {
   for (int k = 0; k <= 30 * 60; ++k)
     w.observe(k / 30.0, {0.1 * k / 30.0, 0, 0}, {0.1 * k / 30.0, 0, 0}, LocalizationHealth::kOk,
               false);
-  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, false).reason,
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, std::nullopt, false).reason,
             FailureReason::kTimeout);
-  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, true).reason,
+  EXPECT_EQ(w.judge(60.0, {6, 0, 0}, std::nullopt, std::nullopt, std::nullopt, true).reason,
             FailureReason::kTargetLost);
 }
 
 TEST(FailureWatch, AFarEstimateOrALostOneOverridesWhatTheRobotSaid) {
   FailureWatch far;
   far.observe(1.0, {1, 0, 0}, {1.4, 0, 0}, LocalizationHealth::kOk, false);
-  const Failure f = far.judge(
-      1.0, {1, 0, 0}, GiveUp{FailureReason::kDockRetriesExhausted, "missed"}, std::nullopt, false);
+  const Failure f =
+      far.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kDockRetriesExhausted, "missed"},
+                std::nullopt, std::nullopt, false);
   EXPECT_EQ(f.reason, FailureReason::kLocalizationLost);
   EXPECT_NE(f.detail.find("0.40 m"), std::string::npos) << f.detail;
   FailureWatch lost;
   lost.observe(1.0, {1, 0, 0}, {1, 0, 0}, LocalizationHealth::kLost, false);
-  EXPECT_EQ(
-      lost.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
-      FailureReason::kLocalizationLost);
+  EXPECT_EQ(lost.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt,
+                       std::nullopt, false)
+                .reason,
+            FailureReason::kLocalizationLost);
   FailureWatch near;
   near.observe(1.0, {1, 0, 0}, {1.1, 0, 0}, LocalizationHealth::kDegraded, false);
-  EXPECT_EQ(
-      near.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt, false).reason,
-      FailureReason::kBlocked);
+  EXPECT_EQ(near.judge(1.0, {1, 0, 0}, GiveUp{FailureReason::kBlocked, ""}, std::nullopt,
+                       std::nullopt, false)
+                .reason,
+            FailureReason::kBlocked);
 }
 
 TEST(FailureWatch, AnyCollisionIsTheReasonAtItsFirstContact) {
   FailureWatch w;
   w.observe(1.0, {1, 0, 0}, {3, 0, 0}, LocalizationHealth::kLost, false);
-  const Failure f =
-      w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}}, false);
+  const Failure f = w.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}},
+                            std::nullopt, false);
   EXPECT_EQ(f.reason, FailureReason::kCollision);
   EXPECT_DOUBLE_EQ(f.time_s, 4.5);
   EXPECT_DOUBLE_EQ(f.pose.y, 3.0);
@@ -230,3 +233,65 @@ TEST(FailureEpisodes, TimeoutWhileStillDriving) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+// Integrity (issue 49): driving on an estimate more than 0.25 m off that the estimator does not
+// report lost within 2 s fails the episode at the first excess; noticing in time does not.
+namespace plantsim::sim::integrity {
+
+using namespace robot;
+
+// Observes at 10 Hz from t0 to t1 with the estimate `off` metres ahead of the truth in x.
+void feed(IntegrityWatch& w, double t0, double t1, double off, double speed,
+          LocalizationHealth health) {
+  for (double t = t0; t < t1 - 1e-9; t += 0.1)
+    w.observe(t, {t, 0, 0}, speed, {t + off, 0, 0}, health);
+}
+
+TEST(IntegrityWatch, AnOffEstimateNoticedWithinTheGraceIsNoBreach) {
+  IntegrityWatch w;
+  feed(w, 0.0, 5.0, 0.02, 0.5, LocalizationHealth::kOk);
+  feed(w, 5.0, 6.5, 0.6, 0.5, LocalizationHealth::kOk);  // kidnapped: 1.5 s unnoticed
+  feed(w, 6.5, 9.0, 0.6, 0.5, LocalizationHealth::kLost);
+  EXPECT_FALSE(w.record().breach);
+  EXPECT_NEAR(w.record().worst_moving_error_m, 0.6, 1e-9);
+  EXPECT_NEAR(w.record().driven_off_s, 4.0, 0.11);  // measured all the same
+  EXPECT_NEAR(w.record().ok_while_off_s, 1.5, 0.11);
+}
+
+TEST(IntegrityWatch, DrivingOnAnOffEstimatePastTheGraceIsABreachAtItsFirstExcess) {
+  IntegrityWatch w;
+  feed(w, 0.0, 3.0, 0.05, 0.5, LocalizationHealth::kOk);
+  feed(w, 3.0, 6.0, 0.3, 0.5, LocalizationHealth::kDegraded);
+  ASSERT_TRUE(w.record().breach);
+  EXPECT_NEAR(w.record().breach->time_s, 3.0, 1e-9);
+  EXPECT_NEAR(w.record().breach->pose.x, 3.0, 1e-9);
+  EXPECT_NEAR(w.record().breach->worst_error_m, 0.3, 1e-9);
+  EXPECT_GT(w.record().breach->unnoticed_s, 2.0);
+  EXPECT_NEAR(w.record().ok_while_off_s, 0.0, 1e-9);  // it said degraded, not ok
+}
+
+TEST(IntegrityWatch, StandingStillOnAnOffEstimateIsNoBreachUntilItDrivesOnIt) {
+  IntegrityWatch w;
+  feed(w, 0.0, 4.0, 0.4, 0.0, LocalizationHealth::kOk);
+  EXPECT_FALSE(w.record().breach);
+  EXPECT_NEAR(w.record().driven_off_s, 0.0, 1e-9);
+  feed(w, 4.0, 4.5, 0.4, 0.3, LocalizationHealth::kOk);
+  ASSERT_TRUE(w.record().breach);
+  EXPECT_NEAR(w.record().breach->time_s, 0.0, 1e-9);  // where the estimate first went off
+}
+
+TEST(IntegrityWatch, TheRefereeNamesTheEarlierOfABreachAndACollision) {
+  FailureWatch watch;
+  watch.observe(9.0, {1, 0, 0}, {1, 0, 0}, LocalizationHealth::kOk, false);
+  const IntegrityBreach breach{3.0, {2, 1, 0}, 0.8, 2.5};
+  Failure f = watch.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{4.5, geom::Pose2{2, 3, 0.7}},
+                          breach, false);
+  EXPECT_EQ(f.reason, FailureReason::kLocalizationLost);
+  EXPECT_DOUBLE_EQ(f.time_s, 3.0);
+  EXPECT_NE(f.detail.find("worst 0.80 m"), std::string::npos) << f.detail;
+  f = watch.judge(9.0, {1, 0, 0}, std::nullopt, std::pair{2.5, geom::Pose2{2, 3, 0.7}}, breach,
+                  false);
+  EXPECT_EQ(f.reason, FailureReason::kCollision);
+}
+
+}  // namespace plantsim::sim::integrity

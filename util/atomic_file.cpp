@@ -135,8 +135,7 @@ std::string not_replaceable(const fs::directory_entry& entry,
       if (r == name && entry.is_regular_file(ec)) return "";
       continue;
     }
-    if (r.compare(0, slash, name) != 0 || slash != name.size() || !entry.is_directory(ec))
-      continue;
+    if (r.compare(0, slash, name) != 0 || slash != name.size() || !entry.is_directory(ec)) continue;
     const std::string pattern = r.substr(slash + 1);
     for (const auto& inner : fs::directory_iterator(entry.path(), ec)) {
       const std::string inner_name = inner.path().filename().string();
