@@ -26,6 +26,10 @@ void add_world_options(CLI::App* cmd, std::string& world, std::string& scen, int
 /// different seeds ran one episode. The option's own range check follows it.
 const CLI::Validator& decimal_whole_number();
 
+/// Refuses nan and infinities for a number option (CLI11's ranges let NaN through: every
+/// comparison with it is false). main() adds it to every floating-point option.
+const CLI::Validator& finite_number();
+
 /// `--seed`, from 0 to 2^64 - 1.
 void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& description);
 

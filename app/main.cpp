@@ -1,5 +1,7 @@
 // plantsim command line: parses arguments with CLI11 and dispatches to a subcommand.
 // Bad input of any kind ends with a one-line message on stderr and exit code 2.
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -42,6 +44,19 @@ const CLI::Validator& decimal_whole_number() {
       },
       "");
   return whole_number;
+}
+
+const CLI::Validator& finite_number() {
+  static const CLI::Validator finite(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && !std::isfinite(v))
+          return "expects a finite number, got '" + text + "'";
+        return "";
+      },
+      "");
+  return finite;
 }
 
 void refuse_output_over_input(const std::string& out, const std::string& input) {
@@ -105,6 +120,9 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_nav2_import_command(app));
   remember(plantsim::app::add_coverage_command(app));
   remember(plantsim::app::add_coverage_study_command(app));
+  for (CLI::App* sub : app.get_subcommands({}))
+    for (CLI::Option* o : sub->get_options())
+      if (o->get_type_name().rfind("FLOAT", 0) == 0) o->check(plantsim::app::finite_number());
   // An unknown command is named, with the known ones (CLI11 would say "A subcommand is required").
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
 #include "episode/episode_config_json.h"
 #include "planner/planner.h"
@@ -79,6 +80,48 @@ std::string overrides_json(const YAML::Node& node, const std::string& source,
   return text;
 }
 
+// `random_kidnap: {after_s: [a, b], distance_m: [c, d]}` (`where` names it in messages).
+FaultSetting::RandomKidnap read_random_kidnap(const YAML::Node& k, const std::string& source,
+                                              const std::string& where) {
+  if (!k.IsMap()) throw WorldError(source, where, "expected {after_s: [a, b], distance_m: [a, b]}");
+  auto number = [](double x) {
+    std::ostringstream o;
+    o << x;
+    return o.str();
+  };
+  // [low, high] within [lowest, highest], each a number.
+  auto range = [&](const char* key, double lowest, double highest, double& low, double& high) {
+    const YAML::Node r = k[key];
+    const std::string at = where + "." + key;
+    if (!r || !r.IsSequence() || r.size() != 2)
+      throw WorldError(source, at, "expected [low, high]");
+    double v[2];
+    for (int i = 0; i < 2; ++i) {
+      try {
+        v[i] = r[i].as<double>();
+      } catch (const YAML::Exception&) {
+        throw WorldError(source, at + "[" + std::to_string(i) + "]", "expected a number");
+      }
+      if (!(v[i] >= lowest && v[i] <= highest))
+        throw WorldError(source, at + "[" + std::to_string(i) + "]",
+                         "must be from " + number(lowest) + " to " + number(highest));
+    }
+    if (v[0] > v[1]) throw WorldError(source, at, "low must not exceed high");
+    low = v[0], high = v[1];
+  };
+  FaultSetting::RandomKidnap rk;
+  range("after_s", 0.0, 86400.0, rk.after_min_s, rk.after_max_s);
+  range("distance_m", 0.0, 1000.0, rk.distance_min_m, rk.distance_max_m);
+  if (rk.distance_max_m <= 0)
+    throw WorldError(source, where + ".distance_m", "the robot must be moved: high above 0");
+  for (const auto& kv : k) {
+    const std::string key = kv.first.as<std::string>();
+    if (key != "after_s" && key != "distance_m")
+      throw WorldError(source, where + "." + key, "unknown parameter");
+  }
+  return rk;
+}
+
 // The keys of a fault that change the plant rather than the episode config; removed from
 // `body` as they are read.
 void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& source,
@@ -138,6 +181,10 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
                        "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");
     f.charger_map_offset = geom::Pose2{v[0], v[1], v[2]};
     body.remove("charger_map_offset");
+  }
+  if (body["random_kidnap"]) {
+    f.random_kidnap = read_random_kidnap(body["random_kidnap"], source, field + ".random_kidnap");
+    body.remove("random_kidnap");
   }
 }
 

@@ -28,7 +28,14 @@ struct FaultSetting {
                                   ///< the robot could reach the staging pose (0: nobody)
   int unmapped_obstacles = 0;     ///< boxes the map lacks, placed across the optimal path
   std::optional<geom::Pose2> charger_map_offset;  ///< the charger's mapped pose minus its real one
-  std::string sweep_parameter, sweep_value;       ///< when the fault is one value of a sweep
+  /// `random_kidnap`: each episode's robot is lifted at a time drawn from [after_s] and set down
+  /// at a distance drawn from [distance_m] on free floor, any heading (sim/kidnap_landing.h).
+  struct RandomKidnap {
+    double after_min_s = 0, after_max_s = 0;
+    double distance_min_m = 0, distance_max_m = 0;
+  };
+  std::optional<RandomKidnap> random_kidnap;
+  std::string sweep_parameter, sweep_value;  ///< when the fault is one value of a sweep
 };
 
 /// What a configuration's success is judged by: its success rate, or the lower end of its 95 %

@@ -31,6 +31,16 @@ EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
       exact.plan(w.start.position(), worlds::staging_pose(w).position());
   out.config = configs_[e.controller * spec_.faults.size() + e.fault];
   out.config.seed = e.seed;
+  if (fault.random_kidnap) {
+    // The time from the episode's own stream; where it lands, in the episode from its seed.
+    const FaultSetting::RandomKidnap& k = *fault.random_kidnap;
+    const std::uint64_t draw =
+        util::Fingerprint().add(contents_[e.world]).add(e.seed).add(std::uint64_t{104729}).value();
+    const double u = static_cast<double>(draw >> 11) * 0x1.0p-53;
+    out.config.kidnap.at_s = k.after_min_s + u * (k.after_max_s - k.after_min_s);
+    out.config.kidnap.distance_min_m = k.distance_min_m;
+    out.config.kidnap.distance_max_m = k.distance_max_m;
+  }
   if (optimal.status == planner::PlanStatus::kOk) {
     if (fault.unmapped_obstacles > 0)
       w.unmapped = unmapped_across_path(

@@ -33,6 +33,12 @@ ScenarioIdentity scenario_identity(const BatchSpec& spec,
       f.add(std::string_view("standing_at_dock_s")).add(x.standing_at_dock_s);
     if (x.charger_map_offset)
       f.add(x.charger_map_offset->x).add(x.charger_map_offset->y).add(x.charger_map_offset->yaw);
+    if (const auto& k = x.random_kidnap)
+      f.add(std::string_view("random_kidnap"))
+          .add(k->after_min_s)
+          .add(k->after_max_s)
+          .add(k->distance_min_m)
+          .add(k->distance_max_m);
   }
   for (std::uint64_t seed : spec.seeds) f.add(seed);
   f.add(static_cast<std::uint64_t>(spec.random_starts));

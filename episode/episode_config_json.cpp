@@ -88,6 +88,8 @@ const std::vector<Field>& fields() {
                            kMaxParameter),
       PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.gate_chi2, "gate_chi2", 0.0, kMaxParameter),
       PLANTSIM_PARAM("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos", 0.0, 1.0),
+      PLANTSIM_PARAM("ekf", perception.ekf.range_learning_rate, "range_learning_rate", 0.0, 1.0),
+      PLANTSIM_PARAM("ekf", perception.ekf.gyro_learning_rate, "gyro_learning_rate", 0.0, 1.0),
       PLANTSIM_PARAM("ekf", perception.ekf.gate_floor_m, "gate_floor_m", 0.0, kMaxParameter),
       PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.constraint_sigma_m, "constraint_sigma_m", 0.0,
                            kMaxParameter),
@@ -171,6 +173,8 @@ const std::vector<Field>& fields() {
       PLANTSIM_PARAM("kidnap", kidnap.dx_m, "dx_m", -1000.0, 1000.0),
       PLANTSIM_PARAM("kidnap", kidnap.dy_m, "dy_m", -1000.0, 1000.0),
       PLANTSIM_PARAM("kidnap", kidnap.dyaw_rad, "dyaw_rad", -M_PI, M_PI),
+      PLANTSIM_PARAM("kidnap", kidnap.distance_min_m, "distance_min_m", 0.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", kidnap.distance_max_m, "distance_max_m", 0.0, 1000.0),
       PLANTSIM_PARAM("docking", docking.confident_sigma_m, "confident_sigma_m", 0.0, kMaxParameter),
       PLANTSIM_PARAM("docking", docking.uncertain_sigma_m, "uncertain_sigma_m", 0.0, kMaxParameter),
       PLANTSIM_PARAM("docking", docking.uncertain_speed_fraction, "uncertain_speed_fraction", 0.0,
@@ -271,6 +275,7 @@ const std::vector<Field>& int_fields() {
                      10000),
       PLANTSIM_PARAM("ekf", perception.ekf.nis_window, "nis_window", 1, 1000),
       PLANTSIM_PARAM("ekf", perception.ekf.lost_failed_matches, "lost_failed_matches", 1, 100000),
+      PLANTSIM_PARAM("ekf", perception.ekf.gyro_min_samples, "gyro_min_samples", 1, 100000),
   };
   return table;
 }
@@ -284,6 +289,7 @@ const std::vector<Field>& bool_fields() {
       PLANTSIM_PARAM("traction", traction.enabled, "enabled", 0, 1),
       PLANTSIM_PARAM("docking", docking.undock, "undock", 0, 1),
       PLANTSIM_PARAM("layer", perception.layer.enabled, "enabled", 0, 1),
+      PLANTSIM_PARAM("ekf", perception.ekf.learn_noise, "learn_noise", 0, 1),
   };
   return table;
 }
@@ -398,6 +404,8 @@ void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& 
 
 /// Values each in range that do not fit together.
 void check_consistency(const std::string& source, const EpisodeConfig& c) {
+  if (c.kidnap.distance_min_m > c.kidnap.distance_max_m)
+    throw worlds::WorldError(source, "kidnap.distance_min_m", "must not exceed distance_max_m");
   if (c.field.k_att <= 0)
     throw worlds::WorldError(source, "potential_field.k_att", "must be positive");
   if (c.field.rho0_m <= c.field.rho_min_m)

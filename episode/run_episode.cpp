@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "episode/episode_recorder.h"
+#include "sim/kidnap_landing.h"
 
 namespace plantsim::episode {
 
@@ -161,8 +162,16 @@ class Episode {
     if (!kidnap.enabled() || kidnapped_ || t_s < kidnap.at_s) return;
     kidnapped_ = true;
     const Pose2 was = physics_.robot_pose();
-    physics_.place_robot(
-        {was.x + kidnap.dx_m, was.y + kidnap.dy_m, geom::wrap_angle(was.yaw + kidnap.dyaw_rad)});
+    if (kidnap.drawn()) {
+      // No free floor that far (a narrow plant): the robot stays where it was.
+      const std::optional<Pose2> to = kidnap_landing(plant_, was.position(), kidnap.distance_min_m,
+                                                     kidnap.distance_max_m, config_.seed);
+      if (!to) return;
+      physics_.place_robot(*to);
+    } else {
+      physics_.place_robot(
+          {was.x + kidnap.dx_m, was.y + kidnap.dy_m, geom::wrap_angle(was.yaw + kidnap.dyaw_rad)});
+    }
     sensors_.robot_placed(physics_.robot_pose());
   }
 

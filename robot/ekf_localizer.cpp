@@ -30,6 +30,31 @@ EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
       p_.initial_bias_sigma_radps * p_.initial_bias_sigma_radps;
 }
 
+namespace {
+
+// The k-th sample's weight in a learnt noise: the plain mean of the first ones, then a moving
+// average that forgets at `rate` (a sensor that degrades during the run is followed).
+double learning_weight(double rate, int k) { return std::max(rate, 1.0 / std::max(k, 1)); }
+
+// A learnt noise replaces the told one only when clearly above it: an estimate from a few
+// hundred residuals scatters by some per cent about the truth, and the larger of the two
+// alone would be biased above a told value that is right.
+constexpr double kClearlyAbove = 1.2;
+
+}  // namespace
+
+double EkfLocalizer::range_sigma_m() const {
+  if (!p_.learn_noise) return p_.range_sigma_m;
+  const double learnt = std::sqrt(range_var_learnt_);
+  return learnt > kClearlyAbove * p_.range_sigma_m ? learnt : p_.range_sigma_m;
+}
+
+double EkfLocalizer::gyro_noise_radps() const {
+  if (!p_.learn_noise || gyro_samples_ < p_.gyro_min_samples) return p_.gyro_noise_radps;
+  const double learnt = std::sqrt(gyro_var_learnt_);
+  return learnt > kClearlyAbove * p_.gyro_noise_radps ? learnt : p_.gyro_noise_radps;
+}
+
 double EkfLocalizer::position_sigma_m() const {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(P_.topLeftCorner<2, 2>());
   return std::sqrt(std::max(es.eigenvalues().maxCoeff(), 0.0));
@@ -37,6 +62,7 @@ double EkfLocalizer::position_sigma_m() const {
 
 void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) {
   if (dt_s <= 0) return;
+  ++predicts_since_rest_;  // standstill() right after this one: two readings in a row at rest
   const double turn = (gyro_yaw_rate_radps - x_(3)) * dt_s;
   const double mid = x_(2) + 0.5 * turn;
   const double c = std::cos(mid), s = std::sin(mid);
@@ -64,7 +90,7 @@ void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double
   // Tyres skid sideways when the robot turns while it moves (centripetal load), not otherwise.
   const double skid = p_.lateral_noise * std::min(std::fabs(turn), d / 0.1);
   q << std::pow(p_.distance_noise * d + 1e-4, 2), std::pow(skid + 1e-4, 2),
-      std::pow(p_.gyro_noise_radps * dt_s, 2);
+      std::pow(gyro_noise_radps() * dt_s, 2);
   P_ = F * P_ * F.transpose() + G * q.asDiagonal() * G.transpose();
   P_(3, 3) += p_.bias_walk_radps_per_sqrt_s * p_.bias_walk_radps_per_sqrt_s * dt_s;
   update_health();
@@ -179,8 +205,19 @@ bool EkfLocalizer::update_pose(const geom::Pose2& z, const Eigen::Matrix3d& r, d
 }
 
 void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
-  // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading.
-  const double r = p_.gyro_noise_radps * p_.gyro_noise_radps;
+  // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading. At rest two
+  // readings in a row differ by the noise alone (the bias cancels, whatever its estimate): half
+  // their squared difference is learnt as the noise's variance.
+  if (p_.learn_noise && rest_reading_ && predicts_since_rest_ == 1) {
+    const double d = gyro_yaw_rate_radps - *rest_reading_;
+    const double v = 0.5 * d * d;
+    ++gyro_samples_;
+    gyro_var_learnt_ +=
+        learning_weight(p_.gyro_learning_rate, gyro_samples_) * (v - gyro_var_learnt_);
+  }
+  rest_reading_ = gyro_yaw_rate_radps;
+  predicts_since_rest_ = 0;
+  const double r = gyro_noise_radps() * gyro_noise_radps();
   const double s = P_(3, 3) + r;
   if (!(s > 0)) return;
   const State k = P_.col(3) / s;
@@ -210,7 +247,8 @@ EkfLocalizer::ScanTerms EkfLocalizer::scan_terms(const LidarScan& scan, const St
   State& gradient = terms.gradient;
   int& used = terms.used;
   int& expected = terms.expected;
-  const double r_var = p_.range_sigma_m * p_.range_sigma_m;
+  const double r_var = r_var_;
+  residuals_.clear();
   const geom::Pose2 robot{xi(0), xi(1), xi(2)};
   const geom::Pose2 sensor = geom::compose(robot, scan.mount);
   const geom::Vec2 mount_world = geom::rotate({scan.mount.x, scan.mount.y}, robot.yaw);
@@ -241,6 +279,7 @@ EkfLocalizer::ScanTerms EkfLocalizer::scan_terms(const LidarScan& scan, const St
     if (outlier) continue;
     scan_info += H.transpose() * H / r_var;
     gradient += H.transpose() * innovation / r_var;
+    residuals_.emplace_back(innovation, s - r_var);
     ++used;
   }
   return terms;
@@ -263,6 +302,51 @@ void EkfLocalizer::check_consistency(const State& x0, const Covariance& P0, int 
   if (dof > 0) record_nis(nis, dof);
 }
 
+EkfLocalizer::Fit EkfLocalizer::fit(const LidarScan& scan, const State& x0, const Covariance& P0,
+                                    const Covariance& P0_inv, std::size_t stride) {
+  associate(scan, x0, stride);
+  Fit f{x0, {}, 0};
+  for (int iter = 0; iter < std::max(1, p_.iterations); ++iter) {
+    // Minimises the prior's and the beams' squared errors about this iterate:
+    // (P0^-1 + sum H'H/r) dx = P0^-1 (x0 - xi) + sum H' innovation / r,
+    // the beams' terms kept only along the directions they constrain.
+    if (iter == 1) associate(scan, f.x, stride);
+    State dx = x0 - f.x;
+    dx(2) = geom::wrap_angle(dx(2));
+    f.terms = scan_terms(scan, f.x, P0);
+    if (f.terms.expected < p_.min_informative_beams || f.terms.used < 3) break;
+    f.kept = keep_constrained(f.terms.info, f.terms.gradient, p_.constraint_sigma_m);
+    if (f.kept == 0) break;
+    const Covariance info = P0_inv + f.terms.info;
+    const State step = info.ldlt().solve(P0_inv * dx + f.terms.gradient);
+    f.x += step;
+    f.x(2) = geom::wrap_angle(f.x(2));
+    if (step.head<2>().norm() < 1e-4 && std::fabs(step(2)) < 1e-5) break;
+  }
+  return f;
+}
+
+double EkfLocalizer::post_fit_variance(const LidarScan& scan, const State& x,
+                                       const Covariance& P0) {
+  scan_terms(scan, x, P0);  // fills residuals_ at the answer; the terms are not used
+  if (residuals_.size() < 10) return -1;
+  // Median absolute deviation about the median, scaled to a Gaussian's sigma: beams on things
+  // the map lacks do not inflate it. After the fit the residuals are smaller than the noise by
+  // the three directions fitted (n / (n - 3)); before it they carry the prior's error, common
+  // to every beam, which no per-beam statistic can tell from noise.
+  std::vector<double>& r = scratch_;
+  r.clear();
+  for (const auto& [innovation, spread] : residuals_) r.push_back(innovation);
+  const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  std::nth_element(r.begin(), mid, r.end());
+  const double median = *mid;
+  for (double& v : r) v = std::fabs(v - median);
+  std::nth_element(r.begin(), mid, r.end());
+  const double sigma = 1.4826 * *mid;
+  const double n = static_cast<double>(r.size());
+  return sigma * sigma * n / (n - 3.0);
+}
+
 double EkfLocalizer::correct(const LidarScan& scan) {
   // Beams spread evenly over the scan, each matched to the mapped face it meets from the prior
   // pose by one fan of ray casts; the iterations move the pose against those faces' lines, as a
@@ -272,30 +356,30 @@ double EkfLocalizer::correct(const LidarScan& scan) {
   const std::size_t n = scan.ranges.size();
   const std::size_t stride =
       std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1, p_.beams_used)));
-  associate(scan, x_, stride);
   const State x0 = x_;
   const Covariance P0 = P_;
   const Covariance P0_inv = P0.inverse();
-  State xi = x0;
-  ScanTerms terms;
-  int kept = 0;
-  for (int iter = 0; iter < std::max(1, p_.iterations); ++iter) {
-    // Minimises the prior's and the beams' squared errors about this iterate:
-    // (P0^-1 + sum H'H/r) dx = P0^-1 (x0 - xi) + sum H' innovation / r,
-    // the beams' terms kept only along the directions they constrain.
-    if (iter == 1) associate(scan, xi, stride);
-    State dx = x0 - xi;
-    dx(2) = geom::wrap_angle(dx(2));
-    terms = scan_terms(scan, xi, P0);
-    if (terms.expected < p_.min_informative_beams || terms.used < 3) break;
-    kept = keep_constrained(terms.info, terms.gradient, p_.constraint_sigma_m);
-    if (kept == 0) break;
-    const Covariance info = P0_inv + terms.info;
-    const State step = info.ldlt().solve(P0_inv * dx + terms.gradient);
-    xi += step;
-    xi(2) = geom::wrap_angle(xi(2));
-    if (step.head<2>().norm() < 1e-4 && std::fabs(step(2)) < 1e-5) break;
+  r_var_ = range_sigma_m() * range_sigma_m();
+  Fit f = fit(scan, x0, P0, P0_inv, stride);
+  auto accepted = [&](const Fit& g) {
+    return g.terms.expected >= p_.min_informative_beams && g.terms.used >= 3 && g.kept > 0 &&
+           static_cast<double>(g.terms.used) / static_cast<double>(g.terms.expected) >=
+               p_.degraded_inlier_fraction;
+  };
+  double learnt = -1;  // this scan's noise variance, from its residuals after the fit
+  if (p_.learn_noise && accepted(f)) {
+    learnt = post_fit_variance(scan, f.x, P0);
+    // The first scans, before anything is learnt: a scan that shows noise clearly above the
+    // told value is fitted again with it, so that the filter is never more confident than its
+    // own first scans allow (a told value three times too small made it so for seconds).
+    constexpr int kWarmUpScans = 10;
+    if (range_scans_learnt_ < kWarmUpScans && learnt > kClearlyAbove * kClearlyAbove * r_var_) {
+      r_var_ = learnt;
+      f = fit(scan, x0, P0, P0_inv, stride);
+      learnt = accepted(f) ? post_fit_variance(scan, f.x, P0) : -1;
+    }
   }
+  const ScanTerms& terms = f.terms;
   informative_ = terms.expected >= p_.min_informative_beams;
   if (!informative_) {
     // Open ground: nothing to match. Odometry and the gyro carry the estimate on.
@@ -304,14 +388,19 @@ double EkfLocalizer::correct(const LidarScan& scan) {
     return 0.0;
   }
   const double inliers = static_cast<double>(terms.used) / static_cast<double>(terms.expected);
-  if (terms.used >= 3 && kept > 0 && inliers >= p_.degraded_inlier_fraction) {
-    x_ = xi;
+  if (accepted(f)) {
+    x_ = f.x;
     P_ = (P0_inv + terms.info).inverse();
     P_ = 0.5 * (P_ + P_.transpose());
-    constrained_ = kept;
+    constrained_ = f.kept;
     failed_matches_ = 0;
-    check_consistency(x0, P0, kept);
-  } else if (kept > 0 || terms.used < 3) {
+    check_consistency(x0, P0, f.kept);
+    if (learnt >= 0) {  // learnt from the scans the map explained only
+      ++range_scans_learnt_;
+      range_var_learnt_ += learning_weight(p_.range_learning_rate, range_scans_learnt_) *
+                           (learnt - range_var_learnt_);
+    }
+  } else if (f.kept > 0 || terms.used < 3) {
     ++failed_matches_;
   }
   update_health();

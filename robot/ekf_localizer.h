@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -56,6 +57,14 @@ struct EkfParams {
       3.09;  ///< that sum beyond the chi-square quantile of this z (0.999): inconsistent
   int lost_failed_matches =
       45;  ///< informative scans in a row the map contradicts (3 s at 15 Hz): lost
+  /// Noise learnt online (covariance matching): the range noise from each accepted scan's
+  /// residuals (their robust spread), the gyro's from its readings at rest. The filter uses the
+  /// larger of what it was told (range_sigma_m, gyro_noise_radps: a datasheet's values) and what
+  /// it measured, so a lidar or gyro noisier than its datasheet does not make it over-confident.
+  bool learn_noise = true;
+  double range_learning_rate = 0.1;  ///< weight of each accepted scan's spread in the estimate
+  double gyro_learning_rate = 0.02;  ///< weight of each reading at rest
+  int gyro_min_samples = 15;         ///< readings at rest before the learnt gyro noise counts
 };
 
 enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
@@ -83,6 +92,10 @@ class EkfLocalizer {
   void widen(double position_sigma_m, double yaw_sigma_rad);
   double yaw_sigma_rad() const { return std::sqrt(P_(2, 2)); }
   double gyro_bias_radps() const { return x_(3); }
+  /// The range noise the filter uses: the larger of the told and the learnt (1-sigma, m).
+  double range_sigma_m() const;
+  /// The gyro noise the filter uses: the larger of the told and the learnt (rad/s per reading).
+  double gyro_noise_radps() const;
   LocalizationHealth health() const { return health_; }
   int failed_matches() const { return failed_matches_; }
   /// The last scan had enough beams on mapped surfaces to say anything.
@@ -123,7 +136,28 @@ class EkfLocalizer {
   void check_consistency(const State& x0, const Covariance& P0, int kept);
   void update_health();
   void record_nis(double nis, int dof);
+  /// The scan matched from x0 (associated there, then again after the first step) and the
+  /// iterated update's answer: its state, the beams' terms about it, the directions kept.
+  struct Fit {
+    State x;
+    ScanTerms terms;
+    int kept;
+  };
+  Fit fit(const LidarScan& scan, const State& x0, const Covariance& P0, const Covariance& P0_inv,
+          std::size_t stride);
+  /// The range noise variance the residuals at `x` show (robust; negative with too few beams).
+  double post_fit_variance(const LidarScan& scan, const State& x, const Covariance& P0);
   EkfParams p_;
+  double range_var_learnt_ = 0;  // EWMA of the accepted scans' matched variance; 0: none yet
+  int range_scans_learnt_ = 0;   // accepted scans in it
+  double gyro_var_learnt_ = 0;   // EWMA of squared rate residuals at rest
+  int gyro_samples_ = 0;
+  std::optional<double> rest_reading_;  // the gyro's last reading at rest
+  int predicts_since_rest_ = 0;
+  // Scratch: each used beam's innovation and predicted spread H P0 H' of the last scan_terms call.
+  std::vector<std::pair<double, double>> residuals_;
+  double r_var_ = 0;             // the range variance of the scan being matched
+  std::vector<double> scratch_;  // post_fit_variance's
   const MapRaycaster& map_;
   State x_;
   Covariance P_;

@@ -18,17 +18,26 @@ void MapRaycaster::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directi
   surfaces_.cast_fan(from, directions, first_angle, increment, max_range_m, hits);
 }
 
+const geom::NearRaster& MapRaycaster::raster_for(double margin_m) const {
+  for (std::size_t i = 0; i < near_.size(); ++i)
+    if (near_[i]->margin_m() == margin_m) {
+      std::rotate(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(i),
+                  near_.begin() + static_cast<std::ptrdiff_t>(i) + 1);  // to the front
+      return *near_.front();
+    }
+  const geom::Rect& a = surfaces_.grid().area();
+  const geom::Rect area{a.xmin - margin_m, a.ymin - margin_m, a.xmax + margin_m, a.ymax + margin_m};
+  if (near_.size() == kRasters) near_.pop_back();
+  near_.insert(near_.begin(),
+               std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area,
+                                                  std::max(0.05, 0.5 * margin_m)));
+  return *near_.front();
+}
+
 bool MapRaycaster::surface_near(geom::Vec2 point, double margin_m) const {
   // Per axis: the rectangles themselves, the charger's oriented block by its bounding box. A
   // raster made once per margin answers most points; the grid settles the cells it cannot.
-  if (!near_ || near_->margin_m() != margin_m) {
-    const geom::Rect& a = surfaces_.grid().area();
-    const geom::Rect area{a.xmin - margin_m, a.ymin - margin_m, a.xmax + margin_m,
-                          a.ymax + margin_m};
-    near_ = std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area,
-                                               std::max(0.05, 0.5 * margin_m));
-  }
-  switch (near_->at(point)) {
+  switch (raster_for(margin_m).at(point)) {
     case geom::NearRaster::Answer::kYes:
       return true;
     case geom::NearRaster::Answer::kNo:

@@ -36,7 +36,11 @@ class MapRaycaster {
 
  private:
   worlds::SurfaceGrid surfaces_;
-  mutable std::unique_ptr<geom::NearRaster> near_;  // for the last margin asked, built on first use
+  // One raster per margin asked, built on first use (a learnt noise moves the margin between a
+  // few values), the least recently used dropped beyond kRasters.
+  static constexpr std::size_t kRasters = 4;
+  mutable std::vector<std::unique_ptr<geom::NearRaster>> near_;
+  const geom::NearRaster& raster_for(double margin_m) const;
 };
 
 }  // namespace plantsim::robot

@@ -76,8 +76,11 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   scan_view_ = {now_.pose, {}, {}};
   std::vector<geom::Vec2> unexplained, near_static;
   const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
+  // In whole centimetres: the map's nearness raster is built for one margin, and the learnt
+  // noise moves a little with every scan.
   const double explained_margin =
-      std::max(p_.tracker.unexplained_margin_m, p_.explained_sigmas * p_.ekf.range_sigma_m);
+      std::max(p_.tracker.unexplained_margin_m,
+               0.01 * std::ceil(100.0 * p_.explained_sigmas * ekf_.range_sigma_m()));
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i];

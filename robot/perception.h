@@ -39,8 +39,9 @@ struct PerceptionParams {
   ObstacleLayerParams layer;
   double moving_speed_mps = 0.3;  ///< tracks faster than this do not mark the layer (they move on)
   /// A return lies off the map when it is farther from every mapped surface than the tracker's
-  /// margin or this many of the range noise the estimator assumes (ekf.range_sigma_m), whichever
-  /// is more: a noisier lidar must not turn its own scatter into obstacles that move.
+  /// margin or this many of the range noise the estimator uses (ekf.range_sigma_m, or more when
+  /// it learnt more), whichever is more: a noisier lidar must not turn its own scatter into
+  /// obstacles that move.
   double explained_sigmas = 3.0;
   /// The robot holds still this long at the start (sensors mode), so that the gyro's bias is
   /// measured at rest before it has to carry the heading across open ground.

@@ -43,11 +43,14 @@ inline std::string_view to_string(TravelMode m) {
 
 /// A kidnap: at `at_s` the robot is lifted and set down moved by (dx, dy) and turned by dyaw
 /// (in the world frame), at rest; nothing it senses says so but the scans that follow. Off
-/// while at_s < 0.
+/// while at_s < 0. With distance_max_m > 0 the landing is drawn instead (sim/kidnap_landing.h):
+/// distance_min_m to distance_max_m away, any heading, on free floor, from the episode's seed.
 struct KidnapFault {
   double at_s = -1;
   double dx_m = 0, dy_m = 0, dyaw_rad = 0;
+  double distance_min_m = 0, distance_max_m = 0;
   bool enabled() const { return at_s >= 0; }
+  bool drawn() const { return distance_max_m > 0; }
 };
 
 /// Physics steps one episode may ask for (timeout_s / step.dt_s): 5,000,000 is 23 hours of
@@ -94,10 +97,10 @@ struct TrajectorySample {
 
 struct EpisodeResult {
   std::optional<robot::Failure>
-      failure;         ///< why it did not succeed (set exactly when !succeeded())
-  std::string status;  ///< "docked", "docked_with_collision", "docked_off_estimate" (charging
-                       ///< after driving on an estimate off without knowing), "caught", "failed",
-                       ///< "trapped", "timeout", or a planner status
+      failure;          ///< why it did not succeed (set exactly when !succeeded())
+  std::string status;   ///< "docked", "docked_with_collision", "docked_off_estimate" (charging
+                        ///< after driving on an estimate off without knowing), "caught", "failed",
+                        ///< "trapped", "timeout", or a planner status
   bool docked = false;  ///< charging, no collision and localisation integrity (success)
   bool caught = false;  ///< a moving target was reached
   bool succeeded() const { return docked || caught; }

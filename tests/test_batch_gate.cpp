@@ -291,5 +291,20 @@ TEST(Csv, QuotedFieldsRoundTrip) {
   EXPECT_EQ(csv_split(line), fields);
 }
 
+// A name a spreadsheet would run as a formula is written to be shown as text (issue 51); numbers,
+// negative ones too, stay numbers.
+TEST(Csv, FormulasAreNeutralisedNumbersAreNot) {
+  EXPECT_EQ(csv_field("=HYPERLINK(\"http://x\",\"y\")"),
+            "\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\"");
+  EXPECT_EQ(csv_field("+1+2"), "'+1+2");
+  EXPECT_EQ(csv_field("@SUM(1)"), "'@SUM(1)");
+  EXPECT_EQ(csv_field("-cmd"), "'-cmd");
+  EXPECT_EQ(csv_field("\tx"), "'\tx");
+  EXPECT_EQ(csv_field("-0.5"), "-0.5");
+  EXPECT_EQ(csv_field("+3"), "+3");
+  EXPECT_EQ(csv_field("1e-3"), "1e-3");
+  EXPECT_EQ(csv_field("plant=2"), "plant=2");
+}
+
 }  // namespace
 }  // namespace plantsim::util

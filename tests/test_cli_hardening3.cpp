@@ -129,5 +129,20 @@ TEST_F(Cli, ABatchWithFiguresRerunsInItsOwnFolderHoweverItWasLeft) {
   EXPECT_EQ(read(dir_ / "b/notes.txt.tmp.1.2"), "mine");
 }
 
+TEST_F(Cli, NotANumberIsRefusedByEveryNumberOptionBeforeAnyWork) {
+  write("s.yaml", "name: nan\nworlds: [" + kCorridor + "]\nseeds: 2\n");
+  for (const std::string& args :
+       {std::string("batch s.yaml --out b --min-success nan"),
+        "plan " + kCorridor + " --inflate nan", "plan " + kCorridor + " --inflate inf",
+        "coverage " + kCorridor + " --cell NaN", std::string("generate --width -inf")}) {
+    const Outcome o = run(args, 60);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.err;
+    if (args.find("inf") == std::string::npos) {  // an infinity already fails the range
+      EXPECT_NE(o.err.find("finite number"), std::string::npos) << args << ": " << o.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "b"));
+}
+
 }  // namespace
 }  // namespace plantsim

@@ -12,12 +12,14 @@
 #include "batch/batch_runner.h"
 #include "episode/episode_config_json.h"
 #include "episode/run_episode.h"
+#include "geometry/predicates.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/ekf_localizer.h"
 #include "robot/map_raycaster.h"
 #include "robot/scan_matcher.h"
 #include "sim/episode.h"
+#include "sim/kidnap_landing.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -186,6 +188,39 @@ TEST(Localization, AKidnappedRobotFindsItselfAgainAndDocks) {
   EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
   EXPECT_GE(r.relocalizations, 1);
   EXPECT_EQ(r.collisions, 0);
+}
+
+// The drawn kidnap (scenarios' random_kidnap): always within its distances, on free floor
+// clear of everything the plant holds by the robot's radius and 0.2 m, any heading; the same
+// seed the same landing.
+TEST(KidnapLanding, LandsOnFreeFloorWithinItsDistances) {
+  worlds::World w = worlds::load_world(test::source_file("worlds/generated/styles/dense_s1.json"));
+  w.unmapped.push_back({40, 20, 41, 21});
+  const double clear = w.robot.radius_m + 0.2;
+  double min_yaw = 10, max_yaw = -10;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const geom::Vec2 from{50, 30};
+    const auto to = sim::kidnap_landing(w, from, 3.0, 10.0, seed);
+    ASSERT_TRUE(to) << seed;
+    const double d = geom::distance(from, to->position());
+    EXPECT_GE(d, 3.0 - 1e-9);
+    EXPECT_LE(d, 10.0 + 1e-9);
+    for (const geom::Rect& r : w.obstacles)
+      EXPECT_FALSE(geom::in_closed_rect(r.inflated(clear), to->position())) << seed;
+    for (const geom::Rect& r : w.unmapped)
+      EXPECT_FALSE(geom::in_closed_rect(r.inflated(clear), to->position())) << seed;
+    min_yaw = std::min(min_yaw, to->yaw), max_yaw = std::max(max_yaw, to->yaw);
+    const auto again = sim::kidnap_landing(w, from, 3.0, 10.0, seed);
+    EXPECT_EQ(again->x, to->x);
+    EXPECT_EQ(again->yaw, to->yaw);
+  }
+  EXPECT_LT(min_yaw, -2.5);
+  EXPECT_GT(max_yaw, 2.5);
+  // A floor with no room that far: no landing (the episode leaves the robot where it was).
+  worlds::World hall;
+  hall.floor = {0, 0, 4, 2};
+  hall.charger = {3.5, 1, 0};
+  EXPECT_FALSE(sim::kidnap_landing(hall, {1, 1}, 5.0, 6.0, 1));
 }
 
 TEST(Localization, AKidnapPastEveryWindowEndsLocalizationLost) {

@@ -213,8 +213,16 @@ double chi2_quantile(double dof, double z) {
   return dof * std::pow(1.0 - h + z * std::sqrt(h), 3);
 }
 
+// How the lidar really is, against what the filter is told of it.
+struct LidarTruth {
+  double range_noise_m = 0.01;  // the simulated lidar's
+  double told_sigma_m = 0.01;   // ekf.range_sigma_m
+  bool learn = true;            // ekf.learn_noise
+};
+
 // Monte Carlo runs of one open-loop drive; the average NEES of the pose at each scan.
-std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
+std::vector<double> average_nees(double left_mps, double right_mps, int runs,
+                                 LidarTruth lidar = {}) {
   worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
   w.obstacles.clear();  // an empty floor (walls only): the drives below stay on it
   w.floor = {0, 0, 30, 30};
@@ -228,7 +236,9 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
     sp.imu.yaw_rate_noise_radps = 0.003;
     sp.imu.bias_radps = 0.003;
     sp.imu.bias_walk_radps_per_sqrt_s = 0.0002;
+    sp.lidar.range_noise_m = lidar.range_noise_m;
     EkfParams ep;
+    ep.learn_noise = lidar.learn;
     // The filter's model matched to the simulated sensors: per-read wheel noise sigma on each
     // wheel is sigma / sqrt(2) on the travel; the gyro's figures as they are.
     ep.distance_noise = 0.02 / std::sqrt(2.0);
@@ -236,7 +246,7 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs) {
     ep.gyro_noise_radps = 0.003;
     ep.initial_bias_sigma_radps = 0.003;
     ep.bias_walk_radps_per_sqrt_s = 0.0002;
-    ep.range_sigma_m = 0.01;  // the lidar's
+    ep.range_sigma_m = lidar.told_sigma_m;
     // The robot is told its start with an error drawn from the filter's own prior.
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> g(0, 1);
@@ -294,6 +304,49 @@ TEST(Ekf, ConsistentOnAStraightAndACircularDrive) {
   const int runs = 20;
   expect_consistent(average_nees(0.5, 0.5, runs), runs, "straight");
   expect_consistent(average_nees(0.3, 0.5, runs), runs, "circle");
+}
+
+// A lidar three times noisier than the filter is told (a dirty window, a cheaper unit): the
+// filter learns the noise from its residuals and stays consistent; told the datasheet's value
+// and not learning, it is over-confident (the NEES far above its bound). Measured when written:
+// learnt 2.9 cm of the true 3; straight 2.32 average, 69 % inside; circle 3.67, 81 %.
+TEST(Ekf, ALidarNoisierThanToldIsLearntAndTheFilterStaysConsistent) {
+  const int runs = 20;
+  const LidarTruth untold{0.03, 0.01, true};
+  expect_consistent(average_nees(0.5, 0.5, runs, untold), runs, "straight, lidar 3x untold");
+  expect_consistent(average_nees(0.3, 0.5, runs, untold), runs, "circle, lidar 3x untold");
+  const std::vector<double> blind = average_nees(0.3, 0.5, runs, {0.03, 0.01, false});
+  double mean = 0;
+  for (double v : blind) mean += v / static_cast<double>(blind.size());
+  EXPECT_GT(mean, chi2_quantile(3.0 * runs, 1.96) / runs) << "not learning: over-confident";
+}
+
+TEST(Ekf, TheGyrosNoiseIsLearntAtRest) {
+  worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
+  MapRaycaster map(w);
+  EkfParams told;  // gyro_noise_radps 0.003
+  EkfLocalizer ekf(told, w.start, map);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> gyro(0.004, 0.012);  // a bias and four times the noise
+  EXPECT_DOUBLE_EQ(ekf.gyro_noise_radps(), 0.003);
+  for (int k = 0; k < 300; ++k) {  // 10 s at rest at 30 Hz
+    const double reading = gyro(rng);
+    ekf.predict(0.0, reading, 1.0 / 30);
+    ekf.standstill(reading);
+  }
+  // The learnt value's own spread at gyro_learning_rate 0.02 is about 0.001 (8.6 %, from 2,000
+  // simulated runs of this estimator): within three of it.
+  EXPECT_NEAR(ekf.gyro_noise_radps(), 0.012, 0.003);
+  EXPECT_NEAR(ekf.gyro_bias_radps(), 0.004, 0.002);
+  // A quieter gyro than told keeps the told value: the datasheet is a floor.
+  EkfLocalizer quiet(told, w.start, map);
+  std::normal_distribution<double> calm(0.0, 0.001);
+  for (int k = 0; k < 300; ++k) {
+    const double reading = calm(rng);
+    quiet.predict(0.0, reading, 1.0 / 30);
+    quiet.standstill(reading);
+  }
+  EXPECT_DOUBLE_EQ(quiet.gyro_noise_radps(), 0.003);
 }
 
 EpisodeResult run_with(const std::string& world_file, EpisodeConfig c) {

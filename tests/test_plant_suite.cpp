@@ -238,6 +238,17 @@ TEST(PlantSuite, BadSweepsAndPlantFaultsAreRefusedNamingTheField) {
                "faults.f.crossing_final_approach");
   expect_error("faults:\n  f: {standing_at_dock_s: -1}\n", "faults.f.standing_at_dock_s");
   expect_error("faults:\n  f: {standing_at_dock_s: soon}\n", "faults.f.standing_at_dock_s");
+  expect_error("faults:\n  f: {random_kidnap: yes}\n", "faults.f.random_kidnap");
+  expect_error("faults:\n  f: {random_kidnap: {after_s: [5], distance_m: [3, 10]}}\n",
+               "faults.f.random_kidnap.after_s");
+  expect_error("faults:\n  f: {random_kidnap: {after_s: [5, 9], distance_m: [10, 3]}}\n",
+               "faults.f.random_kidnap.distance_m");
+  expect_error("faults:\n  f: {random_kidnap: {after_s: [5, .nan], distance_m: [3, 10]}}\n",
+               "faults.f.random_kidnap.after_s[1]");
+  expect_error("faults:\n  f: {random_kidnap: {after_s: [5, 9], distance_m: [0, 0]}}\n",
+               "faults.f.random_kidnap.distance_m");
+  expect_error("faults:\n  f: {random_kidnap: {after_s: [5, 9], distance_m: [3, 4], far: 1}}\n",
+               "faults.f.random_kidnap.far");
   fs::remove_all(dir);
 }
 

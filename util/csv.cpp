@@ -1,9 +1,26 @@
 // Quoting doubles quotes inside a quoted field; splitting undoes it.
 #include "util/csv.h"
 
+#include <cstdlib>
+
 namespace plantsim::util {
 
-std::string csv_field(const std::string& s) {
+namespace {
+
+/// Text a spreadsheet would run as a formula (OWASP's CSV injection: a cell starting with
+/// = + - @, a tab or a carriage return); a number such as -0.5 is a number.
+bool formula_like(const std::string& s) {
+  if (s.empty() || std::string("=+-@\t\r").find(s[0]) == std::string::npos) return false;
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return end != s.c_str() + s.size();
+}
+
+}  // namespace
+
+std::string csv_field(const std::string& text) {
+  // A leading ' makes a spreadsheet show the cell as text (the name keeps every character).
+  const std::string s = formula_like(text) ? "'" + text : text;
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);

@@ -6,7 +6,9 @@
 
 namespace plantsim::util {
 
-/// The field as written: quoted when it holds a comma, a quote or a line break.
+/// The field as written: quoted when it holds a comma, a quote or a line break; text a
+/// spreadsheet would take for a formula (starting with = + - @, a tab or a carriage return, and
+/// not a number) written with a leading ' so that it is shown, never run.
 std::string csv_field(const std::string& s);
 
 /// The fields of one line (no line breaks inside quoted fields expected).
