@@ -80,6 +80,23 @@ std::string overrides_json(const YAML::Node& node, const std::string& source,
   return text;
 }
 
+// A list of exactly `count` finite numbers at `where` (`expected` says what it should be).
+std::vector<double> read_numbers(const YAML::Node& n, std::size_t count, const std::string& source,
+                                 const std::string& where, const char* expected) {
+  if (!n || !n.IsSequence() || n.size() != count) throw WorldError(source, where, expected);
+  std::vector<double> v(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    try {
+      v[i] = n[i].as<double>();
+    } catch (const YAML::Exception&) {
+      throw WorldError(source, at, "expected a number");
+    }
+    if (!std::isfinite(v[i])) throw WorldError(source, at, "must be finite");
+  }
+  return v;
+}
+
 // `random_kidnap: {after_s: [a, b], distance_m: [c, d]}` (`where` names it in messages).
 FaultSetting::RandomKidnap read_random_kidnap(const YAML::Node& k, const std::string& source,
                                               const std::string& where) {
@@ -89,23 +106,14 @@ FaultSetting::RandomKidnap read_random_kidnap(const YAML::Node& k, const std::st
     o << x;
     return o.str();
   };
-  // [low, high] within [lowest, highest], each a number.
+  // [low, high] within [lowest, highest].
   auto range = [&](const char* key, double lowest, double highest, double& low, double& high) {
-    const YAML::Node r = k[key];
     const std::string at = where + "." + key;
-    if (!r || !r.IsSequence() || r.size() != 2)
-      throw WorldError(source, at, "expected [low, high]");
-    double v[2];
-    for (int i = 0; i < 2; ++i) {
-      try {
-        v[i] = r[i].as<double>();
-      } catch (const YAML::Exception&) {
-        throw WorldError(source, at + "[" + std::to_string(i) + "]", "expected a number");
-      }
+    const std::vector<double> v = read_numbers(k[key], 2, source, at, "expected [low, high]");
+    for (int i = 0; i < 2; ++i)
       if (!(v[i] >= lowest && v[i] <= highest))
         throw WorldError(source, at + "[" + std::to_string(i) + "]",
                          "must be from " + number(lowest) + " to " + number(highest));
-    }
     if (v[0] > v[1]) throw WorldError(source, at, "low must not exceed high");
     low = v[0], high = v[1];
   };
@@ -162,20 +170,9 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
     body.remove("unmapped_obstacles");
   }
   if (body["charger_map_offset"]) {
-    const YAML::Node o = body["charger_map_offset"];
     const std::string where = field + ".charger_map_offset";
-    if (!o.IsSequence() || o.size() != 3)
-      throw WorldError(source, where, "expected [dx, dy, dyaw] (m, m, rad)");
-    double v[3];
-    for (int i = 0; i < 3; ++i) {
-      try {
-        v[i] = o[i].as<double>();
-      } catch (const YAML::Exception&) {
-        throw WorldError(source, where + "[" + std::to_string(i) + "]", "expected a number");
-      }
-      if (!std::isfinite(v[i]))
-        throw WorldError(source, where + "[" + std::to_string(i) + "]", "must be finite");
-    }
+    const std::vector<double> v = read_numbers(body["charger_map_offset"], 3, source, where,
+                                               "expected [dx, dy, dyaw] (m, m, rad)");
     if (std::hypot(v[0], v[1]) > 0.5 || std::fabs(v[2]) > 0.5)
       throw WorldError(source, where,
                        "more than 0.5 m or 0.5 rad: that is a different charger, not a map error");

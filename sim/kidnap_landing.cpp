@@ -8,8 +8,8 @@
 
 namespace plantsim::sim {
 
-std::optional<geom::Pose2> kidnap_landing(const worlds::World& plant, geom::Vec2 from,
-                                          double min_m, double max_m, std::uint64_t seed) {
+std::optional<geom::Pose2> kidnap_landing(const worlds::World& plant, geom::Vec2 from, double min_m,
+                                          double max_m, std::uint64_t seed) {
   constexpr double kMargin_m = 0.2;  // free floor around the robot's disk
   const double clear = plant.robot.radius_m + kMargin_m;
   std::mt19937_64 rng(seed ^ 0x6b69646e6170ULL);  // "kidnap": apart from the sensors' streams
@@ -25,8 +25,10 @@ std::optional<geom::Pose2> kidnap_landing(const worlds::World& plant, geom::Vec2
         p.y > floor.ymax - clear)
       continue;
     bool free = !geom::in_closed_rect(charger.inflated(clear), p);
-    for (const geom::Rect& r : plant.obstacles) free = free && !geom::in_closed_rect(r.inflated(clear), p);
-    for (const geom::Rect& r : plant.unmapped) free = free && !geom::in_closed_rect(r.inflated(clear), p);
+    for (const geom::Rect& r : plant.obstacles)
+      free = free && !geom::in_closed_rect(r.inflated(clear), p);
+    for (const geom::Rect& r : plant.unmapped)
+      free = free && !geom::in_closed_rect(r.inflated(clear), p);
     if (free) return geom::Pose2{p.x, p.y, yaw};
   }
   return std::nullopt;

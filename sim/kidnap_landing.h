@@ -14,7 +14,7 @@ namespace plantsim::sim {
 
 /// A free pose `min_m` to `max_m` from `from`, drawn with `seed`, or none when 500 draws found
 /// no free floor there.
-std::optional<geom::Pose2> kidnap_landing(const worlds::World& plant, geom::Vec2 from,
-                                          double min_m, double max_m, std::uint64_t seed);
+std::optional<geom::Pose2> kidnap_landing(const worlds::World& plant, geom::Vec2 from, double min_m,
+                                          double max_m, std::uint64_t seed);
 
 }  // namespace plantsim::sim

@@ -293,8 +293,8 @@ void expect_consistent(const std::vector<double>& nees, int runs, const char* wh
   const double share = static_cast<double>(inside) / static_cast<double>(nees.size());
   std::printf("%s: average NEES %.2f (3 is ideal), %.0f %% of %zu scans inside [%.2f, %.2f]\n",
               what, mean, 100 * share, nees.size(), lo, hi);
-  // Measured when written: straight 2.35 average, 73 % inside (a little conservative: the
-  // filter's process-noise floors); circle 3.11, 95 %.
+  // Measured (9aca79f): straight 2.30 average, 69 % inside (a little conservative: the
+  // filter's process-noise floors); circle 3.04, 96 %.
   EXPECT_GE(share, 2.0 / 3.0) << what;
   EXPECT_GT(mean, lo) << what;
   EXPECT_LT(mean, hi) << what;

@@ -118,19 +118,6 @@ def test_bad_input_is_an_input_error_with_the_command_lines_message(source, bina
         plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=lambda o: "fast")
 
 
-def test_a_controllers_exception_ends_the_episode_and_propagates(source):
-    class Stop(Exception):
-        pass
-
-    def boom(obs):
-        if obs.time > 3:
-            raise Stop("at 3 s")
-        return None
-
-    with pytest.raises(Stop):
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=boom)
-
-
 def test_a_batch_from_a_dict_with_and_without_a_python_controller(source, tmp_path):
     scenario = {"name": "py", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "planners": ["vg"],
                 "faults": {"none": {}}, "seeds": 3}
