@@ -25,15 +25,22 @@ bool matches(const GateRule& r, const ConfigurationVerdict& v) {
 }
 
 // HTML's escapes, then what XML also escapes in attributes, and no control characters but tab
-// and newline (XML 1.0 refuses them).
+// and newline, nor the non-characters U+FFFE and U+FFFF (XML 1.0 refuses them all).
 std::string xml_escaped(const std::string& s) {
   std::string out;
-  for (const char c : render::html_escape(s)) {
+  const std::string html = render::html_escape(s);
+  for (std::size_t i = 0; i < html.size(); ++i) {
+    const char c = html[i];
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\'')
+    if (u == 0xEF && i + 2 < html.size() && static_cast<unsigned char>(html[i + 1]) == 0xBF &&
+        (static_cast<unsigned char>(html[i + 2]) & 0xFE) == 0xBE) {
+      out += '?';  // EF BF BE and EF BF BF: U+FFFE, U+FFFF
+      i += 2;
+    } else if (c == '\'') {
       out += "&apos;";
-    else
+    } else {
       out += u < 0x20 && c != '\n' && c != '\t' ? '?' : c;
+    }
   }
   return out;
 }

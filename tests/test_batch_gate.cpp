@@ -118,6 +118,21 @@ TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
   EXPECT_EQ(xml.find("<failure", xml.find("<failure") + 1), std::string::npos) << xml;
 }
 
+// XML 1.0 has no U+FFFE or U+FFFF: a fault so named made junit.xml that no reader parses.
+TEST(Gate, JUnitReportHoldsNoCharacterXmlRefuses) {
+  const std::string name =
+      "wet\xEF\xBF\xBE\xEF\xBF\xBF"
+      "end\x01\xEF\xBF\xBD";
+  const std::vector<std::string> lines = records("plant", "vg", name, 3, 1);
+  Gate gate;
+  gate.min_success = 0.9;
+  const std::string xml = junit_xml("suite", judge_configurations(lines, gate), gate.statistic);
+  EXPECT_EQ(xml.find("\xEF\xBF\xBE"), std::string::npos);
+  EXPECT_EQ(xml.find("\xEF\xBF\xBF"), std::string::npos);
+  EXPECT_EQ(xml.find('\x01'), std::string::npos);
+  EXPECT_NE(xml.find("wet??end?\xEF\xBF\xBD"), std::string::npos) << xml;  // U+FFFD is allowed
+}
+
 class BatchFolders : public test::BatchFolderTest {
  protected:
   std::string two_worlds(const std::string& name, bool reversed, int seeds = 2) {
