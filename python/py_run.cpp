@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/episode_outputs.h"
+#include "batch/random_start.h"
 #include "episode/episode_config_json.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
@@ -18,6 +19,8 @@
 #include "robot/travel_steered.h"
 #include "sim/episode.h"
 #include "util/atomic_file.h"
+#include "worlds/world_fingerprint.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim::python {
 namespace {
@@ -238,10 +241,43 @@ std::string callable_name(const py::object& f) {
 
 namespace {
 
+/// The world with the start `start` asks for: its own ("world"), the batch's for this seed
+/// ("random"), or a pose [x, y, yaw].
+PyWorld with_start(const PyWorld& w, const py::object& start, std::uint64_t seed) {
+  if (py::isinstance<py::str>(start)) {
+    const std::string how = start.cast<std::string>();
+    if (how == "world") return w;
+    if (how != "random")
+      throw std::invalid_argument("start must be \"world\", \"random\" or [x, y, yaw], got '" +
+                                  how + "'");
+    auto vg = planner::make_planner("vg", planner::planner_input(*w.world, true));
+    const auto pose = batch::random_start(*w.world, *vg, seed, worlds::world_fingerprint(*w.world));
+    if (!pose)
+      throw std::invalid_argument(w.world->name + ": no free start with a path to the charger");
+    auto moved = std::make_shared<worlds::World>(*w.world);
+    moved->start = *pose;
+    return {moved};
+  }
+  std::vector<double> v;
+  try {
+    v = start.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+  }
+  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    throw std::invalid_argument(
+        "start must be \"world\", \"random\" or [x, y, yaw] (three finite "
+        "numbers), got " +
+        py::repr(start).cast<std::string>());
+  auto moved = std::make_shared<worlds::World>(*w.world);
+  moved->start = geom::Pose2{v[0], v[1], v[2]};
+  worlds::validate_world(*moved);  // a start in an obstacle or off the floor is refused
+  return {moved};
+}
+
 PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& config_arg,
           const py::object& controller, const py::object& docking, const std::string& planner_name,
-          const py::object& out, const std::string& controller_name) {
-  const PyWorld w = world_argument(world_arg);
+          const py::object& out, const std::string& controller_name, const py::object& start) {
+  const PyWorld w = with_start(world_argument(world_arg), start, seed);
   sim::EpisodeConfig config = config_argument(config_arg);
   config.seed = seed;
   const std::vector<std::string> names = planner::planner_names();
@@ -321,10 +357,12 @@ void bind_run(py::module_& m) {
   m.def("run", &run, py::arg("world"), py::kw_only(), py::arg("seed") = 1,
         py::arg("config") = py::none(), py::arg("controller") = py::none(),
         py::arg("docking") = py::none(), py::arg("planner") = "vg", py::arg("out") = py::none(),
-        py::arg("controller_name") = "",
+        py::arg("controller_name") = "", py::arg("start") = "world",
         R"(Simulates one docking episode, as `plantsim run WORLD` does.
 
-world: a World or a world file's path. seed: the noise seed. config: a dict or a JSON file with
+world: a World or a world file's path. seed: the noise seed. start: "world" (the world's own
+start, the default), "random" (the start `plantsim batch` draws for this world and seed: the
+same episode as the batch's with `starts: random`), or [x, y, yaw]. config: a dict or a JSON file with
 the keys of docs/config.md. planner: a name from planners().
 controller: f(observation) -> (v m/s, omega rad/s), or None to let plantsim command that period;
 called at the control rate (config control_period_steps, 30 Hz by default) while plantsim's phase

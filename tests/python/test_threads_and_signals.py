@@ -166,3 +166,20 @@ def test_a_resumed_batch_counts_success_over_the_whole_folder(source, tmp_path):
     again = plantsim.batch(scenario, tmp_path / "b", figures=False)
     assert again["ran"] == 0 and again["skipped"] == 3
     assert again["succeeded"] == first["succeeded"] == 3 and again["succeeded_now"] == 0
+
+
+def test_run_starts_where_the_batch_starts_the_same_seed(data, tmp_path):
+    # run(start="random") is the batch's episode of that seed (starts: random, no fault); a pose
+    # is a start of the caller's; anything else is refused.
+    world = str(data / "worlds/world_N10.json")
+    plantsim.batch({"name": "starts", "worlds": [world], "seeds": 2}, tmp_path / "b", figures=False)
+    for line in (tmp_path / "b" / "episodes.jsonl").read_text().splitlines():
+        record = json.loads(line)
+        run = plantsim.run(world, seed=record["seed"], start="random")
+        assert run.trajectory[0, 1:3] == pytest.approx(record["start"][:2], abs=1e-5)
+        assert run.summary["time_s"] == record["time_s"]
+        assert run.docked == record["succeeded"]
+    assert plantsim.run(world, start=[2.0, 2.0, 0.5]).trajectory[0, 1:4] == pytest.approx([2, 2, 0.5], abs=1e-5)
+    for bad in ("nowhere", [1, 2], [1, 2, float("nan")]):
+        with pytest.raises(plantsim.InputError, match="start must be"):
+            plantsim.run(world, start=bad)
