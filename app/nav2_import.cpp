@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "episode/episode_config_json.h"
@@ -122,7 +124,16 @@ void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string
   const bool scaled =
       !c["use_velocity_scaled_lookahead_dist"] ||
       im.flag(c["use_velocity_scaled_lookahead_dist"], w + ".use_velocity_scaled_lookahead_dist");
-  im.map(c, w, "desired_linear_vel", "tracking.max_linear_speed_mps");
+  // Today's RPP names the cruise speed max_linear_vel (earlier releases desired_linear_vel); the
+  // newer wins when a file holds both.
+  if (c["max_linear_vel"]) {
+    im.map(c, w, "max_linear_vel", "tracking.max_linear_speed_mps");
+    im.not_mapped(c, w, "desired_linear_vel", "superseded by max_linear_vel (its newer name)");
+  } else {
+    im.map(c, w, "desired_linear_vel", "tracking.max_linear_speed_mps",
+           "the older name of max_linear_vel");
+  }
+  im.map(c, w, "max_angular_vel", "tracking.max_angular_speed_radps");
   if (scaled) {
     im.map(c, w, "lookahead_time", "tracking.lookahead_time_s");
     im.map(c, w, "min_lookahead_dist", "tracking.lookahead_min_m");
@@ -163,7 +174,8 @@ void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string
                 rotate ? "on: rotate_to_heading_min_angle is used"
                        : "off: the threshold is set to pi (never rotates in place)");
   im.map(c, w, "rotate_to_heading_angular_vel", "tracking.rotate_in_place_speed_radps");
-  im.map(c, w, "max_angular_accel", "traction.max_angular_accel_radps2");
+  im.map(c, w, "max_angular_accel", "traction.max_angular_accel_radps2",
+         "meaning changed: plantsim limits turn-rate growth only while it slows after a slip");
   im.map(c, w, "max_robot_pose_search_dist", "tracking.progress_window_m");
   for (const char* k : {"use_cost_regulated_linear_velocity_scaling", "cost_scaling_dist",
                         "cost_scaling_gain", "inflation_cost_scaling_factor"})
@@ -272,6 +284,57 @@ void docking_server(Importer& im, const YAML::Node& root) {
   im.rest(s, w, "a docking_server setting plantsim does not model");
 }
 
+// The velocity smoother's caps bound what reaches the wheels: its forward speed and
+// acceleration are the robot's own limits in plantsim (the world file), its turn rate caps the
+// controller's.
+void velocity_smoother(Importer& im, const YAML::Node& root) {
+  const YAML::Node s = Importer::params(root["velocity_smoother"]);
+  if (!s) return;
+  const std::string w = "velocity_smoother";
+  auto component = [&](const char* key, std::size_t i) -> std::optional<double> {
+    const YAML::Node v = s[key];
+    if (!v || !v.IsSequence() || v.size() != 3) return std::nullopt;
+    return im.number(v[i], w + "." + key + "[" + std::to_string(i) + "]");
+  };
+  if (const auto wz = component("max_velocity", 2)) {
+    if (!im.out().config.contains("tracking") ||
+        !im.out().config["tracking"].contains("max_angular_speed_radps") ||
+        *wz < im.out().config["tracking"]["max_angular_speed_radps"].get<double>())
+      im.out().config["tracking"]["max_angular_speed_radps"] = *wz;
+  }
+  im.world_field(
+      s, w, "max_velocity", "robot.max_speed_mps",
+      "its x: the robot's top speed (plantsim keeps it in the world file); its theta "
+      "caps tracking.max_angular_speed_radps (the lower of it and RPP's max_angular_vel)");
+  im.world_field(
+      s, w, "max_accel", "robot.max_accel_mps2",
+      "its x: the robot's acceleration (world file); braking is never limited in plantsim");
+  im.rest(s, w,
+          "a velocity_smoother setting plantsim does not model (it commands the wheels directly)");
+}
+
+// Sections plantsim reads nothing from, each parameter listed with why.
+void unmodelled_sections(Importer& im, const YAML::Node& root) {
+  static const std::map<std::string, std::string> why = {
+      {"amcl", "plantsim localises with its own EKF against its map (ekf.* in docs/config.md)"},
+      {"planner_server", "plantsim plans with its own planners (--planner; vg by default)"},
+      {"collision_monitor", "plantsim's arc check and bumper guard stop the robot (docking.*)"},
+      {"behavior_server", "plantsim's recoveries are its back-off, replans and settling"},
+      {"bt_navigator", "plantsim's travel and docking sequence is fixed (no behaviour tree)"},
+      {"smoother_server", "plantsim follows its planner's path as planned"},
+      {"waypoint_follower", "an episode drives to one charger"},
+      {"map_server", "worlds load maps with plantsim run WORLD.yaml (docs/world_format.md)"}};
+  const std::set<std::string> read = {"controller_server", "docking_server", "velocity_smoother",
+                                      "local_costmap", "global_costmap"};
+  for (const auto& kv : root) {
+    const std::string name = kv.first.Scalar();
+    if (read.count(name)) continue;
+    const auto it = why.find(name);
+    im.rest(Importer::params(kv.second), name,
+            it != why.end() ? it->second : "a node plantsim does not model");
+  }
+}
+
 void costmaps(Importer& im, const YAML::Node& root) {
   for (const char* name : {"local_costmap", "global_costmap"}) {
     YAML::Node node = root[name];
@@ -305,7 +368,9 @@ Nav2Import import_nav2_params(const std::string& path) {
   try {
     controller_server(im, root);
     docking_server(im, root);
+    velocity_smoother(im, root);
     costmaps(im, root);
+    unmodelled_sections(im, root);
   } catch (const YAML::Exception& e) {
     throw worlds::WorldError(path, "", std::string("unexpected structure: ") + e.what());
   }

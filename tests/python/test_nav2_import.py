@@ -57,3 +57,23 @@ def test_not_a_nav2_file(tmp_path, binary):
     f.write_text("controller_server:\n  ros__parameters:\n    FollowPath:\n      plugin: nav2_regulated_pure_pursuit_controller::RegulatedPurePursuitController\n      desired_linear_vel: fast\n")
     cli = subprocess.run([binary, "nav2-import", str(f)], capture_output=True, text=True)
     assert cli.returncode == 2 and "desired_linear_vel" in cli.stderr
+
+
+def test_todays_names_the_smoothers_caps_and_every_section_listed(source):
+    # Issue 50: RPP's max_linear_vel (not desired_linear_vel) is the cruise speed, max_angular_vel
+    # and the smoother's theta cap bound the turn rate (the lower wins), and sections plantsim
+    # does not model are listed parameter by parameter, not skipped.
+    im = plantsim.nav2_import(str(source / "tests/fixtures/nav2/today_rpp_smoother.yaml"))
+    t = im["config"]["tracking"]
+    assert t["max_linear_speed_mps"] == 0.45
+    assert t["max_angular_speed_radps"] == 1.0
+    why = {p["nav2"]: p["note"] for p in im["not_mapped"]}
+    assert "superseded by max_linear_vel" in why["controller_server.FollowPath.desired_linear_vel"]
+    assert "EKF" in why["amcl.alpha1"] and "amcl.max_particles" in why
+    assert "bt_navigator.global_frame" in why
+    assert "velocity_smoother.max_decel" in why
+    fields = {p["nav2"]: p["plantsim"] for p in im["world_fields"]}
+    assert fields["velocity_smoother.max_velocity"] == "world file: robot.max_speed_mps"
+    assert fields["velocity_smoother.max_accel"] == "world file: robot.max_accel_mps2"
+    mapped = {p["nav2"]: p["note"] for p in im["mapped"]}
+    assert "meaning changed" in mapped["controller_server.FollowPath.max_angular_accel"]
