@@ -3,6 +3,7 @@
 #include "batch/batch_merge.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -109,12 +110,38 @@ MergedScenario find_scenario(const ShardRecords& s) {
   return out;
 }
 
+/// Without the scenario file the records still tell its episodes: every id is world | planner |
+/// controller | fault | seed, and a scenario runs every combination of its lists. More
+/// combinations of the parts the records name than the scenario's episodes means a record of
+/// another run stands among them (a foreign id counted in place of a missing one).
+void check_ids_by_their_parts(const ShardRecords& s) {
+  std::array<std::set<std::string>, 5> parts;
+  for (const auto& [id, entry] : s.by_id) {
+    std::size_t begin = 0;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      const std::size_t end = k + 1 < parts.size() ? id.find('|', begin) : id.size();
+      if (end == std::string::npos)
+        throw std::invalid_argument("merge: episode '" + id + "' is not an id a batch writes");
+      parts[k].insert(id.substr(begin, end - begin));
+      begin = end + 1;
+    }
+  }
+  double combinations = 1;
+  for (const auto& p : parts) combinations *= static_cast<double>(p.size());
+  if (combinations > static_cast<double>(s.expected))
+    throw std::invalid_argument(
+        "merge: the records name " + std::to_string(static_cast<long long>(combinations)) +
+        " combinations of world, planner, controller, fault and seed, more than the scenario's " +
+        std::to_string(s.expected) + " episodes: a record of another run stands among them");
+}
+
 /// Refuses a record foreign to the scenario, and missing episodes unless `allow_partial`.
 void check_against_scenario(const ShardRecords& s, const MergedScenario& scenario,
                             bool allow_partial) {
   std::set<std::string_view> scenario_ids;
   for (const Episode& e : scenario.episodes) scenario_ids.insert(e.id);
-  if (!scenario_ids.empty())  // else only their count is checked
+  if (scenario_ids.empty()) check_ids_by_their_parts(s);
+  if (!scenario_ids.empty())
     for (const auto& [id, entry] : s.by_id)
       if (!scenario_ids.count(id))
         throw std::invalid_argument("merge: episode '" + id +

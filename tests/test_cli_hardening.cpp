@@ -257,6 +257,26 @@ TEST_F(ShardFolders, AMergeRefusesConflictingCopiesAndForeignOrMissingEpisodes) 
   EXPECT_NE(o.err.find("are missing ("), std::string::npos) << o.err;
 }
 
+// Issue 51: with the scenario file gone (moved, changed, or a Python dict's temporary), the
+// records' own ids still tell a foreign one among them: a seed the scenario never had beside its
+// own episodes (merged before as "5 of 4").
+TEST_F(ShardFolders, AMergeWithoutItsScenarioFileStillRefusesAForeignEpisode) {
+  auto b = lines("b");
+  nlohmann::json foreign = nlohmann::json::parse(b[1]);
+  const std::string id = foreign["id"].get<std::string>();
+  foreign["id"] = id.substr(0, id.rfind('|')) + "|999";
+  foreign["seed"] = 999;
+  put("b", {b[0], b[1], foreign.dump()});
+  fs::remove(scenario_);
+  const Outcome o = run("merge a b --out m");
+  EXPECT_EQ(o.exit_code, 2) << o.out << o.err;
+  EXPECT_NE(o.err.find("a record of another run"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "m" / "episodes.jsonl"));
+  // The shards as they were merge without it.
+  put("b", b);
+  EXPECT_EQ(run("merge a b --out m2").exit_code, 0);
+}
+
 TEST_F(ShardFolders, OutputFoldersAreNeverAUsersNorReachedThroughLinks) {
   // A folder holding a user's own report.html and notes: refused, both untouched.
   fs::create_directories(dir_ / "mine");
