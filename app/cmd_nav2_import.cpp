@@ -19,6 +19,7 @@ std::function<int()> add_nav2_import_command(CLI::App& app) {
   cmd->add_option("--out", *out, "Write the config here (default: stdout)");
   return [params, out]() {
     refuse_output_over_input(*out, *params);
+    if (!out->empty()) util::check_output_file(*out, "--out");  // before any work: exit 2
     const Nav2Import im = import_nav2_params(*params);
     const std::string text = im.config.dump(2) + "\n";
     std::cerr << nav2_report(im);

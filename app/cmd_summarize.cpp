@@ -215,6 +215,9 @@ struct SummarizeOptions {
 };
 
 int summarize(const SummarizeOptions& opt) {
+  // Before any work: an output that cannot be written is bad input (exit 2), not a failure.
+  if (!opt.out.empty()) util::check_output_file(opt.out, "--out");
+  if (!opt.html.empty()) util::check_output_file(opt.html, "--html");
   std::string md =
       "# plantsim results\n\n| world | planner | travel | status | position error (mm) | "
       "heading error (deg) | collisions | retries | stops | replans | time (s) | planned (m) | "

@@ -144,5 +144,20 @@ TEST_F(Cli, NotANumberIsRefusedByEveryNumberOptionBeforeAnyWork) {
   EXPECT_FALSE(fs::exists(dir_ / "b"));
 }
 
+TEST_F(Cli, AnOutputInAFolderThatDoesNotExistIsBadInputBeforeAnyWork) {
+  const std::string nav2 = test::source_file("tests/fixtures/nav2/rpp_readme.yaml");
+  ASSERT_EQ(run("run " + kCorridor + " --out r", 120).exit_code, 0);
+  for (const std::string& args : {std::string("generate --out missing/x.json"),
+                                  "vary " + kCorridor + " --unmapped 1 --out missing/v.json",
+                                  "nav2-import " + nav2 + " --out missing/c.json",
+                                  std::string("summarize r --out missing/s.md"),
+                                  std::string("summarize r --html missing/index.html")}) {
+    const Outcome o = run(args, 60);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.err;  // was 1, after the work
+    EXPECT_NE(o.err.find("does not exist"), std::string::npos) << args << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "missing"));
+}
+
 }  // namespace
 }  // namespace plantsim
