@@ -135,10 +135,12 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     no_lidar.lidar.enabled = false;
     sim::EpisodeConfig oracle = config;
     oracle.perception.mode = robot::PerceptionMode::kOracle;
+    sim::EpisodeConfig particles = config;
+    particles.perception.estimator = robot::EstimatorKind::kParticles;
 
     // Best of the repetitions for each (the least disturbed by the machine).
     double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0,
-           best_drive = 0;
+           best_drive = 0, best_particles = 0;
     BeamCost best_beam{1e300, 1e300};
     for (int r = 0; r < reps; ++r) {
       const EpisodeTiming e = time_episode(w, config);
@@ -150,6 +152,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
       best_with_plan = std::max(best_with_plan, e.steps_per_s_with_plan);
       best_no_lidar = std::max(best_no_lidar, time_episode(w, no_lidar).steps_per_s);
       best_oracle = std::max(best_oracle, time_episode(w, oracle).steps_per_s);
+      best_particles = std::max(best_particles, time_episode(w, particles).steps_per_s);
       best_bare = std::max(best_bare, replay_steps_per_s(w, e.result, config.step));
       const BeamCost beam = beam_cost(w, e.result, config.lidar);
       best_beam = {std::min(best_beam.fan_ns, beam.fan_ns),
@@ -178,6 +181,10 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     // the episode with it against the same episode without it.
     report("sim", {name + "/episode_steps_per_s_with_lidar", best_full, "steps/s"},
            Measure{name + "/episode_steps_per_s_lidar_off", best_no_lidar, "steps/s"});
+    // The particle filter in place of the EKF, the same episode (issue 49: at most twice the
+    // EKF's cost, a ratio of 0.5 or more).
+    report("sim", {name + "/episode_steps_per_s_particles", best_particles, "steps/s"},
+           Measure{name + "/episode_steps_per_s_ekf", best_full, "steps/s"});
     // One beam of a scan, cast exactly as the lidar casts it, against Box2D's ray cast (ratio < 1:
     // cheaper).
     report("sim", {name + "/scan_ns_per_beam", best_beam.fan_ns, "ns"},

@@ -249,12 +249,30 @@ const std::vector<Field>& fields() {
                            kMaxParameter),
       PLANTSIM_PARAM("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0),
       PLANTSIM_PARAM_ABOVE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("perception", perception.global_match_sigma_m, "global_match_sigma_m",
-                           0.0, 100.0),
-      PLANTSIM_PARAM("perception", perception.global_match_period_s, "global_match_period_s", 0.0,
-                     100.0),
-      PLANTSIM_PARAM("perception", perception.global_match_max_window_m,
+      PLANTSIM_PARAM_ABOVE("perception", perception.global.global_match_sigma_m,
+                           "global_match_sigma_m", 0.0, 100.0),
+      PLANTSIM_PARAM("perception", perception.global.global_match_period_s, "global_match_period_s",
+                     0.0, 100.0),
+      PLANTSIM_PARAM("perception", perception.global.global_match_max_window_m,
                      "global_match_max_window_m", 0.1, 100.0),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.kld_error, "kld_error", 0.0, 1.0),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.kld_z, "kld_z", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.bin_xy_m, "bin_xy_m", 0.0, 100.0),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.bin_yaw_rad, "bin_yaw_rad", 0.0, M_PI),
+      PLANTSIM_PARAM("particles", perception.particles.z_hit, "z_hit", 0.0, 1.0),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.z_rand, "z_rand", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.update_min_m, "update_min_m", 0.0, 100.0),
+      PLANTSIM_PARAM("particles", perception.particles.update_min_rad, "update_min_rad", 0.0, M_PI),
+      PLANTSIM_PARAM("particles", perception.particles.alpha_slow, "alpha_slow", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.alpha_fast, "alpha_fast", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.jitter_m, "jitter_m", 0.0, 10.0),
+      PLANTSIM_PARAM("particles", perception.particles.jitter_rad, "jitter_rad", 0.0, M_PI),
+      PLANTSIM_PARAM("particles", perception.particles.contradicted_agreement,
+                     "contradicted_agreement", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.reseed_fraction, "reseed_fraction", 0.0,
+                     0.9),
+      PLANTSIM_PARAM_ABOVE("particles", perception.particles.reseed_tile_m, "reseed_tile_m", 0.0,
+                           50.0),
       PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0),
   };
   return table;
@@ -276,6 +294,11 @@ const std::vector<Field>& int_fields() {
       PLANTSIM_PARAM("ekf", perception.ekf.nis_window, "nis_window", 1, 1000),
       PLANTSIM_PARAM("ekf", perception.ekf.lost_failed_matches, "lost_failed_matches", 1, 100000),
       PLANTSIM_PARAM("ekf", perception.ekf.gyro_min_samples, "gyro_min_samples", 1, 100000),
+      PLANTSIM_PARAM("particles", perception.particles.min_particles, "min_particles", 1, 100000),
+      PLANTSIM_PARAM("particles", perception.particles.max_particles, "max_particles", 1, 100000),
+      PLANTSIM_PARAM("particles", perception.particles.beams, "beams", 1, 10000),
+      PLANTSIM_PARAM("particles", perception.particles.reseed_rings, "reseed_rings", 1, 10),
+      PLANTSIM_PARAM("particles", perception.particles.seed, "seed", 0, 1000000000),
   };
   return table;
 }
@@ -386,6 +409,16 @@ void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& 
     else
       throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
   }
+  if (const json* v = lookup("localization", "estimator")) {
+    const std::string e = v->is_string() ? v->get<std::string>() : "";
+    if (e == "ekf")
+      c.perception.estimator = robot::EstimatorKind::kEkf;
+    else if (e == "particles")
+      c.perception.estimator = robot::EstimatorKind::kParticles;
+    else
+      throw worlds::WorldError(source, "localization.estimator",
+                               "expected \"ekf\" or \"particles\"");
+  }
   if (const json* v = lookup("", "travel")) {
     const std::string t = v->is_string() ? v->get<std::string>() : "";
     if (t == "path")
@@ -418,6 +451,8 @@ void check_consistency(const std::string& source, const EpisodeConfig& c) {
     throw worlds::WorldError(source, "localization.period_s",
                              "true-pose fixes exist only in perception.mode \"oracle\" (sensors "
                              "mode localises with the EKF)");
+  if (c.perception.particles.min_particles > c.perception.particles.max_particles)
+    throw worlds::WorldError(source, "particles.min_particles", "must not exceed max_particles");
   if (c.lidar.min_range_m >= c.lidar.max_range_m)
     throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");
   if (c.tracking.lookahead_min_m > c.tracking.lookahead_max_m)
@@ -468,6 +503,7 @@ std::string default_config_json() {
   for (const Field& f : int_fields()) j[f.section][f.name] = static_cast<int>(f.get(c));
   for (const Field& f : bool_fields()) j[f.section][f.name] = f.get(c) != 0;
   j["perception"]["mode"] = std::string(to_string(c.perception.mode));
+  j["localization"]["estimator"] = std::string(to_string(c.perception.estimator));
   j["travel"] = std::string(to_string(c.travel));
   j["seed"] = c.seed;
   return j.dump(2) + "\n";

@@ -7,21 +7,12 @@
 
 namespace plantsim::robot {
 
-std::string_view to_string(LocalizationHealth h) {
-  switch (h) {
-    case LocalizationHealth::kOk:
-      return "ok";
-    case LocalizationHealth::kDegraded:
-      return "degraded";
-    case LocalizationHealth::kLost:
-      return "lost";
-  }
-  return "unknown";
-}
-
 EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
                            const MapRaycaster& map)
-    : p_(params), map_(map) {
+    : p_(params),
+      range_learnt_(params.range_learning_rate),
+      gyro_learnt_(params.gyro_learning_rate),
+      map_(map) {
   x_ << initial_pose.x, initial_pose.y, initial_pose.yaw, 0.0;
   P_.setZero();
   P_.diagonal() << p_.initial_position_sigma_m * p_.initial_position_sigma_m,
@@ -30,29 +21,13 @@ EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
       p_.initial_bias_sigma_radps * p_.initial_bias_sigma_radps;
 }
 
-namespace {
-
-// The k-th sample's weight in a learnt noise: the plain mean of the first ones, then a moving
-// average that forgets at `rate` (a sensor that degrades during the run is followed).
-double learning_weight(double rate, int k) { return std::max(rate, 1.0 / std::max(k, 1)); }
-
-// A learnt noise replaces the told one only when clearly above it: an estimate from a few
-// hundred residuals scatters by some per cent about the truth, and the larger of the two
-// alone would be biased above a told value that is right.
-constexpr double kClearlyAbove = 1.2;
-
-}  // namespace
-
 double EkfLocalizer::range_sigma_m() const {
-  if (!p_.learn_noise) return p_.range_sigma_m;
-  const double learnt = std::sqrt(range_var_learnt_);
-  return learnt > kClearlyAbove * p_.range_sigma_m ? learnt : p_.range_sigma_m;
+  return p_.learn_noise ? range_learnt_.sigma(p_.range_sigma_m) : p_.range_sigma_m;
 }
 
 double EkfLocalizer::gyro_noise_radps() const {
-  if (!p_.learn_noise || gyro_samples_ < p_.gyro_min_samples) return p_.gyro_noise_radps;
-  const double learnt = std::sqrt(gyro_var_learnt_);
-  return learnt > kClearlyAbove * p_.gyro_noise_radps ? learnt : p_.gyro_noise_radps;
+  return p_.learn_noise ? gyro_learnt_.variance().sigma(p_.gyro_noise_radps, p_.gyro_min_samples)
+                        : p_.gyro_noise_radps;
 }
 
 double EkfLocalizer::position_sigma_m() const {
@@ -62,7 +37,7 @@ double EkfLocalizer::position_sigma_m() const {
 
 void EkfLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) {
   if (dt_s <= 0) return;
-  ++predicts_since_rest_;  // standstill() right after this one: two readings in a row at rest
+  gyro_learnt_.reading();  // standstill() right after this one: two readings in a row at rest
   const double turn = (gyro_yaw_rate_radps - x_(3)) * dt_s;
   const double mid = x_(2) + 0.5 * turn;
   const double c = std::cos(mid), s = std::sin(mid);
@@ -208,15 +183,7 @@ void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
   // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading. At rest two
   // readings in a row differ by the noise alone (the bias cancels, whatever its estimate): half
   // their squared difference is learnt as the noise's variance.
-  if (p_.learn_noise && rest_reading_ && predicts_since_rest_ == 1) {
-    const double d = gyro_yaw_rate_radps - *rest_reading_;
-    const double v = 0.5 * d * d;
-    ++gyro_samples_;
-    gyro_var_learnt_ +=
-        learning_weight(p_.gyro_learning_rate, gyro_samples_) * (v - gyro_var_learnt_);
-  }
-  rest_reading_ = gyro_yaw_rate_radps;
-  predicts_since_rest_ = 0;
+  if (p_.learn_noise) gyro_learnt_.at_rest(gyro_yaw_rate_radps);
   const double r = gyro_noise_radps() * gyro_noise_radps();
   const double s = P_(3, 3) + r;
   if (!(s > 0)) return;
@@ -373,7 +340,7 @@ double EkfLocalizer::correct(const LidarScan& scan) {
     // told value is fitted again with it, so that the filter is never more confident than its
     // own first scans allow (a told value three times too small made it so for seconds).
     constexpr int kWarmUpScans = 10;
-    if (range_scans_learnt_ < kWarmUpScans && learnt > kClearlyAbove * kClearlyAbove * r_var_) {
+    if (range_learnt_.samples() < kWarmUpScans && learnt > kClearlyAbove * kClearlyAbove * r_var_) {
       r_var_ = learnt;
       f = fit(scan, x0, P0, P0_inv, stride);
       learnt = accepted(f) ? post_fit_variance(scan, f.x, P0) : -1;
@@ -396,9 +363,7 @@ double EkfLocalizer::correct(const LidarScan& scan) {
     failed_matches_ = 0;
     check_consistency(x0, P0, f.kept);
     if (learnt >= 0) {  // learnt from the scans the map explained only
-      ++range_scans_learnt_;
-      range_var_learnt_ += learning_weight(p_.range_learning_rate, range_scans_learnt_) *
-                           (learnt - range_var_learnt_);
+      range_learnt_.add(learnt);
     }
   } else if (f.kept > 0 || terms.used < 3) {
     ++failed_matches_;

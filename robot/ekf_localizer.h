@@ -21,6 +21,8 @@
 #include "geometry/vec2.h"
 #include "robot/beam_directions.h"
 #include "robot/map_raycaster.h"
+#include "robot/noise_learning.h"
+#include "robot/pose_estimator.h"
 #include "robot/readings.h"
 
 namespace plantsim::robot {
@@ -66,9 +68,6 @@ struct EkfParams {
   double gyro_learning_rate = 0.02;  ///< weight of each reading at rest
   int gyro_min_samples = 15;         ///< readings at rest before the learnt gyro noise counts
 };
-
-enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
-std::string_view to_string(LocalizationHealth h);
 
 class EkfLocalizer {
  public:
@@ -148,12 +147,8 @@ class EkfLocalizer {
   /// The range noise variance the residuals at `x` show (robust; negative with too few beams).
   double post_fit_variance(const LidarScan& scan, const State& x, const Covariance& P0);
   EkfParams p_;
-  double range_var_learnt_ = 0;  // EWMA of the accepted scans' matched variance; 0: none yet
-  int range_scans_learnt_ = 0;   // accepted scans in it
-  double gyro_var_learnt_ = 0;   // EWMA of squared rate residuals at rest
-  int gyro_samples_ = 0;
-  std::optional<double> rest_reading_;  // the gyro's last reading at rest
-  int predicts_since_rest_ = 0;
+  LearntVariance range_learnt_;  // the accepted scans' post-fit variance
+  GyroRestNoise gyro_learnt_;
   // Scratch: each used beam's innovation and predicted spread H P0 H' of the last scan_terms call.
   std::vector<std::pair<double, double>> residuals_;
   double r_var_ = 0;             // the range variance of the scan being matched

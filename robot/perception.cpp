@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geometry/predicates.h"
+#include "robot/ekf_estimator.h"
 
 namespace plantsim::robot {
 namespace {
@@ -44,6 +45,14 @@ std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::
   return out;
 }
 
+std::unique_ptr<PoseEstimator> make_estimator(const worlds::World& map,
+                                              const MapRaycaster& raycaster,
+                                              const PerceptionParams& p) {
+  if (p.estimator == EstimatorKind::kParticles)
+    return std::make_unique<ParticleLocalizer>(map, raycaster, p.ekf, p.global, p.particles);
+  return std::make_unique<EkfEstimator>(map, raycaster, p.ekf, p.global);
+}
+
 }  // namespace
 
 std::string_view to_string(PerceptionMode m) {
@@ -54,7 +63,7 @@ Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
     : map_(map),
       p_(params),
       raycaster_(map),
-      ekf_(params.ekf, map.start, raycaster_),
+      estimator_(make_estimator(map, raycaster_, params)),
       tracker_(params.tracker),
       layer_(params.layer) {
   now_.pose = map.start;
@@ -80,7 +89,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   // noise moves a little with every scan.
   const double explained_margin =
       std::max(p_.tracker.unexplained_margin_m,
-               0.01 * std::ceil(100.0 * p_.explained_sigmas * ekf_.range_sigma_m()));
+               0.01 * std::ceil(100.0 * p_.explained_sigmas * estimator_->range_sigma_m()));
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i];
@@ -120,108 +129,6 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   }
 }
 
-// A measured pose within this normalised distance of the estimate (chi-square, 3 degrees of
-// freedom, 0.999) updates it; farther, it is a look-alike the window happened to hold.
-constexpr double kPoseGateChi2 = 16.27;
-
-// Fewer beams than this that can confirm or contradict a pose (a mapped surface in range):
-// no judgement either way.
-constexpr int kMinJudgingBeams = 10;
-
-std::optional<double> Perceiver::agreement(const LidarScan& scan, const geom::Pose2& pose) const {
-  const geom::Pose2 sensor = geom::compose(pose, scan.mount);
-  const std::size_t n = scan.ranges.size(), stride = std::max<std::size_t>(1, n / 90);
-  int agree = 0, beams = 0;
-  for (std::size_t i = 0; i < n; i += stride) {
-    if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
-    const auto hit =
-        raycaster_.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
-    // A return short of the mapped surface, or where the map has none in range, may be
-    // something the map lacks (a box, a person): it neither confirms nor contradicts the pose.
-    // Only a beam that passes where the map has a surface contradicts it. (Counted against the
-    // pose, a box the map lacks in an open yard turned a right estimate into a lost one as the
-    // robot came up to it.)
-    if (scan.valid(i) && (!hit || scan.ranges[i] < hit->range_m - p_.verify_tolerance_m)) continue;
-    // A surface the map puts at the edge of the lidar's range may read as a return or as none
-    // with a few centimetres of error in the pose: such a beam judges nothing. (On open ground
-    // most of the map in range is a far wall at that edge: counted, a pose off by half a metre
-    // would turn dozens of beams from "nothing in range" to "a wall", or back.)
-    if (hit && hit->range_m > scan.max_range_m - p_.verify_tolerance_m) continue;
-    // No return where the map has nothing in range agrees with every pose on open ground: it
-    // judges nothing. (Counted, an estimate metres off in a yard read 95 % "agreement".)
-    if (!scan.valid(i) && !hit) continue;
-    ++beams;
-    agree += scan.valid(i) && std::fabs(scan.ranges[i] - hit->range_m) <= p_.verify_tolerance_m;
-  }
-  if (beams < kMinJudgingBeams) return std::nullopt;
-  return static_cast<double>(agree) / beams;
-}
-
-bool Perceiver::relocalize(const LidarScan& scan) {
-  const double sigma = ekf_.position_sigma_m();
-  if (sigma <= p_.global_match_sigma_m) {
-    unmatched_ = false;
-    return true;
-  }
-  const bool local_ok = sigma <= p_.local_update_max_sigma_m;
-  if (scan.t_s + 1e-9 < next_match_s_) return local_ok;
-  next_match_s_ = scan.t_s + p_.global_match_period_s;
-  if (!matcher_) matcher_.emplace(map_, p_.matcher);
-  const MatchWindow window{std::clamp(3.0 * sigma, 0.5, p_.global_match_max_window_m),
-                           std::clamp(3.0 * ekf_.yaw_sigma_rad(), 0.05, M_PI)};
-  int returns = 0;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) returns += scan.valid(i);
-  if (returns < p_.global_match_min_returns) return local_ok;  // open ground: nothing to match
-  const std::optional<ScanMatch> m = matcher_->match(scan, ekf_.pose(), window);
-  if (!m) return local_ok;
-  if (m->score * returns < p_.global_match_min_returns) {
-    // Even at its best pose the scan has too few returns on the map to judge by (what it sees
-    // is mostly things the map lacks: unmapped boxes, people, on open ground): no evidence
-    // either way. It goes on, as on open ground.
-    unmatched_ = false;
-    return local_ok;
-  }
-  // Confirmed: enough beams read what the map predicts from the pose; contradicted: enough pass
-  // where it has surfaces; neither: too few beams meet a mapped surface to tell.
-  auto confirmed = [&](const std::optional<double>& a) { return a && *a >= p_.verify_agreement; };
-  const std::optional<double> agree = agreement(scan, m->pose);
-  const bool contradicted = agree && *agree < p_.verify_agreement;
-  const bool placed = m->accepted && !contradicted;
-  // Not placed, yet nothing contradicts the estimate: the returns fit the map well in more than
-  // one place of the window (a long wall seen alone), or their fit is weak only because many
-  // fall on things the map lacks while the best pose reads, beam by beam, what the map predicts
-  // (boxes beside the robot in an open yard), or the estimate itself reads what the map predicts
-  // (its spread grew over open ground while it stayed right, and what is now in view, a wall's
-  // end and boxes the map lacks, places the robot nowhere). There is only too little to place
-  // the robot: it goes on (slowly, by its uncertainty) towards what will tell the places apart,
-  // and the window is not widened, which would only add look-alikes.
-  const bool undecided = !m->accepted && (m->score >= p_.matcher.min_score || !contradicted);
-  if (!placed && (undecided || confirmed(agreement(scan, ekf_.pose())))) {
-    unmatched_ = false;
-    // Ambiguous is not uninformative: a lone wall with its end in view leaves the estimate
-    // open along the wall, yet pins it across the wall and in heading. A match that fits well
-    // and reads, beam by beam, what the map predicts updates the estimate with the spread of its
-    // near-best poses: in the directions they agree on, not in those they leave open. (Seen:
-    // the matcher's best pose within 0.2 m of the truth for 10 s beside a wall's end while the
-    // estimate, 2.5 m off after open ground, went on blind and the episode failed.)
-    if (m->score >= p_.matcher.min_score && confirmed(agree))
-      ekf_.update_pose(m->pose, m->spread, kPoseGateChi2);
-    return ekf_.position_sigma_m() <= p_.local_update_max_sigma_m;
-  }
-  unmatched_ = !placed;
-  if (unmatched_) {
-    // Returns, but no place that fits them alone: search wider next time.
-    if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);
-    return local_ok;
-  }
-  const double cell = matcher_->resolution_m();
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  covariance.diagonal() << cell * cell, cell * cell, 0.01 * 0.01;
-  ekf_.reset(m->pose, covariance);
-  ++relocalizations_;
-  return true;  // the local update refines the match
-}
-
 void Perceiver::take_readings(const SensorReadings& r) {
   now_.t_s = r.t_s;
   now_.dt_s = r.dt_s;
@@ -256,7 +163,8 @@ bool Perceiver::turn_slipped(const SensorReadings& r) {
   const double encoder_turn = geom::wrap_angle(r.odom_pose.yaw - odom_yaw_before_);
   odom_yaw_before_ = r.odom_pose.yaw;
   if (r.dt_s > 0) {
-    const double gap = encoder_turn - (r.gyro_yaw_rate_radps - ekf_.gyro_bias_radps()) * r.dt_s;
+    const double gap =
+        encoder_turn - (r.gyro_yaw_rate_radps - estimator_->gyro_bias_radps()) * r.dt_s;
     turn_gap_.emplace_back(r.dt_s, gap);
     turn_gap_sum_ += gap;
     turn_gap_time_ += r.dt_s;
@@ -274,40 +182,39 @@ void Perceiver::localize(const SensorReadings& r) {
   // Wheels that did not turn at all: the robot stands still and the gyro reads its own bias.
   const bool wheels_still =
       r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
-  ekf_.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
-  if (wheels_still) ekf_.standstill(r.gyro_yaw_rate_radps);
+  estimator_->predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
+  if (wheels_still) estimator_->standstill(r.gyro_yaw_rate_radps);
   // Moved without the wheels: a contact (the robot never touches anything but the charger's
   // pads, which are not on the bumper), or a scan that pulls the estimate further than its
   // spread allows, or scans the map stops explaining. Widen the estimate so that the next
   // scans can find where it went.
-  const geom::Pose2 predicted = ekf_.pose();
-  const double predicted_sigma = ekf_.position_sigma_m();
-  const int failed_before = ekf_.failed_matches();
-  if (r.scan && relocalize(*r.scan)) ekf_.correct(*r.scan);
-  const double correction = geom::distance(predicted.position(), ekf_.pose().position());
+  const geom::Pose2 predicted = estimator_->pose();
+  const double predicted_sigma = estimator_->position_sigma_m();
+  const int failed_before = estimator_->failed_matches();
+  if (r.scan) estimator_->observe(*r.scan);
+  const double correction = geom::distance(predicted.position(), estimator_->pose().position());
   // A correction within three sigmas of the prediction is the filter doing its work.
   const bool jumped = correction > std::max(p_.displaced_jump_m, 3.0 * predicted_sigma);
   const bool turn_slip = turn_slipped(r);
   now_.slipping = correction > std::max(p_.slip_jump_m, 3.0 * predicted_sigma) || turn_slip;
-  const bool unexplained = ekf_.failed_matches() >= 2;
+  const bool unexplained = estimator_->failed_matches() >= 2;
   const bool became_unexplained = unexplained && failed_before < 2;
   const bool touched = r.bumper.front || r.bumper.rear;
   // Widened once per event (a contact lasting a second must not make the estimate lost).
   if ((touched && !touched_before_) || became_unexplained)
-    ekf_.widen(p_.relocalize_sigma_m * (became_unexplained ? 1.0 : 0.3), 0.1);
+    estimator_->widen(p_.relocalize_sigma_m * (became_unexplained ? 1.0 : 0.3), 0.1);
   touched_before_ = touched;
   // Lost where the scans see the plant but fit it nowhere: stop, look round, match again. (Lost
   // on open ground, with nothing in range, it goes on slowly on odometry towards what it will see.)
-  const bool lost_in_view = ekf_.health() == LocalizationHealth::kLost && unmatched_;
-  now_.displaced = touched || jumped || unexplained || lost_in_view;
+  now_.displaced = touched || jumped || unexplained || estimator_->lost_in_view();
 }
 
 void Perceiver::publish_estimate() {
-  now_.pose = ekf_.pose();
-  now_.position_sigma_m = ekf_.position_sigma_m();
-  now_.yaw_sigma_rad = ekf_.yaw_sigma_rad();
-  now_.health = ekf_.health();
-  const Eigen::Matrix3d covariance = ekf_.pose_covariance();
+  now_.pose = estimator_->pose();
+  now_.position_sigma_m = estimator_->position_sigma_m();
+  now_.yaw_sigma_rad = estimator_->yaw_sigma_rad();
+  now_.health = estimator_->health();
+  const Eigen::Matrix3d covariance = estimator_->pose_covariance();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       now_.pose_covariance[static_cast<std::size_t>(3 * i + j)] = covariance(i, j);

@@ -17,9 +17,12 @@
 #include "controller/potential_field.h"
 #include "robot/beam_directions.h"
 #include "robot/ekf_localizer.h"
+#include "robot/global_match.h"
 #include "robot/local_obstacle_layer.h"
 #include "robot/map_raycaster.h"
 #include "robot/obstacle_tracker.h"
+#include "robot/particle_localizer.h"
+#include "robot/pose_estimator.h"
 #include "robot/readings.h"
 #include "robot/scan_matcher.h"
 
@@ -34,7 +37,9 @@ struct PerceptionParams {
   double field_range_m = 3.0;  ///< scan returns closer than this reach the potential field
   double field_cluster_gap_m = 0.3;  ///< returns closer than this form one obstacle for the field
   double target_exclusion_m = 0.6;   ///< returns this close to the beacon's target are the target
-  EkfParams ekf;
+  EstimatorKind estimator = EstimatorKind::kEkf;  ///< the pose estimator (pose_estimator.h)
+  EkfParams ekf;  ///< the EKF's, and the odometry's noise and health thresholds both use
+  ParticleParams particles;
   TrackerParams tracker;
   ObstacleLayerParams layer;
   double moving_speed_mps = 0.3;  ///< tracks faster than this do not mark the layer (they move on)
@@ -53,27 +58,8 @@ struct PerceptionParams {
                                   ///< slip_window_s: the wheels slip (single readings are noise)
   double slip_window_s = 0.5;
   double relocalize_sigma_m =
-      0.3;  ///< a displacement widens the estimate by this, so scans can catch it
-  /// Beyond this 1-sigma a local scan update could lock onto the nearest look-alike: the scan is
-  /// matched globally (scan_matcher.h) within three sigmas instead, at most every
-  /// global_match_period_s, and the filter restarts from an unambiguous match.
-  double global_match_sigma_m = 0.15;
-  double global_match_period_s = 0.5;
-  double global_match_max_window_m = 10.0;
-  /// Up to this 1-sigma the local update still runs when no unambiguous global match is found
-  /// (a corridor matches all along itself, yet pins the estimate across it); beyond it only a
-  /// global match may move the estimate, and each informative scan that finds none widens the
-  /// window by half (a growing search, up to global_match_max_window_m).
-  double local_update_max_sigma_m = 0.3;
-  /// A global match must also be confirmed beam by beam: ray cast through the map from it, at
-  /// least this share of the beams that meet a mapped surface in range must read it (within
-  /// verify_tolerance_m); a return short of it, or where the map has none, is something the map
-  /// lacks and judges nothing, as does no return where the map has nothing in range. The
-  /// matcher scores only where returns fall; this adds what they pass through.
-  double verify_agreement = 0.8;
-  double verify_tolerance_m = 0.2;
-  int global_match_min_returns = 30;  ///< fewer returns: too little to place the robot anywhere
-  ScanMatcherParams matcher;
+      0.3;                   ///< a displacement widens the estimate by this, so scans can catch it
+  GlobalMatchParams global;  ///< finding the robot again by a global scan match
 };
 
 struct Perception {
@@ -120,14 +106,15 @@ class Perceiver {
   const Perception& current() const { return now_; }
   const ScanView& last_scan() const { return scan_view_; }
   const ObstacleTracker& tracker() const { return tracker_; }
-  /// Times the estimate was restarted from a global scan match.
-  int relocalizations() const { return relocalizations_; }
+  /// Times the estimate was restarted (or reseeded) from a global scan match.
+  int relocalizations() const { return estimator_->relocalizations(); }
+  const PoseEstimator& estimator() const { return *estimator_; }
 
  private:
   /// The stages of update, in order.
   void take_readings(const SensorReadings& r);
   const Perception& update_oracle(const SensorReadings& r);
-  /// The EKF's prediction and correction, and what they say: displaced, slipping.
+  /// The estimator's prediction and correction, and what they say: displaced, slipping.
   void localize(const SensorReadings& r);
   /// The encoders' turn against the gyro's over the slip window (odometry noise averaged out).
   bool turn_slipped(const SensorReadings& r);
@@ -137,20 +124,10 @@ class Perceiver {
   void publish_obstacles(const SensorReadings& r);
   void interpret_scan(const LidarScan& scan);
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
-  /// Wide estimate: match the scan globally; true when the filter may also update locally.
-  bool relocalize(const LidarScan& scan);
-  /// Share of the beams meeting a mapped surface that read it from `pose`; none when fewer than
-  /// 10 beams meet one (too few to judge the pose either way).
-  std::optional<double> agreement(const LidarScan& scan, const geom::Pose2& pose) const;
-
   const worlds::World& map_;
   PerceptionParams p_;
   MapRaycaster raycaster_;
-  EkfLocalizer ekf_;
-  std::optional<ScanMatcher> matcher_;  // built the first time it is needed
-  double next_match_s_ = 0;
-  int relocalizations_ = 0;
-  bool unmatched_ = false;  // lost, and the last scan with enough returns matched nowhere
+  std::unique_ptr<PoseEstimator> estimator_;
   ObstacleTracker tracker_;
   LocalObstacleLayer layer_;
   Perception now_;

@@ -184,6 +184,28 @@ Eigen::Matrix3d ScanMatcher::near_best_spread(const std::vector<Scored>& good,
   return spread;
 }
 
+void ScanMatcher::rank_apart(const std::vector<Scored>& good, const geom::Pose2& prior, double dyaw,
+                             ScanMatch& best) const {
+  auto apart = [&](const geom::Pose2& a, const geom::Pose2& c) {
+    return geom::distance(a.position(), c.position()) > p_.apart_m ||
+           std::fabs(geom::wrap_angle(a.yaw - c.yaw)) > p_.apart_rad;
+  };
+  std::vector<Scored> by_score = good;  // `good` keeps its order: the spread sums over it
+  std::stable_sort(by_score.begin(), by_score.end(),
+                   [](const Scored& a, const Scored& c) { return a.score > c.score; });
+  for (const Scored& g : by_score) {
+    const geom::Pose2 at{prior.x + g.i * res_, prior.y + g.j * res_,
+                         geom::wrap_angle(prior.yaw + g.s * dyaw)};
+    if (apart(at, best.pose)) best.runner_up = std::max(best.runner_up, g.score);
+    if (g.score < p_.max_ambiguity * best.score ||
+        static_cast<int>(best.alternatives.size()) >= p_.max_alternatives)
+      continue;
+    if (std::all_of(best.alternatives.begin(), best.alternatives.end(),
+                    [&](const auto& taken) { return apart(at, taken.first); }))
+      best.alternatives.emplace_back(at, g.score);
+  }
+}
+
 std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::Pose2& prior,
                                             const MatchWindow& window) const {
   double reach = 0;
@@ -248,13 +270,7 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
     best.pose = prior;
     return best;
   }
-  for (const Scored& g : good) {
-    const geom::Pose2 at{prior.x + g.i * res_, prior.y + g.j * res_,
-                         geom::wrap_angle(prior.yaw + g.s * dyaw)};
-    const bool apart = geom::distance(at.position(), best.pose.position()) > p_.apart_m ||
-                       std::fabs(geom::wrap_angle(at.yaw - best.pose.yaw)) > p_.apart_rad;
-    if (apart) best.runner_up = std::max(best.runner_up, g.score);
-  }
+  rank_apart(good, prior, dyaw, best);
   best.accepted = best.score >= p_.min_score && best.runner_up < p_.max_ambiguity * best.score;
   best.spread = near_best_spread(good, best, prior, dyaw);
   return best;

@@ -35,6 +35,7 @@ struct ScanMatcherParams {
       40'000;  ///< rotations x translation blocks bounded per match: wide windows are
                ///< searched in coarser rotation steps (at most max_yaw_step_rad), then narrower
   double max_yaw_step_rad = 0.03;
+  int max_alternatives = 8;  ///< distinct near-best poses a match lists (ScanMatch::alternatives)
 };
 
 /// The search window around a prior pose: translations within +-xy_m, rotations within +-yaw_rad.
@@ -53,6 +54,10 @@ struct ScanMatch {
   /// best, plus the search grid's step: small along what the scan pins down, large along what it
   /// leaves open (along a lone wall), as Olson 2009 derives a match's covariance.
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  /// Poses apart from one another (apart_m, apart_rad) that score within max_ambiguity of the
+  /// best, the best first, each with its score: the places the scan fits about as well (a plant
+  /// of repeated racks), for a particle filter to weigh by the scans that follow.
+  std::vector<std::pair<geom::Pose2, double>> alternatives;
 };
 
 class ScanMatcher {
@@ -82,6 +87,10 @@ class ScanMatcher {
   /// ScanMatch::spread from the scored poses near the best.
   Eigen::Matrix3d near_best_spread(const std::vector<Scored>& good, const ScanMatch& best,
                                    const geom::Pose2& prior, double dyaw) const;
+  /// The best score of a pose apart from the best (runner_up) and the distinct near-best poses
+  /// (alternatives), from the exact scores.
+  void rank_apart(const std::vector<Scored>& good, const geom::Pose2& prior, double dyaw,
+                  ScanMatch& best) const;
   double fine(long i, long j) const {
     return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
   }

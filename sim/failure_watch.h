@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "robot/ekf_localizer.h"
 #include "robot/failure.h"
+#include "robot/pose_estimator.h"
 #include "sim/integrity_watch.h"
 
 namespace plantsim::sim {

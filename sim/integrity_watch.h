@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "geometry/vec2.h"
-#include "robot/ekf_localizer.h"
+#include "robot/pose_estimator.h"
 
 namespace plantsim::sim {
 

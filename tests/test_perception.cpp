@@ -14,7 +14,9 @@
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "robot/ekf_estimator.h"
 #include "robot/ekf_localizer.h"
+#include "robot/particle_localizer.h"
 #include "sim/episode.h"
 #include "sim/episode_metrics.h"
 #include "sim/physics_world.h"
@@ -221,8 +223,8 @@ struct LidarTruth {
 };
 
 // Monte Carlo runs of one open-loop drive; the average NEES of the pose at each scan.
-std::vector<double> average_nees(double left_mps, double right_mps, int runs,
-                                 LidarTruth lidar = {}) {
+std::vector<double> average_nees(double left_mps, double right_mps, int runs, LidarTruth lidar = {},
+                                 EstimatorKind kind = EstimatorKind::kEkf) {
   worlds::World w = worlds::load_world(test::shared_data("worlds/world_N10.json"));
   w.obstacles.clear();  // an empty floor (walls only): the drives below stay on it
   w.floor = {0, 0, 30, 30};
@@ -257,7 +259,16 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs,
     WheelDrive drive(w.robot, {});
     SensorSuite sensors(w, sp, seed);
     MapRaycaster map(w);
-    EkfLocalizer ekf(ep, told, map);
+    worlds::World told_map = w;  // the map, with the start the robot is told
+    told_map.start = told;
+    ParticleParams pp;
+    pp.seed = static_cast<int>(seed);
+    std::unique_ptr<PoseEstimator> estimator;
+    if (kind == EstimatorKind::kEkf)
+      estimator = std::make_unique<EkfEstimator>(told_map, map, ep, GlobalMatchParams{});
+    else
+      estimator = std::make_unique<ParticleLocalizer>(told_map, map, ep, GlobalMatchParams{}, pp);
+    PoseEstimator& ekf = *estimator;
     const double dt = 1.0 / 60;
     std::size_t sample = 0;
     for (int k = 0; k <= 60 * 20; ++k) {
@@ -265,7 +276,7 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs,
         const SensorReadings r = sensors.read(physics, k * dt);
         ekf.predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
         if (r.scan) {
-          ekf.correct(*r.scan);
+          ekf.observe(*r.scan);
           const geom::Pose2 truth = physics.robot_pose();
           Eigen::Vector3d e(ekf.pose().x - truth.x, ekf.pose().y - truth.y,
                             geom::wrap_angle(ekf.pose().yaw - truth.yaw));
@@ -319,6 +330,31 @@ TEST(Ekf, ALidarNoisierThanToldIsLearntAndTheFilterStaysConsistent) {
   double mean = 0;
   for (double v : blind) mean += v / static_cast<double>(blind.size());
   EXPECT_GT(mean, chi2_quantile(3.0 * runs, 1.96) / runs) << "not learning: over-confident";
+}
+
+// The particle filter under the same drives: its covariance (the whole set about the best
+// cluster's mean) against the true error, over the same Monte Carlo runs. The issue's target,
+// the average inside its two-sided chi-square bounds at most scans, is NOT met yet: measured when
+// written, straight 1.80 average and circle 1.91, 2 to 3 % of scans inside (the set is wider than
+// its error: conservative). What is checked is the side integrity needs: never over-confident,
+// the average below the upper bound, and no more than a tenth of the scans above it.
+void expect_not_over_confident(const std::vector<double>& nees, int runs, const char* what) {
+  const double hi = chi2_quantile(3.0 * runs, 1.96) / runs;
+  int above = 0;
+  double mean = 0;
+  for (double v : nees) above += v > hi, mean += v / static_cast<double>(nees.size());
+  std::printf("%s: average NEES %.2f, %d of %zu scans above %.2f\n", what, mean, above, nees.size(),
+              hi);
+  EXPECT_LT(mean, hi) << what;
+  EXPECT_LE(above, static_cast<int>(nees.size()) / 10) << what;
+}
+
+TEST(Particles, NeverOverConfidentOnAStraightAndACircularDrive) {
+  const int runs = 20;
+  expect_not_over_confident(average_nees(0.5, 0.5, runs, {}, EstimatorKind::kParticles), runs,
+                            "particles, straight");
+  expect_not_over_confident(average_nees(0.3, 0.5, runs, {}, EstimatorKind::kParticles), runs,
+                            "particles, circle");
 }
 
 TEST(Ekf, TheGyrosNoiseIsLearntAtRest) {
@@ -457,19 +493,30 @@ TEST_P(BadSensorConfig, IsRefusedNamingTheField) {
 
 INSTANTIATE_TEST_SUITE_P(
     Table, BadSensorConfig,
-    ::testing::Values(BadConfig{R"({"lidar": {"beam_count": -1}})", "lidar.beam_count"},
-                      BadConfig{R"({"lidar": {"rate_hz": 0}})", "lidar.rate_hz"},
-                      BadConfig{R"({"lidar": {"min_range_m": 5, "max_range_m": 4}})",
-                                "lidar.min_range_m"},
-                      BadConfig{R"({"lidar": {"range_noise_m": -0.01}})", "lidar.range_noise_m"},
-                      BadConfig{R"({"lidar": {"range_noise_m": NaN}})", "bad.json"},
-                      BadConfig{R"({"detection": {"false_negative_probability": 1.5}})",
-                                "detection.false_negative_probability"},
-                      BadConfig{R"({"detection": {"rate_hz": 0}})", "detection.rate_hz"},
-                      BadConfig{R"({"imu": {"bias_radps": -1}})", "imu.bias_radps"},
-                      BadConfig{R"({"perception": {"mode": "psychic"}})", "perception.mode"},
-                      BadConfig{R"({"lidar": {"beems": 3}})", "lidar.beems"},
-                      BadConfig{R"({"localization": {"period_s": 1}})", "localization.period_s"}));
+    ::testing::Values(
+        BadConfig{R"({"lidar": {"beam_count": -1}})", "lidar.beam_count"},
+        BadConfig{R"({"lidar": {"rate_hz": 0}})", "lidar.rate_hz"},
+        BadConfig{R"({"lidar": {"min_range_m": 5, "max_range_m": 4}})", "lidar.min_range_m"},
+        BadConfig{R"({"lidar": {"range_noise_m": -0.01}})", "lidar.range_noise_m"},
+        BadConfig{R"({"lidar": {"range_noise_m": NaN}})", "bad.json"},
+        BadConfig{R"({"detection": {"false_negative_probability": 1.5}})",
+                  "detection.false_negative_probability"},
+        BadConfig{R"({"detection": {"rate_hz": 0}})", "detection.rate_hz"},
+        BadConfig{R"({"imu": {"bias_radps": -1}})", "imu.bias_radps"},
+        BadConfig{R"({"perception": {"mode": "psychic"}})", "perception.mode"},
+        BadConfig{R"({"lidar": {"beems": 3}})", "lidar.beems"},
+        BadConfig{R"({"localization": {"period_s": 1}})", "localization.period_s"},
+        BadConfig{R"({"localization": {"estimator": "amcl"}})", "localization.estimator"},
+        BadConfig{R"({"particles": {"min_particles": 500, "max_particles": 100}})",
+                  "particles.min_particles"},
+        BadConfig{R"({"particles": {"z_rand": 0}})", "particles.z_rand"}));
+
+TEST(Particles, ChosenByTheConfigAndWrittenInItsDefaults) {
+  const EpisodeConfig c =
+      parse_episode_config(R"({"localization": {"estimator": "particles"}})", "c.json");
+  EXPECT_EQ(c.perception.estimator, EstimatorKind::kParticles);
+  EXPECT_NE(episode::default_config_json().find("\"estimator\": \"ekf\""), std::string::npos);
+}
 
 }  // namespace
 }  // namespace plantsim::sim

@@ -1,0 +1,512 @@
+// The particle filter's cycle: the motion model, the likelihood-field weights, KLD resampling
+// with sensor resetting, the clustered estimate and its health.
+#include "robot/particle_localizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace plantsim::robot {
+namespace {
+
+double sq(double v) { return v * v; }
+
+// KLD sampling's particle count for k occupied bins (Fox 2003, eq. 12): enough that the K-L
+// distance between the sampled and the true posterior stays below `error` with the probability
+// whose upper quantile is z.
+double kld_count(std::size_t k, double error, double z) {
+  if (k <= 1) return 0;
+  const double km1 = static_cast<double>(k - 1);
+  const double a = 2.0 / (9.0 * km1);
+  const double c = 1.0 - a + std::sqrt(a) * z;
+  return km1 / (2.0 * error) * c * c * c;
+}
+
+struct Bin {
+  std::int64_t x, y, t;
+};
+
+Bin bin_of(const ParticleLocalizer::Particle& q, const ParticleParams& p) {
+  return {static_cast<std::int64_t>(std::floor(q.x / p.bin_xy_m)),
+          static_cast<std::int64_t>(std::floor(q.y / p.bin_xy_m)),
+          static_cast<std::int64_t>(std::floor((geom::wrap_angle(q.yaw) + M_PI) / p.bin_yaw_rad))};
+}
+
+std::uint64_t key_of(const Bin& b) {
+  constexpr std::uint64_t kMask = (1u << 21) - 1;
+  return ((static_cast<std::uint64_t>(b.x) & kMask) << 42) |
+         ((static_cast<std::uint64_t>(b.y) & kMask) << 21) | (static_cast<std::uint64_t>(b.t) & kMask);
+}
+
+// Particles drawn with probability proportional to their weights (multinomial resampling).
+class WeightedDraw {
+ public:
+  explicit WeightedDraw(const std::vector<ParticleLocalizer::Particle>& set) : cumulative_(set.size()) {
+    double sum = 0;
+    for (std::size_t n = 0; n < set.size(); ++n) cumulative_[n] = sum += set[n].w;
+    uniform_ = std::uniform_real_distribution<double>(0.0, sum);
+  }
+  const ParticleLocalizer::Particle& operator()(const std::vector<ParticleLocalizer::Particle>& set,
+                                                 std::mt19937_64& rng) const {
+    const auto at = std::lower_bound(cumulative_.begin(), cumulative_.end(), uniform_(rng));
+    return set[std::min<std::size_t>(static_cast<std::size_t>(at - cumulative_.begin()),
+                                     set.size() - 1)];
+  }
+
+ private:
+  std::vector<double> cumulative_;
+  mutable std::uniform_real_distribution<double> uniform_;
+};
+
+// The global matches for reseeding search all headings in tiles: each may score more candidates
+// than a local relocalisation does.
+ScanMatcherParams reseed_matcher(ScanMatcherParams m) {
+  m.max_candidates = std::max(m.max_candidates, 120'000L);
+  return m;
+}
+
+// Robust variance of residuals: the median absolute deviation's, scaled for a normal.
+double robust_variance(std::vector<double>& r) {
+  const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+  std::nth_element(r.begin(), mid, r.end());
+  const double median = *mid;
+  for (double& v : r) v = std::fabs(v - median);
+  std::nth_element(r.begin(), mid, r.end());
+  return sq(1.4826 * *mid);
+}
+
+}  // namespace
+
+ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaster& raycaster,
+                                     const EkfParams& motion, const GlobalMatchParams& global,
+                                     const ParticleParams& params)
+    : raycaster_(raycaster),
+      motion_(motion),
+      global_(global),
+      p_(params),
+      map_(map),
+      field_(map, params.field_resolution_m),
+      rng_(static_cast<std::uint64_t>(params.seed)),
+      range_learnt_(motion.range_learning_rate),
+      gyro_learnt_(motion.gyro_learning_rate) {
+  const int n = std::max(1, p_.min_particles);
+  set_.reserve(static_cast<std::size_t>(std::max(n, p_.max_particles)));
+  for (int i = 0; i < n; ++i)
+    set_.push_back({map.start.x + normal(motion.initial_position_sigma_m),
+                    map.start.y + normal(motion.initial_position_sigma_m),
+                    geom::wrap_angle(map.start.yaw + normal(motion.initial_yaw_sigma_rad)),
+                    normal(motion.initial_bias_sigma_radps), 1.0 / n});
+  bias_moments();
+  summarise();
+  update_health();
+}
+
+double ParticleLocalizer::normal(double sigma) { return sigma > 0 ? sigma * unit_normal_(rng_) : 0; }
+
+void ParticleLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) {
+  if (dt_s <= 0) return;
+  gyro_learnt_.reading();
+  const double turn = (gyro_yaw_rate_radps - bias_) * dt_s;
+  const double mid = pending_.delta.yaw + 0.5 * turn;
+  pending_.delta.x += distance_m * std::cos(mid);
+  pending_.delta.y += distance_m * std::sin(mid);
+  pending_.delta.yaw += turn;
+  pending_.moved_m += std::fabs(distance_m);
+  pending_.turned_rad += std::fabs(turn);
+  const double gyro_sigma =
+      motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
+                                                          motion_.gyro_min_samples)
+                          : motion_.gyro_noise_radps;
+  pending_.gyro_var += sq(gyro_sigma * dt_s);
+  pending_.time_s += dt_s;
+  update_health();
+}
+
+void ParticleLocalizer::standstill(double gyro_yaw_rate_radps) {
+  if (motion_.learn_noise) gyro_learnt_.at_rest(gyro_yaw_rate_radps);
+  apply_motion();  // the motion so far under the biases as they were
+  // At rest the gyro reads the bias plus white noise: the Kalman update of the set's bias, each
+  // particle's moved to the posterior by the ensemble square-root update (its deviation from the
+  // mean shrunk as the variance is), so that the set keeps its spread's shape.
+  const double r =
+      sq(motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
+                                                             motion_.gyro_min_samples)
+                             : motion_.gyro_noise_radps);
+  bias_moments();
+  const double k = bias_var_ / (bias_var_ + r);
+  if (!std::isfinite(k) || bias_var_ <= 0) return;
+  const double mean = bias_ + k * (gyro_yaw_rate_radps - bias_);
+  const double shrink = std::sqrt(1.0 - k);
+  for (Particle& q : set_) q.bias = mean + shrink * (q.bias - bias_);
+  bias_ = mean;
+  bias_var_ *= 1.0 - k;
+}
+
+void ParticleLocalizer::bias_moments() {
+  double mean = 0;
+  for (const Particle& q : set_) mean += q.w * q.bias;
+  double var = 0;
+  for (const Particle& q : set_) var += q.w * sq(q.bias - mean);
+  bias_ = mean;
+  bias_var_ = var;
+}
+
+void ParticleLocalizer::apply_motion() {
+  const Pending m = pending_;
+  pending_ = {};
+  if (m.time_s <= 0) return;
+  since_weigh_m_ += m.moved_m;
+  since_weigh_rad_ += m.turned_rad;
+  // As the EKF's model: travel noise along, skid across while turning on the move, the gyro's
+  // white noise; each particle turns by its own bias (the delta was summed under the set's mean),
+  // and its bias walks.
+  const double along = motion_.distance_noise * m.moved_m;
+  const double across = motion_.lateral_noise * std::min(m.turned_rad, m.moved_m / 0.1);
+  const double yaw = std::sqrt(m.gyro_var);
+  const double walk = motion_.bias_walk_radps_per_sqrt_s * std::sqrt(m.time_s);
+  const double length = std::hypot(m.delta.x, m.delta.y);
+  const geom::Vec2 u = length > 1e-9 ? geom::Vec2{m.delta.x / length, m.delta.y / length}
+                                     : geom::Vec2{1.0, 0.0};
+  for (Particle& q : set_) {
+    const double a = normal(along), c = normal(across);
+    const geom::Pose2 d{m.delta.x + a * u.x - c * u.y, m.delta.y + a * u.y + c * u.x,
+                        m.delta.yaw - (q.bias - bias_) * m.time_s + normal(yaw)};
+    q.bias += normal(walk);
+    const geom::Pose2 moved = geom::compose({q.x, q.y, q.yaw}, d);
+    q.x = moved.x;
+    q.y = moved.y;
+    q.yaw = geom::wrap_angle(moved.yaw);
+  }
+  bias_moments();
+}
+
+void ParticleLocalizer::take_points(const LidarScan& scan) {
+  std::vector<std::size_t> valid;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i)
+    if (scan.valid(i)) valid.push_back(i);
+  points_.clear();
+  if (static_cast<int>(valid.size()) < motion_.min_informative_beams) return;
+  const std::size_t stride =
+      std::max<std::size_t>(1, (valid.size() + static_cast<std::size_t>(std::max(1, p_.beams)) - 1) /
+                                   static_cast<std::size_t>(std::max(1, p_.beams)));
+  for (std::size_t k = 0; k < valid.size(); k += stride) {
+    const std::size_t i = valid[k];
+    const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
+    points_.push_back(
+        geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
+  }
+  hit_sigma_m_ = std::hypot(p_.field_sigma_m, range_sigma_m());
+}
+
+void ParticleLocalizer::tabulate_log_likelihood() {
+  if (hit_sigma_m_ == tabulated_sigma_m_) return;
+  tabulated_sigma_m_ = hit_sigma_m_;
+  // log(z_hit exp(-d^2 / 2 s^2) + z_rand) against d^2 up to the field's reach: a table of it,
+  // interpolated, in place of an exp and a log per beam and particle (the filter's main cost).
+  const double k = 0.5 / sq(hit_sigma_m_);
+  log_table_.resize(kLogTableSize + 1);
+  for (std::size_t i = 0; i <= kLogTableSize; ++i)
+    log_table_[i] = std::log(p_.z_hit * std::exp(-k * static_cast<double>(i) / kLogTableSize *
+                                                 sq(field_.reach_m())) +
+                             p_.z_rand);
+}
+
+double ParticleLocalizer::log_likelihood(double d) const {
+  const double u = std::min(1.0, d * d / sq(field_.reach_m())) * kLogTableSize;
+  const std::size_t i = std::min(static_cast<std::size_t>(u), kLogTableSize - 1);
+  const double f = u - static_cast<double>(i);
+  return log_table_[i] + f * (log_table_[i + 1] - log_table_[i]);
+}
+
+double ParticleLocalizer::weigh() {
+  if (points_.empty()) return -1;
+  const double beams = static_cast<double>(points_.size());
+  tabulate_log_likelihood();
+  std::vector<double> log_w(set_.size());
+  double best = -INFINITY;
+  for (std::size_t n = 0; n < set_.size(); ++n) {
+    const Particle& q = set_[n];
+    const double c = std::cos(q.yaw), s = std::sin(q.yaw);
+    double l = 0;
+    for (const geom::Vec2& e : points_)
+      l += log_likelihood(field_.distance({q.x + c * e.x - s * e.y, q.y + s * e.x + c * e.y}));
+    log_w[n] = l;
+    best = std::max(best, l);
+  }
+  // Augmented MCL's measure of fit: the prior-weighted mean of each particle's likelihood per
+  // beam (a geometric mean, so that it does not depend on how many beams were weighed).
+  double fit = 0, total = 0;
+  for (std::size_t n = 0; n < set_.size(); ++n) {
+    fit += set_[n].w * std::exp(log_w[n] / beams);
+    set_[n].w *= std::exp(log_w[n] - best);
+    total += set_[n].w;
+  }
+  for (Particle& q : set_) q.w = total > 0 && std::isfinite(total) ? q.w / total : 1.0 / set_.size();
+  return fit;
+}
+
+void ParticleLocalizer::resample(const std::vector<std::pair<geom::Pose2, double>>& candidates,
+                                 double fresh) {
+  const WeightedDraw draw(set_);
+  std::unordered_set<std::uint64_t> bins;
+  const std::size_t floor = static_cast<std::size_t>(std::max(1, p_.min_particles));
+  const std::size_t ceiling = std::max(floor, static_cast<std::size_t>(p_.max_particles));
+  // The kept share drawn by the weights until KLD sampling's count for the bins they fill.
+  const double kept_share = candidates.empty() ? 1.0 : 1.0 - fresh;
+  scratch_.clear();
+  std::size_t needed = floor;
+  while (scratch_.size() < ceiling) {
+    const Particle& q = draw(set_, rng_);
+    bins.insert(key_of(bin_of(q, p_)));
+    scratch_.push_back(q);
+    needed = std::clamp(static_cast<std::size_t>(kld_count(bins.size(), p_.kld_error, p_.kld_z)),
+                        floor, ceiling);
+    if (static_cast<double>(scratch_.size()) >= kept_share * static_cast<double>(needed)) break;
+  }
+  // Sensor resetting: the fresh share about the places the scan fits, split evenly.
+  if (!candidates.empty()) {
+    const std::size_t room = ceiling > scratch_.size() ? ceiling - scratch_.size() : 0;
+    const std::size_t each = std::min(
+        room / candidates.size(),
+        std::max<std::size_t>(30, static_cast<std::size_t>(fresh * static_cast<double>(needed)) /
+                                      candidates.size()));
+    const double spread = matcher_->resolution_m();
+    for (const auto& [pose, score] : candidates)
+      for (std::size_t k = 0; k < each; ++k)
+        scratch_.push_back({pose.x + normal(spread), pose.y + normal(spread),
+                            geom::wrap_angle(pose.yaw + normal(0.03)),
+                            bias_ + normal(std::sqrt(bias_var_)), 1.0});
+  }
+  // Roughening: copies of one particle spread a little, so that repeated weighing at rest does
+  // not collapse the set onto a point (it would be sure of itself beyond what the scans say).
+  for (Particle& q : scratch_) {
+    q.x += normal(p_.jitter_m);
+    q.y += normal(p_.jitter_m);
+    q.yaw = geom::wrap_angle(q.yaw + normal(p_.jitter_rad));
+    q.w = 1.0 / static_cast<double>(scratch_.size());
+  }
+  set_.swap(scratch_);
+}
+
+void ParticleLocalizer::summarise() {
+  // The heaviest bin, and the cluster of particles in it and its neighbours.
+  std::unordered_map<std::uint64_t, double> weight;
+  const Particle* heaviest = &set_.front();
+  double heaviest_w = -1;
+  for (const Particle& q : set_) {
+    const double w = weight[key_of(bin_of(q, p_))] += q.w;
+    if (w > heaviest_w) {
+      heaviest_w = w;
+      heaviest = &q;
+    }
+  }
+  const Bin top = bin_of(*heaviest, p_);
+  const std::int64_t turns =
+      static_cast<std::int64_t>(std::ceil(2.0 * M_PI / p_.bin_yaw_rad));
+  double w = 0, x = 0, y = 0, c = 0, s = 0;
+  for (const Particle& q : set_) {
+    const Bin b = bin_of(q, p_);
+    const std::int64_t dt = ((b.t - top.t) % turns + turns) % turns;
+    if (std::abs(b.x - top.x) > 1 || std::abs(b.y - top.y) > 1 || (dt > 1 && dt < turns - 1))
+      continue;
+    w += q.w;
+    x += q.w * q.x;
+    y += q.w * q.y;
+    c += q.w * std::cos(q.yaw);
+    s += q.w * std::sin(q.yaw);
+  }
+  estimate_ = {x / w, y / w, std::atan2(s, c)};
+  // The whole set about it: other live hypotheses widen it.
+  covariance_.setZero();
+  for (const Particle& q : set_) {
+    const Eigen::Vector3d d(q.x - estimate_.x, q.y - estimate_.y,
+                            geom::wrap_angle(q.yaw - estimate_.yaw));
+    covariance_ += q.w * d * d.transpose();
+  }
+  covariance_.diagonal().array() += 1e-8;
+}
+
+double ParticleLocalizer::explained_share(const geom::Pose2& pose) const {
+  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+  int explained = 0;
+  for (const geom::Vec2& e : points_)
+    explained += std::fabs(field_.distance({pose.x + c * e.x - s * e.y,
+                                            pose.y + s * e.x + c * e.y})) <= 3.0 * hit_sigma_m_;
+  return static_cast<double>(explained) / static_cast<double>(points_.size());
+}
+
+void ParticleLocalizer::judge(const LidarScan& scan) {
+  residuals_.clear();
+  const std::optional<double> agree =
+      scan_agreement(raycaster_, scan, estimate_, global_.verify_tolerance_m, &residuals_);
+  const bool unexplained = valid_returns(scan) >= global_.global_match_min_returns &&
+                           !points_.empty() && explained_share(estimate_) < p_.min_explained;
+  if (!agree && !unexplained) return;  // too few beams meet a mapped surface: no evidence
+  failed_matches_ =
+      unexplained || *agree < p_.contradicted_agreement ? failed_matches_ + 1 : 0;
+  if (motion_.learn_noise && agree && *agree >= global_.verify_agreement &&
+      static_cast<int>(residuals_.size()) >= motion_.min_informative_beams)
+    range_learnt_.add(robust_variance(residuals_));
+}
+
+ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& scan) {
+  Reseed out;
+  if (!matcher_) matcher_.emplace(map_, reseed_matcher(global_.matcher));
+  const MatchWindow window{p_.reseed_tile_m, M_PI};
+  auto apart = [&](const geom::Pose2& l, const geom::Pose2& r) {
+    return geom::distance(l.position(), r.position()) > global_.matcher.apart_m ||
+           std::fabs(geom::wrap_angle(l.yaw - r.yaw)) > global_.matcher.apart_rad;
+  };
+  std::vector<std::pair<geom::Pose2, double>> found;
+  const int rings = std::max(0, p_.reseed_rings - 1);
+  for (int ring = 0; ring <= rings; ++ring) {
+    for (int a = -ring; a <= ring; ++a)
+      for (int b = -ring; b <= ring; ++b) {
+        if (std::max(std::abs(a), std::abs(b)) != ring) continue;
+        const geom::Pose2 centre{estimate_.x + 2.0 * p_.reseed_tile_m * a,
+                                 estimate_.y + 2.0 * p_.reseed_tile_m * b, estimate_.yaw};
+        const std::optional<ScanMatch> m = matcher_->match(scan, centre, window);
+        if (!m) continue;
+        for (const auto& alt : m->alternatives)
+          if (alt.second >= global_.matcher.min_score) found.push_back(alt);
+      }
+    // The best place for the scan about the estimate is the estimate itself: what the map did not
+    // explain are things it lacks (boxes, people), not a kidnap. Nothing wider is searched.
+    if (ring == 0 && !found.empty() &&
+        !apart(std::max_element(found.begin(), found.end(),
+                                [](const auto& l, const auto& r) { return l.second < r.second; })
+                   ->first,
+               estimate_)) {
+      out.estimate_fits = true;
+      return out;
+    }
+  }
+  // No place fits the scan well anywhere: what it sees is mostly things the map lacks (a box in
+  // an open yard). No evidence against the estimate either.
+  out.estimate_fits = found.empty();
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& l, const auto& r) { return l.second > r.second; });
+  for (const auto& f : found) {
+    if (static_cast<int>(out.candidates.size()) >= global_.matcher.max_alternatives) break;
+    if (!std::all_of(out.candidates.begin(), out.candidates.end(),
+                     [&](const auto& k) { return apart(k.first, f.first); }))
+      continue;
+    const std::optional<double> agree =
+        scan_agreement(raycaster_, scan, f.first, global_.verify_tolerance_m);
+    if (agree && *agree >= global_.verify_agreement) out.candidates.push_back(f);
+  }
+  return out;
+}
+
+void ParticleLocalizer::observe(const LidarScan& scan) {
+  apply_motion();
+  take_points(scan);
+  const bool settled = health_ == LocalizationHealth::kOk && failed_matches_ == 0;
+  if (!settled || since_weigh_m_ >= p_.update_min_m || since_weigh_rad_ >= p_.update_min_rad) {
+    const double fit = weigh();
+    if (fit >= 0) {
+      since_weigh_m_ = since_weigh_rad_ = 0;
+      if (w_slow_ <= 0) w_slow_ = w_fast_ = fit;
+      w_slow_ += p_.alpha_slow * (fit - w_slow_);
+      w_fast_ += p_.alpha_fast * (fit - w_fast_);
+    }
+  }
+  summarise();
+  judge(scan);
+  // Sensor resetting where the map contradicts the estimate (or it is lost).
+  std::vector<std::pair<geom::Pose2, double>> candidates;
+  // Contradicted, not merely wide: a set spread over open ground contracts by itself when the
+  // plant comes into view, and look-alikes drawn in would only split it.
+  const bool contradicted = failed_matches_ >= 2;
+  if (!contradicted) {
+    unmatched_ = false;
+  } else if (scan.t_s + 1e-9 >= next_reseed_s_ &&
+             valid_returns(scan) >= global_.global_match_min_returns) {
+    Reseed found = reseed_candidates(scan);  // (estimate_fits: nothing against it)
+    candidates = std::move(found.candidates);
+    if (found.estimate_fits) failed_matches_ = 0;
+    unmatched_ = candidates.empty() && !found.estimate_fits;
+    // A search that finds nothing is repeated less and less often (up to 8 periods apart): it
+    // costs, and while the view does not change it will find nothing again.
+    reseed_backoff_ = unmatched_ ? std::min(8, 2 * reseed_backoff_) : 1;
+    next_reseed_s_ = scan.t_s + reseed_backoff_ * global_.global_match_period_s;
+  }
+  double squares = 0;
+  for (const Particle& q : set_) squares += q.w * q.w;
+  const double effective = 1.0 / squares;
+  if (!candidates.empty()) {
+    const double demand = w_slow_ > 0 ? 1.0 - w_fast_ / w_slow_ : 0.0;
+    resample(candidates, std::clamp(std::max(demand, p_.reseed_fraction), 0.0, 0.9));
+    ++relocalizations_;
+    summarise();
+  } else if (effective < 0.5 * static_cast<double>(set_.size())) {
+    resample({}, 0.0);
+    summarise();
+  }
+  update_health();
+}
+
+void ParticleLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
+  apply_motion();
+  // Widened to at least the asked spread, not by it again and again: a set already that wide
+  // holds the hypotheses it needs (repeated additions while the robot waits scattered it over
+  // metres of look-alikes).
+  position_sigma_m = std::sqrt(std::max(0.0, sq(position_sigma_m) - sq(ParticleLocalizer::position_sigma_m())));
+  yaw_sigma_rad = std::sqrt(std::max(0.0, sq(yaw_sigma_rad) - sq(ParticleLocalizer::yaw_sigma_rad())));
+  if (position_sigma_m <= 0 && yaw_sigma_rad <= 0) return;
+  // Enough particles to cover the wider spread, drawn by the weights first.
+  const std::size_t n = std::min<std::size_t>(
+      static_cast<std::size_t>(std::max(1, p_.max_particles)),
+      std::max<std::size_t>(set_.size(), static_cast<std::size_t>(4 * p_.min_particles)));
+  const WeightedDraw draw(set_);
+  scratch_.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    Particle q = draw(set_, rng_);
+    q.x += normal(position_sigma_m);
+    q.y += normal(position_sigma_m);
+    q.yaw = geom::wrap_angle(q.yaw + normal(yaw_sigma_rad));
+    q.w = 1.0 / static_cast<double>(n);
+    scratch_.push_back(q);
+  }
+  set_.swap(scratch_);
+  summarise();
+  update_health();
+}
+
+geom::Pose2 ParticleLocalizer::pose() const {
+  const geom::Pose2 p = geom::compose(estimate_, pending_.delta);
+  return {p.x, p.y, geom::wrap_angle(p.yaw)};
+}
+
+Eigen::Matrix3d ParticleLocalizer::pose_covariance() const {
+  Eigen::Matrix3d c = covariance_;
+  const double along = sq(motion_.distance_noise * pending_.moved_m);
+  c(0, 0) += along;
+  c(1, 1) += along;
+  c(2, 2) += pending_.gyro_var + bias_var_ * sq(pending_.time_s);  // the biases' spread
+  return c;
+}
+
+double ParticleLocalizer::position_sigma_m() const {
+  const Eigen::Matrix3d c = pose_covariance();
+  const double mean = 0.5 * (c(0, 0) + c(1, 1));
+  const double half = 0.5 * (c(0, 0) - c(1, 1));
+  return std::sqrt(std::max(0.0, mean + std::sqrt(half * half + c(0, 1) * c(0, 1))));
+}
+
+double ParticleLocalizer::yaw_sigma_rad() const {
+  return std::sqrt(std::max(0.0, pose_covariance()(2, 2)));
+}
+
+void ParticleLocalizer::update_health() {
+  const double sigma = position_sigma_m();
+  if (sigma > motion_.lost_position_sigma_m || failed_matches_ >= motion_.lost_failed_matches)
+    health_ = LocalizationHealth::kLost;
+  else if (sigma > motion_.ok_position_sigma_m || failed_matches_ >= 5)
+    health_ = LocalizationHealth::kDegraded;
+  else
+    health_ = LocalizationHealth::kOk;
+}
+
+}  // namespace plantsim::robot

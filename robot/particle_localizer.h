@@ -1,0 +1,165 @@
+// Localisation by particles (`localization.estimator: particles`), as AMCL does it (Thrun,
+// Burgard and Fox, Probabilistic Robotics, ch. 8; Nav2's nav2_amcl): poses drawn by the
+// odometry's motion model, weighed by a likelihood field (each return scored by its distance to
+// the nearest mapped surface: likelihood_field.h), resampled when the weights
+// degenerate, in numbers chosen by KLD sampling (Fox 2003). Found again after a kidnap by
+// sensor resetting (Lenser and Veloso 2000): where the scans contradict the estimate beam by beam,
+// particles are drawn about the places a global scan match finds for the scan, in a square of
+// tiles about the estimate, as many as augmented MCL's w_fast/w_slow asks (at least
+// `reseed_fraction`). The estimate is the best cluster's mean; its covariance is the whole set's
+// about it, so that two live hypotheses make it wide (and the robot not localised) until the
+// scans decide. Where it departs from AMCL: no uniform random particles (on a 100 m plant they
+// would never land near the truth), and reseeding only where the map contradicts the estimate
+// (a box the map lacks lowers AMCL's average weight as a kidnap does).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "robot/ekf_localizer.h"
+#include "robot/global_match.h"
+#include "robot/likelihood_field.h"
+#include "robot/noise_learning.h"
+#include "robot/pose_estimator.h"
+#include "robot/scan_matcher.h"
+
+namespace plantsim::robot {
+
+struct ParticleParams {
+  int min_particles = 200;   ///< KLD sampling's floor (AMCL: 500)
+  int max_particles = 2000;  ///< and its ceiling (AMCL: 2000)
+  double kld_error = 0.05;   ///< bound on the K-L distance to the true posterior (AMCL: 0.01)
+  double kld_z = 2.33;       ///< its upper quantile (0.99)
+  double bin_xy_m = 0.5;     ///< histogram bins for KLD sampling and the clusters
+  double bin_yaw_rad = 0.175;
+  int beams = 40;  ///< beams per scan in the weights, spread evenly over the valid ones
+  /// A return d from the nearest mapped surface scores z_hit exp(-d^2 / 2 s^2) + z_rand (z_rand:
+  /// what the map does not explain, a box, a person), with s^2 the range noise the filter uses
+  /// (told or learnt) plus field_sigma_m^2 (the map's error and the set's own spread).
+  double z_hit = 0.9;
+  double z_rand = 0.05;
+  double field_sigma_m = 0.05;
+  double field_resolution_m = 0.05;  ///< the likelihood field's cells (likelihood_field.h)
+  double update_min_m = 0.05;    ///< a well-localised filter weighs a scan after this much travel
+  double update_min_rad = 0.05;  ///< or turn (the same scan again at rest would make it too sure)
+  double alpha_slow = 0.001;     ///< augmented MCL's long- and short-term averages of the weight
+  double alpha_fast = 0.1;
+  double jitter_m = 0.003;  ///< roughening: each resampled copy spread by this (keeps the set
+  double jitter_rad = 0.003;  ///< diverse; resampling happens only after weighing)
+  /// A scan agreeing with the map (global_match.h's beam-by-beam agreement) less than this at
+  /// the estimate contradicts it (a failed match).
+  double contradicted_agreement = 0.3;
+  /// ... or fewer than this share of the weighed returns lies within three sigmas of a mapped
+  /// surface at the estimate (on open ground after a kidnap few beams can contradict it, yet
+  /// what the scan sees is nowhere on the map there).
+  double min_explained = 0.3;
+  double reseed_fraction = 0.5;  ///< at least this share is drawn anew when the map contradicts
+  double reseed_tile_m = 3.5;    ///< half-size of one global match's window (all headings)
+  int reseed_rings = 2;  ///< tiles searched: this many rings of them about the estimate (2: the
+                         ///< square 10.5 m about it, with tiles of 3.5 m)
+  int seed = 1;                  ///< the filter's random numbers (deterministic per seed)
+};
+
+class ParticleLocalizer final : public PoseEstimator {
+ public:
+  /// `motion` gives the odometry's and gyro's noise and the health thresholds (the same values
+  /// the EKF is told).
+  ParticleLocalizer(const worlds::World& map, const MapRaycaster& raycaster,
+                    const EkfParams& motion, const GlobalMatchParams& global,
+                    const ParticleParams& params);
+
+  void predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) override;
+  void standstill(double gyro_yaw_rate_radps) override;
+  void observe(const LidarScan& scan) override;
+  void widen(double position_sigma_m, double yaw_sigma_rad) override;
+  geom::Pose2 pose() const override;
+  Eigen::Matrix3d pose_covariance() const override;
+  double position_sigma_m() const override;
+  double yaw_sigma_rad() const override;
+  double gyro_bias_radps() const override { return bias_; }
+  double range_sigma_m() const override {
+    return motion_.learn_noise ? range_learnt_.sigma(motion_.range_sigma_m)
+                               : motion_.range_sigma_m;
+  }
+  LocalizationHealth health() const override { return health_; }
+  int failed_matches() const override { return failed_matches_; }
+  bool lost_in_view() const override { return health_ == LocalizationHealth::kLost && unmatched_; }
+  int relocalizations() const override { return relocalizations_; }
+
+  /// A pose and the gyro bias that particle assumes: a bias error turns the heading steadily,
+  /// so each particle carries its own and the scans choose among them (as the EKF's state does).
+  struct Particle {
+    double x, y, yaw, bias, w;
+  };
+  /// The set after the last scan (pending motion not applied), weights summing to one.
+  const std::vector<Particle>& particles() const { return set_; }
+
+ private:
+  /// The motion since the last scan, in the frame of the pose it started from.
+  struct Pending {
+    geom::Pose2 delta;
+    double moved_m = 0, turned_rad = 0, gyro_var = 0, time_s = 0;
+  };
+  void apply_motion();
+  /// The scan's returns to weigh by, in the robot frame (none when too few are valid).
+  void take_points(const LidarScan& scan);
+  /// Weighs the set by them; returns the weighted mean per-beam likelihood (for w_fast/slow), or
+  /// -1 when there are none.
+  double weigh();
+  void tabulate_log_likelihood();
+  /// A return's log-likelihood at distance d from the nearest mapped surface.
+  double log_likelihood(double d) const;
+  /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate poses.
+  void resample(const std::vector<std::pair<geom::Pose2, double>>& candidates, double fresh);
+  /// The places a global match finds for the scan about the estimate that the beams confirm, or
+  /// that the best place near the estimate is the estimate itself.
+  struct Reseed {
+    std::vector<std::pair<geom::Pose2, double>> candidates;
+    bool estimate_fits = false;  ///< or nothing fits anywhere: no evidence against it
+  };
+  Reseed reseed_candidates(const LidarScan& scan);
+  void summarise();
+  void judge(const LidarScan& scan);
+  /// Share of the weighed returns within three sigmas of a mapped surface from `pose`.
+  double explained_share(const geom::Pose2& pose) const;
+  void update_health();
+  /// bias_ and bias_var_ from the set.
+  void bias_moments();
+  double normal(double sigma);
+
+  const MapRaycaster& raycaster_;
+  EkfParams motion_;
+  GlobalMatchParams global_;
+  ParticleParams p_;
+  const worlds::World& map_;
+  LikelihoodField field_;
+  std::optional<ScanMatcher> matcher_;  // for reseeding, built the first time it is needed
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  std::vector<Particle> set_, scratch_;
+  std::vector<geom::Vec2> points_;  // the weighed beams' returns in the robot frame
+  double hit_sigma_m_ = 0;          // the likelihood's sigma for them
+  static constexpr std::size_t kLogTableSize = 4096;
+  std::vector<double> log_table_;  // log-likelihood against the squared distance
+  double tabulated_sigma_m_ = -1;
+  Pending pending_;
+  double since_weigh_m_ = 0, since_weigh_rad_ = 0;
+  geom::Pose2 estimate_;  // best cluster's mean, at the last scan
+  Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Zero();
+  double bias_ = 0, bias_var_ = 0;  // the set's mean bias and its variance
+  LearntVariance range_learnt_;
+  GyroRestNoise gyro_learnt_;
+  std::vector<double> residuals_;
+  double w_slow_ = 0, w_fast_ = 0;
+  int failed_matches_ = 0;
+  LocalizationHealth health_ = LocalizationHealth::kOk;
+  bool unmatched_ = false;
+  double next_reseed_s_ = 0;
+  int reseed_backoff_ = 1;  // periods between searches
+  int relocalizations_ = 0;
+};
+
+}  // namespace plantsim::robot
