@@ -44,7 +44,8 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
   // Confirmed: enough beams read what the map predicts from the pose; contradicted: enough pass
   // where it has surfaces; neither: too few beams meet a mapped surface to tell.
   auto confirmed = [&](const std::optional<double>& a) { return a && *a >= p_.verify_agreement; };
-  const std::optional<double> agree = scan_agreement(raycaster_, scan, m->pose, p_.verify_tolerance_m);
+  const std::optional<double> agree =
+      scan_agreement(raycaster_, scan, m->pose, p_.verify_tolerance_m);
   const bool contradicted = agree && *agree < p_.verify_agreement;
   const bool placed = m->accepted && !contradicted;
   // Not placed, yet nothing contradicts the estimate: the returns fit the map well in more than
@@ -56,7 +57,8 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
   // the robot: it goes on (slowly, by its uncertainty) towards what will tell the places apart,
   // and the window is not widened, which would only add look-alikes.
   const bool undecided = !m->accepted && (m->score >= p_.matcher.min_score || !contradicted);
-  if (!placed && (undecided || confirmed(scan_agreement(raycaster_, scan, ekf_.pose(), p_.verify_tolerance_m)))) {
+  if (!placed && (undecided || confirmed(scan_agreement(raycaster_, scan, ekf_.pose(),
+                                                        p_.verify_tolerance_m)))) {
     unmatched_ = false;
     // Ambiguous is not uninformative: a lone wall with its end in view leaves the estimate
     // open along the wall, yet pins it across the wall and in heading. A match that fits well

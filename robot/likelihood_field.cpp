@@ -26,8 +26,12 @@ LikelihoodField::LikelihoodField(const worlds::World& map, double resolution_m, 
 
 void LikelihoodField::add_outline(const geom::Rect& r, bool solid) {
   const geom::Rect band = r.inflated(reach_);
-  auto first = [&](double v, double o) { return static_cast<long>(std::ceil((v - o) / res_ - 0.5)); };
-  auto last = [&](double v, double o) { return static_cast<long>(std::floor((v - o) / res_ - 0.5)); };
+  auto first = [&](double v, double o) {
+    return static_cast<long>(std::ceil((v - o) / res_ - 0.5));
+  };
+  auto last = [&](double v, double o) {
+    return static_cast<long>(std::floor((v - o) / res_ - 0.5));
+  };
   const long j0 = std::max(0L, first(band.ymin, origin_.y)),
              j1 = std::min(ny_ - 1, last(band.ymax, origin_.y));
   const long i0 = std::max(0L, first(band.xmin, origin_.x)),

@@ -36,19 +36,21 @@ Bin bin_of(const ParticleLocalizer::Particle& q, const ParticleParams& p) {
 std::uint64_t key_of(const Bin& b) {
   constexpr std::uint64_t kMask = (1u << 21) - 1;
   return ((static_cast<std::uint64_t>(b.x) & kMask) << 42) |
-         ((static_cast<std::uint64_t>(b.y) & kMask) << 21) | (static_cast<std::uint64_t>(b.t) & kMask);
+         ((static_cast<std::uint64_t>(b.y) & kMask) << 21) |
+         (static_cast<std::uint64_t>(b.t) & kMask);
 }
 
 // Particles drawn with probability proportional to their weights (multinomial resampling).
 class WeightedDraw {
  public:
-  explicit WeightedDraw(const std::vector<ParticleLocalizer::Particle>& set) : cumulative_(set.size()) {
+  explicit WeightedDraw(const std::vector<ParticleLocalizer::Particle>& set)
+      : cumulative_(set.size()) {
     double sum = 0;
     for (std::size_t n = 0; n < set.size(); ++n) cumulative_[n] = sum += set[n].w;
     uniform_ = std::uniform_real_distribution<double>(0.0, sum);
   }
   const ParticleLocalizer::Particle& operator()(const std::vector<ParticleLocalizer::Particle>& set,
-                                                 std::mt19937_64& rng) const {
+                                                std::mt19937_64& rng) const {
     const auto at = std::lower_bound(cumulative_.begin(), cumulative_.end(), uniform_(rng));
     return set[std::min<std::size_t>(static_cast<std::size_t>(at - cumulative_.begin()),
                                      set.size() - 1)];
@@ -102,7 +104,9 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
   update_health();
 }
 
-double ParticleLocalizer::normal(double sigma) { return sigma > 0 ? sigma * unit_normal_(rng_) : 0; }
+double ParticleLocalizer::normal(double sigma) {
+  return sigma > 0 ? sigma * unit_normal_(rng_) : 0;
+}
 
 void ParticleLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) {
   if (dt_s <= 0) return;
@@ -115,9 +119,9 @@ void ParticleLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, d
   pending_.moved_m += std::fabs(distance_m);
   pending_.turned_rad += std::fabs(turn);
   const double gyro_sigma =
-      motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
-                                                          motion_.gyro_min_samples)
-                          : motion_.gyro_noise_radps;
+      motion_.learn_noise
+          ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps, motion_.gyro_min_samples)
+          : motion_.gyro_noise_radps;
   pending_.gyro_var += sq(gyro_sigma * dt_s);
   pending_.time_s += dt_s;
   update_health();
@@ -129,10 +133,9 @@ void ParticleLocalizer::standstill(double gyro_yaw_rate_radps) {
   // At rest the gyro reads the bias plus white noise: the Kalman update of the set's bias, each
   // particle's moved to the posterior by the ensemble square-root update (its deviation from the
   // mean shrunk as the variance is), so that the set keeps its spread's shape.
-  const double r =
-      sq(motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
-                                                             motion_.gyro_min_samples)
-                             : motion_.gyro_noise_radps);
+  const double r = sq(motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
+                                                                          motion_.gyro_min_samples)
+                                          : motion_.gyro_noise_radps);
   bias_moments();
   const double k = bias_var_ / (bias_var_ + r);
   if (!std::isfinite(k) || bias_var_ <= 0) return;
@@ -166,8 +169,8 @@ void ParticleLocalizer::apply_motion() {
   const double yaw = std::sqrt(m.gyro_var);
   const double walk = motion_.bias_walk_radps_per_sqrt_s * std::sqrt(m.time_s);
   const double length = std::hypot(m.delta.x, m.delta.y);
-  const geom::Vec2 u = length > 1e-9 ? geom::Vec2{m.delta.x / length, m.delta.y / length}
-                                     : geom::Vec2{1.0, 0.0};
+  const geom::Vec2 u =
+      length > 1e-9 ? geom::Vec2{m.delta.x / length, m.delta.y / length} : geom::Vec2{1.0, 0.0};
   for (Particle& q : set_) {
     const double a = normal(along), c = normal(across);
     const geom::Pose2 d{m.delta.x + a * u.x - c * u.y, m.delta.y + a * u.y + c * u.x,
@@ -187,9 +190,9 @@ void ParticleLocalizer::take_points(const LidarScan& scan) {
     if (scan.valid(i)) valid.push_back(i);
   points_.clear();
   if (static_cast<int>(valid.size()) < motion_.min_informative_beams) return;
-  const std::size_t stride =
-      std::max<std::size_t>(1, (valid.size() + static_cast<std::size_t>(std::max(1, p_.beams)) - 1) /
-                                   static_cast<std::size_t>(std::max(1, p_.beams)));
+  const std::size_t stride = std::max<std::size_t>(
+      1, (valid.size() + static_cast<std::size_t>(std::max(1, p_.beams)) - 1) /
+             static_cast<std::size_t>(std::max(1, p_.beams)));
   for (std::size_t k = 0; k < valid.size(); k += stride) {
     const std::size_t i = valid[k];
     const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
@@ -207,9 +210,9 @@ void ParticleLocalizer::tabulate_log_likelihood() {
   const double k = 0.5 / sq(hit_sigma_m_);
   log_table_.resize(kLogTableSize + 1);
   for (std::size_t i = 0; i <= kLogTableSize; ++i)
-    log_table_[i] = std::log(p_.z_hit * std::exp(-k * static_cast<double>(i) / kLogTableSize *
-                                                 sq(field_.reach_m())) +
-                             p_.z_rand);
+    log_table_[i] = std::log(
+        p_.z_hit * std::exp(-k * static_cast<double>(i) / kLogTableSize * sq(field_.reach_m())) +
+        p_.z_rand);
 }
 
 double ParticleLocalizer::log_likelihood(double d) const {
@@ -242,7 +245,8 @@ double ParticleLocalizer::weigh() {
     set_[n].w *= std::exp(log_w[n] - best);
     total += set_[n].w;
   }
-  for (Particle& q : set_) q.w = total > 0 && std::isfinite(total) ? q.w / total : 1.0 / set_.size();
+  for (Particle& q : set_)
+    q.w = total > 0 && std::isfinite(total) ? q.w / total : 1.0 / set_.size();
   return fit;
 }
 
@@ -269,8 +273,8 @@ void ParticleLocalizer::resample(const std::vector<std::pair<geom::Pose2, double
     const std::size_t room = ceiling > scratch_.size() ? ceiling - scratch_.size() : 0;
     const std::size_t each = std::min(
         room / candidates.size(),
-        std::max<std::size_t>(30, static_cast<std::size_t>(fresh * static_cast<double>(needed)) /
-                                      candidates.size()));
+        std::max<std::size_t>(
+            30, static_cast<std::size_t>(fresh * static_cast<double>(needed)) / candidates.size()));
     const double spread = matcher_->resolution_m();
     for (const auto& [pose, score] : candidates)
       for (std::size_t k = 0; k < each; ++k)
@@ -302,8 +306,7 @@ void ParticleLocalizer::summarise() {
     }
   }
   const Bin top = bin_of(*heaviest, p_);
-  const std::int64_t turns =
-      static_cast<std::int64_t>(std::ceil(2.0 * M_PI / p_.bin_yaw_rad));
+  const std::int64_t turns = static_cast<std::int64_t>(std::ceil(2.0 * M_PI / p_.bin_yaw_rad));
   double w = 0, x = 0, y = 0, c = 0, s = 0;
   for (const Particle& q : set_) {
     const Bin b = bin_of(q, p_);
@@ -331,8 +334,9 @@ double ParticleLocalizer::explained_share(const geom::Pose2& pose) const {
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   int explained = 0;
   for (const geom::Vec2& e : points_)
-    explained += std::fabs(field_.distance({pose.x + c * e.x - s * e.y,
-                                            pose.y + s * e.x + c * e.y})) <= 3.0 * hit_sigma_m_;
+    explained +=
+        std::fabs(field_.distance({pose.x + c * e.x - s * e.y, pose.y + s * e.x + c * e.y})) <=
+        3.0 * hit_sigma_m_;
   return static_cast<double>(explained) / static_cast<double>(points_.size());
 }
 
@@ -343,8 +347,7 @@ void ParticleLocalizer::judge(const LidarScan& scan) {
   const bool unexplained = valid_returns(scan) >= global_.global_match_min_returns &&
                            !points_.empty() && explained_share(estimate_) < p_.min_explained;
   if (!agree && !unexplained) return;  // too few beams meet a mapped surface: no evidence
-  failed_matches_ =
-      unexplained || *agree < p_.contradicted_agreement ? failed_matches_ + 1 : 0;
+  failed_matches_ = unexplained || *agree < p_.contradicted_agreement ? failed_matches_ + 1 : 0;
   if (motion_.learn_noise && agree && *agree >= global_.verify_agreement &&
       static_cast<int>(residuals_.size()) >= motion_.min_informative_beams)
     range_learnt_.add(robust_variance(residuals_));
@@ -452,8 +455,10 @@ void ParticleLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
   // Widened to at least the asked spread, not by it again and again: a set already that wide
   // holds the hypotheses it needs (repeated additions while the robot waits scattered it over
   // metres of look-alikes).
-  position_sigma_m = std::sqrt(std::max(0.0, sq(position_sigma_m) - sq(ParticleLocalizer::position_sigma_m())));
-  yaw_sigma_rad = std::sqrt(std::max(0.0, sq(yaw_sigma_rad) - sq(ParticleLocalizer::yaw_sigma_rad())));
+  position_sigma_m =
+      std::sqrt(std::max(0.0, sq(position_sigma_m) - sq(ParticleLocalizer::position_sigma_m())));
+  yaw_sigma_rad =
+      std::sqrt(std::max(0.0, sq(yaw_sigma_rad) - sq(ParticleLocalizer::yaw_sigma_rad())));
   if (position_sigma_m <= 0 && yaw_sigma_rad <= 0) return;
   // Enough particles to cover the wider spread, drawn by the weights first.
   const std::size_t n = std::min<std::size_t>(

@@ -47,7 +47,7 @@ struct ParticleParams {
   double update_min_rad = 0.05;  ///< or turn (the same scan again at rest would make it too sure)
   double alpha_slow = 0.001;     ///< augmented MCL's long- and short-term averages of the weight
   double alpha_fast = 0.1;
-  double jitter_m = 0.003;  ///< roughening: each resampled copy spread by this (keeps the set
+  double jitter_m = 0.003;    ///< roughening: each resampled copy spread by this (keeps the set
   double jitter_rad = 0.003;  ///< diverse; resampling happens only after weighing)
   /// A scan agreeing with the map (global_match.h's beam-by-beam agreement) less than this at
   /// the estimate contradicts it (a failed match).
@@ -60,7 +60,7 @@ struct ParticleParams {
   double reseed_tile_m = 3.5;    ///< half-size of one global match's window (all headings)
   int reseed_rings = 2;  ///< tiles searched: this many rings of them about the estimate (2: the
                          ///< square 10.5 m about it, with tiles of 3.5 m)
-  int seed = 1;                  ///< the filter's random numbers (deterministic per seed)
+  int seed = 1;          ///< the filter's random numbers (deterministic per seed)
 };
 
 class ParticleLocalizer final : public PoseEstimator {
@@ -81,8 +81,7 @@ class ParticleLocalizer final : public PoseEstimator {
   double yaw_sigma_rad() const override;
   double gyro_bias_radps() const override { return bias_; }
   double range_sigma_m() const override {
-    return motion_.learn_noise ? range_learnt_.sigma(motion_.range_sigma_m)
-                               : motion_.range_sigma_m;
+    return motion_.learn_noise ? range_learnt_.sigma(motion_.range_sigma_m) : motion_.range_sigma_m;
   }
   LocalizationHealth health() const override { return health_; }
   int failed_matches() const override { return failed_matches_; }

@@ -1,4 +1,5 @@
-// The names of the estimator's health and of the estimator kinds, as records and configs spell them.
+// The names of the estimator's health and of the estimator kinds, as records and configs spell
+// them.
 #include "robot/pose_estimator.h"
 
 namespace plantsim::robot {
@@ -15,6 +16,8 @@ std::string_view to_string(LocalizationHealth h) {
   return "unknown";
 }
 
-std::string_view to_string(EstimatorKind k) { return k == EstimatorKind::kEkf ? "ekf" : "particles"; }
+std::string_view to_string(EstimatorKind k) {
+  return k == EstimatorKind::kEkf ? "ekf" : "particles";
+}
 
 }  // namespace plantsim::robot
