@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/nav2_import.h"
 #include "util/atomic_file.h"
+#include "util/unicode_text.h"
 
 namespace plantsim::app {
 
@@ -22,7 +23,7 @@ std::function<int()> add_nav2_import_command(CLI::App& app) {
     if (!out->empty()) util::check_output_file(*out, "--out");  // before any work: exit 2
     const Nav2Import im = import_nav2_params(*params);
     const std::string text = im.config.dump(2) + "\n";
-    std::cerr << nav2_report(im);
+    std::cerr << util::printable(nav2_report(im), true);  // names from the file, shown as text
     if (out->empty())
       std::cout << text;
     else

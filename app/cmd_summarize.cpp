@@ -8,14 +8,17 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
 #include "app/commands.h"
 #include "render/dashboard.h"
+#include "render/report.h"
 #include "util/atomic_file.h"
 #include "util/fixed_text.h"
 #include "util/input_file.h"
+#include "util/unicode_text.h"
 #include "worlds/json_input.h"
 #include "worlds/world_error.h"
 
@@ -154,11 +157,24 @@ nlohmann::json read_summary(const std::string& dir) {
   return j;
 }
 
+/// Text from a run's files as one Markdown table cell: shown as written, never read as Markdown
+/// or HTML ('|' split columns, a name in [..](..) made a link), controls escaped.
+std::string markdown_cell(const std::string& text) {
+  std::string out;
+  for (const char c : util::printable(text)) {
+    if (std::string_view("\\`*_{}[]()<>#+-!|~&:").find(c) != std::string_view::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 /// The run's row of the Markdown table (the dashboard's columns), its figure linked from `link`.
 std::string markdown_row(const nlohmann::json& j, const std::string& link) {
   const bool measured = j.value("error_measured", true);
-  std::string row = "| " + j.value("world", "?") + " | " + j.value("planner", "?") + " | " +
-                    j.value("travel", "path") + " | " + j.value("status", "?");
+  std::string row = "| " + markdown_cell(j.value("world", "?")) + " | " +
+                    markdown_cell(j.value("planner", "?")) + " | " +
+                    markdown_cell(j.value("travel", "path")) + " | " +
+                    markdown_cell(j.value("status", "?"));
   for (const std::string& cell :
        {measured ? fixed(1000.0 * j.value("position_error_m", 0.0), 1) : std::string("n/a"),
         measured ? fixed(j.value("heading_error_deg", 0.0), 2) : std::string("n/a"),
@@ -167,7 +183,8 @@ std::string markdown_row(const nlohmann::json& j, const std::string& link) {
         fixed(j.value("time_s", 0.0), 1), fixed(j.value("path_length_m", 0.0), 2),
         fixed(j.value("driven_length_m", 0.0), 2)})
     row += " | " + cell;
-  return row + " | [run.png](" + link + "/run.png) |\n";
+  // The link percent-encoded: a folder named "javascript:..." is a path, never a scheme.
+  return row + " | [run.png](" + render::url_attribute(link + "/run.png") + ") |\n";
 }
 
 /// The run's card on the dashboard (its cells in the order of kDashboardHeaders).

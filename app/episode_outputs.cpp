@@ -28,6 +28,11 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   for (const auto& v : r.plan) plan.push_back({v.x, v.y});
   j["plan"] = plan;
   if (!r.plan_note.empty()) j["plan_note"] = r.plan_note;
+  if (r.thinning.any())  // a long episode's logs kept to their limits (docs/config.md)
+    j["logs_thinned"] = {{"trajectory_every_control_periods", r.thinning.trajectory_every},
+                         {"moving_tracks_every_s", 0.25 * r.thinning.moving_every},
+                         {"perception_snapshots_every", r.thinning.snapshots_every},
+                         {"events_dropped", r.thinning.events_dropped}};
   return j.dump(2) + "\n";
 }
 

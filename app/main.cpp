@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "util/data_dir.h"
 #include "util/shell_word.h"
+#include "util/unicode_text.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::app {
@@ -159,13 +160,15 @@ int main(int argc, char** argv) {
     for (auto& [sub, action] : commands)
       if (sub->parsed()) return action();
   } catch (const plantsim::worlds::WorldError& e) {
-    std::cerr << "plantsim: " << e.what() << "\n";
+    // Messages quote names and paths from the user's files: escape sequences in them are shown,
+    // never acted on by the terminal.
+    std::cerr << "plantsim: " << plantsim::util::printable(e.what(), true) << "\n";
     return plantsim::app::kExitBadInput;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "plantsim: " << e.what() << "\n";
+    std::cerr << "plantsim: " << plantsim::util::printable(e.what(), true) << "\n";
     return plantsim::app::kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "plantsim: error: " << e.what() << "\n";
+    std::cerr << "plantsim: error: " << plantsim::util::printable(e.what(), true) << "\n";
     return plantsim::app::kExitFailed;
   }
   return plantsim::app::kExitBadInput;

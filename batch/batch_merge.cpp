@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "batch/batch_report.h"
 #include "batch/episode_records.h"
+#include "batch/episode_space.h"
 #include "batch/scenario_setup.h"
 #include "util/atomic_file.h"
 #include "util/folder_lock.h"
@@ -43,6 +45,11 @@ void add_record(ShardRecords& s, const std::string& dir, const std::string& path
   if (s.fingerprint.empty()) {
     s.fingerprint = theirs, s.first_dir = dir;
     s.expected = j.value("scenario_episodes", std::int64_t{0});
+    if (s.expected > kMaxEpisodes)  // a merge holds every record in memory
+      throw std::invalid_argument("merge: the scenario makes " + std::to_string(s.expected) +
+                                  " episodes; a merge holds at most " +
+                                  std::to_string(kMaxEpisodes) +
+                                  ": merge groups of shards with --allow-partial (docs/batch.md)");
     s.scenario_file = j.value("scenario_file", std::string());
   } else if (theirs != s.fingerprint) {
     throw std::invalid_argument("cannot merge episodes of different scenarios: " + s.first_dir +
@@ -87,27 +94,28 @@ struct MergedScenario {
   std::vector<worlds::World> worlds;
   std::vector<std::string> planners;
   Gate gate;
-  std::vector<Episode> episodes;
+  std::optional<BatchSpec> spec;
+  std::optional<EpisodeSpace> episodes;  // over *spec
 };
 
-MergedScenario find_scenario(const ShardRecords& s) {
-  MergedScenario out;
+void find_scenario(const ShardRecords& s, MergedScenario& out) {
   std::error_code ec;
-  if (s.scenario_file.empty() || !std::filesystem::exists(s.scenario_file, ec)) return out;
+  if (s.scenario_file.empty() || !std::filesystem::exists(s.scenario_file, ec)) return;
   try {
-    const BatchSpec spec = load_batch_spec(s.scenario_file);
+    BatchSpec spec = load_batch_spec(s.scenario_file);
     ScenarioWorlds loaded = load_scenario_worlds(spec);
     if (scenario_identity(spec, loaded.contents, loaded.names, s.expected).fingerprint ==
         s.fingerprint) {
       out.worlds = std::move(loaded.worlds);
       out.planners = spec.planners;
       out.gate = spec.gate;
-      out.episodes = all_episodes(spec, loaded.names);
+      out.spec = std::move(spec);
+      out.episodes.emplace(*out.spec, loaded.names);
     }
   } catch (const std::exception&) {
     out.worlds.clear();
+    out.episodes.reset();
   }
-  return out;
 }
 
 /// Without the scenario file the records still tell its episodes: every id is world | planner |
@@ -138,12 +146,10 @@ void check_ids_by_their_parts(const ShardRecords& s) {
 /// Refuses a record foreign to the scenario, and missing episodes unless `allow_partial`.
 void check_against_scenario(const ShardRecords& s, const MergedScenario& scenario,
                             bool allow_partial) {
-  std::set<std::string_view> scenario_ids;
-  for (const Episode& e : scenario.episodes) scenario_ids.insert(e.id);
-  if (scenario_ids.empty()) check_ids_by_their_parts(s);
-  if (!scenario_ids.empty())
+  if (!scenario.episodes) check_ids_by_their_parts(s);
+  if (scenario.episodes)
     for (const auto& [id, entry] : s.by_id)
-      if (!scenario_ids.count(id))
+      if (!scenario.episodes->find(id))
         throw std::invalid_argument("merge: episode '" + id +
                                     "' is not one of the scenario's episodes (" + s.scenario_file +
                                     "): a record of another run");
@@ -156,8 +162,9 @@ void check_against_scenario(const ShardRecords& s, const MergedScenario& scenari
   if (merged >= s.expected || allow_partial) return;
   std::string missing;
   int named = 0;
-  for (const Episode& e : scenario.episodes)
-    if (named < 5 && !s.by_id.count(e.id)) missing += (named++ ? ", " : " (") + e.id;
+  for (std::int64_t i = 0; scenario.episodes && i < scenario.episodes->size() && named < 5; ++i)
+    if (const std::string id = scenario.episodes->at(i).id; !s.by_id.count(id))
+      missing += (named++ ? ", " : " (") + id;
   if (named > 0) missing += s.expected - merged > named ? ", ...)" : ")";
   throw IncompleteBatch("merge: " + std::to_string(s.expected - merged) + " of the scenario's " +
                         std::to_string(s.expected) + " episodes are missing" + missing +
@@ -171,7 +178,8 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   // Before any work: never a user's folder, never through a link.
   check_batch_output_folder(out_dir, options.own_files);
   const ShardRecords shards = read_shards(dirs);
-  const MergedScenario scenario = find_scenario(shards);
+  MergedScenario scenario;
+  find_scenario(shards, scenario);
   check_against_scenario(shards, scenario, options.allow_partial);
   std::vector<std::pair<std::int64_t, std::string>> ordered;
   for (const auto& [id, entry] : shards.by_id) ordered.push_back(entry);

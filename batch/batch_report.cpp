@@ -265,7 +265,8 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
                          const std::string& out_dir, const std::string& scenario_path) {
   if (failures.empty()) return;
   std::filesystem::create_directories(out_dir + "/failures");
-  for (const FailedEpisode& f : failures) {
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    const FailedEpisode& f = failures[i];
     render::RunFigureOptions options;
     options.setting = "episode " + f.id;
     options.dock_tolerance_m = f.config.tolerance.position_m;
@@ -275,7 +276,8 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
             fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
     chart(
         render::draw_run_figure(f.plant, f.result, options),
-        "failures/" + worlds::file_name_component(f.id) + ".png",
+        // Numbered: ids cut to a file name's length (or made file-safe) can be alike.
+        "failures/" + std::to_string(i + 1) + "_" + worlds::file_name_component(f.id) + ".png",
         "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id));
   }
 }

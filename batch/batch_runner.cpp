@@ -21,6 +21,7 @@
 #include "batch/episode_record.h"
 #include "batch/episode_records.h"
 #include "batch/episode_runner.h"
+#include "batch/episode_space.h"
 #include "batch/progress.h"
 #include "batch/scenario_setup.h"
 #include "util/atomic_file.h"
@@ -32,22 +33,6 @@ namespace plantsim::batch {
 namespace {
 
 using nlohmann::json;
-
-/// A charger offset must leave the mapped charger dockable on every world it is applied to.
-void check_charger_offsets(const BatchSpec& spec, const std::vector<worlds::World>& worlds) {
-  for (const FaultSetting& f : spec.faults) {
-    if (!f.charger_map_offset) continue;
-    for (worlds::World w : worlds) {
-      w.charger_map_offset = *f.charger_map_offset;
-      try {
-        worlds::validate_world(w);
-      } catch (const worlds::WorldError& e) {
-        throw worlds::WorldError(spec.source, "faults." + f.name + ".charger_map_offset",
-                                 "on " + w.name + ": " + e.what());
-      }
-    }
-  }
-}
 
 /// The work is bounded before it starts: the physics steps these episodes may ask for.
 void check_step_bound(const std::string& scenario_path, const BatchSpec& spec,
@@ -79,10 +64,8 @@ void make_output_folder(const RunOptions& o) {
 /// a stream: memory grows with the records kept, not with the file. Returns the ids done; the
 /// lines it could not use are cut from the file and counted in `cut`.
 std::set<std::string> resume(const std::string& jsonl, const RunOptions& o,
-                             const std::vector<Episode>& all, const std::string& fingerprint,
+                             const EpisodeSpace& episodes, const std::string& fingerprint,
                              std::int64_t& cut) {
-  std::set<std::string_view> ids;
-  for (const Episode& e : all) ids.insert(e.id);
   std::vector<std::string> existing;
   std::set<std::string> done;
   std::int64_t foreign = 0;
@@ -95,7 +78,7 @@ std::set<std::string> resume(const std::string& jsonl, const RunOptions& o,
                                   ", this one " + fingerprint +
                                   "): choose another --out, or --fresh to discard them");
     const std::string id = j["id"].get<std::string>();
-    if (!ids.count(id) || !done.insert(id).second) {
+    if (!episodes.find(id) || !done.insert(id).second) {
       ++foreign;  // not one of this scenario's episodes, or a second copy
       return;
     }
@@ -219,10 +202,10 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
   check_charger_offsets(spec, loaded.worlds);
   const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
-  const std::vector<Episode> all = all_episodes(spec, loaded.names);
+  const EpisodeSpace all(spec, loaded.names);
   const ScenarioIdentity scenario =
-      scenario_identity(spec, loaded.contents, loaded.names, static_cast<std::int64_t>(all.size()));
-  const std::vector<Episode> mine = shard(all, o.shard_index, o.shard_count);
+      scenario_identity(spec, loaded.contents, loaded.names, all.size());
+  const std::vector<Episode> mine = all.shard(o.shard_index, o.shard_count);
   check_step_bound(scenario_path, spec, configs, mine);
   BatchOutcome outcome;
   outcome.gate = spec.gate;

@@ -14,6 +14,7 @@
 #include "planner/registry.h"
 #include "util/data_dir.h"
 #include "worlds/known_keys.h"
+#include "worlds/names.h"
 #include "worlds/world_error.h"
 #include "worlds/yaml_input.h"
 
@@ -233,13 +234,8 @@ std::string scalar_text(const YAML::Node& doc, const char* key, const std::strin
 std::string checked_name(const YAML::Node& key, const std::string& path, const std::string& field) {
   if (!key.IsScalar()) throw WorldError(path, field, "expected names as keys");
   const std::string name = key.Scalar();
-  if (name.empty() || name.size() > 100 || !worlds::valid_utf8(name) ||
-      std::any_of(name.begin(), name.end(),
-                  [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
-    throw WorldError(path, field, "names must be 1 to 100 characters of printable UTF-8");
-  if (name.find('|') != std::string::npos)
-    throw WorldError(path, field + "." + name,
-                     "a name may not hold '|': it separates the parts of an episode id");
+  if (const std::string problem = worlds::name_problem(name); !problem.empty())
+    throw WorldError(path, field, "a name " + problem + " (docs/batch.md: names)");
   return name;
 }
 
@@ -455,15 +451,25 @@ void apply_sweep(const YAML::Node& doc, const std::string& path, BatchSpec& s,
       swept.emplace_back((name.empty() ? "" : name + " ") + parameter + "=" + values[i], one);
     }
   bodies = std::move(swept);
-  try {
-    // The parameter must be a plant key or a config key: try the first value.
-    YAML::Node probe = YAML::Clone(sweep_override(parameter, sw["values"][0]));
-    FaultSetting f;
-    take_plant_keys(probe, f, path, "sweep.values[0]");
-    overrides_json(probe, path, "sweep");
-  } catch (const WorldError& e) {
-    throw WorldError(path, "sweep.parameter",
-                     "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
+  // The parameter must be a plant key or a config key, and each value one it takes: an unknown
+  // key is the parameter's fault, anything else the value's (".nan" and "0x10" were reported as
+  // "not a fault parameter").
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string field = "sweep.values[" + std::to_string(i) + "]";
+    try {
+      YAML::Node probe = YAML::Clone(sweep_override(parameter, sw["values"][i]));
+      FaultSetting f;
+      take_plant_keys(probe, f, path, field);
+      overrides_json(probe, path, "sweep");
+    } catch (const WorldError& e) {
+      if (const std::string what = e.what(); what.find("unknown key") != std::string::npos ||
+                                             what.find("unknown parameter") != std::string::npos)
+        throw WorldError(path, "sweep.parameter",
+                         "'" + parameter + "' is not a fault parameter (" + e.what() + ")");
+      throw WorldError(
+          path, field,
+          "'" + values[i] + "' is not a value of " + parameter + " (" + e.what() + ")");
+    }
   }
 }
 
@@ -554,14 +560,15 @@ void check_gate_rules(const std::string& path, const BatchSpec& s) {
   }
 }
 
-void check_episode_count(const std::string& path, const BatchSpec& s) {
-  // Episodes are counted before any is made: a cross product of 1e9 is a typo, not a batch.
+void check_episode_count(const std::string& path, const BatchSpec& s, double faults) {
+  // Episodes are counted before any is made, or any fault of a sweep: a cross product of 1e13
+  // is a typo, not a batch.
   const double total = static_cast<double>(s.world_files.size()) * s.planners.size() *
-                       s.controllers.size() * s.faults.size() * s.seeds.size();
-  if (total > static_cast<double>(kMaxEpisodes))
+                       s.controllers.size() * faults * s.seeds.size();
+  if (total > kMaxScenarioEpisodes)
     throw WorldError(path, "seeds",
                      "the scenario makes " + std::to_string(static_cast<long long>(total)) +
-                         " episodes, more than the limit of " + std::to_string(kMaxEpisodes));
+                         " episodes, more than the limit of 1e12");
 }
 
 BatchSpec read_batch_spec(const std::string& path) {
@@ -571,50 +578,29 @@ BatchSpec read_batch_spec(const std::string& path) {
   check_top_keys(doc, path);
   BatchSpec s;
   s.source = path;
-  s.name = scalar_text(doc, "name", path, std::filesystem::path(path).stem().string());
+  s.name = doc["name"] ? scalar_text(doc, "name", path, "")
+                       : worlds::name_from_file(path, "rename the scenario file or give it a name");
+  if (const std::string problem = worlds::name_problem(s.name); !problem.empty())
+    throw WorldError(path, "name", "the name " + problem);
   read_worlds(doc, path, std::filesystem::path(path).parent_path().string(), s);
   read_planners(doc, path, s);
   read_controllers(doc, path, s);
   FaultBodies bodies = read_fault_bodies(doc, path);
+  read_seeds(doc, path, s);
+  const YAML::Node values =
+      doc["sweep"] && doc["sweep"].IsMap() ? doc["sweep"]["values"] : YAML::Node();
+  check_episode_count(
+      path, s,
+      std::max<double>(1.0, static_cast<double>(bodies.size())) *
+          (values && values.IsSequence() ? std::max<double>(1.0, values.size()) : 1.0));
   apply_sweep(doc, path, s, bodies);
   make_faults(bodies, path, s);
-  read_seeds(doc, path, s);
   read_starts(doc, path, s);
   s.gate = read_gate(doc["gate"], path);
   check_gate_rules(path, s);
-  check_episode_count(path, s);
   return s;
 }
 
 }  // namespace
-
-std::vector<Episode> all_episodes(const BatchSpec& spec,
-                                  const std::vector<std::string>& world_names) {
-  std::vector<Episode> out;
-  std::int64_t index = 0;
-  for (std::size_t w = 0; w < spec.world_files.size(); ++w)
-    for (std::size_t p = 0; p < spec.planners.size(); ++p)
-      for (std::size_t c = 0; c < spec.controllers.size(); ++c)
-        for (std::size_t f = 0; f < spec.faults.size(); ++f)
-          for (std::uint64_t seed : spec.seeds) {
-            Episode e{index++,
-                      world_names[w] + "|" + spec.planners[p] + "|" + spec.controllers[c].name +
-                          "|" + spec.faults[f].name + "|" + std::to_string(seed),
-                      w,
-                      p,
-                      c,
-                      f,
-                      seed};
-            out.push_back(e);
-          }
-  return out;
-}
-
-std::vector<Episode> shard(const std::vector<Episode>& all, int i, int n) {
-  std::vector<Episode> out;
-  for (const Episode& e : all)
-    if (e.index % n == i) out.push_back(e);
-  return out;
-}
 
 }  // namespace plantsim::batch

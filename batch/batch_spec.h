@@ -70,9 +70,12 @@ struct GateOverride {
   }
 };
 
-/// Episodes a scenario may make (worlds x planners x controllers x faults x seeds): their list
-/// and ids are held in memory (about 200 MB at the limit).
+/// Episodes one run (a shard, or a merge) may make: its list and ids are held in memory (about
+/// 200 MB at the limit). The scenario's episodes are never listed whole (batch/episode_space.h).
 inline constexpr std::int64_t kMaxEpisodes = 1000000;
+/// Episodes a scenario may make (worlds x planners x controllers x faults x seeds): more is a
+/// typo in a list, not a batch.
+inline constexpr double kMaxScenarioEpisodes = 1e12;
 /// Physics steps one batch run (a shard) may ask for, the sum over its episodes of timeout_s /
 /// step.dt_s: 1e10 is about two days of this 2-core machine; split larger batches into shards.
 inline constexpr double kMaxBatchSteps = 1e10;
@@ -106,10 +109,5 @@ struct Episode {
 
 /// Throws worlds::WorldError naming the file and field.
 BatchSpec load_batch_spec(const std::string& path);
-std::vector<Episode> all_episodes(const BatchSpec& spec,
-                                  const std::vector<std::string>& world_names);
-
-/// Episodes of shard i of n (index modulo n), deterministic.
-std::vector<Episode> shard(const std::vector<Episode>& all, int i, int n);
 
 }  // namespace plantsim::batch

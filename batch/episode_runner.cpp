@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "batch/batch_gate.h"
+#include "batch/episode_space.h"
 #include "batch/plant_faults.h"
 #include "batch/random_start.h"
 #include "episode/run_episode.h"
@@ -17,6 +18,14 @@ namespace plantsim::batch {
 using nlohmann::json;
 
 EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
+  Run out = prepare(e);
+  out.result = episode::run_episode(
+      out.plant, planner_for(out.plant, e.world, spec_.planners[e.planner], e.fault), out.config,
+      steering_);
+  return out;
+}
+
+EpisodeRunner::Run EpisodeRunner::prepare(const Episode& e) {
   Run out{worlds_[e.world], {}, {}, 0};
   worlds::World& w = out.plant;
   const FaultSetting& fault = spec_.faults[e.fault];
@@ -53,8 +62,6 @@ EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
       w.moving.push_back(person_standing_at_dock(w, optimal.length, fault.standing_at_dock_s));
   }
   out.optimal_m = optimal.length;
-  out.result = episode::run_episode(w, planner_for(w, e.world, spec_.planners[e.planner], e.fault),
-                                    out.config, steering_);
   return out;
 }
 
@@ -82,11 +89,16 @@ std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines
   std::vector<FailedEpisode> out;
   if (failed.empty()) return out;
   EpisodeRunner runner(spec, loaded.worlds, loaded.contents, configs);
-  for (const Episode& e : all_episodes(spec, loaded.names))
-    if (failed.count(e.id)) {
-      EpisodeRunner::Run r = runner.run(e);
-      out.push_back({e.id, std::move(r.plant), std::move(r.result), r.config});
-    }
+  const EpisodeSpace all(spec, loaded.names);
+  std::vector<std::int64_t> indices;  // in the scenario's order, as the records
+  for (const std::string& id : failed)
+    if (const auto index = all.find(id)) indices.push_back(*index);
+  std::sort(indices.begin(), indices.end());
+  for (const std::int64_t index : indices) {
+    const Episode e = all.at(index);
+    EpisodeRunner::Run r = runner.run(e);
+    out.push_back({e.id, std::move(r.plant), std::move(r.result), r.config});
+  }
   return out;
 }
 
@@ -94,15 +106,13 @@ ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std
   const BatchSpec spec = load_batch_spec(scenario_path);
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
   const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
-  const std::vector<Episode> all = all_episodes(spec, loaded.names);
-  const auto it =
-      std::find_if(all.begin(), all.end(), [&](const Episode& e) { return e.id == id; });
-  if (it == all.end())
+  const std::optional<std::int64_t> index = EpisodeSpace(spec, loaded.names).find(id);
+  if (!index)
     throw std::invalid_argument(scenario_path + ": no episode '" + id +
                                 "' (ids are world|planner|controller|fault|seed, "
                                 "as episodes.jsonl records them)");
   EpisodeRunner runner(spec, loaded.worlds, loaded.contents, configs);
-  EpisodeRunner::Run r = runner.run(*it);
+  EpisodeRunner::Run r = runner.run(EpisodeSpace(spec, loaded.names).at(*index));
   return {id, std::move(r.plant), std::move(r.result), r.config};
 }
 

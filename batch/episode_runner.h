@@ -40,6 +40,8 @@ class EpisodeRunner {
 
   /// Runs episode `e`: its plant (start, faults), settings and seed, and the exact optimum.
   Run run(const Episode& e);
+  /// The same without running it (the result left empty): for an outside loop to run it.
+  Run prepare(const Episode& e);
 
  private:
   // Planners are kept for the runner's life (their caches are not shared between threads). A

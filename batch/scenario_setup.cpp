@@ -2,15 +2,27 @@
 #include "batch/scenario_setup.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "episode/episode_config_json.h"
 #include "util/fingerprint.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 #include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::batch {
+namespace {
+
+std::string figure_stem(const std::string& world_name) {
+  std::string stem = worlds::file_name_component(world_name);
+  std::transform(stem.begin(), stem.end(), stem.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return stem;
+}
+
+}  // namespace
 
 ScenarioIdentity scenario_identity(const BatchSpec& spec,
                                    const std::vector<std::uint64_t>& world_contents,
@@ -53,15 +65,18 @@ ScenarioWorlds load_scenario_worlds(const BatchSpec& spec) {
     s.worlds.push_back(worlds::load_world(spec.world_files[i]));
     s.names.push_back(s.worlds.back().name);
     s.contents.push_back(worlds::world_fingerprint(s.worlds.back()));
-    for (std::size_t k = 0; k < i; ++k)
+    for (std::size_t k = 0; k < i; ++k) {
       if (s.names[k] == s.names[i])
         throw worlds::WorldError(
             spec.source, "worlds[" + std::to_string(i) + "]",
             "a second world named '" + s.names[i] + "' (episode ids name the world; rename one)");
-    if (s.names[i].find('|') != std::string::npos)
-      throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
-                               "the world's name '" + s.names[i] +
-                                   "' holds '|', which separates the parts of an episode id");
+      // Figures are named after the world's file-safe name, on file systems that may ignore case.
+      if (figure_stem(s.names[k]) == figure_stem(s.names[i]))
+        throw worlds::WorldError(spec.source, "worlds[" + std::to_string(i) + "]",
+                                 "worlds named '" + s.names[k] + "' and '" + s.names[i] +
+                                     "' would share figure files (paths_" +
+                                     worlds::file_name_component(s.names[i]) + ".png); rename one");
+    }
   }
   for (std::size_t i = 0; i < spec.gate.rules.size(); ++i)
     if (const std::string& w = spec.gate.rules[i].world;
@@ -70,6 +85,21 @@ ScenarioWorlds load_scenario_worlds(const BatchSpec& spec) {
           spec.source, "gate.configurations[" + std::to_string(i) + "].world",
           "'" + w + "' is not one of the scenario's worlds: the rule would judge nothing");
   return s;
+}
+
+void check_charger_offsets(const BatchSpec& spec, const std::vector<worlds::World>& worlds) {
+  for (const FaultSetting& f : spec.faults) {
+    if (!f.charger_map_offset) continue;
+    for (worlds::World w : worlds) {
+      w.charger_map_offset = *f.charger_map_offset;
+      try {
+        worlds::validate_world(w);
+      } catch (const worlds::WorldError& e) {
+        throw worlds::WorldError(spec.source, "faults." + f.name + ".charger_map_offset",
+                                 "on " + w.name + ": " + e.what());
+      }
+    }
+  }
 }
 
 std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec) {

@@ -33,9 +33,13 @@ struct ScenarioWorlds {
   std::vector<std::uint64_t> contents;
 };
 
-/// Loads the worlds; refuses (worlds::WorldError) two of one name or a name holding '|' (episode
-/// ids name the world), and a gate rule naming a world the scenario lacks.
+/// Loads the worlds; refuses (worlds::WorldError) two of one name or two whose figure files would
+/// be one (episode ids and figures name the world), and a gate rule naming a world the scenario
+/// lacks.
 ScenarioWorlds load_scenario_worlds(const BatchSpec& spec);
+
+/// A charger offset must leave the mapped charger dockable on every world it is applied to.
+void check_charger_offsets(const BatchSpec& spec, const std::vector<worlds::World>& worlds);
 
 /// The episode settings, controller-major: index controller * faults + fault.
 std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "episode/log_thinning.h"
+
 namespace plantsim::episode {
 
 using namespace plantsim::sim;  // the simulator's parts and the episode's types
@@ -19,7 +21,8 @@ EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig
   r_.status = "timeout";  // until something ends the episode sooner
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s));
   const std::int64_t max_samples = max_steps / std::max(1, config.control_period_steps) + 1;
-  r_.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(max_samples, 1 << 20)));
+  r_.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(
+      max_samples, static_cast<std::int64_t>(config.log_limits.trajectory))));
 }
 
 bool EpisodeRecorder::first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start) {
@@ -68,9 +71,13 @@ bool EpisodeRecorder::perceived(double t_s, const PhysicsWorld& physics,
     return true;
   }
   if (config_.scan_log_period_s > 0 && t_s >= next_snapshot_s_) {
-    next_snapshot_s_ = t_s + config_.scan_log_period_s;
+    next_snapshot_s_ = t_s + config_.scan_log_period_s * r_.thinning.snapshots_every;
     r_.perception_log.push_back(
         {t_s, perceiver.last_scan(), perceiver.tracker().boxes(t_s), p.layer});
+    if (r_.perception_log.size() >= std::max<std::size_t>(2, config_.log_limits.snapshots)) {
+      keep_every_other(r_.perception_log);
+      r_.thinning.snapshots_every *= 2;
+    }
   }
   return false;
 }
@@ -106,6 +113,9 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
 
 void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perception& p,
                              const Decision* d) {
+  // The last sample always; the others at the log's current spacing.
+  const bool last = d == nullptr || !d->finished.empty();
+  if (decisions_++ % r_.thinning.trajectory_every != 0 && !last) return;
   const Pose2 truth = physics.robot_pose();
   const double speed = geom::dot(physics.robot_velocity(), truth.heading());
   const std::optional<robot::ActorState> target = physics.target();
@@ -116,17 +126,38 @@ void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perc
   else
     r_.trajectory.push_back({t_s, truth, p.pose, p.position_sigma_m, speed, 0,
                              controller::DockPhase::kTravel, false, target_at});
+  if (!last && r_.trajectory.size() >= std::max<std::size_t>(2, config_.log_limits.trajectory)) {
+    keep_every_other(r_.trajectory);
+    r_.thinning.trajectory_every *= 2;
+  }
+}
+
+void EpisodeRecorder::event(Kind kind, double t_s, Vec2 at) {
+  if (kind != Kind::kFailure && r_.events.size() >= config_.log_limits.events) {
+    ++r_.thinning.events_dropped;
+    return;
+  }
+  r_.events.push_back({kind, t_s, at});
 }
 
 void EpisodeRecorder::track_moving_obstacles(double t_s, const PhysicsWorld& physics) {
   constexpr double kMovingTrackPeriod_s = 0.25;
   if (t_s < next_track_s_) return;
-  next_track_s_ = t_s + kMovingTrackPeriod_s;
+  next_track_s_ = t_s + kMovingTrackPeriod_s * r_.thinning.moving_every;
   const std::vector<robot::ActorState> actors = physics.actors();
+  if (actors.empty()) return;
   r_.moving_tracks.resize(actors.size());
   for (std::size_t i = 0; i < actors.size(); ++i) {
     r_.moving_tracks[i].t_s.push_back(t_s);
     r_.moving_tracks[i].boxes.push_back(actors[i].box);
+  }
+  const std::size_t samples = r_.moving_tracks.front().t_s.size();
+  if (samples >= 2 && samples * actors.size() >= config_.log_limits.moving_boxes) {
+    for (EpisodeResult::MovingTrack& track : r_.moving_tracks) {
+      keep_every_other(track.t_s);
+      keep_every_other(track.boxes);
+    }
+    r_.thinning.moving_every *= 2;
   }
 }
 

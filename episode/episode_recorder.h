@@ -4,6 +4,7 @@
 // (run_episode.cpp) hands it what each stage produced; nothing here feeds back into the robot.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "controller/traction.h"
@@ -54,7 +55,7 @@ class EpisodeRecorder {
 
  private:
   using Kind = EpisodeResult::Event::Kind;
-  void event(Kind kind, double t_s, Vec2 at) { r_.events.push_back({kind, t_s, at}); }
+  void event(Kind kind, double t_s, Vec2 at);
   /// One trajectory sample; `d` null when the episode ended before a decision.
   void sample(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
               const robot::Decision* d);
@@ -70,6 +71,7 @@ class EpisodeRecorder {
   std::optional<robot::GiveUp> give_up_;
   double next_snapshot_s_ = 0;
   double next_track_s_ = 0;
+  std::int64_t decisions_ = 0;  // trajectory samples offered (one per control period)
 };
 
 }  // namespace plantsim::episode

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_plantsim, m) {
   bind_run(m);
   bind_batch(m);
   bind_nav2(m);
+  bind_env(m);
 }

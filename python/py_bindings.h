@@ -12,5 +12,6 @@ void bind_plan(py::module_& m);
 void bind_run(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_nav2(py::module_& m);
+void bind_env(py::module_& m);
 
 }  // namespace plantsim::python

@@ -3,6 +3,7 @@
 
 #include <pybind11/stl.h>
 
+#include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::python {
@@ -71,10 +72,27 @@ void bind_world(py::module_& m) {
                              [](const PyWorld& w) { return w.world->robot.wheel_base_m; })
       .def_property_readonly("max_speed",
                              [](const PyWorld& w) { return w.world->robot.max_speed_mps; })
-      .def("__repr__", [](const PyWorld& w) {
-        return "<plantsim.World '" + w.world->name +
-               "': " + std::to_string(w.world->obstacles.size()) + " rectangles>";
-      });
+      .def("__repr__",
+           [](const PyWorld& w) {
+             return "<plantsim.World '" + w.world->name +
+                    "': " + std::to_string(w.world->obstacles.size()) + " rectangles>";
+           })
+      // Pickled as its file, poses and content fingerprint (for multiprocessing): loaded again
+      // on the other side, refused if the file no longer holds the same world.
+      .def(py::pickle(
+          [](const PyWorld& w) {
+            return py::make_tuple(w.world->source, pose_array(w.world->start),
+                                  pose_array(w.world->charger),
+                                  worlds::world_fingerprint(*w.world));
+          },
+          [](const py::tuple& t) {
+            if (t.size() != 4) throw std::invalid_argument("not a pickled plantsim.World");
+            const PyWorld w = load(t[0], t[1], t[2], "", 0);
+            if (worlds::world_fingerprint(*w.world) != t[3].cast<std::uint64_t>())
+              throw std::invalid_argument(w.world->source +
+                                          ": the file no longer holds the pickled world");
+            return w;
+          }));
   m.def(
       "load_world", &load, py::arg("path"), py::kw_only(), py::arg("start") = py::none(),
       py::arg("charger") = py::none(), py::arg("scen") = "", py::arg("query") = 0,

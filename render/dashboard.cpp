@@ -47,17 +47,17 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
     const std::string report = path_of(r.folder, "report.html");
     h += "<tr><td class=\"l\">";
     if (!r.figures.empty())
-      h += "<a href=\"" + html_escape(report) + "\"><img class=\"thumb\" src=\"" +
-           html_escape(path_of(r.folder, r.figures.front())) + "\" alt=\"" + html_escape(r.world) +
-           "\"></a>";
-    h += "</td><td class=\"l\"><a href=\"" + html_escape(report) + "\">" + html_escape(r.world) +
+      h += "<a href=\"" + url_attribute(report) + "\"><img class=\"thumb\" src=\"" +
+           url_attribute(path_of(r.folder, r.figures.front())) + "\" alt=\"" +
+           html_escape(r.world) + "\"></a>";
+    h += "</td><td class=\"l\"><a href=\"" + url_attribute(report) + "\">" + html_escape(r.world) +
          "</a></td><td class=\"l\">" + html_escape(r.setting) + "</td><td class=\"l " +
          (r.succeeded ? "ok" : "bad") + "\">" + html_escape(r.status) + "</td>";
     for (const auto& c : r.cells) h += "<td>" + html_escape(c) + "</td>";
     h += "<td class=\"l\">";
     for (std::size_t i = 0; i < r.figures.size(); ++i)
       h += (i ? ", " : "") + std::string("<a href=\"") +
-           html_escape(path_of(r.folder, r.figures[i])) + "\">" + html_escape(r.figures[i]) +
+           url_attribute(path_of(r.folder, r.figures[i])) + "\">" + html_escape(r.figures[i]) +
            "</a>";
     h += "</td></tr>\n";
   }
@@ -68,9 +68,9 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       if (l.kind != kind) continue;
       rows += "<tr><td class=\"l\">";
       if (!l.thumbnail.empty())
-        rows += "<a href=\"" + html_escape(l.report) + "\"><img class=\"thumb\" src=\"" +
-                html_escape(l.thumbnail) + "\" alt=\"" + html_escape(l.title) + "\"></a>";
-      rows += "</td><td class=\"l\"><a href=\"" + html_escape(l.report) + "\">" +
+        rows += "<a href=\"" + url_attribute(l.report) + "\"><img class=\"thumb\" src=\"" +
+                url_attribute(l.thumbnail) + "\" alt=\"" + html_escape(l.title) + "\"></a>";
+      rows += "</td><td class=\"l\"><a href=\"" + url_attribute(l.report) + "\">" +
               html_escape(l.title) + "</a></td>";
       if (kind == std::string("batch"))
         rows += "<td class=\"l " +

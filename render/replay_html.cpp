@@ -222,10 +222,15 @@ constexpr const char* kPlayer = R"JS(
 
 std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run,
                         const ReplayOptions& o) {
-  std::string data = replay_data(world, run, o).dump();
-  // Inside a script element "</" could end it early.
-  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3))
-    data.replace(at, 2, "<\\/");
+  // Inside a script element "</script" ends it early and "<!--" opens the HTML parser's escaped
+  // states (a world named "<!--<script>" hid the player): JSON holds "<", ">" and "&" only inside
+  // strings, where "\u003c" and the like read back the same.
+  std::string data;
+  for (const char c : replay_data(world, run, o).dump())
+    data += c == '<'   ? std::string("\\u003c")
+            : c == '>' ? std::string("\\u003e")
+            : c == '&' ? std::string("\\u0026")
+                       : std::string(1, c);
   std::string h = "<section id=\"replay\" data-replay-frames=\"0\">\n<h2>Replay</h2>\n";
   h += "<canvas id=\"replay-canvas\" width=\"" + std::to_string(o.width_px) + "\" height=\"" +
        std::to_string(o.height_px) + "\"></canvas>\n";

@@ -1,6 +1,9 @@
 // HTML generation with escaping.
 #include "render/report.h"
 
+#include <cctype>
+#include <string>
+
 #include "util/atomic_file.h"
 
 namespace plantsim::render {
@@ -22,6 +25,20 @@ std::string html_escape(const std::string& s) {
         break;
       default:
         out += c;
+    }
+  }
+  return out;
+}
+
+std::string url_attribute(const std::string& relative_path) {
+  std::string out;
+  for (const char c : relative_path) {
+    const auto b = static_cast<unsigned char>(c);
+    if (std::isalnum(b) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += c;
+    } else {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      out += {'%', kHex[b >> 4], kHex[b & 15]};
     }
   }
   return out;
@@ -62,12 +79,12 @@ std::string report_html(const Report& r) {
   }
   h += r.body_html;
   for (const auto& f : r.figures)
-    h += "<figure><img src=\"" + html_escape(f.file) + "\" alt=\"" + html_escape(f.caption) +
+    h += "<figure><img src=\"" + url_attribute(f.file) + "\" alt=\"" + html_escape(f.caption) +
          "\"><figcaption>" + html_escape(f.caption) + "</figcaption></figure>\n";
   if (!r.files.empty()) {
     h += "<p>Files: ";
     for (std::size_t i = 0; i < r.files.size(); ++i)
-      h += (i ? ", " : "") + std::string("<a href=\"") + html_escape(r.files[i]) + "\">" +
+      h += (i ? ", " : "") + std::string("<a href=\"") + url_attribute(r.files[i]) + "\">" +
            html_escape(r.files[i]) + "</a>";
     h += "</p>\n";
   }
@@ -86,7 +103,16 @@ std::vector<std::string> referenced_files(const std::string& html) {
     for (std::size_t at = html.find(attribute); at != std::string::npos;
          at = html.find(attribute, at + 1)) {
       const std::size_t begin = at + attribute.size(), end = html.find('"', begin);
-      if (end != std::string::npos) out.push_back(html.substr(begin, end - begin));
+      if (end == std::string::npos) continue;
+      std::string file;
+      for (std::size_t i = begin; i < end; ++i)
+        if (html[i] == '%' && i + 2 < end) {
+          file += static_cast<char>(std::stoi(html.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        } else {
+          file += html[i];
+        }
+      out.push_back(file);
     }
   }
   return out;

@@ -28,12 +28,15 @@ struct Report {
 std::string report_html(const Report& r);
 /// Text made safe inside HTML elements and attribute values.
 std::string html_escape(const std::string& s);
+/// A relative file path as an attribute's URL: every byte but letters, digits, '-', '.', '_',
+/// '~' and '/' percent-encoded ('#', '%', '?' and spaces in a world's name broke image links).
+std::string url_attribute(const std::string& relative_path);
 /// The script that marks <html data-images-loaded="all N"> (or "missing: ...") once loaded.
 std::string image_check_script();
 /// Written atomically to `path`.
 void write_report(const Report& r, const std::string& path);
 
-/// Every relative file the HTML references (src= and href=), for checks.
+/// Every relative file the HTML references (src= and href=, percent-decoded), for checks.
 std::vector<std::string> referenced_files(const std::string& html);
 
 }  // namespace plantsim::render

@@ -10,7 +10,7 @@ root=$PWD
 seconds=${1:-60}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params names)
 data=$(cd ../shared/data && pwd)
 
 ./scripts/sanitize_tree.sh  # the harnesses are built in the sanitizer tree
@@ -18,7 +18,7 @@ mkdir -p build-fuzz
 
 corpus=build-fuzz/corpus
 rm -rf "$corpus"
-mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params} build-fuzz/artifacts
+mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names} build-fuzz/artifacts
 small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
 for f in worlds/examples/*.json worlds/scenarios/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
   small "$f" && cp "$f" "$corpus/world_json/$(basename "$f")"
@@ -27,6 +27,12 @@ for f in configs/*.json; do cp "$f" "$corpus/episode_config/"; done
 cp configs/coverage_params.json "$corpus/coverage_params/"
 printf '{"chnn": {"restarts": 3, "eta": 1e3}, "exact": {"max_prefixes": 10}}' > "$corpus/coverage_params/small.json"
 for f in scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
+# Names and words people and attackers use (issue 51's cases among them).
+i=0
+for n in "small_plant" "脱硫 plant #2 (100%)" "plant';touch\${IFS}X;'" "x'; touch F; echo '" $'\e[2Jwiped' \
+         $'a\u202egnp.exe' "<!--<script>" "javascript:alert(1)" "=HYPERLINK(1)" "a|b" ".." " a"; do
+  printf '%s' "$n" > "$corpus/names/$((i++))"
+done
 printf 'worlds: [w.json]\nplanners: [vg]\nfaults: {a: {lidar: {range_noise_m: 0.01}}, b: {unmapped_obstacles: 2}}\nseeds: 2\ngate: {min_success: 0.5, configurations: [{planner: vg, min_success: 0.9}]}\nsweep: {parameter: drive.tyre_friction, values: [0.1, 0.5]}\n' \
   > "$corpus/scenario/small.yaml"
 # A small ROS map (a 12 x 10 PGM, text and binary) and a cut of the depot.

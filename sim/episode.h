@@ -80,6 +80,15 @@ struct EpisodeConfig {
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)
   double scan_log_period_s =
       0;  ///< keep the scan and the tracks this often, for animations (0: only the last)
+  /// The logs' sizes whatever the episode's duration (docs/config.md "Long episodes"): a log
+  /// that reaches its limit keeps every other entry and is written half as often from then on,
+  /// so that it still spans the whole episode; events past their limit are counted, not kept.
+  struct LogLimits {
+    std::size_t trajectory = 100000;    ///< samples (about 11 MB; 55 min at 30 Hz unthinned)
+    std::size_t moving_boxes = 200000;  ///< all moving obstacles' track samples together
+    std::size_t snapshots = 2000;       ///< perception snapshots (scan_log_period_s)
+    std::size_t events = 20000;         ///< stops, replans, recoveries, retries
+  } log_limits;
   std::uint64_t seed = 1;
 };
 
@@ -173,6 +182,16 @@ struct EpisodeResult {
     Vec2 at;  ///< true position (for a collision, the robot's centre when contact began)
   };
   std::vector<Event> events;
+  /// How the logs were thinned to their limits (EpisodeConfig::log_limits): 1 and 0 when not.
+  struct LogThinning {
+    int trajectory_every = 1;  ///< control periods between the trajectory's samples at the end
+    int moving_every = 1;      ///< moving tracks kept every this many 0.25 s
+    int snapshots_every = 1;   ///< perception snapshots kept every this many scan_log_period_s
+    std::int64_t events_dropped = 0;
+    bool any() const {
+      return trajectory_every > 1 || moving_every > 1 || snapshots_every > 1 || events_dropped > 0;
+    }
+  } thinning;
 };
 
 }  // namespace plantsim::sim

@@ -13,6 +13,7 @@
 #include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
 #include "batch/episode_runner.h"
+#include "batch/episode_space.h"
 #include "batch_folder_test.h"
 #include "test_paths.h"
 #include "util/csv.h"
@@ -259,7 +260,8 @@ TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
   EXPECT_EQ(r.succeeded, 0);
   const std::string id =
       nlohmann::json::parse(read_episode_records((dir_ / "fail").string()).at(0))["id"];
-  EXPECT_TRUE(fs::exists(dir_ / "fail" / "failures" / (worlds::file_name_component(id) + ".png")))
+  EXPECT_TRUE(
+      fs::exists(dir_ / "fail" / "failures" / ("1_" + worlds::file_name_component(id) + ".png")))
       << id;
 }
 
@@ -285,6 +287,36 @@ TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The scenario's episodes computed from their index and found from their id, never listed whole:
+// every index reads back from its id, the shards cover each index once, and ids the scenario
+// does not make (a seed it lacks, a name off its lists, a sixth part) are not found.
+TEST(EpisodeSpace, EveryIdReadsBackToItsIndexAndTheShardsCoverEachOnce) {
+  BatchSpec spec;
+  spec.planners = {"vg", "grid"};
+  spec.controllers = {{"default", "{}"}, {"slow", "{}"}, {"fast", "{}"}};
+  spec.faults = {{}, {}};
+  spec.faults[0].name = "none";
+  spec.faults[1].name = "wet";
+  spec.seeds = {3, 1, 40};
+  const EpisodeSpace space(spec, {"a", "b"});
+  ASSERT_EQ(space.size(), 2 * 2 * 3 * 2 * 3);
+  EXPECT_EQ(space.at(0).id, "a|vg|default|none|3");
+  EXPECT_EQ(space.at(1).id, "a|vg|default|none|1");  // seeds vary fastest, in the list's order
+  EXPECT_EQ(space.at(space.size() - 1).id, "b|grid|fast|wet|40");
+  for (std::int64_t i = 0; i < space.size(); ++i) EXPECT_EQ(space.find(space.at(i).id), i);
+  std::vector<int> seen(static_cast<std::size_t>(space.size()), 0);
+  for (int i = 0; i < 5; ++i) {
+    const std::vector<Episode> mine = space.shard(i, 5);
+    EXPECT_EQ(static_cast<std::int64_t>(mine.size()), space.shard_size(i, 5));
+    for (const Episode& e : mine) ++seen[static_cast<std::size_t>(e.index)];
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), space.size());
+  for (const std::string id :
+       {"a|vg|default|none|2", "c|vg|default|none|1", "a|vg|default|none", "a|vg|default|none|1|x",
+        "a|vg|default|none|01", "a|vg|default|none|+1", "a|vg|default|none|"})
+    EXPECT_FALSE(space.find(id)) << id;
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {
        "judge nothing"},
       {head + "seeds: 1\ngate: {configurations: [{world: nowhere, min_success: 0.9}]}\n",
        "judge nothing"},
-      {head + "planners: [vg, grid]\nseeds: 600000\n", "more than the limit of 1000000"},
+      {head + "planners: [vg, grid]\nseeds: 600000\n", "one run makes at most 1000000 episodes"},
       {head + "controllers: {slow: {timeout_s: 86400, step: {dt_s: 0.001}}}\nseeds: 200\n",
        "physics steps"},
   };

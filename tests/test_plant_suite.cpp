@@ -1,6 +1,7 @@
-// The plant is not its map, at scale: scenarios/plant_mismatch_suite.yaml run as a batch (300
-// random starts per fault on world_N50 and world_N200) against issue 14's targets, and a sweep
-// whose summary gives one row per value.
+// The plant is not its map, at scale: scenarios/plant_mismatch_suite.yaml run as a batch against
+// issue 14's targets (its first 50 starts per world here, 100 per fault on world_N50 and
+// world_N200; the scenario's whole 300 per fault is a statistical run outside the test command,
+// docs/testing.md), and a sweep whose summary gives one row per value.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,8 +45,8 @@ fs::path temp_dir(const std::string& name) {
   return d;
 }
 
-// The scenario with its shared-data paths made absolute and, under PLANTSIM_SUITE_SCALE (the
-// sanitizer tree), fewer seeds.
+// The scenario with its shared-data paths made absolute and its first 50 seeds (fewer under
+// PLANTSIM_SUITE_SCALE, the sanitizer tree).
 std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   std::ifstream in(test::source_file(rel));
   std::stringstream text;
@@ -54,11 +55,9 @@ std::string scenario_copy(const std::string& rel, const fs::path& dir) {
   const std::string from = "$data/", to = test::shared_data("");
   for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
     s.replace(at, from.size(), to);
-  if (!test::full_size()) {
-    const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
-    if (list != std::string::npos && end != std::string::npos)
-      s.replace(list, end + 1 - list, "seeds: " + std::to_string(test::scaled(150, 3)));
-  }
+  const std::size_t list = s.find("seeds: ["), end = s.find(']', list);
+  if (list != std::string::npos && end != std::string::npos)
+    s.replace(list, end + 1 - list, "seeds: " + std::to_string(test::scaled(50, 3)));
   const fs::path p = dir / fs::path(rel).filename();
   std::ofstream(p) << s;
   return p.string();

@@ -171,6 +171,23 @@ TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
   std::filesystem::remove_all(dir);
 }
 
+// A name that HTML would read as markup inside the player's data block: "</script>" ending it, or
+// "<!--<script>" opening the parser's escaped states (which hid the player). The block holds
+// no "<" at all and reads back to the name.
+TEST_F(RenderedRun, AHostileWorldNameStaysInsideTheReplaysData) {
+  worlds::World w = *world_;
+  w.name = "<!--<script>x</script><!-- & -->";
+  const std::string html = replay_html(w, *run_);
+  const std::string open = "<script type=\"application/json\" id=\"replay-data\">";
+  const std::size_t begin = html.find(open) + open.size();
+  const std::size_t end = html.find("</script>", begin);
+  ASSERT_NE(end, std::string::npos);
+  const std::string data = html.substr(begin, end - begin);
+  EXPECT_EQ(data.find_first_of("<>&"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(data)["world"], w.name);
+  EXPECT_EQ(html.find("<!--"), std::string::npos);
+}
+
 TEST_F(RenderedRun, ComparisonPanelsShareTheScale) {
   ComparisonPanel a{"vg", *run_, {}, true}, b{"vg-traditional", *run_, {}, true};
   const Image img = draw_comparison(*world_, {a, b}, "test", 1600, 500);

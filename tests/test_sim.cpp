@@ -4,6 +4,7 @@
 
 #include "episode/episode_config_json.h"
 #include "episode/run_episode.h"
+#include "episode/stepped_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "sim/episode.h"
@@ -241,3 +242,104 @@ TEST(EpisodeConfigFile, ReadsValuesAndRejectsUnknownKeysAndBadValues) {
 
 }  // namespace
 }  // namespace plantsim::sim
+
+namespace plantsim::sim {
+namespace {
+
+// A long episode's logs stay within their limits (EpisodeConfig::log_limits) and still span
+// it: the same episode with small limits drives exactly as with none, its trajectory is every
+// k-th sample of the whole one plus the last, evenly spaced, and so are the movers' tracks.
+TEST(LongEpisodes, LogsKeepTheirLimitsAndStillSpanTheEpisode) {
+  const auto world = worlds::load_world(test::source_file("worlds/examples/parked_cart.json"));
+  auto p = planner::make_planner("vg", planner::planner_input(world, true));
+  EpisodeConfig config;
+  config.scan_log_period_s = 0.2;
+  const EpisodeResult whole = run_episode(world, *p, config);
+  config.log_limits = {64, 40, 8, 1};
+  const EpisodeResult thin = run_episode(world, *p, config);
+  ASSERT_TRUE(whole.docked) << whole.status;
+  EXPECT_EQ(thin.status, whole.status);
+  EXPECT_EQ(thin.time_s, whole.time_s);
+  EXPECT_EQ(thin.physics_steps, whole.physics_steps);
+  EXPECT_FALSE(whole.thinning.any());
+
+  ASSERT_GT(whole.trajectory.size(), 4 * 64u);
+  EXPECT_LE(thin.trajectory.size(), 64u);
+  const int k = thin.thinning.trajectory_every;
+  EXPECT_GE(k, 4);
+  for (std::size_t i = 0; i + 1 < thin.trajectory.size(); ++i) {
+    ASSERT_LT(i * k, whole.trajectory.size());
+    EXPECT_EQ(thin.trajectory[i].t_s, whole.trajectory[i * k].t_s) << i;
+    EXPECT_EQ(thin.trajectory[i].truth.x, whole.trajectory[i * k].truth.x) << i;
+  }
+  EXPECT_EQ(thin.trajectory.back().t_s, whole.trajectory.back().t_s);  // the end, always
+  EXPECT_GE(thin.trajectory.size() * k, whole.trajectory.size() - k);  // nothing lost at the end
+
+  ASSERT_EQ(thin.moving_tracks.size(), 1u);
+  const auto& track = thin.moving_tracks.front().t_s;
+  EXPECT_LT(track.size(), 40u);
+  EXPECT_GT(thin.thinning.moving_every, 1);
+  // Every 0.25 s at the control steps' times (30 Hz): up to a step later each.
+  const double every = 0.25 * thin.thinning.moving_every, step = 1.0 / 30;
+  for (std::size_t i = 0; i + 1 < track.size(); ++i) {
+    EXPECT_GE(track[i + 1] - track[i], every - 1e-9) << i;
+    EXPECT_LE(track[i + 1] - track[i], every + thin.thinning.moving_every * step + 1e-9) << i;
+  }
+  EXPECT_GT(track.back(), whole.time_s - 2 * every);
+
+  EXPECT_LE(thin.perception_log.size(), 8u);
+  EXPECT_GT(thin.perception_log.back().t_s,
+            whole.time_s - 0.2 * thin.thinning.snapshots_every - 0.05);
+  EXPECT_GE(whole.events.size(), 2u);  // a stop for the cart, a replan
+  EXPECT_EQ(thin.events.size(), 1u);
+  EXPECT_EQ(thin.thinning.events_dropped, static_cast<std::int64_t>(whole.events.size()) - 1);
+}
+
+}  // namespace
+}  // namespace plantsim::sim
+
+namespace plantsim::episode {
+namespace {
+
+// Driven a period at a time with plantsim's own command, the episode is the one run_episode runs
+// in a call, bit for bit; the outside is asked only while it steers (not during the gyro's
+// calibration at rest, not while plantsim docks by itself), and nothing steps after the end.
+TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
+  auto world = std::make_shared<const worlds::World>(
+      worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json")));
+  sim::EpisodeConfig config;
+  config.seed = 3;
+  auto p = planner::make_planner("vg", planner::planner_input(*world, true));
+  const sim::EpisodeResult whole = run_episode(*world, *p, config);
+  ASSERT_TRUE(whole.docked) << whole.status;
+
+  SteppedEpisode stepped(world, "vg", config, false);
+  ASSERT_TRUE(stepped.start());
+  EXPECT_GE(stepped.view().perception.t_s, config.perception.gyro_calibration_s - 1e-9);
+  EXPECT_EQ(stepped.view().phase, controller::DockPhase::kTravel);
+  while (stepped.step(stepped.view().builtin)) {
+    ASSERT_EQ(stepped.view().phase, controller::DockPhase::kTravel);  // docking runs by itself
+  }
+  const sim::EpisodeResult& r = stepped.result();
+  EXPECT_EQ(r.status, whole.status);
+  EXPECT_EQ(r.time_s, whole.time_s);
+  ASSERT_EQ(r.trajectory.size(), whole.trajectory.size());
+  EXPECT_EQ(r.trajectory.back().truth.x, whole.trajectory.back().truth.x);
+  EXPECT_EQ(r.trajectory.back().truth.y, whole.trajectory.back().truth.y);
+  EXPECT_GT(stepped.steps(), 100);
+  EXPECT_LT(stepped.steps(), static_cast<std::int64_t>(whole.trajectory.size()));
+  EXPECT_THROW(stepped.step({0, 0}), std::logic_error);
+
+  // Standing still when asked to: the robot never leaves its start, the episode times out.
+  config.timeout_s = 8;
+  SteppedEpisode still(world, "vg", config, true);
+  ASSERT_TRUE(still.start());
+  while (still.step({0, 0})) {
+  }
+  EXPECT_EQ(still.result().status, "timeout");
+  for (const sim::TrajectorySample& s : still.result().trajectory)
+    EXPECT_LT(geom::distance(s.truth.position(), world->start.position()), 0.01);
+}
+
+}  // namespace
+}  // namespace plantsim::episode

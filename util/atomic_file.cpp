@@ -57,9 +57,15 @@ std::string not_a_regular_file(const std::string& path) {
 /// A new temporary file beside `path`, created exclusively (never an existing file or link).
 std::pair<int, std::string> exclusive_temporary(const std::string& path) {
   static std::atomic<unsigned> counter{0};
+  // A file name near the system's 255-byte limit leaves no room for the suffix: its temporary
+  // takes the name's first 200 bytes (a 254-byte --junit name failed after the whole batch).
+  const fs::path p(path);
+  std::string base = p.filename().string();
+  if (base.size() > 200) base.resize(200);
+  const std::string stem = (p.parent_path() / base).string();
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string tmp =
-        path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+        stem + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd >= 0) return {fd, tmp};
     if (errno != EEXIST)
@@ -160,6 +166,11 @@ StagedFolder::StagedFolder(std::string destination, const std::vector<std::strin
       fs::path(destination_).filename() == "..")
     throw std::invalid_argument("output folder '" + destination_ +
                                 "': name a folder of its own (it is replaced as a whole)");
+  // A link is never followed or replaced: a dangling one ran the whole episode, then failed to
+  // move the folder over it (exit 1); one to a folder would write into the user's elsewhere.
+  if (fs::is_symlink(fs::symlink_status(destination_, ec)))
+    throw std::invalid_argument("output folder '" + destination_ +
+                                "' is a symbolic link; name a folder, not a link");
   if (fs::exists(destination_, ec)) {
     if (!fs::is_directory(destination_, ec))
       throw std::invalid_argument("output folder '" + destination_ + "' is a file");

@@ -57,14 +57,6 @@ bool valid_utf8(const std::string& text) {
   return true;
 }
 
-std::string name_from_file(const std::string& path) {
-  std::string name = std::filesystem::path(path).stem().string();
-  if (!valid_utf8(name))
-    for (char& c : name)
-      if (static_cast<unsigned char>(c) >= 0x80) c = '?';
-  return name.empty() ? "world" : name;
-}
-
 std::string file_name_component(const std::string& name) {
   std::string out;
   for (unsigned char c : name) {

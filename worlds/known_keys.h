@@ -17,10 +17,6 @@ std::string unknown_key_problem(const std::string& key, const std::vector<std::s
 /// True when `text` is valid UTF-8 (JSON records and reports need it).
 bool valid_utf8(const std::string& text);
 
-/// A world name from a file's stem; bytes that are not UTF-8 (a file name can hold any) become
-/// '?' so that records and reports stay valid JSON and HTML.
-std::string name_from_file(const std::string& path);
-
 /// A name safe as one folder or file name component: path separators, control characters and
 /// characters that break CSV or ids become '_', leading dots are dropped, at most 100 bytes.
 std::string file_name_component(const std::string& name);

@@ -5,6 +5,7 @@
 
 #include "worlds/charger_placement.h"
 #include "worlds/known_keys.h"
+#include "worlds/names.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
@@ -14,7 +15,7 @@ World world_from_movingai(const std::string& map_path, const std::string& scen_p
                           std::optional<Pose2> start, std::optional<Pose2> charger) {
   const GridMap map = load_movingai_map(map_path);
   World w;
-  w.name = name_from_file(map_path);
+  w.name = name_from_file(map_path, "rename the map file");
   w.source = map_path;
   w.floor = {0.0, 0.0, static_cast<double>(map.width), static_cast<double>(map.height)};
   w.obstacles = merge_blocked_cells(map, blocked_for_anyangle);

@@ -17,6 +17,7 @@
 #include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 #include "worlds/movingai_world.h"
+#include "worlds/names.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_limits.h"
 
@@ -134,7 +135,10 @@ class FieldReader {
   std::string source_;
 };
 
-std::string stem_of(const std::string& path) { return name_from_file(path); }
+std::string stem_of(const std::string& path) {
+  return name_from_file(path,
+                        "rename the file, or give the world a \"name\" where it can hold one");
+}
 
 // A box on a scripted path: a moving obstacle or the moving target.
 MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std::string& path) {
@@ -142,10 +146,16 @@ MovingObstacle read_scripted_box(const FieldReader& in, const json& m, const std
           {"name", "size_m", "waypoints", "speed_mps", "start_time_s", "loop", "yields_to_robot",
            "yield_distance_m"});
   MovingObstacle mo;
-  mo.name = m.contains("name") && m["name"].is_string() ? m["name"].get<std::string>() : path;
+  mo.name = path;
+  if (m.contains("name")) {
+    if (!m["name"].is_string()) in.fail(path + ".name", "expected a string");
+    mo.name = m["name"].get<std::string>();
+    if (const std::string problem = name_problem(mo.name); !problem.empty())
+      in.fail(path + ".name", "the name " + problem);
+  }
   const json& size = in.member(m, "size_m", path);
   const Vec2 wh = in.point_array(size, path + ".size_m");
-  if (wh.x <= 0 || wh.y <= 0) in.fail(path + ".size_m", "must be positive");
+  if (!(wh.x >= 0.01 && wh.y >= 0.01)) in.fail(path + ".size_m", "must be at least 0.01 m");
   mo.width_m = wh.x;
   mo.height_m = wh.y;
   const json& wps = in.member(m, "waypoints", path);
@@ -239,15 +249,14 @@ void read_map_mismatch(const json& doc, const FieldReader& in, World& w) {
   }
 }
 
-// A world's name labels figures and reports; folders made from it go through
-// file_name_component, but a name no report can show is refused.
+// A world's name labels figures and reports, makes ids and folder names: one rule for all names
+// (worlds/names.h).
 std::string read_name(const json& doc, const FieldReader& in, const std::string& source) {
   if (!doc.contains("name")) return stem_of(source);
   if (!doc["name"].is_string()) in.fail("name", "expected a string");
   const std::string name = doc["name"].get<std::string>();
-  if (name.empty() || name.size() > 100) in.fail("name", "expected 1 to 100 characters");
-  for (unsigned char c : name)
-    if (c < 0x20 || c == 0x7f) in.fail("name", "holds a control character");
+  if (const std::string problem = name_problem(name); !problem.empty())
+    in.fail("name", "the name " + problem);
   return name;
 }
 
@@ -306,10 +315,11 @@ void read_charger(const json& doc, const FieldReader& in, World& w) {
   w.charger = in.pose(in.member(doc, "charger", ""), "charger",
                       {"width_m", "depth_m", "staging_distance_m", "pad_travel_m"});
   const json& charger = doc["charger"];
+  // At least a centimetre: a charger 5e-324 m wide loaded and was never seen.
   if (charger.contains("width_m"))
-    w.charger_spec.width_m = in.positive(charger, "width_m", "charger", 10.0);
+    w.charger_spec.width_m = in.bounded(charger, "width_m", "charger", 0.01, 10.0);
   if (charger.contains("depth_m"))
-    w.charger_spec.depth_m = in.positive(charger, "depth_m", "charger", 10.0);
+    w.charger_spec.depth_m = in.bounded(charger, "depth_m", "charger", 0.01, 10.0);
   if (charger.contains("pad_travel_m")) {
     w.charger_spec.pad_travel_m = in.number(charger, "pad_travel_m", "charger");
     if (w.charger_spec.pad_travel_m < 0 || w.charger_spec.pad_travel_m > 0.05)
@@ -445,6 +455,21 @@ void validate_unmapped(const World& w) {
   }
 }
 
+// A mover that covers the robot at t = 0 begins the episode in contact: a world that cannot be
+// run, not a collision to count (only definite overlaps: the footprint's inscribed disk).
+void check_movers_clear_of_start(const World& w) {
+  const double r =
+      w.robot.rectangular() ? 0.5 * std::min(w.robot.length_m, w.robot.width_m) : w.robot.radius_m;
+  for (std::size_t i = 0; i < w.moving.size(); ++i) {
+    const Rect o = w.moving[i].box_at(0.0);
+    const double dx = std::max({o.xmin - w.start.x, 0.0, w.start.x - o.xmax});
+    const double dy = std::max({o.ymin - w.start.y, 0.0, w.start.y - o.ymax});
+    if (dx * dx + dy * dy < r * r)
+      throw WorldError(w.source, "moving_obstacles[" + std::to_string(i) + "]",
+                       "covers the robot at the start at t = 0 (it would begin in contact)");
+  }
+}
+
 }  // namespace
 
 void validate_world(const World& w) {
@@ -456,6 +481,7 @@ void validate_world(const World& w) {
     throw WorldError(w.source, "robot.wheel_base_m", "wheels must fit inside the footprint");
   check_pose_free(w, w.start, "start");
   check_pose_free(w, w.charger, "charger");
+  check_movers_clear_of_start(w);
   if (!docking_area_clear(w))
     throw WorldError(w.source, "charger",
                      "no room to dock: the charger body, staging pose or final approach is "

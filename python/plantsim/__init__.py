@@ -33,9 +33,10 @@ if not os.environ.get("PLANTSIM_DATA") and _find_shared_data():
 from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, load_world, nav2_import, plan,
                         planners, run)
 from ._plantsim import _batch
+from .env import Env, VectorEnv
 
-__all__ = ["PHASES", "InputError", "Observation", "Plan", "Run", "World", "batch", "load_world", "nav2_import",
-           "plan", "planners", "run"]
+__all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "load_world",
+           "nav2_import", "plan", "planners", "run"]
 
 
 def _number(text):
@@ -58,7 +59,7 @@ def _absolute_worlds(scenario):
 
 
 def batch(scenario, out=None, *, controller=None, docking=None, controller_name="", threads=0, figures=True,
-          fresh=False, progress=False):
+          fresh=False, progress=False, records=True):
     """Runs a scenario as `plantsim batch SCENARIO --out OUT` does; returns its summary.
 
     scenario: a scenario file's path, or a dict with the same keys (docs/batch.md); a dict's
@@ -71,7 +72,8 @@ def batch(scenario, out=None, *, controller=None, docking=None, controller_name=
     Returns a dict: "rows" (one dict per configuration, the columns of summary.csv), "episodes",
     "ran", "skipped", "succeeded" (over every episode in the folder, as the rows count),
     "succeeded_now" (of those this call ran), "collisions" (this call's), "fingerprint", "out".
-    Per-episode records are the lines of OUT/episodes.jsonl (one JSON object each).
+    "records": every episode's record in the folder, a dict each (the lines of OUT/episodes.jsonl,
+    docs/batch.md); records=False leaves them out (a million episodes take about a GB as dicts).
     The batch runs with the GIL released; Ctrl-C raises KeyboardInterrupt within a fraction of a
     second, the finished episodes kept in episodes.jsonl (the same call again resumes them).
     """
@@ -87,4 +89,7 @@ def batch(scenario, out=None, *, controller=None, docking=None, controller_name=
         rows = [{k: _number(v) for k, v in row.items()} for row in csv.DictReader(io.StringIO(result.pop("summary_csv")))]
         result["rows"] = rows
         result["out"] = folder if out is not None else None
+        if records:
+            with open(os.path.join(folder, "episodes.jsonl"), encoding="utf-8") as f:
+                result["records"] = [json.loads(line) for line in f if line.strip()]
         return result

@@ -1,0 +1,260 @@
+// The episode's loop (see the header): the parts assembled from the plant, the map and the
+// configuration, and the loop of sense, estimate, decide, actuate, step, record, able to pause.
+#include "episode/episode_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/kidnap_landing.h"
+
+namespace plantsim::episode {
+
+using namespace plantsim::sim;  // the simulator's parts and the episode's types
+
+namespace {
+
+SensorParams sensor_params(const EpisodeConfig& c, const worlds::World& plant) {
+  SensorParams s;
+  s.oracle = c.perception.mode == robot::PerceptionMode::kOracle;
+  s.lidar = c.lidar;
+  s.imu = c.imu;
+  s.detection = c.detection;
+  s.odometry = c.odometry;
+  s.oracle_fix = c.localization;
+  s.beacon = c.beacon;
+  s.pads.lateral_tolerance_m = c.tolerance.position_m;
+  s.pads.heading_tolerance_rad = c.tolerance.heading_rad;
+  s.pads.dwell_s = c.tolerance.dwell_s;
+  s.pads.min_press_m = c.tolerance.min_press_m;
+  s.pads.travel_m = plant.charger_spec.pad_travel_m;
+  s.pads.contact_width_m = plant.charger_spec.width_m;
+  return s;
+}
+
+robot::PerceptionParams perception_params(const EpisodeConfig& c) {
+  robot::PerceptionParams p = c.perception;
+  p.field_range_m = c.field.sensor_range_m;
+  return p;
+}
+
+controller::TractionParams traction_params(const EpisodeConfig& c, const worlds::World& plant) {
+  controller::TractionParams t = c.traction;
+  t.max_accel_mps2 = std::min(t.max_accel_mps2, plant.robot.max_accel_mps2);
+  return t;
+}
+
+/// Where the first plan goes: the staging pose, or where a moving target will park (the
+/// reference of a potential-field pursuit, the first path of a path-following one).
+geom::Vec2 plan_goal(const worlds::World& map) {
+  return map.target ? map.target->waypoints.back() : worlds::staging_pose(map).position();
+}
+
+std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Planner& planner,
+                                           const EpisodeConfig& config,
+                                           const planner::PlanResult& plan,
+                                           const EpisodeSteering& steering, EpisodeResult& r) {
+  robot::TravelSettings settings{config.tracking, config.docking, config.field,
+                                 config.pursuit_replan_period_s};
+  settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
+  settings.docking.footprint_radius_m = map.robot.radius_m;
+  settings.map_planner = &planner;  // replans add what is sensed on top of its graph
+  const std::vector<Vec2> first_path = plan.status != planner::PlanStatus::kOk
+                                           ? std::vector<Vec2>{map.start.position(), plan_goal(map)}
+                                       : plan.drive_path.empty() ? plan.path
+                                                                 : plan.drive_path;
+  const bool pursuit = map.target.has_value();
+  std::unique_ptr<robot::Travel> travel =
+      config.travel == TravelMode::kPotentialField
+          ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
+      : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
+                : make_path_travel(map, planner.name(), settings, first_path);
+  if (steering) {
+    travel = steering.wrap(std::move(travel), map, first_path);
+    r.steered_by = steering.name;
+  }
+  if (config.perception.mode == robot::PerceptionMode::kSensors)
+    travel = hold_still_first(std::move(travel), config.perception.gyro_calibration_s);
+  return travel;
+}
+
+}  // namespace
+
+/// The parts of one episode, from the plant (physics, drive, sensors) to the robot's side
+/// (perceiver, travel, traction), run step by step: physics, tyres, encoders and contacts every
+/// step; sensing, estimation, control and the trajectory log every control period, seeing the
+/// contacts latched since the last one.
+class EpisodeRun::Loop {
+ public:
+  Loop(const worlds::World& plant, const worlds::World& map, const EpisodeConfig& config,
+       std::unique_ptr<robot::Travel> travel, EpisodeRecorder& recorder)
+      : plant_(plant),
+        config_(config),
+        pursuit_(map.target.has_value()),
+        physics_(plant),
+        drive_(plant.robot, config.drive),
+        sensors_(plant, sensor_params(config, plant), config.seed),
+        perceiver_(map, perception_params(config)),
+        travel_(std::move(travel)),
+        governor_(traction_params(config, plant)),
+        recorder_(recorder),
+        contact_(physics_.contacts()),
+        max_steps_(static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s))),
+        period_(std::max(1, config.control_period_steps)) {}
+
+  Stop advance(const std::function<bool()>& interrupted,
+               const std::function<bool()>& wants_command) {
+    if (closed_) return Stop::kEnded;
+    const double dt = config_.step.dt_s;
+    Stop stop = Stop::kEnded;
+    try {
+      if (awaiting_) {  // the paused control period goes on with the outside's command
+        awaiting_ = false;
+        if (finish_control(period_ * dt)) return close(Stop::kEnded);
+        apply_faults(k_ * dt);
+        step(dt);
+        ++k_;
+      }
+      for (; k_ <= max_steps_; ++k_) {
+        time_s_ = k_ * dt;
+        const bool control_tick = k_ % period_ == 0;
+        if (control_tick && interrupted && interrupted()) {
+          stop = Stop::kInterrupted;
+          break;
+        }
+        recorder_.before_step(physics_, contact_);
+        if (control_tick) {
+          if (begin_control(k_ * dt)) break;
+          if (wants_command && wants_command()) {
+            awaiting_ = true;
+            return Stop::kAwaitingCommand;
+          }
+          if (finish_control(period_ * dt)) break;
+        }
+        apply_faults(k_ * dt);
+        step(dt);
+      }
+    } catch (...) {
+      close(stop);
+      throw;
+    }
+    return close(stop);
+  }
+
+  void command(controller::Twist twist) {
+    if (!awaiting_) throw std::logic_error("no decision awaits a command");
+    decision_.twist = twist;
+  }
+  double time_s() const { return time_s_; }
+  const robot::Perception* last_perception() const { return perception_; }
+
+ private:
+  Stop close(Stop stop) {
+    if (!closed_) recorder_.close(physics_, *travel_, governor_, perceiver_, pursuit_);
+    closed_ = true;
+    return stop;
+  }
+
+  /// Sense, estimate, decide; true when the episode has ended.
+  bool begin_control(double t_s) {
+    t_s_ = t_s;
+    const robot::SensorReadings readings = sensors_.read(physics_, t_s);  // sense
+    perception_ = &perceiver_.update(readings);                           // estimate
+    if (recorder_.perceived(t_s, physics_, readings, *perception_, perceiver_)) return true;
+    decision_ = travel_->decide(*perception_);  // decide
+    return false;
+  }
+
+  /// Record the decision, actuate; true when the decision ended the episode.
+  bool finish_control(double period_s) {
+    if (recorder_.decided(t_s_, physics_, *perception_, decision_)) return true;
+    const controller::Twist twist =
+        governor_.limit(decision_.twist, perception_->slipping, period_s);  // actuate
+    drive_.command(controller::to_wheels(twist, plant_.robot.wheel_base_m), period_s);
+    return false;
+  }
+
+  /// The faults the configuration injects into the physics (a kidnap).
+  void apply_faults(double t_s) {
+    const KidnapFault& kidnap = config_.kidnap;
+    if (!kidnap.enabled() || kidnapped_ || t_s < kidnap.at_s) return;
+    kidnapped_ = true;
+    const Pose2 was = physics_.robot_pose();
+    if (kidnap.drawn()) {
+      // No free floor that far (a narrow plant): the robot stays where it was.
+      const std::optional<Pose2> to = kidnap_landing(plant_, was.position(), kidnap.distance_min_m,
+                                                     kidnap.distance_max_m, config_.seed);
+      if (!to) return;
+      physics_.place_robot(*to);
+    } else {
+      physics_.place_robot(
+          {was.x + kidnap.dx_m, was.y + kidnap.dy_m, geom::wrap_angle(was.yaw + kidnap.dyaw_rad)});
+    }
+    sensors_.robot_placed(physics_.robot_pose());
+  }
+
+  void step(double dt_s) {
+    drive_.apply(physics_, dt_s);
+    physics_.step(config_.step);
+    contact_ = physics_.contacts();  // read once per step, by sensors and metrics alike
+    sensors_.count(physics_, contact_, drive_, dt_s);
+    recorder_.after_step(physics_);
+  }
+
+  const worlds::World& plant_;
+  const EpisodeConfig& config_;
+  bool pursuit_;
+  PhysicsWorld physics_;
+  WheelDrive drive_;
+  SensorSuite sensors_;
+  robot::Perceiver perceiver_;
+  std::unique_ptr<robot::Travel> travel_;
+  controller::TractionGovernor governor_;
+  EpisodeRecorder& recorder_;
+  ContactState contact_;
+  bool kidnapped_ = false;
+  double time_s_ = 0;
+  std::int64_t max_steps_;
+  int period_;
+  std::int64_t k_ = 0;  // the next physics step
+  bool awaiting_ = false, closed_ = false;
+  double t_s_ = 0;  // of the control period at hand
+  const robot::Perception* perception_ = nullptr;
+  robot::Decision decision_;
+};
+
+EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
+                       const EpisodeConfig& config, const EpisodeSteering& steering)
+    : map_copy_(worlds::differs_from_map(plant) ? worlds::robot_map(plant) : worlds::World{}),
+      map_(worlds::differs_from_map(plant) ? map_copy_ : plant) {
+  result_.planner = planner.name();
+  result_.travel = std::string(to_string(config.travel));
+  result_.perception_mode = std::string(to_string(config.perception.mode));
+  recorder_ = std::make_unique<EpisodeRecorder>(plant, config, result_);
+  const planner::PlanResult plan = planner.plan(map_.start.position(), plan_goal(map_));
+  // The potential field needs no plan: without its reference it still drives.
+  const bool needs_plan = config.travel != TravelMode::kPotentialField;
+  if (!recorder_->first_plan(plan, needs_plan, map_.start)) return;
+  loop_ = std::make_unique<Loop>(
+      plant, map_, config, make_travel(map_, planner, config, plan, steering, result_), *recorder_);
+}
+
+EpisodeRun::~EpisodeRun() = default;
+
+EpisodeRun::Stop EpisodeRun::advance(const std::function<bool()>& interrupted,
+                                     const std::function<bool()>& wants_command) {
+  return loop_ ? loop_->advance(interrupted, wants_command) : Stop::kEnded;
+}
+
+void EpisodeRun::command(controller::Twist twist) {
+  if (!loop_) throw std::logic_error("the episode has ended");
+  loop_->command(twist);
+}
+
+double EpisodeRun::time_s() const { return loop_ ? loop_->time_s() : 0.0; }
+
+const robot::Perception* EpisodeRun::last_perception() const {
+  return loop_ ? loop_->last_perception() : nullptr;
+}
+
+}  // namespace plantsim::episode

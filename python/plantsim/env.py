@@ -1,0 +1,194 @@
+"""plantsim.Env and plantsim.VectorEnv: an episode driven one control period at a time, with the
+Gymnasium API's contract (https://gymnasium.farama.org/api/env/; the package itself is not
+needed: these classes follow its published semantics and spaces' fields).
+
+    env = plantsim.Env("worlds/examples/small_plant.json")
+    obs, info = env.reset(seed=3)
+    while True:
+        obs, reward, terminated, truncated, info = env.step(policy(obs))
+        if terminated or truncated:
+            break
+
+An observation is the robot's perception as numpy arrays (never the simulator's truth): "scan"
+(ranges of the newest lidar scan, NaN for a dropout), "scan_time" (when that scan was taken: the
+same value twice is the same scan), "pose" (the estimate [x, y, yaw], map frame), "covariance"
+(3 x 3), "velocity" ([encoder speed m/s, gyro yaw rate rad/s]), "odometry" (dead-reckoned
+[x, y, yaw]), "staging" (where docking takes over), "waypoint" (the point 1 m along plantsim's
+plan ahead of the estimate), "charger" (the docked pose as the detector saw it, robot frame;
+NaN when unseen) and "charger_seen", "phase" (index in plantsim.PHASES), "health" (0 ok,
+1 degraded, 2 lost), "time" (s). docs/python.md has the reward, the spaces and an example.
+"""
+import numpy as np
+
+from ._plantsim import PHASES, _Env, _VectorEnv
+
+
+class Box:
+    """Real arrays within bounds, with the fields of Gymnasium's spaces.Box (low, high, shape,
+    dtype) and its sample() and contains()."""
+
+    def __init__(self, low, high, shape=None, dtype=np.float64, seed=None):
+        shape = tuple(shape) if shape is not None else np.shape(low)
+        self.low = np.broadcast_to(np.asarray(low, dtype=dtype), shape).copy()
+        self.high = np.broadcast_to(np.asarray(high, dtype=dtype), shape).copy()
+        self.shape, self.dtype = shape, np.dtype(dtype)
+        self._rng = np.random.default_rng(seed)
+
+    def seed(self, seed=None):
+        self._rng = np.random.default_rng(seed)
+
+    def sample(self):
+        low = np.where(np.isfinite(self.low), self.low, -1.0)
+        high = np.where(np.isfinite(self.high), self.high, 1.0)
+        return self._rng.uniform(low, high).astype(self.dtype)
+
+    def contains(self, x):
+        x = np.asarray(x)
+        if x.shape != self.shape:
+            return False
+        inside = (x >= self.low) & (x <= self.high)
+        return bool(np.all(inside | np.isnan(x)))  # NaN marks "none" (a dropout, no charger)
+
+    def __repr__(self):
+        return f"Box({self.low.min()}, {self.high.max()}, {self.shape}, {self.dtype})"
+
+
+class Dict:
+    """Named spaces, as Gymnasium's spaces.Dict."""
+
+    def __init__(self, spaces):
+        self.spaces = dict(spaces)
+
+    def __getitem__(self, key):
+        return self.spaces[key]
+
+    def keys(self):
+        return self.spaces.keys()
+
+    def sample(self):
+        return {k: s.sample() for k, s in self.spaces.items()}
+
+    def contains(self, x):
+        return isinstance(x, dict) and x.keys() == self.spaces.keys() and all(
+            s.contains(x[k]) for k, s in self.spaces.items())
+
+    def __repr__(self):
+        return "Dict(" + ", ".join(f"{k}: {s!r}" for k, s in self.spaces.items()) + ")"
+
+
+def _spaces(limits, action, n=None):
+    max_speed, wheel_base, beams, max_range = limits
+    lead = () if n is None else (n,)
+    inf = np.inf
+    if action == "wheels":
+        act = Box(-max_speed, max_speed, lead + (2,))
+    else:
+        turn = 2.0 * max_speed / wheel_base
+        act = Box(np.broadcast_to([-max_speed, -turn], lead + (2,)), np.broadcast_to([max_speed, turn], lead + (2,)))
+    box = lambda low, high, shape, dtype=np.float64: Box(low, high, lead + shape, dtype)
+    obs = Dict({
+        "scan": box(0.0, max_range if np.isfinite(max_range) else inf, (beams,)),
+        "scan_time": box(0.0, inf, ()),
+        "pose": box(-inf, inf, (3,)),
+        "covariance": box(-inf, inf, (3, 3)),
+        "velocity": box(-inf, inf, (2,)),
+        "odometry": box(-inf, inf, (3,)),
+        "staging": box(-inf, inf, (3,)),
+        "waypoint": box(-inf, inf, (2,)),
+        "charger": box(-inf, inf, (3,)),
+        "charger_seen": box(0, 1, (), np.bool_),
+        "phase": box(0, len(PHASES) - 1, (), np.int64),
+        "health": box(0, 2, (), np.int64),
+        "time": box(0.0, inf, ()),
+    })
+    return act, obs
+
+
+class Env:
+    """One environment (Gymnasium's Env contract).
+
+    world: a World or a world file's path; or scenario: a scenario file (its worlds, starts,
+    faults and controllers' configs: reset() takes its episodes in the order a batch runs them).
+    config: a dict or config file (docs/config.md) for a world. planner: a name from planners().
+    start: "random" (the start a batch draws for the seed; the default), "world" or [x, y, yaw].
+    docking: "plantsim" (its manoeuvre docks once the staging pose is reached; the episode then
+    runs to its end within the step that reaches it) or "agent" (the actions steer docking too).
+    action: "twist" ((v m/s, omega rad/s), the default) or "wheels" ((left, right) m/s).
+    reward: None for the default (docs/python.md), or f(obs, info) -> float.
+    max_steps: truncate after this many steps (0: only the config's timeout_s truncates).
+    """
+
+    metadata = {"render_modes": []}
+    render_mode = None
+    spec = None
+
+    def __init__(self, world=None, *, scenario=None, config=None, planner="vg", start="random",
+                 docking="plantsim", action="twist", reward=None, max_steps=0):
+        self._env = _Env(world, scenario, config, planner, start, docking, action, reward, max_steps)
+        self.action_space, self.observation_space = _spaces(self._env.limits, action)
+        self.np_random = np.random.default_rng()
+
+    def reset(self, *, seed=None, options=None):
+        """A new episode. seed: the episode's seed (noise, and with start="random" its start; for
+        a scenario, its episode at index seed mod the episode count); None: the next seed (1
+        first). options: {"episode": id} for a scenario's episode by its id. Returns (obs, info)."""
+        if seed is not None:
+            self.np_random = np.random.default_rng(seed)
+            self.action_space.seed(seed)
+        return self._env.reset(seed, options)
+
+    def step(self, action):
+        """Drives one control period with `action`; returns (obs, reward, terminated, truncated,
+        info). terminated: docked or failed (info["status"], info["failure"]); truncated: the
+        config's timeout_s or max_steps reached. Stepping after either raises InputError."""
+        return self._env.step(action)
+
+    def render(self):
+        return None
+
+    def close(self):
+        pass
+
+    @property
+    def unwrapped(self):
+        return self
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+
+class VectorEnv:
+    """n environments stepped together in C++ threads (Gymnasium's vector API, next-step
+    autoreset: an environment that terminated or truncated at a step starts its next episode at
+    the following step, which returns its first observation with reward 0).
+
+    Environment i of reset(seed=s) runs episodes with seeds s + i, s + i + n, s + i + 2n, ...
+    Observations are the Env's, stacked: obs["scan"] has shape (n, beams), obs["pose"] (n, 3).
+    step(actions) takes an array of shape (n, 2). threads: 0 for one per core. The other
+    arguments are Env's (reward: the default only).
+    """
+
+    metadata = {"render_modes": [], "autoreset_mode": "NextStep"}
+    render_mode = None
+
+    def __init__(self, n, world=None, *, scenario=None, config=None, planner="vg", start="random",
+                 docking="plantsim", action="twist", max_steps=0, threads=0):
+        self.num_envs = n
+        self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, action, max_steps, threads)
+        self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action)
+        self.action_space, self.observation_space = _spaces(self._env.limits, action, n)
+
+    def reset(self, *, seed=None, options=None):
+        if options:
+            raise ValueError("VectorEnv.reset takes no options")
+        return self._env.reset(seed)
+
+    def step(self, actions):
+        return self._env.step(np.asarray(actions, dtype=np.float64))
+
+    def close(self):
+        pass

@@ -1,0 +1,600 @@
+// plantsim.Env and plantsim.VectorEnv: episodes driven a control period at a time, with the
+// Gymnasium API's contract (reset -> (obs, info), step -> (obs, reward, terminated, truncated,
+// info)); observations are the robot's perception as numpy arrays, never the truth. Episodes
+// come from a world (its start, the batch's random start for the seed, or a pose) or from a
+// scenario (its worlds, starts, faults and controllers' configs, episode by episode as a batch
+// makes them). The stepping runs with the GIL released; VectorEnv steps its environments on
+// C++ threads in one call.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "batch/batch_spec.h"
+#include "batch/episode_runner.h"
+#include "batch/episode_space.h"
+#include "batch/random_start.h"
+#include "batch/scenario_setup.h"
+#include "episode/stepped_episode.h"
+#include "planner/registry.h"
+#include "python/py_arguments.h"
+#include "python/py_bindings.h"
+#include "python/py_world.h"
+#include "worlds/world_fingerprint.h"
+#include "worlds/world_loader.h"
+
+namespace plantsim::python {
+namespace {
+
+using episode::SteppedEpisode;
+
+/// Where episodes come from: one world, or a scenario's episodes in the order a batch runs them.
+class EpisodeSource {
+ public:
+  struct Drawn {
+    std::shared_ptr<const worlds::World> plant;
+    sim::EpisodeConfig config;
+    std::string planner, id;
+  };
+  virtual ~EpisodeSource() = default;
+  /// The episode for `seed` (a world: the noise seed and, with random starts, the start; a
+  /// scenario: its episode at index seed mod its count), or the scenario's episode `id`.
+  virtual Drawn draw(std::uint64_t seed, const std::string& id) = 0;
+  /// The robot and lidar the episodes have (a scenario's first world and config), for the spaces.
+  virtual const worlds::World& first_world() const = 0;
+  virtual const sim::EpisodeConfig& first_config() const = 0;
+};
+
+class WorldSource : public EpisodeSource {
+ public:
+  WorldSource(PyWorld world, sim::EpisodeConfig config, std::string planner, std::string start,
+              std::optional<geom::Pose2> pose)
+      : world_(std::move(world)),
+        config_(std::move(config)),
+        planner_(std::move(planner)),
+        start_(std::move(start)),
+        pose_(pose),
+        fingerprint_(worlds::world_fingerprint(*world_.world)) {
+    if (pose_) {
+      auto moved = std::make_shared<worlds::World>(*world_.world);
+      moved->start = *pose_;
+      worlds::validate_world(*moved);  // a start in an obstacle or off the floor is refused
+      world_.world = moved;
+    }
+    if (start_ == "random")
+      vg_ = planner::make_planner("vg", planner::planner_input(*world_.world, true));
+  }
+  Drawn draw(std::uint64_t seed, const std::string& id) override {
+    if (!id.empty()) throw std::invalid_argument("options['episode'] needs an Env of a scenario");
+    Drawn d{world_.world, config_, planner_, world_.world->name + "|" + std::to_string(seed)};
+    d.config.seed = seed;
+    if (vg_) {
+      const auto pose = batch::random_start(*world_.world, *vg_, seed, fingerprint_);
+      if (!pose)
+        throw std::invalid_argument(world_.world->name +
+                                    ": no free start with a path to the charger");
+      auto moved = std::make_shared<worlds::World>(*world_.world);
+      moved->start = *pose;
+      d.plant = moved;
+    }
+    return d;
+  }
+  const worlds::World& first_world() const override { return *world_.world; }
+  const sim::EpisodeConfig& first_config() const override { return config_; }
+
+ private:
+  PyWorld world_;
+  sim::EpisodeConfig config_;
+  std::string planner_, start_;
+  std::optional<geom::Pose2> pose_;
+  std::uint64_t fingerprint_;
+  std::unique_ptr<planner::Planner> vg_;
+};
+
+class ScenarioSource : public EpisodeSource {
+ public:
+  explicit ScenarioSource(const std::string& path)
+      : spec_(batch::load_batch_spec(path)),
+        loaded_(batch::load_scenario_worlds(spec_)),
+        configs_(batch::episode_configs(spec_)),
+        space_(spec_, loaded_.names),
+        runner_(spec_, loaded_.worlds, loaded_.contents, configs_) {
+    batch::check_charger_offsets(spec_, loaded_.worlds);
+  }
+  Drawn draw(std::uint64_t seed, const std::string& id) override {
+    std::int64_t index =
+        static_cast<std::int64_t>(seed % static_cast<std::uint64_t>(space_.size()));
+    if (!id.empty()) {
+      const auto found = space_.find(id);
+      if (!found)
+        throw std::invalid_argument("no episode '" + id + "' in " + spec_.source +
+                                    " (ids are world|planner|controller|fault|seed)");
+      index = *found;
+    }
+    const batch::Episode e = space_.at(index);
+    batch::EpisodeRunner::Run prepared = runner_.prepare(e);
+    return {std::make_shared<const worlds::World>(std::move(prepared.plant)), prepared.config,
+            spec_.planners[e.planner], e.id};
+  }
+  const worlds::World& first_world() const override { return loaded_.worlds.front(); }
+  const sim::EpisodeConfig& first_config() const override { return configs_.front(); }
+
+ private:
+  batch::BatchSpec spec_;
+  batch::ScenarioWorlds loaded_;
+  std::vector<sim::EpisodeConfig> configs_;
+  batch::EpisodeSpace space_;
+  batch::EpisodeRunner runner_;
+};
+
+/// The default reward (docs/python.md): progress towards the staging pose by the estimate, a
+/// cost of time, the bumper pressed, and the outcome at the end.
+struct RewardWeights {
+  double progress = 1.0, per_step = 0.01, bumper = 1.0, docked = 10.0, failed = 10.0;
+};
+
+/// One environment: its episode source, the episode at hand and what the last step said.
+class EnvCore {
+ public:
+  EnvCore(std::shared_ptr<EpisodeSource> source, bool steer_docking, std::int64_t max_steps)
+      : source_(std::move(source)), steer_docking_(steer_docking), max_steps_(max_steps) {}
+
+  /// A new episode; runs to its first steered period (GIL released by the caller).
+  void reset(std::uint64_t seed, const std::string& id) {
+    EpisodeSource::Drawn d = source_->draw(seed, id);
+    id_ = d.id;
+    episode_ = std::make_unique<SteppedEpisode>(d.plant, d.planner, d.config, steer_docking_);
+    reward_ = 0;
+    truncated_by_limit_ = false;
+    episode_->start();
+    last_distance_ = distance_to_staging();
+  }
+
+  /// One period's command: runs to the next period the outside steers, or to the end.
+  void step(controller::Twist command) {
+    if (!episode_ || done())
+      throw std::invalid_argument("the episode has ended: call reset() first");
+    if (!std::isfinite(command.v_mps) || !std::isfinite(command.omega_radps))
+      throw std::invalid_argument("a non-finite action (" + std::to_string(command.v_mps) + ", " +
+                                  std::to_string(command.omega_radps) + ") at t = " +
+                                  std::to_string(episode_->view().perception.t_s) + " s");
+    episode_->step(command);
+    const double d = distance_to_staging();
+    reward_ = weights_.progress * (last_distance_ - d) - weights_.per_step;
+    last_distance_ = d;
+    if (episode_->view().perception.bumper.pressed()) reward_ -= weights_.bumper;
+    if (episode_->ended())
+      reward_ += episode_->result().docked ? weights_.docked : -weights_.failed;
+    if (!episode_->ended() && max_steps_ > 0 && episode_->steps() >= max_steps_)
+      truncated_by_limit_ = true;
+  }
+
+  bool terminated() const {
+    return episode_ && episode_->ended() && episode_->result().status != "timeout";
+  }
+  bool truncated() const {
+    return episode_ &&
+           ((episode_->ended() && episode_->result().status == "timeout") || truncated_by_limit_);
+  }
+  bool done() const { return terminated() || truncated(); }
+  double reward() const { return reward_; }
+  const SteppedEpisode& episode() const { return *episode_; }
+  bool has_episode() const { return episode_ != nullptr; }
+  const EpisodeSource& source() const { return *source_; }
+  const std::string& id() const { return id_; }
+  RewardWeights weights_;
+
+ private:
+  double distance_to_staging() const {
+    const episode::OutsideView& v = episode_->view();
+    return geom::distance(v.perception.pose.position(), v.staging.position());
+  }
+  std::shared_ptr<EpisodeSource> source_;
+  bool steer_docking_;
+  std::int64_t max_steps_;
+  std::unique_ptr<SteppedEpisode> episode_;
+  std::string id_;
+  double reward_ = 0, last_distance_ = 0;
+  bool truncated_by_limit_ = false;
+};
+
+constexpr double kWaypointAhead_m = 1.0;
+
+/// The point kWaypointAhead_m along the plan past the plan's point nearest to `at`.
+geom::Vec2 waypoint(const std::vector<geom::Vec2>& plan, geom::Vec2 at) {
+  if (plan.empty()) return at;
+  if (plan.size() == 1) return plan[0];
+  std::size_t best = 0;
+  double best_d = INFINITY, best_t = 0;
+  for (std::size_t i = 0; i + 1 < plan.size(); ++i) {
+    const geom::Vec2 a = plan[i], ab = plan[i + 1] - a;
+    const double len2 = geom::dot(ab, ab);
+    const double t = len2 > 0 ? std::clamp(geom::dot(at - a, ab) / len2, 0.0, 1.0) : 0.0;
+    const double d = geom::distance(at, a + t * ab);
+    if (d < best_d) best_d = d, best = i, best_t = t;
+  }
+  double left = kWaypointAhead_m;
+  geom::Vec2 from = plan[best] + best_t * (plan[best + 1] - plan[best]);
+  for (std::size_t i = best + 1; i < plan.size(); ++i) {
+    const double seg = geom::distance(from, plan[i]);
+    if (seg >= left) return from + (left / seg) * (plan[i] - from);
+    left -= seg;
+    from = plan[i];
+  }
+  return plan.back();
+}
+
+/// The fixed-shape observation fields, written into row `row` of arrays of `rows` rows (one
+/// environment: rows = 1 and the leading axis dropped by the caller).
+struct ObservationArrays {
+  ObservationArrays(py::ssize_t rows, py::ssize_t beams)
+      : scan({rows, beams}),
+        scan_time(rows),
+        pose({rows, py::ssize_t{3}}),
+        covariance({rows, py::ssize_t{3}, py::ssize_t{3}}),
+        velocity({rows, py::ssize_t{2}}),
+        odometry({rows, py::ssize_t{3}}),
+        staging({rows, py::ssize_t{3}}),
+        waypoint({rows, py::ssize_t{2}}),
+        charger({rows, py::ssize_t{3}}),
+        charger_seen(rows),
+        phase(rows),
+        health(rows),
+        time(rows) {}
+  py::array_t<double> scan, scan_time, pose, covariance, velocity, odometry, staging, waypoint,
+      charger;
+  py::array_t<bool> charger_seen;
+  py::array_t<std::int64_t> phase, health;
+  py::array_t<double> time;
+
+  void fill(py::ssize_t r, const episode::OutsideView& v) {
+    const robot::Perception& p = v.perception;
+    auto sc = scan.mutable_unchecked<2>();
+    const py::ssize_t beams = sc.shape(1);
+    for (py::ssize_t i = 0; i < beams; ++i)
+      sc(r, i) = p.scan && static_cast<std::size_t>(i) < p.scan->ranges.size()
+                     ? p.scan->ranges[static_cast<std::size_t>(i)]
+                     : NAN;
+    scan_time.mutable_at(r) = p.scan ? p.scan->t_s : NAN;
+    auto put3 = [r](py::array_t<double>& a, const geom::Pose2& q) {
+      auto m = a.mutable_unchecked<2>();
+      m(r, 0) = q.x, m(r, 1) = q.y, m(r, 2) = q.yaw;
+    };
+    put3(pose, p.pose);
+    put3(odometry, p.odom_pose);
+    put3(staging, v.staging);
+    put3(charger, p.charger_in_robot.value_or(geom::Pose2{NAN, NAN, NAN}));
+    charger_seen.mutable_at(r) = p.charger_in_robot.has_value();
+    auto c = covariance.mutable_unchecked<3>();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        c(r, i, j) = p.pose_covariance[static_cast<std::size_t>(3 * i + j)];
+    auto ve = velocity.mutable_unchecked<2>();
+    ve(r, 0) = p.speed_mps, ve(r, 1) = p.yaw_rate_radps;
+    const geom::Vec2 w = python::waypoint(v.plan, p.pose.position());
+    auto wp = waypoint.mutable_unchecked<2>();
+    wp(r, 0) = w.x, wp(r, 1) = w.y;
+    phase.mutable_at(r) = static_cast<std::int64_t>(v.phase);
+    health.mutable_at(r) = static_cast<std::int64_t>(p.health);
+    time.mutable_at(r) = p.t_s;
+  }
+
+  /// As a dict; `single` drops the leading axis of one row.
+  py::dict as_dict(bool single) const {
+    py::dict d;
+    auto put = [&](const char* key, const py::array& a) {
+      if (!single) {
+        d[key] = a;
+        return;
+      }
+      d[key] = a[py::int_(0)];
+    };
+    put("scan", scan), put("scan_time", scan_time), put("pose", pose);
+    put("covariance", covariance), put("velocity", velocity), put("odometry", odometry);
+    put("staging", staging), put("waypoint", waypoint), put("charger", charger);
+    put("charger_seen", charger_seen), put("phase", phase), put("health", health);
+    put("time", time);
+    return d;
+  }
+};
+
+py::dict info_of(const EnvCore& env) {
+  py::dict info;
+  const SteppedEpisode& e = env.episode();
+  info["episode"] = env.id();
+  info["time"] = e.view().perception.t_s;
+  info["steps"] = e.steps();
+  info["builtin"] = py::make_tuple(e.view().builtin.v_mps, e.view().builtin.omega_radps);
+  info["plan"] = points_array(e.view().plan);
+  if (e.ended()) {
+    const sim::EpisodeResult& r = e.result();
+    info["status"] = r.status;
+    info["docked"] = r.docked;
+    info["failure"] = r.failure ? std::string(robot::to_string(r.failure->reason)) : std::string();
+    info["collisions"] = r.collisions;
+  }
+  return info;
+}
+
+std::shared_ptr<EpisodeSource> source_of(const py::object& world, const py::object& scenario,
+                                         const py::object& config, const std::string& planner,
+                                         const py::object& start) {
+  if (world.is_none() == scenario.is_none())
+    throw std::invalid_argument("give a world or a scenario (one of them)");
+  if (!scenario.is_none()) {
+    if (!config.is_none())
+      throw std::invalid_argument(
+          "a scenario's episodes take its own configs: config must be None");
+    return std::make_shared<ScenarioSource>(
+        py::str(py::module_::import("os").attr("fspath")(scenario)).cast<std::string>());
+  }
+  const std::vector<std::string> names = planner::planner_names();
+  if (std::find(names.begin(), names.end(), planner) == names.end())
+    throw std::invalid_argument("unknown planner '" + planner +
+                                "' (plantsim.planners() lists them)");
+  std::string how = "pose";
+  std::optional<geom::Pose2> pose;
+  if (py::isinstance<py::str>(start)) {
+    how = start.cast<std::string>();
+    if (how != "world" && how != "random")
+      throw std::invalid_argument("start must be \"world\", \"random\" or [x, y, yaw], got '" +
+                                  how + "'");
+  } else {
+    pose = pose_from(start, "start");
+  }
+  return std::make_shared<WorldSource>(world_argument(world), config_argument(config), planner, how,
+                                       pose);
+}
+
+bool docking_argument(const std::string& docking) {
+  if (docking != "plantsim" && docking != "agent")
+    throw std::invalid_argument(
+        "docking must be \"plantsim\" (its manoeuvre docks) or \"agent\" "
+        "(the actions steer the docking too), got '" +
+        docking + "'");
+  return docking == "agent";
+}
+
+controller::Twist twist_of(const py::handle& action, const std::string& kind, double wheel_base) {
+  std::vector<double> a;
+  try {
+    a = action.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+  }
+  if (a.size() != 2)
+    throw std::invalid_argument(
+        "an action is two numbers: (v m/s, omega rad/s), or (left, right) "
+        "wheel speeds m/s with action=\"wheels\"; got " +
+        py::repr(action).cast<std::string>());
+  if (kind == "wheels") return {(a[0] + a[1]) / 2, (a[1] - a[0]) / wheel_base};
+  return {a[0], a[1]};
+}
+
+/// Runs f(i) for i in [0, n) on up to `threads` threads (this one among them), GIL released.
+template <class F>
+void parallel_for(std::size_t n, int threads, F f) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto work = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+      try {
+        f(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int t = 1; t < threads && static_cast<std::size_t>(t) < n; ++t) helpers.emplace_back(work);
+  work();
+  for (std::thread& h : helpers) h.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+struct PyEnv {
+  PyEnv(const py::object& world, const py::object& scenario, const py::object& config,
+        const std::string& planner, const py::object& start, const std::string& docking,
+        const std::string& action, const py::object& reward, std::int64_t max_steps)
+      : core(source_of(world, scenario, config, planner, start), docking_argument(docking),
+             max_steps),
+        action_kind(action),
+        reward_fn(reward) {
+    if (action != "twist" && action != "wheels")
+      throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
+    if (!reward.is_none() && !PyCallable_Check(reward.ptr()))
+      throw std::invalid_argument("reward must be callable: f(obs, info) -> float, or None");
+  }
+
+  py::tuple reset(const py::object& seed, const py::object& options) {
+    std::string id;
+    if (!options.is_none()) {
+      const py::dict o = options.cast<py::dict>();
+      for (const auto& kv : o)
+        if (kv.first.cast<std::string>() != "episode")
+          throw std::invalid_argument("unknown option '" + kv.first.cast<std::string>() +
+                                      "' (options: episode)");
+      if (o.contains("episode")) id = o["episode"].cast<std::string>();
+    }
+    if (!seed.is_none()) next_seed = seed.cast<std::uint64_t>();
+    const std::uint64_t s = next_seed++;
+    {
+      py::gil_scoped_release release;
+      core.reset(s, id);
+    }
+    return py::make_tuple(observation(), info_of(core));
+  }
+
+  py::tuple step(const py::handle& action) {
+    if (!core.has_episode()) throw std::invalid_argument("call reset() before step()");
+    const controller::Twist t =
+        twist_of(action, action_kind, core.episode().plant().robot.wheel_base_m);
+    {
+      py::gil_scoped_release release;
+      core.step(t);
+    }
+    py::dict obs = observation();
+    py::dict info = info_of(core);
+    double r = core.reward();
+    if (!reward_fn.is_none()) r = reward_fn(obs, info).cast<double>();
+    return py::make_tuple(obs, r, core.terminated(), core.truncated(), info);
+  }
+
+  py::dict observation() const {
+    const std::size_t beams = beams_of(core);
+    ObservationArrays a(1, static_cast<py::ssize_t>(beams));
+    a.fill(0, core.episode().view());
+    return a.as_dict(true);
+  }
+
+  static std::size_t beams_of(const EnvCore& c) {
+    return static_cast<std::size_t>(std::max(0, c.episode().config().lidar.beam_count));
+  }
+
+  EnvCore core;
+  std::string action_kind;
+  py::object reward_fn;
+  std::uint64_t next_seed = 1;
+};
+
+struct PyVectorEnv {
+  PyVectorEnv(int n, const py::object& world, const py::object& scenario, const py::object& config,
+              const std::string& planner, const py::object& start, const std::string& docking,
+              const std::string& action, std::int64_t max_steps, int threads)
+      : action_kind(action),
+        threads(threads > 0 ? threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {
+    if (n < 1 || n > 4096) throw std::invalid_argument("n must be from 1 to 4096");
+    if (action != "twist" && action != "wheels")
+      throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
+    const std::shared_ptr<EpisodeSource> source =
+        source_of(world, scenario, config, planner, start);
+    for (int i = 0; i < n; ++i)
+      envs.push_back(std::make_unique<EnvCore>(source, docking_argument(docking), max_steps));
+    // One source for all: its draws are made one at a time (resets run on one thread below).
+  }
+
+  py::tuple reset(const py::object& seed) {
+    if (!seed.is_none()) first_seed = seed.cast<std::uint64_t>();
+    resets.assign(envs.size(), 0);
+    {
+      py::gil_scoped_release release;
+      for (std::size_t i = 0; i < envs.size(); ++i) envs[i]->reset(seed_of(i), "");
+    }
+    return py::make_tuple(observations(), infos());
+  }
+
+  py::tuple step(const py::array_t<double, py::array::c_style | py::array::forcecast>& actions) {
+    if (actions.ndim() != 2 || actions.shape(0) != static_cast<py::ssize_t>(envs.size()) ||
+        actions.shape(1) != 2)
+      throw std::invalid_argument("actions must be an array of shape (" +
+                                  std::to_string(envs.size()) + ", 2)");
+    if (resets.empty()) throw std::invalid_argument("call reset() before step()");
+    auto a = actions.unchecked<2>();
+    std::vector<controller::Twist> twists(envs.size());
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+      const auto k = static_cast<py::ssize_t>(i);
+      twists[i] = action_kind == "wheels"
+                      ? controller::Twist{(a(k, 0) + a(k, 1)) / 2,
+                                          (a(k, 1) - a(k, 0)) /
+                                              envs[i]->episode().plant().robot.wheel_base_m}
+                      : controller::Twist{a(k, 0), a(k, 1)};
+    }
+    std::vector<char> was_done(envs.size());
+    for (std::size_t i = 0; i < envs.size(); ++i) was_done[i] = envs[i]->done();
+    {
+      py::gil_scoped_release release;
+      // Gymnasium's next-step autoreset: an environment that ended at the last step starts
+      // its next episode now (reward 0, not terminated); the others take their actions.
+      for (std::size_t i = 0; i < envs.size(); ++i)
+        if (was_done[i]) ++resets[i], envs[i]->reset(seed_of(i), "");
+      parallel_for(envs.size(), threads, [&](std::size_t i) {
+        if (!was_done[i]) envs[i]->step(twists[i]);
+      });
+    }
+    py::array_t<double> rewards(static_cast<py::ssize_t>(envs.size()));
+    py::array_t<bool> terminated(static_cast<py::ssize_t>(envs.size())),
+        truncated(static_cast<py::ssize_t>(envs.size()));
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+      const auto k = static_cast<py::ssize_t>(i);
+      rewards.mutable_at(k) = was_done[i] ? 0.0 : envs[i]->reward();
+      terminated.mutable_at(k) = !was_done[i] && envs[i]->terminated();
+      truncated.mutable_at(k) = !was_done[i] && envs[i]->truncated();
+    }
+    return py::make_tuple(observations(), rewards, terminated, truncated, infos());
+  }
+
+  std::uint64_t seed_of(std::size_t i) const {
+    return first_seed + i + static_cast<std::uint64_t>(resets[i]) * envs.size();
+  }
+
+  py::dict observations() const {
+    ObservationArrays a(static_cast<py::ssize_t>(envs.size()),
+                        static_cast<py::ssize_t>(PyEnv::beams_of(*envs.front())));
+    for (std::size_t i = 0; i < envs.size(); ++i)
+      a.fill(static_cast<py::ssize_t>(i), envs[i]->episode().view());
+    return a.as_dict(false);
+  }
+
+  py::dict infos() const {
+    py::list episode, status;
+    py::array_t<bool> docked(static_cast<py::ssize_t>(envs.size()));
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+      episode.append(envs[i]->id());
+      const bool ended = envs[i]->episode().ended();
+      status.append(ended ? envs[i]->episode().result().status : std::string());
+      docked.mutable_at(static_cast<py::ssize_t>(i)) = ended && envs[i]->episode().result().docked;
+    }
+    py::dict d;
+    d["episode"] = episode, d["status"] = status, d["docked"] = docked;
+    return d;
+  }
+
+  std::vector<std::unique_ptr<EnvCore>> envs;
+  std::string action_kind;
+  int threads;
+  std::uint64_t first_seed = 1;
+  std::vector<std::int64_t> resets;
+};
+
+/// (max speed m/s, wheel base m, lidar beams, lidar max range m) for the spaces.
+py::tuple limits_of(const EpisodeSource& s) {
+  const worlds::World& w = s.first_world();
+  const sim::EpisodeConfig& c = s.first_config();
+  return py::make_tuple(w.robot.max_speed_mps, w.robot.wheel_base_m, c.lidar.beam_count,
+                        c.lidar.max_range_m);
+}
+
+}  // namespace
+
+void bind_env(py::module_& m) {
+  py::class_<PyEnv>(m, "_Env")
+      .def(py::init<const py::object&, const py::object&, const py::object&, const std::string&,
+                    const py::object&, const std::string&, const std::string&, const py::object&,
+                    std::int64_t>(),
+           py::arg("world"), py::arg("scenario"), py::arg("config"), py::arg("planner"),
+           py::arg("start"), py::arg("docking"), py::arg("action"), py::arg("reward"),
+           py::arg("max_steps"))
+      .def("reset", &PyEnv::reset, py::arg("seed"), py::arg("options"))
+      .def("step", &PyEnv::step, py::arg("action"))
+      .def_property_readonly("limits", [](const PyEnv& e) { return limits_of(e.core.source()); });
+  py::class_<PyVectorEnv>(m, "_VectorEnv")
+      .def(
+          py::init<int, const py::object&, const py::object&, const py::object&, const std::string&,
+                   const py::object&, const std::string&, const std::string&, std::int64_t, int>(),
+          py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
+          py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("action"),
+          py::arg("max_steps"), py::arg("threads"))
+      .def("reset", &PyVectorEnv::reset, py::arg("seed"))
+      .def_property_readonly(
+          "limits", [](const PyVectorEnv& e) { return limits_of(e.envs.front()->source()); })
+      .def("step", &PyVectorEnv::step, py::arg("actions"));
+}
+
+}  // namespace plantsim::python

@@ -1,0 +1,164 @@
+"""The step-wise environment against the Gymnasium API's contract and plantsim's own episode:
+reset/step signatures and meanings, observations inside their declared spaces, determinism per
+seed, truncation, a scenario's episodes by id, the vector API's stacking and next-step autoreset,
+pickling, and bad input refused."""
+import json
+import pickle
+import shutil
+
+import numpy as np
+import pytest
+
+import plantsim
+
+WORLD = "worlds/examples/small_plant.json"
+
+
+def follow_plantsim(env, seed):
+    """Drives with plantsim's own command (info["builtin"]); returns (steps, rewards, obs, info, flags)."""
+    obs, info = env.reset(seed=seed)
+    rewards = []
+    while True:
+        obs, reward, terminated, truncated, info = env.step(info["builtin"])
+        rewards.append(reward)
+        if terminated or truncated:
+            return len(rewards), rewards, obs, info, (terminated, truncated)
+
+
+def test_the_gymnasium_contract_and_plantsims_own_episode(source):
+    env = plantsim.Env(source / WORLD)
+    obs, info = env.reset(seed=3)
+    assert env.observation_space.contains(obs)
+    assert set(obs) == set(env.observation_space.keys())
+    assert obs["scan"].shape == (360,) and obs["covariance"].shape == (3, 3)
+    assert obs["time"] >= 1.0  # the gyro is calibrated at rest first: the agent is asked after it
+    assert PHASE(obs) == "travel"
+    steps, rewards, last, info, (terminated, truncated) = follow_plantsim(env, 3)
+    assert terminated and not truncated
+    assert info["status"] == "docked" and info["docked"] and info["failure"] == ""
+    # Steered with plantsim's own command the episode is plantsim's own: the same as run().
+    run = plantsim.run(str(source / WORLD), seed=3, start="random")
+    assert run.status == "docked"
+    assert last["time"] == pytest.approx(run.summary["time_s"], abs=0.05)
+    assert PHASE(last) == "docked"  # the end's own observation, not the last steered one
+    # The default reward: progress of the estimate towards the staging pose, 0.01 a step, +10 for
+    # docking (nothing pressed the bumper).
+    distance = lambda o: np.linalg.norm(o["pose"][:2] - o["staging"][:2])
+    assert sum(rewards) == pytest.approx(distance(obs) - distance(last) - 0.01 * steps + 10, abs=1e-6)
+    with pytest.raises(plantsim.InputError, match="reset"):
+        env.step((0.0, 0.0))
+
+
+def PHASE(obs):
+    return plantsim.PHASES[int(obs["phase"])]
+
+
+def test_the_same_seed_gives_the_same_episode_and_scans_carry_their_time(source):
+    env = plantsim.Env(source / WORLD)
+    a = follow_plantsim(env, 7)
+    b = follow_plantsim(env, 7)
+    assert a[0] == b[0] and a[1] == b[1]
+    obs, info = env.reset(seed=7)
+    times = []
+    for _ in range(30):
+        obs, *_ = env.step((0.2, 0.0))
+        times.append(float(obs["scan_time"]))
+    # The lidar (15 Hz) is slower than the control (30 Hz): a scan is seen twice, with its time.
+    assert len(set(times)) < len(times) and all(t <= obs["time"] + 1e-9 for t in times)
+
+
+def test_max_steps_truncates_and_standing_still_stays_put(source):
+    env = plantsim.Env(source / WORLD, start="world", max_steps=40)
+    obs, _ = env.reset(seed=1)
+    start = obs["pose"].copy()
+    for k in range(40):
+        obs, reward, terminated, truncated, info = env.step((0.0, 0.0))
+        assert not terminated
+        assert truncated == (k == 39)
+        assert reward == pytest.approx(-0.01, abs=0.02)
+    assert np.linalg.norm(obs["pose"][:2] - start[:2]) < 0.05
+    with pytest.raises(plantsim.InputError):
+        env.step((0.0, 0.0))
+
+
+def test_a_reward_of_ones_own_and_wheel_speeds(source):
+    seen = []
+
+    def reward(obs, info):
+        seen.append(info["time"])
+        return 42.0
+
+    env = plantsim.Env(source / WORLD, reward=reward, action="wheels")
+    env.reset(seed=2)
+    _, r, *_ = env.step((0.3, 0.3))
+    assert r == 42.0 and len(seen) == 1
+    obs, *_ = env.step((0.3, 0.3))
+    assert obs["velocity"][0] > 0.05 and abs(obs["velocity"][1]) < 0.2  # equal wheels: straight on
+
+
+def test_a_scenarios_episodes_by_id(source, tmp_path):
+    scenario = tmp_path / "s.yaml"
+    scenario.write_text(json.dumps({"worlds": [str(source / WORLD)], "seeds": 2,
+                                    "faults": {"none": {}, "unmapped": {"unmapped_obstacles": 2}}}))
+    env = plantsim.Env(scenario=scenario)
+    _, info = env.reset(options={"episode": "small_plant|vg|default|unmapped|2"})
+    assert info["episode"] == "small_plant|vg|default|unmapped|2"
+    _, info = env.reset(seed=1)
+    assert info["episode"] == "small_plant|vg|default|none|2"
+    with pytest.raises(plantsim.InputError, match="no episode"):
+        env.reset(options={"episode": "small_plant|vg|default|wet|1"})
+    with pytest.raises(plantsim.InputError, match="unknown option"):
+        env.reset(options={"episodes": 1})
+
+
+def test_vector_env_stacks_and_resets_at_the_next_step(source):
+    n = 3
+    v = plantsim.VectorEnv(n, source / WORLD, max_steps=5, threads=2)
+    obs, info = v.reset(seed=10)
+    assert obs["scan"].shape == (n, 360) and obs["pose"].shape == (n, 3)
+    assert v.observation_space.contains(obs) and v.single_observation_space["pose"].shape == (3,)
+    assert info["episode"] == [f"small_plant|{10 + i}" for i in range(n)]
+    for k in range(5):
+        obs, reward, terminated, truncated, info = v.step(np.zeros((n, 2)))
+    assert truncated.all() and not terminated.any()
+    obs, reward, terminated, truncated, info = v.step(np.zeros((n, 2)))
+    assert (reward == 0).all() and not truncated.any()  # the next episodes' first observations
+    assert info["episode"] == [f"small_plant|{10 + i + n}" for i in range(n)]
+    # One environment alone gives the same observations as within the vector.
+    single = plantsim.Env(source / WORLD)
+    o, _ = single.reset(seed=10 + 1 + n)
+    assert np.array_equal(o["pose"], obs["pose"][1]) and np.array_equal(o["scan"], obs["scan"][1], equal_nan=True)
+    with pytest.raises(plantsim.InputError, match="shape"):
+        v.step(np.zeros((n + 1, 2)))
+
+
+def test_worlds_and_runs_pickle_and_a_changed_file_is_refused(source, tmp_path):
+    path = tmp_path / "w.json"
+    shutil.copy(source / WORLD, path)
+    w = plantsim.load_world(path, start=(2.0, 7.0, 0.5))
+    back = pickle.loads(pickle.dumps(w))
+    assert np.array_equal(back.start, w.start) and np.array_equal(back.obstacles, w.obstacles)
+    run = plantsim.run(w, seed=1)
+    again = pickle.loads(pickle.dumps(run))
+    assert again.status == run.status and np.array_equal(again.trajectory, run.trajectory)
+    blob = pickle.dumps(w)
+    doc = json.loads(path.read_text())
+    doc["obstacles"] = doc["obstacles"][1:]
+    path.write_text(json.dumps(doc))
+    with pytest.raises(plantsim.InputError, match="no longer holds"):
+        pickle.loads(blob)
+
+
+def test_bad_input_is_refused(source):
+    with pytest.raises(plantsim.InputError, match="one of them"):
+        plantsim.Env()
+    with pytest.raises(plantsim.InputError, match="docking"):
+        plantsim.Env(source / WORLD, docking="nobody")
+    env = plantsim.Env(source / WORLD)
+    with pytest.raises(plantsim.InputError, match="reset"):
+        env.step((0.0, 0.0))
+    env.reset(seed=1)
+    with pytest.raises(plantsim.InputError, match="two numbers"):
+        env.step((1.0, 2.0, 3.0))
+    with pytest.raises(plantsim.InputError, match="non-finite"):
+        env.step((float("nan"), 0.0))
