@@ -18,7 +18,7 @@ SteppedEpisode::SteppedEpisode(std::shared_ptr<const worlds::World> plant,
   // comes with the next step.
   const robot::Steering note =
       [this](const robot::SteeringInput& in) -> std::optional<controller::Twist> {
-    view_ = {in.perception, in.plan, in.phase, in.builtin.twist, in.staging};
+    view_ = {&in.perception, in.plan, in.phase, in.builtin.twist, in.staging};
     wanted_ = true;
     return std::nullopt;
   };
@@ -43,7 +43,7 @@ bool SteppedEpisode::run_on() {
   });
   ended_ = stop != EpisodeRun::Stop::kAwaitingCommand;
   if (ended_) {  // what the robot perceived at the end, not at the last period it was steered
-    if (const robot::Perception* last = run_->last_perception()) view_.perception = *last;
+    if (const robot::Perception* last = run_->last_perception()) view_.perception = last;
     if (!run_->result().trajectory.empty()) view_.phase = run_->result().trajectory.back().phase;
   }
   return !ended_;

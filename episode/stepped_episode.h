@@ -22,9 +22,10 @@
 namespace plantsim::episode {
 
 /// What the outside sees at one step: the robot's perception (never the truth) with plantsim's
-/// plan, phase and own command, as a steered run's controller does.
+/// plan, phase and own command, as a steered run's controller does. The perception is the
+/// perceiver's own, unchanged until the next step (not copied: 8 environments a step).
 struct OutsideView {
-  robot::Perception perception;
+  const robot::Perception* perception = nullptr;
   std::vector<geom::Vec2> plan;
   controller::DockPhase phase = controller::DockPhase::kTravel;
   controller::Twist builtin;

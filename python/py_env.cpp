@@ -11,7 +11,6 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -25,6 +24,7 @@
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
 #include "python/py_world.h"
+#include "util/worker_pool.h"
 #include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
 
@@ -162,12 +162,12 @@ class EnvCore {
     if (!std::isfinite(command.v_mps) || !std::isfinite(command.omega_radps))
       throw std::invalid_argument("a non-finite action (" + std::to_string(command.v_mps) + ", " +
                                   std::to_string(command.omega_radps) + ") at t = " +
-                                  std::to_string(episode_->view().perception.t_s) + " s");
+                                  std::to_string(episode_->view().perception->t_s) + " s");
     episode_->step(command);
     const double d = distance_to_staging();
     reward_ = weights_.progress * (last_distance_ - d) - weights_.per_step;
     last_distance_ = d;
-    if (episode_->view().perception.bumper.pressed()) reward_ -= weights_.bumper;
+    if (episode_->view().perception->bumper.pressed()) reward_ -= weights_.bumper;
     if (episode_->ended())
       reward_ += episode_->result().docked ? weights_.docked : -weights_.failed;
     if (!episode_->ended() && max_steps_ > 0 && episode_->steps() >= max_steps_)
@@ -192,7 +192,7 @@ class EnvCore {
  private:
   double distance_to_staging() const {
     const episode::OutsideView& v = episode_->view();
-    return geom::distance(v.perception.pose.position(), v.staging.position());
+    return geom::distance(v.perception->pose.position(), v.staging.position());
   }
   std::shared_ptr<EpisodeSource> source_;
   bool steer_docking_;
@@ -253,7 +253,7 @@ struct ObservationArrays {
   py::array_t<double> time;
 
   void fill(py::ssize_t r, const episode::OutsideView& v) {
-    const robot::Perception& p = v.perception;
+    const robot::Perception& p = *v.perception;
     auto sc = scan.mutable_unchecked<2>();
     const py::ssize_t beams = sc.shape(1);
     for (py::ssize_t i = 0; i < beams; ++i)
@@ -307,7 +307,7 @@ py::dict info_of(const EnvCore& env) {
   py::dict info;
   const SteppedEpisode& e = env.episode();
   info["episode"] = env.id();
-  info["time"] = e.view().perception.t_s;
+  info["time"] = e.view().perception->t_s;
   info["steps"] = e.steps();
   info["builtin"] = py::make_tuple(e.view().builtin.v_mps, e.view().builtin.omega_radps);
   info["plan"] = points_array(e.view().plan);
@@ -373,29 +373,6 @@ controller::Twist twist_of(const py::handle& action, const std::string& kind, do
         py::repr(action).cast<std::string>());
   if (kind == "wheels") return {(a[0] + a[1]) / 2, (a[1] - a[0]) / wheel_base};
   return {a[0], a[1]};
-}
-
-/// Runs f(i) for i in [0, n) on up to `threads` threads (this one among them), GIL released.
-template <class F>
-void parallel_for(std::size_t n, int threads, F f) {
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto work = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
-      try {
-        f(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threads && static_cast<std::size_t>(t) < n; ++t) helpers.emplace_back(work);
-  work();
-  for (std::thread& h : helpers) h.join();
-  if (failure) std::rethrow_exception(failure);
 }
 
 struct PyEnv {
@@ -468,8 +445,9 @@ struct PyVectorEnv {
               const std::string& planner, const py::object& start, const std::string& docking,
               const std::string& action, std::int64_t max_steps, int threads)
       : action_kind(action),
-        threads(threads > 0 ? threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {
+        pool(std::clamp(
+            threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
+            std::max(1, n))) {
     if (n < 1 || n > 4096) throw std::invalid_argument("n must be from 1 to 4096");
     if (action != "twist" && action != "wheels")
       throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
@@ -514,7 +492,7 @@ struct PyVectorEnv {
       // its next episode now (reward 0, not terminated); the others take their actions.
       for (std::size_t i = 0; i < envs.size(); ++i)
         if (was_done[i]) ++resets[i], envs[i]->reset(seed_of(i), "");
-      parallel_for(envs.size(), threads, [&](std::size_t i) {
+      pool.run(envs.size(), [&](std::size_t i) {
         if (!was_done[i]) envs[i]->step(twists[i]);
       });
     }
@@ -558,7 +536,7 @@ struct PyVectorEnv {
 
   std::vector<std::unique_ptr<EnvCore>> envs;
   std::string action_kind;
-  int threads;
+  util::WorkerPool pool;
   std::uint64_t first_seed = 1;
   std::vector<std::int64_t> resets;
 };

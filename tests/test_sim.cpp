@@ -315,7 +315,7 @@ TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
 
   SteppedEpisode stepped(world, "vg", config, false);
   ASSERT_TRUE(stepped.start());
-  EXPECT_GE(stepped.view().perception.t_s, config.perception.gyro_calibration_s - 1e-9);
+  EXPECT_GE(stepped.view().perception->t_s, config.perception.gyro_calibration_s - 1e-9);
   EXPECT_EQ(stepped.view().phase, controller::DockPhase::kTravel);
   while (stepped.step(stepped.view().builtin)) {
     ASSERT_EQ(stepped.view().phase, controller::DockPhase::kTravel);  // docking runs by itself

@@ -35,3 +35,13 @@ def test_sweep_plots(source, tmp_path):
 def test_inspect(source):
     out = run_example(source, "inspect_episode.py", "--seed", "2")
     assert "observations from t = 1.00 s" in out and "steered_by recorder" in out
+
+
+def test_learn_to_dock_plots(source, tmp_path):
+    png = tmp_path / "learn.png"
+    out = run_example(source, "learn_to_dock.py", "--iterations", "2", "--envs", "2", "--max-steps", "300",
+                      "--out", str(png))
+    assert "iteration  2: tuning docked" in out and "held-out seeds: docked" in out
+    pytest.importorskip("matplotlib")
+    import matplotlib.image as mpimg
+    assert mpimg.imread(png).shape[1] > 800
