@@ -2,7 +2,9 @@
 // `plantsim merge DIR... --out DIR`. Both judge each configuration against the gate (the
 // scenario's `gate:` and --min-success) and exit 1 when one is below its threshold.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
@@ -18,6 +20,21 @@
 
 namespace plantsim::app {
 namespace {
+
+/// The "made_by" stamp of a batch folder's summary.json as JUnit properties ("plantsim_" +
+/// each key), none when it has none.
+std::vector<std::pair<std::string, std::string>> stamp_of(const std::string& folder) {
+  std::vector<std::pair<std::string, std::string>> out;
+  try {
+    std::ifstream in(folder + "/summary.json");
+    const nlohmann::json j = nlohmann::json::parse(in).at("made_by");
+    for (const auto& [key, value] : j.items())
+      out.emplace_back(key == "plantsim" ? "plantsim_version" : "plantsim_" + key,
+                       value.is_string() ? value.get<std::string>() : value.dump());
+  } catch (const std::exception&) {
+  }
+  return out;
+}
 
 std::pair<int, int> parse_shard(const std::string& text) {
   int i = 0, n = 0;
@@ -83,12 +100,15 @@ struct GateOptions {
     return o;
   }
 
-  int judge(const std::vector<std::string>& records, const batch::Gate& scenario_gate,
-            const std::string& suite, const char* who) const {
+  /// `folder`'s records judged; junit.xml carries the stamp of its summary.json.
+  int judge(const std::string& folder, const batch::Gate& scenario_gate, const std::string& suite,
+            const char* who) const {
+    const std::vector<std::string> records = batch::read_episode_records(folder);
     const batch::Gate gate = as_override().applied_to(scenario_gate);
     const auto verdicts = batch::judge_configurations(records, gate);
     if (!junit.empty())
-      util::write_file_atomically(junit, batch::junit_xml(suite, verdicts, gate.statistic));
+      util::write_file_atomically(
+          junit, batch::junit_xml(suite, verdicts, gate.statistic, stamp_of(folder)));
     int gated = 0, failed = 0;
     for (const auto& v : verdicts) gated += v.threshold.has_value(), failed += !v.passed;
     if (gated == 0) return kExitOk;
@@ -130,11 +150,19 @@ std::function<int()> add_batch_command(CLI::App& app) {
   return [opt, cmd]() {
     if (!opt->episode.empty()) {
       // One episode, exactly as the batch runs it, with the outputs of `plantsim run`.
+      // Into a batch's own folder, it goes beside the records (episodes/<id>), never over them.
+      const std::string id_folder = worlds::file_name_component(opt->episode);
+      std::string destination = opt->out.empty() ? "results/episode_" + id_folder : opt->out;
+      const bool into_batch =
+          !opt->out.empty() && std::filesystem::is_regular_file(
+                                   std::filesystem::symlink_status(opt->out + "/episodes.jsonl"));
+      if (into_batch) {
+        batch::check_batch_output_folder(opt->out, {});
+        destination = opt->out + "/episodes/" + id_folder;
+      }
       const batch::ReplayedEpisode e = batch::replay_batch_episode(opt->scenario, opt->episode);
-      util::StagedFolder staged(opt->out.empty()
-                                    ? "results/episode_" + worlds::file_name_component(opt->episode)
-                                    : opt->out,
-                                run_folder_names());
+      if (into_batch) std::filesystem::create_directories(opt->out + "/episodes");
+      util::StagedFolder staged(destination, run_folder_names());
       write_run_folder(e.plant, e.result, e.config, staged.path(), command_line(cmd),
                        "episode " + e.id, false);
       staged.commit();
@@ -163,8 +191,8 @@ std::function<int()> add_batch_command(CLI::App& app) {
               << r.skipped << " already done; " << r.succeeded
               << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
               << " collisions -> " << o.out_dir << "\n";
-    return opt->gate.judge(batch::read_episode_records(o.out_dir), r.gate,
-                           std::filesystem::path(opt->scenario).stem().string(), "batch");
+    return opt->gate.judge(o.out_dir, r.gate, std::filesystem::path(opt->scenario).stem().string(),
+                           "batch");
   };
 }
 
@@ -194,7 +222,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
     std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out
               << "\n";
-    return opt->gate.judge(batch::read_episode_records(opt->out), r.gate, "merge", "merge");
+    return opt->gate.judge(opt->out, r.gate, "merge", "merge");
   };
 }
 

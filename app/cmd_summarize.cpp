@@ -16,8 +16,10 @@
 #include "render/dashboard.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
+#include "util/build_stamp.h"
 #include "util/fixed_text.h"
 #include "util/input_file.h"
+#include "util/made_by.h"
 #include "util/unicode_text.h"
 #include "worlds/json_input.h"
 #include "worlds/world_error.h"
@@ -87,6 +89,28 @@ std::string batch_line(const std::string& dir, std::string& verdict) {
   }
 }
 
+/// Why a folder's outputs may not be this build's, from its summary.json's "made_by": empty
+/// when this build made them.
+std::string stale_note(const std::string& summary_path) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(util::read_input_file(summary_path, 64u << 20));
+  } catch (const std::exception&) {
+    return "";  // no summary.json: said elsewhere
+  }
+  const auto m = j.find("made_by");
+  if (m == j.end() || !m->is_object() || !m->contains("commit"))
+    return "no build stamp: made before plantsim stamped its outputs";
+  const util::BuildStamp& b = util::build_stamp();
+  const std::string commit = (*m)["commit"].is_string() ? (*m)["commit"].get<std::string>() : "?";
+  const std::string date = m->value("date", std::string("?"));
+  if (commit != b.commit) return "made by another build (commit " + commit + ", " + date + ")";
+  if (m->value("dirty", false) || b.dirty)
+    return "made by commit " + commit + " with uncommitted changes (" + date +
+           "): which changes, nobody can tell";
+  return "";
+}
+
 /// A linked report, its kind told by what its folder holds, with the figure that shows it best.
 render::DashboardLink link_to(const std::string& report, const std::string& base) {
   namespace fs = std::filesystem;
@@ -107,6 +131,7 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
     l.kind = "batch";
     if (fs::exists(dir / "chart_success.png")) l.thumbnail = rel("chart_success.png");
     l.line = batch_line(dir.string(), l.verdict);
+    l.stale = stale_note((dir / "summary.json").string());
   } else if (fs::exists(dir / "coverage.png")) {
     l.kind = "coverage";
     l.thumbnail = rel("coverage.png");
@@ -210,6 +235,7 @@ render::DashboardRun dashboard_run(const nlohmann::json& j, const std::string& d
                fixed(j.value("driven_length_m", 0.0), 2)};
   for (const char* f : {"run.png", "timeplots.png"})
     if (std::filesystem::exists(dir + "/" + f)) run.figures.push_back(f);
+  run.stale = stale_note(dir + "/summary.json");
   return run;
 }
 
@@ -235,8 +261,10 @@ int summarize(const SummarizeOptions& opt) {
   // Before any work: an output that cannot be written is bad input (exit 2), not a failure.
   if (!opt.out.empty()) util::check_output_file(opt.out, "--out");
   if (!opt.html.empty()) util::check_output_file(opt.html, "--html");
+  const util::MadeBy made_by;
   std::string md =
-      "# plantsim results\n\n| world | planner | travel | status | position error (mm) | "
+      "# plantsim results\n\n" + made_by.text() +
+      "\n\n| world | planner | travel | status | position error (mm) | "
       "heading error (deg) | collisions | retries | stops | replans | time (s) | planned (m) | "
       "driven (m) | figure |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   bool all_docked = true;
@@ -262,7 +290,8 @@ int summarize(const SummarizeOptions& opt) {
     for (const auto& l : opt.links)
       links.push_back(link_to(l, html_base.empty() ? "." : html_base));
     util::write_file_atomically(
-        opt.html, render::dashboard_html("plantsim results", kDashboardHeaders, runs, links));
+        opt.html,
+        render::dashboard_html("plantsim results", kDashboardHeaders, runs, links, made_by.text()));
   }
   if (opt.out.empty())
     std::cout << md;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "episode/episode_config_json.h"
 #include "episode/episode_json.h"
 #include "render/animation.h"
 #include "render/png_io.h"
@@ -13,12 +14,21 @@
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
+#include "util/fingerprint.h"
 #include "util/fixed_text.h"
 
 namespace plantsim::app {
 
+util::MadeBy run_made_by(const sim::EpisodeResult& r, const sim::EpisodeConfig& config) {
+  util::MadeBy m;
+  m.duration_s = r.wall_s;
+  m.input = "config";
+  m.input_hash = util::Fingerprint().add(episode::config_json(config)).hex();
+  return m;
+}
+
 std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
-                         const std::string& command_line) {
+                         const std::string& command_line, const util::MadeBy* made_by) {
   nlohmann::ordered_json j;
   j["world"] = world_name;
   j["planner"] = r.planner;
@@ -28,6 +38,7 @@ std::string summary_json(const sim::EpisodeResult& r, const std::string& world_n
   for (const auto& v : r.plan) plan.push_back({v.x, v.y});
   j["plan"] = plan;
   if (!r.plan_note.empty()) j["plan_note"] = r.plan_note;
+  if (made_by) j["made_by"] = made_by->json();
   if (r.thinning.any())  // a long episode's logs kept to their limits (docs/config.md)
     j["logs_thinned"] = {{"trajectory_every_control_periods", r.thinning.trajectory_every},
                          {"moving_tracks_every_s", 0.25 * r.thinning.moving_every},
@@ -105,7 +116,9 @@ std::string trajectory_csv(const sim::EpisodeResult& r) {
 void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
                       const sim::EpisodeConfig& config, const std::string& out_dir,
                       const std::string& line, const std::string& setting, bool animate) {
-  util::write_file_atomically(out_dir + "/summary.json", summary_json(r, world.name, line));
+  const util::MadeBy made_by = run_made_by(r, config);
+  util::write_file_atomically(out_dir + "/summary.json",
+                              summary_json(r, world.name, line, &made_by));
   util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
   render::RunFigureOptions figure;
   figure.setting = setting;
@@ -134,7 +147,8 @@ void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
        figures,
        files,
        "",
-       render::replay_html(world, r)},
+       render::replay_html(world, r),
+       made_by.text()},
       out_dir + "/report.html");
 }
 

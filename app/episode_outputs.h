@@ -7,11 +7,15 @@
 #include <vector>
 
 #include "sim/episode.h"
+#include "util/made_by.h"
 
 namespace plantsim::app {
 
+/// `made_by`, when given, is written as "made_by" (util/made_by.h).
 std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
-                         const std::string& command_line);
+                         const std::string& command_line, const util::MadeBy* made_by = nullptr);
+/// The stamp of a run: now, the episode's wall time, the hash of its whole config.
+util::MadeBy run_made_by(const sim::EpisodeResult& r, const sim::EpisodeConfig& config);
 std::string trajectory_csv(const sim::EpisodeResult& r);
 
 /// The metrics table of reports: headers, and one row per episode.

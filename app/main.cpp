@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "util/build_stamp.h"
 #include "util/data_dir.h"
 #include "util/shell_word.h"
 #include "util/unicode_text.h"
@@ -97,8 +98,7 @@ int main(int argc, char** argv) {
   CLI::App app{"plantsim: drive a wheeled robot through a plant to its charger, in Box2D"};
   app.require_subcommand(1);
   app.fallthrough();  // --data may follow the subcommand
-  app.set_version_flag("--version", std::string("plantsim ") + PLANTSIM_VERSION + " (commit " +
-                                        PLANTSIM_GIT_COMMIT + ")");
+  app.set_version_flag("--version", plantsim::util::build_stamp().text());
   std::string data_dir;
   app.add_option("--data", data_dir,
                  "Folder of the shared data (default: $PLANTSIM_DATA, else ../shared/data beside "

@@ -106,13 +106,20 @@ std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts
 }
 
 std::string junit_xml(const std::string& suite_name,
-                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic) {
+                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic,
+                      const std::vector<std::pair<std::string, std::string>>& suite_properties) {
   int failures = 0;
   for (const ConfigurationVerdict& v : verdicts) failures += !v.passed;
   std::string xml =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n  <testsuite name=\"" +
       xml_escaped(suite_name) + "\" tests=\"" + std::to_string(verdicts.size()) + "\" failures=\"" +
       std::to_string(failures) + "\" errors=\"0\">\n";
+  if (!suite_properties.empty()) {
+    xml += "    <properties>";
+    for (const auto& [name, value] : suite_properties)
+      xml += "<property name=\"" + xml_escaped(name) + "\" value=\"" + xml_escaped(value) + "\"/>";
+    xml += "</properties>\n";
+  }
   for (const ConfigurationVerdict& v : verdicts) {
     xml += "    <testcase classname=\"" + xml_escaped(suite_name + "." + v.world) + "\" name=\"" +
            xml_escaped(v.planner + " / " + v.controller + " / " + v.fault) + "\">\n";

@@ -45,8 +45,11 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
 std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts,
                                GateStatistic statistic);
 
-/// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold).
-std::string junit_xml(const std::string& suite_name,
-                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic);
+/// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold);
+/// `suite_properties` (the build's stamp) as the testsuite's <properties>.
+std::string junit_xml(
+    const std::string& suite_name, const std::vector<ConfigurationVerdict>& verdicts,
+    GateStatistic statistic,
+    const std::vector<std::pair<std::string, std::string>>& suite_properties = {});
 
 }  // namespace plantsim::batch

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -175,6 +176,7 @@ void check_against_scenario(const ShardRecords& s, const MergedScenario& scenari
 
 MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::string& out_dir,
                            const MergeOptions& options) {
+  const auto began = std::chrono::steady_clock::now();
   // Before any work: never a user's folder, never through a link.
   check_batch_output_folder(out_dir, options.own_files);
   const ShardRecords shards = read_shards(dirs);
@@ -202,13 +204,18 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   remove_batch_temporaries(out_dir);
   remove_batch_outputs(out_dir, true);  // no figure of an earlier merge beside this one's
   util::write_file_atomically(out_dir + "/episodes.jsonl", text);
+  util::MadeBy made_by;
+  made_by.duration_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  made_by.input = "scenario";
+  made_by.input_hash = shards.fingerprint;
   std::string command = "plantsim merge";
   for (const auto& d : dirs) command += " " + d;
   write_batch_report(
       lines, out_dir, "plantsim merge",
       command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
       scenario.worlds.empty() ? nullptr : &scenario.worlds, scenario.planners,
-      options.gate.applied_to(outcome.gate), true);
+      options.gate.applied_to(outcome.gate), true, made_by);
   return outcome;
 }
 

@@ -318,19 +318,20 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                         const std::string& title, const std::string& command,
                         const std::vector<worlds::World>* worlds_for_figures,
                         const std::vector<std::string>& planners, const Gate& gate, bool charts,
-                        const std::vector<FailedEpisode>& failures,
+                        const util::MadeBy& made_by, const std::vector<FailedEpisode>& failures,
                         const std::string& scenario_path) {
   const std::string csv = summary_csv(lines);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
   const std::string sweep = sweep_csv(lines);
   if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);
   const std::vector<ConfigurationVerdict> verdicts = judge_configurations(lines, gate);
-  util::write_file_atomically(
-      out_dir + "/summary.json",
-      batch_summary_json(lines, verdicts, gate, title, command).dump(1) + "\n");
+  nlohmann::json summary = batch_summary_json(lines, verdicts, gate, title, command);
+  summary["made_by"] = nlohmann::json::parse(made_by.json().dump());
+  util::write_file_atomically(out_dir + "/summary.json", summary.dump(1) + "\n");
   render::Report report;
   report.title = title;
   report.command = command;
+  report.made_by = made_by.text();
   fill_table(report, csv, verdicts);
   report.notes =
       "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "

@@ -9,17 +9,19 @@
 
 #include "batch/batch_spec.h"
 #include "batch/episode_runner.h"
+#include "util/made_by.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {
 
-/// `charts` false (--no-figures): no PNG at all. `worlds_for_figures` null: no plan figures and
-/// no path overlays. `failures`: replayed failed episodes for the gallery, each with the command
-/// that re-runs it from `scenario_path`.
+/// `made_by` stamps summary.json and report.html. `charts` false (--no-figures): no PNG at all.
+/// `worlds_for_figures` null: no plan figures and no path overlays. `failures`: replayed failed
+/// episodes for the gallery, each with the command that re-runs it from `scenario_path`.
 void write_batch_report(const std::vector<std::string>& jsonl_lines, const std::string& out_dir,
                         const std::string& title, const std::string& command,
                         const std::vector<worlds::World>* worlds_for_figures,
                         const std::vector<std::string>& planners, const Gate& gate, bool charts,
+                        const util::MadeBy& made_by,
                         const std::vector<FailedEpisode>& failures = {},
                         const std::string& scenario_path = "");
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -171,7 +172,8 @@ void run_episodes(const RunContext& run, const std::vector<Episode>& todo, std::
   if (!synced) throw std::runtime_error(sync_error);
 }
 
-void write_report(const RunContext& run, const std::string& scenario_path) {
+void write_report(const RunContext& run, const std::string& scenario_path,
+                  const util::MadeBy& made_by) {
   const RunOptions& o = run.options;
   const std::vector<std::string> records = read_records(o.out_dir + "/episodes.jsonl");
   const std::vector<FailedEpisode> failures =
@@ -183,7 +185,7 @@ void write_report(const RunContext& run, const std::string& scenario_path) {
   write_batch_report(records, o.out_dir, "plantsim batch: " + run.spec.name,
                      "plantsim batch " + scenario_path + " --out " + o.out_dir + shard,
                      o.figures ? &run.loaded.worlds : nullptr, run.spec.planners,
-                     o.gate.applied_to(run.spec.gate), o.figures, failures, scenario_path);
+                     o.gate.applied_to(run.spec.gate), o.figures, made_by, failures, scenario_path);
 }
 
 }  // namespace
@@ -193,6 +195,7 @@ std::vector<std::string> read_episode_records(const std::string& dir) {
 }
 
 BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
+  const auto began = std::chrono::steady_clock::now();
   // Everything that can be wrong is found before the first episode.
   BatchSpec spec = load_batch_spec(scenario_path);
   if (o.steering)
@@ -229,7 +232,12 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   outcome.skipped = outcome.episodes - static_cast<std::int64_t>(todo.size());
   const RunContext run{spec, loaded, configs, scenario, o};
   run_episodes(run, todo, open_for_append(jsonl), jsonl, outcome);
-  write_report(run, scenario_path);
+  util::MadeBy made_by;
+  made_by.duration_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  made_by.input = "scenario";
+  made_by.input_hash = scenario.fingerprint;
+  write_report(run, scenario_path, made_by);
   return outcome;
 }
 

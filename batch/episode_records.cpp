@@ -128,7 +128,7 @@ std::string temporary_target(const std::string& name) {
 bool is_written_output_name(const std::string& name) {
   static const char* const exact[] = {"episodes.jsonl", "summary.csv", "summary.json",
                                       "sweep.csv",      "report.html", ".plantsim.lock",
-                                      "failures"};
+                                      "failures",       "episodes"};
   for (const char* e : exact)
     if (name == e) return true;
   auto png_with_prefix = [&](const std::string& prefix) {
@@ -143,8 +143,8 @@ bool is_written_output_name(const std::string& name) {
 bool is_batch_output_name(const std::string& name) {
   if (is_written_output_name(name)) return true;
   const std::string target = temporary_target(name);
-  return !target.empty() && target != "failures" && target != ".plantsim.lock" &&
-         is_written_output_name(target);
+  return !target.empty() && target != "failures" && target != "episodes" &&
+         target != ".plantsim.lock" && is_written_output_name(target);
 }
 
 void remove_batch_temporaries(const std::string& dir) {
@@ -167,7 +167,10 @@ void remove_batch_outputs(const std::string& dir, bool keep_records) {
   std::vector<fs::path> old;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    if (name != ".plantsim.lock" && !(keep_records && name == "episodes.jsonl") &&
+    // The records, and the episodes re-run alone from them (episodes/, `batch --episode`), stay
+    // unless the records go too.
+    if (name != ".plantsim.lock" &&
+        !(keep_records && (name == "episodes.jsonl" || name == "episodes")) &&
         is_batch_output_name(name) && !e.is_symlink(ec))
       old.push_back(e.path());
   }
@@ -196,6 +199,9 @@ void check_batch_output_folder(const std::string& dir, const std::vector<std::st
       throw std::invalid_argument("output folder '" + dir + "' holds '" + name +
                                   "', not a batch output; choose a new or empty folder (a batch "
                                   "resumes only its own folder)");
+    if (name == "episodes" && !e.is_directory(ec))
+      throw std::invalid_argument("output folder '" + dir +
+                                  "' holds 'episodes', not the folder of episodes re-run alone");
     (name == "episodes.jsonl" ? has_records : has_other_outputs) |= name != ".plantsim.lock";
   }
   if (has_other_outputs && !has_records)

@@ -491,8 +491,9 @@ EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
   return parse_episode_config(text, path, base);
 }
 
-std::string default_config_json() {
-  EpisodeConfig c;
+std::string default_config_json() { return config_json(EpisodeConfig{}); }
+
+std::string config_json(const EpisodeConfig& c) {
   nlohmann::ordered_json j;
   for (const Field& f : fields()) {
     if (std::string(f.section).empty())

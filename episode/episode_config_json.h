@@ -18,5 +18,7 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
 
 /// The defaults as JSON (what `plantsim config` prints).
 std::string default_config_json();
+/// `config` as JSON, every key (read back by parse_episode_config as the same config).
+std::string config_json(const EpisodeConfig& config);
 
 }  // namespace plantsim::episode

@@ -10,11 +10,44 @@ std::string path_of(const std::string& folder, const std::string& file) {
   return folder.empty() || folder == "." ? file : folder + "/" + file;
 }
 
+/// The dashboard's own stamp, and how many of its outputs another build made.
+std::string stamp_paragraph(const std::vector<DashboardRun>& runs,
+                            const std::vector<DashboardLink>& links, const std::string& made_by) {
+  int stale = 0;
+  for (const auto& r : runs) stale += !r.stale.empty();
+  for (const auto& l : links) stale += !l.stale.empty();
+  if (made_by.empty() && stale == 0) return "";
+  std::string h = "<p class=\"made-by\" style=\"color:#555\">" + html_escape(made_by);
+  if (stale > 0)
+    h += " <span class=\"bad\">" + std::to_string(stale) +
+         " of the outputs below were not made by this build (flagged): run them again.</span>";
+  return h + "</p>\n";
+}
+
+/// One linked report's row: thumbnail, title, a batch's verdict, what is said of it.
+std::string link_row(const DashboardLink& l) {
+  std::string row = "<tr><td class=\"l\">";
+  if (!l.thumbnail.empty())
+    row += "<a href=\"" + url_attribute(l.report) + "\"><img class=\"thumb\" src=\"" +
+           url_attribute(l.thumbnail) + "\" alt=\"" + html_escape(l.title) + "\"></a>";
+  row += "</td><td class=\"l\"><a href=\"" + url_attribute(l.report) + "\">" +
+         html_escape(l.title) + "</a></td>";
+  if (l.kind == "batch")
+    row += "<td class=\"l " +
+           std::string(l.verdict == "passed"   ? "ok"
+                       : l.verdict == "failed" ? "bad"
+                                               : "") +
+           "\">" + html_escape(l.verdict.empty() ? "no verdict" : "gate " + l.verdict) + "</td>";
+  return row + "<td class=\"l\">" + html_escape(l.line) +
+         (l.stale.empty() ? "" : "<span class=\"stale\">" + html_escape(l.stale) + "</span>") +
+         "</td></tr>\n";
+}
+
 }  // namespace
 
 std::string dashboard_html(const std::string& title, const std::vector<std::string>& headers,
                            const std::vector<DashboardRun>& runs,
-                           const std::vector<DashboardLink>& links) {
+                           const std::vector<DashboardLink>& links, const std::string& made_by) {
   std::string h =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
       html_escape(title) +
@@ -22,7 +55,8 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
       "text-align:right;vertical-align:middle}th{background:#eee}td.l,th.l{text-align:left}"
       "img.thumb{width:220px;border:1px solid #ddd}.ok{color:#007a56;font-weight:bold}"
-      ".bad{color:#c03c00;font-weight:bold}</style></head><body>\n";
+      ".bad{color:#c03c00;font-weight:bold}.stale{color:#c03c00;display:block}</style></"
+      "head><body>\n";
   int ok = 0;
   for (const auto& r : runs) ok += r.succeeded;
   // Runs and batches are counted apart: a batch's failures are its episodes', judged by its gate.
@@ -30,8 +64,8 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
   for (const auto& l : links)
     if (l.kind == "batch")
       ++batches, passed += l.verdict == "passed", failed += l.verdict == "failed";
-  h += "<h1>" + html_escape(title) + "</h1>\n<p>" + std::to_string(ok) + " of " +
-       std::to_string(runs.size()) + " single runs succeeded";
+  h += "<h1>" + html_escape(title) + "</h1>\n" + stamp_paragraph(runs, links, made_by);
+  h += "<p>" + std::to_string(ok) + " of " + std::to_string(runs.size()) + " single runs succeeded";
   if (batches > 0)
     h += "; of " + std::to_string(batches) + " batches, " + std::to_string(passed) +
          " passed their gates, <span class=\"" + (failed ? "bad" : "ok") + "\">" +
@@ -52,7 +86,9 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
            html_escape(r.world) + "\"></a>";
     h += "</td><td class=\"l\"><a href=\"" + url_attribute(report) + "\">" + html_escape(r.world) +
          "</a></td><td class=\"l\">" + html_escape(r.setting) + "</td><td class=\"l " +
-         (r.succeeded ? "ok" : "bad") + "\">" + html_escape(r.status) + "</td>";
+         (r.succeeded ? "ok" : "bad") + "\">" + html_escape(r.status) +
+         (r.stale.empty() ? "" : "<span class=\"stale\">" + html_escape(r.stale) + "</span>") +
+         "</td>";
     for (const auto& c : r.cells) h += "<td>" + html_escape(c) + "</td>";
     h += "<td class=\"l\">";
     for (std::size_t i = 0; i < r.figures.size(); ++i)
@@ -64,23 +100,8 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
   h += "</table>\n";
   for (const std::string kind : {"comparison", "batch", "coverage", "chart", "report"}) {
     std::string rows;
-    for (const auto& l : links) {
-      if (l.kind != kind) continue;
-      rows += "<tr><td class=\"l\">";
-      if (!l.thumbnail.empty())
-        rows += "<a href=\"" + url_attribute(l.report) + "\"><img class=\"thumb\" src=\"" +
-                url_attribute(l.thumbnail) + "\" alt=\"" + html_escape(l.title) + "\"></a>";
-      rows += "</td><td class=\"l\"><a href=\"" + url_attribute(l.report) + "\">" +
-              html_escape(l.title) + "</a></td>";
-      if (kind == std::string("batch"))
-        rows += "<td class=\"l " +
-                std::string(l.verdict == "passed"   ? "ok"
-                            : l.verdict == "failed" ? "bad"
-                                                    : "") +
-                "\">" + html_escape(l.verdict.empty() ? "no verdict" : "gate " + l.verdict) +
-                "</td>";
-      rows += "<td class=\"l\">" + html_escape(l.line) + "</td></tr>\n";
-    }
+    for (const auto& l : links)
+      if (l.kind == kind) rows += link_row(l);
     if (rows.empty()) continue;
     const std::string heading = kind == "comparison" ? "Comparisons"
                                 : kind == "batch"    ? "Batches"

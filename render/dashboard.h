@@ -15,7 +15,8 @@ struct DashboardRun {
   bool succeeded = false;
   std::vector<std::string> cells;  ///< the metric cells, in the order of the headers
   std::vector<std::string>
-      figures;  ///< figure files inside the folder (the first is the thumbnail)
+      figures;        ///< figure files inside the folder (the first is the thumbnail)
+  std::string stale;  ///< why its files may not be this build's (empty: made by it)
 };
 
 struct DashboardLink {
@@ -25,10 +26,14 @@ struct DashboardLink {
   std::string thumbnail;  ///< relative to the dashboard, may be empty
   std::string line;       ///< one line said about it (from its files)
   std::string verdict;    ///< a batch's: "passed", "failed" or "not gated" (summary.json)
+  std::string stale;      ///< why its files may not be this build's (empty: made by it)
 };
 
+/// `made_by`: the dashboard's own stamp (util/made_by.h), under the title; a run or link that is
+/// `stale` is flagged beside its status.
 std::string dashboard_html(const std::string& title, const std::vector<std::string>& metric_headers,
                            const std::vector<DashboardRun>& runs,
-                           const std::vector<DashboardLink>& links);
+                           const std::vector<DashboardLink>& links,
+                           const std::string& made_by = "");
 
 }  // namespace plantsim::render

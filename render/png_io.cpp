@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "util/atomic_file.h"
+#include "util/build_stamp.h"
 
 namespace plantsim::render {
 namespace {
@@ -41,6 +42,14 @@ std::string encode_png(const Image& image, const PngSettings& settings) {
   if (settings.run_length) png_set_compression_strategy(png, Z_RLE);
   png_set_filter(png, PNG_FILTER_TYPE_BASE,
                  settings.adaptive_filters ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
+  // Which build drew it (a figure's own record; the date is in the report beside it, so that
+  // the same figure drawn twice is the same file).
+  const std::string software = util::build_stamp().text();
+  png_text text{};
+  text.compression = PNG_TEXT_COMPRESSION_NONE;
+  text.key = const_cast<char*>("Software");
+  text.text = const_cast<char*>(software.c_str());
+  png_set_text(png, info, &text, 1);
   png_write_info(png, info);
   png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are given as RGBA; the filler byte is dropped
   for (int row = 0; row < image.height; ++row)

@@ -64,6 +64,8 @@ std::string report_html(const Report& r) {
       "4px}"
       "figure{margin:16px 0}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";
+  if (!r.made_by.empty())
+    h += "<p class=\"made-by\" style=\"color:#555\">" + html_escape(r.made_by) + "</p>\n";
   if (!r.command.empty()) h += "<p>Produced by <code>" + html_escape(r.command) + "</code></p>\n";
   if (!r.notes.empty()) h += "<p>" + html_escape(r.notes) + "</p>\n";
   if (!r.headers.empty()) {

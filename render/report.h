@@ -23,6 +23,7 @@ struct Report {
   std::vector<std::string> files;  ///< other outputs to link (CSV, JSON)
   std::string notes;               ///< a paragraph of plain text
   std::string body_html;           ///< trusted HTML placed before the figures (a replay player)
+  std::string made_by;  ///< which build made it, when, from what (util/made_by.h), under the title
 };
 
 std::string report_html(const Report& r);

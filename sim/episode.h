@@ -127,6 +127,7 @@ struct EpisodeResult {
   int slips = 0;       ///< wheel slips perception saw (each slowed the robot down)
   double time_s = 0;
   std::int64_t physics_steps = 0;  ///< fixed steps simulated
+  double wall_s = 0;               ///< wall-clock seconds run_episode took (not simulated time)
   double path_length_m = 0;        ///< planned, start to staging pose
   double driven_length_m = 0;      ///< ground truth
   double max_cross_track_m = 0;

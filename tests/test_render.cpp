@@ -155,7 +155,8 @@ TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
            {{"run.png", "run"}, {"timeplots.png", "plots"}},
            {"summary.json"},
            "notes & more",
-           ""};
+           "",
+           "Made by <a build>"};
   write_report(r, (dir / "report.html").string());
   std::ifstream f((dir / "report.html").string());
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

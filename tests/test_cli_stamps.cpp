@@ -1,0 +1,85 @@
+// Outputs that say which build made them (issue 52): a run's and a batch's summary.json and
+// report.html, junit.xml and every PNG carry plantsim's version and commit (and the date, the
+// duration and the hash of the config or scenario where the file has room); the dashboard flags
+// an output another build made, or one made before stamps; an episode re-run alone into its
+// batch's folder goes beside the records, and the batch re-runs around it.
+#include "cli_fixture.h"
+
+namespace plantsim {
+namespace {
+
+const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+
+// "plantsim 0.15.0 (commit 1234567890ab...)": the commit this binary was built from.
+std::string commit_of(const std::string& version_line) {
+  const std::size_t at = version_line.find("(commit ") + 8;
+  return version_line.substr(at, 12);
+}
+
+TEST_F(Cli, EveryOutputNamesTheBuildThatMadeIt) {
+  const std::string commit = commit_of(run("--version").out);
+  ASSERT_EQ(commit.find_first_not_of("0123456789abcdefunknow"), std::string::npos) << commit;
+  ASSERT_EQ(run("run " + kCorridor + " --out r", 120).exit_code, 0);
+  const auto summary = nlohmann::json::parse(read(dir_ / "r/summary.json"));
+  EXPECT_EQ(summary["made_by"]["commit"], commit);
+  EXPECT_EQ(summary["made_by"]["config"].get<std::string>().size(), 16u);
+  EXPECT_GT(summary["made_by"]["duration_s"].get<double>(), 0.0);
+  EXPECT_EQ(summary["made_by"]["date"].get<std::string>().size(), 20u);  // 2026-12-03T15:02:11Z
+  EXPECT_NE(read(dir_ / "r/report.html").find("Made by plantsim"), std::string::npos);
+  // A figure's own record: the PNG's Software text.
+  const std::string png = read(dir_ / "r/run.png");
+  EXPECT_NE(png.find("tEXtSoftware"), std::string::npos);
+  EXPECT_NE(png.find("(commit " + commit), std::string::npos);
+
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 1\n");
+  const Outcome b = run("batch s.yaml --out b --quiet --no-figures --junit j.xml", 300);
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto batch = nlohmann::json::parse(read(dir_ / "b/summary.json"));
+  EXPECT_EQ(batch["made_by"]["commit"], commit);
+  EXPECT_EQ(batch["made_by"]["scenario"],
+            nlohmann::json::parse(read(dir_ / "b/episodes.jsonl"))["scenario"]);
+  EXPECT_NE(read(dir_ / "b/report.html").find("Made by plantsim"), std::string::npos);
+  const std::string junit = read(dir_ / "j.xml");
+  EXPECT_NE(junit.find("<property name=\"plantsim_commit\" value=\"" + commit + "\"/>"),
+            std::string::npos)
+      << junit;
+}
+
+TEST_F(Cli, TheDashboardFlagsWhatAnotherBuildMade) {
+  for (const std::string out : {"mine", "other", "old"})
+    ASSERT_EQ(run("run " + kCorridor + " --out " + out, 120).exit_code, 0);
+  auto edit = [&](const std::string& folder, const std::function<void(nlohmann::json&)>& f) {
+    nlohmann::json j = nlohmann::json::parse(read(dir_ / folder / "summary.json"));
+    f(j);
+    std::ofstream(dir_ / folder / "summary.json") << j.dump();
+  };
+  edit("other", [](nlohmann::json& j) { j["made_by"]["commit"] = "000000000000"; });
+  edit("old", [](nlohmann::json& j) { j.erase("made_by"); });
+  const Outcome o = run("summarize mine other old --out s.md --html index.html", 60);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  const std::string html = read(dir_ / "index.html");
+  EXPECT_NE(html.find("made by another build (commit 000000000000"), std::string::npos);
+  EXPECT_NE(html.find("no build stamp"), std::string::npos);
+  EXPECT_NE(html.find("of the outputs below were not made by this build"), std::string::npos);
+  EXPECT_NE(read(dir_ / "s.md").find("Made by plantsim"), std::string::npos);
+}
+
+TEST_F(Cli, AnEpisodeReRunAloneGoesBesideItsBatchsRecords) {
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 2\n");
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures", 300).exit_code, 0);
+  const std::string id = "corridor_crossing|vg|default|none|2";
+  Outcome o = run("batch s.yaml --episode '" + id + "' --out b", 120);
+  EXPECT_EQ(o.exit_code, 0) << o.err;  // was exit 2: "holds episodes.jsonl"
+  const fs::path alone = dir_ / "b/episodes" / "corridor_crossing_vg_default_none_2";
+  EXPECT_TRUE(fs::exists(alone / "summary.json")) << o.out;
+  EXPECT_TRUE(fs::exists(alone / "report.html"));
+  o = run("batch s.yaml --out b --quiet --no-figures", 300);  // a resume keeps it
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(fs::exists(alone / "summary.json"));
+  o = run("batch s.yaml --out b --quiet --no-figures --fresh", 300);  // records gone: so is it
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_FALSE(fs::exists(dir_ / "b/episodes"));
+}
+
+}  // namespace
+}  // namespace plantsim
