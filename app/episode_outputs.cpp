@@ -139,17 +139,16 @@ void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
     files.push_back("frames/frame_0000.png");
     if (!movie.empty()) files.push_back(movie);
   }
-  render::write_report(
-      {"plantsim run: " + world.name + (setting.empty() ? "" : " (" + setting + ")"),
-       line,
-       metric_headers(),
-       {metric_row(r, world.name)},
-       figures,
-       files,
-       "",
-       render::replay_html(world, r),
-       made_by.text()},
-      out_dir + "/report.html");
+  render::Report report;
+  report.title = "plantsim run: " + world.name + (setting.empty() ? "" : " (" + setting + ")");
+  report.command = line;
+  report.headers = metric_headers();
+  report.rows = {metric_row(r, world.name)};
+  report.figures = figures;
+  report.files = files;
+  report.body_html = render::replay_html(world, r);
+  report.made_by = made_by.text();
+  render::write_report(report, out_dir + "/report.html");
 }
 
 std::vector<std::string> run_folder_names() {

@@ -10,6 +10,7 @@
 
 #include "batch/batch_gate.h"
 #include "batch/batch_summary.h"
+#include "batch/report_verdicts.h"
 #include "batch/summary_tables.h"
 #include "batch/wilson_interval.h"
 #include "planner/planner.h"
@@ -31,76 +32,6 @@ namespace {
 using nlohmann::json;
 
 using util::fixed;
-
-/// The columns of summary.csv a reader looks at first, with readable headers; all of them stay
-/// in summary.csv.
-void fill_table(render::Report& report, const std::string& csv,
-                const std::vector<ConfigurationVerdict>& verdicts) {
-  const std::vector<std::pair<std::string, std::string>> shown = {
-      {"world", "world"},
-      {"planner", "planner"},
-      {"controller", "controller"},
-      {"fault", "fault"},
-      {"episodes", "episodes"},
-      {"succeeded", "succeeded"},
-      {"success_rate", "success"},
-      {"ci95_low", "95 % low"},
-      {"ci95_high", "95 % high"},
-      {"mean_position_error_mm", "position error (mm)"},
-      {"mean_heading_error_deg", "heading error (deg)"},
-      {"mean_time_s", "time (s)"},
-      {"collisions", "collisions"},
-      {"mean_stops", "stops"},
-      {"mean_replans", "replans"},
-      {"path_over_optimum", "plan / optimum"}};
-  std::vector<std::string> header;
-  std::size_t start = 0;
-  bool first = true;
-  std::vector<int> index;
-  while (start < csv.size()) {
-    const std::size_t end = std::min(csv.find('\n', start), csv.size());
-    const std::vector<std::string> cells = util::csv_split(csv.substr(start, end - start));
-    start = end + 1;
-    if (first) {
-      header = cells;
-      for (const auto& [key, title] : shown) {
-        const auto it = std::find(header.begin(), header.end(), key);
-        if (it == header.end()) continue;
-        index.push_back(static_cast<int>(it - header.begin()));
-        report.headers.push_back(title);
-      }
-      report.headers.push_back("failures by reason");
-      report.headers.push_back("gate");
-      first = false;
-      continue;
-    }
-    std::vector<std::string> out;
-    for (int i : index) out.push_back(static_cast<std::size_t>(i) < cells.size() ? cells[i] : "");
-    // The failed_<reason> columns that are not zero, as "reason count, ...".
-    std::string failures;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) {
-      if (header[i].rfind("failed_", 0) != 0 || cells[i] == "0") continue;
-      failures += (failures.empty() ? "" : ", ") + header[i].substr(7) + " " + cells[i];
-    }
-    out.push_back(failures.empty() ? "-" : failures);
-    // The row's verdict: its own, or its planner x controller x fault's over all worlds.
-    std::string verdict = "not gated";
-    const ConfigurationVerdict* v = nullptr;
-    if (cells.size() >= 4)
-      for (const ConfigurationVerdict& c : verdicts)
-        if ((c.world == cells[0] || c.world == kAllWorlds) && c.planner == cells[1] &&
-            c.controller == cells[2] && c.fault == cells[3])
-          v = &c;
-    // The verdict by the gate's statistic, and whether the 95 % lower bound clears the threshold
-    // too (10 of 10 passes a 0.9 gate by its point estimate; its lower bound, 0.72, does not).
-    if (v && v->threshold)
-      verdict = std::string(v->passed ? "pass (>= " : "FAIL (< ") + fixed(*v->threshold, 3) +
-                (v->world == kAllWorlds ? ", all worlds" : "") + "); 95 % low " +
-                fixed(v->wilson_low, 3) + (v->lower_bound_clears() ? " clears it" : " does not");
-    out.push_back(verdict);
-    report.rows.push_back(out);
-  }
-}
 
 /// The command that re-runs one episode, quoted for the shell (names may hold anything).
 std::string rerun_command(const std::string& scenario_path, const std::string& id) {
@@ -332,14 +263,15 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   report.title = title;
   report.command = command;
   report.made_by = made_by.text();
-  fill_table(report, csv, verdicts);
+  report.banner_html = verdict_banner_html(verdicts, gate);
+  const std::string details = fill_verdict_table(report, csv, verdicts, gate.statistic);
   report.notes =
       "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "
       "the exact visibility-graph optimum from the same start; errors are over docked episodes; "
       "summary.csv has every column.";
   report.files = {"episodes.jsonl", "summary.csv", "summary.json"};
   if (!sweep.empty()) report.files.push_back("sweep.csv");
-  report.body_html = failure_table_html(lines, failures.size(), scenario_path);
+  report.body_html = details + failure_table_html(lines, failures.size(), scenario_path);
   if (charts) {
     const ChartData data = read_chart_data(lines);
     FigureWriter chart(report, out_dir);

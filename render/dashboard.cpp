@@ -43,6 +43,23 @@ std::string link_row(const DashboardLink& l) {
          "</td></tr>\n";
 }
 
+/// The verdict first, what a team lead reads before anything else: the batches below their gates.
+std::string batches_banner(const std::vector<DashboardLink>& links, int batches, int passed,
+                           int failed) {
+  std::string names;
+  for (const auto& l : links)
+    if (l.kind == "batch" && l.verdict == "failed")
+      names += (names.empty() ? "" : ", ") + html_escape(l.title);
+  if (failed > 0)
+    return "<div class=\"banner fail\"><b>FAIL</b>: " + std::to_string(failed) + " of " +
+           std::to_string(batches) + " batches below their gates: " + names +
+           " (their reports say which configurations, by how much)</div>\n";
+  if (passed > 0)
+    return "<div class=\"banner pass\"><b>PASS</b>: every gated batch (" + std::to_string(passed) +
+           " of " + std::to_string(batches) + ") meets its gate</div>\n";
+  return "<div class=\"banner none\"><b>NO GATE</b>: no batch sets one</div>\n";
+}
+
 }  // namespace
 
 std::string dashboard_html(const std::string& title, const std::vector<std::string>& headers,
@@ -55,7 +72,9 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
       "text-align:right;vertical-align:middle}th{background:#eee}td.l,th.l{text-align:left}"
       "img.thumb{width:220px;border:1px solid #ddd}.ok{color:#007a56;font-weight:bold}"
-      ".bad{color:#c03c00;font-weight:bold}.stale{color:#c03c00;display:block}</style></"
+      ".bad{color:#c03c00;font-weight:bold}.stale{color:#c03c00;display:block}"
+      ".banner{padding:8px 12px;margin:12px 0;background:#f6f6f6;border-left:8px solid #999}"
+      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}</style></"
       "head><body>\n";
   int ok = 0;
   for (const auto& r : runs) ok += r.succeeded;
@@ -65,6 +84,7 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
     if (l.kind == "batch")
       ++batches, passed += l.verdict == "passed", failed += l.verdict == "failed";
   h += "<h1>" + html_escape(title) + "</h1>\n" + stamp_paragraph(runs, links, made_by);
+  if (batches > 0) h += batches_banner(links, batches, passed, failed);
   h += "<p>" + std::to_string(ok) + " of " + std::to_string(runs.size()) + " single runs succeeded";
   if (batches > 0)
     h += "; of " + std::to_string(batches) + " batches, " + std::to_string(passed) +

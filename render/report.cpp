@@ -62,18 +62,24 @@ std::string report_html(const Report& r) {
       "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
       "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px "
       "4px}"
-      "figure{margin:16px 0}</style></head><body>\n";
+      "figure{margin:16px 0}tr.fail td{color:#c03c00;font-weight:bold}"
+      ".banner{padding:8px 12px;margin:12px 0;background:#f6f6f6;border-left:8px solid #999}"
+      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";
   if (!r.made_by.empty())
     h += "<p class=\"made-by\" style=\"color:#555\">" + html_escape(r.made_by) + "</p>\n";
+  h += r.banner_html;
   if (!r.command.empty()) h += "<p>Produced by <code>" + html_escape(r.command) + "</code></p>\n";
   if (!r.notes.empty()) h += "<p>" + html_escape(r.notes) + "</p>\n";
   if (!r.headers.empty()) {
     h += "<table><tr>";
     for (const auto& c : r.headers) h += "<th>" + html_escape(c) + "</th>";
     h += "</tr>\n";
-    for (const auto& row : r.rows) {
-      h += "<tr>";
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+      const auto& row = r.rows[i];
+      h += i < r.row_classes.size() && !r.row_classes[i].empty()
+               ? "<tr class=\"" + html_escape(r.row_classes[i]) + "\">"
+               : std::string("<tr>");
       for (const auto& c : row) h += "<td>" + html_escape(c) + "</td>";
       h += "</tr>\n";
     }

@@ -24,6 +24,8 @@ struct Report {
   std::string notes;               ///< a paragraph of plain text
   std::string body_html;           ///< trusted HTML placed before the figures (a replay player)
   std::string made_by;  ///< which build made it, when, from what (util/made_by.h), under the title
+  std::string banner_html;               ///< trusted HTML first under the title (a batch's verdict)
+  std::vector<std::string> row_classes;  ///< per row, may be shorter: "fail" draws it red
 };
 
 std::string report_html(const Report& r);

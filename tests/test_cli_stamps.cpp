@@ -2,7 +2,8 @@
 // report.html, junit.xml and every PNG carry plantsim's version and commit (and the date, the
 // duration and the hash of the config or scenario where the file has room); the dashboard flags
 // an output another build made, or one made before stamps; an episode re-run alone into its
-// batch's folder goes beside the records, and the batch re-runs around it.
+// batch's folder goes beside the records, and the batch re-runs around it. And the verdict first:
+// a banner on the batch report and the dashboard, failing rows first with the gate early.
 #include "cli_fixture.h"
 
 namespace plantsim {
@@ -79,6 +80,46 @@ TEST_F(Cli, AnEpisodeReRunAloneGoesBesideItsBatchsRecords) {
   o = run("batch s.yaml --out b --quiet --no-figures --fresh", 300);  // records gone: so is it
   EXPECT_EQ(o.exit_code, 0) << o.err;
   EXPECT_FALSE(fs::exists(dir_ / "b/episodes"));
+}
+
+TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
+  write("s.yaml", "worlds: [" + kCorridor +
+                      "]\nseeds: 1\nfaults: {ok: {}, short: {timeout_s: 2}}\n"
+                      "gate: {min_success: 1.0}\n");
+  Outcome o = run("batch s.yaml --out b --quiet --no-figures", 300);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  const std::string html = read(dir_ / "b/report.html");
+  const std::size_t banner = html.find("<div class=\"banner fail\"><b>FAIL</b>: 1 of 2 gated");
+  ASSERT_NE(banner, std::string::npos) << html.substr(0, 2000);
+  EXPECT_LT(banner, html.find("<table>"));  // before any table
+  EXPECT_NE(html.find("corridor_crossing / vg / default / short: 0/1 docked", banner),
+            std::string::npos);
+  EXPECT_NE(html.find("short by 1.000", banner), std::string::npos);
+  // The gate is the fifth column, and the failing row comes first, in red.
+  const std::size_t header = html.find(
+      "<tr><th>world</th><th>planner</th><th>controller</th>"
+      "<th>fault</th><th>gate</th>");
+  ASSERT_NE(header, std::string::npos);
+  const std::size_t first_row = html.find("<tr", header + 5);
+  EXPECT_EQ(html.substr(first_row, 17), "<tr class=\"fail\">");
+  EXPECT_NE(html.find("<td>short</td><td>FAIL success_rate 0.000 &lt; 1.000", first_row),
+            std::string::npos);
+  // None docked: its mean docking error is no value, not a perfect 0.000.
+  EXPECT_NE(html.find("<td>1</td><td>0</td><td>-</td>", first_row), std::string::npos);
+  EXPECT_NE(html.find("Details per configuration"), std::string::npos);
+  // The dashboard says it first too.
+  ASSERT_EQ(run("run " + kCorridor + " --out r", 120).exit_code, 0);
+  o = run("summarize r --html index.html --link b/report.html", 60);
+  EXPECT_NE(read(dir_ / "index.html").find("<b>FAIL</b>: 1 of 1 batches below their gates: b"),
+            std::string::npos);
+  // A batch that meets its gate: PASS, and the sample's doubt said.
+  write("p.yaml", "worlds: [" + kCorridor + "]\nseeds: 1\ngate: {min_success: 0.5}\n");
+  ASSERT_EQ(run("batch p.yaml --out p --quiet --no-figures", 300).exit_code, 0);
+  const std::string pass = read(dir_ / "p/report.html");
+  EXPECT_NE(pass.find("<b>PASS</b>: all 1 gated configurations meet the gate: success_rate at or "
+                      "above 0.500"),
+            std::string::npos);
+  EXPECT_NE(pass.find("more episodes would tell"), std::string::npos);  // 1/1: low 0.21 < 0.5
 }
 
 }  // namespace

@@ -156,7 +156,9 @@ TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
            {"summary.json"},
            "notes & more",
            "",
-           "Made by <a build>"};
+           "Made by <a build>",
+           "",
+           {}};
   write_report(r, (dir / "report.html").string());
   std::ifstream f((dir / "report.html").string());
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
