@@ -111,14 +111,17 @@ std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdict
   for (const ConfigurationVerdict& v : verdicts) {
     if (!v.threshold) continue;
     ++gated;
-    if (!v.passed) failing.push_back(&v);
+    if (!v.passed)
+      failing.push_back(&v);
     else if (!v.lower_bound_clears() && gate.statistic == GateStatistic::kSuccessRate)
       unsure.push_back(&v);
   }
   const std::string requirement =
       std::string("the gate: ") + statistic_name(gate.statistic) + " at or above " +
       (gate.min_success ? fixed(*gate.min_success, 3) : std::string("each rule's threshold")) +
-      (gate.rules.empty() ? "" : " (" + std::to_string(gate.rules.size()) + " rules for some configurations)") +
+      (gate.rules.empty()
+           ? ""
+           : " (" + std::to_string(gate.rules.size()) + " rules for some configurations)") +
       (gate.pool_worlds ? ", each configuration pooled over all worlds" : "");
   std::string h;
   if (gated == 0)
@@ -160,9 +163,12 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
   const auto rate = std::find(header.begin(), header.end(), "success_rate") - header.begin();
   const auto low = std::find(header.begin(), header.end(), "ci95_low") - header.begin();
   const auto high = std::find(header.begin(), header.end(), "ci95_high") - header.begin();
-  report.headers = {main_titles.begin(), main_titles.begin() + std::min<std::size_t>(4, main_titles.size())};
+  report.headers = {main_titles.begin(),
+                    main_titles.begin() + std::min<std::size_t>(4, main_titles.size())};
   report.headers.push_back("gate");
-  report.headers.insert(report.headers.end(), main_titles.begin() + std::min<std::size_t>(4, main_titles.size()), main_titles.end());
+  report.headers.insert(report.headers.end(),
+                        main_titles.begin() + std::min<std::size_t>(4, main_titles.size()),
+                        main_titles.end());
   report.headers.push_back("success (95 % interval)");
   report.headers.push_back("failures by reason");
   struct Row {
@@ -182,8 +188,9 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
     row.cells.push_back(v && v->threshold ? verdict_text(*v, statistic) : "not gated");
     for (std::size_t k = names; k < main.size(); ++k)
       row.cells.push_back(measured_cell(header, cells, main[k]));
-    row.cells.push_back(cell(cells, static_cast<int>(rate)) + " (" + cell(cells, static_cast<int>(low)) +
-                        " to " + cell(cells, static_cast<int>(high)) + ")");
+    row.cells.push_back(cell(cells, static_cast<int>(rate)) + " (" +
+                        cell(cells, static_cast<int>(low)) + " to " +
+                        cell(cells, static_cast<int>(high)) + ")");
     row.cells.push_back(failures_of(header, cells));
     table.push_back(std::move(row));
     details += "<tr>";

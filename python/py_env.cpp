@@ -146,9 +146,16 @@ class EnvCore {
 
   /// A new episode; runs to its first steered period (GIL released by the caller).
   void reset(std::uint64_t seed, const std::string& id) {
-    EpisodeSource::Drawn d = source_->draw(seed, id);
-    id_ = d.id;
-    episode_ = std::make_unique<SteppedEpisode>(d.plant, d.planner, d.config, steer_docking_);
+    draw(seed, id);
+    begin();
+  }
+  /// reset() in two halves: the draw from the shared source (one thread at a time), then the
+  /// episode's own planning and first second (any thread: VectorEnv runs them in parallel).
+  void draw(std::uint64_t seed, const std::string& id) { drawn_ = source_->draw(seed, id); }
+  void begin() {
+    id_ = drawn_.id;
+    episode_ = std::make_unique<SteppedEpisode>(drawn_.plant, drawn_.planner, drawn_.config,
+                                                steer_docking_);
     reward_ = 0;
     truncated_by_limit_ = false;
     episode_->start();
@@ -198,6 +205,7 @@ class EnvCore {
   bool steer_docking_;
   std::int64_t max_steps_;
   std::unique_ptr<SteppedEpisode> episode_;
+  EpisodeSource::Drawn drawn_;
   std::string id_;
   double reward_ = 0, last_distance_ = 0;
   bool truncated_by_limit_ = false;
@@ -463,7 +471,8 @@ struct PyVectorEnv {
     resets.assign(envs.size(), 0);
     {
       py::gil_scoped_release release;
-      for (std::size_t i = 0; i < envs.size(); ++i) envs[i]->reset(seed_of(i), "");
+      for (std::size_t i = 0; i < envs.size(); ++i) envs[i]->draw(seed_of(i), "");
+      pool.run(envs.size(), [&](std::size_t i) { envs[i]->begin(); });
     }
     return py::make_tuple(observations(), infos());
   }
@@ -491,9 +500,12 @@ struct PyVectorEnv {
       // Gymnasium's next-step autoreset: an environment that ended at the last step starts
       // its next episode now (reward 0, not terminated); the others take their actions.
       for (std::size_t i = 0; i < envs.size(); ++i)
-        if (was_done[i]) ++resets[i], envs[i]->reset(seed_of(i), "");
+        if (was_done[i]) ++resets[i], envs[i]->draw(seed_of(i), "");
       pool.run(envs.size(), [&](std::size_t i) {
-        if (!was_done[i]) envs[i]->step(twists[i]);
+        if (was_done[i])
+          envs[i]->begin();
+        else
+          envs[i]->step(twists[i]);
       });
     }
     py::array_t<double> rewards(static_cast<py::ssize_t>(envs.size()));
