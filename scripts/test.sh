@@ -2,7 +2,7 @@
 # Every test: installs what is missing, builds the normal tree and an ASan + UBSan tree, runs
 # the whole GoogleTest suite (and, in the normal tree, the single-node Slurm cluster test and the
 # headless Chromium test of the reports) through ctest in both, then fuzzes each input loader for
-# 15 s, two at a time, from the sanitizer tree.
+# 10 s, two at a time, from the sanitizer tree.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -18,7 +18,7 @@ root=$PWD
 (cd build-sanitize && PLANTSIM_SUITE_SCALE=0.025 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS="suppressions=$root/tests/lsan.supp" \
    ctest --output-on-failure --parallel "$(nproc)")
-# libFuzzer on every loader of untrusted input, 15 s each under ASan + UBSan after replaying every
+# libFuzzer on every loader of untrusted input, 10 s each under ASan + UBSan after replaying every
 # regression input (scripts/fuzz.sh): a smoke test that fits the test command's 20 minutes; the
 # hour-long runs are `scripts/fuzz.sh 3600`, outside it (docs/testing.md).
-./scripts/fuzz.sh 15
+./scripts/fuzz.sh 10
