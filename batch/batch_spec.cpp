@@ -13,6 +13,7 @@
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "util/data_dir.h"
+#include "util/input_file.h"
 #include "worlds/known_keys.h"
 #include "worlds/names.h"
 #include "worlds/world_error.h"
@@ -330,8 +331,9 @@ namespace {
 void check_top_keys(const YAML::Node& doc, const std::string& path) {
   for (const auto& kv : doc) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+    // `tune` is `plantsim tune`'s (tune/tune_spec.h): a batch runs the scenario's `worlds`.
     const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers", "faults",
-                                            "sweep", "seeds",  "starts",   "gate"};
+                                            "sweep", "seeds",  "starts",   "gate",        "tune"};
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, key, worlds::unknown_key_problem(key, known));
   }
@@ -380,6 +382,30 @@ void read_planners(const YAML::Node& doc, const std::string& path, BatchSpec& s)
                      "an empty list: no episode would run (leave the key out for vg)");
 }
 
+/// A controller given as a config file (`tuned: ../results/tune_speed/best.json`, what `plantsim
+/// tune` writes), relative to the scenario, read and checked as `run --config` reads it.
+std::string config_file_json(const std::string& file, const std::string& path,
+                             const std::string& name) {
+  const std::string field = "controllers." + name;
+  const std::string resolved =
+      util::resolve_input_path(file, std::filesystem::path(path).parent_path().string());
+  std::string text;
+  try {
+    text = util::read_input_file(resolved);
+  } catch (const std::exception& e) {
+    throw WorldError(path, field, "'" + file + "': " + e.what());
+  }
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception&) {
+    throw WorldError(path, field,
+                     "'" + file + "' is not JSON (expected a config file, docs/config.md)");
+  }
+  episode::parse_episode_config(text, resolved);  // throws on a bad key or value, naming the file
+  return j.dump();
+}
+
 void read_controllers(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   if (doc["controllers"]) {
     if (!doc["controllers"].IsMap())
@@ -389,7 +415,9 @@ void read_controllers(const YAML::Node& doc, const std::string& path, BatchSpec&
                        "empty: no episode would run (leave the key out for the default settings)");
     for (const auto& kv : doc["controllers"]) {
       const std::string name = checked_name(kv.first, path, "controllers");
-      s.controllers.push_back({name, overrides_json(kv.second, path, "controllers." + name)});
+      s.controllers.push_back({name, kv.second.IsScalar()
+                                         ? config_file_json(kv.second.Scalar(), path, name)
+                                         : overrides_json(kv.second, path, "controllers." + name)});
     }
   } else {
     s.controllers = {{"default", "{}"}};

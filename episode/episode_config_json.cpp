@@ -12,6 +12,7 @@
 #include "util/input_file.h"
 #include "util/param_table.h"
 #include "worlds/json_input.h"
+#include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::episode {
@@ -489,6 +490,27 @@ EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
     throw worlds::WorldError(path, "", e.what());
   }
   return parse_episode_config(text, path, base);
+}
+
+std::vector<NumberParameter> number_parameters() {
+  const EpisodeConfig defaults;
+  std::vector<NumberParameter> out;
+  auto add = [&](const Field& f, bool whole) {
+    out.push_back({f.path(), f.lo, f.hi, f.above, whole, f.get(defaults)});
+  };
+  for (const Field& f : fields()) add(f, false);
+  for (const Field& f : int_fields()) add(f, true);
+  return out;
+}
+
+NumberParameter number_parameter(const std::string& path) {
+  std::vector<std::string> known;
+  for (const NumberParameter& p : number_parameters()) {
+    if (p.path == path) return p;
+    known.push_back(p.path);
+  }
+  throw std::invalid_argument("'" + path + "': " + worlds::unknown_key_problem(path, known) +
+                              " (a number parameter of docs/config.md, as section.key)");
 }
 
 std::string default_config_json() { return config_json(EpisodeConfig{}); }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "sim/episode.h"
 
@@ -15,6 +16,21 @@ using sim::EpisodeConfig;
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base = {});
 EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
                                    EpisodeConfig base = {});
+
+/// A number parameter of the configuration (not a flag or a mode), as `plantsim tune` searches it:
+/// its "section.key", its documented range and its default.
+struct NumberParameter {
+  std::string path;
+  double lo = 0, hi = 0;
+  bool above = false;  ///< lo itself excluded
+  bool whole = false;  ///< a whole number
+  double default_value = 0;
+};
+/// Every number parameter, in docs/config.md's order.
+std::vector<NumberParameter> number_parameters();
+/// The parameter `path` ("tracking.max_linear_speed_mps"); throws std::invalid_argument naming it
+/// (with the nearest known key) when the configuration has no such number.
+NumberParameter number_parameter(const std::string& path);
 
 /// The defaults as JSON (what `plantsim config` prints).
 std::string default_config_json();

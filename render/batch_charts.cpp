@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "render/chart_axes.h"
 #include "render/colormap.h"
 #include "render/layers.h"
 #include "render/palette.h"
@@ -14,41 +15,6 @@ namespace plantsim::render {
 namespace {
 
 constexpr Rgb kBand{185, 212, 238};  // a light tint of the success line's blue
-
-/// A data range mapped into a pixel box (row 0 at the top).
-struct Axes {
-  PixelBox box;
-  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-  double px(double x) const { return box.left + box.width() * (x - x0) / (x1 - x0); }
-  double py(double y) const { return box.bottom - box.height() * (y - y0) / (y1 - y0); }
-};
-
-/// The bottom (horizontal) or left axis of `a`: line, grid, ticks and numbers (value x scale,
-/// with a suffix such as " %"), and the label under a horizontal one.
-void axis(Figure& fig, const Axes& a, bool horizontal, const std::string& label = "",
-          double scale = 1.0, const std::string& suffix = "") {
-  GlCanvas& c = fig.canvas();
-  const PixelBox& b = a.box;
-  const double lo = horizontal ? a.x0 : a.y0, hi = horizontal ? a.x1 : a.y1;
-  c.pixel_line({b.left, b.bottom}, horizontal ? Vec2{b.right, b.bottom} : Vec2{b.left, b.top}, 1.0,
-               palette::kAxis);
-  const auto ticks = nice_ticks(lo, hi, horizontal ? 6 : 5);
-  const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
-  for (double v : ticks) {
-    if (v < lo - 1e-9 || v > hi + 1e-9) continue;
-    const std::string number = tick_label(v * scale, step * scale) + suffix;
-    if (horizontal) {
-      c.pixel_line({a.px(v), b.top}, {a.px(v), b.bottom}, 1.0, palette::kGrid);
-      c.pixel_line({a.px(v), b.bottom}, {a.px(v), b.bottom + 4}, 1.0, palette::kAxis);
-      fig.text(number, a.px(v), b.bottom + 17, 12, palette::kAxis, Anchor::kCenter);
-    } else {
-      c.pixel_line({b.left, a.py(v)}, {b.right, a.py(v)}, 1.0, palette::kGrid);
-      fig.text(number, b.left - 7, a.py(v) + 4, 12, palette::kAxis, Anchor::kRight);
-    }
-  }
-  if (horizontal)
-    fig.text(label, 0.5 * (b.left + b.right), b.bottom + 34, 13, palette::kAxis, Anchor::kCenter);
-}
 
 /// The methods in first-met order, each with an Okabe-Ito colour.
 std::vector<std::string> methods_of(const std::vector<EpisodeOutcome>& episodes) {

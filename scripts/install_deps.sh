@@ -10,7 +10,7 @@ packages=(
   libbox2d-dev libeigen3-dev libosmesa6-dev libpng-dev
   libgtest-dev libgmock-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
-  libfreetype-dev fonts-dejavu-core libglpk-dev libcgal-dev
+  libfreetype-dev fonts-dejavu-core libglpk-dev libcgal-dev libnlopt-dev
   python3 python3-dev pybind11-dev python3-numpy
 )
 if [ "${1:-}" = test ]; then

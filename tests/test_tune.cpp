@@ -1,0 +1,273 @@
+// plantsim tune (issue 55): the parameters named as docs/config.md names them and bounded by its
+// ranges; NLopt and random search spending exactly their budget, deterministically; the paired
+// statistics on known answers; and the command end to end on small plants: outputs that `run`
+// takes, held-out validation, a resume that reruns nothing, and bad input refused with exit 2
+// before any episode, nothing of the user's touched.
+#include <cmath>
+
+#include "cli_fixture.h"
+#include "tune/objective.h"
+#include "tune/paired_test.h"
+#include "tune/search.h"
+#include "tune/tune_spec.h"
+
+namespace plantsim {
+namespace {
+
+using tune::EpisodeOutcome;
+
+TEST(TuneParameters, NamedAsTheConfigNamesThemWithTheirRanges) {
+  const auto p = episode::number_parameter("tracking.max_linear_speed_mps");
+  EXPECT_DOUBLE_EQ(p.default_value, 0.6);
+  EXPECT_FALSE(p.whole);
+  EXPECT_TRUE(episode::number_parameter("docking.max_retries").whole);
+  try {
+    episode::number_parameter("tracking.max_linear_sped_mps");
+    FAIL() << "an unknown key was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'tracking.max_linear_speed_mps'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(episode::number_parameter("detection.enabled"), std::invalid_argument);  // a flag
+}
+
+tune::TuneSpec analytic_spec(tune::Method method, int budget) {
+  tune::TuneSpec spec;
+  spec.budget = budget;
+  spec.method = method;
+  for (const char* key : {"tracking.max_linear_speed_mps", "tracking.lookahead_time_s"}) {
+    tune::TunedParameter p;
+    p.info = episode::number_parameter(key);
+    p.lo = 0, p.hi = 2;
+    spec.parameters.push_back(p);
+  }
+  return spec;
+}
+
+// A smooth bowl with its top at (1.4, 0.5): what any of the optimisers must find.
+double bowl(const std::vector<double>& v) {
+  return -std::pow(v[0] - 1.4, 2) - std::pow(v[1] - 0.5, 2);
+}
+
+TEST(TuneSearch, EachSearchSpendsExactlyItsBudgetAndNloptFindsTheTop) {
+  for (tune::Method m : {tune::Method::kSbplx, tune::Method::kBobyqa, tune::Method::kNelderMead,
+                         tune::Method::kCrs2, tune::Method::kIsres}) {
+    const tune::TuneSpec spec = analytic_spec(m, 80);
+    int calls = 0;
+    double best = -HUGE_VAL;
+    tune::nlopt_search(spec, {0.6, 1.2},
+                       [&](const char* search, int index, const std::vector<double>& v) {
+                         EXPECT_STREQ(search, "nlopt");
+                         EXPECT_EQ(index, calls++);
+                         for (double x : v) EXPECT_TRUE(x >= 0 && x <= 2) << x;
+                         best = std::max(best, bowl(v));
+                         return bowl(v);
+                       });
+    EXPECT_EQ(calls, 80) << tune::method_name(m);
+    EXPECT_GT(best, -0.01) << tune::method_name(m);
+  }
+}
+
+TEST(TuneSearch, RandomSearchIsUniformAndRepeatsForItsSeed) {
+  tune::TuneSpec spec = analytic_spec(tune::Method::kSbplx, 400);
+  std::vector<std::vector<double>> first, second;
+  tune::random_search(spec, [&](const char*, int, const std::vector<double>& v) {
+    first.push_back(v);
+    return 0.0;
+  });
+  tune::random_search(spec, [&](const char*, int, const std::vector<double>& v) {
+    second.push_back(v);
+    return 0.0;
+  });
+  EXPECT_EQ(first, second);
+  double mean = 0;
+  for (const auto& v : first) mean += v[0] / first.size();
+  EXPECT_NEAR(mean, 1.0, 0.1);  // uniform on [0, 2]
+  spec.seed = 2;
+  second.clear();
+  tune::random_search(spec, [&](const char*, int, const std::vector<double>& v) {
+    second.push_back(v);
+    return 0.0;
+  });
+  EXPECT_NE(first, second);
+}
+
+TEST(TuneSearch, WholeNumbersAreSearchedAsWholeNumbers) {
+  tune::TuneSpec spec;
+  spec.budget = 30;
+  tune::TunedParameter p;
+  p.info = episode::number_parameter("docking.max_retries");
+  p.lo = 1, p.hi = 6;
+  spec.parameters = {p};
+  tune::random_search(spec, [&](const char*, int, const std::vector<double>& v) {
+    EXPECT_EQ(v[0], std::round(v[0]));
+    return 0.0;
+  });
+}
+
+TEST(TunePaired, McNemarAndTheSignTestOnKnownAnswers) {
+  EXPECT_NEAR(tune::two_sided_binomial_p(0, 5), 2.0 / 32, 1e-12);
+  EXPECT_NEAR(tune::two_sided_binomial_p(2, 4), 1.0, 1e-12);
+  EXPECT_NEAR(tune::two_sided_binomial_p(1, 10), 2.0 * 11 / 1024, 1e-12);
+  std::vector<EpisodeOutcome> a, b;
+  for (int i = 0; i < 12; ++i) {
+    const std::string id = "e" + std::to_string(i);
+    a.push_back({id, i >= 8, 100.0, 0.0, 0});               // the default docked 4
+    b.push_back({id, true, i >= 8 ? 80.0 : 90.0, 0.0, 0});  // the tuned one all 12, faster
+  }
+  const tune::PairedComparison c = tune::compare_paired(a, b);
+  EXPECT_EQ(c.only_b, 8);
+  EXPECT_EQ(c.only_a, 0);
+  EXPECT_NEAR(c.success_p, 2.0 / 256, 1e-12);
+  EXPECT_EQ(c.both_docked, 4);
+  EXPECT_DOUBLE_EQ(c.time_difference_s, -20.0);
+  EXPECT_DOUBLE_EQ(c.time_change, -0.2);
+  EXPECT_NEAR(c.time_p, 2.0 / 16, 1e-12);
+  b.pop_back();
+  EXPECT_THROW(tune::compare_paired(a, b), std::invalid_argument);
+}
+
+TEST(TuneObjective, BelowTheFloorRanksUnderEveryCandidateThatKeepsIt) {
+  std::vector<EpisodeOutcome> slow_sure, fast_unsure;
+  for (int i = 0; i < 40; ++i) {
+    slow_sure.push_back({"e", true, 590.0, 0.01, 0});
+    fast_unsure.push_back({"e", i % 10 != 0, 20.0, 0.01, 0});
+  }
+  const tune::Statistics sure = tune::statistics(slow_sure), unsure = tune::statistics(fast_unsure);
+  const double floor = sure.wilson_low;
+  for (tune::Objective o :
+       {tune::Objective::kTime, tune::Objective::kDockingError, tune::Objective::kContacts}) {
+    const tune::Score s = tune::score(o, sure, floor, 600), u = tune::score(o, unsure, floor, 600);
+    EXPECT_TRUE(s.feasible);
+    EXPECT_FALSE(u.feasible);
+    EXPECT_GT(s.value, u.value) << tune::objective_name(o);
+  }
+  // The default objective weighs 10 s as 0.001 of the Wilson bound.
+  EXPECT_NEAR(tune::score(tune::Objective::kSuccessThenTime, sure, 0, 600).value,
+              sure.wilson_low - 0.059, 1e-12);
+  EXPECT_THROW(tune::parse_objective("fastest", "--objective"), std::invalid_argument);
+}
+
+// --- The command ---
+
+const std::string kSmall = test::source_file("worlds/examples/small_plant.json");
+const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+
+std::string tiny_scenario(const std::string& tune_section) {
+  return "name: tiny\nworlds: [" + kSmall + ", " + kCorridor + "]\nseeds: 2\ntune:\n" +
+         tune_section;
+}
+
+// A folder's evaluations without their wall-clock times (the one thing a rerun changes).
+std::vector<nlohmann::json> evaluations(const fs::path& jsonl) {
+  std::vector<nlohmann::json> out;
+  std::ifstream in(jsonl);
+  for (std::string line; std::getline(in, line);) {
+    out.push_back(nlohmann::json::parse(line));
+    out.back().erase("wall_s");
+  }
+  return out;
+}
+
+const char* kHeldOutSeeds =
+    "  validation_seeds: [11, 12]\n"
+    "  parameters: {tracking.max_linear_speed_mps: [0.3, 1.2], docking.approach_speed_mps: [0.04, "
+    "0.16]}\n";
+
+TEST_F(Cli, TuneEndToEndHeldOutResumableAndItsBestRuns) {
+  write("t.yaml", tiny_scenario(kHeldOutSeeds));
+  const Outcome first = run("tune t.yaml --budget 3 --out a", 600);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  for (const char* f : {"best.json", "summary.json", "validation.csv", "report.html",
+                        "convergence.png", "parameters.png", "evaluations.jsonl"})
+    EXPECT_TRUE(fs::exists(dir_ / "a" / f)) << f;
+  const auto summary = nlohmann::json::parse(read(dir_ / "a/summary.json"));
+  EXPECT_EQ(summary["kind"], "tune");
+  EXPECT_EQ(summary["tuning_episodes"], 4);
+  EXPECT_EQ(summary["validation_episodes"], 4);
+  // Every evaluation: 1 default + 3 NLopt + 3 random on the tuning episodes, 3 validations.
+  const std::vector<nlohmann::json> lines = evaluations(dir_ / "a/evaluations.jsonl");
+  ASSERT_EQ(lines.size(), 10u);
+  std::set<std::string> tuning_ids, validation_ids;
+  for (const auto& l : lines)
+    for (const auto& e : l["episode_outcomes"])
+      (l["search"].get<std::string>().rfind("validation:", 0) == 0 ? validation_ids : tuning_ids)
+          .insert(e[0].get<std::string>());
+  EXPECT_EQ(tuning_ids.size(), 4u);
+  EXPECT_EQ(validation_ids.size(), 4u);
+  for (const std::string& id : validation_ids)
+    EXPECT_EQ(tuning_ids.count(id), 0u) << id << " was tuned on";
+  // The table's success counts are the validation episodes' own.
+  for (const auto& s : summary["settings"]) EXPECT_EQ(s["validation"]["episodes"], 4);
+
+  // best.json is a configuration `run` takes as it is.
+  const Outcome r = run("run " + kSmall + " --config a/best.json --out r", 120);
+  EXPECT_NE(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "r/summary.json"));
+  // ... and a batch scenario names it as a controller.
+  write("b.yaml",
+        "worlds: [" + kSmall + "]\nseeds: 1\ncontrollers: {default: {}, tuned: a/best.json}\n");
+  const Outcome b = run("batch b.yaml --out batch --quiet --no-figures", 300);
+  EXPECT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NE(read(dir_ / "batch/episodes.jsonl").find("\"controller\":\"tuned\""),
+            std::string::npos);
+  write("bad.yaml", "worlds: [" + kSmall + "]\nseeds: 1\ncontrollers: {tuned: a/summary.json}\n");
+  const Outcome bad = run("batch bad.yaml --out batch2 --quiet", 60);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("unknown parameter"), std::string::npos) << bad.err;
+
+  // Killed mid-line: the torn line is cut, everything else is read back, the result the same.
+  const std::string jsonl = read(dir_ / "a/evaluations.jsonl");
+  const std::size_t last = jsonl.rfind('\n', jsonl.size() - 2);
+  std::ofstream(dir_ / "a/evaluations.jsonl", std::ios::trunc) << jsonl.substr(0, last + 40);
+  const Outcome again = run("tune t.yaml --budget 3 --out a", 600);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("1 evaluations run"), std::string::npos) << again.out;
+  EXPECT_TRUE(evaluations(dir_ / "a/evaluations.jsonl") == lines);
+  // The same seed in another folder: the same evaluations, line for line.
+  ASSERT_EQ(run("tune t.yaml --budget 3 --out b --quiet --no-figures", 600).exit_code, 0);
+  EXPECT_TRUE(evaluations(dir_ / "b/evaluations.jsonl") == lines);
+  EXPECT_EQ(read(dir_ / "b/best.json"), read(dir_ / "a/best.json"));
+}
+
+TEST_F(Cli, TuneRefusesBadInputBeforeAnyEpisode) {
+  write("t.yaml", tiny_scenario(kHeldOutSeeds));
+  write("no_tune.yaml", "worlds: [" + kSmall + "]\nseeds: 1\n");
+  write("no_validation.yaml", tiny_scenario("  budget: 4\n"));
+  write("overlap.yaml", tiny_scenario("  validation_seeds: [2, 3]\n"));
+  write("typo.yaml", tiny_scenario("  validation_seeds: 3\n  budjet: 4\n"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"tune t.yaml --param tracking.max_linear_sped_mps=0.3:1",
+       "did you mean 'tracking.max_linear_speed_mps'"},
+      {"tune t.yaml --param docking.max_retries=1.5:4", "whole bounds"},
+      {"tune t.yaml --param lidar.dropout_probability=0:1.5", "documented range [0, 1]"},
+      {"tune t.yaml --param tracking.max_linear_speed_mps=1:0.5", "LOW < HIGH"},
+      {"tune t.yaml --param tracking.max_linear_speed_mps", "KEY=LOW:HIGH"},
+      {"tune t.yaml --param tracking.max_linear_speed_mps=a:1", "'a' is not a number"},
+      {"tune t.yaml --budget 0", "--budget"},
+      {"tune t.yaml --objective fastest", "unknown objective 'fastest'"},
+      {"tune t.yaml --method lbfgs", "unknown method 'lbfgs'"},
+      {"tune t.yaml --min-wilson 1.5", "--min-wilson"},
+      {"tune no_tune.yaml", "field 'tune'"},
+      {"tune no_validation.yaml", "tune.validation_worlds"},
+      {"tune overlap.yaml", "must be held out"},
+      {"tune typo.yaml", "did you mean 'budget'"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Outcome o = run(args + " --out out", 60);
+    EXPECT_EQ(o.exit_code, 2) << args << "\n" << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << args << "\n" << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << args << " wrote its folder";
+  }
+  // A folder of the user's own is refused and left as it was.
+  write("mine/notes.txt", "keep");
+  const Outcome o = run("tune t.yaml --budget 1 --out mine", 60);
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.err.find("not a tuning's output"), std::string::npos) << o.err;
+  EXPECT_EQ(read(dir_ / "mine/notes.txt"), "keep");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "mine"), fs::directory_iterator()), 1);
+}
+
+}  // namespace
+}  // namespace plantsim
