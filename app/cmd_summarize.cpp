@@ -111,6 +111,17 @@ std::string stale_note(const std::string& summary_path) {
   return "";
 }
 
+/// A tuning folder in one line: its verdict on the validation episodes (summary.json).
+std::string tune_line(const std::string& dir) {
+  try {
+    const nlohmann::json j =
+        nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+    return j.at("verdict").get<std::string>();
+  } catch (const std::exception&) {
+    return "no readable summary.json: the tuning did not finish; see its evaluations.jsonl";
+  }
+}
+
 /// A linked report, its kind told by what its folder holds, with the figure that shows it best.
 render::DashboardLink link_to(const std::string& report, const std::string& base) {
   namespace fs = std::filesystem;
@@ -131,6 +142,11 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
     l.kind = "batch";
     if (fs::exists(dir / "chart_success.png")) l.thumbnail = rel("chart_success.png");
     l.line = batch_line(dir.string(), l.verdict);
+    l.stale = stale_note((dir / "summary.json").string());
+  } else if (fs::exists(dir / "evaluations.jsonl") && fs::exists(dir / "best.json")) {
+    l.kind = "tune";
+    if (fs::exists(dir / "convergence.png")) l.thumbnail = rel("convergence.png");
+    l.line = tune_line(dir.string());
     l.stale = stale_note((dir / "summary.json").string());
   } else if (fs::exists(dir / "coverage.png")) {
     l.kind = "coverage";

@@ -17,6 +17,7 @@ PYBIND11_MODULE(_plantsim, m) {
   bind_plan(m);
   bind_run(m);
   bind_batch(m);
+  bind_tune(m);
   bind_nav2(m);
   bind_env(m);
 }

@@ -11,6 +11,7 @@ void bind_world(py::module_& m);
 void bind_plan(py::module_& m);
 void bind_run(py::module_& m);
 void bind_batch(py::module_& m);
+void bind_tune(py::module_& m);
 void bind_nav2(py::module_& m);
 void bind_env(py::module_& m);
 

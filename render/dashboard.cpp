@@ -118,13 +118,14 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
     h += "</td></tr>\n";
   }
   h += "</table>\n";
-  for (const std::string kind : {"comparison", "batch", "coverage", "chart", "report"}) {
+  for (const std::string kind : {"comparison", "batch", "tune", "coverage", "chart", "report"}) {
     std::string rows;
     for (const auto& l : links)
       if (l.kind == kind) rows += link_row(l);
     if (rows.empty()) continue;
     const std::string heading = kind == "comparison" ? "Comparisons"
                                 : kind == "batch"    ? "Batches"
+                                : kind == "tune"     ? "Tunings"
                                 : kind == "coverage" ? "Coverage"
                                 : kind == "chart"    ? "Charts"
                                                      : "Other reports";

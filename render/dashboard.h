@@ -20,7 +20,7 @@ struct DashboardRun {
 };
 
 struct DashboardLink {
-  std::string kind;  ///< "comparison", "batch", "coverage", "chart", "report"
+  std::string kind;  ///< "comparison", "batch", "tune", "coverage", "chart", "report"
   std::string title;
   std::string report;     ///< relative to the dashboard
   std::string thumbnail;  ///< relative to the dashboard, may be empty

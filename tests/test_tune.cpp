@@ -201,6 +201,15 @@ TEST_F(Cli, TuneEndToEndHeldOutResumableAndItsBestRuns) {
   // The table's success counts are the validation episodes' own.
   for (const auto& s : summary["settings"]) EXPECT_EQ(s["validation"]["episodes"], 4);
 
+  // The dashboard lists it under its own heading, with its verdict and chart.
+  ASSERT_EQ(run("run " + kSmall + " --out plain", 120).exit_code, 0);
+  const Outcome d = run("summarize plain --html index.html --link a/report.html", 60);
+  EXPECT_EQ(d.exit_code, 0) << d.err;
+  const std::string index = read(dir_ / "index.html");
+  EXPECT_NE(index.find("<h2>Tunings</h2>"), std::string::npos);
+  EXPECT_NE(index.find("a/convergence.png"), std::string::npos);
+  EXPECT_NE(index.find("held-out validation episodes"), std::string::npos);
+
   // best.json is a configuration `run` takes as it is.
   const Outcome r = run("run " + kSmall + " --config a/best.json --out r", 120);
   EXPECT_NE(r.exit_code, 2) << r.err;

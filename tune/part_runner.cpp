@@ -46,7 +46,8 @@ PartRunner::PartRunner(const batch::BatchSpec& spec, int threads)
     timeout_s_ = std::max(timeout_s_, c.timeout_s);
 }
 
-std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides) const {
+std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
+                                            const std::function<bool()>& interrupted) const {
   batch::BatchSpec spec = spec_;
   const nlohmann::json patch = nlohmann::json::parse(overrides);
   for (batch::NamedConfig& c : spec.controllers) {
@@ -68,6 +69,8 @@ std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides) const 
     batch::EpisodeRunner runner(spec, loaded_.worlds, loaded_.contents, configs);
     try {
       for (std::size_t k = next++; k < episodes_.size(); k = next++) {
+        if (interrupted && interrupted())
+          throw TuneInterrupted("the tuning was interrupted; its finished evaluations are kept");
         const sim::EpisodeResult r = runner.run(episodes_[k]).result;
         EpisodeOutcome& o = out[k];
         o.id = ids_[k];

@@ -3,6 +3,8 @@
 // their parameters and not by their luck (common random numbers).
 #pragma once
 
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,13 @@ namespace plantsim::tune {
 std::string overrides_json(const std::vector<TunedParameter>& parameters,
                            const std::vector<double>& values);
 
+/// A tuning stopped by its `interrupted` poll: the evaluations finished before it are on disk, the
+/// next run reads them back.
+class TuneInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class PartRunner {
  public:
   /// Loads the part's worlds (throws worlds::WorldError naming a bad one).
@@ -26,7 +35,9 @@ class PartRunner {
   /// The part's episodes run with `overrides` over every controller's settings (faults keep
   /// theirs over them), in the part's order. Throws std::invalid_argument when the settings
   /// contradict each other (a look-ahead minimum above its maximum).
-  std::vector<EpisodeOutcome> run(const std::string& overrides) const;
+  /// `interrupted`, polled between episodes, stops the run (TuneInterrupted).
+  std::vector<EpisodeOutcome> run(const std::string& overrides,
+                                  const std::function<bool()>& interrupted = {}) const;
 
   const std::vector<std::string>& ids() const { return ids_; }
   const batch::BatchSpec& spec() const { return spec_; }

@@ -2,6 +2,7 @@
 #include "tune/run_tune.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -79,11 +80,19 @@ std::string tune_fingerprint(const TuneSpec& spec, const PartRunner& tuning,
   return f.hex();
 }
 
+/// Settings equal to a billionth: the optimiser's start, scaled into the unit cube and back, is the
+/// default it came from, though not to the last bit.
+std::vector<double> memo_key(const std::vector<double>& values) {
+  std::vector<double> key;
+  for (double v : values) key.push_back(std::round(v * 1e9));
+  return key;
+}
+
 /// Evaluations run once: recorded ones are read back, new ones appended as they finish.
 class Evaluations {
  public:
-  Evaluations(const TuneSpec& spec, EvaluationLog& log, bool progress)
-      : spec_(spec), log_(log), progress_(progress) {}
+  Evaluations(const TuneSpec& spec, EvaluationLog& log, const TuneOptions& options)
+      : spec_(spec), log_(log), progress_(options.progress), interrupted_(options.interrupted) {}
 
   Evaluation evaluate(const PartRunner& part, const std::string& search, int index,
                       const std::vector<double>& values, std::optional<double> floor) {
@@ -95,14 +104,14 @@ class Evaluations {
       Evaluation e = *known;
       if (e.problem.empty())
         e.score = score(spec_.objective, e.stats, floor_for(e.stats), part.timeout_s());
-      same_values_.try_emplace({&part, values}, e);
+      same_values_.try_emplace({&part, memo_key(values)}, e);
       return e;
     }
     Evaluation e;
-    const auto seen = same_values_.find({&part, values});
+    const auto seen = same_values_.find({&part, memo_key(values)});
     if (seen != same_values_.end()) {  // a search asked again for settings already judged
       e = seen->second;
-      e.search = search, e.index = index, e.wall_s = 0;
+      e.search = search, e.index = index, e.values = values, e.wall_s = 0;
       if (e.problem.empty())
         e.score = score(spec_.objective, e.stats, floor_for(e.stats), part.timeout_s());
       log_.append(e);
@@ -111,7 +120,7 @@ class Evaluations {
     e.search = search, e.index = index, e.values = values;
     const auto began = std::chrono::steady_clock::now();
     try {
-      e.outcomes = part.run(overrides_json(spec_.parameters, values));
+      e.outcomes = part.run(overrides_json(spec_.parameters, values), interrupted_);
       e.stats = statistics(e.outcomes);
       e.score = score(spec_.objective, e.stats, floor_for(e.stats), part.timeout_s());
     } catch (const std::invalid_argument& refused) {
@@ -120,7 +129,7 @@ class Evaluations {
     }
     e.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     log_.append(e);
-    same_values_[{&part, values}] = e;
+    same_values_[{&part, memo_key(values)}] = e;
     ++ran_;
     if (progress_)
       std::fprintf(
@@ -137,6 +146,7 @@ class Evaluations {
   const TuneSpec& spec_;
   EvaluationLog& log_;
   bool progress_;
+  std::function<bool()> interrupted_;
   int ran_ = 0;
   std::map<std::pair<const PartRunner*, std::vector<double>>, Evaluation> same_values_;
 };
@@ -187,7 +197,7 @@ TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
   prepare_folder(o);  // again, now that no other plantsim writes there
   remove_outputs(o.out_dir, !o.fresh);
   EvaluationLog log(o.out_dir + "/evaluations.jsonl", out.fingerprint, spec.parameters);
-  Evaluations evaluations(spec, log, o.progress);
+  Evaluations evaluations(spec, log, o);
 
   out.history.push_back(evaluations.evaluate(tuning, "default", 0, defaults, std::nullopt));
   out.floor = spec.min_wilson.value_or(out.history.back().stats.wilson_low);

@@ -3,6 +3,7 @@
 // proven on the held-out validation episodes, paired, and the report written.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct TuneOptions {
   bool figures = true;
   std::string
       command;  ///< the command line that makes it again, quoted for the shell (the report's)
+  std::function<bool()> interrupted;  ///< polled between episodes (Python's Ctrl-C)
 };
 
 /// One setting proven on the validation episodes.

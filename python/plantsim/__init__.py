@@ -32,11 +32,11 @@ if not os.environ.get("PLANTSIM_DATA") and _find_shared_data():
 
 from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, load_world, nav2_import, plan,
                         planners, run)
-from ._plantsim import _batch
+from ._plantsim import _batch, _tune
 from .env import Env, VectorEnv
 
 __all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "load_world",
-           "nav2_import", "plan", "planners", "run"]
+           "nav2_import", "plan", "planners", "run", "tune"]
 
 
 def _number(text):
@@ -93,3 +93,24 @@ def batch(scenario, out=None, *, controller=None, docking=None, controller_name=
             with open(os.path.join(folder, "episodes.jsonl"), encoding="utf-8") as f:
                 result["records"] = [json.loads(line) for line in f if line.strip()]
         return result
+
+
+def tune(scenario, out, *, params=(), budget=None, objective=None, method=None, min_wilson=None, seed=1,
+         threads=0, figures=True, fresh=False, progress=False):
+    """Tunes episode parameters as `plantsim tune SCENARIO --out OUT` does; returns its summary.
+
+    scenario: a scenario file with a `tune:` section naming its held-out validation worlds or seeds
+    (docs/tune.md). out: the output folder (evaluations.jsonl, best.json, report.html); an earlier
+    tuning of the same settings there is resumed unless fresh=True.
+    params: "KEY=LOW:HIGH" strings (docs/config.md's keys); empty: the scenario's tune.parameters,
+    else pure pursuit's and the docking approach's. budget: evaluations for NLopt and as many for
+    random search (default 60). objective: "success_then_time" (default), "time", "docking_error",
+    "contacts" or "success". method: NLopt's "sbplx" (default), "bobyqa", "neldermead", "crs2" or
+    "isres". min_wilson: the constrained objectives' success floor (default: the defaults' own).
+    Returns OUT/summary.json as a dict: "settings" (default, nlopt, random: values, tuning score,
+    tuning and validation statistics), "best", "tuned_against_default_on_validation" (paired tests),
+    "verdict". Runs with the GIL released; Ctrl-C raises KeyboardInterrupt between episodes, the
+    finished evaluations kept for the next call.
+    """
+    return _tune(os.fspath(scenario), os.fspath(out), list(params), budget, objective, method, min_wilson, seed,
+                 threads, figures, fresh, progress)
