@@ -251,7 +251,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                         const std::vector<std::string>& planners, const Gate& gate, bool charts,
                         const util::MadeBy& made_by, const std::vector<FailedEpisode>& failures,
                         const std::string& scenario_path) {
-  const std::string csv = summary_csv(lines);
+  const std::string csv = summary_csv(lines, &gate);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
   const std::string sweep = sweep_csv(lines);
   if (!sweep.empty()) util::write_file_atomically(out_dir + "/sweep.csv", sweep);

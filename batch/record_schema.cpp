@@ -81,6 +81,7 @@ constexpr Field kFields[] = {
     {"worst_moving_error_m", Kind::kNumber, false},
     {"driven_off_estimate_s", Kind::kNumber, false},
     {"ok_while_off_s", Kind::kNumber, false},
+    {"localization_not_ok_s", Kind::kNumber, false},
     {"unmapped_seen", Kind::kCount, false},
     {"optimal_length_m", Kind::kNumber, true},
     {"optimal_driven_m", Kind::kNumber, false},

@@ -54,17 +54,22 @@ const std::vector<Column> kMain = {{"world", "world"},
                                    {"succeeded", "succeeded"},
                                    {"mean_position_error_mm", "position error (mm)"},
                                    {"mean_time_s", "time (s)"},
-                                   {"collisions", "collisions"}};
-const std::vector<Column> kDetail = {{"world", "world"},
-                                     {"planner", "planner"},
-                                     {"controller", "controller"},
-                                     {"fault", "fault"},
-                                     {"mean_heading_error_deg", "heading error (deg)"},
-                                     {"mean_stops", "stops"},
-                                     {"mean_replans", "replans"},
-                                     {"path_over_optimum", "plan / optimum"},
-                                     {"max_localization_error_mm", "worst localisation error (mm)"},
-                                     {"localization_not_ok", "localisation not ok"}};
+                                   {"collisions", "collisions"},
+                                   {"docked_lost", "docked but lost"}};
+const std::vector<Column> kDetail = {
+    {"world", "world"},
+    {"planner", "planner"},
+    {"controller", "controller"},
+    {"fault", "fault"},
+    {"mean_heading_error_deg", "heading error (deg)"},
+    {"mean_stops", "stops"},
+    {"mean_replans", "replans"},
+    {"path_over_optimum", "plan / optimum"},
+    {"max_localization_error_mm", "worst localisation error (mm)"},
+    {"p95_localization_error_mm", "95th pct localisation error (mm)"},
+    {"localization_not_ok", "localisation not ok at the end"},
+    {"docked_not_ok", "docked, estimate not ok"},
+    {"localization_not_ok_share", "share of time not ok"}};
 
 std::vector<int> indices(const std::vector<std::string>& header, const std::vector<Column>& cols,
                          std::vector<std::string>* titles) {
@@ -88,7 +93,8 @@ std::string measured_cell(const std::vector<std::string>& header,
   const std::string& key = header[static_cast<std::size_t>(i)];
   const auto succeeded = std::find(header.begin(), header.end(), "succeeded") - header.begin();
   const bool over_docked = key == "mean_position_error_mm" || key == "mean_heading_error_deg";
-  return over_docked && cell(cells, static_cast<int>(succeeded)) == "0" ? "-" : cell(cells, i);
+  if (over_docked && cell(cells, static_cast<int>(succeeded)) == "0") return "-";
+  return cell(cells, i).empty() ? "-" : cell(cells, i);  // no value, never a perfect 0
 }
 
 /// The failed_<reason> columns that are not zero, as "reason count, ...".

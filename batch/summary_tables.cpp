@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -26,6 +27,9 @@ struct ConfigurationTally {
   std::int64_t n = 0, succeeded = 0, docked = 0, collisions = 0, retries = 0, trapped = 0,
                timeouts = 0;
   std::int64_t robot_collisions = 0, localization_not_ok = 0, charging = 0;
+  std::int64_t docked_not_ok = 0, docked_lost = 0;  ///< docked with the estimate not ok, or lost
+  std::vector<double> localization_errors;  ///< each episode's worst, for the 95th percentile
+  double not_ok_s = 0;                      ///< time the estimator reported anything but ok
   double stops = 0, replans = 0, recoveries = 0;
   double localization_error_max = 0;
   double time = 0, ratio = 0, pos = 0, heading = 0, driven_ratio = 0, local_minima = 0,
@@ -64,7 +68,12 @@ void ConfigurationTally::add(const json& j) {
   a.robot_collisions += j.value("collisions_robot_moving", 0);
   a.localization_error_max =
       std::max(a.localization_error_max, j.value("localization_error_max_m", 0.0));
-  a.localization_not_ok += j.value("localization_status", std::string("ok")) != "ok";
+  const std::string health = j.value("localization_status", std::string("ok"));
+  a.localization_not_ok += health != "ok";
+  a.docked_not_ok += docked && health != "ok";
+  a.docked_lost += docked && health == "lost";
+  a.localization_errors.push_back(j.value("localization_error_max_m", 0.0));
+  a.not_ok_s += j.value("localization_not_ok_s", 0.0);
   a.stops += j.value("stops", 0);
   a.replans += j.value("replans", 0);
   a.recoveries += j.value("recoveries", 0);
@@ -74,31 +83,59 @@ void ConfigurationTally::add(const json& j) {
       ++a.failed[static_cast<std::size_t>(*reason)];
 }
 
+/// "%.Nf" of a value, or an empty field when there is none (a mean over no docked episode).
+std::string field(double value, int decimals, bool exists = true) {
+  if (!exists) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+/// The nearest-rank 95th percentile (0 of none).
+double percentile95(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t rank =
+      static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(v.size())));
+  return v[std::max<std::size_t>(rank, 1) - 1];
+}
+
 std::string ConfigurationTally::row() const {
   const ConfigurationTally& a = *this;
   const auto [lo, hi] = wilson_interval(a.succeeded, a.n);
-  char row[800];
-  std::snprintf(
-      row, sizeof row,
-      ",%lld,%lld,%.4f,%.4f,%.4f,%.2f,%.4f,%.3f,%.3f,%lld,%.3f,%.4f,%.3f,%.3f,%lld,%lld,%lld,%."
-      "2f,%lld,"
-      "%.3f,%.3f,%.3f,%lld\n",
-      static_cast<long long>(a.n), static_cast<long long>(a.succeeded),
-      static_cast<double>(a.succeeded) / a.n, lo, hi, a.time / a.n,
-      a.ratio_n ? a.ratio / a.ratio_n : 0.0, a.docked ? 1000 * a.pos / a.docked : 0.0,
-      a.docked ? a.heading / a.docked : 0.0, static_cast<long long>(a.collisions),
-      static_cast<double>(a.retries) / a.n, a.driven_n ? a.driven_ratio / a.driven_n : 0.0,
-      a.local_minima / a.n, a.wall_follows / a.n, static_cast<long long>(a.trapped),
-      static_cast<long long>(a.timeouts), static_cast<long long>(a.robot_collisions),
-      1000 * a.localization_error_max, static_cast<long long>(a.localization_not_ok), a.stops / a.n,
-      a.replans / a.n, a.recoveries / a.n, static_cast<long long>(a.charging));
-  std::string failed;
-  for (std::int64_t count : a.failed) {
-    failed += ',';
-    failed += std::to_string(count);
-  }
-  std::string line(row, std::strlen(row) - 1);  // without its newline
-  line += failed + "\n";
+  const double n = static_cast<double>(a.n);
+  auto whole = [](std::int64_t v) { return std::to_string(v); };
+  const std::vector<std::string> cells = {
+      whole(a.n),
+      whole(a.succeeded),
+      field(a.succeeded / n, 4),
+      field(lo, 4),
+      field(hi, 4),
+      field(a.time / n, 2),
+      field(a.ratio_n ? a.ratio / a.ratio_n : 0.0, 4, a.ratio_n > 0),
+      field(a.docked ? 1000 * a.pos / a.docked : 0.0, 3, a.docked > 0),
+      field(a.docked ? a.heading / a.docked : 0.0, 3, a.docked > 0),
+      whole(a.collisions),
+      field(a.retries / n, 3),
+      field(a.driven_n ? a.driven_ratio / a.driven_n : 0.0, 4, a.driven_n > 0),
+      field(a.local_minima / n, 3),
+      field(a.wall_follows / n, 3),
+      whole(a.trapped),
+      whole(a.timeouts),
+      whole(a.robot_collisions),
+      field(1000 * a.localization_error_max, 2),
+      whole(a.localization_not_ok),
+      field(a.stops / n, 3),
+      field(a.replans / n, 3),
+      field(a.recoveries / n, 3),
+      whole(a.charging),
+      whole(a.docked_not_ok),
+      whole(a.docked_lost),
+      field(1000 * percentile95(a.localization_errors), 2),
+      field(a.time > 0 ? a.not_ok_s / a.time : 0.0, 4)};
+  std::string line;
+  for (const std::string& c : cells) line += "," + c;
+  for (std::int64_t count : a.failed) line += "," + std::to_string(count);
   return line;
 }
 
@@ -109,27 +146,50 @@ std::string summary_header() {
       "mean_time_s,path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,"
       "mean_retries,driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,"
       "collisions_robot_moving,max_localization_error_mm,localization_not_ok,mean_stops,"
-      "mean_replans,mean_recoveries,charging";
+      "mean_replans,mean_recoveries,charging,docked_not_ok,docked_lost,p95_localization_error_mm,"
+      "localization_not_ok_share";
   for (robot::FailureReason reason : robot::kAllFailureReasons) {
     out += ",failed_";
     out += robot::to_string(reason);
   }
-  out += "\n";
   return out;
+}
+
+/// The gate's columns of a row: its statistic, threshold and verdict ("pass", "fail", "not
+/// gated"; a verdict over all worlds pooled says so).
+std::string gate_cells(const std::string& world, const std::string& planner,
+                       const std::string& controller, const std::string& fault,
+                       const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic) {
+  for (const ConfigurationVerdict& v : verdicts) {
+    if ((v.world != world && v.world != kAllWorlds) || v.planner != planner ||
+        v.controller != controller || v.fault != fault)
+      continue;
+    if (!v.threshold) break;
+    return std::string(",") + statistic_name(statistic) + "," + field(*v.threshold, 4) + "," +
+           (v.passed ? "pass" : "fail") + (v.world == kAllWorlds ? " (all worlds pooled)" : "");
+  }
+  return ",,,not gated";
 }
 
 }  // namespace
 
-std::string summary_csv(const std::vector<std::string>& lines) {
+std::string summary_csv(const std::vector<std::string>& lines, const Gate* gate) {
   std::map<std::tuple<std::string, std::string, std::string, std::string>, ConfigurationTally> acc;
   for (const std::string& line : lines) {
     const json j = json::parse(line);
     acc[{j["world"], j["planner"], j["controller"], j["fault"]}].add(j);
   }
   std::string out = summary_header();
-  for (const auto& [key, a] : acc)
-    out += util::csv_field(std::get<0>(key)) + "," + util::csv_field(std::get<1>(key)) + "," +
-           util::csv_field(std::get<2>(key)) + "," + util::csv_field(std::get<3>(key)) + a.row();
+  out += gate ? ",gate_statistic,gate_threshold,gate_verdict\n" : "\n";
+  const std::vector<ConfigurationVerdict> verdicts =
+      gate ? judge_configurations(lines, *gate) : std::vector<ConfigurationVerdict>{};
+  for (const auto& [key, a] : acc) {
+    const auto& [world, planner, controller, fault] = key;
+    out += util::csv_field(world) + "," + util::csv_field(planner) + "," +
+           util::csv_field(controller) + "," + util::csv_field(fault) + a.row();
+    if (gate) out += gate_cells(world, planner, controller, fault, verdicts, gate->statistic);
+    out += "\n";
+  }
   return out;
 }
 

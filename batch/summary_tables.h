@@ -5,10 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "batch/batch_spec.h"
+
 namespace plantsim::batch {
 
-/// Per-configuration summary (CSV text) of JSONL episode records.
-std::string summary_csv(const std::vector<std::string>& jsonl_lines);
+/// Per-configuration summary (CSV text) of JSONL episode records: a field is empty where there is
+/// no value (errors over no docked episode). With `gate`, three more columns per row: the gate's
+/// statistic, its threshold and the verdict.
+std::string summary_csv(const std::vector<std::string>& jsonl_lines, const Gate* gate = nullptr);
 
 /// One row per value of a swept fault parameter, over every world, planner and controller
 /// (CSV text); empty when the records come from no sweep.

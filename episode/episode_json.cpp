@@ -46,6 +46,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
   j["worst_moving_error_m"] = r.integrity.worst_moving_error_m;
   j["driven_off_estimate_s"] = r.integrity.driven_off_s;
   j["ok_while_off_s"] = r.integrity.ok_while_off_s;
+  j["localization_not_ok_s"] = r.integrity.not_ok_s;
   j["unmapped_seen"] = r.unmapped_seen;
 }
 

@@ -19,6 +19,7 @@ void IntegrityWatch::observe(double t_s, const geom::Pose2& truth, double true_s
     if (error > p_.off_m) record_.driven_off_s += dt;
   }
   if (health == robot::LocalizationHealth::kOk && error > p_.ok_off_m) record_.ok_while_off_s += dt;
+  if (health != robot::LocalizationHealth::kOk) record_.not_ok_s += dt;
 
   if (error <= p_.off_m || lost) {  // on the truth again, or the estimator said so
     in_stretch_ = false;

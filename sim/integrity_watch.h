@@ -35,6 +35,7 @@ struct IntegrityRecord {
   double worst_moving_error_m = 0;  ///< true position error, worst while the robot moved
   double driven_off_s = 0;          ///< time moving on an estimate more than off_m off
   double ok_while_off_s = 0;        ///< time reported `ok` while more than ok_off_m off
+  double not_ok_s = 0;              ///< time the estimator reported anything but `ok`
   std::optional<IntegrityBreach> breach;
 };
 

@@ -8,12 +8,14 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "batch/batch_gate.h"
 #include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
 #include "batch/episode_runner.h"
 #include "batch/episode_space.h"
+#include "batch/summary_tables.h"
 #include "batch_folder_test.h"
 #include "test_paths.h"
 #include "util/csv.h"
@@ -317,6 +319,83 @@ TEST(EpisodeSpace, EveryIdReadsBackToItsIndexAndTheShardsCoverEachOnce) {
        {"a|vg|default|none|2", "c|vg|default|none|1", "a|vg|default|none", "a|vg|default|none|1|x",
         "a|vg|default|none|01", "a|vg|default|none|+1", "a|vg|default|none|"})
     EXPECT_FALSE(space.find(id)) << id;
+}
+
+// summary.csv's columns by name for the row of `fault`.
+std::map<std::string, std::string> summary_row(const std::string& csv, const std::string& fault) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = util::csv_split(line);
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = util::csv_split(line);
+    if (cells.size() != header.size())
+      ADD_FAILURE() << "a row of " << cells.size() << " cells under " << header.size();
+    if (cells.size() < 4 || cells[3] != fault) continue;
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
+    return row;
+  }
+  return {};
+}
+
+std::string full_record(const std::string& fault, bool docked, const std::string& health,
+                        double worst_error_m, double not_ok_s) {
+  return nlohmann::json{{"world", "w"},
+                        {"planner", "vg"},
+                        {"controller", "default"},
+                        {"fault", fault},
+                        {"docked", docked},
+                        {"succeeded", docked},
+                        {"status", docked ? "docked" : "failed"},
+                        {"collisions", 0},
+                        {"retries", 0},
+                        {"time_s", 100.0},
+                        {"optimal_length_m", 10.0},
+                        {"path_length_m", 10.5},
+                        {"driven_length_m", 11.0},
+                        {"position_error_m", 0.004},
+                        {"heading_error_deg", 0.5},
+                        {"localization_status", health},
+                        {"localization_error_max_m", worst_error_m},
+                        {"localization_not_ok_s", not_ok_s}}
+      .dump();
+}
+
+TEST(SummaryTable, IntegrityPerConfigurationNoValueIsEmptyAndTheGateIsItsColumns) {
+  std::vector<std::string> lines;
+  // 20 docked, 2 of them lost and 1 degraded at the end; errors 0.01 .. 0.20 m.
+  for (int i = 0; i < 20; ++i)
+    lines.push_back(full_record("noisy", true,
+                                i < 2    ? "lost"
+                                : i == 2 ? "degraded"
+                                         : "ok",
+                                0.01 * (i + 1), i < 3 ? 50.0 : 0.0));
+  for (int i = 0; i < 4; ++i)
+    lines.push_back(full_record("stuck", false, "ok", 0.02, 0.0));  // none docked
+  Gate gate;
+  gate.min_success = 0.9;
+  const std::string csv = summary_csv(lines, &gate);
+  auto noisy = summary_row(csv, "noisy");
+  EXPECT_EQ(noisy["docked_lost"], "2");
+  EXPECT_EQ(noisy["docked_not_ok"], "3");
+  EXPECT_EQ(noisy["p95_localization_error_mm"], "190.00");  // the 19th of 20 by rank
+  EXPECT_EQ(noisy["max_localization_error_mm"], "200.00");
+  EXPECT_EQ(noisy["localization_not_ok_share"], "0.0750");  // 150 s of 2000
+  EXPECT_EQ(noisy["gate_statistic"], "success_rate");
+  EXPECT_EQ(noisy["gate_threshold"], "0.9000");
+  EXPECT_EQ(noisy["gate_verdict"], "pass");
+  auto stuck = summary_row(csv, "stuck");
+  EXPECT_EQ(stuck["succeeded"], "0");
+  EXPECT_EQ(stuck["mean_position_error_mm"], "");  // no docked episode: no error, not a perfect 0
+  EXPECT_EQ(stuck["mean_heading_error_deg"], "");
+  EXPECT_EQ(stuck["driven_over_optimum"], "");
+  EXPECT_EQ(stuck["gate_verdict"], "fail");
+  // Pooled over worlds, and without a gate.
+  gate.pool_worlds = true;
+  EXPECT_EQ(summary_row(summary_csv(lines, &gate), "noisy")["gate_verdict"],
+            "pass (all worlds pooled)");
+  EXPECT_EQ(summary_row(summary_csv(lines), "noisy").count("gate_verdict"), 0u);
 }
 
 }  // namespace

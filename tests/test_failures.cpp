@@ -256,6 +256,7 @@ TEST(IntegrityWatch, AnOffEstimateNoticedWithinTheGraceIsNoBreach) {
   EXPECT_NEAR(w.record().worst_moving_error_m, 0.6, 1e-9);
   EXPECT_NEAR(w.record().driven_off_s, 4.0, 0.11);  // measured all the same
   EXPECT_NEAR(w.record().ok_while_off_s, 1.5, 0.11);
+  EXPECT_NEAR(w.record().not_ok_s, 2.5, 0.11);  // the time it said lost
 }
 
 TEST(IntegrityWatch, DrivingOnAnOffEstimatePastTheGraceIsABreachAtItsFirstExcess) {
@@ -268,6 +269,7 @@ TEST(IntegrityWatch, DrivingOnAnOffEstimatePastTheGraceIsABreachAtItsFirstExcess
   EXPECT_NEAR(w.record().breach->worst_error_m, 0.3, 1e-9);
   EXPECT_GT(w.record().breach->unnoticed_s, 2.0);
   EXPECT_NEAR(w.record().ok_while_off_s, 0.0, 1e-9);  // it said degraded, not ok
+  EXPECT_NEAR(w.record().not_ok_s, 3.0, 0.11);
 }
 
 TEST(IntegrityWatch, StandingStillOnAnOffEstimateIsNoBreachUntilItDrivesOnIt) {
