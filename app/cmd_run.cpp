@@ -12,6 +12,7 @@
 #include "planner/registry.h"
 #include "render/animation.h"
 #include "util/atomic_file.h"
+#include "util/fixed_text.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
 
@@ -78,10 +79,14 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
     setting += (setting.empty() ? "" : ", ") + std::string("seed ") + std::to_string(opt.seed);
   write_run_folder(world, r, config, out_dir, line, setting, opt.animate);
   staged.commit();
-  std::cout << world.name << ": " << r.status << ", position error " << r.position_error_m * 100
-            << " cm, heading error " << r.heading_error_deg << " deg, collisions " << r.collisions
-            << ", retries " << r.retries << ", stops " << r.stops << ", replans " << r.replans
-            << ", time " << r.time_s << " s -> " << staged.destination() << "\n";
+  // The units of every table: mm and degrees at the dock, seconds to a tenth.
+  std::cout << world.name << ": " << r.status << ", position error "
+            << (r.error_measured ? util::fixed(r.position_error_m * 1000, 1) + " mm" : "n/a")
+            << ", heading error "
+            << (r.error_measured ? util::fixed(r.heading_error_deg, 2) + " deg" : "n/a")
+            << ", collisions " << r.collisions << ", retries " << r.retries << ", stops " << r.stops
+            << ", replans " << r.replans << ", time " << util::fixed(r.time_s, 1) << " s -> "
+            << staged.destination() << "\n";
   return r.succeeded() ? kExitOk : kExitFailed;
 }
 

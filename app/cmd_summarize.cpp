@@ -273,6 +273,40 @@ struct SummarizeOptions {
   std::vector<std::string> links;
 };
 
+/// A folder given as a run that is a batch's or a tuning's: taken as a link to its report.
+bool report_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  return fs::exists(fs::path(dir) / "summary.csv") ||
+         fs::exists(fs::path(dir) / "evaluations.jsonl");
+}
+
+/// The dashboard's sections below the runs, in Markdown: each linked report with its verdict and
+/// its line (a batch's counts and failures by reason, a tuning's verdict).
+std::string markdown_links(const std::vector<render::DashboardLink>& links) {
+  std::string md;
+  for (const auto& [kind, heading] :
+       std::vector<std::pair<std::string, std::string>>{{"batch", "Batches"},
+                                                        {"tune", "Tunings"},
+                                                        {"comparison", "Comparisons"},
+                                                        {"coverage", "Coverage"},
+                                                        {"chart", "Charts"},
+                                                        {"report", "Other reports"}}) {
+    std::string items;
+    for (const render::DashboardLink& l : links) {
+      if (l.kind != kind) continue;
+      const std::string verdict = l.verdict == "passed"   ? "**PASS** "
+                                  : l.verdict == "failed" ? "**FAIL** "
+                                                          : "";
+      items += "- " + verdict + "[" + markdown_cell(l.title) + "](" +
+               render::url_attribute(l.report) + ")" +
+               (l.line.empty() ? "" : ": " + markdown_cell(l.line)) +
+               (l.stale.empty() ? "" : " (" + markdown_cell(l.stale) + ")") + "\n";
+    }
+    if (!items.empty()) md += "\n## " + heading + "\n\n" + items;
+  }
+  return md;
+}
+
 int summarize(const SummarizeOptions& opt) {
   // Before any work: an output that cannot be written is bad input (exit 2), not a failure.
   if (!opt.out.empty()) util::check_output_file(opt.out, "--out");
@@ -291,7 +325,12 @@ int summarize(const SummarizeOptions& opt) {
   const std::string base =
       opt.out.empty() ? "." : std::filesystem::path(opt.out).parent_path().string();
   std::vector<std::filesystem::path> seen;
+  std::vector<std::string> link_reports = opt.links;
   for (const auto& d : opt.dirs) {
+    if (report_folder(d)) {  // a batch or a tuning: its report, as --link would name it
+      link_reports.push_back((std::filesystem::path(d) / "report.html").string());
+      continue;
+    }
     // A folder named twice (by two globs, or with and without a trailing slash) is one run.
     const std::filesystem::path canonical = std::filesystem::weakly_canonical(d);
     if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
@@ -301,10 +340,17 @@ int summarize(const SummarizeOptions& opt) {
     runs.push_back(dashboard_run(j, d, html_base));
     all_docked = all_docked && runs.back().succeeded;
   }
+  if (runs.empty()) md += "| (no runs) |\n";
+  // The links, made relative to the dashboard and (for summary.md) to the table.
+  std::vector<render::DashboardLink> links, md_links;
+  bool all_passed = true;
+  for (const auto& l : link_reports) {
+    links.push_back(link_to(l, html_base.empty() ? "." : html_base));
+    md_links.push_back(link_to(l, base.empty() ? "." : base));
+    all_passed = all_passed && links.back().verdict != "failed";
+  }
+  md += markdown_links(md_links);
   if (!opt.html.empty()) {
-    std::vector<render::DashboardLink> links;
-    for (const auto& l : opt.links)
-      links.push_back(link_to(l, html_base.empty() ? "." : html_base));
     util::write_file_atomically(
         opt.html,
         render::dashboard_html("plantsim results", kDashboardHeaders, runs, links, made_by.text()));
@@ -313,7 +359,7 @@ int summarize(const SummarizeOptions& opt) {
     std::cout << md;
   else
     util::write_file_atomically(opt.out, md);
-  return all_docked ? kExitOk : kExitFailed;
+  return all_docked && all_passed ? kExitOk : kExitFailed;
 }
 
 }  // namespace
@@ -322,7 +368,8 @@ std::function<int()> add_summarize_command(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("summarize", "Gather run folders' summary.json into a Markdown table");
   auto opt = std::make_shared<SummarizeOptions>();
-  cmd->add_option("dirs", opt->dirs, "Run output folders")
+  cmd->add_option("dirs", opt->dirs,
+                  "Run output folders; a batch's or a tuning's folder is listed as its report")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Write here instead of stdout");

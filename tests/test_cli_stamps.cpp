@@ -112,6 +112,18 @@ TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
   o = run("summarize r --html index.html --link b/report.html", 60);
   EXPECT_NE(read(dir_ / "index.html").find("<b>FAIL</b>: 1 of 1 batches below their gates: b"),
             std::string::npos);
+  EXPECT_EQ(o.exit_code, 1);  // a linked batch below its gate fails the overview too
+  // summary.md mirrors it: the batch, its verdict and its failures by reason; a batch folder given
+  // as a run is listed as its report, not read as a run.
+  o = run("summarize r b --out s.md", 60);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  const std::string md = read(dir_ / "s.md");
+  EXPECT_NE(md.find("## Batches"), std::string::npos) << md;
+  EXPECT_NE(
+      md.find("- **FAIL** [b](b/report.html): 1 of 2 episodes succeeded; failures\\: timeout 1"),
+      std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("| ? |"), std::string::npos) << md;
   // A batch that meets its gate: PASS, and the sample's doubt said.
   write("p.yaml", "worlds: [" + kCorridor + "]\nseeds: 1\ngate: {min_success: 0.5}\n");
   ASSERT_EQ(run("batch p.yaml --out p --quiet --no-figures", 300).exit_code, 0);

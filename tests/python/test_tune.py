@@ -61,7 +61,7 @@ def test_ctrl_c_stops_a_tuning_keeping_its_finished_evaluations(source, tmp_path
     assert out.returncode == 0, out.stderr
     words = out.stdout.split()
     assert words[0] == "interrupted", out.stdout
-    assert float(words[1]) < 1.0, out.stdout
+    assert float(words[1]) < 2.0, out.stdout  # between episodes: well under an episode
     lines = (folder / "evaluations.jsonl").read_text().splitlines()
     assert 0 < len(lines) < 101
     assert all(line.endswith("}") for line in lines)
