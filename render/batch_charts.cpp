@@ -107,7 +107,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
     any_below = any_below || (below && rate > 0);
     any_unsure = any_unsure || (unsure && rate > 0);
     any_pass = any_pass || (!below && !unsure && rate > 0);
-    const Rgb bar = below ? palette::kFailure : unsure ? palette::kOkabeOrange : palette::kCharger;
+    const Rgb bar = below ? palette::kFailure : unsure ? palette::kUnsureBar : palette::kCharger;
     if (rate > 0) c.pixel_line({a.px(0), y}, {a.px(rate), y}, row_h * 0.6, bar);
     c.pixel_line({a.px(r.low), y}, {a.px(r.high), y}, 1.6, palette::kAxis);
     c.pixel_line({a.px(r.low), y - 5}, {a.px(r.low), y + 5}, 1.6, palette::kAxis);
@@ -125,7 +125,7 @@ Image draw_success_chart(const std::vector<RateRow>& all_rows, const std::string
   std::vector<LegendEntry> legend;
   if (any_pass)
     legend.push_back({palette::kCharger, any_gate ? "success rate (meets gate)" : "success rate"});
-  if (any_unsure) legend.push_back({palette::kOkabeOrange, "meets gate, 95 % low below it"});
+  if (any_unsure) legend.push_back({palette::kUnsureBar, "meets gate, 95 % low below it"});
   if (any_below) legend.push_back({palette::kFailure, "success rate (below gate)"});
   legend.push_back({palette::kAxis, "Wilson 95 %"});
   if (any_gate) legend.push_back({palette::kOkabeBlack, "gate"});

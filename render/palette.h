@@ -29,7 +29,12 @@ inline constexpr Rgb kTrajectory =
     kOkabeBlue;  ///< a driven path in one colour (plots, batch overlays)
 inline constexpr Rgb kFailure = kOkabeVermillion;  ///< failed episodes in batch overlays
 inline constexpr Rgb kCharger = kOkabeBluishGreen;
-inline constexpr Rgb kStart = kOkabeOrange;
+// Black, not orange: under deuteranopia orange starts and vermillion failed paths were one colour
+// (render/colour_vision.h; tests/test_render.cpp checks the pairs a reader must tell apart).
+inline constexpr Rgb kStart = kOkabeBlack;
+/// A success bar that meets its gate while its 95 % lower bound is below it (between the failing
+/// vermillion and the passing green, told apart from both under deuteranopia and protanopia).
+inline constexpr Rgb kUnsureBar = kOkabeSkyBlue;
 inline constexpr Rgb kRobot{20, 20, 20};
 inline constexpr Rgb kMoving =
     kOkabeSkyBlue;  ///< moving obstacles, their swept tracks and time ticks
@@ -45,7 +50,8 @@ inline constexpr Rgb kTried{0, 110, 110};  ///< the ring search's walks (dashed)
 inline constexpr Rgb kWallFollow{
     215, 185,
     240};  ///< potential-field travel while following a wall (band; not the speed scale's yellow)
-inline constexpr Rgb kScan{120, 120, 120};      ///< lidar returns the map explains (dots)
+inline constexpr Rgb kScan{20, 50, 140};  ///< lidar returns the map explains (dots): navy, apart
+                                          ///< from the greys of the estimate and the footprints
 inline constexpr Rgb kScanOffMap{150, 0, 90};   ///< lidar returns it does not (tracked obstacles)
 inline constexpr Rgb kTracked{0, 0, 0};         ///< boxes of the tracked obstacles (outlines)
 inline constexpr Rgb kEstimate{185, 185, 185};  ///< the path as the robot estimated it (band)

@@ -5,7 +5,9 @@
 
 #include <cmath>
 
+#include "render/colour_vision.h"
 #include "render/gl_canvas.h"
+#include "render/palette.h"
 
 namespace plantsim::render {
 namespace {
@@ -92,6 +94,44 @@ TEST(Canvas, TwoCanvasesAliveAtOnceKeepTheirOwnDrawings) {
   EXPECT_EQ(red_at(ia, 10, 10), 0);
   EXPECT_EQ(red_at(ib, 5, 5), 128);
   EXPECT_EQ(red_at(ib, 25, 5), 255);  // a's black never reached b
+}
+
+// The simulation on known answers: grey stays grey, pure red and green meet under deuteranopia.
+TEST(ColourVision, SimulationOnKnownAnswers) {
+  for (ColourVision v : {ColourVision::kDeuteranopia, ColourVision::kProtanopia}) {
+    const Rgb grey = simulate({128, 128, 128}, v);
+    EXPECT_NEAR(grey.r, 128, 1);
+    EXPECT_NEAR(grey.g, 128, 1);
+    EXPECT_NEAR(grey.b, 128, 1);
+  }
+  EXPECT_LT(colour_difference(simulate({200, 60, 0}, ColourVision::kDeuteranopia),
+                              simulate({110, 110, 0}, ColourVision::kDeuteranopia)),
+            colour_difference(Rgb{200, 60, 0}, Rgb{110, 110, 0}) / 3);
+  EXPECT_NEAR(colour_difference({0, 0, 0}, {255, 255, 255}), 100.0, 0.1);  // L* from 0 to 100
+}
+
+// The pairs a reader must tell apart in one figure, as every reader sees them: failed paths and
+// their start dots (batch overlays); failing, unsure and passing success bars; the estimate, the
+// footprints of the driven path and the last scan (run figures); the plan and the charger.
+TEST(ColourVision, ThePalettesPairsStayApartUnderDeuteranopiaAndProtanopia) {
+  using namespace palette;
+  const struct {
+    const char* what;
+    Rgb a, b;
+  } pairs[] = {{"failed path / start", kFailure, kStart},
+               {"failing bar / unsure bar", kFailure, kUnsureBar},
+               {"unsure bar / passing bar", kUnsureBar, kCharger},
+               {"failing bar / passing bar", kFailure, kCharger},
+               {"estimate / footprints", kEstimate, kFootprint},
+               {"estimate / last scan", kEstimate, kScan},
+               {"footprints / last scan", kFootprint, kScan},
+               {"plan / charger", kPlan, kCharger},
+               {"driven path / failed path", kTrajectory, kFailure}};
+  for (const auto& p : pairs)
+    for (ColourVision v :
+         {ColourVision::kNormal, ColourVision::kDeuteranopia, ColourVision::kProtanopia})
+      EXPECT_GE(colour_difference(simulate(p.a, v), simulate(p.b, v)), 20.0)
+          << p.what << " under vision " << static_cast<int>(v);
 }
 
 }  // namespace
