@@ -15,6 +15,8 @@ namespace plantsim::render {
 namespace {
 
 constexpr Rgb kBand{185, 212, 238};  // a light tint of the success line's blue
+// Failed episodes among a strip's dots: black, a colour no method takes before the seventh.
+constexpr Rgb kFailedMark = palette::kOkabeBlack;
 
 /// The methods in first-met order, each with an Okabe-Ito colour.
 std::vector<std::string> methods_of(const std::vector<EpisodeOutcome>& episodes) {
@@ -45,7 +47,8 @@ double jitter(std::size_t i) {
 /// Dots of one value per episode, a row per method, with a gate line; returns the axes.
 void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string>& methods,
                  const std::vector<std::vector<double>>& values, double gate,
-                 const std::string& title, const std::string& label, double scale) {
+                 const std::string& title, const std::string& label, double scale,
+                 const std::vector<std::vector<bool>>* failed = nullptr) {
   double hi = gate * 1.25;
   for (const auto& v : values)
     for (double x : v) hi = std::max(hi, x * 1.05);
@@ -57,6 +60,11 @@ void strip_panel(Figure& fig, const PixelBox& box, const std::vector<std::string
     const double centre = box.top + (m + 0.5) * row_h;
     for (std::size_t i = 0; i < values[m].size(); ++i) {
       const double x = a.px(values[m][i]), y = centre + 0.3 * row_h * jitter(i);
+      if (failed && i < (*failed)[m].size() && (*failed)[m][i]) {  // a failed episode: a cross
+        fig.canvas().pixel_line({x - 4, y - 4}, {x + 4, y + 4}, 2.0, kFailedMark);
+        fig.canvas().pixel_line({x - 4, y + 4}, {x + 4, y - 4}, 2.0, kFailedMark);
+        continue;
+      }
       fig.canvas().pixel_line({x - 2.5, y}, {x + 2.5, y}, 5.0, method_colour(m));
     }
   }
@@ -178,12 +186,17 @@ Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int w
       1.0;  // a few lost episodes tens of metres off must not squash the rest
   const std::vector<std::string> methods = methods_of(episodes);
   std::vector<std::vector<double>> worst(methods.size());
+  std::vector<std::vector<bool>> failed(methods.size());
   std::vector<std::size_t> counts(methods.size(), 0), not_ok(methods.size(), 0),
       beyond(methods.size(), 0);
+  bool any_failed = false, any_docked = false;
   for (const auto& e : episodes) {
     if (e.localization_error_max_m < 0) continue;
     const std::size_t m = method_index(methods, e.method);
     worst[m].push_back(std::min(e.localization_error_max_m, kShownUpTo_m));
+    failed[m].push_back(!e.docked);
+    any_failed = any_failed || !e.docked;
+    any_docked = any_docked || e.docked;
     beyond[m] += e.localization_error_max_m > kShownUpTo_m;
     not_ok[m] += !e.localization_ok;
     ++counts[m];
@@ -194,22 +207,25 @@ Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int w
   fig.text("Localisation: each episode's worst error, true against estimated", 20, 28, 18,
            palette::kAxis, Anchor::kLeft, true);
   fig.text(
-      "one dot per episode, docked or not (spread vertically to be seen); errors past 1 m drawn at "
-      "1 m; "
-      "right: episodes whose estimator reported worse than ok",
+      "one mark per episode: a dot if it docked, a cross if it failed (spread vertically to be "
+      "seen); errors past 1 m drawn at 1 m; right: episodes whose estimator reported worse than ok",
       20, 48, 13, palette::kAxis);
   const double label_w = 260, right_w = 300;
   const PixelBox box{label_w, 110, width_px - right_w,
                      110 + row_h * std::max<std::size_t>(methods.size(), 1)};
   method_labels(fig, box, methods, counts);
-  strip_panel(fig, box, methods, worst, 0.10, "Worst position error (red line: 10 cm)", "mm",
-              1000.0);
+  strip_panel(fig, box, methods, worst, 0.10, "Worst position error (red line: 100 mm)", "mm",
+              1000.0, &failed);
   for (std::size_t m = 0; m < methods.size(); ++m) {
     std::string note = std::to_string(not_ok[m]) + " of " + std::to_string(counts[m]) + " not ok";
     if (beyond[m]) note += ", " + std::to_string(beyond[m]) + " past 1 m";
     fig.text(note, box.right + 16, box.top + (m + 0.5) * row_h + 4, 12, palette::kAxis);
   }
-  fig.legend(20, 76, {{palette::kCollisionMark, "10 cm"}}, 1, 200);
+  std::vector<LegendEntry> legend = {{palette::kCollisionMark, "100 mm"}};
+  if (any_docked)
+    legend.push_back({method_colour(0), "docked (dot, its method's colour)", Swatch::kDot});
+  if (any_failed) legend.push_back({kFailedMark, "failed (black cross)", Swatch::kDot});
+  fig.legend(20, 76, legend, static_cast<int>(legend.size()), 330);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

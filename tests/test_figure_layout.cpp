@@ -422,7 +422,10 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   img = draw_localization_chart(episodes, 1400, &layout);
   keep(img, "layout_localization");
   test::expect_sound_layout(img, layout, "localisation chart");
-  EXPECT_TRUE(test::has_legend(layout, "10 cm"));
+  EXPECT_TRUE(test::has_legend(layout, "100 mm"));  // the axis's unit, not "10 cm" on an mm axis
+  // Docked and failed episodes drawn apart, each kind listed.
+  EXPECT_TRUE(test::has_legend(layout, "docked (dot, its method's colour)"));
+  EXPECT_TRUE(test::has_legend(layout, "failed (black cross)"));
   EXPECT_TRUE(has_text("gcr / pure-pursuit / dry (20)"));  // every episode, not only the docked
   EXPECT_TRUE(has_text("4 of 20 not ok"));                 // gcr: episodes 0, 10, 20, 30
   EXPECT_TRUE(has_text("0 of 20 not ok, 1 past 1 m"));     // vg: episode 3, 12 m off
