@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/dashboard_history.h"
 #include "render/dashboard.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
@@ -343,14 +344,20 @@ int summarize(const SummarizeOptions& opt) {
   if (runs.empty()) md += "| (no runs) |\n";
   // The links, made relative to the dashboard and (for summary.md) to the table.
   std::vector<render::DashboardLink> links, md_links;
+  std::vector<std::string> summaries;
   bool all_passed = true;
   for (const auto& l : link_reports) {
     links.push_back(link_to(l, html_base.empty() ? "." : html_base));
     md_links.push_back(link_to(l, base.empty() ? "." : base));
+    summaries.push_back((std::filesystem::path(l).parent_path() / "summary.json").string());
     all_passed = all_passed && links.back().verdict != "failed";
   }
   md += markdown_links(md_links);
   if (!opt.html.empty()) {
+    // Each batch's runs over time, beside the dashboard (history.jsonl).
+    update_history(
+        (std::filesystem::path(html_base.empty() ? "." : html_base) / "history.jsonl").string(),
+        links, summaries);
     util::write_file_atomically(
         opt.html,
         render::dashboard_html("plantsim results", kDashboardHeaders, runs, links, made_by.text()));

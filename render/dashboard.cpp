@@ -2,9 +2,12 @@
 #include "render/dashboard.h"
 
 #include "render/report.h"
+#include "util/fixed_text.h"
 
 namespace plantsim::render {
 namespace {
+
+using util::fixed;
 
 std::string path_of(const std::string& folder, const std::string& file) {
   return folder.empty() || folder == "." ? file : folder + "/" + file;
@@ -24,6 +27,41 @@ std::string stamp_paragraph(const std::vector<DashboardRun>& runs,
   return h + "</p>\n";
 }
 
+/// A batch's last runs as a small inline chart: each run's success rate a dot (green passed,
+/// vermillion failed, grey not gated) joined by a line, the oldest left; the dates and commits in
+/// its title, the verdicts written under it.
+std::string trend_svg(const std::vector<TrendPoint>& trend) {
+  if (trend.empty()) return "";
+  constexpr double kWidth = 180, kHeight = 40, kPad = 6;
+  const std::size_t n = trend.size();
+  auto x = [&](std::size_t i) {
+    return n == 1 ? kWidth / 2 : kPad + (kWidth - 2 * kPad) * i / (n - 1.0);
+  };
+  auto y = [&](const TrendPoint& p) {
+    const double rate = p.episodes > 0 ? static_cast<double>(p.succeeded) / p.episodes : 0.0;
+    return kHeight - kPad - (kHeight - 2 * kPad) * rate;
+  };
+  std::string title, line, dots, verdicts;
+  for (std::size_t i = 0; i < n; ++i) {
+    const TrendPoint& p = trend[i];
+    const std::string colour = p.verdict == "passed"   ? "#009e73"
+                               : p.verdict == "failed" ? "#d55e00"
+                                                       : "#888888";
+    line += (i ? " " : "") + fixed(x(i), 1) + "," + fixed(y(p), 1);
+    dots += "<circle cx=\"" + fixed(x(i), 1) + "\" cy=\"" + fixed(y(p), 1) +
+            "\" r=\"3.5\" fill=\"" + colour + "\"/>";
+    title += p.date + " " + p.commit + ": " + p.verdict + ", " + std::to_string(p.succeeded) + "/" +
+             std::to_string(p.episodes) + "\n";
+    verdicts += std::string(i ? " " : "") + (p.verdict == "passed"   ? "PASS"
+                                             : p.verdict == "failed" ? "FAIL"
+                                                                     : "-");
+  }
+  return "<div class=\"trend\"><svg width=\"" + fixed(kWidth, 0) + "\" height=\"" +
+         fixed(kHeight, 0) + "\" role=\"img\"><title>" + html_escape(title) +
+         "</title><polyline points=\"" + line + "\" fill=\"none\" stroke=\"#999\"/>" + dots +
+         "</svg><br>last " + std::to_string(n) + " runs: " + verdicts + "</div>";
+}
+
 /// One linked report's row: thumbnail, title, a batch's verdict, what is said of it.
 std::string link_row(const DashboardLink& l) {
   std::string row = "<tr><td class=\"l\">";
@@ -37,7 +75,8 @@ std::string link_row(const DashboardLink& l) {
            std::string(l.verdict == "passed"   ? "ok"
                        : l.verdict == "failed" ? "bad"
                                                : "") +
-           "\">" + html_escape(l.verdict.empty() ? "no verdict" : "gate " + l.verdict) + "</td>";
+           "\">" + html_escape(l.verdict.empty() ? "no verdict" : "gate " + l.verdict) +
+           trend_svg(l.trend) + "</td>";
   return row + "<td class=\"l\">" + html_escape(l.line) +
          (l.stale.empty() ? "" : "<span class=\"stale\">" + html_escape(l.stale) + "</span>") +
          "</td></tr>\n";

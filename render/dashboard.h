@@ -4,6 +4,7 @@
 // by the browser to a fixed width: no full-size image walls.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,14 +20,21 @@ struct DashboardRun {
   std::string stale;  ///< why its files may not be this build's (empty: made by it)
 };
 
+/// One earlier run of a batch, from the dashboard's history file (history.jsonl beside it).
+struct TrendPoint {
+  std::string date, commit, verdict;  ///< verdict: "passed", "failed" or "not gated"
+  std::int64_t succeeded = 0, episodes = 0;
+};
+
 struct DashboardLink {
   std::string kind;  ///< "comparison", "batch", "tune", "coverage", "chart", "report"
   std::string title;
-  std::string report;     ///< relative to the dashboard
-  std::string thumbnail;  ///< relative to the dashboard, may be empty
-  std::string line;       ///< one line said about it (from its files)
-  std::string verdict;    ///< a batch's: "passed", "failed" or "not gated" (summary.json)
-  std::string stale;      ///< why its files may not be this build's (empty: made by it)
+  std::string report;             ///< relative to the dashboard
+  std::string thumbnail;          ///< relative to the dashboard, may be empty
+  std::string line;               ///< one line said about it (from its files)
+  std::string verdict;            ///< a batch's: "passed", "failed" or "not gated" (summary.json)
+  std::string stale;              ///< why its files may not be this build's (empty: made by it)
+  std::vector<TrendPoint> trend;  ///< a batch's runs, oldest first, the last one its current run
 };
 
 /// `made_by`: the dashboard's own stamp (util/made_by.h), under the title; a run or link that is

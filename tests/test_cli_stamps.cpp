@@ -124,6 +124,20 @@ TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
       std::string::npos)
       << md;
   EXPECT_EQ(md.find("| ? |"), std::string::npos) << md;
+  // The dashboard keeps each batch's runs (history.jsonl beside it) and draws the last ones.
+  ::sleep(1);  // a run is known by its date, to the second
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures --fresh --min-success 0", 300).exit_code,
+            0);
+  o = run("summarize r --html index.html --link b/report.html", 60);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  o = run("summarize r --html index.html --link b/report.html", 60);  // the same run: not twice
+  const std::string history = read(dir_ / "history.jsonl");
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 2) << history;
+  EXPECT_NE(history.find("\"verdict\":\"failed\""), std::string::npos);
+  EXPECT_NE(history.find("\"verdict\":\"passed\""), std::string::npos);
+  const std::string dashboard = read(dir_ / "index.html");
+  EXPECT_NE(dashboard.find("last 2 runs: FAIL PASS"), std::string::npos);
+  EXPECT_NE(dashboard.find("<circle"), std::string::npos);
   // A batch that meets its gate: PASS, and the sample's doubt said.
   write("p.yaml", "worlds: [" + kCorridor + "]\nseeds: 1\ngate: {min_success: 0.5}\n");
   ASSERT_EQ(run("batch p.yaml --out p --quiet --no-figures", 300).exit_code, 0);
