@@ -80,10 +80,11 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   write_run_folder(world, r, config, out_dir, line, setting, opt.animate);
   staged.commit();
   // The units of every table: mm and degrees at the dock, seconds to a tenth.
+  // A docking error only where it docked (else it was the distance to the charger).
+  const bool at_dock = r.error_measured && (r.docked || r.caught);
   std::cout << world.name << ": " << r.status << ", position error "
-            << (r.error_measured ? util::fixed(r.position_error_m * 1000, 1) + " mm" : "n/a")
-            << ", heading error "
-            << (r.error_measured ? util::fixed(r.heading_error_deg, 2) + " deg" : "n/a")
+            << (at_dock ? util::fixed(r.position_error_m * 1000, 1) + " mm" : "-")
+            << ", heading error " << (at_dock ? util::fixed(r.heading_error_deg, 2) + " deg" : "-")
             << ", collisions " << r.collisions << ", retries " << r.retries << ", stops " << r.stops
             << ", replans " << r.replans << ", time " << util::fixed(r.time_s, 1) << " s -> "
             << staged.destination() << "\n";

@@ -212,7 +212,9 @@ std::string markdown_cell(const std::string& text) {
 
 /// The run's row of the Markdown table (the dashboard's columns), its figure linked from `link`.
 std::string markdown_row(const nlohmann::json& j, const std::string& link) {
-  const bool measured = j.value("error_measured", true);
+  // An episode that did not dock has no docking error (it was the distance to the charger).
+  const bool measured =
+      j.value("error_measured", true) && (j.value("docked", false) || j.value("caught", false));
   std::string row = "| " + markdown_cell(j.value("world", "?")) + " | " +
                     markdown_cell(j.value("planner", "?")) + " | " +
                     markdown_cell(j.value("travel", "path")) + " | " +
@@ -232,12 +234,20 @@ std::string markdown_row(const nlohmann::json& j, const std::string& link) {
 /// The run's card on the dashboard (its cells in the order of kDashboardHeaders).
 render::DashboardRun dashboard_run(const nlohmann::json& j, const std::string& dir,
                                    const std::string& html_base) {
-  const bool measured = j.value("error_measured", true);
+  const bool measured =
+      j.value("error_measured", true) && (j.value("docked", false) || j.value("caught", false));
   render::DashboardRun run;
   run.folder = std::filesystem::relative(dir, html_base.empty() ? "." : html_base).string();
   run.world = j.value("world", "?");
   run.setting = setting_of(j.value("command", ""));
   run.status = j.value("status", "?");
+  // A failure says why and when, where the table has room (summary.json: failure, failure_time_s).
+  if (j.contains("failure") && j["failure"].is_string() &&
+      j["failure"].get<std::string>() != run.status) {
+    run.status += ": " + j["failure"].get<std::string>();
+    if (j.contains("failure_time_s") && j["failure_time_s"].is_number())
+      run.status += " at " + fixed(j["failure_time_s"].get<double>(), 1) + " s";
+  }
   run.succeeded = j.value("docked", false) || j.value("caught", false);
   run.cells = {j.value("planner", "?") +
                    (j.value("travel", "path") == "path" ? "" : " (" + j.value("travel", "") + ")"),

@@ -77,12 +77,15 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
     return {world_name, r.planner, none, r.status, none,    none,    none, none, none,
             none,       none,      none, none,     plan_ms, planned, none, none};
   }
+  // The docking error of an episode that never docked is no value (it was the distance to the
+  // charger): "-"; the failure's banner says where it stopped.
+  const bool at_dock = r.docked || r.caught;
   return {world_name,
           r.planner,
           r.travel,
           r.status,
-          fixed(1000 * r.position_error_m, 1),
-          fixed(r.heading_error_deg, 2),
+          at_dock ? fixed(1000 * r.position_error_m, 1) : "-",
+          at_dock ? fixed(r.heading_error_deg, 2) : "-",
           std::to_string(r.collisions),
           std::to_string(r.retries),
           std::to_string(r.stops),
@@ -147,6 +150,14 @@ void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
   report.figures = figures;
   report.files = files;
   report.body_html = render::replay_html(world, r);
+  if (r.failure)  // the verdict first: why, when, where
+    report.banner_html =
+        "<div class=\"banner fail\"><b>FAILED</b>: " +
+        render::html_escape(std::string(robot::to_string(r.failure->reason))) +
+        " at t = " + util::fixed(r.failure->time_s, 1) + " s, at (" +
+        util::fixed(r.failure->pose.x, 2) + ", " + util::fixed(r.failure->pose.y, 2) + ") m" +
+        (r.failure->detail.empty() ? "" : ": " + render::html_escape(r.failure->detail)) +
+        " (docs/failures.md)</div>";
   report.made_by = made_by.text();
   render::write_report(report, out_dir + "/report.html");
 }

@@ -64,7 +64,8 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   const std::size_t step =
       std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
   json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(),
-       v = json::array(), docking = json::array();
+       v = json::array(), docking = json::array(), ex = json::array(), ey = json::array(),
+       sigma = json::array();
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < n; i += step) kept.push_back(i);
   if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);  // the end, always
@@ -76,6 +77,9 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
     yaw.push_back(round_to(s.truth.yaw, 1e-4));
     v.push_back(round_to(s.speed_mps, 1e-3));
     docking.push_back(s.phase == controller::DockPhase::kTravel ? 0 : 1);
+    ex.push_back(round_to(s.estimate.x, 1e-4));
+    ey.push_back(round_to(s.estimate.y, 1e-4));
+    sigma.push_back(round_to(s.position_sigma_m, 1e-4));
   }
   j["t"] = t;
   j["x"] = x;
@@ -83,6 +87,30 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   j["yaw"] = yaw;
   j["v"] = v;
   j["docking"] = docking;
+  j["ex"] = ex;
+  j["ey"] = ey;
+  j["sigma"] = sigma;
+  j["events"] = json::array();
+  for (const auto& e : run.events) {
+    using Kind = sim::EpisodeResult::Event::Kind;
+    const char* kind = e.kind == Kind::kStop        ? "stop"
+                       : e.kind == Kind::kReplan    ? "replan"
+                       : e.kind == Kind::kRecovery  ? "recovery"
+                       : e.kind == Kind::kCollision ? "collision"
+                       : e.kind == Kind::kRetry     ? "retry"
+                                                    : "failure";
+    j["events"].push_back({{"k", kind},
+                           {"t", round_to(e.t_s, 1e-3)},
+                           {"x", round_to(e.at.x, 1e-3)},
+                           {"y", round_to(e.at.y, 1e-3)}});
+  }
+  j["failure"] = nullptr;
+  if (run.failure)  // where the replay ends: the reason, when, where and why
+    j["failure"] = {{"reason", robot::to_string(run.failure->reason)},
+                    {"t", round_to(run.failure->time_s, 1e-3)},
+                    {"x", round_to(run.failure->pose.x, 1e-3)},
+                    {"y", round_to(run.failure->pose.y, 1e-3)},
+                    {"detail", run.failure->detail}};
   j["moving_label"] = moving_tracks_label(run.moving_tracks);  // as the run figure's legend
   j["moving"] = json::array();
   for (const auto& track : run.moving_tracks) {
@@ -93,11 +121,16 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
     j["moving"].push_back(m);
   }
   j["status"] = run.status;
-  j["colours"] = {{"floor", css(palette::kFloor)},          {"obstacle", css(palette::kObstacle)},
-                  {"unmapped", css(palette::kUnmapped)},    {"plan", css(palette::kPlan)},
-                  {"first_plan", css(palette::kFirstPlan)}, {"charger", css(palette::kCharger)},
-                  {"start", css(palette::kStart)},          {"moving", css(palette::kMoving)},
-                  {"robot", css(palette::kRobot)},          {"axis", css(palette::kAxis)}};
+  j["colours"] = {
+      {"floor", css(palette::kFloor)},          {"obstacle", css(palette::kObstacle)},
+      {"unmapped", css(palette::kUnmapped)},    {"plan", css(palette::kPlan)},
+      {"first_plan", css(palette::kFirstPlan)}, {"charger", css(palette::kCharger)},
+      {"start", css(palette::kStart)},          {"moving", css(palette::kMoving)},
+      {"robot", css(palette::kRobot)},          {"axis", css(palette::kAxis)},
+      {"estimate", css(palette::kEstimate)},    {"stop", css(palette::kStopMark)},
+      {"replan", css(palette::kReplanMark)},    {"recovery", css(palette::kRecoveryMark)},
+      {"retry", css(palette::kRetryMark)},      {"collision", css(palette::kCollisionMark)},
+      {"failure", css(palette::kCollisionMark)}};
   return j;
 }
 
@@ -122,9 +155,15 @@ constexpr const char* kPlayer = R"JS(
   const legendW = 170, full = D.floor;
   let view = full.slice(), time = 0, playing = true, last = null, frames = 0;
   function index(t) { let lo = 0, hi = N - 1; while (lo < hi) { const m = (lo + hi + 1) >> 1; if (T[m] <= t) lo = m; else hi = m - 1; } return lo; }
+  // Zoomed: on the dock while the robot docks near it, on the robot wherever else it docks (a
+  // failed approach far from the charger), and on the failure's place as the replay ends there.
   function targetView(i) {
-    if (!zoomBox.checked || !D.docking[i]) return full;
-    const r = 1.5, cx = D.dock[0], cy = D.dock[1];
+    if (!zoomBox.checked || !N) return full;
+    const F = D.failure;
+    if (F && time >= F.t - 3) return [F.x - 3, F.y - 3, F.x + 3, F.y + 3];
+    if (!D.docking[i]) return full;
+    const near = Math.hypot(D.x[i] - D.dock[0], D.y[i] - D.dock[1]) < 1.5;
+    const r = 1.5, cx = near ? D.dock[0] : D.x[i], cy = near ? D.dock[1] : D.y[i];
     return [cx - r, cy - r, cx + r, cy + r];
   }
   function transform() {
@@ -168,6 +207,20 @@ constexpr const char* kPlayer = R"JS(
     ctx.save(); ctx.translate(g.px(cb[0]), g.py(cb[1])); ctx.rotate(-cb[4]);
     ctx.fillStyle = C.charger; ctx.fillRect(-g.s * cb[2], -g.s * cb[3], 2 * g.s * cb[2], 2 * g.s * cb[3]); ctx.restore();
     ctx.fillStyle = C.start; ctx.beginPath(); ctx.arc(g.px(D.start[0]), g.py(D.start[1]), 5, 0, 2 * Math.PI); ctx.fill();
+    if (N) {  // what the robot believed: its estimated path so far and where it thinks it is
+      const est = []; for (let k = 0; k <= i; k++) est.push([D.ex[k], D.ey[k]]);
+      line(g, est, C.estimate, 2, [4, 3]);
+      ctx.strokeStyle = C.estimate; ctx.lineWidth = 2; ctx.beginPath();
+      ctx.arc(g.px(D.ex[i]), g.py(D.ey[i]), Math.max(6, g.s * D.robot.radius), 0, 2 * Math.PI); ctx.stroke();
+    }
+    D.events.forEach(e => {  // each event from its time on, a mark of its kind
+      if (e.t > time) return;
+      const x = g.px(e.x), y = g.py(e.y); ctx.strokeStyle = C[e.k] || C.axis; ctx.lineWidth = 2; ctx.beginPath();
+      if (e.k === 'collision' || e.k === 'failure') { ctx.moveTo(x - 6, y - 6); ctx.lineTo(x + 6, y + 6); ctx.moveTo(x - 6, y + 6); ctx.lineTo(x + 6, y - 6); }
+      else if (e.k === 'retry') ctx.rect(x - 5, y - 5, 10, 10);
+      else ctx.arc(x, y, 6, 0, 2 * Math.PI);
+      ctx.stroke();
+    });
     if (N) {  // the robot: footprint and heading, never under 8 px across
       const x = g.px(D.x[i]), y = g.py(D.y[i]), a = D.yaw[i];
       const grow = Math.max(1, 4 / (g.s * D.robot.radius));
@@ -181,10 +234,24 @@ constexpr const char* kPlayer = R"JS(
     ctx.restore();
     // Clock and legend.
     ctx.fillStyle = C.axis; ctx.font = 'bold 15px DejaVu Sans, sans-serif';
+    const off = N ? Math.hypot(D.x[i] - D.ex[i], D.y[i] - D.ey[i]) : 0;
     ctx.fillText(D.world + '   t = ' + time.toFixed(1) + ' s of ' + tEnd.toFixed(1) + ' s   ' +
-                 (N && D.docking[i] ? 'docking' : 'travel') + '   ' + speedSel.value + 'x', 10, 20);
+                 (N && D.docking[i] ? 'docking' : 'travel') + '   ' + speedSel.value + 'x   estimate ' +
+                 (1000 * off).toFixed(0) + ' mm off (sigma ' + (N ? (1000 * D.sigma[i]).toFixed(0) : 0) + ' mm)', 10, 20);
+    const F = D.failure;
+    if (F && time >= Math.min(F.t, tEnd) - 1e-3) {  // the end: why
+      ctx.font = 'bold 15px DejaVu Sans, sans-serif';
+      ctx.fillStyle = 'rgba(255,255,255,0.9)'; ctx.fillRect(4, H - 32, W - 8, 28);  // over the map
+      ctx.fillStyle = C.failure;
+      ctx.fillText('FAILED: ' + F.reason + ' at t = ' + F.t.toFixed(1) + ' s, (' + F.x.toFixed(2) + ', ' +
+                   F.y.toFixed(2) + ') m' + (F.detail ? ': ' + F.detail : ''), 10, H - 12, W - 20);
+    }
     const items = [['plan', C.plan], ['driven (speed)', speedColour(D.max_speed * 0.6)], ['robot', C.robot],
-                   ['charger', C.charger], ['start', C.start]];
+                   ['estimate (dashed)', C.estimate], ['charger', C.charger], ['start', C.start]];
+    ['stop', 'replan', 'recovery', 'retry', 'collision'].forEach(k => {
+      if (D.events.some(e => e.k === k)) items.push([k, C[k]]);
+    });
+    if (F) items.push(['failure (cross)', C.failure]);
     if (D.obstacles.length) items.push(['obstacle', C.obstacle]);
     if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan]);
     if (D.moving.length) items.push([D.moving_label, C.moving]);
@@ -241,7 +308,7 @@ std::string replay_html(const worlds::World& world, const sim::EpisodeResult& ru
        "<input id=\"replay-slider\" type=\"range\" min=\"0\" max=\"1000\" value=\"0\" "
        "style=\"width:50%\"> "
        "<label><input id=\"replay-zoom\" type=\"checkbox\" checked> zoom on the "
-       "docking</label></p>\n";
+       "docking and the failure</label></p>\n";
   h += "<script type=\"application/json\" id=\"replay-data\">" + data + "</script>\n";
   h += std::string("<script>") + kPlayer + "</script>\n</section>\n";
   return h;

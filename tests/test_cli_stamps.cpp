@@ -148,5 +148,35 @@ TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
   EXPECT_NE(pass.find("more episodes would tell"), std::string::npos);  // 1/1: low 0.21 < 0.5
 }
 
+// A failed run says why first, and its replay carries what it needs to end on the failure: the
+// reason, time, place and detail, the estimate beside the truth and the events.
+TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
+  write("short.json", "{\"timeout_s\": 25}");
+  const Outcome o = run("run " + test::source_file("worlds/examples/small_plant.json") +
+                            " --config short.json --out f",
+                        120);
+  ASSERT_EQ(o.exit_code, 1) << o.err;
+  EXPECT_NE(o.out.find("timeout, position error -, heading error -"), std::string::npos) << o.out;
+  const std::string html = read(dir_ / "f/report.html");
+  const std::size_t banner =
+      html.find("<div class=\"banner fail\"><b>FAILED</b>: timeout at t = 25.0 s, at (");
+  ASSERT_NE(banner, std::string::npos);
+  EXPECT_LT(banner, html.find("<table"));  // before the table
+  EXPECT_NE(html.find("still moving on when the time ran out", banner), std::string::npos);
+  // No docking error where it never docked (it was the distance to the charger).
+  EXPECT_NE(html.find("<td>timeout</td><td>-</td><td>-</td>"), std::string::npos);
+  const std::string marker = "id=\"replay-data\">";
+  const std::size_t data = html.find(marker);
+  ASSERT_NE(data, std::string::npos);
+  const std::size_t begin = data + marker.size();
+  const auto replay =
+      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  EXPECT_EQ(replay["failure"]["reason"], "timeout");
+  EXPECT_NEAR(replay["failure"]["t"].get<double>(), 25.0, 0.1);
+  EXPECT_EQ(replay["ex"].size(), replay["x"].size());
+  EXPECT_EQ(replay["sigma"].size(), replay["x"].size());
+  EXPECT_TRUE(replay["events"].is_array());
+}
+
 }  // namespace
 }  // namespace plantsim
