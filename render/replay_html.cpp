@@ -34,6 +34,32 @@ std::string css(Rgb c) {
   return buf;
 }
 
+/// The episode's events (stops, replans, ...) at their times and places, and its failure: where the
+/// replay ends, with the reason, when, where and why.
+void add_events_and_failure(json& j, const sim::EpisodeResult& run) {
+  j["events"] = json::array();
+  for (const auto& e : run.events) {
+    using Kind = sim::EpisodeResult::Event::Kind;
+    const char* kind = e.kind == Kind::kStop        ? "stop"
+                       : e.kind == Kind::kReplan    ? "replan"
+                       : e.kind == Kind::kRecovery  ? "recovery"
+                       : e.kind == Kind::kCollision ? "collision"
+                       : e.kind == Kind::kRetry     ? "retry"
+                                                    : "failure";
+    j["events"].push_back({{"k", kind},
+                           {"t", round_to(e.t_s, 1e-3)},
+                           {"x", round_to(e.at.x, 1e-3)},
+                           {"y", round_to(e.at.y, 1e-3)}});
+  }
+  j["failure"] = nullptr;
+  if (run.failure)  // where the replay ends: the reason, when, where and why
+    j["failure"] = {{"reason", robot::to_string(run.failure->reason)},
+                    {"t", round_to(run.failure->time_s, 1e-3)},
+                    {"x", round_to(run.failure->pose.x, 1e-3)},
+                    {"y", round_to(run.failure->pose.y, 1e-3)},
+                    {"detail", run.failure->detail}};
+}
+
 json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
                  const ReplayOptions& o) {
   json j;
@@ -90,27 +116,7 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   j["ex"] = ex;
   j["ey"] = ey;
   j["sigma"] = sigma;
-  j["events"] = json::array();
-  for (const auto& e : run.events) {
-    using Kind = sim::EpisodeResult::Event::Kind;
-    const char* kind = e.kind == Kind::kStop        ? "stop"
-                       : e.kind == Kind::kReplan    ? "replan"
-                       : e.kind == Kind::kRecovery  ? "recovery"
-                       : e.kind == Kind::kCollision ? "collision"
-                       : e.kind == Kind::kRetry     ? "retry"
-                                                    : "failure";
-    j["events"].push_back({{"k", kind},
-                           {"t", round_to(e.t_s, 1e-3)},
-                           {"x", round_to(e.at.x, 1e-3)},
-                           {"y", round_to(e.at.y, 1e-3)}});
-  }
-  j["failure"] = nullptr;
-  if (run.failure)  // where the replay ends: the reason, when, where and why
-    j["failure"] = {{"reason", robot::to_string(run.failure->reason)},
-                    {"t", round_to(run.failure->time_s, 1e-3)},
-                    {"x", round_to(run.failure->pose.x, 1e-3)},
-                    {"y", round_to(run.failure->pose.y, 1e-3)},
-                    {"detail", run.failure->detail}};
+  add_events_and_failure(j, run);
   j["moving_label"] = moving_tracks_label(run.moving_tracks);  // as the run figure's legend
   j["moving"] = json::array();
   for (const auto& track : run.moving_tracks) {
