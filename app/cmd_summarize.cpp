@@ -63,6 +63,9 @@ std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
     reasons +=
         (reasons.empty() ? "" : ", ") + reason + " " + std::to_string(count.get<long long>());
   if (!reasons.empty()) line += "; failures: " + reasons;
+  if (j.value("succeeded_lost", 0LL) > 0)  // integrity: a success is not a clean one when lost
+    line +=
+        "; " + std::to_string(j.value("succeeded_lost", 0LL)) + " succeeded with the estimate lost";
   const nlohmann::json gate = j.value("gate", nlohmann::json::object());
   const long long gated = gate.value("gated_configurations", 0LL);
   if (gated > 0)

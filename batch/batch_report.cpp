@@ -18,6 +18,7 @@
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
 #include "render/png_io.h"
+#include "render/replay_html.h"
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
@@ -136,9 +137,14 @@ class FigureWriter {
  public:
   FigureWriter(render::Report& report, std::string out_dir)
       : report_(report), out_dir_(std::move(out_dir)) {}
-  void operator()(const render::Image& img, const std::string& file, const std::string& caption) {
+  void operator()(const render::Image& img, const std::string& file, const std::string& caption,
+                  const std::string& link = "") {
     render::write_png(img, out_dir_ + "/" + file, render::PngSettings::fast());
     report_.figures.push_back({file, caption});
+    if (!link.empty()) {
+      report_.figure_links.resize(report_.figures.size());
+      report_.figure_links.back() = link;
+    }
   }
 
  private:
@@ -192,6 +198,20 @@ void add_world_paths(FigureWriter& chart, const ChartData& d,
   }
 }
 
+/// A failed episode's replay on a page of its own beside its figure: the failure first, then the
+/// replay that follows the robot to it.
+void write_failure_replay(const FailedEpisode& f, const std::string& why, const std::string& path) {
+  render::Report page;
+  page.title = "FAILED " + f.id;
+  page.banner_html = "<div class=\"banner fail\"><b>FAILED</b>: " + render::html_escape(why) +
+                     (f.result.failure ? ", at (" + fixed(f.result.failure->pose.x, 2) + ", " +
+                                             fixed(f.result.failure->pose.y, 2) + ") m"
+                                       : "") +
+                     ". <a href=\"../report.html\">Back to the batch report</a></div>";
+  page.body_html = render::replay_html(f.plant, f.result);
+  render::write_report(page, path);
+}
+
 void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& failures,
                          const std::string& out_dir, const std::string& scenario_path) {
   if (failures.empty()) return;
@@ -205,11 +225,14 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
     if (f.result.failure)
       why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
             fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
+    // Numbered: ids cut to a file name's length (or made file-safe) can be alike.
+    const std::string stem =
+        "failures/" + std::to_string(i + 1) + "_" + worlds::file_name_component(f.id);
+    write_failure_replay(f, why, out_dir + "/" + stem + ".html");
     chart(
-        render::draw_run_figure(f.plant, f.result, options),
-        // Numbered: ids cut to a file name's length (or made file-safe) can be alike.
-        "failures/" + std::to_string(i + 1) + "_" + worlds::file_name_component(f.id) + ".png",
-        "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id));
+        render::draw_run_figure(f.plant, f.result, options), stem + ".png",
+        "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id),
+        stem + ".html");
   }
 }
 

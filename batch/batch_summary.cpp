@@ -17,13 +17,18 @@ std::string batch_verdict(const std::vector<ConfigurationVerdict>& verdicts) {
 json batch_summary_json(const std::vector<std::string>& lines,
                         const std::vector<ConfigurationVerdict>& verdicts, const Gate& gate,
                         const std::string& title, const std::string& command) {
-  std::int64_t episodes = 0, succeeded = 0;
+  std::int64_t episodes = 0, succeeded = 0, docked_not_ok = 0, docked_lost = 0;
   std::map<std::string, std::int64_t> by_reason;
   for (const std::string& line : lines) {
     const json j = json::parse(line);
     ++episodes;
     if (record_succeeded(j)) {
       ++succeeded;
+      // Integrity: a success whose estimator did not end `ok` (summary.csv has it per
+      // configuration).
+      const std::string health = j.value("localization_status", std::string("ok"));
+      docked_not_ok += health != "ok";
+      docked_lost += health == "lost";
       continue;
     }
     const auto reason = j.find("failure");
@@ -56,6 +61,8 @@ json batch_summary_json(const std::vector<std::string>& lines,
           {"verdict", batch_verdict(verdicts)},
           {"episodes", episodes},
           {"succeeded", succeeded},
+          {"succeeded_not_ok", docked_not_ok},
+          {"succeeded_lost", docked_lost},
           {"failures_by_reason", by_reason},
           {"gate",
            {{"statistic", statistic_name(gate.statistic)},

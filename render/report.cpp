@@ -86,9 +86,17 @@ std::string report_html(const Report& r) {
     h += "</table>\n";
   }
   h += r.body_html;
-  for (const auto& f : r.figures)
-    h += "<figure><img src=\"" + url_attribute(f.file) + "\" alt=\"" + html_escape(f.caption) +
-         "\"><figcaption>" + html_escape(f.caption) + "</figcaption></figure>\n";
+  for (std::size_t i = 0; i < r.figures.size(); ++i) {
+    const ReportFigure& f = r.figures[i];
+    const std::string link = i < r.figure_links.size() ? r.figure_links[i] : "";
+    const std::string img =
+        "<img src=\"" + url_attribute(f.file) + "\" alt=\"" + html_escape(f.caption) + "\">";
+    h += "<figure>" +
+         (link.empty() ? img : "<a href=\"" + url_attribute(link) + "\">" + img + "</a>") +
+         "<figcaption>" + html_escape(f.caption) +
+         (link.empty() ? "" : " <a href=\"" + url_attribute(link) + "\">Replay it</a>") +
+         "</figcaption></figure>\n";
+  }
   if (!r.files.empty()) {
     h += "<p>Files: ";
     for (std::size_t i = 0; i < r.files.size(); ++i)

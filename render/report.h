@@ -26,6 +26,8 @@ struct Report {
   std::string made_by;  ///< which build made it, when, from what (util/made_by.h), under the title
   std::string banner_html;               ///< trusted HTML first under the title (a batch's verdict)
   std::vector<std::string> row_classes;  ///< per row, may be shorter: "fail" draws it red
+  /// per figure, may be shorter: a page the figure links to (a failed episode's replay)
+  std::vector<std::string> figure_links;
 };
 
 std::string report_html(const Report& r);

@@ -390,10 +390,11 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
   std::vector<double> t, cross, speed, distance, loc_error, loc_bound;
   for (const auto& s : run.trajectory) {
     t.push_back(s.t_s);
-    loc_error.push_back(100.0 * geom::distance(s.truth.position(), s.estimate.position()));
-    loc_bound.push_back(200.0 * s.position_sigma_m);
+    // In mm, as every table gives errors.
+    loc_error.push_back(1000.0 * geom::distance(s.truth.position(), s.estimate.position()));
+    loc_bound.push_back(2000.0 * s.position_sigma_m);
     // Cross-track error is a travelling measure; blank (not zero) while docking.
-    cross.push_back(s.phase == controller::DockPhase::kTravel ? 100.0 * s.cross_track_m : NAN);
+    cross.push_back(s.phase == controller::DockPhase::kTravel ? 1000.0 * s.cross_track_m : NAN);
     speed.push_back(s.speed_mps);
     distance.push_back(geom::distance(s.truth.position(), world.charger.position()));
   }
@@ -408,10 +409,10 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
   Figure::PlotOptions first;
   first.bands = bands;
   first.legend = true;
-  first.min_y_span = 1.0;
+  first.min_y_span = 10.0;
   first.note = "no travel";
   fig.plot(box(0), {{t, cross, palette::kTrajectory, "cross-track"}},
-           "Cross-track error while travelling", "cm", first);
+           "Cross-track error while travelling", "mm", first);
   Figure::PlotOptions plain;
   plain.bands = bands;
   plain.min_y_span = 0.1;
@@ -424,11 +425,11 @@ Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
   Figure::PlotOptions last = plain;
   last.x_label = "time (s)";
   last.legend = true;
-  last.min_y_span = 1.0;
+  last.min_y_span = 10.0;
   fig.plot(
       box(3), loc,
       "Localisation error" + std::string(run.perception_mode == "sensors" ? "" : " (oracle mode)"),
-      "cm", last);
+      "mm", last);
   Image img = fig.finish();
   if (layout_out) *layout_out = fig.layout();
   return img;

@@ -17,6 +17,7 @@
 #include "batch/episode_space.h"
 #include "batch/summary_tables.h"
 #include "batch_folder_test.h"
+#include "render/report.h"
 #include "test_paths.h"
 #include "util/csv.h"
 #include "util/folder_lock.h"
@@ -265,6 +266,18 @@ TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
   EXPECT_TRUE(
       fs::exists(dir_ / "fail" / "failures" / ("1_" + worlds::file_name_component(id) + ".png")))
       << id;
+  // Its panel links to its replay, a page of its own that says why first and links back.
+  const std::string page_name = "failures/1_" + worlds::file_name_component(id) + ".html";
+  std::ifstream page_in(dir_ / "fail" / page_name), report_in(dir_ / "fail" / "report.html");
+  const std::string page((std::istreambuf_iterator<char>(page_in)),
+                         std::istreambuf_iterator<char>());
+  const std::string report((std::istreambuf_iterator<char>(report_in)),
+                           std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("<b>FAILED</b>: timeout at 2.0 s"), std::string::npos);
+  EXPECT_NE(page.find("id=\"replay-data\""), std::string::npos);
+  EXPECT_NE(page.find("href=\"../report.html\""), std::string::npos);
+  EXPECT_NE(report.find("<a href=\"" + render::url_attribute(page_name) + "\">Replay it</a>"),
+            std::string::npos);
 }
 
 TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {

@@ -148,17 +148,15 @@ TEST_F(RenderedRun, ReportReferencesOnlyFilesThatExist) {
   write_png(draw_run_figure(*world_, *run_), (dir / "run.png").string());
   write_png(draw_time_plots(*world_, *run_), (dir / "timeplots.png").string());
   { std::ofstream((dir / "summary.json").string()) << "{}"; }
-  Report r{"test <report>",
-           "plantsim run x",
-           {"a"},
-           {{"1"}},
-           {{"run.png", "run"}, {"timeplots.png", "plots"}},
-           {"summary.json"},
-           "notes & more",
-           "",
-           "Made by <a build>",
-           "",
-           {}};
+  Report r;  // by member: a field added to Report must not break this
+  r.title = "test <report>";
+  r.command = "plantsim run x";
+  r.headers = {"a"};
+  r.rows = {{"1"}};
+  r.figures = {{"run.png", "run"}, {"timeplots.png", "plots"}};
+  r.files = {"summary.json"};
+  r.notes = "notes & more";
+  r.made_by = "Made by <a build>";
   write_report(r, (dir / "report.html").string());
   std::ifstream f((dir / "report.html").string());
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
