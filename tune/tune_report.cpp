@@ -130,6 +130,23 @@ ordered_json summary_json(const TuneSpec& spec, const TuneOutcome& o, const util
   return j;
 }
 
+/// What the charts' score axis measures, in its units.
+std::string score_label(Objective o) {
+  switch (o) {
+    case Objective::kTime:
+      return "score: minus the mean time to dock (s)";
+    case Objective::kDockingError:
+      return "score: minus the mean docking error (m)";
+    case Objective::kContacts:
+      return "score: minus the contacts per episode";
+    case Objective::kSuccess:
+      return "score: Wilson 95 % low of the success rate";
+    case Objective::kSuccessThenTime:
+      break;
+  }
+  return "score: Wilson 95 % low minus 0.0001 per second of mean time to dock";
+}
+
 std::vector<render::SearchScores> search_scores(const TuneSpec& spec, const TuneOutcome& o) {
   std::vector<render::SearchScores> out = {
       {label("nlopt", spec), render::palette::kOkabeBlue, {}, {}, {}},
@@ -146,7 +163,7 @@ std::vector<render::SearchScores> search_scores(const TuneSpec& spec, const Tune
 
 void write_charts(const TuneSpec& spec, const TuneOutcome& o, const std::string& dir) {
   const std::vector<render::SearchScores> searches = search_scores(spec, o);
-  const std::string y = "score: " + objective_name(spec.objective);
+  const std::string y = score_label(spec.objective);
   render::write_png(
       render::draw_convergence_chart(searches, o.proven[0].tuning.score.value,
                                      "Tuning " + spec.tuning.name + ": " + label("nlopt", spec) +
