@@ -1,4 +1,5 @@
-// `plantsim bench planner|sim|render|batch`: one JSON line per case with its same-run baseline.
+// `plantsim bench planner|sim|render|batch|startup`: one JSON line per case with its same-run
+// baseline.
 #include <filesystem>
 
 #include "app/commands.h"
@@ -6,6 +7,7 @@
 #include "bench/planner_bench.h"
 #include "bench/render_bench.h"
 #include "bench/sim_bench.h"
+#include "bench/startup_bench.h"
 #include "util/data_dir.h"
 
 namespace plantsim::app {
@@ -21,7 +23,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   cmd->add_option("target", opt->target, "What to measure")
       ->required()
-      ->check(CLI::IsMember({"planner", "sim", "render", "batch"}));
+      ->check(CLI::IsMember({"planner", "sim", "render", "batch", "startup"}));
   cmd->add_flag("--quick", opt->quick, "Fewer repetitions and no slow baselines");
   cmd->add_option("--chart", opt->chart,
                   "planner: also time the grid and draw the log-log time chart into this PNG");
@@ -35,6 +37,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
     if (opt->target == "sim") return bench::run_sim_bench(data, opt->quick);
     if (opt->target == "render") return bench::run_render_bench(data, opt->quick);
     if (opt->target == "batch") return bench::run_batch_bench(data, opt->quick);
+    if (opt->target == "startup") return bench::run_startup_bench(data, opt->quick);
     return bench::run_planner_bench(data, opt->quick, opt->chart);
   };
 }

@@ -1,13 +1,12 @@
 // OSMesa context management and the fixed-function GL drawing of primitives.
 #include "render/gl_canvas.h"
 
-#include <GL/gl.h>
-#include <GL/osmesa.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+
+#include "render/osmesa_library.h"
 
 namespace plantsim::render {
 
@@ -29,7 +28,7 @@ struct GlCanvas::Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
   ~Context() {
-    if (mesa) OSMesaDestroyContext(mesa);
+    if (mesa) osmesa().destroy_context(mesa);
   }
 };
 
@@ -46,30 +45,31 @@ GlCanvas::GlCanvas(int width, int height, int supersample)
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw std::invalid_argument("image size must be between 1 and 16384 pixels a side");
   const int w = width_ * ss_, h = height_ * ss_;
+  const OsMesaLibrary& gl = osmesa();
   if (!idle_contexts.empty()) {
     ctx_ = std::move(idle_contexts.back());
     idle_contexts.pop_back();
   } else {
     ctx_ = std::make_unique<Context>();
-    ctx_->mesa = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+    ctx_->mesa = gl.create_context_ext(OSMESA_RGBA, 0, 0, 0, nullptr);
     if (!ctx_->mesa) throw std::runtime_error("OSMesa: cannot create a context");
   }
   ctx_->buffer.resize(static_cast<std::size_t>(w) * h * 4);
-  if (!OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, w, h))
+  if (!gl.make_current(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, w, h))
     throw std::runtime_error("OSMesa: cannot bind the frame buffer");
   // A reused context keeps its state: set all of it.
-  glViewport(0, 0, w, h);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, w, 0, h, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_SCISSOR_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT);
+  gl.viewport(0, 0, w, h);
+  gl.matrix_mode(GL_PROJECTION);
+  gl.load_identity();
+  gl.ortho(0, w, 0, h, -1, 1);
+  gl.matrix_mode(GL_MODELVIEW);
+  gl.load_identity();
+  gl.disable(GL_DEPTH_TEST);
+  gl.disable(GL_SCISSOR_TEST);
+  gl.enable(GL_BLEND);
+  gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  gl.clear_color(0, 0, 0, 0);
+  gl.clear(GL_COLOR_BUFFER_BIT);
 }
 
 GlCanvas::~GlCanvas() {
@@ -84,17 +84,19 @@ GlCanvas::~GlCanvas() {
 // Two canvases alive in one thread share GL's notion of "current": each binds its own
 // context before it talks to GL.
 void GlCanvas::make_current() const {
-  if (OSMesaGetCurrentContext() != ctx_->mesa &&
-      !OSMesaMakeCurrent(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, width_ * ss_,
-                         height_ * ss_))
+  const OsMesaLibrary& gl = osmesa();
+  if (gl.get_current_context() != ctx_->mesa &&
+      !gl.make_current(ctx_->mesa, ctx_->buffer.data(), GL_UNSIGNED_BYTE, width_ * ss_,
+                       height_ * ss_))
     throw std::runtime_error("OSMesa: cannot bind the frame buffer");
 }
 
 void GlCanvas::clear(Rgb c) {
+  const OsMesaLibrary& gl = osmesa();
   batch_.clear();
   make_current();
-  glClearColor(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
+  gl.clear_color(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
+  gl.clear(GL_COLOR_BUFFER_BIT);
 }
 
 Vec2 GlCanvas::gl_px(Vec2 p) const {
@@ -139,33 +141,35 @@ void GlCanvas::quad(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 // All geometry goes to GL as one array of coloured triangles: primitives are drawn in
 // submission order, so the layer order holds, at the cost of one call instead of thousands.
 void GlCanvas::flush() const {
+  const OsMesaLibrary& gl = osmesa();
   if (batch_.empty()) return;
   make_current();
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
-  glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(BatchVertex), &batch_[0].r);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch_.size()));
-  glDisableClientState(GL_COLOR_ARRAY);
-  glDisableClientState(GL_VERTEX_ARRAY);
+  gl.enable_client_state(GL_VERTEX_ARRAY);
+  gl.enable_client_state(GL_COLOR_ARRAY);
+  gl.vertex_pointer(2, GL_FLOAT, sizeof(BatchVertex), &batch_[0].x);
+  gl.color_pointer(4, GL_UNSIGNED_BYTE, sizeof(BatchVertex), &batch_[0].r);
+  gl.draw_arrays(GL_TRIANGLES, 0, static_cast<GLsizei>(batch_.size()));
+  gl.disable_client_state(GL_COLOR_ARRAY);
+  gl.disable_client_state(GL_VERTEX_ARRAY);
   batch_.clear();
 }
 
 void GlCanvas::set_clip(double left, double top, double right, double bottom) {
+  const OsMesaLibrary& gl = osmesa();
   flush();  // what was drawn before is not clipped
   make_current();
   const int x0 = static_cast<int>(std::floor(left * ss_)),
             x1 = static_cast<int>(std::ceil(right * ss_));
   const int y0 = static_cast<int>(std::floor((height_ - bottom) * ss_)),
             y1 = static_cast<int>(std::ceil((height_ - top) * ss_));
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+  gl.enable(GL_SCISSOR_TEST);
+  gl.scissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
 }
 
 void GlCanvas::clear_clip() {
   flush();
   make_current();
-  glDisable(GL_SCISSOR_TEST);
+  osmesa().disable(GL_SCISSOR_TEST);
 }
 
 void GlCanvas::fill_rect(const Rect& r, Rgb c, float alpha) {
@@ -364,7 +368,7 @@ void GlCanvas::stroke_px(const std::vector<Vec2>& all_pts, double w,
 void GlCanvas::finish() const {
   flush();
   make_current();
-  glFinish();
+  osmesa().finish();
 }
 
 Image GlCanvas::read() const {

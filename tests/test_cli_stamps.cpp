@@ -180,3 +180,32 @@ TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
 
 }  // namespace
 }  // namespace plantsim
+
+namespace plantsim {
+namespace {
+
+// A command that draws nothing starts without OSMesa (and the LLVM it brings): the render library
+// opens it when the first canvas is made (render/osmesa_library.h). The dynamic loader's own log
+// (glibc's LD_DEBUG=files) says which libraries a process mapped.
+TEST_F(Cli, OnlyACommandThatDrawsOpensOsMesa) {
+  auto loaded = [&](const std::vector<std::string>& args) {
+    util::SpawnOptions o;
+    o.working_dir = dir_.string();
+    o.stdout_path = (dir_ / "out.txt").string();
+    o.stderr_path = (dir_ / "loader.txt").string();
+    o.environment_additions = {"LD_DEBUG=files"};
+    std::vector<std::string> argv{PLANTSIM_BINARY};
+    argv.insert(argv.end(), args.begin(), args.end());
+    EXPECT_EQ(util::run_program_measured(argv, o).exit_code, 0) << read(dir_ / "loader.txt");
+    return read(dir_ / "loader.txt");
+  };
+  const std::string version = loaded({"--version"});
+  EXPECT_NE(version.find("file=libstdc++"), std::string::npos) << "no loader log: " << version;
+  EXPECT_EQ(version.find("libOSMesa"), std::string::npos);
+  EXPECT_EQ(loaded({"plan", kCorridor}).find("libOSMesa"), std::string::npos);
+  EXPECT_NE(loaded({"run", kCorridor, "--out", "r"}).find("file=libOSMesa"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "r/run.png"));
+}
+
+}  // namespace
+}  // namespace plantsim

@@ -167,7 +167,7 @@ TEST(RandomWorlds, FastPlannerMatchesBruteForceAndStaysClear) {
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0);
   int compared = 0, with_path = 0, no_path = 0;
-  for (int world = 0; world < 400; ++world) {
+  for (int world = 0; world < test::scaled(400, 40); ++world) {
     const bool lattice = world % 2 == 0;
     const PlannerInput in = random_world(rng, lattice);
     auto fast = make_planner("vg", in);
@@ -192,9 +192,9 @@ TEST(RandomWorlds, FastPlannerMatchesBruteForceAndStaysClear) {
     }
   }
   // The sample must exercise both outcomes to mean anything.
-  EXPECT_GT(with_path, 800);
-  EXPECT_GT(no_path, 5);
-  EXPECT_EQ(compared, 2000);
+  EXPECT_GT(with_path, test::scaled(800, 80));
+  EXPECT_GT(no_path, test::scaled(5, 0));
+  EXPECT_EQ(compared, 5 * test::scaled(400, 40));
 }
 
 // The interval search over the free-space mesh answers exactly what the visibility graph does:
@@ -204,7 +204,7 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> ux(-1.0, 21.0), uy(-1.0, 15.0);
   int with_path = 0, no_path = 0;
-  for (int world = 0; world < 2000; ++world) {
+  for (int world = 0; world < test::scaled(2000, 200); ++world) {
     const bool lattice = world % 2 == 0;
     const PlannerInput in = random_world(rng, lattice);
     auto vg = make_planner("vg", in);
@@ -247,8 +247,8 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
   }
   std::printf("interval and polyanya against vg: %d queries with a path, %d without\n", with_path,
               no_path);
-  EXPECT_GT(with_path, 4500);
-  EXPECT_GT(no_path, 30);
+  EXPECT_GT(with_path, test::scaled(4500, 450));
+  EXPECT_GT(no_path, test::scaled(30, 3));
 }
 
 // At the scale of a real site (3,000 rectangles, inflated by the robot's clearance, so the mesh's
@@ -304,7 +304,7 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
 // searches without landmarks are checked against vg above.
 TEST(RandomWorlds, LandmarksStayExactAtPinches) {
   int queries = 0;
-  for (int world = 0; world < 4000; ++world) {
+  for (int world = 0; world < test::scaled(4000, 400); ++world) {
     std::mt19937 rng(world);
     std::uniform_int_distribution<int> at(0, 10);
     std::vector<Rect> blocked;
@@ -336,7 +336,7 @@ TEST(RandomWorlds, LandmarksStayExactAtPinches) {
           << what << " polyanya";
     }
   }
-  EXPECT_GT(queries, 45000);
+  EXPECT_GT(queries, test::scaled(45000, 4500));
 }
 
 // Landmarks on a huge plant would cost minutes and gigabytes at build: a request past the
@@ -389,7 +389,7 @@ TEST(RandomWorlds, LandmarkDistancesAreShortestPathLengths) {
       ++checked;
     }
   }
-  EXPECT_GT(checked, 500);
+  EXPECT_GT(checked, test::scaled(500, 50));
 }
 
 // Every pair of graph vertices that sees each other and is tangent at both ends must be an
@@ -423,7 +423,7 @@ void expect_graph_complete(const PlannerInput& in, const std::string& what) {
 
 TEST(RandomWorlds, ResolvedGraphHoldsEveryVisibleTangentPair) {
   std::mt19937_64 rng(4242);
-  for (int world = 0; world < 200; ++world)
+  for (int world = 0; world < test::scaled(200, 20); ++world)
     expect_graph_complete(random_world(rng, world % 2 == 0), "world " + std::to_string(world));
   // A grid map merged into rectangles: touching rectangles, shared corners and pinches everywhere.
   const auto map = worlds::load_movingai_map(test::shared_data("anyangle/arena.map"));
@@ -441,7 +441,7 @@ TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0), size(0.2, 3.0);
   std::int64_t reused = 0;
-  for (int world = 0; world < 120; ++world) {
+  for (int world = 0; world < test::scaled(120, 12); ++world) {
     // Small worlds with touching and overlapping rectangles (every scan reaches the change:
     // nothing is taken over, the answers must still agree), and plants of 300 rectangles where
     // a change is local.
@@ -494,7 +494,7 @@ TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
     for (std::size_t i = 0; i < ea.size(); ++i)
       ASSERT_TRUE(ea[i].first == eb[i].first && ea[i].second == eb[i].second) << what;
   }
-  EXPECT_GT(reused, 500);  // the case this is about: most vertices taken over
+  EXPECT_GT(reused, test::scaled(500, 50));  // the case this is about: most vertices taken over
   // An index past the obstacles is refused.
   VisibilityGraphPlanner small(random_world(rng, false));
   EXPECT_THROW(small.with_changes({}, {small.input().obstacles.size()}), std::out_of_range);
@@ -503,7 +503,7 @@ TEST(RandomWorlds, AChangedWorldTakesOverOnlyWhatTheChangeCannotReach) {
 TEST(RandomWorlds, LaterQueriesOnAWarmGraphGiveTheSameAnswers) {
   std::mt19937_64 rng(77);
   std::uniform_real_distribution<double> ux(0.0, 20.0), uy(0.0, 14.0);
-  for (int world = 0; world < 40; ++world) {
+  for (int world = 0; world < test::scaled(40, 8); ++world) {
     const PlannerInput in = random_world(rng, world % 2 == 0);
     auto warm = make_planner("vg", in);
     std::vector<std::pair<Vec2, Vec2>> queries;
