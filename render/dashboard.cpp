@@ -108,9 +108,10 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
       html_escape(title) +
       "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
-      "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
-      "text-align:right;vertical-align:middle}th{background:#eee}td.l,th.l{text-align:left}"
-      "img.thumb{width:220px;border:1px solid #ddd}.ok{color:#007a56;font-weight:bold}"
+      "table{border-collapse:collapse;margin:12px 0;font-size:14px}td,th{border:1px solid #bbb;"
+      "padding:3px 6px;text-align:right;vertical-align:middle}th{background:#eee}"
+      "td.l,th.l{text-align:left}.files{font-size:12px;color:#555}"
+      "img.thumb{width:180px;border:1px solid #ddd}.ok{color:#007a56;font-weight:bold}"
       ".bad{color:#c03c00;font-weight:bold}.stale{color:#c03c00;display:block}"
       ".banner{padding:8px 12px;margin:12px 0;background:#f6f6f6;border-left:8px solid #999}"
       ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}</style></"
@@ -135,7 +136,7 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
        "class=\"l\">setting</th>"
        "<th class=\"l\">status</th>";
   for (const auto& c : headers) h += "<th>" + html_escape(c) + "</th>";
-  h += "<th class=\"l\">files</th></tr>\n";
+  h += "</tr>\n";
   for (const auto& r : runs) {
     const std::string report = path_of(r.folder, "report.html");
     h += "<tr><td class=\"l\">";
@@ -143,18 +144,20 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
       h += "<a href=\"" + url_attribute(report) + "\"><img class=\"thumb\" src=\"" +
            url_attribute(path_of(r.folder, r.figures.front())) + "\" alt=\"" +
            html_escape(r.world) + "\"></a>";
+    // The run's files under its world's name: a column of their own made the table wider than
+    // a 1,400-pixel screen.
     h += "</td><td class=\"l\"><a href=\"" + url_attribute(report) + "\">" + html_escape(r.world) +
-         "</a></td><td class=\"l\">" + html_escape(r.setting) + "</td><td class=\"l " +
-         (r.succeeded ? "ok" : "bad") + "\">" + html_escape(r.status) +
-         (r.stale.empty() ? "" : "<span class=\"stale\">" + html_escape(r.stale) + "</span>") +
-         "</td>";
-    for (const auto& c : r.cells) h += "<td>" + html_escape(c) + "</td>";
-    h += "<td class=\"l\">";
+         "</a><div class=\"files\">";
     for (std::size_t i = 0; i < r.figures.size(); ++i)
       h += (i ? ", " : "") + std::string("<a href=\"") +
            url_attribute(path_of(r.folder, r.figures[i])) + "\">" + html_escape(r.figures[i]) +
            "</a>";
-    h += "</td></tr>\n";
+    h += "</div></td><td class=\"l\">" + html_escape(r.setting) + "</td><td class=\"l " +
+         (r.succeeded ? "ok" : "bad") + "\">" + html_escape(r.status) +
+         (r.stale.empty() ? "" : "<span class=\"stale\">" + html_escape(r.stale) + "</span>") +
+         "</td>";
+    for (const auto& c : r.cells) h += "<td>" + html_escape(c) + "</td>";
+    h += "</tr>\n";
   }
   h += "</table>\n";
   for (const std::string kind : {"comparison", "batch", "tune", "coverage", "chart", "report"}) {

@@ -50,7 +50,9 @@ std::string image_check_script() {
          "0).map(i => i.src);\n"
          "  document.documentElement.dataset.imagesLoaded = bad.length ? 'missing: ' + bad.join(' "
          "') : 'all ' + "
-         "document.images.length;\n});</script>\n";
+         "document.images.length;\n"
+         "  document.documentElement.dataset.pageWidth = document.documentElement.scrollWidth;\n"
+         "});</script>\n";
 }
 
 std::string report_html(const Report& r) {

@@ -3,7 +3,8 @@
 # comparison and the dashboard linking them are made in a scratch folder and opened in headless
 # Chromium. Fails when any image does not load (data-images-loaded on <html>, set by the page
 # after its load event) or when the replay does not advance (data-replay-frames and
-# data-replay-time on its section). Usage: scripts/browser_test.sh BUILD_DIR
+# data-replay-time on its section), or when the dashboard is wider than a 1,400-pixel window
+# (data-page-width, the page's scroll width). Usage: scripts/browser_test.sh BUILD_DIR
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: browser_test.sh BUILD_DIR}" && pwd)"
@@ -21,8 +22,9 @@ cd "$scratch"
 "$plantsim" compare "$root/worlds/examples/small_plant.json" --planners vg,grid --plan-only --out compare > /dev/null
 "$plantsim" summarize run --html index.html --link batch/report.html --link compare/report.html > /dev/null
 
-dom() {  # the page's DOM after its scripts ran for 4 s of virtual time
+dom() {  # the page's DOM after its scripts ran for 4 s of virtual time, in a 1400 x 1000 window
   "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
+    --window-size=1400,1000 \
     --user-data-dir="$scratch/profile" --virtual-time-budget=4000 --dump-dom "file://$scratch/$1" 2> /dev/null
 }
 status=0
@@ -37,6 +39,13 @@ for page in index.html run/report.html batch/report.html compare/report.html; do
     status=1
   fi
 done
+width="$(dom index.html | grep -o 'data-page-width="[0-9]*"' | grep -o '[0-9]\+' || echo none)"
+if [ "$width" != none ] && [ "$width" -le 1400 ]; then
+  echo "browser_test: the dashboard fits a 1400-pixel window ($width px)"
+else
+  echo "browser_test: FAIL the dashboard is $width px wide in a 1400-pixel window" >&2
+  status=1
+fi
 html="$(dom run/report.html)"
 frames="$(grep -o 'data-replay-frames="[0-9]*"' <<< "$html" | grep -o '[0-9]\+' || echo 0)"
 time_s="$(grep -o 'data-replay-time="[0-9.]*"' <<< "$html" | grep -o '[0-9.]\+' || echo 0)"
