@@ -89,7 +89,7 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
       p_(params),
       map_(map),
       field_(map, params.field_resolution_m),
-      rng_(static_cast<std::uint64_t>(params.seed)),
+      rng_(static_cast<std::uint64_t>(params.seed) ^ 0x7061727469636c65ULL),  // "particle"
       range_learnt_(motion.range_learning_rate),
       gyro_learnt_(motion.gyro_learning_rate) {
   const int n = std::max(1, p_.min_particles);
