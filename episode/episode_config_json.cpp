@@ -262,6 +262,8 @@ const std::vector<Field>& fields() {
       PLANTSIM_PARAM_ABOVE("particles", perception.particles.bin_yaw_rad, "bin_yaw_rad", 0.0, M_PI),
       PLANTSIM_PARAM("particles", perception.particles.z_hit, "z_hit", 0.0, 1.0),
       PLANTSIM_PARAM_ABOVE("particles", perception.particles.z_rand, "z_rand", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.unsettled_sigma_m, "unsettled_sigma_m", 0.0,
+                     10.0),
       PLANTSIM_PARAM("particles", perception.particles.update_min_m, "update_min_m", 0.0, 100.0),
       PLANTSIM_PARAM("particles", perception.particles.update_min_rad, "update_min_rad", 0.0, M_PI),
       PLANTSIM_PARAM("particles", perception.particles.alpha_slow, "alpha_slow", 0.0, 1.0),

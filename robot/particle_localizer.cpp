@@ -2,6 +2,7 @@
 // with sensor resetting, the clustered estimate and its health.
 #include "robot/particle_localizer.h"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -61,10 +62,43 @@ class WeightedDraw {
   mutable std::uniform_real_distribution<double> uniform_;
 };
 
+// A place's pose and spread as a normal distribution to draw from and to evaluate (the spread's
+// Cholesky factor; a spread that has none is replaced by `fallback_sd` on its diagonal).
+class PlaceSpread {
+ public:
+  PlaceSpread(const ParticleLocalizer::Place& place, const Eigen::Vector3d& fallback_sd)
+      : mean_(place.pose) {
+    const Eigen::LLT<Eigen::Matrix3d> root(place.spread);
+    l_ = root.info() == Eigen::Success ? Eigen::Matrix3d(root.matrixL())
+                                       : Eigen::Matrix3d(fallback_sd.asDiagonal());
+    log_norm_ = -std::log(std::fabs(l_.diagonal().prod()));
+  }
+  template <class UnitNormal>
+  geom::Pose2 draw(UnitNormal&& unit) const {
+    const Eigen::Vector3d d = l_ * Eigen::Vector3d(unit(), unit(), unit());
+    return {mean_.x + d.x(), mean_.y + d.y(), geom::wrap_angle(mean_.yaw + d.z())};
+  }
+  /// The density at `x`, up to a constant common to every place.
+  double density(const geom::Pose2& x) const {
+    const Eigen::Vector3d d(x.x - mean_.x, x.y - mean_.y, geom::wrap_angle(x.yaw - mean_.yaw));
+    const Eigen::Vector3d z = l_.triangularView<Eigen::Lower>().solve(d);
+    return std::exp(log_norm_ - 0.5 * z.squaredNorm());
+  }
+
+ private:
+  geom::Pose2 mean_;
+  Eigen::Matrix3d l_;
+  double log_norm_ = 0;
+};
+
 // The global matches for reseeding search all headings in tiles: each may score more candidates
 // than a local relocalisation does.
 ScanMatcherParams reseed_matcher(ScanMatcherParams m) {
   m.max_candidates = std::max(m.max_candidates, 120'000L);
+  // Its coarse rotation steps move a return 20 m away by up to 17 cm, so the true place may
+  // score well below what it scores exactly: places are taken at a lower score, then polished
+  // (matched again in a narrow window at full resolution) and judged by min_score.
+  m.min_score *= 0.6;
   return m;
 }
 
@@ -200,14 +234,21 @@ void ParticleLocalizer::take_points(const LidarScan& scan) {
         geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
   }
   hit_sigma_m_ = std::hypot(p_.field_sigma_m, range_sigma_m());
+  // A set spread over metres (after a kidnap, a reseed) has particles centimetres apart at best:
+  // weighed with the sharp likelihood, the one that happens to sit nearest a partial fit takes
+  // all the weight within a few scans, wherever the truth is. Weighed with a wider one until it
+  // has settled, it narrows as the evidence builds (AMCL's default sigma_hit is 0.2 m).
+  weigh_sigma_m_ = health_ == LocalizationHealth::kOk
+                       ? hit_sigma_m_
+                       : std::hypot(hit_sigma_m_, p_.unsettled_sigma_m);
 }
 
 void ParticleLocalizer::tabulate_log_likelihood() {
-  if (hit_sigma_m_ == tabulated_sigma_m_) return;
-  tabulated_sigma_m_ = hit_sigma_m_;
+  if (weigh_sigma_m_ == tabulated_sigma_m_) return;
+  tabulated_sigma_m_ = weigh_sigma_m_;
   // log(z_hit exp(-d^2 / 2 s^2) + z_rand) against d^2 up to the field's reach: a table of it,
   // interpolated, in place of an exp and a log per beam and particle (the filter's main cost).
-  const double k = 0.5 / sq(hit_sigma_m_);
+  const double k = 0.5 / sq(weigh_sigma_m_);
   log_table_.resize(kLogTableSize + 1);
   for (std::size_t i = 0; i <= kLogTableSize; ++i)
     log_table_[i] = std::log(
@@ -250,8 +291,7 @@ double ParticleLocalizer::weigh() {
   return fit;
 }
 
-void ParticleLocalizer::resample(const std::vector<std::pair<geom::Pose2, double>>& candidates,
-                                 double fresh) {
+void ParticleLocalizer::resample(const std::vector<Place>& candidates, double fresh) {
   const WeightedDraw draw(set_);
   std::unordered_set<std::uint64_t> bins;
   const std::size_t floor = static_cast<std::size_t>(std::max(1, p_.min_particles));
@@ -268,19 +308,33 @@ void ParticleLocalizer::resample(const std::vector<std::pair<geom::Pose2, double
                         floor, ceiling);
     if (static_cast<double>(scratch_.size()) >= kept_share * static_cast<double>(needed)) break;
   }
-  // Sensor resetting: the fresh share about the places the scan fits, split evenly.
+  // Sensor resetting: the fresh share about the places the scan fits, split evenly, each drawn
+  // over its place's spread (Olson's covariance of the near-best poses): along a lone wall, where
+  // the scan leaves the place open, the fresh particles cover the wall rather than points a
+  // metre apart.
+  const std::size_t kept = scratch_.size();
+  std::vector<double> inverse_density;
   if (!candidates.empty()) {
     const std::size_t room = ceiling > scratch_.size() ? ceiling - scratch_.size() : 0;
     const std::size_t each = std::min(
         room / candidates.size(),
         std::max<std::size_t>(
             30, static_cast<std::size_t>(fresh * static_cast<double>(needed)) / candidates.size()));
-    const double spread = matcher_->resolution_m();
-    for (const auto& [pose, score] : candidates)
-      for (std::size_t k = 0; k < each; ++k)
-        scratch_.push_back({pose.x + normal(spread), pose.y + normal(spread),
-                            geom::wrap_angle(pose.yaw + normal(0.03)),
-                            bias_ + normal(std::sqrt(bias_var_)), 1.0});
+    std::vector<PlaceSpread> places;
+    for (const Place& place : candidates)
+      places.emplace_back(
+          place, Eigen::Vector3d(matcher_->resolution_m(), matcher_->resolution_m(), 0.03));
+    for (const PlaceSpread& place : places)
+      for (std::size_t k = 0; k < each; ++k) {
+        const geom::Pose2 x = place.draw([&] { return normal(1.0); });
+        scratch_.push_back({x.x, x.y, x.yaw, bias_ + normal(std::sqrt(bias_var_)), 1.0});
+        // Importance weight: one over the density the fresh particles were drawn from (the
+        // mixture of the places), so that a place drawn densely (a tight match) does not win
+        // over one drawn thinly (a match open along a wall) by numbers alone.
+        double density = 0;
+        for (const PlaceSpread& other : places) density += other.density(x);
+        inverse_density.push_back(1.0 / std::max(density, 1e-300));
+      }
   }
   // Roughening: copies of one particle spread a little, so that repeated weighing at rest does
   // not collapse the set onto a point (it would be sure of itself beyond what the scans say).
@@ -288,8 +342,14 @@ void ParticleLocalizer::resample(const std::vector<std::pair<geom::Pose2, double
     q.x += normal(p_.jitter_m);
     q.y += normal(p_.jitter_m);
     q.yaw = geom::wrap_angle(q.yaw + normal(p_.jitter_rad));
-    q.w = 1.0 / static_cast<double>(scratch_.size());
   }
+  // The kept particles weigh alike; the fresh ones by their importance weights, scaled so that
+  // the fresh share keeps its share of the weight.
+  double mean_inverse = 0;
+  for (double v : inverse_density) mean_inverse += v / static_cast<double>(inverse_density.size());
+  const double n = static_cast<double>(scratch_.size());
+  for (std::size_t k = 0; k < scratch_.size(); ++k)
+    scratch_[k].w = (k < kept ? 1.0 : inverse_density[k - kept] / mean_inverse) / n;
   set_.swap(scratch_);
 }
 
@@ -353,6 +413,21 @@ void ParticleLocalizer::judge(const LidarScan& scan) {
     range_learnt_.add(robust_variance(residuals_));
 }
 
+ParticleLocalizer::Place ParticleLocalizer::polish(const LidarScan& scan, Place place) const {
+  // A wide window is searched in coarse rotation steps (a return 20 m away moves up to 17 cm
+  // between them): each place it finds is matched again in a narrow window at full resolution,
+  // climbing while that improves it, so that places are ranked by how well the scan fits them,
+  // not by how near the coarse grid passed to each. The narrow match's spread says along what
+  // the scan leaves the place open (a lone wall).
+  const MatchWindow narrow{0.5 * global_.matcher.apart_m, 0.5 * global_.matcher.apart_rad};
+  for (int climb = 0; climb < 4; ++climb) {
+    const std::optional<ScanMatch> fine = matcher_->match(scan, place.pose, narrow);
+    if (!fine || fine->score <= place.score) break;
+    place = {fine->pose, fine->score, fine->spread};
+  }
+  return place;
+}
+
 ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& scan) {
   Reseed out;
   if (!matcher_) matcher_.emplace(map_, reseed_matcher(global_.matcher));
@@ -361,7 +436,8 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
     return geom::distance(l.position(), r.position()) > global_.matcher.apart_m ||
            std::fabs(geom::wrap_angle(l.yaw - r.yaw)) > global_.matcher.apart_rad;
   };
-  std::vector<std::pair<geom::Pose2, double>> found;
+  auto by_score = [](const Place& l, const Place& r) { return l.score > r.score; };
+  std::vector<Place> found;
   const int rings = std::max(0, p_.reseed_rings - 1);
   for (int ring = 0; ring <= rings; ++ring) {
     for (int a = -ring; a <= ring; ++a)
@@ -371,16 +447,15 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
                                  estimate_.y + 2.0 * p_.reseed_tile_m * b, estimate_.yaw};
         const std::optional<ScanMatch> m = matcher_->match(scan, centre, window);
         if (!m) continue;
-        for (const auto& alt : m->alternatives)
-          if (alt.second >= global_.matcher.min_score) found.push_back(alt);
+        for (const auto& [pose, score] : m->alternatives) {
+          const Place place = polish(scan, {pose, score, m->spread});
+          if (place.score >= global_.matcher.min_score) found.push_back(place);
+        }
       }
     // The best place for the scan about the estimate is the estimate itself: what the map did not
     // explain are things it lacks (boxes, people), not a kidnap. Nothing wider is searched.
     if (ring == 0 && !found.empty() &&
-        !apart(std::max_element(found.begin(), found.end(),
-                                [](const auto& l, const auto& r) { return l.second < r.second; })
-                   ->first,
-               estimate_)) {
+        !apart(std::min_element(found.begin(), found.end(), by_score)->pose, estimate_)) {
       out.estimate_fits = true;
       return out;
     }
@@ -388,15 +463,14 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
   // No place fits the scan well anywhere: what it sees is mostly things the map lacks (a box in
   // an open yard). No evidence against the estimate either.
   out.estimate_fits = found.empty();
-  std::stable_sort(found.begin(), found.end(),
-                   [](const auto& l, const auto& r) { return l.second > r.second; });
-  for (const auto& f : found) {
+  std::stable_sort(found.begin(), found.end(), by_score);
+  for (const Place& f : found) {
     if (static_cast<int>(out.candidates.size()) >= global_.matcher.max_alternatives) break;
     if (!std::all_of(out.candidates.begin(), out.candidates.end(),
-                     [&](const auto& k) { return apart(k.first, f.first); }))
+                     [&](const Place& k) { return apart(k.pose, f.pose); }))
       continue;
     const std::optional<double> agree =
-        scan_agreement(raycaster_, scan, f.first, global_.verify_tolerance_m);
+        scan_agreement(raycaster_, scan, f.pose, global_.verify_tolerance_m);
     if (agree && *agree >= global_.verify_agreement) out.candidates.push_back(f);
   }
   return out;
@@ -418,7 +492,7 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   summarise();
   judge(scan);
   // Sensor resetting where the map contradicts the estimate (or it is lost).
-  std::vector<std::pair<geom::Pose2, double>> candidates;
+  std::vector<Place> candidates;
   // Contradicted, not merely wide: a set spread over open ground contracts by itself when the
   // plant comes into view, and look-alikes drawn in would only split it.
   const bool contradicted = failed_matches_ >= 2;

@@ -42,6 +42,9 @@ struct ParticleParams {
   double z_hit = 0.9;
   double z_rand = 0.05;
   double field_sigma_m = 0.05;
+  /// While the filter is not `ok` the weights use a likelihood this much wider (added in
+  /// quadrature), so that a set spread over metres narrows as evidence builds, not at once.
+  double unsettled_sigma_m = 0.2;
   double field_resolution_m = 0.05;  ///< the likelihood field's cells (likelihood_field.h)
   double update_min_m = 0.05;    ///< a well-localised filter weighs a scan after this much travel
   double update_min_rad = 0.05;  ///< or turn (the same scan again at rest would make it too sure)
@@ -88,6 +91,13 @@ class ParticleLocalizer final : public PoseEstimator {
   bool lost_in_view() const override { return health_ == LocalizationHealth::kLost && unmatched_; }
   int relocalizations() const override { return relocalizations_; }
 
+  /// A place a global match finds for a scan: the pose, its score and the spread of the poses
+  /// about it that fit about as well (ScanMatch::spread).
+  struct Place {
+    geom::Pose2 pose;
+    double score = 0;
+    Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  };
   /// A pose and the gyro bias that particle assumes: a bias error turns the heading steadily,
   /// so each particle carries its own and the scans choose among them (as the EKF's state does).
   struct Particle {
@@ -111,15 +121,17 @@ class ParticleLocalizer final : public PoseEstimator {
   void tabulate_log_likelihood();
   /// A return's log-likelihood at distance d from the nearest mapped surface.
   double log_likelihood(double d) const;
-  /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate poses.
-  void resample(const std::vector<std::pair<geom::Pose2, double>>& candidates, double fresh);
+  /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate places.
+  void resample(const std::vector<Place>& candidates, double fresh);
   /// The places a global match finds for the scan about the estimate that the beams confirm, or
   /// that the best place near the estimate is the estimate itself.
   struct Reseed {
-    std::vector<std::pair<geom::Pose2, double>> candidates;
+    std::vector<Place> candidates;
     bool estimate_fits = false;  ///< or nothing fits anywhere: no evidence against it
   };
   Reseed reseed_candidates(const LidarScan& scan);
+  /// The place matched again in a narrow window at full resolution (see the .cpp).
+  Place polish(const LidarScan& scan, Place place) const;
   void summarise();
   void judge(const LidarScan& scan);
   /// Share of the weighed returns within three sigmas of a mapped surface from `pose`.
@@ -141,6 +153,7 @@ class ParticleLocalizer final : public PoseEstimator {
   std::vector<Particle> set_, scratch_;
   std::vector<geom::Vec2> points_;  // the weighed beams' returns in the robot frame
   double hit_sigma_m_ = 0;          // the likelihood's sigma for them
+  double weigh_sigma_m_ = 0;        // and the one they are weighed with (wider while unsettled)
   static constexpr std::size_t kLogTableSize = 4096;
   std::vector<double> log_table_;  // log-likelihood against the squared distance
   double tabulated_sigma_m_ = -1;

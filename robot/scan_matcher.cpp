@@ -97,6 +97,7 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
     for (long i = 0; i < nx_; ++i)
       grid[static_cast<std::size_t>(j * nx_ + i)] = d[static_cast<std::size_t>(i)];
   }
+  mark_standable(map);
   fine_.resize(cells);
   const double k = res_ * res_ / (2.0 * p_.hit_sigma_m * p_.hit_sigma_m);
   for (std::size_t c = 0; c < cells; ++c) fine_[c] = std::exp(-k * grid[c]);
@@ -118,6 +119,32 @@ ScanMatcher::ScanMatcher(const worlds::World& map, ScanMatcherParams params) : p
         m = std::max(m, along_x[static_cast<std::size_t>((j + a) * nx_ + i)]);
       coarse_[static_cast<std::size_t>(j * nx_ + i)] = m;
     }
+}
+
+void ScanMatcher::mark_standable(const worlds::World& map) {
+  // Cells whose centre the robot's centre could occupy: on the floor, off every mapped box, with
+  // a cell of slack for the grid. (A scan of one long wall fits as well from the wall's far
+  // side, outside the plant, as from where the robot stands: no such pose is an answer.)
+  const double body = std::max(0.0, map.robot.radius_m - res_);
+  standable_.assign(static_cast<std::size_t>(nx_ * ny_), 0);
+  auto fill = [&](const geom::Rect& r, std::uint8_t value) {
+    const long i0 = std::max(0L, static_cast<long>(std::ceil((r.xmin - origin_.x) / res_ - 0.5)));
+    const long i1 =
+        std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax - origin_.x) / res_ - 0.5)));
+    const long j0 = std::max(0L, static_cast<long>(std::ceil((r.ymin - origin_.y) / res_ - 0.5)));
+    const long j1 =
+        std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax - origin_.y) / res_ - 0.5)));
+    for (long j = j0; j <= j1; ++j)
+      for (long i = i0; i <= i1; ++i) standable_[static_cast<std::size_t>(j * nx_ + i)] = value;
+  };
+  fill(map.floor.inflated(-body), 1);
+  for (const geom::Rect& r : map.obstacles) fill(r.inflated(body), 0);
+}
+
+bool ScanMatcher::standable(const geom::Vec2& p) const {
+  const long i = static_cast<long>(std::floor((p.x - origin_.x) / res_));
+  const long j = static_cast<long>(std::floor((p.y - origin_.y) / res_));
+  return inside(i, j) && standable_[static_cast<std::size_t>(j * nx_ + i)] != 0;
 }
 
 double ScanMatcher::likelihood(geom::Vec2 p) const {
@@ -159,9 +186,12 @@ ScanMatcher::SearchSteps ScanMatcher::search_steps(const MatchWindow& window, do
   // The work is bounded: coarser rotation steps for wide windows, then a narrower window.
   double dyaw = std::clamp(res_ / std::max(reach, 1.0), 0.002, p_.max_yaw_step_rad);
   const long budget = std::max(1L, p_.max_candidates);
-  dyaw =
-      std::min(p_.max_yaw_step_rad,
-               std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, double(budget) / blocks(n_xy))));
+  // 2 n_yaw + 1 rotations fit the budget: n_yaw = ceil(yaw / dyaw) rounds up by one step each
+  // way, hence the two spare. (Without them a window of +-3.5 m at all headings came out one
+  // rotation over, and was narrowed to +-2.6 m: tiles of reseeding searches 7 m apart left gaps.)
+  const double rotations = std::floor(double(budget) / double(blocks(n_xy)));
+  dyaw = std::min(p_.max_yaw_step_rad,
+                  std::max(dyaw, 2.0 * window.yaw_rad / std::max(1.0, rotations - 2.0)));
   const long n_yaw = static_cast<long>(std::ceil(window.yaw_rad / dyaw));
   while ((2 * n_yaw + 1) * blocks(n_xy) > budget && n_xy > b) n_xy = n_xy * 3 / 4;
   return {b, n_xy, n_yaw, dyaw};
@@ -252,6 +282,7 @@ std::optional<ScanMatch> ScanMatcher::match(const LidarScan& scan, const geom::P
     const auto& cells = cells_by_yaw[static_cast<std::size_t>(c.yaw_step + n_yaw)];
     for (long i = c.i; i < c.i + b && i <= n_xy; ++i)
       for (long j = c.j; j < c.j + b && j <= n_xy; ++j) {
+        if (!standable({prior.x + i * res_, prior.y + j * res_})) continue;
         double score = 0;
         for (const auto& [ci, cj] : cells) score += fine(ci + i, cj + j);
         score /= n_points;

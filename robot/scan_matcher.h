@@ -5,12 +5,13 @@
 // blocks of cells; a match scores every pose of a window (translations on the grid, rotations in
 // steps that move the farthest return by about a cell) by the likelihood of the scan's returns,
 // bounding whole blocks of translations by the coarse grid first (branch and bound), so that most
-// are never scored exactly. It says how sure it is: the best pose's score, and the best score of
-// any pose clearly apart from it (a plant of repeated racks matches in many places). Robot side:
-// the map only, no truth.
+// are never scored exactly. Only poses where the robot could stand are answers. It says how sure
+// it is: the best pose's score, and the best score of any pose clearly apart from it (a plant of
+// repeated racks matches in many places). Robot side: the map only, no truth.
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -91,6 +92,9 @@ class ScanMatcher {
   /// (alternatives), from the exact scores.
   void rank_apart(const std::vector<Scored>& good, const geom::Pose2& prior, double dyaw,
                   ScanMatch& best) const;
+  void mark_standable(const worlds::World& map);
+  /// Whether the robot's centre could be at p on the map (standable_).
+  bool standable(const geom::Vec2& p) const;
   double fine(long i, long j) const {
     return inside(i, j) ? fine_[static_cast<std::size_t>(j * nx_ + i)] : 0.0;
   }
@@ -103,8 +107,9 @@ class ScanMatcher {
   double res_ = 0.1;
   geom::Vec2 origin_;  // lower left corner of cell (0, 0)
   long nx_ = 0, ny_ = 0;
-  std::vector<double> fine_;    // likelihood per cell
-  std::vector<double> coarse_;  // max of fine_ over [i, i + block) x [j, j + block)
+  std::vector<double> fine_;             // likelihood per cell
+  std::vector<double> coarse_;           // max of fine_ over [i, i + block) x [j, j + block)
+  std::vector<std::uint8_t> standable_;  // 1 where the robot's centre could be (mark_standable)
 };
 
 }  // namespace plantsim::robot
