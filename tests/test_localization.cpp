@@ -92,6 +92,27 @@ TEST(ScanMatcher, FindsTheTruePoseFromAnOffPrior) {
   EXPECT_LT(m->scored, window);
 }
 
+TEST(ScanMatcher, AWideWindowAtAllHeadingsKeepsItsFullReach) {
+  // A reseeding search's tile: +-3.5 m at every heading. Its rotation steps were once rounded so
+  // that the window came out over the work budget and was narrowed to +-2.6 m, leaving gaps
+  // between tiles 7 m apart; a robot 3 m off along x and turned half round was never found.
+  const worlds::World w = l_room();
+  ScanMatcherParams wide;
+  wide.max_candidates =
+      120'000;  // as the particle filter's reseeding searches (particle_localizer)
+  const ScanMatcher matcher(w, wide);
+  const geom::Pose2 truth{3.0, 6.8, 2.5};
+  const LidarScan scan = exact_scan(w, truth);
+  const auto m = matcher.match(scan, {6.0, 4.5, 0.0}, {3.5, M_PI});
+  ASSERT_TRUE(m.has_value());
+  // Coarse rotation steps: the truth among the places it lists, within a cell or two.
+  double nearest = INFINITY;
+  for (const auto& [pose, score] : m->alternatives)
+    if (std::fabs(geom::wrap_angle(pose.yaw - truth.yaw)) < 0.1)
+      nearest = std::min(nearest, geom::distance(pose.position(), truth.position()));
+  EXPECT_LT(nearest, 0.25) << m->alternatives.size() << " places listed";
+}
+
 TEST(ScanMatcher, ALongFeaturelessCorridorIsAmbiguous) {
   worlds::World w;
   w.name = "corridor";
