@@ -102,15 +102,15 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
 std::string trajectory_csv(const sim::EpisodeResult& r) {
   std::string out =
       "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,"
-      "wall_following,target_x_m,target_y_m\n";
+      "wall_following,target_x_m,target_y_m,est_status\n";
   char line[256];
   for (const auto& s : r.trajectory) {
     std::snprintf(line, sizeof line,
-                  "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f\n", s.t_s,
+                  "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f,%s\n", s.t_s,
                   s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw,
                   s.position_sigma_m, s.speed_mps, s.cross_track_m,
                   std::string(controller::to_string(s.phase)).c_str(), s.wall_following ? 1 : 0,
-                  s.target.x, s.target.y);
+                  s.target.x, s.target.y, std::string(robot::to_string(s.health)).c_str());
     out += line;
   }
   return out;

@@ -96,8 +96,8 @@ render::EpisodeOutcome outcome_of(const json& j) {
   e.docked = j["docked"].get<bool>();
   e.position_error_m = j.value("position_error_m", 0.0);
   e.heading_error_deg = j.value("heading_error_deg", 0.0);
-  const double optimum = j.value("optimal_driven_m", j.value("optimal_length_m", 0.0));
-  if (optimum > 0) e.driven_over_optimum = j.value("driven_length_m", 0.0) / optimum;
+  const double shortest = j.value("shortest_possible_m", 0.0);
+  if (shortest > 0) e.driven_over_shortest = j.value("driven_length_m", 0.0) / shortest;
   e.time_s = j.value("time_s", 0.0);
   if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())
     e.localization_error_max_m = j["localization_error_max_m"].get<double>();
@@ -167,7 +167,7 @@ void add_charts(FigureWriter& chart, const ChartData& d,
         "Each episode's worst localisation error (true against estimated) per method, against 10 "
         "cm, and how many episodes' estimator reported worse than ok");
   chart(render::draw_efficiency_chart(d.episodes), "chart_efficiency.png",
-        "Driven length over the exact optimum (ECDF) and time to dock, per method");
+        "Driven length over the shortest possible (ECDF) and time to dock, per method");
   std::set<std::string> worlds;
   for (const render::EpisodeOutcome& e : d.episodes) worlds.insert(e.world);
   if (worlds.size() > 1)

@@ -141,8 +141,9 @@ void run_episodes(const RunContext& run, const std::vector<Episode>& todo, std::
           throw BatchInterrupted("the batch was interrupted; its finished episodes are in " +
                                  jsonl);
         const EpisodeRunner::Run r = runner.run(e);
-        const std::string line =
-            record_line(e, run.spec, run.scenario, r.plant, r.result, r.optimal_m) + "\n";
+        const std::string line = record_line(e, run.spec, run.scenario, r.plant, r.result,
+                                             r.optimal_m, r.shortest_possible_m) +
+                                 "\n";
         {
           std::lock_guard lock(write_mutex);
           if (std::fwrite(line.data(), 1, line.size(), out) != line.size() || std::fflush(out) != 0)

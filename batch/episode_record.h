@@ -2,6 +2,7 @@
 // the metrics of its result, the exact optimum, its driven path thinned for the report.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "batch/batch_spec.h"
@@ -12,8 +13,11 @@
 namespace plantsim::batch {
 
 /// The JSON record (one line, no newline) of episode `e` run on `plant` with result `r`;
-/// `optimal_m` is the exact shortest path to the staging pose.
+/// `optimal_m` is the exact shortest path to the staging pose (the planners' yardstick);
+/// `shortest_possible_m` the driven length's lower bound (docked episodes;
+/// batch/shortest_possible.h).
 std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
-                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m);
+                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m,
+                        std::optional<double> shortest_possible_m);
 
 }  // namespace plantsim::batch

@@ -10,6 +10,7 @@
 #include "batch/episode_space.h"
 #include "batch/plant_faults.h"
 #include "batch/random_start.h"
+#include "batch/shortest_possible.h"
 #include "episode/run_episode.h"
 #include "util/fingerprint.h"
 
@@ -22,11 +23,30 @@ EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
   out.result = episode::run_episode(
       out.plant, planner_for(out.plant, e.world, spec_.planners[e.planner], e.fault), out.config,
       steering_);
+  if (out.result.docked)
+    out.shortest_possible_m = shortest_possible(out.plant, e.world, out.result);
   return out;
 }
 
+std::optional<double> EpisodeRunner::shortest_possible(const worlds::World& plant,
+                                                       std::size_t world,
+                                                       const sim::EpisodeResult& r) {
+  if (r.trajectory.empty()) return std::nullopt;
+  std::unique_ptr<planner::Planner> own;
+  planner::Planner* bound = nullptr;
+  if (plant.unmapped.empty()) {
+    auto& kept = bound_planners_[world];
+    if (!kept) kept = planner::make_planner("vg", shortest_possible_input(plant));
+    bound = kept.get();
+  } else {
+    own = planner::make_planner("vg", shortest_possible_input(plant));
+    bound = own.get();
+  }
+  return shortest_possible_m(*bound, plant.start, r.carries, r.trajectory.back().truth.position());
+}
+
 EpisodeRunner::Run EpisodeRunner::prepare(const Episode& e) {
-  Run out{worlds_[e.world], {}, {}, 0};
+  Run out{worlds_[e.world], {}, {}, 0, std::nullopt};
   worlds::World& w = out.plant;
   const FaultSetting& fault = spec_.faults[e.fault];
   if (fault.charger_map_offset) w.charger_map_offset = *fault.charger_map_offset;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -36,6 +37,8 @@ class EpisodeRunner {
     sim::EpisodeConfig config;
     sim::EpisodeResult result;
     double optimal_m = 0;
+    /// Docked episodes: the shortest path the centre could have driven (batch/shortest_possible.h).
+    std::optional<double> shortest_possible_m;
   };
 
   /// Runs episode `e`: its plant (start, faults), settings and seed, and the exact optimum.
@@ -54,6 +57,11 @@ class EpisodeRunner {
     return *p;
   }
 
+  /// The shortest possible drive of a docked episode (the plant's grown boxes; a world's planner
+  /// kept while no unmapped box makes the episode's plant its own).
+  std::optional<double> shortest_possible(const worlds::World& plant, std::size_t world,
+                                          const sim::EpisodeResult& r);
+
   const BatchSpec& spec_;
   const std::vector<worlds::World>& worlds_;
   const std::vector<std::uint64_t>& contents_;
@@ -63,6 +71,7 @@ class EpisodeRunner {
   const episode::EpisodeSteering steering_;
   std::map<std::tuple<std::size_t, std::string, std::size_t>, std::unique_ptr<planner::Planner>>
       planners_;
+  std::map<std::size_t, std::unique_ptr<planner::Planner>> bound_planners_;  // per world
 };
 
 /// One episode of a scenario run again on its own, exactly as the batch ran it (its start,

@@ -84,7 +84,8 @@ constexpr Field kFields[] = {
     {"localization_not_ok_s", Kind::kNumber, false},
     {"unmapped_seen", Kind::kCount, false},
     {"optimal_length_m", Kind::kNumber, true},
-    {"optimal_driven_m", Kind::kNumber, false},
+    {"optimal_driven_m", Kind::kNumber, false},  // records before shortest_possible_m
+    {"shortest_possible_m", Kind::kNumber, false},
     {"path_mm", Kind::kNumberList, false},
     {"unmapped", Kind::kBoxList, false},
 };

@@ -55,11 +55,11 @@ void ConfigurationTally::add(const json& j) {
   if (opt > 0 && len > 0) a.ratio += len / opt, ++a.ratio_n;
   if (docked)
     a.pos += j["position_error_m"].get<double>(), a.heading += j["heading_error_deg"].get<double>();
-  // Driven length over the optimum on success: how far a reactive method wanders.
-  const double opt_driven =
-      j.value("optimal_driven_m", opt);  // records before it: the plan's optimum
-  if (docked && opt_driven > 0)
-    a.driven_ratio += j["driven_length_m"].get<double>() / opt_driven, ++a.driven_n;
+  // Driven length over the shortest possible on success: how far a method wanders. Records
+  // without the bound (older ones) have no value: their optimum was no bound.
+  const double shortest = j.value("shortest_possible_m", 0.0);
+  if (docked && shortest > 0)
+    a.driven_ratio += j["driven_length_m"].get<double>() / shortest, ++a.driven_n;
   a.local_minima += j.value("local_minima", 0);
   a.wall_follows += j.value("wall_follows", 0);
   const std::string status = j["status"].get<std::string>();
@@ -144,7 +144,7 @@ std::string summary_header() {
   std::string out =
       "world,planner,controller,fault,episodes,succeeded,success_rate,ci95_low,ci95_high,"
       "mean_time_s,path_over_optimum,mean_position_error_mm,mean_heading_error_deg,collisions,"
-      "mean_retries,driven_over_optimum,mean_local_minima,mean_wall_follows,trapped,timeouts,"
+      "mean_retries,driven_over_shortest,mean_local_minima,mean_wall_follows,trapped,timeouts,"
       "collisions_robot_moving,max_localization_error_mm,localization_not_ok,mean_stops,"
       "mean_replans,mean_recoveries,charging,docked_not_ok,docked_lost,p95_localization_error_mm,"
       "localization_not_ok_share";

@@ -191,6 +191,7 @@ class EpisodeRun::Loop {
           {was.x + kidnap.dx_m, was.y + kidnap.dy_m, geom::wrap_angle(was.yaw + kidnap.dyaw_rad)});
     }
     sensors_.robot_placed(physics_.robot_pose());
+    recorder_.carried(t_s, was, physics_.robot_pose());
   }
 
   void step(double dt_s) {

@@ -122,10 +122,10 @@ void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perc
   const Vec2 target_at = target ? target->box.center() : Vec2{};
   if (d)
     r_.trajectory.push_back({t_s, truth, p.pose, p.position_sigma_m, speed, d->cross_track_m,
-                             d->phase, d->wall_following, target_at});
+                             d->phase, d->wall_following, target_at, p.health});
   else
     r_.trajectory.push_back({t_s, truth, p.pose, p.position_sigma_m, speed, 0,
-                             controller::DockPhase::kTravel, false, target_at});
+                             controller::DockPhase::kTravel, false, target_at, p.health});
   if (!last && r_.trajectory.size() >= std::max<std::size_t>(2, config_.log_limits.trajectory)) {
     keep_every_other(r_.trajectory);
     r_.thinning.trajectory_every *= 2;

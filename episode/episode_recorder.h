@@ -39,6 +39,8 @@ class EpisodeRecorder {
   /// Every physics step, before and after it (collisions, driven length).
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   void after_step(const PhysicsWorld& physics);
+  /// A fault carried the robot from `from` and set it down at `to` (a kidnap).
+  void carried(double t_s, const Pose2& from, const Pose2& to) { metrics_.carried(t_s, from, to); }
 
   /// Every control step, once perception has spoken: its errors against the truth, its health,
   /// a snapshot of what it saw. True when the episode ends here: the moving target is caught.

@@ -185,7 +185,7 @@ const std::vector<std::string>& trajectory_columns() {
   static const std::vector<std::string> c = {
       "t_s",         "x_m",         "y_m",       "yaw_rad",       "est_x_m", "est_y_m",
       "est_yaw_rad", "est_sigma_m", "speed_mps", "cross_track_m", "phase",   "wall_following",
-      "target_x_m",  "target_y_m"};
+      "target_x_m",  "target_y_m",  "est_status"};
   return c;
 }
 
@@ -208,7 +208,8 @@ py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
                           static_cast<double>(s.phase),
                           s.wall_following ? 1.0 : 0.0,
                           s.target.x,
-                          s.target.y};
+                          s.target.y,
+                          static_cast<double>(s.health)};
     for (std::size_t c = 0; c < std::size(row); ++c)
       v(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(c)) = row[c];
   }

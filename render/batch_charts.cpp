@@ -239,7 +239,7 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   for (const auto& e : episodes) {
     if (!e.docked) continue;
     const std::size_t m = method_index(methods, e.method);
-    if (e.driven_over_optimum > 0) ratio[m].push_back(e.driven_over_optimum);
+    if (e.driven_over_shortest > 0) ratio[m].push_back(e.driven_over_shortest);
     times[m].push_back(e.time_s);
     ++counts[m];
   }
@@ -253,24 +253,25 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
   fig.text("How far and how long, docked episodes", 20, 28, 18, palette::kAxis, Anchor::kLeft,
            true);
   fig.text(
-      "left: share of episodes driving at most x times the exact optimum (to the staging pose, "
-      "then the straight approach); right: time to dock",
+      "left: share of episodes driving at most x times the shortest path their robot's centre "
+      "could take (a lower bound); right: time to dock",
       20, 48, 13, palette::kAxis);
   const double half = (width_px - 120) / 2.0;
   const PixelBox left{80, top, 80 + half - 40, height - 60.0};
-  double hi = 1.1;
+  // From 1 (the bound) unless a value falls below it, so every step is drawn inside the axes.
+  double lo = 1.0, hi = 1.1;
   for (auto& v : ratio) {
     std::sort(v.begin(), v.end());
-    if (!v.empty()) hi = std::max(hi, v.back() * 1.02);
+    if (!v.empty()) lo = std::min(lo, v.front()), hi = std::max(hi, v.back() * 1.02);
   }
-  const Axes a{left, 1.0, hi, 0, 1};
-  axis(fig, a, true, "driven length / optimal length");
+  const Axes a{left, lo, hi, 0, 1};
+  axis(fig, a, true, "driven length / shortest possible");
   axis(fig, a, false, "", 100.0, " %");
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
   for (std::size_t m = 0; m < methods.size(); ++m) {
     if (ratio[m].empty()) continue;
-    std::vector<Vec2> steps{{a.px(1.0), a.py(0)}};
+    std::vector<Vec2> steps{{a.px(lo), a.py(0)}};
     for (std::size_t i = 0; i < ratio[m].size(); ++i) {
       steps.push_back({a.px(ratio[m][i]), steps.back().y});
       steps.push_back({a.px(ratio[m][i]), a.py(static_cast<double>(i + 1) / ratio[m].size())});
@@ -279,8 +280,8 @@ Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int wid
     c.pixel_polyline(steps, 2.2, method_colour(m));
     legend.push_back({method_colour(m), methods[m]});
   }
-  fig.text("ECDF of driven length over the optimum", left.left, left.top - 10, 14, palette::kAxis,
-           Anchor::kLeft, true);
+  fig.text("ECDF of driven length over the shortest possible", left.left, left.top - 10, 14,
+           palette::kAxis, Anchor::kLeft, true);
   const PixelBox right{80 + half + 180, top, width_px - 40.0, height - 60.0};
   method_labels(fig, right, methods, counts);
   double tmax = 1;

@@ -1,7 +1,7 @@
 // The charts of a batch report: success rate with its Wilson 95 % interval per configuration,
-// strip plots of the docking errors with their gates, the ECDF of driven length over the optimum
-// and the time to dock per method, and success against a swept fault parameter with its band.
-// They take plain outcomes, not the batch's record format: batch/ turns records into these.
+// strip plots of the docking errors with their gates, the ECDF of driven length over the shortest
+// possible and the time to dock per method, and success against a swept fault parameter with its
+// band. They take plain outcomes, not the batch's record format: batch/ turns records into these.
 #pragma once
 
 #include <string>
@@ -27,7 +27,7 @@ struct EpisodeOutcome {
   bool docked = false;
   double position_error_m = 0;
   double heading_error_deg = 0;
-  double driven_over_optimum = -1;  ///< driven length over the exact optimum (< 0: unknown)
+  double driven_over_shortest = -1;  ///< driven length over the shortest possible (< 0: unknown)
   double time_s = 0;
   double localization_error_max_m = -1;  ///< worst true-vs-estimated position error (< 0: unknown)
   bool localization_ok = true;           ///< the estimator never reported worse than `ok`
@@ -54,7 +54,7 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
 /// line `ok` must never stand beside, and how many episodes' estimator reported worse than `ok`.
 Image draw_localization_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
                               FigureLayout* layout = nullptr);
-/// ECDF of driven length over the optimum (docked episodes) and time to dock, per method.
+/// ECDF of driven length over the shortest possible (docked episodes) and time to dock, per method.
 Image draw_efficiency_chart(const std::vector<EpisodeOutcome>& episodes, int width_px = 1400,
                             FigureLayout* layout = nullptr);
 /// Time to dock of docked episodes per world (worlds differ in size: each its own scale), one

@@ -60,6 +60,47 @@ void add_events_and_failure(json& j, const sim::EpisodeResult& run) {
                     {"detail", run.failure->detail}};
 }
 
+/// The trajectory, thinned to the replay's sample limit (the end always kept), and the carries.
+void add_trajectory(json& j, const sim::EpisodeResult& run, const ReplayOptions& o) {
+  const std::size_t n = run.trajectory.size();
+  const std::size_t step =
+      std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
+  json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(),
+       v = json::array(), docking = json::array(), ex = json::array(), ey = json::array(),
+       sigma = json::array(), health = json::array();
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < n; i += step) kept.push_back(i);
+  if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);  // the end, always
+  for (std::size_t i : kept) {
+    const auto& s = run.trajectory[i];
+    t.push_back(round_to(s.t_s, 1e-3));
+    x.push_back(round_to(s.truth.x, 1e-4));
+    y.push_back(round_to(s.truth.y, 1e-4));
+    yaw.push_back(round_to(s.truth.yaw, 1e-4));
+    v.push_back(round_to(s.speed_mps, 1e-3));
+    docking.push_back(s.phase == controller::DockPhase::kTravel ? 0 : 1);
+    ex.push_back(round_to(s.estimate.x, 1e-4));
+    ey.push_back(round_to(s.estimate.y, 1e-4));
+    sigma.push_back(round_to(s.position_sigma_m, 1e-4));
+    health.push_back(static_cast<int>(s.health));
+  }
+  j["t"] = t;
+  j["x"] = x;
+  j["y"] = y;
+  j["yaw"] = yaw;
+  j["v"] = v;
+  j["docking"] = docking;
+  j["ex"] = ex;
+  j["ey"] = ey;
+  j["sigma"] = sigma;
+  j["health"] = health;  // the estimator's own verdict per frame: 0 ok, 1 degraded, 2 lost
+  j["carries"] = json::array();
+  for (const auto& c : run.carries)
+    j["carries"].push_back({{"t", round_to(c.t_s, 1e-3)},
+                            {"from", {round_to(c.from.x, 1e-3), round_to(c.from.y, 1e-3)}},
+                            {"to", {round_to(c.to.x, 1e-3), round_to(c.to.y, 1e-3)}}});
+}
+
 json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
                  const ReplayOptions& o) {
   json j;
@@ -86,36 +127,7 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   for (const auto& e : run.events)
     if (e.kind == sim::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
   j["plan_from_t"] = j["first_plan"].empty() ? 0.0 : round_to(last_replan_s, 1e-3);
-  const std::size_t n = run.trajectory.size();
-  const std::size_t step =
-      std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
-  json t = json::array(), x = json::array(), y = json::array(), yaw = json::array(),
-       v = json::array(), docking = json::array(), ex = json::array(), ey = json::array(),
-       sigma = json::array();
-  std::vector<std::size_t> kept;
-  for (std::size_t i = 0; i < n; i += step) kept.push_back(i);
-  if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);  // the end, always
-  for (std::size_t i : kept) {
-    const auto& s = run.trajectory[i];
-    t.push_back(round_to(s.t_s, 1e-3));
-    x.push_back(round_to(s.truth.x, 1e-4));
-    y.push_back(round_to(s.truth.y, 1e-4));
-    yaw.push_back(round_to(s.truth.yaw, 1e-4));
-    v.push_back(round_to(s.speed_mps, 1e-3));
-    docking.push_back(s.phase == controller::DockPhase::kTravel ? 0 : 1);
-    ex.push_back(round_to(s.estimate.x, 1e-4));
-    ey.push_back(round_to(s.estimate.y, 1e-4));
-    sigma.push_back(round_to(s.position_sigma_m, 1e-4));
-  }
-  j["t"] = t;
-  j["x"] = x;
-  j["y"] = y;
-  j["yaw"] = yaw;
-  j["v"] = v;
-  j["docking"] = docking;
-  j["ex"] = ex;
-  j["ey"] = ey;
-  j["sigma"] = sigma;
+  add_trajectory(j, run, o);
   add_events_and_failure(j, run);
   j["moving_label"] = moving_tracks_label(run.moving_tracks);  // as the run figure's legend
   j["moving"] = json::array();
@@ -203,7 +215,12 @@ constexpr const char* kPlayer = R"JS(
     // Before the last replan the first plan is the one being followed: drawn as the plan.
     const replanned = time >= D.plan_from_t;
     if (replanned) line(g, D.first_plan, C.first_plan, 1.5, [6, 5]);
+    // A carry (a kidnap) is no driving: no trail across it, a thin dotted line from where the
+    // robot was lifted to where it was set down.
+    const carriedIn = k => D.carries.some(c => T[k - 1] <= c.t && c.t <= T[k]);  // a carry's own time is either side
+    D.carries.forEach(c => { if (c.t <= time) line(g, [c.from, c.to], C.axis, 1, [2, 4]); });
     for (let k = 1; k <= i; k++) {
+      if (carriedIn(k)) continue;
       ctx.beginPath(); ctx.strokeStyle = speedColour(D.v[k]); ctx.lineWidth = 4; ctx.lineCap = 'round';
       ctx.moveTo(g.px(D.x[k - 1]), g.py(D.y[k - 1])); ctx.lineTo(g.px(D.x[k]), g.py(D.y[k])); ctx.stroke();
     }
@@ -241,9 +258,16 @@ constexpr const char* kPlayer = R"JS(
     // Clock and legend.
     ctx.fillStyle = C.axis; ctx.font = 'bold 15px DejaVu Sans, sans-serif';
     const off = N ? Math.hypot(D.x[i] - D.ex[i], D.y[i] - D.ey[i]) : 0;
-    ctx.fillText(D.world + '   t = ' + time.toFixed(1) + ' s of ' + tEnd.toFixed(1) + ' s   ' +
-                 (N && D.docking[i] ? 'docking' : 'travel') + '   ' + speedSel.value + 'x   estimate ' +
-                 (1000 * off).toFixed(0) + ' mm off (sigma ' + (N ? (1000 * D.sigma[i]).toFixed(0) : 0) + ' mm)', 10, 20);
+    const clock = D.world + '   t = ' + time.toFixed(1) + ' s of ' + tEnd.toFixed(1) + ' s   ' +
+                  (N && D.docking[i] ? 'docking' : 'travel') + '   ' + speedSel.value + 'x   estimate ' +
+                  (1000 * off).toFixed(0) + ' mm off (sigma ' + (N ? (1000 * D.sigma[i]).toFixed(0) : 0) + ' mm)';
+    ctx.fillText(clock, 10, 20);
+    // The estimator's own verdict at this frame, in the failure's colour when it says lost.
+    const health = N ? ['ok', 'degraded', 'lost'][D.health[i]] : 'ok';
+    const clockWidth = ctx.measureText(clock).width;
+    ctx.fillStyle = health === 'ok' ? C.axis : health === 'lost' ? C.failure : C.retry;
+    ctx.fillText('   estimator ' + health, 10 + clockWidth, 20);
+    section.dataset.replayEstimator = health;
     const F = D.failure;
     if (F && time >= Math.min(F.t, tEnd) - 1e-3) {  // the end: why
       ctx.font = 'bold 15px DejaVu Sans, sans-serif';
@@ -262,6 +286,7 @@ constexpr const char* kPlayer = R"JS(
     if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan]);
     if (D.moving.length) items.push([D.moving_label, C.moving]);
     if (D.unmapped.length) items.push(['not on map', C.unmapped]);
+    if (D.carries.length) items.push(['carried (dotted)', C.axis]);
     ctx.font = '13px DejaVu Sans, sans-serif';
     items.forEach((it, k) => {
       const y = 50 + 20 * k; ctx.fillStyle = it[1]; ctx.fillRect(W - legendW, y - 8, 22, 6);

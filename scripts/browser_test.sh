@@ -3,7 +3,7 @@
 # comparison and the dashboard linking them are made in a scratch folder and opened in headless
 # Chromium. Fails when any image does not load (data-images-loaded on <html>, set by the page
 # after its load event) or when the replay does not advance (data-replay-frames and
-# data-replay-time on its section), or when the dashboard is wider than a 1,400-pixel window
+# data-replay-time on its section) or shows no estimator verdict (data-replay-estimator), or when the dashboard is wider than a 1,400-pixel window
 # (data-page-width, the page's scroll width). Usage: scripts/browser_test.sh BUILD_DIR
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -53,6 +53,13 @@ if [ "${frames:-0}" -ge 10 ] && awk -v t="$time_s" 'BEGIN { exit !(t > 0) }'; th
   echo "browser_test: the replay advanced: $frames frames drawn, at t = $time_s s"
 else
   echo "browser_test: FAIL the replay did not advance (frames ${frames:-none}, time ${time_s:-none})" >&2
+  status=1
+fi
+estimator="$(grep -o 'data-replay-estimator="[a-z]*"' <<< "$html" | cut -d'"' -f2 || true)"
+if [[ "$estimator" =~ ^(ok|degraded|lost)$ ]]; then
+  echo "browser_test: the replay shows the estimator's verdict per frame ($estimator at the last frame drawn)"
+else
+  echo "browser_test: FAIL the replay shows no estimator verdict (${estimator:-none})" >&2
   status=1
 fi
 exit $status

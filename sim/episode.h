@@ -102,6 +102,7 @@ struct TrajectorySample {
   controller::DockPhase phase;
   bool wall_following = false;  ///< potential-field travel in its wall-following state
   Vec2 target;                  ///< where the moving target was (worlds with one)
+  robot::LocalizationHealth health = robot::LocalizationHealth::kOk;  ///< what the estimator said
 };
 
 struct EpisodeResult {
@@ -183,6 +184,14 @@ struct EpisodeResult {
     Vec2 at;  ///< true position (for a collision, the robot's centre when contact began)
   };
   std::vector<Event> events;
+  /// A fault carried the robot off by hand (a kidnap): the truth's path is driven in legs
+  /// between carries, and the carry is not driven length.
+  struct Carry {
+    double t_s;
+    Pose2 from;
+    Pose2 to;
+  };
+  std::vector<Carry> carries;
   /// How the logs were thinned to their limits (EpisodeConfig::log_limits): 1 and 0 when not.
   struct LogThinning {
     int trajectory_every = 1;  ///< control periods between the trajectory's samples at the end

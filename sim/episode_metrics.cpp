@@ -57,6 +57,12 @@ void EpisodeMetrics::after_step(const PhysicsWorld& physics) {
   if (recent_.size() > 6) recent_.pop_front();
 }
 
+void EpisodeMetrics::carried(double t_s, const Pose2& from, const Pose2& to) {
+  r_.carries.push_back({t_s, from, to});
+  previous_ = to.position();
+  recent_.clear();  // a contact right after landing is judged on the motion after it
+}
+
 void EpisodeMetrics::compare_estimate(const PhysicsWorld& physics, const Pose2& estimate) {
   r_.localization_error_max_m = std::max(
       r_.localization_error_max_m, geom::distance(physics.robot_position(), estimate.position()));

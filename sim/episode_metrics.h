@@ -18,6 +18,8 @@ class EpisodeMetrics {
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   /// Every physics step, after it: driven length.
   void after_step(const PhysicsWorld& physics);
+  /// A fault set the robot down elsewhere (a kidnap): a carry, not driven length.
+  void carried(double t_s, const Pose2& from, const Pose2& to);
   /// At each control step: how far the estimate is from the truth.
   void compare_estimate(const PhysicsWorld& physics, const Pose2& estimate);
   /// At each control step: which unmapped obstacles perception's obstacles cover (sensed).

@@ -10,8 +10,10 @@
 
 #include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
+#include "batch/shortest_possible.h"
 #include "batch/wilson_interval.h"
 #include "batch_folder_test.h"
+#include "planner/registry.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 
@@ -144,6 +146,32 @@ TEST_F(BatchFiles, BadInputIsRefusedBeforeAnyEpisode) {
       "cannot be created", "file_in_the_way/sub");
 }
 
+// The driven length's lower bound, by hand: around one wall with a gap at its top, the box grown
+// by (inscribed radius - 0.01 m) / sqrt(2); split into legs at a carry; none from inside a box.
+TEST(ShortestPossible, ByHandAroundAWallSplitAtACarryNoneFromInsideABox) {
+  worlds::World w;
+  w.floor = {0, 0, 10, 10};
+  w.obstacles = {{4, 0, 6, 8}};
+  w.robot.radius_m = 0.2;
+  const double d = (0.2 - 0.01) / std::sqrt(2.0);
+  EXPECT_NEAR(shortest_possible_input(w).inflation_m, d, 1e-12);
+  const auto bound = planner::make_planner("vg", shortest_possible_input(w));
+  const double over = 2 * std::hypot(2 - d, 6 + d) + (2 + 2 * d);
+  const auto around = shortest_possible_m(*bound, {2, 2, 0}, {}, {8, 2});
+  ASSERT_TRUE(around.has_value());
+  EXPECT_NEAR(*around, over, 1e-9);
+  const std::vector<sim::EpisodeResult::Carry> lifted = {{10.0, {3, 2, 0}, {7, 2, 1.0}}};
+  const auto carried = shortest_possible_m(*bound, {2, 2, 0}, lifted, {8, 2});
+  ASSERT_TRUE(carried.has_value());
+  EXPECT_NEAR(*carried, 2.0, 1e-9);  // 1 m to where it was lifted, 1 m from where it landed
+  EXPECT_FALSE(shortest_possible_m(*bound, {2, 2, 0}, {}, {5, 2}).has_value());
+  // A rectangular footprint: the largest disk inside it, not its circumscribed radius.
+  w.robot.length_m = 0.6;
+  w.robot.width_m = 0.4;
+  w.robot.radius_m = 0.36;
+  EXPECT_NEAR(shortest_possible_input(w).inflation_m, d, 1e-12);
+}
+
 TEST(Wilson, KnownValues) {
   const auto [lo, hi] = wilson_interval(10, 10);
   EXPECT_NEAR(lo, 0.7225, 1e-4);  // the interval for 10 of 10
@@ -180,6 +208,19 @@ TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
   EXPECT_GE(r.episodes, test::scaled(500, 14));
   EXPECT_GE(r.succeeded, static_cast<std::int64_t>(std::ceil(0.99 * r.episodes)));
   EXPECT_EQ(r.collisions, 0);
+  // The efficiency measure's yardstick is a true lower bound: no docked episode drove less than
+  // the shortest possible (the planning optimum with its margin was beaten by most of them).
+  int bounded = 0;
+  for (const auto& line : sorted_lines((dir_ / "suite/episodes.jsonl").string())) {
+    const auto j = nlohmann::json::parse(line);
+    if (!j["docked"].get<bool>()) continue;
+    ASSERT_TRUE(j.contains("shortest_possible_m")) << j["id"];
+    const double shortest = j["shortest_possible_m"].get<double>();
+    EXPECT_GT(shortest, 0.0) << j["id"];
+    EXPECT_GE(j["driven_length_m"].get<double>(), shortest) << j["id"];
+    ++bounded;
+  }
+  EXPECT_EQ(bounded, r.succeeded);
 }
 
 }  // namespace

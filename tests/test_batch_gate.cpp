@@ -402,7 +402,7 @@ TEST(SummaryTable, IntegrityPerConfigurationNoValueIsEmptyAndTheGateIsItsColumns
   EXPECT_EQ(stuck["succeeded"], "0");
   EXPECT_EQ(stuck["mean_position_error_mm"], "");  // no docked episode: no error, not a perfect 0
   EXPECT_EQ(stuck["mean_heading_error_deg"], "");
-  EXPECT_EQ(stuck["driven_over_optimum"], "");
+  EXPECT_EQ(stuck["driven_over_shortest"], "");
   EXPECT_EQ(stuck["gate_verdict"], "fail");
   // Pooled over worlds, and without a gate.
   gate.pool_worlds = true;

@@ -4,6 +4,10 @@
 // an output another build made, or one made before stamps; an episode re-run alone into its
 // batch's folder goes beside the records, and the batch re-runs around it. And the verdict first:
 // a banner on the batch report and the dashboard, failing rows first with the gate early.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
 #include "cli_fixture.h"
 
 namespace plantsim {
@@ -176,6 +180,58 @@ TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
   EXPECT_EQ(replay["ex"].size(), replay["x"].size());
   EXPECT_EQ(replay["sigma"].size(), replay["x"].size());
   EXPECT_TRUE(replay["events"].is_array());
+}
+
+// A kidnapped run: its replay carries the estimator's verdict frame by frame (ok before the carry,
+// lost after it) and the carry itself; trajectory.csv says the same; the carry is not driven.
+TEST_F(Cli, AKidnappedRunsReplayShowsTheCarryAndTheEstimatorsVerdictPerFrame) {
+  write("kidnap.json",
+        "{\"kidnap\": {\"at_s\": 15, \"dx_m\": 3, \"dy_m\": 1, \"dyaw_rad\": 1.0}, "
+        "\"timeout_s\": 40}");
+  const Outcome o = run("run " + test::source_file("worlds/examples/small_plant.json") +
+                            " --config kidnap.json --out k",
+                        120);
+  ASSERT_EQ(o.exit_code, 1) << o.err;  // the EKF does not find itself again here
+  const std::string html = read(dir_ / "k/report.html");
+  const std::string marker = "id=\"replay-data\">";
+  const std::size_t data = html.find(marker);
+  ASSERT_NE(data, std::string::npos);
+  const std::size_t begin = data + marker.size();
+  const auto replay =
+      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  ASSERT_EQ(replay["health"].size(), replay["t"].size());
+  int ok_before = 0, lost_after = 0, frames_after = 0;
+  for (std::size_t i = 0; i < replay["t"].size(); ++i) {
+    const double t = replay["t"][i].get<double>();
+    const int h = replay["health"][i].get<int>();
+    if (t < 14.9) ok_before += h == 0;
+    if (t > 16) ++frames_after, lost_after += h == 2;
+  }
+  EXPECT_GT(ok_before, 0);
+  EXPECT_GT(frames_after, 0);
+  EXPECT_EQ(lost_after, frames_after);
+  ASSERT_EQ(replay["carries"].size(), 1u);
+  EXPECT_NEAR(replay["carries"][0]["t"].get<double>(), 15.0, 0.1);
+  const auto& from = replay["carries"][0]["from"];
+  const auto& to = replay["carries"][0]["to"];
+  EXPECT_NEAR(to[0].get<double>() - from[0].get<double>(), 3.0, 1e-3);
+  EXPECT_NEAR(to[1].get<double>() - from[1].get<double>(), 1.0, 1e-3);
+  const std::string csv = read(dir_ / "k/trajectory.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')).substr(csv.find('\n') - 11), ",est_status");
+  EXPECT_NE(csv.find(",ok\n"), std::string::npos);
+  EXPECT_NE(csv.find(",lost\n"), std::string::npos);
+  // Driven length: the trajectory's polyline (every control period) less the 3.16 m carry.
+  std::istringstream rows(csv.substr(csv.find('\n') + 1));
+  std::string row;
+  double polyline = 0, last_x = NAN, last_y = NAN;
+  while (std::getline(rows, row)) {
+    double t = 0, x = 0, y = 0;
+    ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf", &t, &x, &y), 3) << row;
+    if (!std::isnan(last_x)) polyline += std::hypot(x - last_x, y - last_y);
+    last_x = x, last_y = y;
+  }
+  const auto summary = nlohmann::json::parse(read(dir_ / "k/summary.json"));
+  EXPECT_LT(summary["driven_length_m"].get<double>(), polyline - 3.0);
 }
 
 }  // namespace

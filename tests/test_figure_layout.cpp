@@ -400,7 +400,7 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
     e.docked = i % 7 != 0;
     e.position_error_m = 0.001 * (i % 15);
     e.heading_error_deg = 0.1 * (i % 12);
-    e.driven_over_optimum = 1.0 + 0.01 * i;
+    e.driven_over_shortest = 1.0 + 0.01 * i;
     e.time_s = 60 + i;
     episodes.push_back(e);
   }
