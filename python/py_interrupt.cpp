@@ -45,6 +45,16 @@ Interruptible run_interruptibly(const std::function<void()>& work, std::atomic<b
   return out;
 }
 
+PythonThreadState::PythonThreadState() {
+  py::gil_scoped_acquire gil;
+  gil.inc_ref();  // one more holder than the scope: the state outlives it
+}
+
+PythonThreadState::~PythonThreadState() {
+  py::gil_scoped_acquire gil;
+  gil.dec_ref();  // the scope's own release then deletes the state (the thread's last holder)
+}
+
 std::shared_ptr<py::object> share_across_threads(py::object o) {
   return std::shared_ptr<py::object>(new py::object(std::move(o)), [](py::object* p) {
     py::gil_scoped_acquire gil;

@@ -240,7 +240,14 @@ episode::EpisodeSteering steering_argument(const py::object& controller, const p
   s.wrap = [travel = steering_of(controller, "controller"), dock = steering_of(docking, "docking")](
                std::unique_ptr<robot::Travel> builtin, const worlds::World& map,
                const std::vector<geom::Vec2>& first_plan) {
-    return robot::steered_by(std::move(builtin), map, first_plan, travel, dock);
+    // Made on the episode's thread, kept by the steerings and released with the travel at the
+    // episode's end on the same thread: one Python thread state per episode, not per call.
+    auto state = std::make_shared<PythonThreadState>();
+    auto kept = [state](const robot::Steering& f) -> robot::Steering {
+      if (!f) return {};
+      return [f, state](const robot::SteeringInput& in) { return f(in); };
+    };
+    return robot::steered_by(std::move(builtin), map, first_plan, kept(travel), kept(dock));
   };
   return s;
 }

@@ -86,6 +86,29 @@ def test_a_steered_batch_calls_python_on_a_worker_thread_holding_the_gil(source,
     assert seen and threading.get_ident() not in set(seen)
 
 
+def test_a_controller_keeps_its_thread_state_for_the_whole_episode(source, tmp_path):
+    # One Python thread state per episode thread, not one per call: a threading.local set at the
+    # first call is still there at the last (a fresh state per call, as before, lost it, and cost
+    # a 16 KiB map and unmap per control period).
+    local = threading.local()
+    calls = []
+
+    def controller(obs):
+        calls.append(getattr(local, "first_time", None))
+        if not hasattr(local, "first_time"):
+            local.first_time = obs.time
+        return None
+
+    r = plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=controller)
+    assert r.docked and len(calls) > 100
+    assert calls[0] is None and all(c is not None for c in calls[1:])
+    scenario = {"name": "state", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "seeds": 2}
+    calls.clear()
+    plantsim.batch(scenario, tmp_path / "b", controller=controller, figures=False, threads=2)
+    # Each episode's thread starts without it once, then keeps it: at most one None per episode.
+    assert len(calls) > 200 and calls.count(None) <= 2
+
+
 @pytest.mark.parametrize("steered", [False, True])
 def test_ctrl_c_stops_run_promptly_with_the_partial_episode(source, tmp_path, steered):
     world = slow_world(source, tmp_path)
