@@ -86,6 +86,14 @@ class Planner {
   virtual PlanResult plan(Vec2 start, Vec2 goal) = 0;
   /// The graph the planner has built so far, as segments, for figures (may be empty).
   virtual std::vector<std::pair<Vec2, Vec2>> graph_edges() const { return {}; }
+  /// A query with boxes `added_grown` (grown as this planner grows its own) present for this
+  /// query only, answered on what the planner has already built; nothing when its family cannot
+  /// (the caller then builds a planner with them). The visibility graph can (vg/vg_overlay.h).
+  virtual std::optional<PlanResult> plan_around_added(const std::vector<Rect>& added_grown,
+                                                      Vec2 start, Vec2 goal) const {
+    (void)added_grown, (void)start, (void)goal;
+    return std::nullopt;
+  }
 };
 
 }  // namespace plantsim::planner

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
+#include "planner/planner.h"
 #include "planner/registry.h"
-#include "planner/vg/vg_overlay.h"
 
 namespace plantsim::robot {
 
@@ -16,11 +16,13 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
                                                    const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner) {
   const double extra = std::max(0.0, docking.safety_margin_m - map.inflation_margin_m) + 0.05;
-  if (const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(map_planner)) {
-    std::vector<geom::Rect> added;
-    added.reserve(seen.size());
-    for (const auto& b : seen) added.push_back(b.box.inflated(extra + map.planning_inflation_m()));
-    const planner::PlanResult re = planner::plan_with_added(*vg, added, from.position(), to);
+  std::vector<geom::Rect> added;
+  added.reserve(seen.size());
+  for (const auto& b : seen) added.push_back(b.box.inflated(extra + map.planning_inflation_m()));
+  const std::optional<planner::PlanResult> around =
+      map_planner ? map_planner->plan_around_added(added, from.position(), to) : std::nullopt;
+  if (around) {
+    const planner::PlanResult& re = *around;
     if (re.status == planner::PlanStatus::kOk) {
       std::vector<geom::Vec2> path = re.path;
       if (re.start_snapped) path.insert(path.begin(), from.position());

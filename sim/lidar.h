@@ -1,6 +1,8 @@
-// A 2D scanning lidar built from the physics: one Box2D ray cast per beam (through the broad
-// phase) against obstacles, walls, the charger, moving obstacles and the target, with
-// Gaussian range noise, random dropouts and no-return beams. All beams of a scan are cast at
+// A 2D scanning lidar built from the physics' own shapes: the fan of beams cast exactly, in double
+// precision, against the obstacles, walls, charger, moving obstacles and target the physics holds
+// (PhysicsWorld::ray_fan: the static boxes in one pass over those within reach; Box2D's single-
+// precision ray cast is only the reference tests compare with), with Gaussian range noise, random
+// dropouts and no-return beams. All beams of a scan are cast at
 // one instant (no motion distortion: at 0.6 m/s and 15 Hz a scan spans 4 cm of travel).
 #pragma once
 

@@ -16,6 +16,7 @@
 #include "planner/inflation.h"
 #include "planner/search_budget.h"
 #include "planner/vg/lazy_entry.h"
+#include "planner/vg/vg_overlay.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -317,6 +318,15 @@ PlanResult TraditionalVisibilityPlanner::plan(Vec2 start, Vec2 goal) {
   out.stats.edges = edges_;
   out.stats.segment_tests = segment_tests_;
   return out;
+}
+
+}  // namespace plantsim::planner
+
+namespace plantsim::planner {
+
+std::optional<PlanResult> VisibilityGraphPlanner::plan_around_added(
+    const std::vector<Rect>& added_grown, Vec2 start, Vec2 goal) const {
+  return plan_with_added(*this, added_grown, start, goal);
 }
 
 }  // namespace plantsim::planner

@@ -26,6 +26,9 @@ class VisibilityGraphPlanner : public Planner {
   const PlannerInput& input() const { return input_; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
   std::vector<std::pair<Vec2, Vec2>> graph_edges() const override;  ///< the whole reduced graph
+  /// The overlay of vg/vg_overlay.h: the map's graph kept, the added boxes' corners joined to it.
+  std::optional<PlanResult> plan_around_added(const std::vector<Rect>& added_grown, Vec2 start,
+                                              Vec2 goal) const override;
   const ObstacleMap& map() const { return map_; }
   const VisibilityGraph& graph() const { return graph_; }
 
