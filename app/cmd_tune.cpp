@@ -35,7 +35,7 @@ std::function<int()> add_tune_command(CLI::App& app) {
   cmd->add_option("--objective", opt->objective,
                   "success_then_time (default), time, docking_error, contacts or success");
   cmd->add_option("--method", opt->method,
-                  "NLopt's method: sbplx (default), bobyqa, neldermead, crs2 or isres");
+                  "NLopt's method: sbplx (default), sbplx-starts, bobyqa, neldermead, crs2 or isres");
   cmd->add_option("--min-wilson", opt->min_wilson,
                   "The constrained objectives' floor on the tuning episodes' Wilson low "
                   "(default: the default settings' own)");

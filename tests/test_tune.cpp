@@ -51,8 +51,8 @@ double bowl(const std::vector<double>& v) {
 }
 
 TEST(TuneSearch, EachSearchSpendsExactlyItsBudgetAndNloptFindsTheTop) {
-  for (tune::Method m : {tune::Method::kSbplx, tune::Method::kBobyqa, tune::Method::kNelderMead,
-                         tune::Method::kCrs2, tune::Method::kIsres}) {
+  for (tune::Method m : {tune::Method::kSbplx, tune::Method::kSbplxStarts, tune::Method::kBobyqa,
+                         tune::Method::kNelderMead, tune::Method::kCrs2, tune::Method::kIsres}) {
     const tune::TuneSpec spec = analytic_spec(m, 80);
     int calls = 0;
     double best = -HUGE_VAL;
@@ -67,6 +67,35 @@ TEST(TuneSearch, EachSearchSpendsExactlyItsBudgetAndNloptFindsTheTop) {
     EXPECT_EQ(calls, 80) << tune::method_name(m);
     EXPECT_GT(best, -0.01) << tune::method_name(m);
   }
+}
+
+// Two bowls: a narrow one about the defaults (0.6, 1.2), topping at -0.6, and a broad deeper one
+// at (1.8, 0.2). sbplx-starts evaluates its design first (the defaults, then 2n uniform points),
+// then Subplex sets off from the design's best and climbs to the deeper top.
+double two_bowls(const std::vector<double>& v) {
+  const double near = -0.6 - 20 * (std::pow(v[0] - 0.6, 2) + std::pow(v[1] - 1.2, 2));
+  const double far = -0.5 * (std::pow(v[0] - 1.8, 2) + std::pow(v[1] - 0.2, 2));
+  return std::max(near, far);
+}
+
+TEST(TuneSearch, StartsFromTheBestOfADesignBeyondTheDefaultsBasin) {
+  const tune::TuneSpec spec = analytic_spec(tune::Method::kSbplxStarts, 30);
+  std::vector<std::vector<double>> asked;
+  std::vector<double> values;
+  tune::nlopt_search(spec, {0.6, 1.2}, [&](const char*, int, const std::vector<double>& v) {
+    asked.push_back(v);
+    values.push_back(two_bowls(v));
+    return two_bowls(v);
+  });
+  ASSERT_EQ(asked.size(), 30u);
+  EXPECT_EQ(asked[0], (std::vector<double>{0.6, 1.2}));  // the defaults first
+  const std::size_t design = 5;                          // 2 n + 1 points
+  const std::size_t best_of_design =
+      std::max_element(values.begin(), values.begin() + design) - values.begin();
+  EXPECT_NE(best_of_design, 0u);       // a design point beat the defaults ...
+  for (std::size_t k = 0; k < 2; ++k)  // ... and Subplex set off from it
+    EXPECT_NEAR(asked[design][k], asked[best_of_design][k], 1e-9);
+  EXPECT_GT(*std::max_element(values.begin(), values.end()), -0.01);  // the deeper bowl's top
 }
 
 TEST(TuneSearch, RandomSearchIsUniformAndRepeatsForItsSeed) {

@@ -27,11 +27,10 @@ struct MethodName {
   Method method;
   const char* name;
 };
-constexpr MethodName kMethods[] = {{Method::kSbplx, "sbplx"},
-                                   {Method::kBobyqa, "bobyqa"},
-                                   {Method::kNelderMead, "neldermead"},
-                                   {Method::kCrs2, "crs2"},
-                                   {Method::kIsres, "isres"}};
+constexpr MethodName kMethods[] = {
+    {Method::kSbplx, "sbplx"},   {Method::kSbplxStarts, "sbplx-starts"},
+    {Method::kBobyqa, "bobyqa"}, {Method::kNelderMead, "neldermead"},
+    {Method::kCrs2, "crs2"},     {Method::kIsres, "isres"}};
 
 Method parse_method(const std::string& text, const std::string& where) {
   std::string choices;

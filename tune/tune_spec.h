@@ -23,7 +23,7 @@ struct TunedParameter {
 
 /// The optimisers: NLopt's local subplex (the default), BOBYQA and Nelder-Mead, and its global
 /// CRS2 and ISRES; every one over the parameters scaled to [0, 1].
-enum class Method { kSbplx, kBobyqa, kNelderMead, kCrs2, kIsres };
+enum class Method { kSbplx, kSbplxStarts, kBobyqa, kNelderMead, kCrs2, kIsres };
 std::string method_name(Method m);
 
 /// What the command line (or plantsim.tune) asks; unset fields come from the scenario's `tune:`.

@@ -105,8 +105,8 @@ def tune(scenario, out, *, params=(), budget=None, objective=None, method=None, 
     params: "KEY=LOW:HIGH" strings (docs/config.md's keys); empty: the scenario's tune.parameters,
     else pure pursuit's and the docking approach's. budget: evaluations for NLopt and as many for
     random search (default 60). objective: "success_then_time" (default), "time", "docking_error",
-    "contacts" or "success". method: NLopt's "sbplx" (default), "bobyqa", "neldermead", "crs2" or
-    "isres". min_wilson: the constrained objectives' success floor (default: the defaults' own).
+    "contacts" or "success". method: NLopt's "sbplx" (default), "sbplx-starts", "bobyqa",
+    "neldermead", "crs2" or "isres". min_wilson: the constrained objectives' success floor (default: the defaults' own).
     Returns OUT/summary.json as a dict: "settings" (default, nlopt, random: values, tuning score,
     tuning and validation statistics), "best", "tuned_against_default_on_validation" (paired tests),
     "verdict". Runs with the GIL released; Ctrl-C raises KeyboardInterrupt between episodes, the
