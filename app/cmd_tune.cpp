@@ -34,8 +34,9 @@ std::function<int()> add_tune_command(CLI::App& app) {
       ->transform(decimal_whole_number());
   cmd->add_option("--objective", opt->objective,
                   "success_then_time (default), time, docking_error, contacts or success");
-  cmd->add_option("--method", opt->method,
-                  "NLopt's method: sbplx (default), sbplx-starts, bobyqa, neldermead, crs2 or isres");
+  cmd->add_option(
+      "--method", opt->method,
+      "NLopt's method: sbplx (default), sbplx-starts, bobyqa, neldermead, crs2 or isres");
   cmd->add_option("--min-wilson", opt->min_wilson,
                   "The constrained objectives' floor on the tuning episodes' Wilson low "
                   "(default: the default settings' own)");

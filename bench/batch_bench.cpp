@@ -38,7 +38,7 @@ int run_batch_bench(const std::string& shared_data, bool quick) {
       {"world_N200", shared_data + "/worlds/world_N200.json"}};
   for (const char* w : {"desulfurization_plant", "substation_yard", "coal_mine_roadways",
                         "cable_tunnel_maze", "rail_maintenance_pit"})
-    worlds.push_back({w, util::checkout_dir() + "/worlds/scenarios/" + w + ".json"});
+    worlds.push_back({w, util::checkout_dir() + "/data/worlds/plants/" + w + ".json"});
   for (const auto& [name, file] : worlds) {
     const std::string scenario = (dir / (name + ".yaml")).string();
     std::ofstream(scenario) << "worlds: [" << std::filesystem::absolute(file).string()

@@ -14,7 +14,7 @@
 #SBATCH --cpus-per-task=2
 #SBATCH --time=01:00:00
 set -euo pipefail
-scenario=${PLANTSIM_SCENARIO:-scenarios/plants.yaml}
+scenario=${PLANTSIM_SCENARIO:-data/scenarios/plants.yaml}
 shards=${PLANTSIM_SHARDS:-results/shards}
 if [ ! -x build/plantsim ]; then
   echo "slurm_batch.sh: no build/plantsim in $PWD: submit from the checkout or with --chdir=<checkout>" >&2

@@ -17,9 +17,9 @@ fi
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 cd "$scratch"
-"$plantsim" run "$root/worlds/examples/corridor_crossing.json" --out run > /dev/null
+"$plantsim" run "$root/data/worlds/examples/corridor_crossing.json" --out run > /dev/null
 "$plantsim" batch "$root/tests/fixtures/browser_batch.yaml" --out batch --quiet > /dev/null
-"$plantsim" compare "$root/worlds/examples/small_plant.json" --planners vg,grid --plan-only --out compare > /dev/null
+"$plantsim" compare "$root/data/worlds/examples/small_plant.json" --planners vg,grid --plan-only --out compare > /dev/null
 "$plantsim" summarize run --html index.html --link batch/report.html --link compare/report.html > /dev/null
 
 dom() {  # the page's DOM after its scripts ran for 4 s of virtual time, in a 1400 x 1000 window

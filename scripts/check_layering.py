@@ -12,7 +12,7 @@ import sys
 ORDER = ["util", "geometry", "worlds", "planner", "controller", "robot", "sim", "episode", "render", "batch",
          "tune", "bench", "app", "python"]
 CONSUMERS = {"tests", "fuzz"}  # may include and link every module; nothing includes them
-NOT_CODE = {"build", "build-sanitize", "results", "docs", "scripts", "scenarios", "configs", "examples", "cmake"}
+NOT_CODE = {"build", "build-sanitize", "results", "docs", "scripts", "data", "configs", "examples", "cmake"}
 BOX2D_OWNER = "sim"
 # Libraries named otherwise than plantsim_<module>.
 LIBRARY_MODULE = {"plantsim_app_lib": "app", "plantsim_convex_mesh": "planner", "plantsim_build_stamp": "util",

@@ -20,13 +20,13 @@ corpus=build-fuzz/corpus
 rm -rf "$corpus"
 mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names} build-fuzz/artifacts
 small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
-for f in worlds/examples/*.json worlds/scenarios/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
+for f in data/worlds/examples/*.json data/worlds/plants/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
   small "$f" && cp "$f" "$corpus/world_json/$(basename "$f")"
 done
 for f in configs/*.json; do cp "$f" "$corpus/episode_config/"; done
 cp configs/coverage_params.json "$corpus/coverage_params/"
 printf '{"chnn": {"restarts": 3, "eta": 1e3}, "exact": {"max_prefixes": 10}}' > "$corpus/coverage_params/small.json"
-for f in scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
+for f in data/scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
 # Names and words people and attackers use (issue 51's cases among them).
 i=0
 for n in "small_plant" "脱硫 plant #2 (100%)" "plant';touch\${IFS}X;'" "x'; touch F; echo '" $'\e[2Jwiped' \

@@ -81,7 +81,7 @@ sinfo -h -o %T | grep -qE "^idle" || fail "the node did not come up idle"
 mkdir -p "$work/run"
 cat > "$work/run/scenario.yaml" <<YAML
 name: slurm_ci
-worlds: [$root/worlds/examples/small_plant.json, \$data/worlds/world_N10.json]
+worlds: [$root/data/worlds/examples/small_plant.json, \$data/worlds/world_N10.json]
 faults:
   none: {}
   noisy: {lidar: {range_noise_m: 0.03}}

@@ -113,7 +113,7 @@ class Cli : public ::testing::Test {
     return names;
   }
   std::string world_json(const std::function<void(nlohmann::json&)>& edit) {
-    std::ifstream in(test::source_file("worlds/examples/small_plant.json"));
+    std::ifstream in(test::source_file("data/worlds/examples/small_plant.json"));
     nlohmann::json j = nlohmann::json::parse(in);
     edit(j);
     return j.dump();

@@ -30,7 +30,7 @@ class BatchFiles : public test::BatchFolderTest {
   static int planners() { return test::full_size() ? 2 : 1; }
   std::string small_scenario() {
     return write("s.yaml", "name: small\nworlds: [" + test::shared_data("worlds/world_N10.json") +
-                               ", " + test::source_file("worlds/examples/small_plant.json") +
+                               ", " + test::source_file("data/worlds/examples/small_plant.json") +
                                "]\nplanners: [vg" + (planners() == 2 ? ", vg-traditional" : "") +
                                "]\nfaults:\n  none: {}\n  slip: "
                                "{odometry: {left_scale_error: 0.002}}\n"
@@ -186,9 +186,9 @@ TEST(Wilson, KnownValues) {
 TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
   std::string worlds;
   for (const char* w :
-       {"worlds/scenarios/desulfurization_plant.json", "worlds/scenarios/substation_yard.json",
-        "worlds/scenarios/coal_mine_roadways.json", "worlds/scenarios/cable_tunnel_maze.json",
-        "worlds/scenarios/rail_maintenance_pit.json"})
+       {"data/worlds/plants/desulfurization_plant.json", "data/worlds/plants/substation_yard.json",
+        "data/worlds/plants/coal_mine_roadways.json", "data/worlds/plants/cable_tunnel_maze.json",
+        "data/worlds/plants/rail_maintenance_pit.json"})
     worlds += test::source_file(w) + ", ";
   worlds += test::shared_data("ros_maps/depot.yaml") + ", " +
             test::shared_data("ros_maps/tb3_sandbox.yaml");
@@ -234,7 +234,7 @@ namespace {
 TEST_F(BatchFiles, ThreadsDoNotChangeResultsWithPerceptionOn) {
   const std::string scenario =
       write("t.yaml", "name: threads\nworlds: [" +
-                          test::source_file("worlds/examples/corridor_crossing.json") +
+                          test::source_file("data/worlds/examples/corridor_crossing.json") +
                           "]\nplanners: [vg]\nfaults:\n  none: {}\n  lossy: {lidar: "
                           "{dropout_probability: 0.1}}\nseeds: 2\n");
   RunOptions one = options("one"), two = options("two");

@@ -141,7 +141,7 @@ class BatchFolders : public test::BatchFolderTest {
  protected:
   std::string two_worlds(const std::string& name, bool reversed, int seeds = 2) {
     std::string a = test::shared_data("worlds/world_N10.json"),
-                b = test::source_file("worlds/examples/small_plant.json");
+                b = test::source_file("data/worlds/examples/small_plant.json");
     if (reversed) std::swap(a, b);
     return write(name, "worlds: [" + a + ", " + b +
                            "]\nplanners: [vg]\nseeds: " + std::to_string(seeds) + "\n");
@@ -254,7 +254,7 @@ TEST_F(BatchFolders, ResumeCutsMalformedLinesAndRerunsTheirEpisodes) {
 // the replay must run the same episode (a failure drawn from a dangling controller crashed it).
 TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
   const std::string scenario =
-      write("fail.yaml", "worlds: [" + test::source_file("worlds/examples/small_plant.json") +
+      write("fail.yaml", "worlds: [" + test::source_file("data/worlds/examples/small_plant.json") +
                              "]\nplanners: [vg]\nfaults: {short: {timeout_s: 2}}\nseeds: 1\n");
   RunOptions o = options("fail");
   o.figures = true;
@@ -282,7 +282,7 @@ TEST_F(BatchFolders, TheFailureGalleryReplaysTheFailedEpisodes) {
 
 TEST_F(BatchFolders, ScenarioPathsAreRelativeToTheScenarioFile) {
   fs::create_directories(dir_ / "sc" / "w");
-  fs::copy_file(test::source_file("worlds/examples/small_plant.json"),
+  fs::copy_file(test::source_file("data/worlds/examples/small_plant.json"),
                 dir_ / "sc" / "w" / "plant.json");
   const std::string scenario =
       write("sc/rel.yaml", "worlds: [w/plant.json, $data/worlds/world_N10.json]\nseeds: 1\n");

@@ -151,7 +151,7 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
        "one run makes at most 1000000 episodes"},
       {"maze column 4294967296",
        [](Cli& c) {
-         std::ifstream in(test::source_file("worlds/scenarios/cable_tunnel_ring.json"));
+         std::ifstream in(test::source_file("data/worlds/plants/cable_tunnel_ring.json"));
          nlohmann::json j = nlohmann::json::parse(in);
          j["tunnel_maze"]["corridors"][0][0][0] = 4294967296ULL;
          c.write("maze.json", j.dump());
@@ -231,7 +231,7 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
       {"coverage parameter typo",
        [](Cli& c) {
          c.write("p.json", R"({"chnn": {"alpah": 1}})");
-         return "coverage " + test::source_file("worlds/scenarios/depot_pit_coverage.json") +
+         return "coverage " + test::source_file("data/worlds/plants/depot_pit_coverage.json") +
                 " --params p.json";
        },
        "field 'chnn.alpah': unknown key"},
@@ -313,7 +313,7 @@ TEST_F(Cli, PlanOnARosMapPlansWhereRunDoes) {
 // `plan --inflation round`: shorter than the square inflation on a plant with corners to turn,
 // the path the robot follows beside the one drawn; combinations it cannot honour are refused.
 TEST_F(Cli, PlanWithRoundInflation) {
-  const std::string world = test::source_file("worlds/scenarios/desulfurization_plant.json");
+  const std::string world = test::source_file("data/worlds/plants/desulfurization_plant.json");
   Outcome o = run("plan " + world + " --inflation round");
   ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
   const auto round = nlohmann::json::parse(o.out);
@@ -333,7 +333,7 @@ TEST_F(Cli, PlanWithRoundInflation) {
 
 // The mesh planners answer as vg does, with or without landmarks; other planners refuse them.
 TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
-  const std::string world = test::source_file("worlds/scenarios/desulfurization_plant.json");
+  const std::string world = test::source_file("data/worlds/plants/desulfurization_plant.json");
   Outcome o = run("plan " + world);
   ASSERT_EQ(o.exit_code, 0) << o.out << o.err;
   const double vg = nlohmann::json::parse(o.out)["length"].get<double>();
@@ -400,7 +400,7 @@ TEST_F(Cli, VersionNamesTheCommit) {
 
 TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
   write("bad.json", "{\"tracking\": {\"lookahead_min_m\": \"far\"}}");
-  const std::string world = test::source_file("worlds/examples/small_plant.json");
+  const std::string world = test::source_file("data/worlds/examples/small_plant.json");
   Outcome o = run("run " + world + " --out out --config bad.json");
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_FALSE(fs::exists(dir_ / "out"));
@@ -433,7 +433,7 @@ TEST_F(Cli, RunValidatesBeforeCreatingItsFolderAndReplacesItsOutputsAsASet) {
 }
 
 TEST_F(Cli, RecordedCommandsRerunExactly) {
-  const std::string world = test::source_file("worlds/examples/small_plant.json");
+  const std::string world = test::source_file("data/worlds/examples/small_plant.json");
   ASSERT_EQ(run("run " + world + " --out 'first run' --undock --seed 3", 180).exit_code, 0);
   const std::string recorded =
       nlohmann::json::parse(read(dir_ / "first run" / "summary.json"))["command"];

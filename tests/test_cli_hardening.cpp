@@ -16,7 +16,7 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+const std::string kCorridor = test::source_file("data/worlds/examples/corridor_crossing.json");
 
 TEST_F(Cli, ACheckerboardMapIsRefusedAtTheObstacleLimitWhileItIsRead) {
   // 2000 x 2000 pixels at 1 m, alternating: two million one-pixel obstacles if nobody counts.

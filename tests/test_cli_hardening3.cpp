@@ -14,7 +14,7 @@
 namespace plantsim {
 namespace {
 
-const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+const std::string kCorridor = test::source_file("data/worlds/examples/corridor_crossing.json");
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();

@@ -13,7 +13,7 @@
 namespace plantsim {
 namespace {
 
-const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+const std::string kCorridor = test::source_file("data/worlds/examples/corridor_crossing.json");
 
 // "plantsim 0.15.0 (commit 1234567890ab...)": the commit this binary was built from.
 std::string commit_of(const std::string& version_line) {
@@ -156,7 +156,7 @@ TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
 // reason, time, place and detail, the estimate beside the truth and the events.
 TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
   write("short.json", "{\"timeout_s\": 25}");
-  const Outcome o = run("run " + test::source_file("worlds/examples/small_plant.json") +
+  const Outcome o = run("run " + test::source_file("data/worlds/examples/small_plant.json") +
                             " --config short.json --out f",
                         120);
   ASSERT_EQ(o.exit_code, 1) << o.err;
@@ -188,7 +188,7 @@ TEST_F(Cli, AKidnappedRunsReplayShowsTheCarryAndTheEstimatorsVerdictPerFrame) {
   write("kidnap.json",
         "{\"kidnap\": {\"at_s\": 15, \"dx_m\": 3, \"dy_m\": 1, \"dyaw_rad\": 1.0}, "
         "\"timeout_s\": 40}");
-  const Outcome o = run("run " + test::source_file("worlds/examples/small_plant.json") +
+  const Outcome o = run("run " + test::source_file("data/worlds/examples/small_plant.json") +
                             " --config kidnap.json --out k",
                         120);
   ASSERT_EQ(o.exit_code, 1) << o.err;  // the EKF does not find itself again here

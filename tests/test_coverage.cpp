@@ -130,7 +130,7 @@ TEST(SweepModel, TheOrderCostIsThePathsOwnTravelAndTurns) {
   const std::uint64_t last_seed = test::full_size() ? 4 : 0;  // the pit alone in the sanitizer tree
   for (std::uint64_t seed = 0; seed <= last_seed; ++seed) {
     const auto pit =
-        worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+        worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
     const CoverageGrid g = seed == 0 ? grid_of(pit) : generated_map(0.2, seed);
     const Cell start = seed == 0 ? *g.nearest_free(pit.start.position()) : Cell{0, 0};
     const Cell end =
@@ -209,7 +209,8 @@ TEST(ExactOrder, MatchesBruteForceOverOrdersAndSweeps) {
 }
 
 TEST(ExactOrder, NoOtherMethodsOrderIsCheaperOnThePit) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  const auto w =
+      worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   const CoverageGrid g = grid_of(w);
   const Cell start = *g.nearest_free(w.start.position()),
              end = *g.nearest_free(worlds::staging_pose(w).position());
@@ -304,7 +305,8 @@ TEST(ExactOrder, TheRelaxationBoundsEveryOrderWayByWay) {
 }
 
 TEST(Hopfield, SettlesOnAValidOrderInAStatedShareOfRestartsOnThePit) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  const auto w =
+      worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   const CoverageGrid g = grid_of(w);
   const Cell start = *g.nearest_free(w.start.position()),
              end = *g.nearest_free(worlds::staging_pose(w).position());
@@ -321,7 +323,8 @@ TEST(Hopfield, SettlesOnAValidOrderInAStatedShareOfRestartsOnThePit) {
 }
 
 TEST(Hopfield, WithTheOriginalActivityTargetItSettlesNowhereAndThePlannerSaysSo) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  const auto w =
+      worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   const PlannerInput in = planner_input(w, true);
   CoverageParams params;
   params.chnn.eta = 500;
@@ -426,7 +429,8 @@ TEST_P(Shares, EveryMethodCoversAllReachableCellsAndEndsAtTheCharger) {
 INSTANTIATE_TEST_SUITE_P(ThreeShares, Shares, ::testing::Values(0.1, 0.2, 0.3));
 
 TEST(Coverage, TheRobotSweepsThePitAndDocks) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+  const auto w =
+      worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   auto p = make_planner("coverage-cells", planner_input(w, true));
   sim::EpisodeConfig config;
   config.timeout_s = 3600;

@@ -210,7 +210,7 @@ TEST(FailureEpisodes, UndockFailedWhenSomethingParksBehindTheRobot) {
 
 TEST(FailureEpisodes, TargetLostWhenThePursuitRunsOutOfTime) {
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_moves_on.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/seed001_target_moves_on.json"));
   EpisodeConfig c;
   c.timeout_s = 5;
   expect_reason(run(w, c), FailureReason::kTargetLost);

@@ -78,7 +78,7 @@ void expect_title_matches_summary(const FigureLayout& layout, const sim::Episode
 }
 
 TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingCloseUp) {
-  const Case c = simulate(test::source_file("worlds/examples/parked_cart.json"));
+  const Case c = simulate(test::source_file("data/worlds/examples/parked_cart.json"));
   ASSERT_TRUE(c.run.docked);
   ASSERT_GT(c.run.replans, 0);
   FigureLayout layout;
@@ -137,7 +137,7 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
 // failure's pose, its reason, time and detail), not the docking close-up of a charger it never
 // reached. The run is cut at a pose halfway along and given a failure there.
 TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
-  Case c = simulate(test::source_file("worlds/examples/small_plant.json"));
+  Case c = simulate(test::source_file("data/worlds/examples/small_plant.json"));
   ASSERT_GT(c.run.trajectory.size(), 100u);
   std::size_t mid = c.run.trajectory.size() / 2;
   while (mid > 0 &&
@@ -174,7 +174,7 @@ TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
 }
 
 TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
-  const Case c = simulate(test::source_file("worlds/scenarios/seed001_slow_target.json"),
+  const Case c = simulate(test::source_file("data/worlds/plants/seed001_slow_target.json"),
                           sim::TravelMode::kPotentialField);
   ASSERT_TRUE(c.run.caught);
   FigureLayout layout;
@@ -208,7 +208,7 @@ TEST(FigureLayout, TimePlotsShadePhasesAndKeepLabelsOnTheCanvas) {
 
 TEST(FigureLayout, CoveragePanelsListTheirCellTintsAndSayHowEachOrderWasFound) {
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/scenarios/depot_pit_coverage.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   std::vector<std::unique_ptr<planner::CoveragePlanner>> planners;
   std::vector<CoveragePanel> panels;
   // The sanitizer tree cuts the exact search short (the Release tree proves the pit's order):
@@ -310,7 +310,7 @@ std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w,
 // says the lengths agree and gives the work each did, as the panels' statistics have it.
 TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/desulfurization_plant.json"));
   const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", "vg-traditional"});
   ASSERT_EQ(panels.size(), 2u);
   FigureLayout layout;
@@ -336,7 +336,7 @@ TEST(FigureLayout, TwoGraphPlannersSayWhatDiffersAndWhatDoesNot) {
 // and no vertex/edge comparison with vg is printed (cells are not vertices).
 TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/desulfurization_plant.json"));
   for (const std::string mesh_planner : {"interval", "polyanya"}) {
     const std::vector<ComparisonPanel> panels = plan_only_panels(w, {"vg", mesh_planner});
     ASSERT_EQ(panels.size(), 2u);
@@ -359,7 +359,7 @@ TEST(FigureLayout, AMeshPlannerIsDescribedAsAMesh) {
 // Seed 003 shows its working: the ring search's walks with where each ended, and the letters
 // recorded at the junctions, all listed and none on top of another text.
 TEST(FigureLayout, MazeRunDrawsTheSearchWalksAndTheJunctionLetters) {
-  Case c{worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json")), {}};
+  Case c{worlds::load_world(test::source_file("data/worlds/plants/cable_tunnel_ring.json")), {}};
   auto p = planner::make_planner("maze-left", planner::planner_input(c.world, true));
   c.run = episode::run_episode(c.world, *p, {});
   FigureLayout layout;

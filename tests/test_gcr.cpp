@@ -104,7 +104,7 @@ TEST(Gcr, AUShapedTrapIsReportedNotFaked) {
 TEST(Gcr, AnExactLoopIsCalledOscillating) {
   // In the cable-tunnel maze the walk from here comes back to a state it was in exactly (the
   // same rotation run, step for step, with the same axis and priorities): it would repeat for ever.
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_maze.json"));
+  const auto w = worlds::load_world(test::source_file("data/worlds/plants/cable_tunnel_maze.json"));
   GcrPlanner p(planner_input(w, true));
   const GcrPlanner::Walk walk = p.walk({5.221, 5.320}, worlds::staging_pose(w).position());
   EXPECT_FALSE(walk.reached);
@@ -162,7 +162,7 @@ TEST(Gcr, Fig4GoalsInEveryDirectionGiveMirroredWalks) {
 // On the substation yard, a loop check on rounded positions called these walks loops; they
 // arrive (after 105 m and 382 m).
 TEST(Gcr, WalksThatArriveAreNotCalledLoops) {
-  const auto w = worlds::load_world(test::source_file("worlds/scenarios/substation_yard.json"));
+  const auto w = worlds::load_world(test::source_file("data/worlds/plants/substation_yard.json"));
   GcrPlanner p(planner_input(w, true));
   const Vec2 goal = worlds::staging_pose(w).position();
   for (const Vec2 start : {Vec2{19.940324, 22.117312}, Vec2{12.703525, 22.804981}}) {
@@ -176,7 +176,7 @@ TEST(Gcr, WalksThatArriveAreNotCalledLoops) {
 // is the document's method as written: on this plant its optimisation is longer than its walk.
 TEST(Gcr, TheShortcutPassIsAnOptionAndOnlyShortens) {
   const auto w =
-      worlds::load_world(test::source_file("worlds/scenarios/desulfurization_plant.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/desulfurization_plant.json"));
   GcrPlanner plain(planner_input(w, true)), shortcut(planner_input(w, true), true);
   EXPECT_EQ(plain.name(), "gcr");
   EXPECT_EQ(shortcut.name(), "gcr-shortcut");

@@ -215,7 +215,8 @@ TEST(Localization, AKidnappedRobotFindsItselfAgainAndDocks) {
 // clear of everything the plant holds by the robot's radius and 0.2 m, any heading; the same
 // seed the same landing.
 TEST(KidnapLanding, LandsOnFreeFloorWithinItsDistances) {
-  worlds::World w = worlds::load_world(test::source_file("worlds/generated/styles/dense_s1.json"));
+  worlds::World w =
+      worlds::load_world(test::source_file("data/worlds/generated/styles/dense_s1.json"));
   w.unmapped.push_back({40, 20, 41, 21});
   const double clear = w.robot.radius_m + 0.2;
   double min_yaw = 10, max_yaw = -10;
@@ -255,9 +256,10 @@ TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
   // Carried 5 to 8 m and set down at any heading, in a plant of racks (a tuning-set world): past
   // the EKF's search window (its global match covers about 2.5 m at all headings), found again
   // by reseeding from global matches. The mechanism, on one draw; how often it works is measured
-  // by scenarios/estimators.yaml (with seed 1 here it converges on a look-alike: not yet solved).
+  // by data/scenarios/estimators.yaml (with seed 1 here it converges on a look-alike: not yet
+  // solved).
   const worlds::World racks =
-      worlds::load_world(test::source_file("worlds/generated/styles/racks_s1.json"));
+      worlds::load_world(test::source_file("data/worlds/generated/styles/racks_s1.json"));
   c.kidnap = {20.0, 0, 0, 0, 5.0, 8.0};
   c.seed = 2;
   const EpisodeResult r = run(racks, c);
@@ -288,7 +290,7 @@ TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
   // A tuning-set world (seed 1 of the sparse style): 8 boxes on 100 x 60 m, long stretches where
   // the lidar sees nothing; it failed with "degraded" and a true error of 9 mm before.
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/generated/styles/sparse_s1.json"));
+      worlds::load_world(test::source_file("data/worlds/generated/styles/sparse_s1.json"));
   const EpisodeConfig c = load_episode_config(test::source_file("configs/noisy_sensing.json"));
   const EpisodeResult r = run(w, c);
   EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
@@ -326,7 +328,7 @@ TEST(Localization, BoxesTheMapLacksInAnOpenYardDoNotMakeARightEstimateLost) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << "name: yard_boxes\nworlds: ["
-                                << test::source_file("worlds/generated/styles/yard_s3.json")
+                                << test::source_file("data/worlds/generated/styles/yard_s3.json")
                                 << "]\nplanners: [vg]\nfaults:\n  unmapped6_wet: "
                                    "{unmapped_obstacles: 6, drive: {tyre_friction: 0.1}}\n"
                                    "seeds: [22]\n";

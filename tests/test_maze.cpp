@@ -17,7 +17,7 @@ namespace plantsim::planner {
 namespace {
 
 worlds::World ring_world() {
-  return worlds::load_world(test::source_file("worlds/scenarios/cable_tunnel_ring.json"));
+  return worlds::load_world(test::source_file("data/worlds/plants/cable_tunnel_ring.json"));
 }
 
 // The ring world's entrance (at the start) and exit (at the staging pose) on its lattice.
@@ -203,7 +203,7 @@ TEST(MazePlanner, FiguresGetTheSearchWalksAndEveryRecordedLetter) {
 }
 
 TEST(MazePlanner, AWorldWithoutALatticeGetsNoPathAndTheReason) {
-  const auto w = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  const auto w = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   auto p = make_planner("maze-left", planner_input(w, true));
   const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
   EXPECT_EQ(r.status, PlanStatus::kNoPath);

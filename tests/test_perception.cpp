@@ -406,7 +406,7 @@ TEST(Determinism, TheSameSeedGivesTheSameTrajectoryWithTheLidarOn) {
   EpisodeConfig c;
   c.seed = 5;
   c.lidar.dropout_probability = 0.05;
-  const std::string world = test::source_file("worlds/examples/corridor_crossing.json");
+  const std::string world = test::source_file("data/worlds/examples/corridor_crossing.json");
   const EpisodeResult a = run_with(world, c), b = run_with(world, c);
   ASSERT_EQ(a.trajectory.size(), b.trajectory.size());
   EXPECT_EQ(a.perception_mode, "sensors");
@@ -437,7 +437,8 @@ TEST(Perception, SensorsModeDocksAndReportsItsLocalisation) {
 }
 
 TEST(Perception, ACrossingPersonIsTrackedFromTheScanAndStopsTheRobot) {
-  const EpisodeResult r = run_with(test::source_file("worlds/examples/corridor_crossing.json"), {});
+  const EpisodeResult r =
+      run_with(test::source_file("data/worlds/examples/corridor_crossing.json"), {});
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_GE(r.stops, 1);
   EXPECT_EQ(r.collisions, 0);

@@ -20,7 +20,7 @@
 namespace plantsim {
 namespace {
 
-const std::string kMismatch = "worlds/examples/small_plant_mismatch.json";
+const std::string kMismatch = "data/worlds/examples/small_plant_mismatch.json";
 
 TEST(PlantMismatch, TheMapLeavesOutUnmappedObstaclesAndMovesTheCharger) {
   const worlds::World plant = worlds::load_world(test::source_file(kMismatch));

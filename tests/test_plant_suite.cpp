@@ -1,5 +1,5 @@
-// The plant is not its map, at scale: scenarios/plant_mismatch_suite.yaml run as a batch against
-// issue 14's targets (its first 50 starts per world here, 100 per fault on world_N50 and
+// The plant is not its map, at scale: data/scenarios/plant_mismatch_suite.yaml run as a batch
+// against issue 14's targets (its first 50 starts per world here, 100 per fault on world_N50 and
 // world_N200; the scenario's whole 300 per fault is a statistical run outside the test command,
 // docs/testing.md), and a sweep whose summary gives one row per value.
 #include <gtest/gtest.h>
@@ -106,7 +106,7 @@ TEST(PlantSuite, UnmappedObstaclesAShiftedChargerWetFloorsAndACrossingPerson) {
   o.out_dir = (dir / "out").string();
   o.progress = false;
   o.figures = false;
-  run_batch(scenario_copy("scenarios/plant_mismatch_suite.yaml", dir), o);
+  run_batch(scenario_copy("data/scenarios/plant_mismatch_suite.yaml", dir), o);
   const auto t = tally(dir / "out");
   auto rate = [&](const std::string& f) {
     return static_cast<double>(t.at(f).docked) / t.at(f).episodes;
@@ -151,7 +151,7 @@ TEST(PlantFaults, TheFinalApproachIsCrossedTowardsTheSideWithRoom) {
 // the robot waits, never closer than a safe gap (0.3 m between its edge and theirs, set before
 // measuring), touches nothing, and docks once they walk off.
 TEST(PlantSuite, APersonStandingAtTheDockIsWaitedForAtASafeDistance) {
-  for (const std::string& file : {test::source_file("worlds/examples/small_plant.json"),
+  for (const std::string& file : {test::source_file("data/worlds/examples/small_plant.json"),
                                   test::shared_data("worlds/world_N50.json")})
     for (std::uint64_t seed : {1, 2}) {
       worlds::World w = worlds::load_world(file);

@@ -226,7 +226,7 @@ namespace {
 // layer drawn, and each of these in the legend.
 TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLegend) {
   const worlds::World w =
-      worlds::load_world(test::source_file("worlds/examples/small_plant_mismatch.json"));
+      worlds::load_world(test::source_file("data/worlds/examples/small_plant_mismatch.json"));
   auto p = planner::make_planner("vg", planner::planner_input(w, true));
   const sim::EpisodeResult run = episode::run_episode(w, *p, {});
   ASSERT_FALSE(run.layer_final.empty());

@@ -220,7 +220,7 @@ class RoundPlansDriven : public ::testing::TestWithParam<const char*> {};
 // tangents' corners it turns in place, as at a square corner.
 TEST_P(RoundPlansDriven, TheRobotDocksWithoutTouchingAWall) {
   const auto world = worlds::load_world(
-      test::source_file(std::string("worlds/scenarios/") + GetParam() + ".json"));
+      test::source_file(std::string("data/worlds/plants/") + GetParam() + ".json"));
   auto p = make_planner("vg-round", planner_input(world, true));
   const sim::EpisodeResult r = episode::run_episode(world, *p, sim::EpisodeConfig{});
   EXPECT_TRUE(r.docked) << r.status;

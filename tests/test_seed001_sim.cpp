@@ -32,7 +32,7 @@ double park_time(const worlds::MovingObstacle& m) {
 
 TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
   const auto world =
-      worlds::load_world(test::source_file("worlds/scenarios/seed001_slow_target.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/seed001_slow_target.json"));
   ASSERT_TRUE(world.target.has_value());
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
   EXPECT_EQ(r.status, "caught");
@@ -45,7 +45,7 @@ TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
 
 TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
   const auto world =
-      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/seed001_target_behind_wall.json"));
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
   EXPECT_EQ(r.status, "caught");
   EXPECT_EQ(r.collisions, 0);
@@ -58,7 +58,7 @@ TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
 }
 
 TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_EQ(r.collisions, 0);
@@ -67,7 +67,7 @@ TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
 }
 
 TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   auto p = planner::make_planner("maze-left",
                                  planner::planner_input(world, true));  // no lattice: no path
   EpisodeConfig config;
@@ -80,7 +80,7 @@ TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
 
 TEST(Seed001, TheTargetMovesOnItsScriptAndCollidesWithNothing) {
   auto world =
-      worlds::load_world(test::source_file("worlds/scenarios/seed001_target_behind_wall.json"));
+      worlds::load_world(test::source_file("data/worlds/plants/seed001_target_behind_wall.json"));
   world.start = {11.0, 5.0, 0.0};  // right in the target's way
   PhysicsWorld physics(world);
   StepSettings s;

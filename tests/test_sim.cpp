@@ -43,7 +43,7 @@ INSTANTIATE_TEST_SUITE_P(SharedData, DockingOnSharedWorlds,
                          ::testing::Values("worlds/world_N10.json", "worlds/world_N50.json"));
 
 TEST(Docking, ExampleWorldWithChargerAgainstTheWall) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/small_plant.json"));
+  const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   const EpisodeResult r = dock(world);
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_EQ(r.collisions, 0);
@@ -107,7 +107,7 @@ namespace {
 
 TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
   const auto world =
-      worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json"));
+      worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json"));
   ASSERT_EQ(world.moving.size(), 1u);
   const EpisodeResult r = dock(world);
   EXPECT_TRUE(r.docked) << r.status;
@@ -123,7 +123,7 @@ TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
 }
 
 TEST(MovingObstacles, AParkedCartForcesAReplanAndTheRobotStillDocks) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/parked_cart.json"));
+  const auto world = worlds::load_world(test::source_file("data/worlds/examples/parked_cart.json"));
   const EpisodeResult r = dock(world);
   EXPECT_TRUE(r.docked) << r.status;
   EXPECT_GE(r.stops, 1);
@@ -199,7 +199,7 @@ namespace {
 
 TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
   const auto world =
-      worlds::load_world(test::source_file("worlds/examples/small_plant_rect_robot.json"));
+      worlds::load_world(test::source_file("data/worlds/examples/small_plant_rect_robot.json"));
   ASSERT_TRUE(world.robot.rectangular());
   EXPECT_NEAR(world.robot.radius_m, 0.5 * std::hypot(0.5, 0.36), 1e-12);  // planning radius
   EXPECT_DOUBLE_EQ(world.robot.front_extent_m(), 0.25);
@@ -250,7 +250,7 @@ namespace {
 // it: the same episode with small limits drives exactly as with none, its trajectory is every
 // k-th sample of the whole one plus the last, evenly spaced, and so are the movers' tracks.
 TEST(LongEpisodes, LogsKeepTheirLimitsAndStillSpanTheEpisode) {
-  const auto world = worlds::load_world(test::source_file("worlds/examples/parked_cart.json"));
+  const auto world = worlds::load_world(test::source_file("data/worlds/examples/parked_cart.json"));
   auto p = planner::make_planner("vg", planner::planner_input(world, true));
   EpisodeConfig config;
   config.scan_log_period_s = 0.2;
@@ -306,7 +306,7 @@ namespace {
 // calibration at rest, not while plantsim docks by itself), and nothing steps after the end.
 TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
   auto world = std::make_shared<const worlds::World>(
-      worlds::load_world(test::source_file("worlds/examples/corridor_crossing.json")));
+      worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json")));
   sim::EpisodeConfig config;
   config.seed = 3;
   auto p = planner::make_planner("vg", planner::planner_input(*world, true));

@@ -180,8 +180,8 @@ TEST(TuneObjective, BelowTheFloorRanksUnderEveryCandidateThatKeepsIt) {
 
 // --- The command ---
 
-const std::string kSmall = test::source_file("worlds/examples/small_plant.json");
-const std::string kCorridor = test::source_file("worlds/examples/corridor_crossing.json");
+const std::string kSmall = test::source_file("data/worlds/examples/small_plant.json");
+const std::string kCorridor = test::source_file("data/worlds/examples/corridor_crossing.json");
 
 std::string tiny_scenario(const std::string& tune_section) {
   return "name: tiny\nworlds: [" + kSmall + ", " + kCorridor + "]\nseeds: 2\ntune:\n" +

@@ -30,7 +30,7 @@ class WorldFiles : public ::testing::Test {
     return p;
   }
   static nlohmann::json good() {
-    std::ifstream f(test::source_file("worlds/examples/small_plant.json"));
+    std::ifstream f(test::source_file("data/worlds/examples/small_plant.json"));
     return nlohmann::json::parse(f);
   }
   // Loads and expects a WorldError mentioning the file and the given text.
@@ -48,7 +48,7 @@ class WorldFiles : public ::testing::Test {
 };
 
 TEST_F(WorldFiles, LoadsTheExampleWorld) {
-  const World w = load_world(test::source_file("worlds/examples/small_plant.json"));
+  const World w = load_world(test::source_file("data/worlds/examples/small_plant.json"));
   EXPECT_EQ(w.name, "small_plant");
   EXPECT_EQ(w.obstacles.size(), 8u);
   EXPECT_DOUBLE_EQ(w.robot.radius_m, 0.2);

@@ -50,7 +50,7 @@ std::string checkout_dir() {
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return "";
   for (fs::path up = exe.parent_path(); !up.empty() && up != up.root_path(); up = up.parent_path())
-    if (fs::is_directory(up / "worlds" / "scenarios", ec)) return up.string();
+    if (fs::is_directory(up / "data" / "worlds" / "plants", ec)) return up.string();
   return "";
 }
 

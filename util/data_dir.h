@@ -18,7 +18,7 @@ const std::string& chosen_data_dir();
 std::string data_dir();
 
 /// The checkout this executable was built in (the nearest ancestor of its folder holding
-/// worlds/scenarios), for its own example worlds; empty when there is none.
+/// data/worlds/plants), for its own example worlds; empty when there is none.
 std::string checkout_dir();
 
 /// A path as written in a file in folder `base`: "$data/..." is under data_dir(), an absolute

@@ -26,7 +26,7 @@ class Recorder:
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--world", default="worlds/examples/corridor_crossing.json")
+    ap.add_argument("--world", default="data/worlds/examples/corridor_crossing.json")
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
     rec = Recorder()

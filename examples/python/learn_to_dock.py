@@ -49,7 +49,7 @@ def evaluate(env, weights, first_seed):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--world", default="worlds/examples/small_plant.json")
+    ap.add_argument("--world", default="data/worlds/examples/small_plant.json")
     ap.add_argument("--iterations", type=int, default=25)
     ap.add_argument("--envs", type=int, default=8)
     ap.add_argument("--max-steps", type=int, default=1500, help="step budget per episode (50 s at 30 Hz)")

@@ -12,7 +12,7 @@ from pursuit import make_pursuit
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--world", default="worlds/scenarios/substation_yard.json")
+    ap.add_argument("--world", default="data/worlds/plants/substation_yard.json")
     ap.add_argument("--seeds", type=int, default=10)
     ap.add_argument("--noisy", default="configs/noisy_sensing.json", help="a config with sensor noise")
     args = ap.parse_args()

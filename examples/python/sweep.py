@@ -15,7 +15,7 @@ import plantsim
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--world", default="worlds/scenarios/desulfurization_plant.json")
+    ap.add_argument("--world", default="data/worlds/plants/desulfurization_plant.json")
     ap.add_argument("--seeds", type=int, default=5)
     ap.add_argument("--speeds", default="0.3,0.45,0.6,0.75")
     ap.add_argument("--out", default="results/python_sweep.png")

@@ -21,7 +21,7 @@ import numpy as np
 
 import plantsim
 
-WORLD = str(pathlib.Path(__file__).resolve().parents[3] / "worlds" / "examples" / "small_plant.json")
+WORLD = str(pathlib.Path(__file__).resolve().parents[3] / "data" / "worlds" / "examples" / "small_plant.json")
 
 
 def _linear_policy(weights):

@@ -2,7 +2,7 @@
 Gymnasium API's contract (https://gymnasium.farama.org/api/env/; the package itself is not
 needed: these classes follow its published semantics and spaces' fields).
 
-    env = plantsim.Env("worlds/examples/small_plant.json")
+    env = plantsim.Env("data/worlds/examples/small_plant.json")
     obs, info = env.reset(seed=3)
     while True:
         obs, reward, terminated, truncated, info = env.step(policy(obs))

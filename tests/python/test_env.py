@@ -11,7 +11,7 @@ import pytest
 
 import plantsim
 
-WORLD = "worlds/examples/small_plant.json"
+WORLD = "data/worlds/examples/small_plant.json"
 
 
 def follow_plantsim(env, seed):

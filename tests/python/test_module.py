@@ -12,7 +12,7 @@ import plantsim
 
 
 def test_every_world_format_loads(source, data):
-    assert plantsim.load_world(source / "worlds/scenarios/substation_yard.json").obstacles.shape[1] == 4
+    assert plantsim.load_world(source / "data/worlds/plants/substation_yard.json").obstacles.shape[1] == 4
     ros = plantsim.load_world(str(data / "ros_maps/depot.yaml"))
     assert ros.obstacles.shape[0] > 10
     grid = plantsim.load_world(str(data / "anyangle/arena.map"), scen=str(data / "anyangle/arena.scen"), query=3)
@@ -30,7 +30,7 @@ def test_plan_length_is_the_known_optimum(data):
 
 
 def test_run_equals_the_command_line(source, binary, tmp_path):
-    world = source / "worlds/examples/corridor_crossing.json"
+    world = source / "data/worlds/examples/corridor_crossing.json"
     r = plantsim.run(str(world), seed=5, out=tmp_path / "py")
     subprocess.run([binary, "run", str(world), "--seed", "5", "--out", str(tmp_path / "cli")], check=True,
                    capture_output=True)
@@ -44,7 +44,7 @@ def test_run_equals_the_command_line(source, binary, tmp_path):
 
 
 def test_a_controller_that_returns_plantsims_command_changes_nothing(source):
-    world = plantsim.load_world(source / "worlds/examples/corridor_crossing.json")
+    world = plantsim.load_world(source / "data/worlds/examples/corridor_crossing.json")
     alone = plantsim.run(world, seed=3)
     seen = []
 
@@ -59,7 +59,7 @@ def test_a_controller_that_returns_plantsims_command_changes_nothing(source):
 
 
 def test_a_docking_callable_steers_the_docking_phases(source):
-    world = plantsim.load_world(source / "worlds/examples/corridor_crossing.json")
+    world = plantsim.load_world(source / "data/worlds/examples/corridor_crossing.json")
     alone = plantsim.run(world, seed=4)
     phases = set()
 
@@ -76,7 +76,7 @@ def test_a_docking_callable_steers_the_docking_phases(source):
 
 
 def test_the_observation_holds_perception_only(source):
-    world = plantsim.load_world(source / "worlds/examples/corridor_crossing.json")
+    world = plantsim.load_world(source / "data/worlds/examples/corridor_crossing.json")
     got = {}
 
     def look(obs):
@@ -98,14 +98,14 @@ def test_the_observation_holds_perception_only(source):
 def test_a_python_pursuit_docks_through_plantsims_docking(source):
     sys.path.insert(0, str(source / "examples/python"))
     from pursuit import make_pursuit
-    r = plantsim.run(source / "worlds/examples/corridor_crossing.json", seed=2, controller=make_pursuit())
+    r = plantsim.run(source / "data/worlds/examples/corridor_crossing.json", seed=2, controller=make_pursuit())
     assert r.docked, r.summary["failure"]
     assert r.summary["position_error_m"] < 0.02
 
 
 def test_bad_input_is_an_input_error_with_the_command_lines_message(source, binary, tmp_path):
     with pytest.raises(plantsim.InputError, match="tracking"):
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", config={"tracking": {"no_such_key": 1}})
+        plantsim.run(source / "data/worlds/examples/corridor_crossing.json", config={"tracking": {"no_such_key": 1}})
     bad = tmp_path / "bad.json"
     bad.write_text('{"floor": {"xmin": 0}}')
     with pytest.raises(plantsim.InputError) as e:
@@ -113,13 +113,13 @@ def test_bad_input_is_an_input_error_with_the_command_lines_message(source, bina
     cli = subprocess.run([binary, "plan", str(bad)], capture_output=True, text=True)
     assert cli.returncode == 2 and str(e.value) in cli.stderr
     with pytest.raises(plantsim.InputError, match="unknown planner"):
-        plantsim.plan(source / "worlds/examples/corridor_crossing.json", "nope")
+        plantsim.plan(source / "data/worlds/examples/corridor_crossing.json", "nope")
     with pytest.raises(plantsim.InputError, match="expected \\(v m/s, omega rad/s\\)"):
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=lambda o: "fast")
+        plantsim.run(source / "data/worlds/examples/corridor_crossing.json", controller=lambda o: "fast")
 
 
 def test_a_batch_from_a_dict_with_and_without_a_python_controller(source, tmp_path):
-    scenario = {"name": "py", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "planners": ["vg"],
+    scenario = {"name": "py", "worlds": [str(source / "data/worlds/examples/corridor_crossing.json")], "planners": ["vg"],
                 "faults": {"none": {}}, "seeds": 3}
     builtin = plantsim.batch(scenario, tmp_path / "a", figures=False)
     assert builtin["episodes"] == 3 and builtin["rows"][0]["episodes"] == 3

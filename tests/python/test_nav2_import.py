@@ -45,7 +45,7 @@ def test_the_imported_config_drives_and_the_command_writes_it(source, binary, tm
     assert cli.returncode == 0 and "mapped (13)" in cli.stderr and "not mapped" in cli.stderr
     config = json.loads(out.read_text())
     assert config == plantsim.nav2_import(str(source / "tests/fixtures/nav2/rpp_readme.yaml"))["config"]
-    r = plantsim.run(source / "worlds/examples/corridor_crossing.json", config=str(out))
+    r = plantsim.run(source / "data/worlds/examples/corridor_crossing.json", config=str(out))
     assert r.docked, r.summary["failure"]
 
 

@@ -20,7 +20,7 @@ MODULE_PATH = os.path.dirname(os.path.dirname(os.path.abspath(plantsim.__file__)
 
 def slow_world(source, tmp_path):
     """The corridor with a robot at a crawl: an episode of hours simulated, many seconds of work."""
-    world = json.loads((source / "worlds/examples/corridor_crossing.json").read_text())
+    world = json.loads((source / "data/worlds/examples/corridor_crossing.json").read_text())
     world["robot"]["max_speed_mps"] = 0.01
     world["robot"]["max_accel_mps2"] = 0.01
     world.pop("moving_obstacles", None)
@@ -41,7 +41,7 @@ def test_two_threads_whose_first_call_is_run_finish(source):
         import threading, plantsim
         results = []
         def go():
-            results.append(plantsim.run({str(source / 'worlds/examples/corridor_crossing.json')!r}).status)
+            results.append(plantsim.run({str(source / 'data/worlds/examples/corridor_crossing.json')!r}).status)
         threads = [threading.Thread(target=go) for _ in range(2)]
         [t.start() for t in threads]
         [t.join(30) for t in threads]
@@ -64,7 +64,7 @@ def test_other_python_threads_run_while_an_episode_runs(source, tmp_path):
     counter.start()
     started = time.monotonic()
     for controller in (None, lambda o: None):  # plantsim's controller, then the user's
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=controller)
+        plantsim.run(source / "data/worlds/examples/corridor_crossing.json", controller=controller)
     elapsed = time.monotonic() - started
     stop.set()
     counter.join()
@@ -79,7 +79,7 @@ def test_a_steered_batch_calls_python_on_a_worker_thread_holding_the_gil(source,
         seen.append(threading.get_ident())
         return None
 
-    scenario = {"name": "threads", "worlds": [str(source / "worlds/examples/corridor_crossing.json")],
+    scenario = {"name": "threads", "worlds": [str(source / "data/worlds/examples/corridor_crossing.json")],
                 "seeds": 2}
     r = plantsim.batch(scenario, tmp_path / "b", controller=controller, figures=False)
     assert r["succeeded"] == 2
@@ -99,10 +99,10 @@ def test_a_controller_keeps_its_thread_state_for_the_whole_episode(source, tmp_p
             local.first_time = obs.time
         return None
 
-    r = plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=controller)
+    r = plantsim.run(source / "data/worlds/examples/corridor_crossing.json", controller=controller)
     assert r.docked and len(calls) > 100
     assert calls[0] is None and all(c is not None for c in calls[1:])
-    scenario = {"name": "state", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "seeds": 2}
+    scenario = {"name": "state", "worlds": [str(source / "data/worlds/examples/corridor_crossing.json")], "seeds": 2}
     calls.clear()
     plantsim.batch(scenario, tmp_path / "b", controller=controller, figures=False, threads=2)
     # Each episode's thread starts without it once, then keeps it: at most one None per episode.
@@ -137,7 +137,7 @@ def test_ctrl_c_stops_a_batch_keeping_its_finished_episodes(source, tmp_path, st
     folder = tmp_path / "b"
     out = python(f"""
         import os, signal, threading, time, plantsim
-        scenario = {{"name": "long", "worlds": [{str(source / 'worlds/examples/corridor_crossing.json')!r}],
+        scenario = {{"name": "long", "worlds": [{str(source / 'data/worlds/examples/corridor_crossing.json')!r}],
                      "seeds": 400}}
         threading.Timer(1.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
         started = time.monotonic()
@@ -167,7 +167,7 @@ def test_a_controllers_exception_carries_the_episode_so_far(source, tmp_path):
         return None
 
     with pytest.raises(Stop) as e:
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=boom, out=tmp_path / "r")
+        plantsim.run(source / "data/worlds/examples/corridor_crossing.json", controller=boom, out=tmp_path / "r")
     assert 3 < e.value.time < 3.2
     assert e.value.partial.trajectory[-1, 0] <= e.value.time
     assert e.value.partial.trajectory.shape[0] > 50
@@ -179,12 +179,12 @@ def test_a_bad_command_names_its_time_and_value(source):
         return (float("nan"), 0.0) if obs.time > 2 else None
 
     with pytest.raises(plantsim.InputError, match=r"non-finite command \(nan, 0\.0+\) at t = 2\.0") as e:
-        plantsim.run(source / "worlds/examples/corridor_crossing.json", controller=nan_after_two)
+        plantsim.run(source / "data/worlds/examples/corridor_crossing.json", controller=nan_after_two)
     assert e.value.partial.trajectory.shape[0] > 0
 
 
 def test_a_resumed_batch_counts_success_over_the_whole_folder(source, tmp_path):
-    scenario = {"name": "again", "worlds": [str(source / "worlds/examples/corridor_crossing.json")], "seeds": 3}
+    scenario = {"name": "again", "worlds": [str(source / "data/worlds/examples/corridor_crossing.json")], "seeds": 3}
     first = plantsim.batch(scenario, tmp_path / "b", figures=False)
     again = plantsim.batch(scenario, tmp_path / "b", figures=False)
     assert again["ran"] == 0 and again["skipped"] == 3

@@ -15,7 +15,7 @@ from test_threads_and_signals import MODULE_PATH
 
 
 def scenario(tmp_path, source, seeds=2):
-    worlds = [str(source / "worlds/examples/small_plant.json"), str(source / "worlds/examples/corridor_crossing.json")]
+    worlds = [str(source / "data/worlds/examples/small_plant.json"), str(source / "data/worlds/examples/corridor_crossing.json")]
     path = tmp_path / "t.yaml"
     path.write_text(json.dumps({"name": "tiny", "worlds": worlds, "seeds": seeds,
                                 "tune": {"validation_seeds": [101, 102]}}))  # JSON is YAML
