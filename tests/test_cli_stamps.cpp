@@ -152,6 +152,15 @@ TEST_F(Cli, TheVerdictComesFirstFailingRowsFirstWithTheirGate) {
   EXPECT_NE(pass.find("more episodes would tell"), std::string::npos);  // 1/1: low 0.21 < 0.5
 }
 
+/// The replay's data as a report embeds it (null when the report has no replay).
+nlohmann::json replay_of(const std::string& html) {
+  const std::string marker = "id=\"replay-data\">";
+  const std::size_t data = html.find(marker);
+  if (data == std::string::npos) return nullptr;
+  const std::size_t begin = data + marker.size();
+  return nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+}
+
 // A failed run says why first, and its replay carries what it needs to end on the failure: the
 // reason, time, place and detail, the estimate beside the truth and the events.
 TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
@@ -169,12 +178,8 @@ TEST_F(Cli, AFailedRunsReportAndReplayEndOnTheFailure) {
   EXPECT_NE(html.find("still moving on when the time ran out", banner), std::string::npos);
   // No docking error where it never docked (it was the distance to the charger).
   EXPECT_NE(html.find("<td>timeout</td><td>-</td><td>-</td>"), std::string::npos);
-  const std::string marker = "id=\"replay-data\">";
-  const std::size_t data = html.find(marker);
-  ASSERT_NE(data, std::string::npos);
-  const std::size_t begin = data + marker.size();
-  const auto replay =
-      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  const nlohmann::json replay = replay_of(html);
+  ASSERT_FALSE(replay.is_null());
   EXPECT_EQ(replay["failure"]["reason"], "timeout");
   EXPECT_NEAR(replay["failure"]["t"].get<double>(), 25.0, 0.1);
   EXPECT_EQ(replay["ex"].size(), replay["x"].size());
@@ -193,12 +198,8 @@ TEST_F(Cli, AKidnappedRunsReplayShowsTheCarryAndTheEstimatorsVerdictPerFrame) {
                         120);
   ASSERT_EQ(o.exit_code, 1) << o.err;  // the EKF does not find itself again here
   const std::string html = read(dir_ / "k/report.html");
-  const std::string marker = "id=\"replay-data\">";
-  const std::size_t data = html.find(marker);
-  ASSERT_NE(data, std::string::npos);
-  const std::size_t begin = data + marker.size();
-  const auto replay =
-      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  const nlohmann::json replay = replay_of(html);
+  ASSERT_FALSE(replay.is_null());
   ASSERT_EQ(replay["health"].size(), replay["t"].size());
   int ok_before = 0, lost_after = 0, frames_after = 0;
   for (std::size_t i = 0; i < replay["t"].size(); ++i) {
