@@ -130,7 +130,8 @@ DockingCommand DockingController::recover(const DockingInput& in) {
     rejected_detection_.reset();
     out.recover_requested = true;
     out.phase = phase_;
-  } else if (unsettled_s_ > params_.stuck_timeout_s) {
+  } else if (unsettled_s_ > (last_unsettled_by_localization_ ? params_.relocalize_timeout_s
+                                                             : params_.stuck_timeout_s)) {
     recovering_ = false;
     fail(last_unsettled_by_localization_ ? DockFailure::kNotLocalized : DockFailure::kUnsettled);
     out.phase = phase_;

@@ -50,6 +50,8 @@ struct DockingParams {
   double press_timeout_s = 1.5;      ///< pressed this long without charging: a miss
   double stuck_timeout_s = 20.0;     ///< approach or back-off blocked (or unsettled after a shove)
                                      ///< this long: give up, stopped
+  double relocalize_timeout_s = 90.0;  ///< lost this long after a displacement: give up (the robot
+                                       ///< searches meanwhile: robot/lost_search.h)
   bool undock = false;    ///< after charging starts, reverse to the staging pose (guarded)
   double settle_s = 1.0;  ///< after a displacement: stopped, localised and untouched this long
                           ///< before recovering (a new way to the staging pose)

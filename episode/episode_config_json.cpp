@@ -276,6 +276,20 @@ const std::vector<Field>& fields() {
                      0.9),
       PLANTSIM_PARAM_ABOVE("particles", perception.particles.reseed_tile_m, "reseed_tile_m", 0.0,
                            50.0),
+      PLANTSIM_PARAM("particles", perception.particles.min_explained, "min_explained", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", perception.particles.confirm_turn_rad, "confirm_turn_rad", 0.0,
+                     100.0),
+      PLANTSIM_PARAM("particles", perception.particles.confirm_move_m, "confirm_move_m", 0.0,
+                     1000.0),
+      PLANTSIM_PARAM_ABOVE("docking", docking.relocalize_timeout_s, "relocalize_timeout_s", 0.0,
+                           86400.0),
+      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.speed_mps, "speed_mps", 0.0, 5.0),
+      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.turn_radps, "turn_radps", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.leg_m, "leg_m", 0.0, 1000.0),
+      PLANTSIM_PARAM("lost_search", lost_search.clearance_m, "clearance_m", 0.0, 10.0),
+      PLANTSIM_PARAM("lost_search", lost_search.standoff_m, "standoff_m", 0.0, 100.0),
+      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.surface_reach_m, "surface_reach_m", 0.0,
+                           1000.0),
       PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0),
   };
   return table;
@@ -301,6 +315,8 @@ const std::vector<Field>& int_fields() {
       PLANTSIM_PARAM("particles", perception.particles.max_particles, "max_particles", 1, 100000),
       PLANTSIM_PARAM("particles", perception.particles.beams, "beams", 1, 10000),
       PLANTSIM_PARAM("particles", perception.particles.reseed_rings, "reseed_rings", 1, 10),
+      PLANTSIM_PARAM("particles", perception.particles.min_returns, "min_returns", 1, 100000),
+      PLANTSIM_PARAM("particles", perception.particles.confirm_strikes, "confirm_strikes", 1, 1000),
       PLANTSIM_PARAM("particles", perception.particles.seed, "seed", 0, 1000000000),
   };
   return table;
@@ -316,6 +332,7 @@ const std::vector<Field>& bool_fields() {
       PLANTSIM_PARAM("docking", docking.undock, "undock", 0, 1),
       PLANTSIM_PARAM("layer", perception.layer.enabled, "enabled", 0, 1),
       PLANTSIM_PARAM("ekf", perception.ekf.learn_noise, "learn_noise", 0, 1),
+      PLANTSIM_PARAM("lost_search", lost_search.enabled, "enabled", 0, 1),
   };
   return table;
 }

@@ -8,6 +8,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "robot/place_refinement.h"
+
 namespace plantsim::robot {
 namespace {
 
@@ -195,6 +197,8 @@ void ParticleLocalizer::apply_motion() {
   if (m.time_s <= 0) return;
   since_weigh_m_ += m.moved_m;
   since_weigh_rad_ += m.turned_rad;
+  confirm_.turned_rad += m.turned_rad;
+  confirm_.moved_m += m.moved_m;
   // As the EKF's model: travel noise along, skid across while turning on the move, the gyro's
   // white noise; each particle turns by its own bias (the delta was summed under the set's mean),
   // and its bias walks.
@@ -296,18 +300,21 @@ void ParticleLocalizer::resample(const std::vector<Place>& candidates, double fr
   std::unordered_set<std::uint64_t> bins;
   const std::size_t floor = static_cast<std::size_t>(std::max(1, p_.min_particles));
   const std::size_t ceiling = std::max(floor, static_cast<std::size_t>(p_.max_particles));
-  // The kept share drawn by the weights until KLD sampling's count for the bins they fill.
+  // The kept share: KLD sampling's count for the bins that draws by the weights fill, then
+  // that many drawn by low-variance (systematic) resampling, one random offset for all. Drawn
+  // one by one, copies are a random walk in which a direction the scans leave open (along a
+  // lone wall) loses its spread within a few dozen resamplings, and the set reports itself sure
+  // of what nothing measured.
   const double kept_share = candidates.empty() ? 1.0 : 1.0 - fresh;
-  scratch_.clear();
-  std::size_t needed = floor;
-  while (scratch_.size() < ceiling) {
-    const Particle& q = draw(set_, rng_);
-    bins.insert(key_of(bin_of(q, p_)));
-    scratch_.push_back(q);
+  std::size_t needed = floor, counted = 0;
+  while (counted < ceiling) {
+    bins.insert(key_of(bin_of(draw(set_, rng_), p_)));
+    ++counted;
     needed = std::clamp(static_cast<std::size_t>(kld_count(bins.size(), p_.kld_error, p_.kld_z)),
                         floor, ceiling);
-    if (static_cast<double>(scratch_.size()) >= kept_share * static_cast<double>(needed)) break;
+    if (static_cast<double>(counted) >= kept_share * static_cast<double>(needed)) break;
   }
+  systematic_draw(counted);
   // Sensor resetting: the fresh share about the places the scan fits, split evenly, each drawn
   // over its place's spread (Olson's covariance of the near-best poses): along a lone wall, where
   // the scan leaves the place open, the fresh particles cover the wall rather than points a
@@ -351,6 +358,19 @@ void ParticleLocalizer::resample(const std::vector<Place>& candidates, double fr
   for (std::size_t k = 0; k < scratch_.size(); ++k)
     scratch_[k].w = (k < kept ? 1.0 : inverse_density[k - kept] / mean_inverse) / n;
   set_.swap(scratch_);
+}
+
+void ParticleLocalizer::systematic_draw(std::size_t count) {
+  scratch_.clear();
+  double total = 0;
+  for (const Particle& q : set_) total += q.w;
+  const double step = total / static_cast<double>(std::max<std::size_t>(1, count));
+  double next = std::uniform_real_distribution<double>(0.0, step)(rng_), cumulative = 0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < count; ++k, next += step) {
+    while (n + 1 < set_.size() && cumulative + set_[n].w < next) cumulative += set_[n++].w;
+    scratch_.push_back(set_[n]);
+  }
 }
 
 void ParticleLocalizer::summarise() {
@@ -404,8 +424,10 @@ void ParticleLocalizer::judge(const LidarScan& scan) {
   residuals_.clear();
   const std::optional<double> agree =
       scan_agreement(raycaster_, scan, estimate_, global_.verify_tolerance_m, &residuals_);
-  const bool unexplained = valid_returns(scan) >= global_.global_match_min_returns &&
-                           !points_.empty() && explained_share(estimate_) < p_.min_explained;
+  const bool unexplained = valid_returns(scan) >= p_.min_returns && !points_.empty() &&
+                           explained_share(estimate_) < p_.min_explained;
+  estimate_agrees_ = !agree || *agree >= global_.verify_agreement;  // none: nothing against it
+  if (confirm_.active) confirm(agree);
   if (!agree && !unexplained) return;  // too few beams meet a mapped surface: no evidence
   failed_matches_ = unexplained || *agree < p_.contradicted_agreement ? failed_matches_ + 1 : 0;
   if (motion_.learn_noise && agree && *agree >= global_.verify_agreement &&
@@ -454,7 +476,7 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
       }
     // The best place for the scan about the estimate is the estimate itself: what the map did not
     // explain are things it lacks (boxes, people), not a kidnap. Nothing wider is searched.
-    if (ring == 0 && !found.empty() &&
+    if (ring == 0 && !doubted_ && estimate_agrees_ && !found.empty() &&
         !apart(std::min_element(found.begin(), found.end(), by_score)->pose, estimate_)) {
       out.estimate_fits = true;
       return out;
@@ -464,14 +486,22 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
   // an open yard). No evidence against the estimate either.
   out.estimate_fits = found.empty();
   std::stable_sort(found.begin(), found.end(), by_score);
-  for (const Place& f : found) {
+  const std::vector<geom::Vec2> points = scan_points(scan, 90);
+  for (Place f : found) {
     if (static_cast<int>(out.candidates.size()) >= global_.matcher.max_alternatives) break;
     if (!std::all_of(out.candidates.begin(), out.candidates.end(),
                      [&](const Place& k) { return apart(k.pose, f.pose); }))
       continue;
+    f.pose = refine_on_field(field_, points, f.pose, 0.2, 0.05);
     const std::optional<double> agree =
         scan_agreement(raycaster_, scan, f.pose, global_.verify_tolerance_m);
     if (agree && *agree >= global_.verify_agreement) out.candidates.push_back(f);
+  }
+  // The best confirmed place is the estimate itself (a scan that agreed less than it should:
+  // noise, things the map lacks): nothing to reseed, unless a failed confirmation doubts it.
+  if (!doubted_ && !out.candidates.empty() && !apart(out.candidates.front().pose, estimate_)) {
+    out.candidates.clear();
+    out.estimate_fits = true;
   }
   return out;
 }
@@ -498,9 +528,9 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   const bool contradicted = failed_matches_ >= 2;
   if (!contradicted) {
     unmatched_ = false;
-  } else if (scan.t_s + 1e-9 >= next_reseed_s_ &&
-             valid_returns(scan) >= global_.global_match_min_returns) {
+  } else if (scan.t_s + 1e-9 >= next_reseed_s_ && valid_returns(scan) >= p_.min_returns) {
     Reseed found = reseed_candidates(scan);  // (estimate_fits: nothing against it)
+    doubted_ = false;
     candidates = std::move(found.candidates);
     if (found.estimate_fits) failed_matches_ = 0;
     unmatched_ = candidates.empty() && !found.estimate_fits;
@@ -516,6 +546,7 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
     const double demand = w_slow_ > 0 ? 1.0 - w_fast_ / w_slow_ : 0.0;
     resample(candidates, std::clamp(std::max(demand, p_.reseed_fraction), 0.0, 0.9));
     ++relocalizations_;
+    confirm_ = {true, 0, 0, 0};
     summarise();
   } else if (effective < 0.5 * static_cast<double>(set_.size())) {
     resample({}, 0.0);
@@ -578,9 +609,29 @@ double ParticleLocalizer::yaw_sigma_rad() const {
   return std::sqrt(std::max(0.0, pose_covariance()(2, 2)));
 }
 
+void ParticleLocalizer::confirm(const std::optional<double>& agree) {
+  // Progress counts only while the set is one hypothesis: two live ones are not yet a place.
+  if (position_sigma_m() > motion_.lost_position_sigma_m) {
+    confirm_.turned_rad = confirm_.moved_m = 0;
+    return;
+  }
+  if (agree && *agree < p_.contradicted_agreement) {
+    confirm_.turned_rad = confirm_.moved_m = 0;
+    if (++confirm_.strikes >= p_.confirm_strikes) {
+      confirm_.strikes = 0;
+      doubted_ = true;
+      failed_matches_ = std::max(failed_matches_, 2);  // reseed
+    }
+    return;
+  }
+  if (confirm_.turned_rad >= p_.confirm_turn_rad || confirm_.moved_m >= p_.confirm_move_m)
+    confirm_ = {};
+}
+
 void ParticleLocalizer::update_health() {
   const double sigma = position_sigma_m();
-  if (sigma > motion_.lost_position_sigma_m || failed_matches_ >= motion_.lost_failed_matches)
+  if (confirm_.active || sigma > motion_.lost_position_sigma_m ||
+      failed_matches_ >= motion_.lost_failed_matches)
     health_ = LocalizationHealth::kLost;
   else if (sigma > motion_.ok_position_sigma_m || failed_matches_ >= 5)
     health_ = LocalizationHealth::kDegraded;

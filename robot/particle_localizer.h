@@ -54,16 +54,25 @@ struct ParticleParams {
   double jitter_rad = 0.003;  ///< diverse; resampling happens only after weighing)
   /// A scan agreeing with the map (global_match.h's beam-by-beam agreement) less than this at
   /// the estimate contradicts it (a failed match).
-  double contradicted_agreement = 0.3;
+  double contradicted_agreement = 0.7;
   /// ... or fewer than this share of the weighed returns lies within three sigmas of a mapped
   /// surface at the estimate (on open ground after a kidnap few beams can contradict it, yet
   /// what the scan sees is nowhere on the map there).
   double min_explained = 0.3;
+  int min_returns = 20;  ///< returns a scan needs to contradict the estimate or to be matched
   double reseed_fraction = 0.5;  ///< at least this share is drawn anew when the map contradicts
   double reseed_tile_m = 3.5;    ///< half-size of one global match's window (all headings)
   int reseed_rings = 2;  ///< tiles searched: this many rings of them about the estimate (2: the
                          ///< square 10.5 m about it, with tiles of 3.5 m)
-  int seed = 1;          ///< the filter's random numbers (deterministic per seed)
+  /// After a reseed the filter reports itself lost until its estimate is confirmed by views the
+  /// reseed did not use: the set one tight hypothesis and every scan agreeing with the map at
+  /// it (global_match.h's verify_agreement) while the robot turns this far or moves this far.
+  /// A scan that disagrees starts the confirmation again; `confirm_strikes` of them reseed,
+  /// searching wide even if the estimate fits best nearby (a look-alike seen from one side).
+  double confirm_turn_rad = 4.7;
+  double confirm_move_m = 3.0;
+  int confirm_strikes = 3;
+  int seed = 1;  ///< the filter's random numbers (deterministic per seed)
 };
 
 class ParticleLocalizer final : public PoseEstimator {
@@ -123,6 +132,8 @@ class ParticleLocalizer final : public PoseEstimator {
   double log_likelihood(double d) const;
   /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate places.
   void resample(const std::vector<Place>& candidates, double fresh);
+  /// scratch_ = `count` copies of the set's particles, drawn by low-variance resampling.
+  void systematic_draw(std::size_t count);
   /// The places a global match finds for the scan about the estimate that the beams confirm, or
   /// that the best place near the estimate is the estimate itself.
   struct Reseed {
@@ -137,6 +148,9 @@ class ParticleLocalizer final : public PoseEstimator {
   /// Share of the weighed returns within three sigmas of a mapped surface from `pose`.
   double explained_share(const geom::Pose2& pose) const;
   void update_health();
+  /// One scan's part in confirming a reseeded estimate (`agree`: the scan's agreement with the
+  /// map at it, none when too few beams judge).
+  void confirm(const std::optional<double>& agree);
   /// bias_ and bias_var_ from the set.
   void bias_moments();
   double normal(double sigma);
@@ -172,6 +186,14 @@ class ParticleLocalizer final : public PoseEstimator {
   double next_reseed_s_ = 0;
   int reseed_backoff_ = 1;  // periods between searches
   int relocalizations_ = 0;
+  struct Confirmation {
+    bool active = false;
+    double turned_rad = 0, moved_m = 0;
+    int strikes = 0;
+  };
+  Confirmation confirm_;
+  bool estimate_agrees_ = false;  // the last scan agreed with the map at the estimate
+  bool doubted_ = false;  // the confirmation failed: the next search does not trust the estimate
 };
 
 }  // namespace plantsim::robot

@@ -14,6 +14,7 @@
 #include "controller/potential_field.h"
 #include "planner/planner.h"
 #include "robot/failure.h"
+#include "robot/lost_search.h"
 #include "robot/perception.h"
 #include "worlds/world.h"
 
@@ -24,6 +25,7 @@ struct TravelSettings {
   controller::DockingParams docking;  ///< staging distance and footprint already set from the map
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
+  LostSearchParams lost_search;  ///< driving to find a recognisable view while lost
   /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
   /// is never rebuilt: the sensed obstacles are added on top, planner/vg/vg_overlay.h).
   const planner::Planner* map_planner = nullptr;

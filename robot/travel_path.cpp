@@ -13,10 +13,12 @@ class PathTravel : public Travel {
         planner_(std::move(planner_name)),
         s_(s),
         control_(s.tracking, s.docking, std::move(path), map.charger),
+        search_(s.lost_search, s.docking.footprint_radius_m),
         staging_(worlds::staging_pose(map).position()) {}
 
   Decision decide(const Perception& p) override {
-    const controller::DockingCommand cmd = control_.step(docking_input(p));
+    controller::DockingCommand cmd = control_.step(docking_input(p));
+    search_lost(p, cmd);
     if (cmd.recover_requested) need_plan_ = true;
     if (need_plan_ && p.t_s >= next_try_s_) {
       // After a displacement: a new way to the staging pose from wherever the robot now is.
@@ -57,10 +59,25 @@ class PathTravel : public Travel {
   }
 
  private:
+  /// Lost after a displacement, the docking controller turns on the spot; the search takes
+  /// over its command (a full turn, then legs along what the robot sees). It turns only when
+  /// the controller's own guard let it turn.
+  void search_lost(const Perception& p, controller::DockingCommand& cmd) {
+    if (!s_.lost_search.enabled || !control_.recovering() ||
+        p.health != LocalizationHealth::kLost || !p.scan || p.bumper.pressed()) {
+      search_.reset();
+      return;
+    }
+    const controller::Twist t = search_.step(*p.scan, p.odom_pose);
+    const bool turning_allowed = cmd.twist.omega_radps != 0;
+    cmd.twist = t.v_mps > 0 || turning_allowed ? t : controller::Twist{};
+  }
+
   const worlds::World& map_;
   std::string planner_;
   TravelSettings s_;
   controller::DockingController control_;
+  LostSearch search_;
   geom::Vec2 staging_;
   std::vector<geom::Vec2> plan_;
   int replans_ = 0;

@@ -73,6 +73,7 @@ struct EpisodeConfig {
   TravelMode travel = TravelMode::kPath;
   controller::PotentialFieldParams field;
   double catch_distance_m = 0.1;         ///< a moving target is caught this close (edge to edge)
+  robot::LostSearchParams lost_search;   ///< path travel: driving to find a view while lost
   double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
   DockTolerance tolerance;
   KidnapFault kidnap;

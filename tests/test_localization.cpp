@@ -16,7 +16,11 @@
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/ekf_localizer.h"
+#include "robot/global_match.h"
+#include "robot/likelihood_field.h"
+#include "robot/lost_search.h"
 #include "robot/map_raycaster.h"
+#include "robot/place_refinement.h"
 #include "robot/scan_matcher.h"
 #include "sim/episode.h"
 #include "sim/kidnap_landing.h"
@@ -155,6 +159,53 @@ TEST(ScanMatcher, ALoneWallsSpreadIsOpenAlongItAndTightAcrossIt) {
 
 // A pose measured with a spread open along x and tight along y moves the estimate along y only,
 // and narrows it there; one beyond the gate changes nothing.
+// A correlative match's answer is a grid cell and a rotation step off; refined on the exact
+// likelihood field it lands on the pose the scan was taken from, and the ray-cast check that
+// rejected the coarse answer (a return 20 m away moved 20 cm) accepts it.
+TEST(PlaceRefinement, BringsAGridAnswerOntoTheTruePose) {
+  const worlds::World w = l_room();
+  const geom::Pose2 truth{6.3, 4.1, 0.4};
+  const LidarScan scan = exact_scan(w, truth);
+  const LikelihoodField field(w, 0.05);
+  const geom::Pose2 coarse{truth.x + 0.12, truth.y - 0.08, truth.yaw + 0.025};
+  const geom::Pose2 fine = refine_on_field(field, scan_points(scan, 90), coarse, 0.2, 0.05);
+  EXPECT_NEAR(fine.x, truth.x, 0.01);
+  EXPECT_NEAR(fine.y, truth.y, 0.01);
+  EXPECT_NEAR(geom::wrap_angle(fine.yaw - truth.yaw), 0.0, 0.003);
+  const MapRaycaster map(w);
+  EXPECT_LT(*scan_agreement(map, scan, coarse, 0.05), 0.8);
+  EXPECT_GT(*scan_agreement(map, scan, fine, 0.05), 0.95);
+}
+
+// Lost in a long bare hall (every place along it looks alike), the search turns once on the
+// spot, then drives along the nearest wall, keeping off it; its guard sees the walls ahead and
+// nothing behind (the lidar's blind quarter is never free).
+TEST(LostSearch, TurnsOnceThenFollowsTheNearestWallAndKeepsOffIt) {
+  worlds::World hall;
+  hall.floor = {0, 0, 40, 3};
+  LostSearch search({}, 0.2);
+  const LidarScan side = exact_scan(hall, {5, 1.5, 0});
+  EXPECT_NEAR(search.free_ahead(side, 0.0), 20.0, 1e-9);             // capped at the lidar's range
+  EXPECT_NEAR(search.free_ahead(side, M_PI / 2), 1.5 - 0.55, 1e-6);  // the wall, less the disk
+  EXPECT_EQ(search.free_ahead(side, M_PI), 0.0);                     // behind: unseen, not free
+  geom::Pose2 pose{5, 1.2, 1.0};
+  const double dt = 0.1;
+  double turned = 0, driven = 0;
+  for (int k = 0; k < 1200 && driven < 6.0; ++k) {
+    const controller::Twist t = search.step(exact_scan(hall, pose), pose);
+    if (driven == 0) turned += std::fabs(t.omega_radps) * dt;
+    const geom::Vec2 before = pose.position();
+    pose = geom::compose(pose, {t.v_mps * dt, 0, t.omega_radps * dt});
+    driven += geom::distance(before, pose.position());
+    ASSERT_GT(pose.y, 0.5);
+    ASSERT_LT(pose.y, 2.5);
+  }
+  EXPECT_GE(turned, 2 * M_PI - 0.1);
+  EXPECT_GE(driven, 6.0);
+  EXPECT_LT(std::fabs(std::sin(pose.yaw)), 0.3) << "along the hall";
+  EXPECT_TRUE(search.driving());
+}
+
 TEST(Ekf, APoseMeasuredInOneDirectionUpdatesThatDirectionOnly) {
   const worlds::World w = l_room();
   const MapRaycaster map(w);
