@@ -6,16 +6,15 @@
 #include <cmath>
 #include <vector>
 
+#include "robot/scan_points.h"
+
 namespace plantsim::robot {
 namespace {
 
-std::vector<geom::Vec2> returns_in_robot_frame(const LidarScan& scan, double reach_m) {
-  std::vector<geom::Vec2> out;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!scan.valid(i) || scan.ranges[i] > reach_m) continue;
-    const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
-    out.push_back(geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
-  }
+std::vector<geom::Vec2> returns_within(const LidarScan& scan, double reach_m) {
+  std::vector<geom::Vec2> out = scan_points(scan, static_cast<int>(scan.ranges.size()));
+  std::erase_if(out,
+                [&](geom::Vec2 q) { return geom::distance(q, scan.mount.position()) > reach_m; });
   return out;
 }
 
@@ -38,11 +37,7 @@ double LostSearch::free_ahead(const LidarScan& scan, double heading) const {
   const geom::Vec2 u = geom::unit_from_angle(heading);
   const double half_width = radius_ + p_.clearance_m;
   double free = scan.max_range_m;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!scan.valid(i)) continue;
-    const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
-    const geom::Vec2 q =
-        geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position();
+  for (const geom::Vec2& q : scan_points(scan, static_cast<int>(scan.ranges.size()))) {
     const double along = geom::dot(u, q), across = geom::cross(u, q);
     if (along > -radius_ && std::fabs(across) < half_width)
       free = std::min(free, std::max(0.0, along - half_width));
@@ -51,7 +46,7 @@ double LostSearch::free_ahead(const LidarScan& scan, double heading) const {
 }
 
 std::optional<double> LostSearch::choose_heading(const LidarScan& scan) const {
-  const std::vector<geom::Vec2> seen = returns_in_robot_frame(scan, p_.surface_reach_m);
+  const std::vector<geom::Vec2> seen = returns_within(scan, p_.surface_reach_m);
   const double min_free = 1.5;
   if (seen.empty()) {  // nothing in reach: straight on, if the way is free
     return free_ahead(scan, 0.0) >= min_free ? std::optional(0.0) : std::nullopt;

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "robot/place_refinement.h"
+#include "robot/scan_points.h"
 
 namespace plantsim::robot {
 namespace {
@@ -223,20 +224,9 @@ void ParticleLocalizer::apply_motion() {
 }
 
 void ParticleLocalizer::take_points(const LidarScan& scan) {
-  std::vector<std::size_t> valid;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i)
-    if (scan.valid(i)) valid.push_back(i);
   points_.clear();
-  if (static_cast<int>(valid.size()) < motion_.min_informative_beams) return;
-  const std::size_t stride = std::max<std::size_t>(
-      1, (valid.size() + static_cast<std::size_t>(std::max(1, p_.beams)) - 1) /
-             static_cast<std::size_t>(std::max(1, p_.beams)));
-  for (std::size_t k = 0; k < valid.size(); k += stride) {
-    const std::size_t i = valid[k];
-    const geom::Vec2 in_sensor = scan.ranges[i] * geom::unit_from_angle(scan.angle(i));
-    points_.push_back(
-        geom::compose(scan.mount, geom::Pose2{in_sensor.x, in_sensor.y, 0}).position());
-  }
+  if (valid_returns(scan) < motion_.min_informative_beams) return;
+  points_ = scan_points(scan, std::max(1, p_.beams));
   hit_sigma_m_ = std::hypot(p_.field_sigma_m, range_sigma_m());
   // A set spread over metres (after a kidnap, a reseed) has particles centimetres apart at best:
   // weighed with the sharp likelihood, the one that happens to sit nearest a partial fit takes

@@ -9,12 +9,8 @@
 
 #include "geometry/vec2.h"
 #include "robot/likelihood_field.h"
-#include "robot/readings.h"
 
 namespace plantsim::robot {
-
-/// Up to `max_points` valid returns of `scan`, spread evenly, in the robot's frame.
-std::vector<geom::Vec2> scan_points(const LidarScan& scan, int max_points);
 
 /// The pose within about `reach_m` and `reach_rad` of `start` minimising the sum over `points`
 /// (robot frame) of min(d^2, cap_m^2), d the field's distance of the return from a surface.

@@ -22,6 +22,7 @@
 #include "robot/map_raycaster.h"
 #include "robot/place_refinement.h"
 #include "robot/scan_matcher.h"
+#include "robot/scan_points.h"
 #include "sim/episode.h"
 #include "sim/kidnap_landing.h"
 #include "test_paths.h"
