@@ -281,6 +281,7 @@ const std::vector<Field>& fields() {
                      100.0),
       PLANTSIM_PARAM("particles", perception.particles.confirm_move_m, "confirm_move_m", 0.0,
                      1000.0),
+      PLANTSIM_PARAM("particles", perception.particles.rival_margin, "rival_margin", 0.0, 1e6),
       PLANTSIM_PARAM_ABOVE("docking", docking.relocalize_timeout_s, "relocalize_timeout_s", 0.0,
                            86400.0),
       PLANTSIM_PARAM_ABOVE("lost_search", lost_search.speed_mps, "speed_mps", 0.0, 5.0),
@@ -317,6 +318,11 @@ const std::vector<Field>& int_fields() {
       PLANTSIM_PARAM("particles", perception.particles.reseed_rings, "reseed_rings", 1, 10),
       PLANTSIM_PARAM("particles", perception.particles.min_returns, "min_returns", 1, 100000),
       PLANTSIM_PARAM("particles", perception.particles.confirm_strikes, "confirm_strikes", 1, 1000),
+      PLANTSIM_PARAM("particles", perception.particles.max_places, "max_places", 1, 1000),
+      PLANTSIM_PARAM("particles", perception.particles.view_change_returns, "view_change_returns",
+                     1, 100000),
+      PLANTSIM_PARAM("particles", perception.particles.view_change_lost_scans,
+                     "view_change_lost_scans", 1, 100000),
       PLANTSIM_PARAM("particles", perception.particles.seed, "seed", 0, 1000000000),
   };
   return table;

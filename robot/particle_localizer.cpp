@@ -200,6 +200,7 @@ void ParticleLocalizer::apply_motion() {
   since_weigh_rad_ += m.turned_rad;
   confirm_.turned_rad += m.turned_rad;
   confirm_.moved_m += m.moved_m;
+  places_.move(m.delta);
   // As the EKF's model: travel noise along, skid across while turning on the move, the gyro's
   // white noise; each particle turns by its own bias (the delta was summed under the set's mean),
   // and its bias walks.
@@ -305,6 +306,7 @@ void ParticleLocalizer::resample(const std::vector<Place>& candidates, double fr
     if (static_cast<double>(counted) >= kept_share * static_cast<double>(needed)) break;
   }
   systematic_draw(counted);
+  if (fresh >= 1.0) scratch_.clear();  // a handover: the estimate's place was ruled out
   // Sensor resetting: the fresh share about the places the scan fits, split evenly, each drawn
   // over its place's spread (Olson's covariance of the near-best poses): along a lone wall, where
   // the scan leaves the place open, the fresh particles cover the wall rather than points a
@@ -414,10 +416,30 @@ void ParticleLocalizer::judge(const LidarScan& scan) {
   residuals_.clear();
   const std::optional<double> agree =
       scan_agreement(raycaster_, scan, estimate_, global_.verify_tolerance_m, &residuals_);
-  const bool unexplained = valid_returns(scan) >= p_.min_returns && !points_.empty() &&
-                           explained_share(estimate_) < p_.min_explained;
+  const double share = points_.empty() ? -1.0 : explained_share(estimate_);
+
+  // The view changed at once: a scan the map explained about the estimate is followed by one
+  // it does not. On open ground, with fewer returns than a contradiction needs, this is what a
+  // kidnap looks like (a box the map lacks comes into view over many scans, not in one).
+  const int returns = valid_returns(scan);
+  const bool was_explained =
+      last_share_ >= global_.verify_agreement && last_returns_ >= p_.view_change_returns;
+  const bool now_unexplained = share >= 0 && share < p_.min_explained &&
+                               static_cast<int>(points_.size()) >= p_.view_change_returns;
+  // ... or the returns the map explained vanished at once (most of them: dropouts take a few).
+  const bool vanished = returns < p_.min_explained * last_returns_;
+  if (was_explained && (now_unexplained || vanished))
+    view_changed_scans_ = 1;
+  else if (view_changed_scans_ > 0 && (share < 0 || share < p_.min_explained))
+    ++view_changed_scans_;
+  else
+    view_changed_scans_ = 0;
+  last_share_ = share;
+  last_returns_ = returns;
+  const bool unexplained = share >= 0 && share < p_.min_explained &&
+                           (returns >= p_.min_returns || view_changed_scans_ > 0);
   estimate_agrees_ = !agree || *agree >= global_.verify_agreement;  // none: nothing against it
-  if (confirm_.active) confirm(agree);
+  if (confirm_.active) confirm(scan, agree);
   if (!agree && !unexplained) return;  // too few beams meet a mapped surface: no evidence
   failed_matches_ = unexplained || *agree < p_.contradicted_agreement ? failed_matches_ + 1 : 0;
   if (motion_.learn_noise && agree && *agree >= global_.verify_agreement &&
@@ -478,7 +500,7 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
   std::stable_sort(found.begin(), found.end(), by_score);
   const std::vector<geom::Vec2> points = scan_points(scan, 90);
   for (Place f : found) {
-    if (static_cast<int>(out.candidates.size()) >= global_.matcher.max_alternatives) break;
+    if (static_cast<int>(out.candidates.size()) >= p_.max_places) break;
     if (!std::all_of(out.candidates.begin(), out.candidates.end(),
                      [&](const Place& k) { return apart(k.pose, f.pose); }))
       continue;
@@ -516,7 +538,12 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   // Contradicted, not merely wide: a set spread over open ground contracts by itself when the
   // plant comes into view, and look-alikes drawn in would only split it.
   const bool contradicted = failed_matches_ >= 2;
-  if (!contradicted) {
+  const bool handover = !handover_.empty();
+  if (handover) {
+    candidates.swap(handover_);
+    handover_.clear();
+    unmatched_ = false;
+  } else if (!contradicted) {
     unmatched_ = false;
   } else if (scan.t_s + 1e-9 >= next_reseed_s_ && valid_returns(scan) >= p_.min_returns) {
     Reseed found = reseed_candidates(scan);  // (estimate_fits: nothing against it)
@@ -534,9 +561,14 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   const double effective = 1.0 / squares;
   if (!candidates.empty()) {
     const double demand = w_slow_ > 0 ? 1.0 - w_fast_ / w_slow_ : 0.0;
-    resample(candidates, std::clamp(std::max(demand, p_.reseed_fraction), 0.0, 0.9));
+    resample(candidates,
+             handover ? 1.0 : std::clamp(std::max(demand, p_.reseed_fraction), 0.0, 0.9));
     ++relocalizations_;
     confirm_ = {true, 0, 0, 0};
+    view_changed_scans_ = 0;
+    std::vector<geom::Pose2> places;
+    for (const Place& c : candidates) places.push_back(c.pose);
+    places_.reset(places);
     summarise();
   } else if (effective < 0.5 * static_cast<double>(set_.size())) {
     resample({}, 0.0);
@@ -599,29 +631,69 @@ double ParticleLocalizer::yaw_sigma_rad() const {
   return std::sqrt(std::max(0.0, pose_covariance()(2, 2)));
 }
 
-void ParticleLocalizer::confirm(const std::optional<double>& agree) {
+PlaceHypotheses::Verdict ParticleLocalizer::judge_place(const LidarScan& scan, geom::Pose2& place) {
+  if (points_.empty()) return {};
+  // Refined within a few centimetres only: the odometry drifts that little between scans, and a
+  // wider reach would let a look-alike slide along a corridor to keep fitting.
+  place = refine_on_field(field_, points_, place, 0.05, 0.01);
+  const std::optional<double> agree =
+      scan_agreement(raycaster_, scan, place, global_.verify_tolerance_m);
+  tabulate_log_likelihood();
+  const double c = std::cos(place.yaw), s = std::sin(place.yaw);
+  double l = 0;
+  for (const geom::Vec2& e : points_)
+    l +=
+        log_likelihood(field_.distance({place.x + c * e.x - s * e.y, place.y + s * e.x + c * e.y}));
+  const bool contradicted =
+      (agree && *agree < p_.contradicted_agreement) ||
+      (valid_returns(scan) >= p_.min_returns && explained_share(place) < p_.min_explained);
+  return {contradicted, l};
+}
+
+void ParticleLocalizer::confirm(const LidarScan& scan, const std::optional<double>& agree) {
+  places_.check([&](geom::Pose2& place) { return judge_place(scan, place); }, p_.confirm_strikes,
+                p_.rival_margin);
+  const std::vector<geom::Pose2> rivals =
+      places_.rivals(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad);
   // Progress counts only while the set is one hypothesis: two live ones are not yet a place.
   if (position_sigma_m() > motion_.lost_position_sigma_m) {
     confirm_.turned_rad = confirm_.moved_m = 0;
+    return;
+  }
+  // The estimate's own place ruled out while others live: the set chose a look-alike.
+  if (!rivals.empty() &&
+      !places_.holds(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad)) {
+    confirm_.turned_rad = confirm_.moved_m = 0;
+    confirm_.strikes = 0;
+    for (const geom::Pose2& r : rivals) handover_.push_back({r, 0, Eigen::Matrix3d::Zero()});
     return;
   }
   if (agree && *agree < p_.contradicted_agreement) {
     confirm_.turned_rad = confirm_.moved_m = 0;
     if (++confirm_.strikes >= p_.confirm_strikes) {
       confirm_.strikes = 0;
-      doubted_ = true;
-      failed_matches_ = std::max(failed_matches_, 2);  // reseed
+      if (!rivals.empty()) {
+        for (const geom::Pose2& r : rivals) handover_.push_back({r, 0, Eigen::Matrix3d::Zero()});
+      } else {
+        doubted_ = true;
+        failed_matches_ = std::max(failed_matches_, 2);  // reseed
+      }
     }
     return;
   }
-  if (confirm_.turned_rad >= p_.confirm_turn_rad || confirm_.moved_m >= p_.confirm_move_m)
+  // A rival place still agreeing with every view so far: the estimate is one of two look-alikes.
+  if (!rivals.empty()) return;
+  if (confirm_.turned_rad >= p_.confirm_turn_rad || confirm_.moved_m >= p_.confirm_move_m) {
     confirm_ = {};
+    places_.clear();
+  }
 }
 
 void ParticleLocalizer::update_health() {
   const double sigma = position_sigma_m();
   if (confirm_.active || sigma > motion_.lost_position_sigma_m ||
-      failed_matches_ >= motion_.lost_failed_matches)
+      failed_matches_ >= motion_.lost_failed_matches ||
+      view_changed_scans_ >= p_.view_change_lost_scans)
     health_ = LocalizationHealth::kLost;
   else if (sigma > motion_.ok_position_sigma_m || failed_matches_ >= 5)
     health_ = LocalizationHealth::kDegraded;

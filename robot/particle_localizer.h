@@ -23,6 +23,7 @@
 #include "robot/global_match.h"
 #include "robot/likelihood_field.h"
 #include "robot/noise_learning.h"
+#include "robot/place_hypotheses.h"
 #include "robot/pose_estimator.h"
 #include "robot/scan_matcher.h"
 
@@ -60,6 +61,14 @@ struct ParticleParams {
   /// what the scan sees is nowhere on the map there).
   double min_explained = 0.3;
   int min_returns = 20;  ///< returns a scan needs to contradict the estimate or to be matched
+  /// ... except after the view changed at once (a scan explained, at least verify_agreement of
+  /// its returns near mapped surfaces, followed by one explained less than min_explained, each
+  /// with this many returns, or by one whose returns fell below min_explained of the last's): a
+  /// kidnap on open ground, where a handful of returns is all there is. Unexplained scans then
+  /// contradict the estimate from this many returns, and after `view_change_lost_scans` of them in
+  /// a row the filter reports itself lost.
+  int view_change_returns = 10;
+  int view_change_lost_scans = 8;
   double reseed_fraction = 0.5;  ///< at least this share is drawn anew when the map contradicts
   double reseed_tile_m = 3.5;    ///< half-size of one global match's window (all headings)
   int reseed_rings = 2;  ///< tiles searched: this many rings of them about the estimate (2: the
@@ -69,9 +78,17 @@ struct ParticleParams {
   /// it (global_match.h's verify_agreement) while the robot turns this far or moves this far.
   /// A scan that disagrees starts the confirmation again; `confirm_strikes` of them reseed,
   /// searching wide even if the estimate fits best nearby (a look-alike seen from one side).
+  /// The reseed's other places are carried along meanwhile (place_hypotheses.h): the estimate
+  /// is not confirmed while one of them still agrees with the scans (`confirm_strikes`
+  /// contradictions or trailing the best place's summed log-likelihood by `rival_margin` rule a
+  /// place out), and an estimate whose place is ruled out, or is contradicted, hands over to them.
   double confirm_turn_rad = 4.7;
   double confirm_move_m = 3.0;
   int confirm_strikes = 3;
+  double rival_margin = 30;
+  /// Places a reseed keeps (the best-scoring of those the beams confirm): among racks in rows
+  /// the true place may score below several look-alikes in the view the kidnap left.
+  int max_places = 16;
   int seed = 1;  ///< the filter's random numbers (deterministic per seed)
 };
 
@@ -130,7 +147,8 @@ class ParticleLocalizer final : public PoseEstimator {
   void tabulate_log_likelihood();
   /// A return's log-likelihood at distance d from the nearest mapped surface.
   double log_likelihood(double d) const;
-  /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate places.
+  /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate places (1: the
+  /// set replaced by particles about them).
   void resample(const std::vector<Place>& candidates, double fresh);
   /// scratch_ = `count` copies of the set's particles, drawn by low-variance resampling.
   void systematic_draw(std::size_t count);
@@ -149,8 +167,10 @@ class ParticleLocalizer final : public PoseEstimator {
   double explained_share(const geom::Pose2& pose) const;
   void update_health();
   /// One scan's part in confirming a reseeded estimate (`agree`: the scan's agreement with the
-  /// map at it, none when too few beams judge).
-  void confirm(const std::optional<double>& agree);
+  /// map at it, none when too few beams judge) and in ruling out its rivals.
+  void confirm(const LidarScan& scan, const std::optional<double>& agree);
+  /// The scan's verdict on a place (refined onto the scan first, written back).
+  PlaceHypotheses::Verdict judge_place(const LidarScan& scan, geom::Pose2& place);
   /// bias_ and bias_var_ from the set.
   void bias_moments();
   double normal(double sigma);
@@ -192,6 +212,11 @@ class ParticleLocalizer final : public PoseEstimator {
     int strikes = 0;
   };
   Confirmation confirm_;
+  PlaceHypotheses places_;        // the last reseed's places, until the scans rule them out
+  std::vector<Place> handover_;   // rivals still agreeing when the estimate was contradicted
+  double last_share_ = -1;        // the last scan's explained share at the estimate
+  int last_returns_ = 0;          // and its valid returns
+  int view_changed_scans_ = 0;    // unexplained scans since the view changed at once
   bool estimate_agrees_ = false;  // the last scan agreed with the map at the estimate
   bool doubted_ = false;  // the confirmation failed: the next search does not trust the estimate
 };

@@ -20,6 +20,8 @@
 #include "robot/likelihood_field.h"
 #include "robot/lost_search.h"
 #include "robot/map_raycaster.h"
+#include "robot/particle_localizer.h"
+#include "robot/place_hypotheses.h"
 #include "robot/place_refinement.h"
 #include "robot/scan_matcher.h"
 #include "robot/scan_points.h"
@@ -176,6 +178,77 @@ TEST(PlaceRefinement, BringsAGridAnswerOntoTheTruePose) {
   const MapRaycaster map(w);
   EXPECT_LT(*scan_agreement(map, scan, coarse, 0.05), 0.8);
   EXPECT_GT(*scan_agreement(map, scan, fine, 0.05), 0.95);
+}
+
+// Three places after a reseed: one the scans keep contradicting, one that trails the best by a
+// little on every scan (a look-alike that differs in a beam or two), and the best. The first goes
+// after `strikes` scans, the second once its summed log-likelihood trails by the margin; the
+// best is then the only place, and no rival of an estimate on it is left.
+TEST(PlaceHypotheses, ContradictedOrTrailingPlacesAreRuledOutAndMoveWithTheOdometry) {
+  PlaceHypotheses places;
+  places.reset({{0, 0, 0}, {8, 0, 0}, {0, 8, 0}});
+  auto judge = [](geom::Pose2& p) {
+    if (p.y > 4) return PlaceHypotheses::Verdict{true, -1.0};  // contradicted, yet fits
+    return PlaceHypotheses::Verdict{false, p.x > 4 ? -3.0 : -1.0};
+  };
+  places.check(judge, 3, 10.0);
+  places.check(judge, 3, 10.0);
+  EXPECT_EQ(places.rivals({0, 0, 0}, 1.0, 0.3).size(), 2u) << "two strikes, 4 behind: all live";
+  places.check(judge, 3, 10.0);
+  EXPECT_EQ(places.rivals({0, 0, 0}, 1.0, 0.3).size(), 1u) << "three strikes: ruled out";
+  places.check(judge, 3, 10.0);
+  places.check(judge, 3, 10.0);
+  EXPECT_EQ(places.rivals({0, 0, 0}, 1.0, 0.3).size(), 1u) << "10 behind: not beyond the margin";
+  places.check(judge, 3, 10.0);
+  EXPECT_TRUE(places.rivals({0, 0, 0}, 1.0, 0.3).empty()) << "12 behind: the look-alike is gone";
+  EXPECT_TRUE(places.holds({0.5, 0, 0.1}, 1.0, 0.3));
+  places.move({2, 0, M_PI / 2});  // the robot drove 2 m and turned left
+  EXPECT_TRUE(places.holds({2, 0, M_PI / 2}, 0.01, 0.01));
+  EXPECT_FALSE(places.holds({0, 0, 0}, 1.0, 0.3));
+}
+
+// A scan of `world` from `pose` as a short-range lidar sees it (6 m: open ground shows a handful
+// of returns or none).
+LidarScan short_scan(const worlds::World& world, const geom::Pose2& pose, double t_s) {
+  LidarScan s = exact_scan(world, pose);
+  s.t_s = t_s;
+  s.max_range_m = 6;
+  for (double& r : s.ranges) r = std::min(r, s.max_range_m);
+  return s;
+}
+
+// Kidnapped on open ground, where the lidar sees one small box (about 13 returns, fewer than a
+// contradiction needs) or nothing: the view changed at once, and the particle filter reports
+// itself lost within half a second rather than driving on for the 16 s it took before.
+TEST(Particles, AKidnapOnOpenGroundIsNoticedFromAHandfulOfReturnsOrNone) {
+  worlds::World yard;
+  yard.name = "yard";
+  yard.floor = {0, 0, 60, 60};
+  yard.obstacles = {{29.75, 32.75, 30.25, 33.25}, {44.75, 12.75, 45.25, 13.25}};
+  yard.start = {30, 30, M_PI / 2};
+  yard.charger = {59, 30, 0};
+  const MapRaycaster map(yard);
+  for (const geom::Pose2 landing : {geom::Pose2{45, 10, 0}, geom::Pose2{50, 50, 0}}) {
+    ParticleLocalizer filter(yard, map, EkfParams{}, GlobalMatchParams{}, ParticleParams{});
+    const double dt = 1.0 / 15;
+    int k = 0;
+    for (; k < 30; ++k) {
+      filter.predict(0, 0, dt);
+      filter.observe(short_scan(yard, yard.start, k * dt));
+    }
+    const LidarScan before = short_scan(yard, yard.start, 0);
+    ASSERT_GE(valid_returns(before), 10);
+    ASSERT_LT(valid_returns(before), ParticleParams{}.min_returns);
+    ASSERT_NE(filter.health(), LocalizationHealth::kLost);
+    int scans = 0;
+    for (; scans < 45 && filter.health() != LocalizationHealth::kLost; ++scans, ++k) {
+      filter.predict(0, 0, dt);
+      filter.observe(short_scan(yard, landing, k * dt));
+    }
+    EXPECT_LE(scans, ParticleParams{}.view_change_lost_scans + 1)
+        << "set down at " << landing.x << ", " << landing.y << " with "
+        << valid_returns(short_scan(yard, landing, 0)) << " returns";
+  }
 }
 
 // Lost in a long bare hall (every place along it looks alike), the search turns once on the
