@@ -564,11 +564,15 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
     resample(candidates,
              handover ? 1.0 : std::clamp(std::max(demand, p_.reseed_fraction), 0.0, 0.9));
     ++relocalizations_;
-    confirm_ = {true, 0, 0, 0};
+    confirm_ = {true, 0, 0, 0, 0};
     view_changed_scans_ = 0;
     std::vector<geom::Pose2> places;
     for (const Place& c : candidates) places.push_back(c.pose);
     places_.reset(places);
+    summarise();
+  } else if (nudge_) {
+    resample({*nudge_}, p_.reseed_fraction);
+    nudge_.reset();
     summarise();
   } else if (effective < 0.5 * static_cast<double>(set_.size())) {
     resample({}, 0.0);
@@ -668,6 +672,20 @@ void ParticleLocalizer::confirm(const LidarScan& scan, const std::optional<doubl
     for (const geom::Pose2& r : rivals) handover_.push_back({r, 0, Eigen::Matrix3d::Zero()});
     return;
   }
+  // The estimate's own place, refined scan by scan, has moved off it: the set lost the spread
+  // that held the truth (along a wall the scans leave open, until a corner comes into view).
+  // Fresh particles are drawn about the place and the scans choose.
+  const std::optional<geom::Pose2> own =
+      places_.nearest(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad);
+  if (own && geom::distance(own->position(), estimate_.position()) > p_.place_offset_m) {
+    if (++confirm_.offset_scans >= p_.confirm_strikes) {
+      confirm_.turned_rad = confirm_.moved_m = 0;
+      confirm_.offset_scans = 0;
+      nudge_ = Place{*own, 0, Eigen::Matrix3d::Zero()};
+    }
+    return;
+  }
+  confirm_.offset_scans = 0;
   if (agree && *agree < p_.contradicted_agreement) {
     confirm_.turned_rad = confirm_.moved_m = 0;
     if (++confirm_.strikes >= p_.confirm_strikes) {

@@ -10,7 +10,11 @@
 // about it, so that two live hypotheses make it wide (and the robot not localised) until the
 // scans decide. Where it departs from AMCL: no uniform random particles (on a 100 m plant they
 // would never land near the truth), and reseeding only where the map contradicts the estimate
-// (a box the map lacks lowers AMCL's average weight as a kidnap does).
+// (a box the map lacks lowers AMCL's average weight as a kidnap does). After a reseed, its
+// places are kept and judged scan by scan (place_hypotheses.h): the estimate is confirmed only
+// once no rival lives and it has turned and moved; when its own place drifts off it, fresh
+// particles are drawn about the place. A view that changes at once (a kidnap on open ground)
+// makes the filter lost within half a second.
 #pragma once
 
 #include <cstdint>
@@ -86,6 +90,9 @@ struct ParticleParams {
   double confirm_move_m = 3.0;
   int confirm_strikes = 3;
   double rival_margin = 30;
+  /// The estimate is not confirmed while its own place (refined onto each scan) lies farther
+  /// than this from it; after `confirm_strikes` such scans fresh particles are drawn about it.
+  double place_offset_m = 0.25;
   /// Places a reseed keeps (the best-scoring of those the beams confirm): among racks in rows
   /// the true place may score below several look-alikes in the view the kidnap left.
   int max_places = 16;
@@ -210,8 +217,10 @@ class ParticleLocalizer final : public PoseEstimator {
     bool active = false;
     double turned_rad = 0, moved_m = 0;
     int strikes = 0;
+    int offset_scans = 0;  // scans in a row the estimate's own place lay off it
   };
   Confirmation confirm_;
+  std::optional<Place> nudge_;    // fresh particles to draw about the estimate's own place
   PlaceHypotheses places_;        // the last reseed's places, until the scans rule them out
   std::vector<Place> handover_;   // rivals still agreeing when the estimate was contradicted
   double last_share_ = -1;        // the last scan's explained share at the estimate

@@ -33,10 +33,21 @@ void PlaceHypotheses::check(const Judge& judge, int strikes, double margin) {
 }
 
 bool PlaceHypotheses::holds(const geom::Pose2& estimate, double apart_m, double apart_rad) const {
-  return std::any_of(places_.begin(), places_.end(), [&](const Place& p) {
-    return geom::distance(p.pose.position(), estimate.position()) <= apart_m &&
-           std::fabs(geom::wrap_angle(p.pose.yaw - estimate.yaw)) <= apart_rad;
-  });
+  return nearest(estimate, apart_m, apart_rad).has_value();
+}
+
+std::optional<geom::Pose2> PlaceHypotheses::nearest(const geom::Pose2& estimate, double apart_m,
+                                                    double apart_rad) const {
+  std::optional<geom::Pose2> best;
+  double best_m = apart_m;
+  for (const Place& p : places_) {
+    const double d = geom::distance(p.pose.position(), estimate.position());
+    if (d <= best_m && std::fabs(geom::wrap_angle(p.pose.yaw - estimate.yaw)) <= apart_rad) {
+      best_m = d;
+      best = p.pose;
+    }
+  }
+  return best;
 }
 
 std::vector<geom::Pose2> PlaceHypotheses::rivals(const geom::Pose2& estimate, double apart_m,

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "geometry/vec2.h"
@@ -38,6 +39,9 @@ class PlaceHypotheses {
   void check(const Judge& judge, int strikes, double margin);
   /// Whether a live place lies within apart_m and apart_rad of `estimate`.
   bool holds(const geom::Pose2& estimate, double apart_m, double apart_rad) const;
+  /// The live place nearest `estimate` among those within apart_m and apart_rad of it.
+  std::optional<geom::Pose2> nearest(const geom::Pose2& estimate, double apart_m,
+                                     double apart_rad) const;
   /// The live places farther than apart_m or apart_rad from `estimate`.
   std::vector<geom::Pose2> rivals(const geom::Pose2& estimate, double apart_m,
                                   double apart_rad) const;
