@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -380,17 +381,20 @@ TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
   EXPECT_EQ(near.collisions, 0);
   // Carried 5 to 8 m and set down at any heading, in a plant of racks (a tuning-set world): past
   // the EKF's search window (its global match covers about 2.5 m at all headings), found again
-  // by reseeding from global matches. The mechanism, on one draw; how often it works is measured
-  // by data/scenarios/estimators.yaml (with seed 1 here it converges on a look-alike: not yet
-  // solved).
+  // by reseeding from global matches. The mechanism, on two draws; how often it works is
+  // measured by data/scenarios/kidnap_particles.yaml. Seed 1 converged on a look-alike a bay
+  // along until a reseed's places were kept and judged scan by scan (robot/place_hypotheses.h).
   const worlds::World racks =
       worlds::load_world(test::source_file("data/worlds/generated/styles/racks_s1.json"));
   c.kidnap = {20.0, 0, 0, 0, 5.0, 8.0};
-  c.seed = 2;
-  const EpisodeResult r = run(racks, c);
-  EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
-  EXPECT_GE(r.relocalizations, 1);
-  EXPECT_FALSE(r.integrity.breach.has_value());
+  for (const std::uint64_t seed : {1u, 2u}) {
+    c.seed = seed;
+    const EpisodeResult r = run(racks, c);
+    EXPECT_TRUE(r.docked) << seed << ": " << r.status
+                          << (r.failure ? ": " + r.failure->detail : std::string());
+    EXPECT_GE(r.relocalizations, 1) << seed;
+    EXPECT_FALSE(r.integrity.breach.has_value()) << seed;
+  }
   c.perception.estimator = robot::EstimatorKind::kEkf;  // the EKF on the same draw
   const EpisodeResult ekf = run(racks, c);
   EXPECT_FALSE(ekf.docked) << "the EKF's window does not reach this far";
