@@ -32,6 +32,9 @@ inline Vec2 rotate(Vec2 v, double angle_rad) {
 
 /// Wraps an angle to (-pi, pi].
 inline double wrap_angle(double angle_rad) {
+  // Already in (-pi, pi): the value itself, as remainder would give it, without remainder's
+  // rounding-mode switches (the particle filter wraps every particle's heading every scan).
+  if (std::fabs(angle_rad) < M_PI) return angle_rad;
   double a = std::remainder(angle_rad, 2.0 * M_PI);
   if (a <= -M_PI) a += 2.0 * M_PI;
   return a;

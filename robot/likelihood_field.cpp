@@ -14,11 +14,14 @@ LikelihoodField::LikelihoodField(const worlds::World& map, double resolution_m, 
   const geom::Rect area = map.floor.inflated(reach_m);
   res_ = std::max(resolution_m, std::sqrt(area.width() * area.height() /
                                           static_cast<double>(std::max(1L, max_cells))));
+  per_m_ = 1.0 / res_;
   origin_ = {area.xmin, area.ymin};
   nx_ = std::max(1L, static_cast<long>(std::ceil(area.width() / res_)));
   ny_ = std::max(1L, static_cast<long>(std::ceil(area.height() / res_)));
-  cells_.assign(static_cast<std::size_t>(nx_ * ny_), static_cast<float>(reach_));
-  inside_.assign(cells_.size(), 0);
+  storage_ = util::HugePageBlock(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) *
+                                 sizeof(float));
+  cells_ = static_cast<float*>(storage_.data());
+  std::fill(cells_, cells_ + nx_ * ny_, static_cast<float>(reach_));
   add_outline(map.floor, false);
   for (const geom::Rect& r : map.obstacles) add_outline(r, true);
   add_outline(worlds::charger_body(map).bounding_box(), true);
@@ -42,9 +45,11 @@ void LikelihoodField::add_outline(const geom::Rect& r, bool solid) {
     const bool in = geom::in_closed_rect(r, c);
     const double d = in ? std::min({c.x - r.xmin, r.xmax - c.x, c.y - r.ymin, r.ymax - c.y})
                         : geom::distance(c, geom::closest_point(r, c));
-    const std::size_t k = static_cast<std::size_t>(j * nx_ + i);
-    cells_[k] = std::min(cells_[k], static_cast<float>(std::min(d, reach_)));
-    if (in == solid) inside_[k] = 1;
+    // The nearest surface's distance, negative once any outline puts the centre inside a block
+    // or beyond a wall.
+    float& cell = cells_[static_cast<std::size_t>(j * nx_ + i)];
+    const float nearest = std::min(std::fabs(cell), static_cast<float>(std::min(d, reach_)));
+    cell = std::signbit(cell) || in == solid ? -nearest : nearest;
   };
   for (long j = j0; j <= j1; ++j) {
     const double y = origin_.y + (static_cast<double>(j) + 0.5) * res_;
@@ -58,20 +63,6 @@ void LikelihoodField::add_outline(const geom::Rect& r, bool solid) {
     for (long i = i0; i <= left_end; ++i) visit(i, j);
     for (long i = std::max(right_start, left_end + 1); i <= i1; ++i) visit(i, j);
   }
-}
-
-double LikelihoodField::distance(geom::Vec2 p) const {
-  const double u = (p.x - origin_.x) / res_ - 0.5, v = (p.y - origin_.y) / res_ - 0.5;
-  const double fu = std::floor(u), fv = std::floor(v);
-  const long i = static_cast<long>(fu), j = static_cast<long>(fv);
-  const double a = u - fu, b = v - fv;
-  auto signed_at = [&](long ci, long cj) {
-    const bool in = ci >= 0 && cj >= 0 && ci < nx_ && cj < ny_ &&
-                    inside_[static_cast<std::size_t>(cj * nx_ + ci)];
-    return in ? -static_cast<double>(at(ci, cj)) : static_cast<double>(at(ci, cj));
-  };
-  return (1 - b) * ((1 - a) * signed_at(i, j) + a * signed_at(i + 1, j)) +
-         b * ((1 - a) * signed_at(i, j + 1) + a * signed_at(i + 1, j + 1));
 }
 
 }  // namespace plantsim::robot

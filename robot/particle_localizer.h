@@ -14,9 +14,13 @@
 // places are kept and judged scan by scan (place_hypotheses.h): the estimate is confirmed only
 // once no rival lives and it has turned and moved; when its own place drifts off it, fresh
 // particles are drawn about the place. A view that changes at once (a kidnap on open ground)
-// makes the filter lost within half a second.
+// makes the filter lost within half a second. As AMCL, the set starts at `max_particles` drawn
+// from the prior (KLD sampling then chooses fewer), and a settled filter weighs a scan only after
+// `update_min_m` of travel or `update_min_rad` of turn: in between the particles are left alone,
+// the estimate follows the odometry and every scan is still judged against the map.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -51,9 +55,12 @@ struct ParticleParams {
   /// quadrature), so that a set spread over metres narrows as evidence builds, not at once.
   double unsettled_sigma_m = 0.2;
   double field_resolution_m = 0.05;  ///< the likelihood field's cells (likelihood_field.h)
-  double update_min_m = 0.05;    ///< a well-localised filter weighs a scan after this much travel
-  double update_min_rad = 0.05;  ///< or turn (the same scan again at rest would make it too sure)
-  double alpha_slow = 0.001;     ///< augmented MCL's long- and short-term averages of the weight
+  /// A settled filter weighs a scan after this much travel or turn (AMCL's defaults): the same
+  /// view weighed again makes the set surer than the scans are, and costs (at 0.05 m and rad a
+  /// particle filter episode cost 2.6 to 5.2 times the EKF's).
+  double update_min_m = 0.25;
+  double update_min_rad = 0.2;
+  double alpha_slow = 0.001;  ///< augmented MCL's long- and short-term averages of the weight
   double alpha_fast = 0.1;
   double jitter_m = 0.003;    ///< roughening: each resampled copy spread by this (keeps the set
   double jitter_rad = 0.003;  ///< diverse; resampling happens only after weighing)
@@ -136,7 +143,8 @@ class ParticleLocalizer final : public PoseEstimator {
   struct Particle {
     double x, y, yaw, bias, w;
   };
-  /// The set after the last scan (pending motion not applied), weights summing to one.
+  /// The set after the last update (pending and deferred motion not applied), weights summing
+  /// to one.
   const std::vector<Particle>& particles() const { return set_; }
 
  private:
@@ -145,15 +153,31 @@ class ParticleLocalizer final : public PoseEstimator {
     geom::Pose2 delta;
     double moved_m = 0, turned_rad = 0, gyro_var = 0, time_s = 0;
   };
+  /// `first` then `then`: the deltas composed, the rest summed.
+  static Pending chain(const Pending& first, const Pending& then);
+  /// The motion since the last scan, and any deferred before it, applied to the particles.
   void apply_motion();
+  /// A settled filter between updates, as AMCL: the motion since the last scan is held back from
+  /// the particles (applied with the next update, in one draw) and the estimate dead-reckoned.
+  void defer_motion();
+  /// Whether this scan may leave the particles alone: the filter is settled, no confirmation or
+  /// redraw is pending and it has moved less than update_min_m and turned less than
+  /// update_min_rad since it last weighed.
+  bool may_defer() const;
   /// The scan's returns to weigh by, in the robot frame (none when too few are valid).
   void take_points(const LidarScan& scan);
   /// Weighs the set by them; returns the weighted mean per-beam likelihood (for w_fast/slow), or
   /// -1 when there are none.
   double weigh();
   void tabulate_log_likelihood();
-  /// A return's log-likelihood at distance d from the nearest mapped surface.
-  double log_likelihood(double d) const;
+  /// A return's log-likelihood at distance d from the nearest mapped surface (inline: asked for
+  /// every beam of every particle).
+  double log_likelihood(double d) const {
+    const double u = std::min(1.0, d * d * per_reach_squared_) * kLogTableSize;
+    const std::size_t i = std::min(static_cast<std::size_t>(u), kLogTableSize - 1);
+    const double f = u - static_cast<double>(i);
+    return log_table_[i] + f * (log_table_[i + 1] - log_table_[i]);
+  }
   /// KLD resampling into n drawn by the weights, plus `fresh` about the candidate places (1: the
   /// set replaced by particles about them).
   void resample(const std::vector<Place>& candidates, double fresh);
@@ -198,7 +222,9 @@ class ParticleLocalizer final : public PoseEstimator {
   static constexpr std::size_t kLogTableSize = 4096;
   std::vector<double> log_table_;  // log-likelihood against the squared distance
   double tabulated_sigma_m_ = -1;
+  double per_reach_squared_ = 1;  // 1 / (the field's reach)^2, the table's scale
   Pending pending_;
+  Pending deferred_;  // motion of earlier scans not yet applied to the particles
   double since_weigh_m_ = 0, since_weigh_rad_ = 0;
   geom::Pose2 estimate_;  // best cluster's mean, at the last scan
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Zero();

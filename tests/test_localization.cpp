@@ -29,6 +29,7 @@
 #include "sim/episode.h"
 #include "sim/kidnap_landing.h"
 #include "test_paths.h"
+#include "util/huge_page_block.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
@@ -161,6 +162,44 @@ TEST(ScanMatcher, ALoneWallsSpreadIsOpenAlongItAndTightAcrossIt) {
   EXPECT_LT(std::sqrt(m->spread(2, 2)), 0.03);
 }
 
+// The likelihood field holds the exact signed distance to the nearest mapped surface, within
+// float rounding: positive on the floor, negative inside a block and beyond the floor's walls,
+// linear across a flat surface (no half-cell offset), capped at the reach, the reach off the grid.
+TEST(LikelihoodField, SignedExactDistancesCappedAtTheReach) {
+  worlds::World w;
+  w.floor = {0, 0, 20, 12};
+  w.obstacles = {{8, 4, 12, 8}};
+  w.start = {2, 6, 0};
+  w.charger = {19.5, 6, 0};
+  const LikelihoodField field(w, 0.05, 1.0);
+  const double tight = 1e-6;
+  EXPECT_NEAR(field.distance({7.6, 6.0}), 0.4, tight);
+  EXPECT_NEAR(field.distance({7.98, 6.1}), 0.02, tight);
+  EXPECT_NEAR(field.distance({8.02, 6.1}), -0.02, tight);  // across the face, no step
+  EXPECT_NEAR(field.distance({8.25, 6.0}), -0.25, tight);
+  EXPECT_NEAR(field.distance({10.0, 6.0}), -1.0, tight);  // deep inside: the reach, negative
+  EXPECT_NEAR(field.distance({10.0, 3.3}), 0.7, tight);
+  EXPECT_NEAR(field.distance({4.0, 2.0}), 1.0, tight);    // open floor: capped
+  EXPECT_NEAR(field.distance({4.0, -0.3}), -0.3, tight);  // beyond the floor's wall
+  EXPECT_NEAR(field.distance({4.0, 0.3}), 0.3, tight);
+  EXPECT_DOUBLE_EQ(field.distance({100.0, 100.0}), 1.0);  // off the grid
+}
+
+// The field's storage: zeroed, writable to its last byte, and owned by one block at a time.
+TEST(HugePageBlock, ZeroedWritableAndMovable) {
+  util::HugePageBlock block(5u << 20);
+  ASSERT_NE(block.data(), nullptr);
+  auto* bytes = static_cast<unsigned char*>(block.data());
+  EXPECT_EQ(bytes[0], 0);
+  EXPECT_EQ(bytes[block.size() - 1], 0);
+  bytes[block.size() - 1] = 7;
+  util::HugePageBlock moved(std::move(block));
+  EXPECT_EQ(block.data(), nullptr);
+  EXPECT_EQ(block.size(), 0u);
+  EXPECT_EQ(static_cast<unsigned char*>(moved.data())[moved.size() - 1], 7);
+  EXPECT_EQ(util::HugePageBlock(0).data(), nullptr);
+}
+
 // A pose measured with a spread open along x and tight along y moves the estimate along y only,
 // and narrows it there; one beyond the gate changes nothing.
 // A correlative match's answer is a grid cell and a rotation step off; refined on the exact
@@ -250,6 +289,42 @@ TEST(Particles, AKidnapOnOpenGroundIsNoticedFromAHandfulOfReturnsOrNone) {
         << "set down at " << landing.x << ", " << landing.y << " with "
         << valid_returns(short_scan(yard, landing, 0)) << " returns";
   }
+}
+
+// Settled, the filter weighs a scan as AMCL does, after update_min_m of travel (0.25 m): between
+// those, the particles are left alone (the same view weighed again would make the set surer than
+// the scans are, and costs) while the estimate follows the odometry and every scan is still
+// judged against the map.
+TEST(Particles, ASettledFilterWeighsAfterATravelAndFollowsTheOdometryBetween) {
+  const worlds::World w = l_room();
+  const MapRaycaster map(w);
+  ParticleLocalizer filter(w, map, EkfParams{}, GlobalMatchParams{}, ParticleParams{});
+  const double dt = 1.0 / 15, speed = 0.5;
+  int k = 0;
+  for (; k < 30; ++k) {  // at rest until settled
+    filter.predict(0, 0, dt);
+    filter.observe(exact_scan(w, w.start));
+  }
+  ASSERT_EQ(filter.health(), LocalizationHealth::kOk);
+  geom::Pose2 truth = w.start;
+  int updates = 0, scans = 0;
+  for (; truth.x < w.start.x + 1.5; ++k, ++scans) {
+    const std::vector<ParticleLocalizer::Particle> before = filter.particles();
+    truth.x += speed * dt;
+    filter.predict(speed * dt, 0, dt);
+    LidarScan scan = exact_scan(w, truth);
+    scan.t_s = k * dt;
+    filter.observe(scan);
+    const std::vector<ParticleLocalizer::Particle>& after = filter.particles();
+    updates += after.size() != before.size() || after.front().x != before.front().x;
+    EXPECT_NEAR(filter.pose().x, truth.x, 0.02) << "scan " << scans;
+    EXPECT_NEAR(filter.pose().y, truth.y, 0.02) << "scan " << scans;
+  }
+  EXPECT_EQ(filter.health(), LocalizationHealth::kOk);
+  // 1.5 m in steps of 3.3 cm: an update every eighth scan, six in all (every scan moved the
+  // particles before).
+  EXPECT_GE(updates, 5);
+  EXPECT_LE(updates, 7) << "of " << scans << " scans";
 }
 
 // Lost in a long bare hall (every place along it looks alike), the search turns once on the
