@@ -356,6 +356,37 @@ TEST(LostSearch, TurnsOnceThenFollowsTheNearestWallAndKeepsOffIt) {
   EXPECT_TRUE(search.driving());
 }
 
+// Lost in a corridor narrower than the footprint and twice the clearance (1.2 m for a 0.6 m disk
+// and 0.35 m a side), no heading is free by the clearance: the search drives along the corridor
+// with the narrow clearance, never touching a wall. Held to the full clearance it would turn on
+// the spot until the relocalisation timeout (held-out corridors_s6 seed 8, 1270d62).
+TEST(LostSearch, DrivesACorridorNarrowerThanItsClearance) {
+  worlds::World corridor;
+  corridor.floor = {0, 0, 40, 1.2};
+  const double radius = 0.3, dt = 0.1;
+  auto search_drives = [&](LostSearchParams params) {
+    LostSearch search(params, radius);
+    geom::Pose2 pose{8, 0.6, 0.3};
+    double driven = 0;
+    for (int k = 0; k < 600 && driven < 6.0; ++k) {  // a minute
+      const controller::Twist t = search.step(exact_scan(corridor, pose), pose);
+      const geom::Vec2 before = pose.position();
+      pose = geom::compose(pose, {t.v_mps * dt, 0, t.omega_radps * dt});
+      driven += geom::distance(before, pose.position());
+      EXPECT_GT(pose.y - radius, 0.0) << "touched the lower wall at step " << k;
+      EXPECT_LT(pose.y + radius, 1.2) << "touched the upper wall at step " << k;
+      if (pose.y - radius <= 0.0 || pose.y + radius >= 1.2) break;
+    }
+    return driven;
+  };
+  const LostSearchParams defaults;
+  ASSERT_GT(2 * radius + 2 * defaults.clearance_m, 1.2);
+  EXPECT_GE(search_drives(defaults), 6.0);
+  LostSearchParams no_narrow_way = defaults;
+  no_narrow_way.narrow_clearance_m = defaults.clearance_m;
+  EXPECT_EQ(search_drives(no_narrow_way), 0.0) << "only the full clearance: turns on the spot";
+}
+
 TEST(Ekf, APoseMeasuredInOneDirectionUpdatesThatDirectionOnly) {
   const worlds::World w = l_room();
   const MapRaycaster map(w);
