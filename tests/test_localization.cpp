@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "batch/batch_runner.h"
 #include "episode/episode_config_json.h"
@@ -74,6 +76,17 @@ LidarScan exact_scan(const worlds::World& world, const geom::Pose2& pose) {
     s.ranges.push_back(best);
   }
   return s;
+}
+
+// A plant of `boxes` on `floor`, starting at `start`, its charger at `charger`.
+worlds::World plant(geom::Rect floor, std::vector<geom::Rect> boxes, geom::Pose2 start,
+                    geom::Pose2 charger) {
+  worlds::World w;
+  w.floor = floor;
+  w.obstacles = std::move(boxes);
+  w.start = start;
+  w.charger = charger;
+  return w;
 }
 
 worlds::World l_room() {
@@ -166,11 +179,7 @@ TEST(ScanMatcher, ALoneWallsSpreadIsOpenAlongItAndTightAcrossIt) {
 // float rounding: positive on the floor, negative inside a block and beyond the floor's walls,
 // linear across a flat surface (no half-cell offset), capped at the reach, the reach off the grid.
 TEST(LikelihoodField, SignedExactDistancesCappedAtTheReach) {
-  worlds::World w;
-  w.floor = {0, 0, 20, 12};
-  w.obstacles = {{8, 4, 12, 8}};
-  w.start = {2, 6, 0};
-  w.charger = {19.5, 6, 0};
+  const worlds::World w = plant({0, 0, 20, 12}, {{8, 4, 12, 8}}, {2, 6, 0}, {19.5, 6, 0});
   const LikelihoodField field(w, 0.05, 1.0);
   const double tight = 1e-6;
   EXPECT_NEAR(field.distance({7.6, 6.0}), 0.4, tight);
@@ -333,11 +342,8 @@ TEST(Particles, ASettledFilterWeighsAfterATravelAndFollowsTheOdometryBetween) {
 // run of contradictions (the count had stayed frozen at 14, the filter degraded and the robot
 // waiting for it until it gave up: held-out yard_s7 seed 1, three unmapped boxes, cc2201b).
 TEST(Particles, AFairShareOfExplainedReturnsEndsARunOfContradictions) {
-  worlds::World map;
-  map.floor = {0, 0, 100, 100};
-  map.obstacles = {{52, 49.8, 52.5, 50.2}};
-  map.start = {50, 50, 0};
-  map.charger = {99, 50, 0};
+  const worlds::World map =
+      plant({0, 0, 100, 100}, {{52, 49.8, 52.5, 50.2}}, {50, 50, 0}, {99, 50, 0});
   worlds::World blocked = map, beside = map;
   blocked.obstacles.push_back({51, 46, 52, 54});   // unmapped, hiding the mapped box
   beside.obstacles.push_back({51.5, 51, 52, 52});  // unmapped, smaller, off to the side
