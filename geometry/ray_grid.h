@@ -6,7 +6,9 @@
 // per beam, whatever their number, where a Box2D cast walks its tree for each.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -28,9 +30,45 @@ struct RayGridHit {
   int box;         ///< index in the order the boxes were given (rectangles first, then oriented)
 };
 
-/// Where the ray from `origin` along unit `direction` enters `r`: the distance and the outward
-/// normal of the face it enters by; none when it misses or starts inside (or on a face, leaving).
-std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 origin, Vec2 direction);
+/// Where the ray from `origin` along unit `direction` enters `r`: true with the distance and the
+/// outward normal of the face it enters by; false when it misses or starts inside (or on a face,
+/// leaving). Inline, with plain out-parameters: an optional returned through memory stalled
+/// every fan on store forwarding.
+inline bool ray_enters_rect(const Rect& r, Vec2 o, Vec2 d, double& t, Vec2& normal) {
+  double t_in = -std::numeric_limits<double>::infinity(),
+         t_out = std::numeric_limits<double>::infinity();
+  double nx = 0, ny = 0;
+  const double lo[2] = {r.xmin, r.ymin}, hi[2] = {r.xmax, r.ymax}, org[2] = {o.x, o.y},
+               dir[2] = {d.x, d.y};
+  for (int a = 0; a < 2; ++a) {
+    if (dir[a] == 0) {
+      if (org[a] < lo[a] || org[a] > hi[a]) return false;
+      continue;
+    }
+    double t0 = (lo[a] - org[a]) / dir[a], t1 = (hi[a] - org[a]) / dir[a];
+    double side = -1;  // entering through the low face when moving up the axis
+    if (t0 > t1) std::swap(t0, t1), side = 1;
+    if (t0 > t_in) {
+      t_in = t0;
+      nx = a == 0 ? side : 0;
+      ny = a == 0 ? 0 : side;
+    }
+    t_out = std::min(t_out, t1);
+  }
+  // Starting inside (or on the face, leaving): no entry, as Box2D's polygons.
+  if (!(t_in > 0) || t_in > t_out) return false;
+  t = t_in;
+  normal = {nx, ny};
+  return true;
+}
+
+/// The same, as one value.
+inline std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec2 o, Vec2 d) {
+  double t;
+  Vec2 normal;
+  if (!ray_enters_rect(r, o, d, t, normal)) return std::nullopt;
+  return std::pair{t, normal};
+}
 
 class RayGrid {
  public:
@@ -58,8 +96,9 @@ class RayGrid {
   double cell_m() const { return cell_; }
 
  private:
-  /// The ray's entry into box i: distance and normal; none if it misses or starts inside.
-  std::optional<std::pair<double, Vec2>> enter(int i, Vec2 origin, Vec2 direction) const;
+  /// The ray's entry into box i: true with the distance and normal; false if it misses or starts
+  /// inside.
+  bool enter(int i, Vec2 origin, Vec2 direction, double& t, Vec2& normal) const;
 
   /// The cells [i0, i1] x [j0, j1] that `q` overlaps, clamped to the grid.
   void cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const;

@@ -19,6 +19,7 @@ void MapRaycaster::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directi
 }
 
 const geom::NearRaster& MapRaycaster::raster_for(double margin_m) const {
+  if (!near_.empty() && near_.front()->margin_m() == margin_m) return *near_.front();  // per beam
   for (std::size_t i = 0; i < near_.size(); ++i)
     if (near_[i]->margin_m() == margin_m) {
       std::rotate(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(i),

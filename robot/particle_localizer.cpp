@@ -51,18 +51,18 @@ class WeightedDraw {
       : cumulative_(set.size()) {
     double sum = 0;
     for (std::size_t n = 0; n < set.size(); ++n) cumulative_[n] = sum += set[n].w;
-    uniform_ = std::uniform_real_distribution<double>(0.0, sum);
+    sum_ = sum;
   }
   const ParticleLocalizer::Particle& operator()(const std::vector<ParticleLocalizer::Particle>& set,
-                                                std::mt19937_64& rng) const {
-    const auto at = std::lower_bound(cumulative_.begin(), cumulative_.end(), uniform_(rng));
+                                                util::RandomStream& rng) const {
+    const auto at = std::lower_bound(cumulative_.begin(), cumulative_.end(), sum_ * rng.uniform());
     return set[std::min<std::size_t>(static_cast<std::size_t>(at - cumulative_.begin()),
                                      set.size() - 1)];
   }
 
  private:
   std::vector<double> cumulative_;
-  mutable std::uniform_real_distribution<double> uniform_;
+  double sum_ = 0;
 };
 
 // A place's pose and spread as a normal distribution to draw from and to evaluate (the spread's
@@ -145,9 +145,7 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
   update_health();
 }
 
-double ParticleLocalizer::normal(double sigma) {
-  return sigma > 0 ? sigma * unit_normal_(rng_) : 0;
-}
+double ParticleLocalizer::normal(double sigma) { return sigma > 0 ? sigma * rng_.gaussian() : 0; }
 
 void ParticleLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) {
   if (dt_s <= 0) return;
@@ -379,7 +377,7 @@ void ParticleLocalizer::systematic_draw(std::size_t count) {
   double total = 0;
   for (const Particle& q : set_) total += q.w;
   const double step = total / static_cast<double>(std::max<std::size_t>(1, count));
-  double next = std::uniform_real_distribution<double>(0.0, step)(rng_), cumulative = 0;
+  double next = step * rng_.uniform(), cumulative = 0;
   std::size_t n = 0;
   for (std::size_t k = 0; k < count; ++k, next += step) {
     while (n + 1 < set_.size() && cumulative + set_[n].w < next) cumulative += set_[n++].w;

@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <utility>
 #include <vector>
 
@@ -34,6 +33,7 @@
 #include "robot/place_hypotheses.h"
 #include "robot/pose_estimator.h"
 #include "robot/scan_matcher.h"
+#include "util/random_stream.h"
 
 namespace plantsim::robot {
 
@@ -213,8 +213,7 @@ class ParticleLocalizer final : public PoseEstimator {
   const worlds::World& map_;
   LikelihoodField field_;
   std::optional<ScanMatcher> matcher_;  // for reseeding, built the first time it is needed
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  util::RandomStream rng_;
   std::vector<Particle> set_, scratch_;
   std::vector<geom::Vec2> points_;  // the weighed beams' returns in the robot frame
   double hit_sigma_m_ = 0;          // the likelihood's sigma for them

@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev
   nlohmann-json3-dev libyaml-cpp-dev libcli11-dev
   libfreetype-dev fonts-dejavu-core libglpk-dev libcgal-dev libnlopt-dev
+  libpcg-cpp-dev libboost-dev
   python3 python3-dev pybind11-dev python3-numpy
 )
 if [ "${1:-}" = test ]; then

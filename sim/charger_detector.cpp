@@ -10,7 +10,7 @@ namespace plantsim::sim {
 using robot::ChargerDetection;
 
 ChargerDetector::ChargerDetector(DetectionParams params, std::uint64_t seed)
-    : p_(params), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {}
+    : p_(params), noise_(seed ^ 0x9e3779b97f4a7c15ULL) {}
 
 std::optional<geom::Pose2> ChargerDetector::observe(const PhysicsWorld& physics,
                                                     const geom::Pose2& robot_truth,
@@ -30,8 +30,8 @@ std::optional<geom::Pose2> ChargerDetector::observe(const PhysicsWorld& physics,
   }
   // Draws for every visible image, in a fixed order, so the random stream does not depend on
   // which branch was taken.
-  const double miss = uniform_(rng_), outlier = uniform_(rng_);
-  const double ex = gauss_(rng_), ey = gauss_(rng_), eyaw = gauss_(rng_);
+  const double miss = noise_.uniform(), outlier = noise_.uniform();
+  const double ex = noise_.gaussian(), ey = noise_.gaussian(), eyaw = noise_.gaussian();
   if (miss < p_.false_negative_probability) return std::nullopt;
   const bool gross = outlier < p_.outlier_probability;
   const double sp = gross ? p_.outlier_position_m : p_.position_noise_m;

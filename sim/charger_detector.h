@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
-#include <random>
 
 #include "geometry/vec2.h"
 #include "robot/readings.h"
+#include "util/random_stream.h"
 
 namespace plantsim::sim {
 
@@ -49,9 +49,7 @@ class ChargerDetector {
   std::optional<geom::Pose2> observe(const PhysicsWorld& physics, const geom::Pose2& robot_truth,
                                      const geom::Pose2& dock_truth, geom::Vec2 marker);
   DetectionParams p_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
-  std::uniform_real_distribution<double> uniform_{0.0, 1.0};
+  util::RandomStream noise_;
   double next_image_s_ = 0;
   std::deque<ChargerDetection> pending_;
 };

@@ -4,7 +4,8 @@
 #pragma once
 
 #include <cstdint>
-#include <random>
+
+#include "util/random_stream.h"
 
 namespace plantsim::sim {
 
@@ -23,8 +24,7 @@ class Imu {
 
  private:
   ImuParams params_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
+  util::RandomStream noise_;
   double bias_radps_;
 };
 

@@ -10,7 +10,7 @@
 namespace plantsim::sim {
 
 Lidar::Lidar(LidarParams params, std::uint64_t seed)
-    : params_(params), rng_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
+    : params_(params), noise_(seed ^ 0x6c1d4a7e3b2f9085ULL) {}
 
 robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& robot_truth,
                              double t_s) {
@@ -33,8 +33,8 @@ robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& rob
   for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
     // Noise and dropout are drawn for every beam, hit or not, so that one beam's outcome
     // never shifts the random stream of the others (scans stay comparable across worlds).
-    const double noise = params_.range_noise_m * gauss_(rng_);
-    const bool dropped = uniform_(rng_) < params_.dropout_probability;
+    const double noise = params_.range_noise_m * noise_.gaussian();
+    const bool dropped = noise_.uniform() < params_.dropout_probability;
     double r = no_return;
     if (const auto& hit = hits_[i]) {
       if (hit->range_m >= params_.min_range_m)

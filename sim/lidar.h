@@ -8,13 +8,13 @@
 
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <span>
 #include <vector>
 
 #include "geometry/vec2.h"
 #include "robot/beam_directions.h"
 #include "robot/readings.h"
+#include "util/random_stream.h"
 #include "worlds/surfaces.h"
 
 namespace plantsim::sim {
@@ -48,9 +48,7 @@ class Lidar {
 
  private:
   LidarParams params_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
-  std::uniform_real_distribution<double> uniform_{0.0, 1.0};
+  util::RandomStream noise_;
   double next_scan_s_ = 0;
   robot::BeamDirections directions_;
   std::vector<std::optional<worlds::RayHit>> hits_;  // likewise

@@ -6,9 +6,8 @@
 // it.
 #pragma once
 
-#include <random>
-
 #include "geometry/vec2.h"
+#include "util/random_stream.h"
 
 namespace plantsim::sim {
 
@@ -30,8 +29,7 @@ class Localization {
 
  private:
   LocalizationParams params_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
+  util::RandomStream noise_;
   geom::Pose2 map_from_odom_;
   double next_fix_s_ = 0.0;
   bool fixed_ = false;

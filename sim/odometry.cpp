@@ -6,14 +6,14 @@
 namespace plantsim::sim {
 
 Odometry::Odometry(geom::Pose2 start, double wheel_base_m, OdometryNoise noise, std::uint64_t seed)
-    : pose_(start), wheel_base_m_(wheel_base_m), noise_(noise), rng_(seed) {}
+    : pose_(start), wheel_base_m_(wheel_base_m), noise_(noise), draws_(seed) {}
 
 void Odometry::read() {
   if (counted_s_ <= 0) return;
   double left = left_m_, right = right_m_;
   if (noise_.wheel_speed_noise > 0) {
-    left *= 1.0 + noise_.wheel_speed_noise * gauss_(rng_);
-    right *= 1.0 + noise_.wheel_speed_noise * gauss_(rng_);
+    left *= 1.0 + noise_.wheel_speed_noise * draws_.gaussian();
+    right *= 1.0 + noise_.wheel_speed_noise * draws_.gaussian();
   }
   left *= 1.0 + noise_.left_scale_error;
   right *= 1.0 + noise_.right_scale_error;

@@ -5,10 +5,9 @@
 // elsewhere, for metrics.
 #pragma once
 
-#include <random>
-
 #include "controller/diff_drive.h"
 #include "geometry/vec2.h"
+#include "util/random_stream.h"
 
 namespace plantsim::sim {
 
@@ -36,8 +35,7 @@ class Odometry {
   geom::Pose2 pose_;
   double wheel_base_m_;
   OdometryNoise noise_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
+  util::RandomStream draws_;
   double speed_ = 0;
   double left_m_ = 0, right_m_ = 0, counted_s_ = 0;
 };

@@ -34,7 +34,7 @@ SensorSuite::SensorSuite(const worlds::World& plant, const SensorParams& params,
       detector_(p_.detection, seed),
       oracle_fix_(p_.oracle_fix, seed),
       pads_(p_.pads),
-      rng_(seed ^ 0x2545f4914f6cdd1dULL),
+      noise_(seed ^ 0x2545f4914f6cdd1dULL),
       last_odom_(plant.start),
       last_yaw_(plant.start.yaw),
       charger_marker_(worlds::charger_body(plant).center) {}
@@ -79,8 +79,8 @@ SensorReadings SensorSuite::read(const PhysicsWorld& physics, double t_s) {
   contact_ = charging_ = false;
   if (const auto target = physics.target()) {
     const geom::Vec2 rel = geom::rotate(target->box.center() - truth.position(), -truth.yaw);
-    r.target_in_robot = rel + geom::Vec2{p_.beacon.position_noise_m * gauss_(rng_),
-                                         p_.beacon.position_noise_m * gauss_(rng_)};
+    r.target_in_robot = rel + geom::Vec2{p_.beacon.position_noise_m * noise_.gaussian(),
+                                         p_.beacon.position_noise_m * noise_.gaussian()};
   }
   if (p_.oracle) {
     OracleReadings o;

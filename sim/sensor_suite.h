@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <random>
 #include <vector>
 
 #include "robot/readings.h"
@@ -18,6 +17,7 @@
 #include "sim/odometry.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"
+#include "util/random_stream.h"
 #include "worlds/world.h"
 
 namespace plantsim::sim {
@@ -62,8 +62,7 @@ class SensorSuite {
   ChargerDetector detector_;
   Localization oracle_fix_;
   ChargerPads pads_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> gauss_{0.0, 1.0};
+  util::RandomStream noise_;
   double last_read_s_ = 0;
   geom::Pose2 last_odom_;
   double last_yaw_ = 0;  // the body's true heading at the last reading, for the gyro's increment

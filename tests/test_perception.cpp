@@ -23,6 +23,7 @@
 #include "sim/sensor_suite.h"
 #include "sim/wheel_drive.h"
 #include "test_paths.h"
+#include "util/random_stream.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
@@ -96,6 +97,38 @@ TEST(Lidar, MaxRangeAndDropoutRate) {
   for (int k = 0; k < 30; ++k)
     for (double r : l.scan(physics, w.start, k).ranges) dropped += std::isnan(r), ++beams;
   EXPECT_NEAR(static_cast<double>(dropped) / beams, 0.3, 0.015);  // 10830 beams: sigma 0.0044
+}
+
+// The sensors' random draws: the same seed the same stream, another seed another, and a normal
+// whose tails are a normal's (a ziggurat's tail is its delicate part: 3 and 4 sigma checked on a
+// million draws, where a wrong tail shows at many standard errors).
+TEST(RandomStream, DeterministicPerSeedWithANormalsMomentsAndTails) {
+  util::RandomStream a(42), b(42), c(43);
+  int same = 0, differ = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const double x = a.gaussian(), y = b.gaussian(), z = c.gaussian();
+    same += x == y, differ += x != z;
+  }
+  EXPECT_EQ(same, 1000);
+  EXPECT_EQ(differ, 1000);
+  util::RandomStream s(7);
+  const int n = 1'000'000;
+  double sum = 0, sum2 = 0, sum4 = 0, usum = 0;
+  int beyond3 = 0, beyond4 = 0, below_half = 0;
+  for (int k = 0; k < n; ++k) {
+    const double g = s.gaussian(), u = s.uniform();
+    sum += g, sum2 += g * g, sum4 += g * g * g * g, usum += u;
+    beyond3 += std::fabs(g) > 3, beyond4 += std::fabs(g) > 4;
+    below_half += u < 0.5;
+    ASSERT_TRUE(u >= 0 && u < 1) << u;
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.005);    // standard error 0.001
+  EXPECT_NEAR(sum2 / n, 1.0, 0.007);   // 0.0014
+  EXPECT_NEAR(sum4 / n, 3.0, 0.05);    // kurtosis 3; standard error 0.01
+  EXPECT_NEAR(beyond3, 2700, 5 * 52);  // P(|g| > 3) = 0.0027
+  EXPECT_NEAR(beyond4, 63, 5 * 8);     // P(|g| > 4) = 6.3e-5
+  EXPECT_NEAR(usum / n, 0.5, 0.0015);  // 0.00029
+  EXPECT_NEAR(below_half, n / 2, 5 * 500);
 }
 
 TEST(Lidar, NoiseHasTheConfiguredSpread) {

@@ -15,10 +15,11 @@ namespace plantsim::sim {
 using episode::run_episode;
 namespace {
 
-EpisodeResult run(const worlds::World& world, TravelMode travel) {
+EpisodeResult run(const worlds::World& world, TravelMode travel, std::uint64_t seed = 1) {
   auto p = planner::make_planner("vg", planner::planner_input(world, true));
   EpisodeConfig config;
   config.travel = travel;
+  config.seed = seed;
   return episode::run_episode(world, *p, config);
 }
 
@@ -30,17 +31,25 @@ double park_time(const worlds::MovingObstacle& m) {
   return m.start_time_s + length / m.speed_mps;
 }
 
+// Ten noise seeds, not one: the field's local minima among the moving obstacles delay some
+// pursuits past the target's parking (a seed's noise decides which), and one seed's timing is
+// luck. Every pursuit must catch it, cleanly, and most while it still moves.
 TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
   const auto world =
       worlds::load_world(test::source_file("data/worlds/plants/seed001_slow_target.json"));
   ASSERT_TRUE(world.target.has_value());
-  const EpisodeResult r = run(world, TravelMode::kPotentialField);
-  EXPECT_EQ(r.status, "caught");
-  EXPECT_TRUE(r.caught);
-  EXPECT_EQ(r.collisions, 0);
-  EXPECT_LT(r.time_s, park_time(*world.target));  // caught while it was still moving
-  // Never faster than the document's 0.5 m/s (a small overshoot of the drive's speed loop).
-  for (const auto& s : r.trajectory) ASSERT_LE(s.speed_mps, 0.52) << s.t_s;
+  int while_moving = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const EpisodeResult r = run(world, TravelMode::kPotentialField, seed);
+    EXPECT_EQ(r.status, "caught") << "seed " << seed;
+    EXPECT_TRUE(r.caught) << "seed " << seed;
+    EXPECT_EQ(r.collisions, 0) << "seed " << seed;
+    if (r.time_s < park_time(*world.target)) ++while_moving;
+    // Never faster than the document's 0.5 m/s (a small overshoot of the drive's speed loop).
+    for (const auto& s : r.trajectory)
+      ASSERT_LE(s.speed_mps, 0.52) << "seed " << seed << " " << s.t_s;
+  }
+  EXPECT_GE(while_moving, 8);  // caught while it was still moving
 }
 
 TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {

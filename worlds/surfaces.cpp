@@ -38,11 +38,21 @@ void SurfaceGrid::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directio
                            double first_angle, double increment, double max_range_m,
                            std::vector<std::optional<RayHit>>& hits) const {
   grid_.cast_fan(from, directions, first_angle, increment, max_range_m, scratch_);
-  hits.assign(directions.size(), std::nullopt);
-  for (std::size_t k = 0; k < directions.size(); ++k)
-    if (const auto& h = scratch_[k])
-      hits[k] = RayHit{from + h->range_m * directions[k], h->normal, h->range_m,
-                       kinds_[static_cast<std::size_t>(h->box)]};
+  hits.resize(directions.size());
+  // Field by field into place: a RayHit built aside and copied in stalled on store forwarding.
+  for (std::size_t k = 0; k < directions.size(); ++k) {
+    const auto& h = scratch_[k];
+    auto& out = hits[k];
+    if (!h) {
+      out.reset();
+      continue;
+    }
+    if (!out) out.emplace();
+    out->point = from + h->range_m * directions[k];
+    out->normal = h->normal;
+    out->range_m = h->range_m;
+    out->kind = kinds_[static_cast<std::size_t>(h->box)];
+  }
 }
 
 }  // namespace plantsim::worlds
