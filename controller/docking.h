@@ -50,8 +50,11 @@ struct DockingParams {
   double press_timeout_s = 1.5;      ///< pressed this long without charging: a miss
   double stuck_timeout_s = 20.0;     ///< approach or back-off blocked (or unsettled after a shove)
                                      ///< this long: give up, stopped
-  double relocalize_timeout_s = 90.0;  ///< lost this long after a displacement: give up (the robot
-                                       ///< searches meanwhile: robot/lost_search.h)
+  /// Lost this long after a displacement: give up (the robot searches meanwhile:
+  /// robot/lost_search.h). Three minutes: in a 100 x 60 m yard a lone wall may be all a 20 m
+  /// lidar sees, and at the search's 0.3 m/s the 90 s this was took 27 m, short of a wall's end
+  /// (kidnapped particle-filter robots on the tuning yards that gave up mid-search).
+  double relocalize_timeout_s = 180.0;
   bool undock = false;    ///< after charging starts, reverse to the staging pose (guarded)
   double settle_s = 1.0;  ///< after a displacement: stopped, localised and untouched this long
                           ///< before recovering (a new way to the staging pose)

@@ -194,6 +194,8 @@ class ParticleLocalizer final : public PoseEstimator {
   Place polish(const LidarScan& scan, Place place) const;
   void summarise();
   void judge(const LidarScan& scan);
+  /// The weighed returns' summed log-likelihood at `pose`.
+  double points_log_likelihood(const geom::Pose2& pose);
   /// Share of the weighed returns within three sigmas of a mapped surface from `pose`.
   double explained_share(const geom::Pose2& pose) const;
   void update_health();

@@ -36,18 +36,31 @@ bool PlaceHypotheses::holds(const geom::Pose2& estimate, double apart_m, double 
   return nearest(estimate, apart_m, apart_rad).has_value();
 }
 
-std::optional<geom::Pose2> PlaceHypotheses::nearest(const geom::Pose2& estimate, double apart_m,
-                                                    double apart_rad) const {
-  std::optional<geom::Pose2> best;
+std::optional<std::size_t> PlaceHypotheses::nearest_index(const geom::Pose2& estimate,
+                                                          double apart_m, double apart_rad) const {
+  std::optional<std::size_t> best;
   double best_m = apart_m;
-  for (const Place& p : places_) {
-    const double d = geom::distance(p.pose.position(), estimate.position());
-    if (d <= best_m && std::fabs(geom::wrap_angle(p.pose.yaw - estimate.yaw)) <= apart_rad) {
+  for (std::size_t i = 0; i < places_.size(); ++i) {
+    const geom::Pose2& p = places_[i].pose;
+    const double d = geom::distance(p.position(), estimate.position());
+    if (d <= best_m && std::fabs(geom::wrap_angle(p.yaw - estimate.yaw)) <= apart_rad) {
       best_m = d;
-      best = p.pose;
+      best = i;
     }
   }
   return best;
+}
+
+std::optional<geom::Pose2> PlaceHypotheses::nearest(const geom::Pose2& estimate, double apart_m,
+                                                    double apart_rad) const {
+  const std::optional<std::size_t> i = nearest_index(estimate, apart_m, apart_rad);
+  return i ? std::optional(places_[*i].pose) : std::nullopt;
+}
+
+void PlaceHypotheses::move_nearest(const geom::Pose2& estimate, double apart_m, double apart_rad,
+                                   const geom::Pose2& pose) {
+  if (const std::optional<std::size_t> i = nearest_index(estimate, apart_m, apart_rad))
+    places_[*i].pose = pose;
 }
 
 std::vector<geom::Pose2> PlaceHypotheses::rivals(const geom::Pose2& estimate, double apart_m,

@@ -10,6 +10,7 @@
 // Robot side: the map, the scans and the odometry only.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -42,6 +43,9 @@ class PlaceHypotheses {
   /// The live place nearest `estimate` among those within apart_m and apart_rad of it.
   std::optional<geom::Pose2> nearest(const geom::Pose2& estimate, double apart_m,
                                      double apart_rad) const;
+  /// The live place nearest `estimate` (as `nearest`) moved onto `pose`.
+  void move_nearest(const geom::Pose2& estimate, double apart_m, double apart_rad,
+                    const geom::Pose2& pose);
   /// The live places farther than apart_m or apart_rad from `estimate`.
   std::vector<geom::Pose2> rivals(const geom::Pose2& estimate, double apart_m,
                                   double apart_rad) const;
@@ -52,6 +56,8 @@ class PlaceHypotheses {
     int strikes = 0;
     double log_likelihood = 0;  // summed over the scans since the reset
   };
+  std::optional<std::size_t> nearest_index(const geom::Pose2& estimate, double apart_m,
+                                           double apart_rad) const;
   std::vector<Place> places_;
 };
 

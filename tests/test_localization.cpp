@@ -254,6 +254,12 @@ TEST(PlaceHypotheses, ContradictedOrTrailingPlacesAreRuledOutAndMoveWithTheOdome
   places.move({2, 0, M_PI / 2});  // the robot drove 2 m and turned left
   EXPECT_TRUE(places.holds({2, 0, M_PI / 2}, 0.01, 0.01));
   EXPECT_FALSE(places.holds({0, 0, 0}, 1.0, 0.3));
+  // The place nearest an estimate moved onto it (the estimate fits the scan clearly better).
+  places.move_nearest({2.4, 0, M_PI / 2}, 1.0, 0.3, {2.4, 0, M_PI / 2});
+  EXPECT_TRUE(places.holds({2.4, 0, M_PI / 2}, 0.01, 0.01));
+  EXPECT_FALSE(places.holds({2, 0, M_PI / 2}, 0.3, 0.01));
+  places.move_nearest({9, 9, 0}, 1.0, 0.3, {9, 9, 0});  // none near: nothing moves
+  EXPECT_FALSE(places.holds({9, 9, 0}, 1.0, 0.3));
 }
 
 // A scan of `world` from `pose` as a short-range lidar sees it (6 m: open ground shows a handful
