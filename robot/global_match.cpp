@@ -2,6 +2,7 @@
 #include "robot/global_match.h"
 
 #include <cmath>
+#include <vector>
 
 namespace plantsim::robot {
 
@@ -14,10 +15,19 @@ std::optional<double> scan_agreement(const MapRaycaster& map, const LidarScan& s
                                      std::vector<double>* residuals) {
   const geom::Pose2 sensor = geom::compose(pose, scan.mount);
   const std::size_t n = scan.ranges.size(), stride = std::max<std::size_t>(1, n / 90);
+  // The judged beams cast as one fan (the boxes in reach visited once, not once a beam); each
+  // direction as cast() takes it from its angle, so each hit is the one cast() finds.
+  thread_local std::vector<geom::Vec2> directions;
+  thread_local std::vector<std::optional<RayHit>> hits;
+  directions.clear();
+  for (std::size_t i = 0; i < n; i += stride)
+    directions.push_back(geom::unit_from_angle(sensor.yaw + scan.angle(i)));
+  map.cast_fan(sensor.position(), directions, sensor.yaw + scan.angle(0),
+               static_cast<double>(stride) * scan.angle_increment_rad, scan.max_range_m, hits);
   int agree = 0, beams = 0;
-  for (std::size_t i = 0; i < n; i += stride) {
+  for (std::size_t i = 0, k = 0; i < n; i += stride, ++k) {
     if (std::isnan(scan.ranges[i])) continue;  // a dropout says nothing
-    const auto hit = map.cast(sensor.position(), sensor.yaw + scan.angle(i), scan.max_range_m);
+    const std::optional<RayHit>& hit = hits[k];
     // A return short of the mapped surface, or where the map has none in range, may be
     // something the map lacks (a box, a person): it neither confirms nor contradicts the pose.
     // Only a beam that passes where the map has a surface contradicts it. (Counted against the
