@@ -230,8 +230,6 @@ TEST_F(BatchFiles, DockingSuiteOverPlantsAndRosMaps) {
 namespace plantsim::batch {
 namespace {
 
-// With the lidar, the EKF and the tracker on (the defaults), one thread or two give the same
-// episode records, to the last digit.
 // A kidnap on a tuning yard (yard_s2, start and kidnap of seed 4 as the scenario draws them): set
 // down 9 m from the top boundary with nothing else in range, the particle filter's robot follows
 // that wall to the corner. The place its reseed kept for the estimate slid 0.4 m along the wall
@@ -254,6 +252,8 @@ TEST_F(BatchFiles, AKidnappedParticleFilterConfirmsItsPlaceAtAYardsCorner) {
   EXPECT_EQ(r.collisions, 0);
 }
 
+// With the lidar, the EKF and the tracker on (the defaults), one thread or two give the same
+// episode records, to the last digit.
 TEST_F(BatchFiles, ThreadsDoNotChangeResultsWithPerceptionOn) {
   const std::string scenario =
       write("t.yaml", "name: threads\nworlds: [" +
