@@ -166,7 +166,8 @@ std::function<int()> add_batch_command(CLI::App& app) {
       write_run_folder(e.plant, e.result, e.config, staged.path(), command_line(cmd),
                        "episode " + e.id, false);
       staged.commit();
-      std::cout << e.id << ": " << e.result.status << " -> " << staged.destination() << "\n";
+      std::cout << e.id << ": " << episode::status_name(e.result) << " -> " << staged.destination()
+                << "\n";
       return e.result.succeeded() ? kExitOk : kExitFailed;
     }
     batch::RunOptions o;

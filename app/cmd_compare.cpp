@@ -40,7 +40,8 @@ struct CompareOptions {
 
 /// One planner's panel: its plan alone (--plan-only), or the episode it drives.
 render::ComparisonPanel compare_one(const std::string& name, const worlds::World& world,
-                                    const CompareOptions& opt, const sim::EpisodeConfig& config) {
+                                    const CompareOptions& opt,
+                                    const episode::EpisodeConfig& config) {
   render::ComparisonPanel panel;
   panel.label = name;
   panel.drove = !opt.plan_only;
@@ -54,7 +55,8 @@ render::ComparisonPanel compare_one(const std::string& name, const worlds::World
         p->plan(world.start.position(),
                 ros_map ? worlds::staging_pose(world).position() : world.charger.position());
     panel.run.planner = name;
-    panel.run.status = std::string(planner::to_string(r.status));
+    panel.run.status = episode::EpisodeStatus::kPlannerAnswer;
+    panel.run.plan_status = r.status;
     panel.run.plan = r.path;
     panel.run.path_length_m = r.length;
     panel.run.plan_stats = r.stats;
@@ -64,8 +66,8 @@ render::ComparisonPanel compare_one(const std::string& name, const worlds::World
   // The potential field has no plan of its own: the visibility graph's is its reference.
   const bool field = name == kFieldEntry;
   auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
-  sim::EpisodeConfig c = config;
-  if (field) c.travel = sim::TravelMode::kPotentialField;
+  episode::EpisodeConfig c = config;
+  if (field) c.travel = episode::TravelMode::kPotentialField;
   panel.run = episode::run_episode(world, *p, c);
   if (opt.graph) panel.graph_edges = p->graph_edges();
   return panel;
@@ -82,7 +84,7 @@ nlohmann::ordered_json comparison_json(const worlds::World& world, const std::st
   for (const auto& panel : panels) {
     const planner::PlanStats& st = panel.run.plan_stats;
     data["panels"].push_back({{"label", panel.label},
-                              {"status", panel.run.status},
+                              {"status", episode::status_name(panel.run)},
                               {"path_length_m", panel.run.path_length_m},
                               {"build_ms", st.build_ms},
                               {"query_ms", st.query_ms},
@@ -125,8 +127,8 @@ std::function<int()> add_compare_command(CLI::App& app) {
     poses.movingai_scen = opt->scen;
     poses.movingai_query = opt->query;
     const worlds::World world = worlds::load_world(opt->world, poses);
-    const sim::EpisodeConfig config =
-        opt->config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt->config);
+    const episode::EpisodeConfig config =
+        opt->config.empty() ? episode::EpisodeConfig{} : episode::load_episode_config(opt->config);
     util::StagedFolder staged(
         opt->out.empty() ? "results/" + worlds::file_name_component(world.name) + "_compare"
                          : opt->out,
@@ -138,11 +140,12 @@ std::function<int()> add_compare_command(CLI::App& app) {
     bool all_ok = true;
     for (const std::string& name : opt->planners) {
       render::ComparisonPanel panel = compare_one(name, world, *opt, config);
-      all_ok = all_ok && (opt->plan_only ? panel.run.status == "ok" : panel.run.succeeded());
+      all_ok = all_ok && (opt->plan_only ? panel.run.plan_status == planner::PlanStatus::kOk
+                                         : panel.run.succeeded());
       report.rows.push_back(metric_row(panel.run, world.name, panel.drove));
-      std::cout << name << ": " << panel.run.status << ", path " << panel.run.path_length_m
-                << " m, plan " << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms
-                << " ms\n";
+      std::cout << name << ": " << episode::status_name(panel.run) << ", path "
+                << panel.run.path_length_m << " m, plan "
+                << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms << " ms\n";
       panels.push_back(std::move(panel));
     }
     const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;

@@ -50,33 +50,33 @@ struct CoverageOptions {
 
 /// One method's plan driven in the simulation: its panel's driven path and note, its JSON entry
 /// and table cells; false unless it docked.
-bool drive_coverage(const worlds::World& world, const sim::EpisodeConfig& config, CoverageRun& run,
-                    render::CoveragePanel& panel, nlohmann::ordered_json& j, std::string& driven,
-                    std::string& status) {
-  const sim::EpisodeResult e = episode::run_episode(world, *run.planner, config);
+bool drive_coverage(const worlds::World& world, const episode::EpisodeConfig& config,
+                    CoverageRun& run, render::CoveragePanel& panel, nlohmann::ordered_json& j,
+                    std::string& driven, std::string& status) {
+  const episode::EpisodeResult e = episode::run_episode(world, *run.planner, config);
   for (const auto& s : e.trajectory) panel.driven.push_back(s.truth.position());
   const auto start_cell = run.planner->grid().nearest_free(world.start.position());
   const double dc =
       start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
   char buf[160];
   std::snprintf(buf, sizeof buf, "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
-                e.status.c_str(), e.time_s, 100 * dc, e.collisions);
+                episode::status_name(e).c_str(), e.time_s, 100 * dc, e.collisions);
   panel.extra = buf;
-  j["driven"] = {{"status", e.status},
+  j["driven"] = {{"status", episode::status_name(e)},
                  {"time_s", e.time_s},
                  {"driven_coverage", dc},
                  {"collisions", e.collisions},
                  {"driven_length_m", e.driven_length_m}};
   std::snprintf(buf, sizeof buf, "%.1f", 100 * dc);
   driven = buf;
-  status = e.status;
+  status = episode::status_name(e);
   return e.docked;
 }
 
 /// Every method's panel, summary entry and table row; false when one leaves a reachable cell
 /// uncovered (or, driven, does not dock).
 bool cover_all(const worlds::World& world, const CoverageOptions& opt,
-               const sim::EpisodeConfig& config, std::vector<CoverageRun>& runs,
+               const episode::EpisodeConfig& config, std::vector<CoverageRun>& runs,
                std::vector<render::CoveragePanel>& panels, nlohmann::ordered_json& summary,
                render::Report& report) {
   bool all_covered = true;
@@ -131,8 +131,8 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   cmd->add_flag("--drive", opt->drive, "Also sweep and dock in the simulation");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    sim::EpisodeConfig config =
-        opt->config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt->config);
+    episode::EpisodeConfig config =
+        opt->config.empty() ? episode::EpisodeConfig{} : episode::load_episode_config(opt->config);
     planner::CoverageParams params = opt->params.empty()
                                          ? planner::CoverageParams{}
                                          : planner::load_coverage_params(opt->params);

@@ -53,8 +53,8 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   overrides.movingai_scen = opt.scen;
   overrides.movingai_query = opt.query;
   const worlds::World world = worlds::load_world(opt.world, overrides);
-  sim::EpisodeConfig config =
-      opt.config.empty() ? sim::EpisodeConfig{} : episode::load_episode_config(opt.config);
+  episode::EpisodeConfig config =
+      opt.config.empty() ? episode::EpisodeConfig{} : episode::load_episode_config(opt.config);
   auto p = planner::make_planner(opt.planner, planner::planner_input(world, true));
   // Every input is valid by now. The outputs are written into a staging folder beside the
   // destination (an unwritable place fails here, before the simulation) and moved into place
@@ -66,10 +66,10 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   config.seed = opt.seed;
   if (!opt.travel.empty())
     config.travel =
-        opt.travel == "path" ? sim::TravelMode::kPath : sim::TravelMode::kPotentialField;
+        opt.travel == "path" ? episode::TravelMode::kPath : episode::TravelMode::kPotentialField;
   if (opt.undock) config.docking.undock = true;
   if (opt.animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
-  const sim::EpisodeResult r = episode::run_episode(world, *p, config);
+  const episode::EpisodeResult r = episode::run_episode(world, *p, config);
 
   const std::string line = command;
   std::string setting;
@@ -82,7 +82,7 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   // The units of every table: mm and degrees at the dock, seconds to a tenth.
   // A docking error only where it docked (else it was the distance to the charger).
   const bool at_dock = r.error_measured && (r.docked || r.caught);
-  std::cout << world.name << ": " << r.status << ", position error "
+  std::cout << world.name << ": " << episode::status_name(r) << ", position error "
             << (at_dock ? util::fixed(r.position_error_m * 1000, 1) + " mm" : "-")
             << ", heading error " << (at_dock ? util::fixed(r.heading_error_deg, 2) + " deg" : "-")
             << ", collisions " << r.collisions << ", retries " << r.retries << ", stops " << r.stops

@@ -19,7 +19,7 @@
 
 namespace plantsim::app {
 
-util::MadeBy run_made_by(const sim::EpisodeResult& r, const sim::EpisodeConfig& config) {
+util::MadeBy run_made_by(const episode::EpisodeResult& r, const episode::EpisodeConfig& config) {
   util::MadeBy m;
   m.duration_s = r.wall_s;
   m.input = "config";
@@ -27,7 +27,7 @@ util::MadeBy run_made_by(const sim::EpisodeResult& r, const sim::EpisodeConfig& 
   return m;
 }
 
-std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
+std::string summary_json(const episode::EpisodeResult& r, const std::string& world_name,
                          const std::string& command_line, const util::MadeBy* made_by) {
   nlohmann::ordered_json j;
   j["world"] = world_name;
@@ -67,15 +67,18 @@ std::vector<std::string> metric_headers() {
           "max cross-track (mm)"};
 }
 
-std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name,
+std::vector<std::string> metric_row(const episode::EpisodeResult& r, const std::string& world_name,
                                     bool drove) {
   using util::fixed;
   const std::string plan_ms = fixed(r.plan_stats.build_ms + r.plan_stats.query_ms, 2),
                     planned = fixed(r.path_length_m, 2);
   if (!drove) {  // a plan alone: nothing was driven, so nothing driven is measured
     const std::string none = "-";
-    return {world_name, r.planner, none, r.status, none,    none,    none, none, none,
-            none,       none,      none, none,     plan_ms, planned, none, none};
+    return {world_name, r.planner, none,    episode::status_name(r),
+            none,       none,      none,    none,
+            none,       none,      none,    none,
+            none,       plan_ms,   planned, none,
+            none};
   }
   // The docking error of an episode that never docked is no value (it was the distance to the
   // charger): "-"; the failure's banner says where it stopped.
@@ -83,7 +86,7 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
   return {world_name,
           r.planner,
           r.travel,
-          r.status,
+          episode::status_name(r),
           at_dock ? fixed(1000 * r.position_error_m, 1) : "-",
           at_dock ? fixed(r.heading_error_deg, 2) : "-",
           std::to_string(r.collisions),
@@ -99,7 +102,7 @@ std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::stri
           fixed(1000 * r.max_cross_track_m, 0)};
 }
 
-std::string trajectory_csv(const sim::EpisodeResult& r) {
+std::string trajectory_csv(const episode::EpisodeResult& r) {
   std::string out =
       "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,"
       "wall_following,target_x_m,target_y_m,est_status\n";
@@ -116,8 +119,8 @@ std::string trajectory_csv(const sim::EpisodeResult& r) {
   return out;
 }
 
-void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
-                      const sim::EpisodeConfig& config, const std::string& out_dir,
+void write_run_folder(const worlds::World& world, const episode::EpisodeResult& r,
+                      const episode::EpisodeConfig& config, const std::string& out_dir,
                       const std::string& line, const std::string& setting, bool animate) {
   const util::MadeBy made_by = run_made_by(r, config);
   util::write_file_atomically(out_dir + "/summary.json",

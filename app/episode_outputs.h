@@ -6,29 +6,30 @@
 #include <string>
 #include <vector>
 
-#include "sim/episode.h"
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "util/made_by.h"
 
 namespace plantsim::app {
 
 /// `made_by`, when given, is written as "made_by" (util/made_by.h).
-std::string summary_json(const sim::EpisodeResult& r, const std::string& world_name,
+std::string summary_json(const episode::EpisodeResult& r, const std::string& world_name,
                          const std::string& command_line, const util::MadeBy* made_by = nullptr);
 /// The stamp of a run: now, the episode's wall time, the hash of its whole config.
-util::MadeBy run_made_by(const sim::EpisodeResult& r, const sim::EpisodeConfig& config);
-std::string trajectory_csv(const sim::EpisodeResult& r);
+util::MadeBy run_made_by(const episode::EpisodeResult& r, const episode::EpisodeConfig& config);
+std::string trajectory_csv(const episode::EpisodeResult& r);
 
 /// The metrics table of reports: headers, and one row per episode.
 std::vector<std::string> metric_headers();
 /// The run's row under metric_headers(); `drove` false (a plan alone): "-" for what only driving
 /// measures.
-std::vector<std::string> metric_row(const sim::EpisodeResult& r, const std::string& world_name,
+std::vector<std::string> metric_row(const episode::EpisodeResult& r, const std::string& world_name,
                                     bool drove = true);
 
 /// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run
 /// figure's title; `animate` adds frames/ (and animation.mp4 when ffmpeg is installed).
-void write_run_folder(const worlds::World& world, const sim::EpisodeResult& r,
-                      const sim::EpisodeConfig& config, const std::string& out_dir,
+void write_run_folder(const worlds::World& world, const episode::EpisodeResult& r,
+                      const episode::EpisodeConfig& config, const std::string& out_dir,
                       const std::string& command_line, const std::string& setting, bool animate);
 
 /// The names write_run_folder may write, for util::StagedFolder.

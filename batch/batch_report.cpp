@@ -221,7 +221,7 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
     render::RunFigureOptions options;
     options.setting = "episode " + f.id;
     options.dock_tolerance_m = f.config.tolerance.position_m;
-    std::string why = f.result.status;
+    std::string why = episode::status_name(f.result);
     if (f.result.failure)
       why = std::string(robot::to_string(f.result.failure->reason)) + " at " +
             fixed(f.result.failure->time_s, 1) + " s (" + f.result.failure->detail + ")";
@@ -247,7 +247,8 @@ void add_plan_comparisons(const std::vector<worlds::World>& worlds,
       const planner::PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
       render::ComparisonPanel panel{name, {}, {}, false};
       panel.run.planner = name;
-      panel.run.status = std::string(planner::to_string(r.status));
+      panel.run.status = episode::EpisodeStatus::kPlannerAnswer;
+      panel.run.plan_status = r.status;
       panel.run.plan = r.path;
       panel.run.path_length_m = r.length;
       panel.run.plan_stats = r.stats;

@@ -37,11 +37,11 @@ using nlohmann::json;
 
 /// The work is bounded before it starts: the physics steps these episodes may ask for.
 void check_step_bound(const std::string& scenario_path, const BatchSpec& spec,
-                      const std::vector<sim::EpisodeConfig>& configs,
+                      const std::vector<episode::EpisodeConfig>& configs,
                       const std::vector<Episode>& mine) {
   double steps = 0;
   for (const Episode& e : mine) {
-    const sim::EpisodeConfig& c = configs[e.controller * spec.faults.size() + e.fault];
+    const episode::EpisodeConfig& c = configs[e.controller * spec.faults.size() + e.fault];
     steps += std::ceil(c.timeout_s / c.step.dt_s);
   }
   if (steps > kMaxBatchSteps)
@@ -117,7 +117,7 @@ std::FILE* open_for_append(const std::string& jsonl) {
 struct RunContext {
   const BatchSpec& spec;
   const ScenarioWorlds& loaded;
-  const std::vector<sim::EpisodeConfig>& configs;
+  const std::vector<episode::EpisodeConfig>& configs;
   const ScenarioIdentity& scenario;
   const RunOptions& options;
 };
@@ -205,7 +205,7 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
     throw std::invalid_argument("--shard i/n needs 0 <= i < n");
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
   check_charger_offsets(spec, loaded.worlds);
-  const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
+  const std::vector<episode::EpisodeConfig> configs = episode_configs(spec);
   const EpisodeSpace all(spec, loaded.names);
   const ScenarioIdentity scenario =
       scenario_identity(spec, loaded.contents, loaded.names, all.size());

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/episode.h"
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {

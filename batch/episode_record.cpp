@@ -13,8 +13,8 @@ namespace plantsim::batch {
 using nlohmann::json;
 
 std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
-                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m,
-                        std::optional<double> shortest_possible_m) {
+                        const worlds::World& plant, const episode::EpisodeResult& r,
+                        double optimal_m, std::optional<double> shortest_possible_m) {
   const std::string& world_name = plant.name;
   const geom::Pose2& start = plant.start;
   nlohmann::ordered_json j;

@@ -7,7 +7,7 @@
 
 #include "batch/batch_spec.h"
 #include "batch/scenario_setup.h"
-#include "sim/episode.h"
+#include "episode/episode_result.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {
@@ -17,7 +17,7 @@ namespace plantsim::batch {
 /// `shortest_possible_m` the driven length's lower bound (docked episodes;
 /// batch/shortest_possible.h).
 std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
-                        const worlds::World& plant, const sim::EpisodeResult& r, double optimal_m,
-                        std::optional<double> shortest_possible_m);
+                        const worlds::World& plant, const episode::EpisodeResult& r,
+                        double optimal_m, std::optional<double> shortest_possible_m);
 
 }  // namespace plantsim::batch

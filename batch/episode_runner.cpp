@@ -30,7 +30,7 @@ EpisodeRunner::Run EpisodeRunner::run(const Episode& e) {
 
 std::optional<double> EpisodeRunner::shortest_possible(const worlds::World& plant,
                                                        std::size_t world,
-                                                       const sim::EpisodeResult& r) {
+                                                       const episode::EpisodeResult& r) {
   if (r.trajectory.empty()) return std::nullopt;
   std::unique_ptr<planner::Planner> own;
   planner::Planner* bound = nullptr;
@@ -87,7 +87,7 @@ EpisodeRunner::Run EpisodeRunner::prepare(const Episode& e) {
 
 std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines,
                                            const BatchSpec& spec, const ScenarioWorlds& loaded,
-                                           const std::vector<sim::EpisodeConfig>& configs,
+                                           const std::vector<episode::EpisodeConfig>& configs,
                                            std::size_t limit) {
   // One failure of each reason first, then a second of each, ...: every reason is drawn before
   // any is drawn twice (the report lists every failure).
@@ -125,7 +125,7 @@ std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines
 ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std::string& id) {
   const BatchSpec spec = load_batch_spec(scenario_path);
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
-  const std::vector<sim::EpisodeConfig> configs = episode_configs(spec);
+  const std::vector<episode::EpisodeConfig> configs = episode_configs(spec);
   const std::optional<std::int64_t> index = EpisodeSpace(spec, loaded.names).find(id);
   if (!index)
     throw std::invalid_argument(scenario_path + ": no episode '" + id +

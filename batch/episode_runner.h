@@ -14,10 +14,11 @@
 
 #include "batch/batch_spec.h"
 #include "batch/scenario_setup.h"
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {
@@ -28,14 +29,14 @@ class EpisodeRunner {
  public:
   EpisodeRunner(const BatchSpec& spec, const std::vector<worlds::World>& worlds,
                 const std::vector<std::uint64_t>& contents,
-                const std::vector<sim::EpisodeConfig>& configs,
+                const std::vector<episode::EpisodeConfig>& configs,
                 const episode::EpisodeSteering& steering = {})
       : spec_(spec), worlds_(worlds), contents_(contents), configs_(configs), steering_(steering) {}
 
   struct Run {
     worlds::World plant;
-    sim::EpisodeConfig config;
-    sim::EpisodeResult result;
+    episode::EpisodeConfig config;
+    episode::EpisodeResult result;
     double optimal_m = 0;
     /// Docked episodes: the shortest path the centre could have driven (batch/shortest_possible.h).
     std::optional<double> shortest_possible_m;
@@ -60,12 +61,12 @@ class EpisodeRunner {
   /// The shortest possible drive of a docked episode (the plant's grown boxes; a world's planner
   /// kept while no unmapped box makes the episode's plant its own).
   std::optional<double> shortest_possible(const worlds::World& plant, std::size_t world,
-                                          const sim::EpisodeResult& r);
+                                          const episode::EpisodeResult& r);
 
   const BatchSpec& spec_;
   const std::vector<worlds::World>& worlds_;
   const std::vector<std::uint64_t>& contents_;
-  const std::vector<sim::EpisodeConfig>& configs_;
+  const std::vector<episode::EpisodeConfig>& configs_;
   // A copy: the gallery and the replay pass the default, a temporary that a reference would
   // outlive.
   const episode::EpisodeSteering steering_;
@@ -79,8 +80,8 @@ class EpisodeRunner {
 struct ReplayedEpisode {
   std::string id;
   worlds::World plant;
-  sim::EpisodeResult result;
-  sim::EpisodeConfig config;
+  episode::EpisodeResult result;
+  episode::EpisodeConfig config;
 };
 using FailedEpisode = ReplayedEpisode;
 
@@ -94,7 +95,7 @@ ReplayedEpisode replay_batch_episode(const std::string& scenario_path, const std
 /// of each failure reason first, then a second of each, ...
 std::vector<FailedEpisode> failure_gallery(const std::vector<std::string>& lines,
                                            const BatchSpec& spec, const ScenarioWorlds& loaded,
-                                           const std::vector<sim::EpisodeConfig>& configs,
+                                           const std::vector<episode::EpisodeConfig>& configs,
                                            std::size_t limit);
 
 }  // namespace plantsim::batch

@@ -102,8 +102,8 @@ void check_charger_offsets(const BatchSpec& spec, const std::vector<worlds::Worl
   }
 }
 
-std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec) {
-  std::vector<sim::EpisodeConfig> configs;  // controller x fault
+std::vector<episode::EpisodeConfig> episode_configs(const BatchSpec& spec) {
+  std::vector<episode::EpisodeConfig> configs;  // controller x fault
   for (const auto& c : spec.controllers)
     for (const auto& f : spec.faults)
       configs.push_back(episode::parse_episode_config(

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "batch/batch_spec.h"
-#include "sim/episode.h"
+#include "episode/episode_config.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {
@@ -42,6 +42,6 @@ ScenarioWorlds load_scenario_worlds(const BatchSpec& spec);
 void check_charger_offsets(const BatchSpec& spec, const std::vector<worlds::World>& worlds);
 
 /// The episode settings, controller-major: index controller * faults + fault.
-std::vector<sim::EpisodeConfig> episode_configs(const BatchSpec& spec);
+std::vector<episode::EpisodeConfig> episode_configs(const BatchSpec& spec);
 
 }  // namespace plantsim::batch

@@ -27,7 +27,7 @@ planner::PlannerInput shortest_possible_input(const worlds::World& plant) {
 }
 
 std::optional<double> shortest_possible_m(planner::Planner& bound, const geom::Pose2& start,
-                                          const std::vector<sim::EpisodeResult::Carry>& carries,
+                                          const std::vector<episode::EpisodeResult::Carry>& carries,
                                           geom::Vec2 end) {
   double total = 0;
   geom::Vec2 from = start.position();
@@ -37,7 +37,7 @@ std::optional<double> shortest_possible_m(planner::Planner& bound, const geom::P
     total += p.length;
     return true;
   };
-  for (const sim::EpisodeResult::Carry& c : carries) {
+  for (const episode::EpisodeResult::Carry& c : carries) {
     if (!leg(c.from.position())) return std::nullopt;
     from = c.to.position();
   }

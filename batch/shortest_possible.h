@@ -7,8 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include "episode/episode_result.h"
 #include "planner/planner.h"
-#include "sim/episode.h"
 #include "worlds/world.h"
 
 namespace plantsim::batch {
@@ -24,7 +24,7 @@ planner::PlannerInput shortest_possible_input(const worlds::World& plant);
 /// shortest_possible_input): from `start` to the first carry, between carries (a kidnap lifts the
 /// robot: no driving), from the last to `end`. Nothing when a leg has no path.
 std::optional<double> shortest_possible_m(planner::Planner& bound, const geom::Pose2& start,
-                                          const std::vector<sim::EpisodeResult::Carry>& carries,
+                                          const std::vector<episode::EpisodeResult::Carry>& carries,
                                           geom::Vec2 end);
 
 }  // namespace plantsim::batch

@@ -35,7 +35,7 @@ double best_fps(int frames, Body&& body) {
 
 /// A 2000-point trajectory across the floor: a slow wave from the start to the charger, with a
 /// plan point every 100.
-void wave_trajectory(const worlds::World& w, std::vector<sim::TrajectorySample>& traj,
+void wave_trajectory(const worlds::World& w, std::vector<episode::TrajectorySample>& traj,
                      std::vector<geom::Vec2>& plan) {
   for (int i = 0; i < 2000; ++i) {
     const double f = i / 1999.0;
@@ -55,7 +55,7 @@ void wave_trajectory(const worlds::World& w, std::vector<sim::TrajectorySample>&
 }
 
 /// The bare layers at 1280 x 720 with `ss` x `ss` supersampling: drawn, read back, encoded.
-void bench_layers(const worlds::World& w, const std::vector<sim::TrajectorySample>& traj,
+void bench_layers(const worlds::World& w, const std::vector<episode::TrajectorySample>& traj,
                   const std::vector<geom::Vec2>& plan, int ss, int frames) {
   render::GlCanvas canvas(1280, 720, ss);
   canvas.set_transform(render::PixelTransform::fit(w.floor, 10, 10, 1270, 710, 720));
@@ -117,10 +117,10 @@ void bench_layers(const worlds::World& w, const std::vector<sim::TrajectorySampl
 
 /// The whole run figure as `plantsim run` writes it (layers, legend, text, docking close-up),
 /// encoded by the pipeline: its baseline is the bare layers at the same size.
-void bench_run_figure(const worlds::World& w, const std::vector<sim::TrajectorySample>& traj,
+void bench_run_figure(const worlds::World& w, const std::vector<episode::TrajectorySample>& traj,
                       const std::vector<geom::Vec2>& plan, int frames) {
-  sim::EpisodeResult run;
-  run.status = "docked";
+  episode::EpisodeResult run;
+  run.status = episode::EpisodeStatus::kDocked;
   run.trajectory = traj;
   run.plan = plan;
   run.first_plan = plan;
@@ -158,7 +158,7 @@ void bench_run_figure(const worlds::World& w, const std::vector<sim::TrajectoryS
 
 int run_render_bench(const std::string& shared_data, bool quick) {
   const worlds::World w = worlds::load_world(shared_data + "/worlds/world_N1000.json");
-  std::vector<sim::TrajectorySample> traj;
+  std::vector<episode::TrajectorySample> traj;
   std::vector<geom::Vec2> plan;
   wave_trajectory(w, traj, plan);
   const int frames = quick ? 10 : 40;

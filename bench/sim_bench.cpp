@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"
 #include "worlds/world_loader.h"
@@ -30,7 +31,7 @@ double seconds_since(Clock::time_point t0) {
 // charger, moving obstacles, robot) stepped over the same number of steps, the robot moved
 // along the episode's own true trajectory by setting its velocity, with no sensing, no
 // estimation and no control.
-double replay_steps_per_s(const worlds::World& w, const sim::EpisodeResult& e,
+double replay_steps_per_s(const worlds::World& w, const episode::EpisodeResult& e,
                           const sim::StepSettings& step) {
   sim::PhysicsWorld bare(w);
   const auto& t = e.trajectory;
@@ -55,7 +56,7 @@ struct BeamCost {
   double fan_ns = 0, box2d_ns = 0;
 };
 
-BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e,
+BeamCost beam_cost(const worlds::World& w, const episode::EpisodeResult& e,
                    const sim::LidarParams& lidar) {
   const sim::PhysicsWorld physics(w);
   const int n = lidar.beam_count;
@@ -103,10 +104,10 @@ BeamCost beam_cost(const worlds::World& w, const sim::EpisodeResult& e,
 struct EpisodeTiming {
   double steps_per_s = 0;  // planning time (measured alone) taken out
   double steps_per_s_with_plan = 0;
-  sim::EpisodeResult result;
+  episode::EpisodeResult result;
 };
 
-EpisodeTiming time_episode(const worlds::World& w, const sim::EpisodeConfig& config) {
+EpisodeTiming time_episode(const worlds::World& w, const episode::EpisodeConfig& config) {
   auto fresh = planner::make_planner("vg", planner::planner_input(w, true));
   const auto tp = Clock::now();
   fresh->plan(w.start.position(), worlds::staging_pose(w).position());
@@ -130,12 +131,12 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     std::string count = std::to_string(n);
     const std::string name = std::string("N").append(count);
     const worlds::World w = worlds::load_world(shared_data + "/worlds/world_N" + count + ".json");
-    sim::EpisodeConfig config;  // the defaults: lidar, gyro, EKF, tracker
-    sim::EpisodeConfig no_lidar = config;
+    episode::EpisodeConfig config;  // the defaults: lidar, gyro, EKF, tracker
+    episode::EpisodeConfig no_lidar = config;
     no_lidar.lidar.enabled = false;
-    sim::EpisodeConfig oracle = config;
+    episode::EpisodeConfig oracle = config;
     oracle.perception.mode = robot::PerceptionMode::kOracle;
-    sim::EpisodeConfig particles = config;
+    episode::EpisodeConfig particles = config;
     particles.perception.estimator = robot::EstimatorKind::kParticles;
 
     // Best of the repetitions for each (the least disturbed by the machine).

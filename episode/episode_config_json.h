@@ -6,11 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/episode.h"
+#include "episode/episode_config.h"
 
 namespace plantsim::episode {
-
-using sim::EpisodeConfig;
 
 /// Applies the file's values over `base`. Throws worlds::WorldError naming file and field.
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base = {});

@@ -3,10 +3,8 @@
 
 namespace plantsim::episode {
 
-using namespace plantsim::sim;  // the simulator's parts and the episode's types
-
-void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r) {
-  j["status"] = r.status;
+void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeOutcome& r) {
+  j["status"] = status_name(r);
   if (r.failure) {
     j["failure"] = std::string(to_string(r.failure->reason));
     j["failure_time_s"] = r.failure->time_s;

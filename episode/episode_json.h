@@ -4,13 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/episode.h"
+#include "episode/episode_result.h"
 
 namespace plantsim::episode {
 
-using sim::EpisodeResult;
-
 /// Adds status, docked, errors, collisions, retries, stops, replans, time and lengths to j.
-void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeResult& r);
+void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeOutcome& r);
 
 }  // namespace plantsim::episode

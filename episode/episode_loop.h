@@ -9,9 +9,10 @@
 #include <memory>
 #include <optional>
 
+#include "episode/episode_config.h"
 #include "episode/episode_recorder.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
-#include "sim/episode.h"
 #include "worlds/world.h"
 
 namespace plantsim::episode {
@@ -24,7 +25,7 @@ class EpisodeRun {
 
   /// Plans from the start and assembles the parts; `steering` wraps the travel (may be empty).
   EpisodeRun(const worlds::World& plant, planner::Planner& planner,
-             const sim::EpisodeConfig& config, const EpisodeSteering& steering);
+             const episode::EpisodeConfig& config, const EpisodeSteering& steering);
   ~EpisodeRun();
   EpisodeRun(const EpisodeRun&) = delete;
   EpisodeRun& operator=(const EpisodeRun&) = delete;
@@ -38,14 +39,14 @@ class EpisodeRun {
   /// The awaited decision's twist (before the traction limits, as the travel's own would be).
   void command(controller::Twist twist);
 
-  sim::EpisodeResult& result() { return result_; }
+  episode::EpisodeResult& result() { return result_; }
   double time_s() const;
   /// The robot's perception at the last control period, or none before the first.
   const robot::Perception* last_perception() const;
 
  private:
   class Loop;
-  sim::EpisodeResult result_;
+  episode::EpisodeResult result_;
   worlds::World map_copy_;    // the robot's map when it differs from the plant
   const worlds::World& map_;  // map_copy_ or the plant
   std::unique_ptr<EpisodeRecorder> recorder_;

@@ -8,7 +8,7 @@
 
 namespace plantsim::episode {
 
-using namespace plantsim::sim;  // the simulator's parts and the episode's types
+using namespace plantsim::sim;  // the simulator's parts
 
 using robot::Decision;
 using robot::Perception;
@@ -18,7 +18,7 @@ EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig
     : config_(config),
       r_(result),
       metrics_(plant, result, config.catch_distance_m, config.step.dt_s) {
-  r_.status = "timeout";  // until something ends the episode sooner
+  r_.status = EpisodeStatus::kTimeout;  // until something ends the episode sooner
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s));
   const std::int64_t max_samples = max_steps / std::max(1, config.control_period_steps) + 1;
   r_.trajectory.reserve(static_cast<std::size_t>(std::min<std::int64_t>(
@@ -34,10 +34,11 @@ bool EpisodeRecorder::first_plan(const planner::PlanResult& plan, bool needed, c
   r_.plan_note = plan.note;
   if (plan.status != planner::PlanStatus::kOk) {
     if (needed) {
-      r_.status = std::string(planner::to_string(plan.status));
+      r_.status = EpisodeStatus::kPlannerAnswer;
+      r_.plan_status = plan.status;
       r_.failure = robot::Failure{
           robot::FailureReason::kNoPath, 0.0, start,
-          "the planner: " + r_.status + (plan.note.empty() ? "" : " (" + plan.note + ")")};
+          "the planner: " + status_name(r_) + (plan.note.empty() ? "" : " (" + plan.note + ")")};
       event(Kind::kFailure, 0.0, start.position());
       return false;
     }
@@ -66,7 +67,7 @@ bool EpisodeRecorder::perceived(double t_s, const PhysicsWorld& physics,
   r_.time_s = t_s;
   if (metrics_.target_caught(physics)) {
     r_.caught = true;
-    r_.status = "caught";
+    r_.status = EpisodeStatus::kCaught;
     sample(t_s, physics, p, nullptr);
     return true;
   }
@@ -95,17 +96,18 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
   track_moving_obstacles(t_s, physics);
   r_.max_cross_track_m = std::max(r_.max_cross_track_m, d.cross_track_m);
   sample(t_s, physics, p, &d);
-  if (d.finished.empty()) return false;
+  if (d.finished == robot::TravelEnd::kNone) return false;
   // Success is the charger's signal with no collision on the way (and, undocking, the staging
   // pose reached again), on estimates the robot could trust: one that drove on an estimate
   // 0.25 m off without knowing docked by luck (the charger's marker), not by design.
-  const bool charged = d.finished == "docked" || d.finished == "undocked";
+  const bool charged =
+      d.finished == robot::TravelEnd::kDocked || d.finished == robot::TravelEnd::kUndocked;
   const bool breached = integrity_.record().breach.has_value();
   r_.docked = charged && r_.collisions == 0 && !breached;
-  r_.undocked = d.finished == "undocked";
-  r_.status = !charged || r_.docked ? d.finished
-              : r_.collisions > 0   ? "docked_with_collision"
-                                    : "docked_off_estimate";
+  r_.undocked = d.finished == robot::TravelEnd::kUndocked;
+  r_.status = !charged || r_.docked ? status_of(d.finished)
+              : r_.collisions > 0   ? EpisodeStatus::kDockedWithCollision
+                                    : EpisodeStatus::kDockedOffEstimate;
   if (!charged) metrics_.measure_final_error(physics);
   give_up_ = d.give_up;
   return true;
@@ -114,7 +116,7 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
 void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perception& p,
                              const Decision* d) {
   // The last sample always; the others at the log's current spacing.
-  const bool last = d == nullptr || !d->finished.empty();
+  const bool last = d == nullptr || d->finished != robot::TravelEnd::kNone;
   if (decisions_++ % r_.thinning.trajectory_every != 0 && !last) return;
   const Pose2 truth = physics.robot_pose();
   const double speed = geom::dot(physics.robot_velocity(), truth.heading());
@@ -165,7 +167,7 @@ void EpisodeRecorder::close(const PhysicsWorld& physics, const robot::Travel& tr
                             const controller::TractionGovernor& governor,
                             const robot::Perceiver& perceiver, bool pursuit) {
   for (const robot::ActorState& a : physics.actors()) r_.moving_final.push_back(a.box);
-  if (r_.status == "timeout") metrics_.measure_final_error(physics);
+  if (r_.status == EpisodeStatus::kTimeout) metrics_.measure_final_error(physics);
   r_.localization_status = std::string(to_string(worst_health_));
   r_.integrity = integrity_.record();
   const robot::TravelCounts counts = travel.counts();

@@ -8,11 +8,12 @@
 #include <optional>
 
 #include "controller/traction.h"
+#include "episode/episode_config.h"
+#include "episode/episode_metrics.h"
+#include "episode/episode_result.h"
 #include "planner/planner.h"
 #include "robot/perception.h"
 #include "robot/travel.h"
-#include "sim/episode.h"
-#include "sim/episode_metrics.h"
 #include "sim/failure_watch.h"
 #include "sim/integrity_watch.h"
 
@@ -22,9 +23,7 @@ namespace plantsim::episode {
 using geom::Pose2;
 using geom::Vec2;
 using sim::ContactState;
-using sim::EpisodeConfig;
-using sim::EpisodeMetrics;
-using sim::EpisodeResult;
+
 using sim::FailureWatch;
 using sim::PhysicsWorld;
 

@@ -7,8 +7,9 @@
 
 namespace plantsim::episode {
 
-sim::EpisodeResult run_episode(const worlds::World& plant, planner::Planner& planner,
-                               const sim::EpisodeConfig& config, const EpisodeSteering& steering) {
+episode::EpisodeResult run_episode(const worlds::World& plant, planner::Planner& planner,
+                                   const episode::EpisodeConfig& config,
+                                   const EpisodeSteering& steering) {
   const auto began = std::chrono::steady_clock::now();
   EpisodeRun run(plant, planner, config, steering);
   EpisodeRun::Stop stop = EpisodeRun::Stop::kEnded;
@@ -18,7 +19,7 @@ sim::EpisodeResult run_episode(const worlds::World& plant, planner::Planner& pla
     throw EpisodeStopped(std::move(run.result()), run.time_s(), std::current_exception());
   }
   if (stop == EpisodeRun::Stop::kInterrupted) {
-    run.result().status = "interrupted";
+    run.result().status = EpisodeStatus::kInterrupted;
     throw EpisodeStopped(std::move(run.result()), run.time_s(), nullptr);
   }
   run.result().wall_s =

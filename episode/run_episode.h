@@ -1,7 +1,7 @@
 // One docking episode: plan to the staging pose, then the closed loop of sensing (the sensor
 // suite), perception (EKF and tracker, or the oracle), the travel mode, the wheel drive and a
 // fixed Box2D step, until docked, failed or timed out. Returns the metrics (from the truth, kept
-// apart in sim/episode_metrics) and the full trajectory log.
+// apart in episode_metrics.h) and the full trajectory log (episode_result.h).
 // Deterministic: the same world, planner, config and seed give the same trajectory.
 #pragma once
 
@@ -12,10 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "geometry/vec2.h"
 #include "planner/planner.h"
 #include "robot/travel.h"
-#include "sim/episode.h"
 #include "worlds/world.h"
 
 namespace plantsim::episode {
@@ -41,13 +42,13 @@ struct EpisodeSteering {
 /// far, recorded and closed as far as it went, and the simulated time it stopped at.
 class EpisodeStopped : public std::runtime_error {
  public:
-  EpisodeStopped(sim::EpisodeResult partial, double time_s, std::exception_ptr cause)
+  EpisodeStopped(episode::EpisodeResult partial, double time_s, std::exception_ptr cause)
       : std::runtime_error(cause ? "the episode ended by an exception"
                                  : "the episode was interrupted"),
         partial(std::move(partial)),
         time_s(time_s),
         cause(std::move(cause)) {}
-  sim::EpisodeResult partial;
+  episode::EpisodeResult partial;
   double time_s;
   std::exception_ptr cause;
 };
@@ -57,9 +58,9 @@ class EpisodeStopped : public std::runtime_error {
 /// (perception from readings and the map), decide (the travel mode), actuate, step, log. In a world
 /// with a moving target the episode is a pursuit: the plan goes to where the target will park, and
 /// success is reaching the target.
-sim::EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
-                               const sim::EpisodeConfig& config,
-                               const EpisodeSteering& steering = {});
+episode::EpisodeResult run_episode(const worlds::World& world, planner::Planner& planner,
+                                   const episode::EpisodeConfig& config,
+                                   const EpisodeSteering& steering = {});
 // Throws EpisodeStopped when steering.interrupted asks it to stop or an exception leaves the
 // loop (a controller's); bad input is refused before the loop as before.
 

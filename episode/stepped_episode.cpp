@@ -9,7 +9,7 @@
 namespace plantsim::episode {
 
 SteppedEpisode::SteppedEpisode(std::shared_ptr<const worlds::World> plant,
-                               const std::string& planner, sim::EpisodeConfig config,
+                               const std::string& planner, episode::EpisodeConfig config,
                                bool steer_docking)
     : plant_(std::move(plant)),
       config_(std::move(config)),

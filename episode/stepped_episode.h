@@ -13,10 +13,11 @@
 
 #include "controller/diff_drive.h"
 #include "controller/docking.h"
+#include "episode/episode_config.h"
 #include "episode/episode_loop.h"
+#include "episode/episode_result.h"
 #include "planner/planner.h"
 #include "robot/perception.h"
-#include "sim/episode.h"
 #include "worlds/world.h"
 
 namespace plantsim::episode {
@@ -37,7 +38,7 @@ class SteppedEpisode {
   /// The episode of `plant` (its start included) with `config` (its seed included); plans with
   /// a fresh planner named `planner`.
   SteppedEpisode(std::shared_ptr<const worlds::World> plant, const std::string& planner,
-                 sim::EpisodeConfig config, bool steer_docking);
+                 episode::EpisodeConfig config, bool steer_docking);
   ~SteppedEpisode();
   SteppedEpisode(const SteppedEpisode&) = delete;
   SteppedEpisode& operator=(const SteppedEpisode&) = delete;
@@ -51,15 +52,15 @@ class SteppedEpisode {
   /// Periods the outside has steered so far.
   std::int64_t steps() const { return steps_; }
   const OutsideView& view() const { return view_; }
-  const sim::EpisodeResult& result() const { return run_->result(); }
+  const episode::EpisodeResult& result() const { return run_->result(); }
   const worlds::World& plant() const { return *plant_; }
-  const sim::EpisodeConfig& config() const { return config_; }
+  const episode::EpisodeConfig& config() const { return config_; }
   double time_s() const { return run_->time_s(); }
 
  private:
   bool run_on();
   std::shared_ptr<const worlds::World> plant_;
-  sim::EpisodeConfig config_;
+  episode::EpisodeConfig config_;
   std::unique_ptr<planner::Planner> planner_;
   OutsideView view_;
   bool wanted_ = false, started_ = false, ended_ = false;

@@ -4,14 +4,14 @@
 
 #include <string>
 
+#include "episode/episode_config.h"
 #include "episode/run_episode.h"
 #include "python/py_convert.h"
-#include "sim/episode.h"
 
 namespace plantsim::python {
 
 /// None (the defaults), a dict with the keys of docs/config.md, or a config file's path.
-sim::EpisodeConfig config_argument(const py::handle& config);
+episode::EpisodeConfig config_argument(const py::handle& config);
 
 /// The travel and docking callables (either may be None) as an episode's steering named
 /// `name`; nothing when both are None.

@@ -38,7 +38,7 @@ class EpisodeSource {
  public:
   struct Drawn {
     std::shared_ptr<const worlds::World> plant;
-    sim::EpisodeConfig config;
+    episode::EpisodeConfig config;
     std::string planner, id;
   };
   virtual ~EpisodeSource() = default;
@@ -47,12 +47,12 @@ class EpisodeSource {
   virtual Drawn draw(std::uint64_t seed, const std::string& id) = 0;
   /// The robot and lidar the episodes have (a scenario's first world and config), for the spaces.
   virtual const worlds::World& first_world() const = 0;
-  virtual const sim::EpisodeConfig& first_config() const = 0;
+  virtual const episode::EpisodeConfig& first_config() const = 0;
 };
 
 class WorldSource : public EpisodeSource {
  public:
-  WorldSource(PyWorld world, sim::EpisodeConfig config, std::string planner, std::string start,
+  WorldSource(PyWorld world, episode::EpisodeConfig config, std::string planner, std::string start,
               std::optional<geom::Pose2> pose)
       : world_(std::move(world)),
         config_(std::move(config)),
@@ -85,11 +85,11 @@ class WorldSource : public EpisodeSource {
     return d;
   }
   const worlds::World& first_world() const override { return *world_.world; }
-  const sim::EpisodeConfig& first_config() const override { return config_; }
+  const episode::EpisodeConfig& first_config() const override { return config_; }
 
  private:
   PyWorld world_;
-  sim::EpisodeConfig config_;
+  episode::EpisodeConfig config_;
   std::string planner_, start_;
   std::optional<geom::Pose2> pose_;
   std::uint64_t fingerprint_;
@@ -122,12 +122,12 @@ class ScenarioSource : public EpisodeSource {
             spec_.planners[e.planner], e.id};
   }
   const worlds::World& first_world() const override { return loaded_.worlds.front(); }
-  const sim::EpisodeConfig& first_config() const override { return configs_.front(); }
+  const episode::EpisodeConfig& first_config() const override { return configs_.front(); }
 
  private:
   batch::BatchSpec spec_;
   batch::ScenarioWorlds loaded_;
-  std::vector<sim::EpisodeConfig> configs_;
+  std::vector<episode::EpisodeConfig> configs_;
   batch::EpisodeSpace space_;
   batch::EpisodeRunner runner_;
 };
@@ -182,11 +182,13 @@ class EnvCore {
   }
 
   bool terminated() const {
-    return episode_ && episode_->ended() && episode_->result().status != "timeout";
+    return episode_ && episode_->ended() &&
+           episode_->result().status != episode::EpisodeStatus::kTimeout;
   }
   bool truncated() const {
     return episode_ &&
-           ((episode_->ended() && episode_->result().status == "timeout") || truncated_by_limit_);
+           ((episode_->ended() && episode_->result().status == episode::EpisodeStatus::kTimeout) ||
+            truncated_by_limit_);
   }
   bool done() const { return terminated() || truncated(); }
   double reward() const { return reward_; }
@@ -320,8 +322,8 @@ py::dict info_of(const EnvCore& env) {
   info["builtin"] = py::make_tuple(e.view().builtin.v_mps, e.view().builtin.omega_radps);
   info["plan"] = points_array(e.view().plan);
   if (e.ended()) {
-    const sim::EpisodeResult& r = e.result();
-    info["status"] = r.status;
+    const episode::EpisodeResult& r = e.result();
+    info["status"] = episode::status_name(r);
     info["docked"] = r.docked;
     info["failure"] = r.failure ? std::string(robot::to_string(r.failure->reason)) : std::string();
     info["collisions"] = r.collisions;
@@ -538,7 +540,7 @@ struct PyVectorEnv {
     for (std::size_t i = 0; i < envs.size(); ++i) {
       episode.append(envs[i]->id());
       const bool ended = envs[i]->episode().ended();
-      status.append(ended ? envs[i]->episode().result().status : std::string());
+      status.append(ended ? episode::status_name(envs[i]->episode().result()) : std::string());
       docked.mutable_at(static_cast<py::ssize_t>(i)) = ended && envs[i]->episode().result().docked;
     }
     py::dict d;
@@ -556,7 +558,7 @@ struct PyVectorEnv {
 /// (max speed m/s, wheel base m, lidar beams, lidar max range m) for the spaces.
 py::tuple limits_of(const EpisodeSource& s) {
   const worlds::World& w = s.first_world();
-  const sim::EpisodeConfig& c = s.first_config();
+  const episode::EpisodeConfig& c = s.first_config();
   return py::make_tuple(w.robot.max_speed_mps, w.robot.wheel_base_m, c.lidar.beam_count,
                         c.lidar.max_range_m);
 }

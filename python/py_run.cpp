@@ -8,7 +8,9 @@
 
 #include "app/episode_outputs.h"
 #include "batch/random_start.h"
+#include "episode/episode_config.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -17,7 +19,6 @@
 #include "python/py_interrupt.h"
 #include "python/py_world.h"
 #include "robot/travel_steered.h"
-#include "sim/episode.h"
 #include "util/atomic_file.h"
 #include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
@@ -189,12 +190,12 @@ const std::vector<std::string>& trajectory_columns() {
   return c;
 }
 
-py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
+py::array_t<double> trajectory_array(const episode::EpisodeResult& r) {
   py::array_t<double> a({static_cast<py::ssize_t>(r.trajectory.size()),
                          static_cast<py::ssize_t>(trajectory_columns().size())});
   auto v = a.mutable_unchecked<2>();
   for (std::size_t i = 0; i < r.trajectory.size(); ++i) {
-    const sim::TrajectorySample& s = r.trajectory[i];
+    const episode::TrajectorySample& s = r.trajectory[i];
     const double row[] = {s.t_s,
                           s.truth.x,
                           s.truth.y,
@@ -218,7 +219,7 @@ py::array_t<double> trajectory_array(const sim::EpisodeResult& r) {
 
 }  // namespace
 
-sim::EpisodeConfig config_argument(const py::handle& config) {
+episode::EpisodeConfig config_argument(const py::handle& config) {
   if (config.is_none()) return {};
   if (py::isinstance<py::dict>(config))
     return episode::parse_episode_config(to_json_text(config), "<config dict>");
@@ -297,7 +298,7 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
           const py::object& controller, const py::object& docking, const std::string& planner_name,
           const py::object& out, const std::string& controller_name, const py::object& start) {
   const PyWorld w = with_start(world_argument(world_arg), start, seed);
-  sim::EpisodeConfig config = config_argument(config_arg);
+  episode::EpisodeConfig config = config_argument(config_arg);
   config.seed = seed;
   const std::vector<std::string> names = planner::planner_names();
   if (std::find(names.begin(), names.end(), planner_name) == names.end())
@@ -321,17 +322,17 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
   std::atomic<bool> stop{false};
   episode::EpisodeSteering hooks = steering;
   hooks.interrupted = [&stop] { return stop.load(std::memory_order_relaxed); };
-  sim::EpisodeResult r;
+  episode::EpisodeResult r;
   Interruptible done =
       run_interruptibly([&] { r = episode::run_episode(*w.world, *p, config, hooks); }, stop);
   if (done.failure) {
     try {
       std::rethrow_exception(done.failure);
     } catch (episode::EpisodeStopped& stopped) {
-      const sim::EpisodeResult& part = stopped.partial;
-      const py::object partial =
-          py::cast(PyRun{from_json_text(app::summary_json(part, w.world->name, line)),
-                         trajectory_array(part), trajectory_columns(), part.status, part.docked});
+      const episode::EpisodeResult& part = stopped.partial;
+      const py::object partial = py::cast(PyRun{
+          from_json_text(app::summary_json(part, w.world->name, line)), trajectory_array(part),
+          trajectory_columns(), episode::status_name(part), part.docked});
       // A controller's exception keeps what was driven, as a folder of the run so far; Ctrl-C
       // answers at once (figures take a while) and leaves the folder as it was.
       if (staged && !done.signal) {
@@ -348,7 +349,7 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
     throw py::error_already_set();
   }
   PyRun result{from_json_text(app::summary_json(r, w.world->name, line)), trajectory_array(r),
-               trajectory_columns(), r.status, r.docked};
+               trajectory_columns(), episode::status_name(r), r.docked};
   if (staged) {
     app::write_run_folder(*w.world, r, config, staged->path(), line,
                           steering ? "steered by " + steering.name : "", false);

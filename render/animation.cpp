@@ -14,7 +14,7 @@
 
 namespace plantsim::render {
 
-std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run,
+std::string write_animation(const worlds::World& world, const episode::EpisodeResult& run,
                             const std::string& out_dir, const AnimationOptions& o) {
   const std::string frames = out_dir + "/frames";
   std::filesystem::create_directories(frames);
@@ -46,7 +46,7 @@ std::string write_animation(const worlds::World& world, const sim::EpisodeResult
       legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
     if (draw_plan(c, run.plan, palette::kPlan)) legend.push_back({palette::kPlan, "plan"});
     // What perception saw last before this instant.
-    const sim::EpisodeResult::PerceptionSnapshot* seen = nullptr;
+    const episode::EpisodeResult::PerceptionSnapshot* seen = nullptr;
     for (const auto& snap : run.perception_log)
       if (snap.t_s <= run.trajectory[i].t_s) seen = &snap;
     if (seen) {

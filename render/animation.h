@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "sim/episode.h"
+#include "episode/episode_result.h"
 
 namespace plantsim::render {
 
@@ -18,7 +18,7 @@ struct AnimationOptions {
 };
 
 /// Returns the movie's file name (relative to out_dir), or "" when ffmpeg is not available.
-std::string write_animation(const worlds::World& world, const sim::EpisodeResult& run,
+std::string write_animation(const worlds::World& world, const episode::EpisodeResult& run,
                             const std::string& out_dir, const AnimationOptions& options = {});
 
 }  // namespace plantsim::render

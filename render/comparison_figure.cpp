@@ -62,9 +62,9 @@ bool draw_panel_layers(Figure& fig, const PixelTransform& t, const worlds::World
     listed(drove, speed_swatch(p.run.trajectory, world.robot.max_speed_mps), "driven (speed)");
     drove_any = drove_any || drove;
     // Where collisions began: the cause of a failure is part of the comparison.
-    std::vector<sim::EpisodeResult::Event> collisions;
+    std::vector<episode::EpisodeResult::Event> collisions;
     for (const auto& e : p.run.events)
-      if (e.kind == sim::EpisodeResult::Event::Kind::kCollision) collisions.push_back(e);
+      if (e.kind == episode::EpisodeResult::Event::Kind::kCollision) collisions.push_back(e);
     draw_events(c, collisions);
     listed(!collisions.empty(), palette::kCollisionMark, "collision");
     if (!p.run.trajectory.empty())
@@ -117,8 +117,8 @@ void draw_panel_text(Figure& fig, const ComparisonPanel& p, double x0, double y0
                 structure.c_str());
   fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
   fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
-  fig.text_fitted(p.drove ? result_line(p.run) : p.run.status, x0 + 60, y0 + 54, 12, palette::kAxis,
-                  cell_w - 80);
+  fig.text_fitted(p.drove ? result_line(p.run) : episode::status_name(p.run), x0 + 60, y0 + 54, 12,
+                  palette::kAxis, cell_w - 80);
 }
 
 }  // namespace

@@ -7,14 +7,14 @@
 #include <utility>
 #include <vector>
 
+#include "episode/episode_result.h"
 #include "render/figure.h"
-#include "sim/episode.h"
 
 namespace plantsim::render {
 
 struct ComparisonPanel {
   std::string label;                               ///< usually the planner's name
-  sim::EpisodeResult run;                          ///< its plan (and trajectory, if driven)
+  episode::EpisodeResult run;                      ///< its plan (and trajectory, if driven)
   std::vector<std::pair<Vec2, Vec2>> graph_edges;  ///< drawn thin when given
   bool drove = true;                               ///< false: a plan only, no trajectory drawn
 };

@@ -128,7 +128,7 @@ bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
   return !w.moving.empty();
 }
 
-std::string moving_tracks_label(const std::vector<sim::EpisodeResult::MovingTrack>& tracks) {
+std::string moving_tracks_label(const std::vector<episode::EpisodeResult::MovingTrack>& tracks) {
   constexpr double kMovedM = 0.01;  // less than this from where it began: it stood
   bool moved = false, stood = false;
   for (const auto& track : tracks) {
@@ -141,7 +141,8 @@ std::string moving_tracks_label(const std::vector<sim::EpisodeResult::MovingTrac
   return moved && stood ? "moving (swept) or parked" : moved ? "moving (swept)" : "parked";
 }
 
-bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::MovingTrack>& tracks) {
+bool draw_moving_tracks(GlCanvas& c,
+                        const std::vector<episode::EpisodeResult::MovingTrack>& tracks) {
   bool drew = false;
   for (const auto& track : tracks) {
     if (track.boxes.empty()) continue;
@@ -215,7 +216,7 @@ bool draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes) 
   return !boxes.empty();
 }
 
-bool draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
+bool draw_estimate(GlCanvas& c, const std::vector<episode::TrajectorySample>& t) {
   std::vector<Vec2> path;
   path.reserve(t.size());
   for (const auto& s : t) path.push_back(s.estimate.position());
@@ -224,7 +225,8 @@ bool draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
   return true;
 }
 
-bool draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t) {
+bool draw_target(GlCanvas& c, const worlds::World& w,
+                 const std::vector<episode::TrajectorySample>& t) {
   if (!w.target) return false;
   const auto& m = *w.target;
   if (m.waypoints.size() > 1) c.polyline(m.waypoints, 1.5, palette::kTarget);
@@ -233,7 +235,7 @@ bool draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::Tra
   return true;
 }
 
-bool draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& t) {
+bool draw_wall_following(GlCanvas& c, const std::vector<episode::TrajectorySample>& t) {
   std::vector<Vec2> run;
   bool drew = false;
   for (const auto& s : t) {
@@ -249,7 +251,7 @@ bool draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& 
   return drew;
 }
 
-bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t,
+bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<episode::TrajectorySample>& t,
                               double max_speed_mps, std::size_t upto) {
   const std::size_t n = std::min(upto, t.size());
   std::vector<Vec2> pts;
@@ -268,7 +270,7 @@ bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySamp
   return pts.size() > 1;
 }
 
-Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_mps) {
+Rgb speed_swatch(const std::vector<episode::TrajectorySample>& t, double max_speed_mps) {
   if (t.empty()) return cividis(0);
   std::vector<double> speeds;
   speeds.reserve(t.size());
@@ -278,8 +280,8 @@ Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_m
   return cividis(speeds[speeds.size() / 2] / max_speed_mps);
 }
 
-Rgb event_colour(sim::EpisodeResult::Event::Kind kind) {
-  using Kind = sim::EpisodeResult::Event::Kind;
+Rgb event_colour(episode::EpisodeResult::Event::Kind kind) {
+  using Kind = episode::EpisodeResult::Event::Kind;
   switch (kind) {
     case Kind::kStop:
       return palette::kStopMark;
@@ -297,8 +299,8 @@ Rgb event_colour(sim::EpisodeResult::Event::Kind kind) {
   return palette::kAxis;
 }
 
-void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& events) {
-  using Kind = sim::EpisodeResult::Event::Kind;
+void draw_events(GlCanvas& c, const std::vector<episode::EpisodeResult::Event>& events) {
+  using Kind = episode::EpisodeResult::Event::Kind;
   const double px = 1.0 / c.transform().scale;
   for (const auto& e : events) {
     if (e.kind == Kind::kCollision) {
@@ -338,7 +340,7 @@ void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pos
 }
 
 bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot,
-                     const std::vector<sim::TrajectorySample>& t, double every_s) {
+                     const std::vector<episode::TrajectorySample>& t, double every_s) {
   double next = 0;
   for (const auto& s : t)
     if (s.t_s >= next) {

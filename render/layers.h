@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "episode/episode_result.h"
 #include "render/gl_canvas.h"
-#include "sim/episode.h"
 
 namespace plantsim::render {
 
@@ -36,10 +36,11 @@ bool draw_moving(GlCanvas& c, const worlds::World& w, double t_s,
                  const std::vector<geom::Rect>& boxes = {});
 /// The legend's words for the tracks drawn: "moving (swept)", "parked" when none moved (a cart
 /// standing where it was put), or both when some did.
-std::string moving_tracks_label(const std::vector<sim::EpisodeResult::MovingTrack>& tracks);
+std::string moving_tracks_label(const std::vector<episode::EpisodeResult::MovingTrack>& tracks);
 /// Where the moving obstacles went: the area each swept (faint), its centre track, and its box
 /// where it ended. Drawn at one instant alone they would make a passing look like a collision.
-bool draw_moving_tracks(GlCanvas& c, const std::vector<sim::EpisodeResult::MovingTrack>& tracks);
+bool draw_moving_tracks(GlCanvas& c,
+                        const std::vector<episode::EpisodeResult::MovingTrack>& tracks);
 /// The plan, thin, to be drawn over the driven path so that it stays visible.
 bool draw_plan(GlCanvas& c, const std::vector<Vec2>& plan, Rgb colour, double width_px = 1.3);
 /// A polyline in dashes of `dash_px` pixels (a plan that was replaced).
@@ -51,24 +52,25 @@ std::pair<bool, bool> draw_scan(GlCanvas& c, const robot::ScanView& scan);
 /// Outlines of the obstacles perception tracked, and their velocity (1 s ahead).
 bool draw_tracked(GlCanvas& c, const std::vector<controller::MovingBox>& boxes);
 /// The estimated path as a band wider than the true path, drawn under it.
-bool draw_estimate(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
+bool draw_estimate(GlCanvas& c, const std::vector<episode::TrajectorySample>& t);
 /// The moving target's scripted track and where it was at the last sample.
-bool draw_target(GlCanvas& c, const worlds::World& w, const std::vector<sim::TrajectorySample>& t);
+bool draw_target(GlCanvas& c, const worlds::World& w,
+                 const std::vector<episode::TrajectorySample>& t);
 /// A wide band under the stretches driven in the wall-following state.
-bool draw_wall_following(GlCanvas& c, const std::vector<sim::TrajectorySample>& t);
+bool draw_wall_following(GlCanvas& c, const std::vector<episode::TrajectorySample>& t);
 /// The driven path, each segment coloured by speed on cividis from 0 to `max_speed_mps`.
-bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<sim::TrajectorySample>& t,
+bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<episode::TrajectorySample>& t,
                               double max_speed_mps,
                               std::size_t upto = static_cast<std::size_t>(-1));
 /// The driven path's colour at its median speed: its legend swatch (a colour the path has).
-Rgb speed_swatch(const std::vector<sim::TrajectorySample>& t, double max_speed_mps);
+Rgb speed_swatch(const std::vector<episode::TrajectorySample>& t, double max_speed_mps);
 /// Rings where the robot stopped, replanned, recovered and backed off to retry, and crosses where
 /// collisions began, a few pixels across at any scale.
-void draw_events(GlCanvas& c, const std::vector<sim::EpisodeResult::Event>& events);
-Rgb event_colour(sim::EpisodeResult::Event::Kind kind);
+void draw_events(GlCanvas& c, const std::vector<episode::EpisodeResult::Event>& events);
+Rgb event_colour(episode::EpisodeResult::Event::Kind kind);
 /// Footprint outlines every `every_s` seconds of the trajectory (never under 8 pixels across).
 bool draw_footprints(GlCanvas& c, const worlds::RobotSpec& robot,
-                     const std::vector<sim::TrajectorySample>& t, double every_s);
+                     const std::vector<episode::TrajectorySample>& t, double every_s);
 void draw_footprint(GlCanvas& c, const worlds::RobotSpec& robot, const geom::Pose2& pose,
                     Rgb colour, double width_px = 1.2);
 

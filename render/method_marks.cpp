@@ -27,7 +27,7 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
 
 }  // namespace
 
-std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const sim::EpisodeResult& run) {
+std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeResult& run) {
   std::vector<LegendEntry> legend;
   if (!run.explored.empty()) {
     c.polyline(run.explored, 5.0, palette::kExplored);

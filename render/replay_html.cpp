@@ -36,10 +36,10 @@ std::string css(Rgb c) {
 
 /// The episode's events (stops, replans, ...) at their times and places, and its failure: where the
 /// replay ends, with the reason, when, where and why.
-void add_events_and_failure(json& j, const sim::EpisodeResult& run) {
+void add_events_and_failure(json& j, const episode::EpisodeResult& run) {
   j["events"] = json::array();
   for (const auto& e : run.events) {
-    using Kind = sim::EpisodeResult::Event::Kind;
+    using Kind = episode::EpisodeResult::Event::Kind;
     const char* kind = e.kind == Kind::kStop        ? "stop"
                        : e.kind == Kind::kReplan    ? "replan"
                        : e.kind == Kind::kRecovery  ? "recovery"
@@ -61,7 +61,7 @@ void add_events_and_failure(json& j, const sim::EpisodeResult& run) {
 }
 
 /// The trajectory, thinned to the replay's sample limit (the end always kept), and the carries.
-void add_trajectory(json& j, const sim::EpisodeResult& run, const ReplayOptions& o) {
+void add_trajectory(json& j, const episode::EpisodeResult& run, const ReplayOptions& o) {
   const std::size_t n = run.trajectory.size();
   const std::size_t step =
       std::max<std::size_t>(1, (n + o.max_samples - 1) / std::max(1, o.max_samples));
@@ -101,7 +101,7 @@ void add_trajectory(json& j, const sim::EpisodeResult& run, const ReplayOptions&
                             {"to", {round_to(c.to.x, 1e-3), round_to(c.to.y, 1e-3)}}});
 }
 
-json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
+json replay_data(const worlds::World& world, const episode::EpisodeResult& run,
                  const ReplayOptions& o) {
   json j;
   j["world"] = world.name;
@@ -125,7 +125,7 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
   // The final plan exists from the last replan on; before it the first plan is the one in force.
   double last_replan_s = 0;
   for (const auto& e : run.events)
-    if (e.kind == sim::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
+    if (e.kind == episode::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
   j["plan_from_t"] = j["first_plan"].empty() ? 0.0 : round_to(last_replan_s, 1e-3);
   add_trajectory(j, run, o);
   add_events_and_failure(j, run);
@@ -138,7 +138,7 @@ json replay_data(const worlds::World& world, const sim::EpisodeResult& run,
     for (const auto& b : track.boxes) m["boxes"].push_back(rect(b));
     j["moving"].push_back(m);
   }
-  j["status"] = run.status;
+  j["status"] = episode::status_name(run);
   j["colours"] = {
       {"floor", css(palette::kFloor)},          {"obstacle", css(palette::kObstacle)},
       {"unmapped", css(palette::kUnmapped)},    {"plan", css(palette::kPlan)},
@@ -318,7 +318,7 @@ constexpr const char* kPlayer = R"JS(
 
 }  // namespace
 
-std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run,
+std::string replay_html(const worlds::World& world, const episode::EpisodeResult& run,
                         const ReplayOptions& o) {
   // Inside a script element "</script" ends it early and "<!--" opens the HTML parser's escaped
   // states (a world named "<!--<script>" hid the player): JSON holds "<", ">" and "&" only inside

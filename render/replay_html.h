@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "sim/episode.h"
+#include "episode/episode_result.h"
 
 namespace plantsim::render {
 
@@ -18,7 +18,7 @@ struct ReplayOptions {
 };
 
 /// The player's HTML (a <section> with its canvas, controls and script), to embed in a report.
-std::string replay_html(const worlds::World& world, const sim::EpisodeResult& run,
+std::string replay_html(const worlds::World& world, const episode::EpisodeResult& run,
                         const ReplayOptions& options = {});
 
 }  // namespace plantsim::render

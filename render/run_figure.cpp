@@ -15,17 +15,18 @@
 
 namespace plantsim::render {
 
-std::string result_line(const sim::EpisodeResult& run) {
+std::string result_line(const episode::EpisodeResult& run) {
   char buf[200];
-  if (run.trajectory.empty()) return run.status;
+  if (run.trajectory.empty()) return episode::status_name(run);
   std::string error = "error n/a";
   if (run.error_measured) {
     std::snprintf(buf, sizeof buf, "error %.1f mm / %.1f deg", 1000 * run.position_error_m,
                   run.heading_error_deg);
     error = buf;
   }
-  std::snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s", run.status.c_str(),
-                error.c_str(), run.collisions, run.retries, run.time_s);
+  std::snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s",
+                episode::status_name(run).c_str(), error.c_str(), run.collisions, run.retries,
+                run.time_s);
   std::string line = buf;
   if (run.travel != "path") {
     std::snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima,
@@ -35,7 +36,7 @@ std::string result_line(const sim::EpisodeResult& run) {
   return line;
 }
 
-std::string length_line(const sim::EpisodeResult& run) {
+std::string length_line(const episode::EpisodeResult& run) {
   char buf[200];
   std::snprintf(buf, sizeof buf, "planned %.2f m", run.path_length_m);
   std::string line = buf;
@@ -48,7 +49,7 @@ std::string length_line(const sim::EpisodeResult& run) {
   return line + buf;
 }
 
-std::string method_label(const sim::EpisodeResult& run) {
+std::string method_label(const episode::EpisodeResult& run) {
   if (run.travel == "path") return "planner " + run.planner;
   return run.travel + " (reference plan: " + run.planner + ")";
 }
@@ -63,7 +64,8 @@ double time_tick_period(double duration_s) {
 }
 
 /// The sample at or just after time t (the last if none).
-const sim::TrajectorySample& sample_at(const std::vector<sim::TrajectorySample>& t, double time_s) {
+const episode::TrajectorySample& sample_at(const std::vector<episode::TrajectorySample>& t,
+                                           double time_s) {
   const auto it = std::lower_bound(t.begin(), t.end(), time_s,
                                    [](const auto& s, double v) { return s.t_s < v; });
   return it == t.end() ? t.back() : *it;
@@ -71,7 +73,7 @@ const sim::TrajectorySample& sample_at(const std::vector<sim::TrajectorySample>&
 
 /// Time ticks on the driven path and on each moving obstacle's track at the same instants, so
 /// that who was where when can be read off the picture.
-void draw_time_ticks(Figure& fig, const sim::EpisodeResult& run, const PixelTransform& t) {
+void draw_time_ticks(Figure& fig, const episode::EpisodeResult& run, const PixelTransform& t) {
   if (run.trajectory.empty()) return;
   const double period = time_tick_period(run.trajectory.back().t_s);
   GlCanvas& c = fig.canvas();
@@ -96,7 +98,7 @@ void draw_time_ticks(Figure& fig, const sim::EpisodeResult& run, const PixelTran
 }
 
 /// The last `length_m` of the driven path (by arc length from the end).
-std::size_t close_up_start(const std::vector<sim::TrajectorySample>& t, double length_m) {
+std::size_t close_up_start(const std::vector<episode::TrajectorySample>& t, double length_m) {
   double s = 0;
   std::size_t i = t.size() - 1;
   while (i > 0 && s < length_m) {
@@ -110,7 +112,7 @@ std::size_t close_up_start(const std::vector<sim::TrajectorySample>& t, double l
 /// floor and what stands near it (a thousand-obstacle plant need not be drawn twice). Returns
 /// the panel's corners in pixels (lower left, upper right).
 std::pair<Vec2, Vec2> open_close_up(Figure& fig, const worlds::World& world,
-                                    const sim::EpisodeResult& run, const geom::Rect& view,
+                                    const episode::EpisodeResult& run, const geom::Rect& view,
                                     const PixelBox& box) {
   GlCanvas& c = fig.canvas();
   const PixelTransform t = fig.world_panel(view, {box.left, box.top + 22, box.right, box.bottom});
@@ -140,7 +142,7 @@ void close_close_up(GlCanvas& c, Vec2 lo, Vec2 hi) {
 
 /// The docking close-up: the last stretch of the path around the charger at a scale where the
 /// tolerance is visible, with the tolerance band on the approach axis and the pose at contact.
-void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
+void draw_docking_inset(Figure& fig, const worlds::World& world, const episode::EpisodeResult& run,
                         const RunFigureOptions& o, const PixelBox& box) {
   GlCanvas& c = fig.canvas();
   const auto& traj = run.trajectory;
@@ -167,8 +169,8 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
       1.5, palette::kTolerance);
   draw_charger(c, world);
   draw_mapped_charger(c, world);
-  std::vector<sim::TrajectorySample> tail(traj.begin() + static_cast<std::ptrdiff_t>(first),
-                                          traj.end());
+  std::vector<episode::TrajectorySample> tail(traj.begin() + static_cast<std::ptrdiff_t>(first),
+                                              traj.end());
   draw_trajectory_by_speed(c, tail, world.robot.max_speed_mps);
   if (run.error_measured) draw_footprint(c, world.robot, run.measured_pose, palette::kRobot, 2.0);
   close_close_up(c, lo, hi);
@@ -192,7 +194,7 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const sim::Epis
 /// Every layer of the world panel, bottom to top, and the legend of what was drawn.
 std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
                                            const worlds::World& world,
-                                           const sim::EpisodeResult& run,
+                                           const episode::EpisodeResult& run,
                                            const RunFigureOptions& o) {
   GlCanvas& c = fig.canvas();
   std::vector<LegendEntry> legend;
@@ -235,7 +237,7 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
   listed(draw_layer(c, run.layer_final), palette::kLayer, "sensed layer", Swatch::kOutline);
   listed(draw_tracked(c, run.tracked_final), palette::kTracked, "tracked", Swatch::kOutline);
   draw_events(c, run.events);
-  using Kind = sim::EpisodeResult::Event::Kind;
+  using Kind = episode::EpisodeResult::Event::Kind;
   for (const auto& named : {std::pair{Kind::kStop, "stop"},
                             {Kind::kReplan, "replan"},
                             {Kind::kRetry, "retry"},
@@ -260,7 +262,7 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
 }
 
 /// The title (world, method, setting, why it failed) and the result line under it.
-void draw_titles(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
+void draw_titles(Figure& fig, const worlds::World& world, const episode::EpisodeResult& run,
                  const RunFigureOptions& o) {
   std::string title = world.name + "  |  " + method_label(run);
   if (!o.setting.empty()) title += "  |  " + o.setting;
@@ -283,7 +285,7 @@ void draw_titles(Figure& fig, const worlds::World& world, const sim::EpisodeResu
 /// make it a few pixels).
 constexpr double kFailureView_m = 6.0;
 
-void draw_failure_inset(Figure& fig, const worlds::World& world, const sim::EpisodeResult& run,
+void draw_failure_inset(Figure& fig, const worlds::World& world, const episode::EpisodeResult& run,
                         const PixelBox& box) {
   GlCanvas& c = fig.canvas();
   const robot::Failure& f = *run.failure;
@@ -307,7 +309,7 @@ void draw_failure_inset(Figure& fig, const worlds::World& world, const sim::Epis
   fig.note_inset({box.left, box.top, box.right, lo.y + 35});
 }
 
-bool came_near_dock(const worlds::World& world, const sim::EpisodeResult& run) {
+bool came_near_dock(const worlds::World& world, const episode::EpisodeResult& run) {
   return !run.trajectory.empty() &&
          (std::any_of(run.trajectory.begin(), run.trajectory.end(),
                       [](const auto& s) {
@@ -319,7 +321,7 @@ bool came_near_dock(const worlds::World& world, const sim::EpisodeResult& run) {
 
 }  // namespace
 
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+Image draw_run_figure(const worlds::World& world, const episode::EpisodeResult& run,
                       const RunFigureOptions& o, PixelTransform* transform_out,
                       FigureLayout* layout_out) {
   Figure fig(o.width_px, o.height_px);
@@ -346,7 +348,7 @@ Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
   return img;
 }
 
-void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+void write_run_figure(const worlds::World& world, const episode::EpisodeResult& run,
                       const std::string& path, const RunFigureOptions& options,
                       const PngSettings& png) {
   write_png(draw_run_figure(world, run, options), path, png);
@@ -356,7 +358,7 @@ namespace {
 
 /// The phases as shaded stretches of the time axis: travelling, docking (align and approach),
 /// backing off to retry.
-std::vector<Figure::Band> phase_bands(const std::vector<sim::TrajectorySample>& t) {
+std::vector<Figure::Band> phase_bands(const std::vector<episode::TrajectorySample>& t) {
   using controller::DockPhase;
   auto kind = [](DockPhase p) {
     switch (p) {
@@ -384,7 +386,7 @@ std::vector<Figure::Band> phase_bands(const std::vector<sim::TrajectorySample>& 
 
 }  // namespace
 
-Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run, int width_px,
+Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& run, int width_px,
                       int height_px, FigureLayout* layout_out) {
   Figure fig(width_px, height_px);
   std::vector<double> t, cross, speed, distance, loc_error, loc_bound;

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "episode/episode_result.h"
 #include "render/figure.h"
 #include "render/png_io.h"
-#include "sim/episode.h"
 
 namespace plantsim::render {
 
@@ -28,25 +28,25 @@ struct RunFigureOptions {
 };
 
 /// "planner vg", or "potential-field (reference plan: vg)".
-std::string method_label(const sim::EpisodeResult& run);
+std::string method_label(const episode::EpisodeResult& run);
 
 /// Draws the run; `transform` receives the world-to-pixel mapping of the map panel.
-Image draw_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+Image draw_run_figure(const worlds::World& world, const episode::EpisodeResult& run,
                       const RunFigureOptions& options = {}, PixelTransform* transform = nullptr,
                       FigureLayout* layout = nullptr);
-void write_run_figure(const worlds::World& world, const sim::EpisodeResult& run,
+void write_run_figure(const worlds::World& world, const episode::EpisodeResult& run,
                       const std::string& path, const RunFigureOptions& options = {},
                       const PngSettings& png = {});
 
 /// Cross-track error, speed and distance to the charger against time, stacked.
-Image draw_time_plots(const worlds::World& world, const sim::EpisodeResult& run,
+Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& run,
                       int width_px = 1280, int height_px = 1000, FigureLayout* layout = nullptr);
 
 /// One-line result for titles: "docked, error 0.4 cm / 0.1 deg, 0 collisions, 0 retries, 172.8 s"
 /// ("error n/a" where no docking error was measured: a pursuit, a run that never set off).
-std::string result_line(const sim::EpisodeResult& run);
+std::string result_line(const episode::EpisodeResult& run);
 /// "planned 17.60 m, driven 32.80 m", or with replans "planned 17.60 m (final plan 24.10 m after 2
 /// replans), driven ...".
-std::string length_line(const sim::EpisodeResult& run);
+std::string length_line(const episode::EpisodeResult& run);
 
 }  // namespace plantsim::render

@@ -88,12 +88,12 @@ FailureReason reason_of(controller::DockFailure why) {
 }  // namespace
 
 Decision decision_of(const controller::DockingCommand& cmd, controller::DockFailure why) {
-  Decision d{cmd.twist,    cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked,
+  Decision d{cmd.twist,    cmd.phase, cmd.cross_track_error_m, false, TravelEnd::kNone, cmd.blocked,
              std::nullopt, cmd.events};
-  if (cmd.phase == controller::DockPhase::kDocked) d.finished = "docked";
-  if (cmd.phase == controller::DockPhase::kUndocked) d.finished = "undocked";
+  if (cmd.phase == controller::DockPhase::kDocked) d.finished = TravelEnd::kDocked;
+  if (cmd.phase == controller::DockPhase::kUndocked) d.finished = TravelEnd::kUndocked;
   if (cmd.phase == controller::DockPhase::kFailed) {
-    d.finished = "failed";
+    d.finished = TravelEnd::kFailed;
     d.give_up = GiveUp{reason_of(why),
                        "the docking controller: " + std::string(controller::to_string(why))};
   }

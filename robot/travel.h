@@ -31,15 +31,18 @@ struct TravelSettings {
   const planner::Planner* map_planner = nullptr;
 };
 
+/// How a travel ended, when it has.
+enum class TravelEnd { kNone, kDocked, kUndocked, kFailed, kTrapped };
+
 struct Decision {
   controller::Twist twist;
   controller::DockPhase phase = controller::DockPhase::kTravel;
   double cross_track_m = 0;
   bool wall_following = false;
-  std::string finished;           ///< "docked", "failed" or "trapped" when the travel has ended
-  bool blocked = false;           ///< holding still because the way ahead is not clear
-  std::optional<GiveUp> give_up;  ///< why, when it ended without success
-  controller::StepEvents events;  ///< what this step did that the episode reports
+  TravelEnd finished = TravelEnd::kNone;  ///< how the travel ended, when it has
+  bool blocked = false;                   ///< holding still because the way ahead is not clear
+  std::optional<GiveUp> give_up;          ///< why, when it ended without success
+  controller::StepEvents events;          ///< what this step did that the episode reports
 };
 
 /// What a travel mode has counted.

@@ -28,7 +28,7 @@ class FieldTravel : public Travel {
     Decision d;
     d.wall_following = fc.state == controller::FieldState::kWallFollowing;
     if (fc.trapped) {
-      d.finished = "trapped";
+      d.finished = TravelEnd::kTrapped;
       d.give_up = GiveUp{FailureReason::kTrapped,
                          "the potential field met " + std::to_string(minima_) + " local minima"};
       return d;

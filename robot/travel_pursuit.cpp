@@ -30,7 +30,8 @@ class PursuitTravel : public Travel {
       }
     }
     const controller::DockingCommand cmd = control_.step(docking_input(p));
-    Decision d{cmd.twist,    cmd.phase, cmd.cross_track_error_m, false, "", cmd.blocked,
+    Decision d{cmd.twist,    cmd.phase,        cmd.cross_track_error_m,
+               false,        TravelEnd::kNone, cmd.blocked,
                std::nullopt, cmd.events};
     d.events.replanned = replanned;
     if (cmd.phase != controller::DockPhase::kTravel)

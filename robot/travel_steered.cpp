@@ -16,7 +16,7 @@ class SteeredTravel : public Travel {
 
   Decision decide(const Perception& p) override {
     Decision d = builtin_->decide(p);
-    if (!d.finished.empty()) return d;  // docked or failed: the referee has spoken
+    if (d.finished != TravelEnd::kNone) return d;  // docked or failed: the referee has spoken
     const Steering& steer = d.phase == controller::DockPhase::kTravel ? travel_ : docking_;
     if (!steer) return d;
     const std::optional<std::vector<geom::Vec2>> replanned = builtin_->final_plan();

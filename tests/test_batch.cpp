@@ -161,7 +161,7 @@ TEST(ShortestPossible, ByHandAroundAWallSplitAtACarryNoneFromInsideABox) {
   const auto around = shortest_possible_m(*bound, {2, 2, 0}, {}, {8, 2});
   ASSERT_TRUE(around.has_value());
   EXPECT_NEAR(*around, over, 1e-9);
-  const std::vector<sim::EpisodeResult::Carry> lifted = {{10.0, {3, 2, 0}, {7, 2, 1.0}}};
+  const std::vector<episode::EpisodeResult::Carry> lifted = {{10.0, {3, 2, 0}, {7, 2, 1.0}}};
   const auto carried = shortest_possible_m(*bound, {2, 2, 0}, lifted, {8, 2});
   ASSERT_TRUE(carried.has_value());
   EXPECT_NEAR(*carried, 2.0, 1e-9);  // 1 m to where it was lifted, 1 m from where it landed
@@ -245,8 +245,9 @@ TEST_F(BatchFiles, AKidnappedParticleFilterConfirmsItsPlaceAtAYardsCorner) {
                              "{estimator: particles}}\nfaults:\n  kidnap: {random_kidnap: "
                              "{after_s: [10, 60], distance_m: [3, 10]}}\nseeds: 4\n");
   const ReplayedEpisode e = replay_batch_episode(scenario, "yard_s2|vg|particles|kidnap|4");
-  const sim::EpisodeResult& r = e.result;
-  EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
+  const episode::EpisodeResult& r = e.result;
+  EXPECT_TRUE(r.docked) << episode::status_name(r)
+                        << (r.failure ? ": " + r.failure->detail : std::string());
   EXPECT_GE(r.relocalizations, 1);
   EXPECT_FALSE(r.integrity.breach.has_value());
   EXPECT_EQ(r.collisions, 0);

@@ -15,6 +15,8 @@
 #include <numeric>
 #include <random>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/coverage/cell_coverage.h"
 #include "planner/coverage/coverage_params_json.h"
@@ -22,7 +24,6 @@
 #include "planner/coverage/order_lp.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "util/input_file.h"
 #include "worlds/cell_block_world.h"
@@ -432,10 +433,10 @@ TEST(Coverage, TheRobotSweepsThePitAndDocks) {
   const auto w =
       worlds::load_world(test::source_file("data/worlds/plants/depot_pit_coverage.json"));
   auto p = make_planner("coverage-cells", planner_input(w, true));
-  sim::EpisodeConfig config;
+  episode::EpisodeConfig config;
   config.timeout_s = 3600;
-  const sim::EpisodeResult e = episode::run_episode(w, *p, config);
-  EXPECT_TRUE(e.docked) << e.status;
+  const episode::EpisodeResult e = episode::run_episode(w, *p, config);
+  EXPECT_TRUE(e.docked) << episode::status_name(e);
   EXPECT_EQ(e.collisions, 0);
   // Cells the robot's centre passed: nearly all (it turns inside corner cells).
   auto& cp = dynamic_cast<CoveragePlanner&>(*p);

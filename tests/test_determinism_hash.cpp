@@ -10,14 +10,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "tests/test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::run_episode;
 namespace {
 
@@ -50,7 +52,7 @@ TEST(Determinism, TheReferenceEpisodeMatchesItsCheckedInHash) {
   got << std::hex << trajectory_hash(e);
   EXPECT_EQ(got.str(), reference.at("trajectory_fnv1a64").get<std::string>())
       << "the reference episode's trajectory changed (" << e.trajectory.size()
-      << " samples, status " << e.status
+      << " samples, status " << episode::status_name(e)
       << "). If an algorithm changed on purpose, set trajectory_fnv1a64 in "
          "tests/fixtures/determinism_hash.json to "
       << got.str() << " and say why in the commit.";

@@ -6,15 +6,17 @@
 #include <cstdlib>
 #include <random>
 
+#include "episode/episode_config.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::load_episode_config;
 using episode::run_episode;
 
@@ -67,7 +69,7 @@ SuiteResult run_suite(const std::string& file, int count, const EpisodeConfig& b
     s.collisions += r.collisions;
     if (r.docked) s.position_errors_m.push_back(r.position_error_m);
     if (!r.docked || r.collisions)
-      s.failures.push_back(r.status + " from (" + std::to_string(start.x) + ", " +
+      s.failures.push_back(episode::status_name(r) + " from (" + std::to_string(start.x) + ", " +
                            std::to_string(start.y) + ", " + std::to_string(start.yaw) +
                            "), collisions " + std::to_string(r.collisions) + ", error " +
                            std::to_string(r.position_error_m));

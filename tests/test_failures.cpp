@@ -4,15 +4,17 @@
 
 #include <cstdio>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "sim/failure_watch.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it
@@ -101,10 +103,10 @@ EpisodeResult run(const worlds::World& w, EpisodeConfig c, const std::string& pl
 }
 
 void expect_reason(const EpisodeResult& r, FailureReason reason) {
-  EXPECT_FALSE(r.succeeded()) << r.status;
-  ASSERT_TRUE(r.failure.has_value()) << r.status;
+  EXPECT_FALSE(r.succeeded()) << episode::status_name(r);
+  ASSERT_TRUE(r.failure.has_value()) << episode::status_name(r);
   EXPECT_EQ(to_string(r.failure->reason), to_string(reason))
-      << r.status << ": " << r.failure->detail;
+      << episode::status_name(r) << ": " << r.failure->detail;
   EXPECT_GE(r.failure->time_s, 0.0);
   EXPECT_LE(r.failure->time_s, r.time_s + 1e-9);
   ASSERT_FALSE(r.events.empty());
@@ -116,7 +118,7 @@ void expect_reason(const EpisodeResult& r, FailureReason reason) {
 
 TEST(FailureEpisodes, ASuccessHasNoFailure) {
   const EpisodeResult r = run(room(), {});
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_FALSE(r.failure.has_value());
 }
 

@@ -8,7 +8,9 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include "episode/episode_config.h"
 #include "episode/episode_json.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "figure_checks.h"
 #include "planner/coverage/coverage_planner.h"
@@ -21,7 +23,6 @@
 #include "render/png_io.h"
 #include "render/run_figure.h"
 #include "render/scaling_chart.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -30,13 +31,13 @@ namespace {
 
 struct Case {
   worlds::World world;
-  sim::EpisodeResult run;
+  episode::EpisodeResult run;
 };
 
-Case simulate(const std::string& file, sim::TravelMode travel = sim::TravelMode::kPath) {
+Case simulate(const std::string& file, episode::TravelMode travel = episode::TravelMode::kPath) {
   Case c{worlds::load_world(file), {}};
   auto p = planner::make_planner("vg", planner::planner_input(c.world, true));
-  sim::EpisodeConfig config;
+  episode::EpisodeConfig config;
   config.travel = travel;
   c.run = episode::run_episode(c.world, *p, config);
   return c;
@@ -53,7 +54,7 @@ std::string format(const char* f, double v) {
 }
 
 // The subtitle carries summary.json's numbers, as summary.json has them.
-void expect_title_matches_summary(const FigureLayout& layout, const sim::EpisodeResult& run) {
+void expect_title_matches_summary(const FigureLayout& layout, const episode::EpisodeResult& run) {
   nlohmann::ordered_json j;
   episode::add_episode_metrics(j, run);
   std::string sub;
@@ -146,7 +147,7 @@ TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
   c.run.trajectory.resize(mid + 1);
   for (auto& s : c.run.trajectory) s.phase = controller::DockPhase::kTravel;
   c.run.docked = c.run.charging = c.run.error_measured = false;
-  c.run.status = "failed";
+  c.run.status = episode::EpisodeStatus::kFailed;
   const geom::Pose2 at = c.run.trajectory.back().truth;
   c.run.failure = robot::Failure{robot::FailureReason::kLocalizationLost, 12.25, at,
                                  "the estimate was 0.40 m off"};
@@ -175,7 +176,7 @@ TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
 
 TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
   const Case c = simulate(test::source_file("data/worlds/plants/seed001_slow_target.json"),
-                          sim::TravelMode::kPotentialField);
+                          episode::TravelMode::kPotentialField);
   ASSERT_TRUE(c.run.caught);
   FigureLayout layout;
   const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
@@ -263,14 +264,15 @@ TEST(FigureLayout, FourComparisonPanelsAreTwoByTwoWithALegend) {
   std::vector<ComparisonPanel> panels;
   for (const char* name : {"vg", "vg-traditional", "grid", "gcr"}) {
     auto p = planner::make_planner(name, planner::planner_input(c.world, true));
-    sim::EpisodeResult r;
+    episode::EpisodeResult r;
     const planner::PlanResult plan =
         p->plan(c.world.start.position(), worlds::staging_pose(c.world).position());
     r.planner = name;
     r.plan = plan.path;
     r.path_length_m = plan.length;
     r.plan_stats = plan.stats;
-    r.status = "planned";
+    r.status = episode::EpisodeStatus::kPlannerAnswer;
+    r.plan_status = plan.status;
     panels.push_back({name, r, {}, false});
   }
   panels[0] = {"vg", c.run, {}, true};
@@ -295,12 +297,13 @@ std::vector<ComparisonPanel> plan_only_panels(const worlds::World& w,
     auto p = planner::make_planner(name, planner::planner_input(w, false));
     const planner::PlanResult plan = p->plan(w.start.position(), w.charger.position());
     if (plan.status != planner::PlanStatus::kOk) continue;
-    sim::EpisodeResult r;
+    episode::EpisodeResult r;
     r.planner = name;
     r.plan = plan.path;
     r.path_length_m = plan.length;
     r.plan_stats = plan.stats;
-    r.status = "ok";
+    r.status = episode::EpisodeStatus::kPlannerAnswer;
+    r.plan_status = plan.status;
     panels.push_back({name, r, p->graph_edges(), false});
   }
   return panels;

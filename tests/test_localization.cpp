@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "batch/batch_runner.h"
+#include "episode/episode_config.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "geometry/predicates.h"
 #include "planner/planner.h"
@@ -28,13 +30,13 @@
 #include "robot/place_refinement.h"
 #include "robot/scan_matcher.h"
 #include "robot/scan_points.h"
-#include "sim/episode.h"
 #include "sim/kidnap_landing.h"
 #include "test_paths.h"
 #include "util/huge_page_block.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::load_episode_config;
 using episode::run_episode;
 
@@ -495,7 +497,8 @@ TEST(Localization, AKidnappedRobotFindsItselfAgainAndDocks) {
   EpisodeConfig c;
   c.kidnap = {8.0, 0.0, -1.2, 0.3};  // set down 1.2 m aside and turned, mid-travel
   const EpisodeResult r = run(l_room(), c);
-  EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
+  EXPECT_TRUE(r.docked) << episode::status_name(r)
+                        << (r.failure ? ": " + r.failure->detail : std::string());
   EXPECT_GE(r.relocalizations, 1);
   EXPECT_EQ(r.collisions, 0);
 }
@@ -539,7 +542,7 @@ TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
   c.perception.estimator = robot::EstimatorKind::kParticles;
   c.kidnap = {8.0, 0.0, -1.2, 0.3};  // the EKF's test above, with the particle filter
   const EpisodeResult near = run(l_room(), c);
-  EXPECT_TRUE(near.docked) << near.status
+  EXPECT_TRUE(near.docked) << episode::status_name(near)
                            << (near.failure ? ": " + near.failure->detail : std::string());
   EXPECT_EQ(near.collisions, 0);
   // Carried 5 to 8 m and set down at any heading, in a plant of racks (a tuning-set world): past
@@ -555,7 +558,7 @@ TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
   for (const std::uint64_t seed : {2u, 3u}) {
     c.seed = seed;
     const EpisodeResult r = run(racks, c);
-    EXPECT_TRUE(r.docked) << seed << ": " << r.status
+    EXPECT_TRUE(r.docked) << seed << ": " << episode::status_name(r)
                           << (r.failure ? ": " + r.failure->detail : std::string());
     EXPECT_GE(r.relocalizations, 1) << seed;
     EXPECT_FALSE(r.integrity.breach.has_value()) << seed;
@@ -576,7 +579,7 @@ TEST(Localization, AKidnapPastEveryWindowEndsLocalizationLost) {
   c.detection.enabled = false;
   c.timeout_s = 200;
   const EpisodeResult r = run(w, c);
-  ASSERT_TRUE(r.failure.has_value()) << r.status;
+  ASSERT_TRUE(r.failure.has_value()) << episode::status_name(r);
   EXPECT_EQ(to_string(r.failure->reason), "localization_lost") << r.failure->detail;
 }
 
@@ -587,7 +590,8 @@ TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
       worlds::load_world(test::source_file("data/worlds/generated/styles/sparse_s1.json"));
   const EpisodeConfig c = load_episode_config(test::source_file("configs/noisy_sensing.json"));
   const EpisodeResult r = run(w, c);
-  EXPECT_TRUE(r.docked) << r.status << (r.failure ? ": " + r.failure->detail : std::string());
+  EXPECT_TRUE(r.docked) << episode::status_name(r)
+                        << (r.failure ? ": " + r.failure->detail : std::string());
   // Consistency: the status never says ok while the estimate is far off.
   if (r.localization_error_max_m > 0.10) {
     EXPECT_NE(r.localization_status, "ok");
@@ -645,7 +649,7 @@ TEST(Localization, EncoderNoiseAloneDoesNotPassForSlip) {
   EpisodeConfig c;
   c.odometry.wheel_speed_noise = 0.04;  // twice the noisy level
   const EpisodeResult r = run(l_room(), c);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.slips, 0);
   EXPECT_EQ(r.recoveries, 0);
 }

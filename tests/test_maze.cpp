@@ -5,11 +5,12 @@
 
 #include <algorithm>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/maze/hand_rule.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -108,8 +109,8 @@ TEST(MazePlanner, PlansInsideTheCorridorsAndTheRobotDocks) {
     EXPECT_TRUE(stays_in_corridors(r.path, w.obstacles)) << name;
     EXPECT_FALSE(r.explored.empty());
     EXPECT_NE(r.note.find("ring search"), std::string::npos) << r.note;
-    const sim::EpisodeResult e = episode::run_episode(w, *p, sim::EpisodeConfig{});
-    EXPECT_TRUE(e.docked) << name << ": " << e.status;
+    const episode::EpisodeResult e = episode::run_episode(w, *p, episode::EpisodeConfig{});
+    EXPECT_TRUE(e.docked) << name << ": " << episode::status_name(e);
     EXPECT_EQ(e.collisions, 0) << name;
   }
 }
@@ -125,8 +126,8 @@ TEST(MazePlanner, TheFirstInspectionIsDrivenDeadEndsAndAll) {
   EXPECT_GT(first.length,
             2.0 * next.length);  // the exploration and the search before the route is known
   EXPECT_TRUE(stays_in_corridors(first.path, w.obstacles));
-  const sim::EpisodeResult e = episode::run_episode(w, *explore, sim::EpisodeConfig{});
-  EXPECT_TRUE(e.docked) << e.status;
+  const episode::EpisodeResult e = episode::run_episode(w, *explore, episode::EpisodeConfig{});
+  EXPECT_TRUE(e.docked) << episode::status_name(e);
   EXPECT_EQ(e.collisions, 0);
   EXPECT_GT(e.driven_length_m, 0.95 * first.length);  // it really went into the dead ends
 }

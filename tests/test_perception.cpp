@@ -10,15 +10,16 @@
 #include <set>
 #include <sstream>
 
+#include "episode/episode_config.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_metrics.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/ekf_estimator.h"
 #include "robot/ekf_localizer.h"
 #include "robot/particle_localizer.h"
-#include "sim/episode.h"
-#include "sim/episode_metrics.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"
 #include "sim/wheel_drive.h"
@@ -28,6 +29,7 @@
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::parse_episode_config;
 using episode::run_episode;
 
@@ -453,7 +455,7 @@ TEST(Determinism, TheSameSeedGivesTheSameTrajectoryWithTheLidarOn) {
 
 TEST(Perception, SensorsModeDocksAndReportsItsLocalisation) {
   const EpisodeResult r = run_with(test::shared_data("worlds/world_N50.json"), {});
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.localization_status, "ok");
   EXPECT_GT(r.localization_error_max_m, 0.0);  // an estimate, not the truth
@@ -471,7 +473,7 @@ TEST(Perception, SensorsModeDocksAndReportsItsLocalisation) {
 TEST(Perception, ACrossingPersonIsTrackedFromTheScanAndStopsTheRobot) {
   const EpisodeResult r =
       run_with(test::source_file("data/worlds/examples/corridor_crossing.json"), {});
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_GE(r.stops, 1);
   EXPECT_EQ(r.collisions, 0);
 }

@@ -7,12 +7,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "robot/local_obstacle_layer.h"
 #include "sim/charger_pads.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -138,10 +139,10 @@ TEST(LocalObstacleLayer, MarksWhatTwoScansSeeAndClearsWhatIsSeenThroughLater) {
 TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
   const worlds::World plant = worlds::load_world(test::source_file(kMismatch));
   auto planner = planner::make_planner("vg", planner::planner_input(plant, true));
-  sim::EpisodeConfig c;
+  episode::EpisodeConfig c;
   c.timeout_s = 300;
-  const sim::EpisodeResult r = episode::run_episode(plant, *planner, c);
-  EXPECT_TRUE(r.docked) << r.status;
+  const episode::EpisodeResult r = episode::run_episode(plant, *planner, c);
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.unmapped_seen, 3);
   EXPECT_GE(r.replans, 1);
@@ -155,6 +156,7 @@ TEST(PlantMismatch, DocksOnTheRealChargerAroundObstaclesItsMapLacks) {
 }  // namespace plantsim
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::run_episode;
 
 using namespace robot;  // the robot's side under test, beside the simulator that feeds it

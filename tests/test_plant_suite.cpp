@@ -16,10 +16,11 @@
 #include "batch/batch_runner.h"
 #include "batch/plant_faults.h"
 #include "batch/wilson_interval.h"
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/charger_placement.h"
 #include "worlds/world_error.h"
@@ -161,20 +162,20 @@ TEST(PlantSuite, APersonStandingAtTheDockIsWaitedForAtASafeDistance) {
       ASSERT_EQ(optimal.status, planner::PlanStatus::kOk) << file;
       const worlds::MovingObstacle person = person_standing_at_dock(w, optimal.length, 30.0);
       w.moving.push_back(person);
-      sim::EpisodeConfig config;
+      episode::EpisodeConfig config;
       config.seed = seed;
-      const sim::EpisodeResult r = episode::run_episode(w, *exact, config);
-      EXPECT_TRUE(r.docked) << file << " seed " << seed << ": " << r.status;
+      const episode::EpisodeResult r = episode::run_episode(w, *exact, config);
+      EXPECT_TRUE(r.docked) << file << " seed " << seed << ": " << episode::status_name(r);
       EXPECT_EQ(r.collisions, 0) << file << " seed " << seed;
       double closest = INFINITY;
-      for (const sim::TrajectorySample& s : r.trajectory)
+      for (const episode::TrajectorySample& s : r.trajectory)
         if (s.t_s < person.start_time_s)
           closest = std::min(closest, geom::distance(s.truth.position(), person.waypoints.front()) -
                                           w.robot.radius_m - 0.5 * person.width_m);
       EXPECT_GE(closest, 0.3) << file << " seed " << seed;
       std::printf("%s seed %llu: %s after %.0f s, closest gap to the standing person %.2f m\n",
-                  w.name.c_str(), static_cast<unsigned long long>(seed), r.status.c_str(), r.time_s,
-                  closest);
+                  w.name.c_str(), static_cast<unsigned long long>(seed),
+                  episode::status_name(r).c_str(), r.time_s, closest);
     }
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "figure_checks.h"
 #include "planner/planner.h"
@@ -21,7 +22,6 @@
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "render/text.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -33,7 +33,7 @@ class RenderedRun : public ::testing::Test {
   static void SetUpTestSuite() {
     world_ = new worlds::World(worlds::load_world(test::shared_data("worlds/world_N10.json")));
     auto p = planner::make_planner("vg", planner::planner_input(*world_, true));
-    run_ = new sim::EpisodeResult(episode::run_episode(*world_, *p, {}));
+    run_ = new episode::EpisodeResult(episode::run_episode(*world_, *p, {}));
     path_ = (std::filesystem::temp_directory_path() /
              ("plantsim_run_" + std::to_string(::getpid()) + ".png"))
                 .string();
@@ -49,13 +49,13 @@ class RenderedRun : public ::testing::Test {
     delete run_;
   }
   static worlds::World* world_;
-  static sim::EpisodeResult* run_;
+  static episode::EpisodeResult* run_;
   static std::string path_;
   static PixelTransform transform_;
 };
 
 worlds::World* RenderedRun::world_ = nullptr;
-sim::EpisodeResult* RenderedRun::run_ = nullptr;
+episode::EpisodeResult* RenderedRun::run_ = nullptr;
 std::string RenderedRun::path_;
 PixelTransform RenderedRun::transform_;
 
@@ -228,7 +228,7 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
   const worlds::World w =
       worlds::load_world(test::source_file("data/worlds/examples/small_plant_mismatch.json"));
   auto p = planner::make_planner("vg", planner::planner_input(w, true));
-  const sim::EpisodeResult run = episode::run_episode(w, *p, {});
+  const episode::EpisodeResult run = episode::run_episode(w, *p, {});
   ASSERT_FALSE(run.layer_final.empty());
   RunFigureOptions o;
   o.width_px = 1600;
@@ -276,7 +276,7 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
   EXPECT_TRUE(test::has_legend(layout, "stop"));
   int replans = 0;
   for (const auto& e : run.events) {
-    if (e.kind != sim::EpisodeResult::Event::Kind::kReplan) continue;
+    if (e.kind != episode::EpisodeResult::Event::Kind::kReplan) continue;
     ++replans;
     const double r = 9.0 / t.scale;
     EXPECT_GT(count({e.at.x - r - 0.05, e.at.y - r - 0.05, e.at.x + r + 0.05, e.at.y + r + 0.05},
@@ -293,7 +293,7 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
       nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
   double last_replan_s = 0;
   for (const auto& e : run.events)
-    if (e.kind == sim::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
+    if (e.kind == episode::EpisodeResult::Event::Kind::kReplan) last_replan_s = e.t_s;
   if (!data["first_plan"].empty())
     EXPECT_NEAR(data["plan_from_t"].get<double>(), last_replan_s, 1e-3);
   else

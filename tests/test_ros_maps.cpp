@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_error.h"
@@ -147,8 +147,8 @@ TEST(SharedRosMaps, AutomaticPlacementDocksOnBothMaps) {
   for (const char* name : {"depot", "tb3_sandbox"}) {
     const World w = load_world(test::shared_data(std::string("ros_maps/") + name + ".yaml"));
     auto p = planner::make_planner("vg", planner::planner_input(w, true));
-    const sim::EpisodeResult r = episode::run_episode(w, *p, {});
-    EXPECT_TRUE(r.docked) << name << ": " << r.status;
+    const episode::EpisodeResult r = episode::run_episode(w, *p, {});
+    EXPECT_TRUE(r.docked) << name << ": " << episode::status_name(r);
     EXPECT_EQ(r.collisions, 0) << name;
   }
 }

@@ -7,13 +7,14 @@
 #include <cmath>
 #include <random>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "geometry/clearance.h"
 #include "planner/inflation.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "planner/round/tangent_planner.h"
-#include "sim/episode.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
@@ -222,8 +223,8 @@ TEST_P(RoundPlansDriven, TheRobotDocksWithoutTouchingAWall) {
   const auto world = worlds::load_world(
       test::source_file(std::string("data/worlds/plants/") + GetParam() + ".json"));
   auto p = make_planner("vg-round", planner_input(world, true));
-  const sim::EpisodeResult r = episode::run_episode(world, *p, sim::EpisodeConfig{});
-  EXPECT_TRUE(r.docked) << r.status;
+  const episode::EpisodeResult r = episode::run_episode(world, *p, episode::EpisodeConfig{});
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_LE(r.position_error_m, 0.02);
   // It drove the round plan: shorter than the square inflation's wherever a corner was turned.

@@ -3,15 +3,17 @@
 // plant, and the moving target as a scripted sensor body.
 #include <gtest/gtest.h>
 
+#include "episode/episode_config.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "sim/physics_world.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::run_episode;
 namespace {
 
@@ -41,7 +43,7 @@ TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
   int while_moving = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const EpisodeResult r = run(world, TravelMode::kPotentialField, seed);
-    EXPECT_EQ(r.status, "caught") << "seed " << seed;
+    EXPECT_EQ(episode::status_name(r), "caught") << "seed " << seed;
     EXPECT_TRUE(r.caught) << "seed " << seed;
     EXPECT_EQ(r.collisions, 0) << "seed " << seed;
     if (r.time_s < park_time(*world.target)) ++while_moving;
@@ -56,7 +58,7 @@ TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
   const auto world =
       worlds::load_world(test::source_file("data/worlds/plants/seed001_target_behind_wall.json"));
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
-  EXPECT_EQ(r.status, "caught");
+  EXPECT_EQ(episode::status_name(r), "caught");
   EXPECT_EQ(r.collisions, 0);
   EXPECT_GE(r.local_minima, 1);
   EXPECT_GE(r.wall_follows, 1);
@@ -69,7 +71,7 @@ TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
 TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
   const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   const EpisodeResult r = run(world, TravelMode::kPotentialField);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.travel, "potential-field");
   EXPECT_GE(r.driven_length_m, r.path_length_m);  // the plan is the optimum it is measured against
@@ -82,7 +84,7 @@ TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
   EpisodeConfig config;
   config.travel = TravelMode::kPotentialField;
   const EpisodeResult r = episode::run_episode(world, *p, config);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_TRUE(r.plan.empty());
   EXPECT_NE(r.plan_note.find("no reference plan"), std::string::npos);
 }

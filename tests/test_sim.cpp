@@ -2,18 +2,20 @@
 // worlds, the wheel model, and bit-for-bit determinism.
 #include <gtest/gtest.h>
 
+#include "episode/episode_config.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_result.h"
 #include "episode/run_episode.h"
 #include "episode/stepped_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
-#include "sim/episode.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"
 #include "test_paths.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
+using namespace plantsim::episode;  // the episode's config and result
 using episode::default_config_json;
 using episode::parse_episode_config;
 using episode::run_episode;
@@ -31,7 +33,7 @@ class DockingOnSharedWorlds : public ::testing::TestWithParam<const char*> {};
 TEST_P(DockingOnSharedWorlds, DocksWithinTolerance) {
   const auto world = worlds::load_world(test::shared_data(GetParam()));
   const EpisodeResult r = dock(world);
-  EXPECT_EQ(r.status, "docked");
+  EXPECT_EQ(episode::status_name(r), "docked");
   EXPECT_TRUE(r.docked);
   EXPECT_LE(r.position_error_m, 0.02);
   EXPECT_LE(r.heading_error_deg, 2.0);
@@ -45,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(SharedData, DockingOnSharedWorlds,
 TEST(Docking, ExampleWorldWithChargerAgainstTheWall) {
   const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
   const EpisodeResult r = dock(world);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
 }
 
@@ -110,7 +112,7 @@ TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
       worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json"));
   ASSERT_EQ(world.moving.size(), 1u);
   const EpisodeResult r = dock(world);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_GE(r.stops, 1);
   EXPECT_EQ(r.collisions, 0);
   // Without the arc check the same robot drives into the person.
@@ -125,7 +127,7 @@ TEST(MovingObstacles, ACrossingPersonMakesTheRobotStopWithoutCollision) {
 TEST(MovingObstacles, AParkedCartForcesAReplanAndTheRobotStillDocks) {
   const auto world = worlds::load_world(test::source_file("data/worlds/examples/parked_cart.json"));
   const EpisodeResult r = dock(world);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_GE(r.stops, 1);
   EXPECT_GE(r.replans, 1);
   EXPECT_EQ(r.collisions, 0);
@@ -204,7 +206,7 @@ TEST(Footprint, RectangularRobotDocksFaceOnWithoutCollision) {
   EXPECT_NEAR(world.robot.radius_m, 0.5 * std::hypot(0.5, 0.36), 1e-12);  // planning radius
   EXPECT_DOUBLE_EQ(world.robot.front_extent_m(), 0.25);
   const EpisodeResult r = dock(world);
-  EXPECT_TRUE(r.docked) << r.status;
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_LE(r.position_error_m, 0.02);
 }
@@ -257,7 +259,7 @@ TEST(LongEpisodes, LogsKeepTheirLimitsAndStillSpanTheEpisode) {
   const EpisodeResult whole = run_episode(world, *p, config);
   config.log_limits = {64, 40, 8, 1};
   const EpisodeResult thin = run_episode(world, *p, config);
-  ASSERT_TRUE(whole.docked) << whole.status;
+  ASSERT_TRUE(whole.docked) << episode::status_name(whole);
   EXPECT_EQ(thin.status, whole.status);
   EXPECT_EQ(thin.time_s, whole.time_s);
   EXPECT_EQ(thin.physics_steps, whole.physics_steps);
@@ -307,11 +309,11 @@ namespace {
 TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
   auto world = std::make_shared<const worlds::World>(
       worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json")));
-  sim::EpisodeConfig config;
+  episode::EpisodeConfig config;
   config.seed = 3;
   auto p = planner::make_planner("vg", planner::planner_input(*world, true));
-  const sim::EpisodeResult whole = run_episode(*world, *p, config);
-  ASSERT_TRUE(whole.docked) << whole.status;
+  const episode::EpisodeResult whole = run_episode(*world, *p, config);
+  ASSERT_TRUE(whole.docked) << episode::status_name(whole);
 
   SteppedEpisode stepped(world, "vg", config, false);
   ASSERT_TRUE(stepped.start());
@@ -320,7 +322,7 @@ TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
   while (stepped.step(stepped.view().builtin)) {
     ASSERT_EQ(stepped.view().phase, controller::DockPhase::kTravel);  // docking runs by itself
   }
-  const sim::EpisodeResult& r = stepped.result();
+  const episode::EpisodeResult& r = stepped.result();
   EXPECT_EQ(r.status, whole.status);
   EXPECT_EQ(r.time_s, whole.time_s);
   ASSERT_EQ(r.trajectory.size(), whole.trajectory.size());
@@ -336,8 +338,8 @@ TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
   ASSERT_TRUE(still.start());
   while (still.step({0, 0})) {
   }
-  EXPECT_EQ(still.result().status, "timeout");
-  for (const sim::TrajectorySample& s : still.result().trajectory)
+  EXPECT_EQ(episode::status_name(still.result()), "timeout");
+  for (const episode::TrajectorySample& s : still.result().trajectory)
     EXPECT_LT(geom::distance(s.truth.position(), world->start.position()), 0.01);
 }
 

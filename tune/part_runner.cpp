@@ -42,7 +42,7 @@ PartRunner::PartRunner(const batch::BatchSpec& spec, int threads)
     throw std::invalid_argument(spec_.source + ": a tuning part of more than 1000000 episodes");
   episodes_ = space.shard(0, 1);
   for (const batch::Episode& e : episodes_) ids_.push_back(e.id);
-  for (const sim::EpisodeConfig& c : batch::episode_configs(spec_))
+  for (const episode::EpisodeConfig& c : batch::episode_configs(spec_))
     timeout_s_ = std::max(timeout_s_, c.timeout_s);
 }
 
@@ -55,7 +55,7 @@ std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
     merged.merge_patch(patch);
     c.json = merged.dump();
   }
-  std::vector<sim::EpisodeConfig> configs;
+  std::vector<episode::EpisodeConfig> configs;
   try {
     configs = batch::episode_configs(spec);
   } catch (const std::exception& e) {
@@ -71,7 +71,7 @@ std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
       for (std::size_t k = next++; k < episodes_.size(); k = next++) {
         if (interrupted && interrupted())
           throw TuneInterrupted("the tuning was interrupted; its finished evaluations are kept");
-        const sim::EpisodeResult r = runner.run(episodes_[k]).result;
+        const episode::EpisodeResult r = runner.run(episodes_[k]).result;
         EpisodeOutcome& o = out[k];
         o.id = ids_[k];
         o.succeeded = r.succeeded();

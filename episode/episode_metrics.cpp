@@ -1,11 +1,11 @@
 // Truth into metrics.
-#include "sim/episode_metrics.h"
+#include "episode/episode_metrics.h"
 
 #include <cmath>
 
 #include "geometry/predicates.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
 
 using robot::ActorState;
 
@@ -99,4 +99,4 @@ void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {
   r_.measured_pose = truth;
 }
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode

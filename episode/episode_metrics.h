@@ -1,14 +1,19 @@
-// The referee: the simulator's truth turned into the episode's metrics (collisions, pose
-// error at contact, driven length, localisation error, a caught target). Nothing here feeds
-// back into sensing or control.
+// The episode's metrics, measured from the simulator's truth as the loop steps it (collisions and
+// whose doing, pose error at contact, driven length, localisation error, a caught target); the
+// referee's verdicts are sim/failure_watch.h and sim/integrity_watch.h. Nothing here feeds back
+// into sensing or control.
 #pragma once
 
 #include <deque>
 #include <vector>
 
-#include "sim/episode.h"
+#include "episode/episode_result.h"
+#include "sim/physics_world.h"
 
-namespace plantsim::sim {
+namespace plantsim::episode {
+
+using sim::ContactState;
+using sim::PhysicsWorld;
 
 class EpisodeMetrics {
  public:
@@ -43,4 +48,4 @@ class EpisodeMetrics {
   std::vector<char> unmapped_seen_;  // per unmapped obstacle of the plant
 };
 
-}  // namespace plantsim::sim
+}  // namespace plantsim::episode
