@@ -128,8 +128,8 @@ void write_run_folder(const worlds::World& world, const episode::EpisodeResult& 
   util::write_file_atomically(out_dir + "/trajectory.csv", trajectory_csv(r));
   render::RunFigureOptions figure;
   figure.setting = setting;
-  figure.dock_tolerance_m = config.tolerance.position_m;
-  figure.dock_tolerance_deg = config.tolerance.heading_rad * 180.0 / M_PI;
+  figure.dock_tolerance_m = config.tolerance.lateral_tolerance_m;
+  figure.dock_tolerance_deg = config.tolerance.heading_tolerance_rad * 180.0 / M_PI;
   render::write_run_figure(world, r, out_dir + "/run.png", figure);
   render::write_png(render::draw_time_plots(world, r), out_dir + "/timeplots.png");
   std::vector<render::ReportFigure> figures = {

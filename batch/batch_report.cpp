@@ -220,7 +220,7 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
     const FailedEpisode& f = failures[i];
     render::RunFigureOptions options;
     options.setting = "episode " + f.id;
-    options.dock_tolerance_m = f.config.tolerance.position_m;
+    options.dock_tolerance_m = f.config.tolerance.lateral_tolerance_m;
     std::string why = episode::status_name(f.result);
     if (f.result.failure)
       why = std::string(robot::to_string(f.result.failure->reason)) + " at " +

@@ -19,14 +19,6 @@
 
 namespace plantsim::episode {
 
-/// The charger's pads: they report charging when pressed with the robot within these.
-struct DockTolerance {
-  double position_m = 0.02;  ///< robot centre off the approach axis
-  double heading_rad = 2.0 * M_PI / 180.0;
-  double dwell_s = 0.5;        ///< pressed within tolerance this long
-  double min_press_m = 0.001;  ///< pads compressed at least this far
-};
-
 /// How the robot travels to the staging pose (or to a moving target): along the planner's
 /// path by pure pursuit, or by seed 001's potential field with wall following (the planner's
 /// path is then only the reference the result is measured against).
@@ -69,7 +61,9 @@ struct EpisodeConfig {
   double catch_distance_m = 0.1;         ///< a moving target is caught this close (edge to edge)
   robot::LostSearchParams lost_search;   ///< path travel: driving to find a view while lost
   double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
-  DockTolerance tolerance;
+  /// What the charger's pads accept as docked ("tolerance.*"); their travel and width are the
+  /// plant's charger's, set when the episode starts.
+  sim::ChargerPadParams tolerance;
   KidnapFault kidnap;
   double timeout_s = 600.0;
   int control_period_steps = 2;  ///< sensing, control and logging every this many steps (30 Hz)

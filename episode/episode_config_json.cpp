@@ -1,4 +1,6 @@
-// A table of every parameter, read and written by the same entries.
+// Every parameter, read and written by the same rows: each module declares its own
+// (sim/sim_param_rows.h, robot/robot_param_rows.h, controller/controller_param_rows.h); this file
+// only assembles them with the episode's own and reads and writes the file.
 #include "episode/episode_config_json.h"
 
 #include <cmath>
@@ -9,6 +11,9 @@
 #include <set>
 #include <sstream>
 
+#include "controller/controller_param_rows.h"
+#include "robot/robot_param_rows.h"
+#include "sim/sim_param_rows.h"
 #include "util/input_file.h"
 #include "util/param_table.h"
 #include "worlds/json_input.h"
@@ -25,326 +30,75 @@ namespace {
 
 using nlohmann::json;
 
-// No parameter is meaningful beyond this; a bound keeps 1e308 out of the physics (it would
-// turn forces non-finite) and out of step counts (a timeout of 1e308 never ends).
-constexpr double kMaxParameter = 1e6;
-
 using Field = util::Param<EpisodeConfig>;
 
+// The episode's own rows: the faults, a moving target's pursuit, the loop's period and timeout.
+util::ParamRows<KidnapFault> kidnap_param_rows() {
+  return {
+      PLANTSIM_PARAM("kidnap", at_s, "at_s", -1.0, 86400.0),
+      PLANTSIM_PARAM("kidnap", dx_m, "dx_m", -1000.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", dy_m, "dy_m", -1000.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", dyaw_rad, "dyaw_rad", -M_PI, M_PI),
+      PLANTSIM_PARAM("kidnap", distance_min_m, "distance_min_m", 0.0, 1000.0),
+      PLANTSIM_PARAM("kidnap", distance_max_m, "distance_max_m", 0.0, 1000.0),
+  };
+}
+
+/// Every parameter: each module's rows, assembled (in docs/config.md's section order, which is
+/// also the order `plantsim config` writes them in).
+const std::vector<Field>& table() {
+  static const std::vector<Field> rows = [] {
+    std::vector<Field> t;
+    util::append_rows_of_part(t, sim::step_param_rows(), PLANTSIM_PART(step));
+    t.push_back(PLANTSIM_PARAM("step", control_period_steps, "control_period_steps", 1, 1000));
+    util::append_rows_of_part(t, sim::drive_param_rows(), PLANTSIM_PART(drive));
+    util::append_rows_of_part(t, sim::odometry_param_rows(), PLANTSIM_PART(odometry));
+    util::append_rows_of_part(t, sim::localization_param_rows(), PLANTSIM_PART(localization));
+    util::append_rows_of_part(t, sim::detection_param_rows(), PLANTSIM_PART(detection));
+    util::append_rows_of_part(t, sim::lidar_param_rows(), PLANTSIM_PART(lidar));
+    util::append_rows_of_part(t, sim::imu_param_rows(), PLANTSIM_PART(imu));
+    util::append_rows_of_part(t, sim::beacon_param_rows(), PLANTSIM_PART(beacon));
+    util::append_rows_of_part(t, robot::ekf_param_rows(), PLANTSIM_PART(perception.ekf));
+    util::append_rows_of_part(t, robot::tracker_param_rows(), PLANTSIM_PART(perception.tracker));
+    util::append_rows_of_part(t, robot::perception_param_rows(), PLANTSIM_PART(perception));
+    util::append_rows_of_part(t, controller::pure_pursuit_param_rows(), PLANTSIM_PART(tracking));
+    util::append_rows_of_part(t, controller::docking_param_rows(), PLANTSIM_PART(docking));
+    util::append_rows_of_part(t, kidnap_param_rows(), PLANTSIM_PART(kidnap));
+    util::append_rows_of_part(t, controller::potential_field_param_rows(), PLANTSIM_PART(field));
+    t.push_back(
+        PLANTSIM_PARAM("pursuit", catch_distance_m, "catch_distance_m", 0.0, util::kMaxParameter));
+    t.push_back(PLANTSIM_PARAM("pursuit", pursuit_replan_period_s, "replan_period_s", 0.0,
+                               util::kMaxParameter));
+    util::append_rows_of_part(t, sim::tolerance_param_rows(), PLANTSIM_PART(tolerance));
+    util::append_rows_of_part(t, controller::traction_param_rows(), PLANTSIM_PART(traction));
+    util::append_rows_of_part(t, robot::layer_param_rows(), PLANTSIM_PART(perception.layer));
+    util::append_rows_of_part(t, robot::particle_param_rows(), PLANTSIM_PART(perception.particles));
+    util::append_rows_of_part(t, robot::lost_search_param_rows(), PLANTSIM_PART(lost_search));
+    t.push_back(PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0));
+    return t;
+  }();
+  return rows;
+}
+
+/// The rows of one kind, in the table's order: reals, whole numbers and flags are read and
+/// written in turn.
+std::vector<Field> rows_of(util::ParamKind kind) {
+  std::vector<Field> out;
+  for (const Field& f : table())
+    if (f.kind == kind) out.push_back(f);
+  return out;
+}
 const std::vector<Field>& fields() {
-  static const std::vector<Field> table = {
-      PLANTSIM_PARAM("step", step.dt_s, "dt_s", 1e-4, 0.1),
-      PLANTSIM_PARAM("drive", drive.tyre_friction, "tyre_friction", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("odometry", odometry.wheel_speed_noise, "wheel_speed_noise", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("odometry", odometry.left_scale_error, "left_scale_error", -0.5, 0.5),
-      PLANTSIM_PARAM("odometry", odometry.right_scale_error, "right_scale_error", -0.5, 0.5),
-      PLANTSIM_PARAM("localization", localization.period_s, "period_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("localization", localization.position_noise_m, "position_noise_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("localization", localization.yaw_noise_rad, "yaw_noise_rad", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.range_m, "range_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.field_of_view_rad, "field_of_view_rad", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.position_noise_m, "position_noise_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.yaw_noise_rad, "yaw_noise_rad", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("detection", detection.rate_hz, "rate_hz", 0.0, 1000.0),
-      PLANTSIM_PARAM("detection", detection.mount_x_m, "mount_x_m", -10.0, 10.0),
-      PLANTSIM_PARAM("detection", detection.false_negative_probability,
-                     "false_negative_probability", 0.0, 1.0),
-      PLANTSIM_PARAM("detection", detection.outlier_probability, "outlier_probability", 0.0, 1.0),
-      PLANTSIM_PARAM("detection", detection.outlier_position_m, "outlier_position_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.outlier_yaw_rad, "outlier_yaw_rad", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("detection", detection.latency_s, "latency_s", 0.0, 1.5),
-      PLANTSIM_PARAM_ABOVE("lidar", lidar.field_of_view_rad, "field_of_view_rad", 0.0, 2.0 * M_PI),
-      PLANTSIM_PARAM("lidar", lidar.min_range_m, "min_range_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("lidar", lidar.max_range_m, "max_range_m", 0.0, 1000.0),
-      PLANTSIM_PARAM_ABOVE("lidar", lidar.rate_hz, "rate_hz", 0.0, 1000.0),
-      PLANTSIM_PARAM("lidar", lidar.mount_x_m, "mount_x_m", -10.0, 10.0),
-      PLANTSIM_PARAM("lidar", lidar.mount_y_m, "mount_y_m", -10.0, 10.0),
-      PLANTSIM_PARAM("lidar", lidar.mount_yaw_rad, "mount_yaw_rad", -M_PI, M_PI),
-      PLANTSIM_PARAM("lidar", lidar.range_noise_m, "range_noise_m", 0.0, 10.0),
-      PLANTSIM_PARAM("lidar", lidar.dropout_probability, "dropout_probability", 0.0, 1.0),
-      PLANTSIM_PARAM("imu", imu.yaw_rate_noise_radps, "yaw_rate_noise_radps", 0.0, 10.0),
-      PLANTSIM_PARAM("imu", imu.bias_radps, "bias_radps", 0.0, 10.0),
-      PLANTSIM_PARAM("imu", imu.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s", 0.0,
-                     10.0),
-      PLANTSIM_PARAM("beacon", beacon.position_noise_m, "position_noise_m", 0.0, 100.0),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_position_sigma_m,
-                           "initial_position_sigma_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_yaw_sigma_rad, "initial_yaw_sigma_rad",
-                           0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.initial_bias_sigma_radps,
-                           "initial_bias_sigma_radps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.distance_noise, "distance_noise", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.lateral_noise, "lateral_noise", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.gyro_noise_radps, "gyro_noise_radps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.bias_walk_radps_per_sqrt_s, "bias_walk_radps_per_sqrt_s",
-                     0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.range_sigma_m, "range_sigma_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.gate_chi2, "gate_chi2", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.min_incidence_cos, "min_incidence_cos", 0.0, 1.0),
-      PLANTSIM_PARAM("ekf", perception.ekf.range_learning_rate, "range_learning_rate", 0.0, 1.0),
-      PLANTSIM_PARAM("ekf", perception.ekf.gyro_learning_rate, "gyro_learning_rate", 0.0, 1.0),
-      PLANTSIM_PARAM("ekf", perception.ekf.gate_floor_m, "gate_floor_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.constraint_sigma_m, "constraint_sigma_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("ekf", perception.ekf.degraded_inlier_fraction, "degraded_inlier_fraction",
-                     0.0, 1.0),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.ok_position_sigma_m, "ok_position_sigma_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.nis_quantile_z, "nis_quantile_z", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("ekf", perception.ekf.lost_position_sigma_m, "lost_position_sigma_m",
-                           0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracker", perception.tracker.unexplained_margin_m, "unexplained_margin_m",
-                     0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.range_m, "range_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.cluster_gap_m, "cluster_gap_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.association_gate_m, "association_gate_m",
-                           0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracker", perception.tracker.alpha, "alpha", 0.0, 1.0),
-      PLANTSIM_PARAM("tracker", perception.tracker.beta, "beta", 0.0, 1.0),
-      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.max_speed_mps, "max_speed_mps", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("tracker", perception.tracker.still_speed_mps, "still_speed_mps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("tracker", perception.tracker.forget_after_s, "forget_after_s", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("tracker", perception.tracker.min_size_m, "min_size_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracker", perception.tracker.assumed_depth_m, "assumed_depth_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.target_exclusion_m, "target_exclusion_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.lookahead_min_m, "lookahead_min_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.lookahead_max_m, "lookahead_max_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.lookahead_time_s, "lookahead_time_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.sharp_turn_rad, "sharp_turn_rad", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.corner_release_m, "corner_release_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.max_linear_speed_mps, "max_linear_speed_mps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.max_angular_speed_radps, "max_angular_speed_radps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.min_approach_speed_mps, "min_approach_speed_mps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.approach_slowdown_distance_m,
-                     "approach_slowdown_distance_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.regulated_min_radius_m, "regulated_min_radius_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_threshold_rad,
-                     "rotate_in_place_threshold_rad", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_exit_rad, "rotate_in_place_exit_rad", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.rotate_in_place_speed_radps,
-                     "rotate_in_place_speed_radps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.goal_tolerance_m, "goal_tolerance_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tracking", tracking.progress_window_m, "progress_window_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.approach_speed_mps, "approach_speed_mps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.approach_lookahead_m, "approach_lookahead_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.align_tolerance_rad, "align_tolerance_rad", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.align_speed_radps, "align_speed_radps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.backoff_speed_mps, "backoff_speed_mps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.overshoot_limit_m, "overshoot_limit_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.detection_blend, "detection_blend", 0.0, 1.0),
-      PLANTSIM_PARAM_ABOVE("docking", docking.detection_gate_m, "detection_gate_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.approach_timeout_s, "approach_timeout_s", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.safety_margin_m, "safety_margin_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.max_decel_mps2, "max_decel_mps2", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.check_extra_m, "check_extra_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.replan_after_s, "replan_after_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.yield_horizon_s, "yield_horizon_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.yield_speed_mps, "yield_speed_mps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.bystander_reach_m, "bystander_reach_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.bystander_max_size_m, "bystander_max_size_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.bystander_wait_s, "bystander_wait_s", 0.0, 86400.0),
-      PLANTSIM_PARAM("kidnap", kidnap.at_s, "at_s", -1.0, 86400.0),
-      PLANTSIM_PARAM("kidnap", kidnap.dx_m, "dx_m", -1000.0, 1000.0),
-      PLANTSIM_PARAM("kidnap", kidnap.dy_m, "dy_m", -1000.0, 1000.0),
-      PLANTSIM_PARAM("kidnap", kidnap.dyaw_rad, "dyaw_rad", -M_PI, M_PI),
-      PLANTSIM_PARAM("kidnap", kidnap.distance_min_m, "distance_min_m", 0.0, 1000.0),
-      PLANTSIM_PARAM("kidnap", kidnap.distance_max_m, "distance_max_m", 0.0, 1000.0),
-      PLANTSIM_PARAM("docking", docking.confident_sigma_m, "confident_sigma_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.uncertain_sigma_m, "uncertain_sigma_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.uncertain_speed_fraction, "uncertain_speed_fraction", 0.0,
-                     1.0),
-      PLANTSIM_PARAM("potential_field", field.k_att, "k_att", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.m, "m", 0.0, 10.0),  // exponents
-      PLANTSIM_PARAM("potential_field", field.k_att_v, "k_att_v", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.m_v, "m_v", 0.0, 10.0),  // exponents
-      PLANTSIM_PARAM("potential_field", field.k_rep, "k_rep", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.n, "n", 0.0, 10.0),  // exponents
-      PLANTSIM_PARAM("potential_field", field.rho0_m, "rho0_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.k_rep_v, "k_rep_v", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.n_v, "n_v", 0.0, 10.0),  // exponents
-      PLANTSIM_PARAM("potential_field", field.rho_min_m, "rho_min_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.max_speed_mps, "max_speed_mps", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.turn_gain, "turn_gain", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.max_angular_speed_radps, "max_angular_speed_radps",
-                     0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.max_decel_mps2, "max_decel_mps2", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.arrive_radius_m, "arrive_radius_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.slow_force_ratio, "slow_force_ratio", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.balance_ratio, "balance_ratio", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.stall_window_s, "stall_window_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.stall_distance_m, "stall_distance_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.wall_distance_m, "wall_distance_m", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.wall_gain, "wall_gain", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.follow_angle_rad, "follow_angle_rad", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.leave_margin_m, "leave_margin_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("potential_field", field.sensor_range_m, "sensor_range_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("pursuit", catch_distance_m, "catch_distance_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("pursuit", pursuit_replan_period_s, "replan_period_s", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.range_m, "range_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tolerance", tolerance.position_m, "position_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tolerance", tolerance.heading_rad, "heading_rad", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("tolerance", tolerance.dwell_s, "dwell_s", 0.0, 60.0),
-      PLANTSIM_PARAM("tolerance", tolerance.min_press_m, "min_press_m", 0.0, 0.05),
-      PLANTSIM_PARAM_ABOVE("docking", docking.press_speed_mps, "press_speed_mps", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("docking", docking.press_timeout_s, "press_timeout_s", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("docking", docking.stuck_timeout_s, "stuck_timeout_s", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("docking", docking.settle_s, "settle_s", 0.0, 60.0),
-      PLANTSIM_PARAM_ABOVE("traction", traction.max_accel_mps2, "max_accel_mps2", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("traction", traction.max_angular_accel_radps2,
-                           "max_angular_accel_radps2", 0.0, kMaxParameter),
-      PLANTSIM_PARAM("traction", traction.slip_scale_factor, "slip_scale_factor", 0.0, 1.0),
-      PLANTSIM_PARAM("traction", traction.min_scale, "min_scale", 0.0, 1.0),
-      PLANTSIM_PARAM("traction", traction.slip_hold_s, "slip_hold_s", 0.0, 60.0),
-      PLANTSIM_PARAM("traction", traction.recover_per_s, "recover_per_s", 0.0, 10.0),
-      PLANTSIM_PARAM("traction", traction.creep_mps, "creep_mps", 0.0, 10.0),
-      PLANTSIM_PARAM("traction", traction.creep_radps, "creep_radps", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("layer", perception.layer.cell_m, "cell_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("layer", perception.layer.clear_range_m, "clear_range_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.moving_speed_mps, "moving_speed_mps", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.explained_sigmas, "explained_sigmas", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.gyro_calibration_s, "gyro_calibration_s", 0.0,
-                     kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("perception", perception.displaced_jump_m, "displaced_jump_m", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("perception", perception.slip_jump_m, "slip_jump_m", 0.0, kMaxParameter),
-      PLANTSIM_PARAM_ABOVE("perception", perception.slip_turn_radps, "slip_turn_radps", 0.0,
-                           kMaxParameter),
-      PLANTSIM_PARAM("perception", perception.relocalize_sigma_m, "relocalize_sigma_m", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("perception", perception.slip_window_s, "slip_window_s", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("perception", perception.global.global_match_sigma_m,
-                           "global_match_sigma_m", 0.0, 100.0),
-      PLANTSIM_PARAM("perception", perception.global.global_match_period_s, "global_match_period_s",
-                     0.0, 100.0),
-      PLANTSIM_PARAM("perception", perception.global.global_match_max_window_m,
-                     "global_match_max_window_m", 0.1, 100.0),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.kld_error, "kld_error", 0.0, 1.0),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.kld_z, "kld_z", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.bin_xy_m, "bin_xy_m", 0.0, 100.0),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.bin_yaw_rad, "bin_yaw_rad", 0.0, M_PI),
-      PLANTSIM_PARAM("particles", perception.particles.z_hit, "z_hit", 0.0, 1.0),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.z_rand, "z_rand", 0.0, 1.0),
-      PLANTSIM_PARAM("particles", perception.particles.unsettled_sigma_m, "unsettled_sigma_m", 0.0,
-                     10.0),
-      PLANTSIM_PARAM("particles", perception.particles.update_min_m, "update_min_m", 0.0, 100.0),
-      PLANTSIM_PARAM("particles", perception.particles.update_min_rad, "update_min_rad", 0.0, M_PI),
-      PLANTSIM_PARAM("particles", perception.particles.alpha_slow, "alpha_slow", 0.0, 1.0),
-      PLANTSIM_PARAM("particles", perception.particles.alpha_fast, "alpha_fast", 0.0, 1.0),
-      PLANTSIM_PARAM("particles", perception.particles.jitter_m, "jitter_m", 0.0, 10.0),
-      PLANTSIM_PARAM("particles", perception.particles.jitter_rad, "jitter_rad", 0.0, M_PI),
-      PLANTSIM_PARAM("particles", perception.particles.contradicted_agreement,
-                     "contradicted_agreement", 0.0, 1.0),
-      PLANTSIM_PARAM("particles", perception.particles.reseed_fraction, "reseed_fraction", 0.0,
-                     0.9),
-      PLANTSIM_PARAM_ABOVE("particles", perception.particles.reseed_tile_m, "reseed_tile_m", 0.0,
-                           50.0),
-      PLANTSIM_PARAM("particles", perception.particles.min_explained, "min_explained", 0.0, 1.0),
-      PLANTSIM_PARAM("particles", perception.particles.confirm_turn_rad, "confirm_turn_rad", 0.0,
-                     100.0),
-      PLANTSIM_PARAM("particles", perception.particles.confirm_move_m, "confirm_move_m", 0.0,
-                     1000.0),
-      PLANTSIM_PARAM("particles", perception.particles.rival_margin, "rival_margin", 0.0, 1e6),
-      PLANTSIM_PARAM("particles", perception.particles.place_offset_m, "place_offset_m", 0.0,
-                     100.0),
-      PLANTSIM_PARAM_ABOVE("docking", docking.relocalize_timeout_s, "relocalize_timeout_s", 0.0,
-                           86400.0),
-      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.speed_mps, "speed_mps", 0.0, 5.0),
-      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.turn_radps, "turn_radps", 0.0, 10.0),
-      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.leg_m, "leg_m", 0.0, 1000.0),
-      PLANTSIM_PARAM("lost_search", lost_search.clearance_m, "clearance_m", 0.0, 10.0),
-      PLANTSIM_PARAM("lost_search", lost_search.narrow_clearance_m, "narrow_clearance_m", 0.0,
-                     10.0),
-      PLANTSIM_PARAM("lost_search", lost_search.standoff_m, "standoff_m", 0.0, 100.0),
-      PLANTSIM_PARAM_ABOVE("lost_search", lost_search.surface_reach_m, "surface_reach_m", 0.0,
-                           1000.0),
-      PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0),
-  };
-  return table;
+  static const std::vector<Field> rows = rows_of(util::ParamKind::kReal);
+  return rows;
 }
-
-// Whole-number and on/off parameters, kept apart from the real ones (and written after them).
 const std::vector<Field>& int_fields() {
-  static const std::vector<Field> table = {
-      PLANTSIM_PARAM("step", step.velocity_iterations, "velocity_iterations", 0, 1000),
-      PLANTSIM_PARAM("step", step.position_iterations, "position_iterations", 0, 1000),
-      PLANTSIM_PARAM("docking", docking.max_retries, "max_retries", 0, 1000),
-      PLANTSIM_PARAM("step", control_period_steps, "control_period_steps", 1, 1000),
-      PLANTSIM_PARAM("potential_field", field.max_wall_follows, "max_wall_follows", 0, 1000),
-      PLANTSIM_PARAM("lidar", lidar.beam_count, "beam_count", 1, 10000),
-      PLANTSIM_PARAM("ekf", perception.ekf.beams_used, "beams_used", 1, 10000),
-      PLANTSIM_PARAM("ekf", perception.ekf.iterations, "iterations", 1, 20),
-      PLANTSIM_PARAM("ekf", perception.ekf.min_informative_beams, "min_informative_beams", 3,
-                     10000),
-      PLANTSIM_PARAM("ekf", perception.ekf.nis_window, "nis_window", 1, 1000),
-      PLANTSIM_PARAM("ekf", perception.ekf.lost_failed_matches, "lost_failed_matches", 1, 100000),
-      PLANTSIM_PARAM("ekf", perception.ekf.gyro_min_samples, "gyro_min_samples", 1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.min_particles, "min_particles", 1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.max_particles, "max_particles", 1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.beams, "beams", 1, 10000),
-      PLANTSIM_PARAM("particles", perception.particles.reseed_rings, "reseed_rings", 1, 10),
-      PLANTSIM_PARAM("particles", perception.particles.min_returns, "min_returns", 1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.confirm_strikes, "confirm_strikes", 1, 1000),
-      PLANTSIM_PARAM("particles", perception.particles.max_places, "max_places", 1, 1000),
-      PLANTSIM_PARAM("particles", perception.particles.view_change_returns, "view_change_returns",
-                     1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.view_change_lost_scans,
-                     "view_change_lost_scans", 1, 100000),
-      PLANTSIM_PARAM("particles", perception.particles.seed, "seed", 0, 1000000000),
-  };
-  return table;
+  static const std::vector<Field> rows = rows_of(util::ParamKind::kWhole);
+  return rows;
 }
-
 const std::vector<Field>& bool_fields() {
-  static const std::vector<Field> table = {
-      PLANTSIM_PARAM("detection", detection.enabled, "enabled", 0, 1),
-      PLANTSIM_PARAM("detection", detection.occlusion, "occlusion", 0, 1),
-      PLANTSIM_PARAM("lidar", lidar.enabled, "enabled", 0, 1),
-      PLANTSIM_PARAM("lidar", lidar.max_range_returns, "max_range_returns", 0, 1),
-      PLANTSIM_PARAM("traction", traction.enabled, "enabled", 0, 1),
-      PLANTSIM_PARAM("docking", docking.undock, "undock", 0, 1),
-      PLANTSIM_PARAM("layer", perception.layer.enabled, "enabled", 0, 1),
-      PLANTSIM_PARAM("ekf", perception.ekf.learn_noise, "learn_noise", 0, 1),
-      PLANTSIM_PARAM("lost_search", lost_search.enabled, "enabled", 0, 1),
-  };
-  return table;
+  static const std::vector<Field> rows = rows_of(util::ParamKind::kFlag);
+  return rows;
 }
 
 std::string path_of(const char* section, const std::string& name) {

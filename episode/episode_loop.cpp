@@ -23,10 +23,7 @@ SensorParams sensor_params(const EpisodeConfig& c, const worlds::World& plant) {
   s.odometry = c.odometry;
   s.oracle_fix = c.localization;
   s.beacon = c.beacon;
-  s.pads.lateral_tolerance_m = c.tolerance.position_m;
-  s.pads.heading_tolerance_rad = c.tolerance.heading_rad;
-  s.pads.dwell_s = c.tolerance.dwell_s;
-  s.pads.min_press_m = c.tolerance.min_press_m;
+  s.pads = c.tolerance;
   s.pads.travel_m = plant.charger_spec.pad_travel_m;
   s.pads.contact_width_m = plant.charger_spec.width_m;
   return s;

@@ -143,8 +143,8 @@ TEST(FailureEpisodes, CollisionWithSomethingCatchingUpFromBehind) {
 
 TEST(FailureEpisodes, DockRetriesExhaustedWhenThePadsNeverAcceptTheRobot) {
   EpisodeConfig c;
-  c.tolerance.position_m = 1e-5;  // no approach is ever this exact
-  c.tolerance.heading_rad = 1e-5;
+  c.tolerance.lateral_tolerance_m = 1e-5;  // no approach is ever this exact
+  c.tolerance.heading_tolerance_rad = 1e-5;
   expect_reason(run(room(), c), FailureReason::kDockRetriesExhausted);
 }
 

@@ -2,15 +2,23 @@
 // coverage parameters): each entry names its JSON section and key, the member it reads and
 // writes, and the closed range of valid values (open at the low end with PLANTSIM_PARAM_ABOVE).
 // Whether a parameter is a real number, a whole number or a flag follows from the member's type.
-// Readers and writers walk the table, so a parameter is declared once for both.
+// Readers and writers walk the table, so a parameter is declared once for both. Each module
+// declares the rows of its own parameter structs (sim/sim_param_rows.h, robot/robot_param_rows.h,
+// controller/controller_param_rows.h); a table of a larger struct takes them over with
+// rows_of_part, so no row is written twice.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace plantsim::util {
+
+/// No parameter is meaningful beyond this; a bound keeps 1e308 out of the physics (it would
+/// turn forces non-finite) and out of step counts (a timeout of 1e308 never ends).
+inline constexpr double kMaxParameter = 1e6;
 
 enum class ParamKind { kReal, kWhole, kFlag };
 
@@ -58,6 +66,21 @@ struct ParamEntry {
 template <typename Ref>
 ParamEntry(const char*, const char*, Ref, double, double, bool) -> ParamEntry<Ref>;
 
+template <typename P>
+using ParamRows = std::vector<Param<P>>;
+
+/// A part's rows as rows of the whole P that holds it: `part` reaches the part from the whole (a
+/// generic lambda returning a reference, PLANTSIM_PART). Each row keeps its section, key and
+/// bounds.
+template <typename P, typename Part, typename Reach>
+void append_rows_of_part(ParamRows<P>& whole, const ParamRows<Part>& rows, Reach part) {
+  for (const Param<Part>& r : rows)
+    whole.push_back(
+        Param<P>{r.section, r.name, r.kind,
+                 [get = r.get, part](const P& p) { return get(part(const_cast<P&>(p))); },
+                 [set = r.set, part](P& p, double v) { set(part(p), v); }, r.lo, r.hi, r.above});
+}
+
 }  // namespace plantsim::util
 
 /// A parameter `section.name` held in `member` of the table's parameter type, valid in [lo, hi].
@@ -72,3 +95,6 @@ ParamEntry(const char*, const char*, Ref, double, double, bool) -> ParamEntry<Re
     section, name, [](auto& p) -> auto& { return p.member; } \
     , static_cast<double>(lo), static_cast<double>(hi), true \
   }
+/// The part `member` of a larger parameter struct, for append_rows_of_part.
+#define PLANTSIM_PART(member) \
+  [](auto& p) -> auto& { return p.member; }
