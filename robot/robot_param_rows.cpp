@@ -74,7 +74,9 @@ const util::ParamRows<ParticleParams>& particle_param_rows() {
       PLANTSIM_PARAM_ABOVE("particles", bin_yaw_rad, "bin_yaw_rad", 0.0, M_PI),
       PLANTSIM_PARAM("particles", z_hit, "z_hit", 0.0, 1.0),
       PLANTSIM_PARAM_ABOVE("particles", z_rand, "z_rand", 0.0, 1.0),
+      PLANTSIM_PARAM("particles", field_sigma_m, "field_sigma_m", 0.0, 10.0),
       PLANTSIM_PARAM("particles", unsettled_sigma_m, "unsettled_sigma_m", 0.0, 10.0),
+      PLANTSIM_PARAM_ABOVE("particles", field_resolution_m, "field_resolution_m", 0.0, 10.0),
       PLANTSIM_PARAM("particles", update_min_m, "update_min_m", 0.0, 100.0),
       PLANTSIM_PARAM("particles", update_min_rad, "update_min_rad", 0.0, M_PI),
       PLANTSIM_PARAM("particles", alpha_slow, "alpha_slow", 0.0, 1.0),
@@ -136,6 +138,7 @@ const util::ParamRows<PerceptionParams>& perception_param_rows() {
         PLANTSIM_PARAM("perception", global_match_period_s, "global_match_period_s", 0.0, 100.0),
         PLANTSIM_PARAM("perception", global_match_max_window_m, "global_match_max_window_m", 0.1,
                        100.0),
+        PLANTSIM_PARAM("perception", verify_agreement, "global_match_verify_agreement", 0.0, 1.0),
     };
     util::append_rows_of_part(own, global, PLANTSIM_PART(global));
     return own;
