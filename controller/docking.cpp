@@ -1,4 +1,5 @@
-// Docking state machine.
+// The docking phases, with the travel, the arc check, giving way and the dock's pose left to
+// their collaborators.
 #include "controller/docking.h"
 
 #include <algorithm>
@@ -48,15 +49,6 @@ std::string_view to_string(DockFailure f) {
   return "unknown";
 }
 
-double uncertainty_speed_fraction(const DockingParams& p, double position_sigma_m) {
-  if (!(position_sigma_m > p.confident_sigma_m)) return 1.0;
-  if (!(p.uncertain_sigma_m > p.confident_sigma_m) || position_sigma_m >= p.uncertain_sigma_m)
-    return p.uncertain_speed_fraction;
-  const double share =
-      (position_sigma_m - p.confident_sigma_m) / (p.uncertain_sigma_m - p.confident_sigma_m);
-  return 1.0 - share * (1.0 - p.uncertain_speed_fraction);
-}
-
 void DockingController::fail(DockFailure why) {
   phase_ = DockPhase::kFailed;
   failure_ = why;
@@ -64,15 +56,17 @@ void DockingController::fail(DockFailure why) {
 
 DockingController::DockingController(PurePursuitParams tracking, DockingParams docking,
                                      std::vector<Vec2> path, Pose2 charger_on_map)
-    : tracker_(tracking, std::move(path)),
+    : follower_(tracking, docking.travel, {docking.align_tolerance_rad, docking.align_speed_radps},
+                std::move(path)),
       params_(docking),
-      dock_map_(charger_on_map),
-      dock_odom_(charger_on_map) {}
+      guard_(docking.guard),
+      dock_(docking.filter, docking.staging_distance_m, charger_on_map),
+      dock_map_(charger_on_map) {}
 
-Vec2 DockingController::in_dock_frame(Vec2 p) const { return to_robot_frame(dock_odom_, p); }
+Vec2 DockingController::in_dock_frame(Vec2 p) const { return to_robot_frame(dock_.pose(), p); }
 
 void DockingController::replace_path(std::vector<Vec2> path) {
-  if (phase_ == DockPhase::kTravel) tracker_ = PurePursuit(tracker_.params(), std::move(path));
+  if (phase_ == DockPhase::kTravel) follower_.replace_path(std::move(path));
 }
 
 void DockingController::miss() {
@@ -84,27 +78,6 @@ void DockingController::miss() {
     events_.retried = true;
   }
   phase_ = DockPhase::kBackOff;
-}
-
-void DockingController::use_detection(const Pose2& seen) {
-  // A detection far from the estimate is an outlier unless the next one confirms it (a map
-  // placement that was off is corrected by two agreeing detections).
-  auto near = [&](const Pose2& a, const Pose2& b) {
-    return geom::distance(a.position(), b.position()) <= params_.detection_gate_m &&
-           std::fabs(geom::wrap_angle(a.yaw - b.yaw)) <=
-               params_.detection_gate_m / params_.staging_distance_m;
-  };
-  if (!near(seen, dock_odom_)) {
-    const bool confirmed = rejected_detection_ && near(seen, *rejected_detection_);
-    rejected_detection_ = seen;
-    if (!confirmed) return;
-  }
-  rejected_detection_.reset();
-  const double a = params_.detection_blend;
-  dock_odom_.x += a * (seen.x - dock_odom_.x);
-  dock_odom_.y += a * (seen.y - dock_odom_.y);
-  dock_odom_.yaw =
-      geom::wrap_angle(dock_odom_.yaw + a * geom::wrap_angle(seen.yaw - dock_odom_.yaw));
 }
 
 DockingCommand DockingController::recover(const DockingInput& in) {
@@ -125,9 +98,8 @@ DockingCommand DockingController::recover(const DockingInput& in) {
     ++recoveries_;
     events_.recovered = true;
     phase_ = DockPhase::kTravel;
-    dock_placed_ = false;
+    dock_.forget();
     pressing_ = false;
-    rejected_detection_.reset();
     out.recover_requested = true;
     out.phase = phase_;
   } else if (unsettled_s_ > (last_unsettled_by_localization_ ? params_.relocalize_timeout_s
@@ -145,15 +117,11 @@ DockingCommand DockingController::recover(const DockingInput& in) {
 }
 
 bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
-  std::vector<MovingBox> movers;
-  for (const MovingBox& b : in.nearby_obstacles)
-    if (geom::norm(b.velocity) > 0.2) movers.push_back(b);
-  if (movers.empty() ||
-      !position_threatened(in.pose.position(),
-                           params_.footprint_radius_m + 0.5 * params_.safety_margin_m, movers,
-                           params_.yield_horizon_s))
+  if (!threatened_by_movers(params_.yield, in.pose.position(),
+                            params_.guard.footprint_radius_m + 0.5 * params_.guard.safety_margin_m,
+                            in.nearby_obstacles))
     return false;
-  const Twist back{-params_.yield_speed_mps, 0.0};
+  const Twist back{-params_.yield.yield_speed_mps, 0.0};
   out.twist = guard(in, back, false) ? back : Twist{};
   out.blocked = true;
   return true;
@@ -161,7 +129,9 @@ bool DockingController::yield(const DockingInput& in, DockingCommand& out) {
 
 DockingCommand DockingController::step(const DockingInput& in) {
   events_ = {};
+  const int stops_before = guard_.stops();
   DockingCommand out = step_phase(in);
+  events_.stopped = guard_.stops() > stops_before;
   out.events = events_;
   return out;
 }
@@ -175,8 +145,8 @@ DockingCommand DockingController::step_phase(const DockingInput& in) {
   }
   if (recovering_) return recover(in);
   // Re-anchor the dock in the odometry frame: robot pose composed with the detection.
-  if (in.charger_in_robot && dock_placed_)
-    use_detection(geom::compose(in.odom_pose, *in.charger_in_robot));
+  if (in.charger_in_robot && dock_.placed())
+    dock_.update(geom::compose(in.odom_pose, *in.charger_in_robot));
   DockingCommand out = decide(in);
   // The bumper overrides every phase: never push on into what it touches.
   if ((in.bumper_front && out.twist.v_mps > 0) || (in.bumper_rear && out.twist.v_mps < 0))
@@ -184,49 +154,32 @@ DockingCommand DockingController::step_phase(const DockingInput& in) {
   return out;
 }
 
+Pose2 DockingController::dock_in_map(const DockingInput& in) const {
+  return geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_.pose());
+}
+
 Vec2 DockingController::charger_in_map(const DockingInput& in) const {
   // What is sensed there is the charger (a charger off its mapped pose returns off the map),
   // not a hazard.
-  const Pose2 dock_in_map =
-      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
-  return dock_in_map.position() + (params_.footprint_radius_m + 0.05) * dock_in_map.heading();
-}
-
-bool DockingController::bystander_near_approach(const DockingInput& in) const {
-  const Pose2 dock_in_map =
-      geom::compose(geom::compose(in.pose, geom::inverse(in.odom_pose)), dock_odom_);
-  const Vec2 charger_at = charger_in_map(in);
-  const double near =
-      params_.footprint_radius_m + params_.safety_margin_m + params_.bystander_reach_m;
-  for (const MovingBox& b : in.nearby_obstacles) {
-    if (distance_to_box(charger_at, b.box) <= 0.25) continue;
-    if (std::max(b.box.width(), b.box.height()) > params_.bystander_max_size_m) continue;
-    if (segment_distance_to_box(in.pose.position(), dock_in_map.position(), b.box) < near)
-      return true;
-  }
-  return false;
+  const Pose2 dock = dock_in_map(in);
+  return dock.position() + (params_.guard.footprint_radius_m + 0.05) * dock.heading();
 }
 
 bool DockingController::guard(const DockingInput& in, const Twist& twist, bool spare_charger) {
+  if (!spare_charger) return guard_.clear(in.pose, in.speed_mps, twist, in.nearby_obstacles);
   std::vector<MovingBox> boxes;
   boxes.reserve(in.nearby_obstacles.size());
   const Vec2 charger_at = charger_in_map(in);
   for (const MovingBox& b : in.nearby_obstacles)
-    if (!spare_charger || distance_to_box(charger_at, b.box) > 0.25) boxes.push_back(b);
-  const double v = std::max(std::fabs(twist.v_mps), std::fabs(in.speed_mps));
-  const double ahead = v * v / (2.0 * params_.max_decel_mps2) + params_.check_extra_m;
-  if (arc_clear(in.pose, twist, std::max(v, 0.1), ahead,
-                params_.footprint_radius_m + params_.safety_margin_m, boxes))
-    return true;
-  note_blocked();
-  return false;
+    if (distance_to_box(charger_at, b.box) > 0.25) boxes.push_back(b);
+  return guard_.clear(in.pose, in.speed_mps, twist, boxes);
 }
 
 bool DockingController::reverse_to_staging(const DockingInput& in, DockingCommand& out) {
   const Vec2 rel = in_dock_frame(in.odom_pose.position());
   if (rel.x <= -params_.staging_distance_m) return true;
   // Reverse straight out, holding the axis heading; the next approach corrects offsets.
-  const double heading_err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
+  const double heading_err = geom::wrap_angle(dock_.pose().yaw - in.odom_pose.yaw);
   out.twist = {-params_.backoff_speed_mps, std::clamp(1.5 * heading_err, -0.5, 0.5)};
   if (!guard(in, out.twist, false)) {
     // Something behind: wait for it; stopped for good (failed) if it never goes.
@@ -237,103 +190,37 @@ bool DockingController::reverse_to_staging(const DockingInput& in, DockingComman
       fail(phase_ == DockPhase::kUndock ? DockFailure::kUndockBlocked : DockFailure::kBlocked);
   } else {
     stuck_time_s_ = 0;
-    note_clear(in.dt_s);
+    guard_.note_clear(in.dt_s);
   }
   return false;
 }
 
-void DockingController::note_blocked() {
-  if (!was_blocked_ && clear_time_s_ >= 1.0) {
-    ++stops_;
-    events_.stopped = true;
-  }
-  was_blocked_ = true;
-  clear_time_s_ = 0;
-}
-
-void DockingController::note_clear(double dt_s) {
-  was_blocked_ = false;
-  clear_time_s_ += dt_s;
-}
-
 DockingCommand DockingController::travel(const DockingInput& in) {
   DockingCommand out;
-  TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
-  // Slower when unsure where it is: the same arc, at a share of the speed.
-  const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
-  t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};
-  out.cross_track_error_m = t.cross_track_error_m;
-  out.twist = t.twist;
-  // Stop short of anything moving into the arc ahead; ask for a replan if it stays.
-  const double v = std::max(std::fabs(t.twist.v_mps), std::fabs(in.speed_mps));
-  // Never beyond the corner where it will stop and turn in place: a straight arc past it
-  // would clip what the path itself turns away from.
-  const double braking = v * v / (2.0 * params_.max_decel_mps2);
-  const double ahead =
-      std::min(braking + params_.check_extra_m, std::max(braking, t.straight_ahead_m) + 0.05);
-  // Slow (starting or slowing) robots take longer to get there: never assume less than
-  // a walking pace's worth of time for the obstacles to move.
-  const double travel_speed =
-      std::max(0.5 * (std::fabs(in.speed_mps) + std::fabs(t.twist.v_mps)), 0.1);
-  if (!arc_clear(in.pose, t.twist, travel_speed, ahead,
-                 params_.footprint_radius_m + params_.safety_margin_m, in.nearby_obstacles)) {
-    hold_blocked(in, t, out);
-    return out;
-  }
-  blocked_time_s_ = 0;
-  was_blocked_ = false;
-  clear_time_s_ += in.dt_s;
-  if (std::fabs(t.twist.omega_radps) < 0.05)
-    straight_run_m_ += t.twist.v_mps * in.dt_s;
-  else
-    straight_run_m_ = 0;
-  if (t.goal_reached) {
+  const FollowStep f = follower_.step(in, guard_, params_.yield);
+  out.twist = f.twist;
+  out.cross_track_error_m = f.cross_track_error_m;
+  out.blocked = f.blocked;
+  out.replan_requested = f.replan_requested;
+  if (f.goal_reached) {
     // At the staging pose the map's charger is placed in the odometry frame, once.
-    dock_odom_ = geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_);
+    dock_.place(geom::compose(geom::compose(in.odom_pose, geom::inverse(in.pose)), dock_map_));
     phase_ = DockPhase::kAlign;
-    dock_placed_ = true;
     out.twist = {};
   }
   return out;
 }
 
-void DockingController::hold_blocked(const DockingInput& in, const TrackingCommand& t,
-                                     DockingCommand& out) {
-  // One stop per encounter: a tracked obstacle's estimated velocity wobbles, and the arc
-  // check with it; a go of less than a second between two blocks is the same stop.
-  note_blocked();
-  out.twist = {};
-  out.blocked = true;
-  // Stopped in something's way (it does not yield): back out along the stretch just driven.
-  const bool threatened = position_threatened(
-      in.pose.position(), params_.footprint_radius_m + 0.5 * params_.safety_margin_m,
-      in.nearby_obstacles, params_.yield_horizon_s);
-  const Twist back{-params_.yield_speed_mps, 0.0};
-  if (straight_run_m_ > 0.05 && threatened && guard(in, back, false)) {
-    // ... only while what it senses leaves that stretch clear (a person may be behind too).
-    out.twist = back;
-    straight_run_m_ -= params_.yield_speed_mps * in.dt_s;
-  } else if (!threatened && std::fabs(t.carrot_bearing_rad) > params_.align_tolerance_rad) {
-    // Nothing coming: face the carrot in place (a disk turns without sweeping anything),
-    // so that the next arc is straight, not one that bulges into what blocked the curve.
-    out.twist = {0.0, std::clamp(2.0 * t.carrot_bearing_rad, -params_.align_speed_radps,
-                                 params_.align_speed_radps)};
-  }
-  blocked_time_s_ += in.dt_s;
-  if (blocked_time_s_ >= params_.replan_after_s) {
-    out.replan_requested = true;
-    blocked_time_s_ = 0;
-  }
-}
-
 DockingCommand DockingController::align(const DockingInput& in) {
   DockingCommand out;
   if (yield(in, out)) return out;  // someone walking at the robot while it turns: out of the way
-  const double err = geom::wrap_angle(dock_odom_.yaw - in.odom_pose.yaw);
+  const double err = geom::wrap_angle(dock_.pose().yaw - in.odom_pose.yaw);
   if (std::fabs(err) <= params_.align_tolerance_rad) {
-    if (bystander_waited_s_ < params_.bystander_wait_s && bystander_near_approach(in)) {
+    if (bystander_waited_s_ < params_.yield.bystander_wait_s &&
+        bystander_near_corridor(params_.yield, in.pose.position(), dock_in_map(in).position(),
+                                charger_in_map(in), guard_.radius_m(), in.nearby_obstacles)) {
       bystander_waited_s_ += in.dt_s;
-      note_blocked();
+      guard_.note_blocked();
       out.blocked = true;
       return out;
     }
@@ -412,7 +299,7 @@ DockingCommand DockingController::approach(const DockingInput& in) {
   // Pure pursuit onto the approach axis; the carrot may lie beyond the dock point (inside
   // the charger), which keeps the steering gentle right up to contact.
   const Vec2 carrot_dock{rel.x + params_.approach_lookahead_m, 0.0};
-  const Vec2 carrot = dock_odom_.position() + geom::rotate(carrot_dock, dock_odom_.yaw);
+  const Vec2 carrot = dock_.pose().position() + geom::rotate(carrot_dock, dock_.pose().yaw);
   const Vec2 c = to_robot_frame(in.odom_pose, carrot);
   const double d2 = geom::dot(c, c);
   const double curvature = 2.0 * c.y / d2;
@@ -424,7 +311,7 @@ DockingCommand DockingController::approach(const DockingInput& in) {
     out.twist = {};
     out.blocked = true;
   } else {
-    note_clear(in.dt_s);
+    guard_.note_clear(in.dt_s);
   }
   return out;
 }

@@ -54,7 +54,7 @@ std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Pl
   robot::TravelSettings settings{config.tracking, config.docking, config.field,
                                  config.pursuit_replan_period_s, config.lost_search};
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
-  settings.docking.footprint_radius_m = map.robot.radius_m;
+  settings.docking.guard.footprint_radius_m = map.robot.radius_m;
   settings.map_planner = &planner;  // replans add what is sensed on top of its graph
   const std::vector<Vec2> first_path = plan.status != planner::PlanStatus::kOk
                                            ? std::vector<Vec2>{map.start.position(), plan_goal(map)}

@@ -15,7 +15,7 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
                                                    const geom::Pose2& from, geom::Vec2 to,
                                                    const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner) {
-  const double extra = std::max(0.0, docking.safety_margin_m - map.inflation_margin_m) + 0.05;
+  const double extra = std::max(0.0, docking.guard.safety_margin_m - map.inflation_margin_m) + 0.05;
   std::vector<geom::Rect> added;
   added.reserve(seen.size());
   for (const auto& b : seen) added.push_back(b.box.inflated(extra + map.planning_inflation_m()));

@@ -13,7 +13,7 @@ class PathTravel : public Travel {
         planner_(std::move(planner_name)),
         s_(s),
         control_(s.tracking, s.docking, std::move(path), map.charger),
-        search_(s.lost_search, s.docking.footprint_radius_m),
+        search_(s.lost_search, s.docking.guard.footprint_radius_m),
         staging_(worlds::staging_pose(map).position()) {}
 
   Decision decide(const Perception& p) override {

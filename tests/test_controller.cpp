@@ -207,7 +207,7 @@ TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
 // larger than a person, or the charger's own block, does not hold it.
 TEST(Docking, APersonStandingBesideTheApproachIsWaitedForAtTheStagingPose) {
   DockingParams p;
-  p.bystander_wait_s = 2.0;
+  p.yield.bystander_wait_s = 2.0;
   DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);
   DockingInput in = at({1, 0, 0});
@@ -283,6 +283,70 @@ TEST(Docking, UndockReversesToTheStagingPoseGuarded) {
   EXPECT_EQ(c.twist.v_mps, 0.0);
   EXPECT_TRUE(c.blocked);
   EXPECT_EQ(at_pose({1.0, 0, 0}, false, false).phase, DockPhase::kUndocked);
+}
+
+}  // namespace
+}  // namespace plantsim::controller
+
+// The docking stack's collaborators on their own (controller/docking.h's split along Nav2's
+// lines): each is specified here without the phases around it.
+namespace plantsim::controller {
+namespace {
+
+TEST(DockPoseFilter, NothingBeforeItIsPlacedAnOutlierAloneIsIgnoredTwoAgreeingMoveIt) {
+  DockPoseFilter f({0.5, 0.1}, 1.0, Pose2{2, 0, 0});
+  f.update(Pose2{2, 0.05, 0});  // not placed yet: the map's pose stands
+  EXPECT_EQ(f.pose().y, 0.0);
+  f.place(Pose2{2, 0, 0});
+  f.update(Pose2{2, 0.04, 0});  // within the gate: blended by half
+  EXPECT_NEAR(f.pose().y, 0.02, 1e-12);
+  f.update(Pose2{2, 0.5, 0});  // 0.48 m off, alone: held back
+  EXPECT_NEAR(f.pose().y, 0.02, 1e-12);
+  f.update(Pose2{2, 0.02, 0});  // back near the estimate: the outlier forgotten
+  f.update(Pose2{2, 0.5, 0});   // off again, alone again
+  EXPECT_NEAR(f.pose().y, 0.02, 1e-12);
+  f.update(Pose2{2, 0.52, 0});  // and confirmed by the next: the estimate moves
+  EXPECT_NEAR(f.pose().y, 0.27, 1e-12);
+  // A yaw gate of gate / staging distance: 0.2 rad off is an outlier at 0.1 m over 1 m.
+  f.update(Pose2{2, 0.27, 0.2});
+  EXPECT_NEAR(f.pose().yaw, 0.0, 1e-12);
+  f.forget();  // shoved: the next placement starts afresh, the held-back one gone
+  f.update(Pose2{2, 0.27, 0.2});
+  EXPECT_NEAR(f.pose().yaw, 0.0, 1e-12);
+}
+
+TEST(MotionGuard, ABoxAheadBlocksOneStopPerEncounterBrakingSizesTheCheck) {
+  MotionGuard g(MotionGuardParams{});
+  const Pose2 at{0, 0, 0};
+  const std::vector<MovingBox> ahead = {{{0.9, -0.3, 1.1, 0.3}, {0, 0}}};
+  // At 0.3 m/s: 0.045 m braking + 0.4 m checked, plus 0.35 m of disk: the box at 0.9 m is clear.
+  EXPECT_TRUE(g.clear(at, 0.3, {0.3, 0}, ahead));
+  // At 1 m/s: 0.5 m braking reaches it.
+  EXPECT_FALSE(g.clear(at, 1.0, {1.0, 0}, ahead));
+  EXPECT_EQ(g.stops(), 1);
+  g.note_clear(0.5);
+  EXPECT_FALSE(g.clear(at, 1.0, {1.0, 0}, ahead));  // half a second of go: the same stop
+  EXPECT_EQ(g.stops(), 1);
+  g.note_clear(1.0);
+  EXPECT_FALSE(g.clear(at, 1.0, {1.0, 0}, ahead));  // a second of go: a new one
+  EXPECT_EQ(g.stops(), 2);
+  EXPECT_TRUE(g.clear(at, 1.0, {-0.5, 0}, ahead));  // backing away from it is allowed
+}
+
+TEST(YieldPolicy, OnlyWhatMovesThreatensAndOnlyPersonSizedBystandersHold) {
+  const YieldParams p;
+  const std::vector<MovingBox> walker = {{{2.0, -0.2, 2.4, 0.2}, {-1.0, 0}}};  // 1 m/s at it
+  const std::vector<MovingBox> standing = {{{0.6, -0.2, 1.0, 0.2}, {0, 0}}};
+  EXPECT_TRUE(threatened_by_movers(p, {0, 0}, 0.3, walker));
+  EXPECT_FALSE(threatened_by_movers(p, {0, 0}, 0.3, standing));                // near, yet standing
+  EXPECT_TRUE(threatened(p, {0, 0}, 0.3, {{{0.2, -0.2, 0.5, 0.2}, {0, 0}}}));  // already there
+  // Beside the corridor from (0, 0) to (3, 0), 1 m off: within 0.35 + 1.5 m.
+  const std::vector<MovingBox> person = {{{1.3, 1.0, 1.7, 1.4}, {0, 0}}};
+  EXPECT_TRUE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, person));
+  const std::vector<MovingBox> fixture = {{{1.0, 1.0, 2.5, 1.4}, {0, 0}}};  // 1.5 m: not a person
+  EXPECT_FALSE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, fixture));
+  const std::vector<MovingBox> charger = {{{3.2, -0.2, 3.4, 0.2}, {0, 0}}};
+  EXPECT_FALSE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, charger));
 }
 
 }  // namespace
