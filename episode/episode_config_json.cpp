@@ -8,8 +8,6 @@
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
-#include <set>
-#include <sstream>
 
 #include "controller/controller_param_rows.h"
 #include "robot/robot_param_rows.h"
@@ -18,6 +16,7 @@
 #include "util/param_table.h"
 #include "worlds/json_input.h"
 #include "worlds/known_keys.h"
+#include "worlds/param_json.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::episode {
@@ -101,90 +100,15 @@ const std::vector<Field>& bool_fields() {
   return rows;
 }
 
-std::string path_of(const char* section, const std::string& name) {
-  return std::string(section).empty() ? name : std::string(section) + "." + name;
+void read_tables(worlds::ParamDocument& doc, EpisodeConfig& c) {
+  doc.read(fields(), c);
+  doc.read(int_fields(), c);
+  doc.read(bool_fields(), c);
 }
 
-}  // namespace
-
-namespace {
-
-/// The document's values looked up by section and name, each lookup remembered: what was never
-/// looked up is an unknown parameter.
-class ConfigLookup {
- public:
-  ConfigLookup(const json& doc, const std::string& source) : doc_(doc), source_(source) {}
-  const json* operator()(const char* section, const char* name) {
-    known_.insert(path_of(section, name));
-    const json* obj = &doc_;
-    if (std::string(section).size()) {
-      auto it = doc_.find(section);
-      if (it == doc_.end()) return nullptr;
-      if (!it->is_object()) throw worlds::WorldError(source_, section, "expected an object");
-      obj = &*it;
-    }
-    auto it = obj->find(name);
-    return it == obj->end() ? nullptr : &*it;
-  }
-  /// Refuses a key no lookup asked for.
-  void refuse_unknown() const {
-    for (const auto& [key, value] : doc_.items()) {
-      if (value.is_object()) {
-        for (const auto& [sub, _] : value.items())
-          if (!known_.count(key + "." + sub))
-            throw worlds::WorldError(source_, key + "." + sub, "unknown parameter");
-      } else if (!known_.count(key) && key != "comment") {
-        throw worlds::WorldError(source_, key, "unknown parameter");
-      }
-    }
-  }
-
- private:
-  const json& doc_;
-  const std::string& source_;
-  std::set<std::string> known_;
-};
-
-void read_tables(ConfigLookup& lookup, const std::string& source, EpisodeConfig& c) {
-  for (const Field& f : fields()) {
-    const json* v = lookup(f.section, f.name);
-    if (!v) continue;
-    if (!v->is_number())
-      throw worlds::WorldError(source, path_of(f.section, f.name), "expected a number");
-    const double d = v->get<double>();
-    if (!std::isfinite(d))
-      throw worlds::WorldError(source, path_of(f.section, f.name), "must be finite");
-    if (d < f.lo || d > f.hi || (f.above && d <= f.lo)) {
-      std::ostringstream range;
-      range << "must be " << (f.above ? "above " : "at least ") << f.lo << " and at most " << f.hi;
-      throw worlds::WorldError(source, path_of(f.section, f.name), range.str());
-    }
-    f.set(c, d);
-  }
-  for (const Field& f : int_fields()) {
-    const json* v = lookup(f.section, f.name);
-    if (!v) continue;
-    if (!v->is_number_integer() ||
-        (v->is_number_unsigned() && v->get<std::uint64_t>() > 1000000000ULL) ||
-        v->get<std::int64_t>() < static_cast<std::int64_t>(f.lo) ||
-        v->get<std::int64_t>() > static_cast<std::int64_t>(f.hi))
-      throw worlds::WorldError(source, path_of(f.section, f.name),
-                               "expected a whole number from " +
-                                   std::to_string(static_cast<int>(f.lo)) + " to " +
-                                   std::to_string(static_cast<int>(f.hi)));
-    f.set(c, v->get<int>());
-  }
-  for (const Field& f : bool_fields()) {
-    const json* v = lookup(f.section, f.name);
-    if (!v) continue;
-    if (!v->is_boolean())
-      throw worlds::WorldError(source, path_of(f.section, f.name), "expected true or false");
-    f.set(c, v->get<bool>() ? 1.0 : 0.0);
-  }
-}
-
-void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& c) {
-  if (const json* v = lookup("perception", "mode")) {
+void read_modes(worlds::ParamDocument& doc, EpisodeConfig& c) {
+  const std::string& source = doc.source();
+  if (const json* v = doc.find("perception", "mode")) {
     const std::string m = v->is_string() ? v->get<std::string>() : "";
     if (m == "sensors")
       c.perception.mode = PerceptionMode::kSensors;
@@ -193,7 +117,7 @@ void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& 
     else
       throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
   }
-  if (const json* v = lookup("localization", "estimator")) {
+  if (const json* v = doc.find("localization", "estimator")) {
     const std::string e = v->is_string() ? v->get<std::string>() : "";
     if (e == "ekf")
       c.perception.estimator = robot::EstimatorKind::kEkf;
@@ -203,7 +127,7 @@ void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& 
       throw worlds::WorldError(source, "localization.estimator",
                                "expected \"ekf\" or \"particles\"");
   }
-  if (const json* v = lookup("", "travel")) {
+  if (const json* v = doc.find("", "travel")) {
     const std::string t = v->is_string() ? v->get<std::string>() : "";
     if (t == "path")
       c.travel = TravelMode::kPath;
@@ -212,7 +136,7 @@ void read_modes(ConfigLookup& lookup, const std::string& source, EpisodeConfig& 
     else
       throw worlds::WorldError(source, "travel", "expected \"path\" or \"potential-field\"");
   }
-  if (const json* v = lookup("", "seed")) {
+  if (const json* v = doc.find("", "seed")) {
     if (!v->is_number_unsigned())
       throw worlds::WorldError(source, "seed", "expected a whole number");
     c.seed = v->get<std::uint64_t>();
@@ -255,12 +179,11 @@ void check_consistency(const std::string& source, const EpisodeConfig& c) {
 
 EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
                                    EpisodeConfig c) {
-  const json doc = worlds::parse_json_input(text, source);
-  if (!doc.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
-  ConfigLookup lookup(doc, source);
-  read_tables(lookup, source, c);
-  read_modes(lookup, source, c);
-  lookup.refuse_unknown();
+  const json parsed = worlds::parse_json_input(text, source);
+  worlds::ParamDocument doc(parsed, source);
+  read_tables(doc, c);
+  read_modes(doc, c);
+  doc.refuse_unknown();
   check_consistency(source, c);
   return c;
 }
@@ -300,14 +223,9 @@ std::string default_config_json() { return config_json(EpisodeConfig{}); }
 
 std::string config_json(const EpisodeConfig& c) {
   nlohmann::ordered_json j;
-  for (const Field& f : fields()) {
-    if (std::string(f.section).empty())
-      j[f.name] = f.get(c);
-    else
-      j[f.section][f.name] = f.get(c);
-  }
-  for (const Field& f : int_fields()) j[f.section][f.name] = static_cast<int>(f.get(c));
-  for (const Field& f : bool_fields()) j[f.section][f.name] = f.get(c) != 0;
+  worlds::write_param_rows(j, fields(), c);
+  worlds::write_param_rows(j, int_fields(), c);
+  worlds::write_param_rows(j, bool_fields(), c);
   j["perception"]["mode"] = std::string(to_string(c.perception.mode));
   j["localization"]["estimator"] = std::string(to_string(c.perception.estimator));
   j["travel"] = std::string(to_string(c.travel));

@@ -234,7 +234,7 @@ TEST_F(Cli, HostileInputIsRefusedWithExit2QuicklyAndWritesNothing) {
          return "coverage " + test::source_file("data/worlds/plants/depot_pit_coverage.json") +
                 " --params p.json";
        },
-       "field 'chnn.alpah': unknown key"},
+       "field 'chnn.alpah': unknown parameter, did you mean 'chnn.alpha'?"},
       {"coverage search of 1e9 s",
        [](Cli& c) {
          c.write("p.json", R"({"exact": {"time_limit_s": 1e9}})");

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "test_paths.h"
+#include "worlds/param_json.h"
 #include "worlds/random_plant.h"
 #include "worlds/world_loader.h"
 
@@ -224,6 +225,88 @@ TEST(RandomPlant, PlacementKeepsEveryGapAndTheSeedsPlant) {
       h = (h ^ bits) * 1099511628211ULL;
     }
   EXPECT_EQ(h, 0xbc732d453e628304ULL) << std::hex << h;
+}
+
+}  // namespace
+}  // namespace plantsim::worlds
+
+// The one reader of parameter tables (worlds/param_json.h), on a table of its own: what the
+// episode's configuration and seed 004's coverage parameters both rely on.
+namespace plantsim::worlds {
+namespace {
+
+struct Knobs {
+  double gain = 1.0;
+  int count = 3;
+  bool on = false;
+  struct {
+    double limit_m = 0.5;
+  } part;
+};
+
+const util::ParamRows<Knobs>& knob_rows() {
+  static const util::ParamRows<Knobs> rows = {
+      PLANTSIM_PARAM("", gain, "gain", 0.0, 10.0),
+      PLANTSIM_PARAM("loop", count, "count", 1, 100),
+      PLANTSIM_PARAM("loop", on, "on", 0, 1),
+      PLANTSIM_PARAM_ABOVE("loop", part.limit_m, "limit_m", 0.0, 2.0),
+  };
+  return rows;
+}
+
+/// The message of reading `text`, or "" when it is read; `out` gets the values.
+std::string read_knobs(const std::string& text, Knobs* out = nullptr) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    ParamDocument doc(j, "knobs.json");
+    Knobs k;
+    doc.read(knob_rows(), k);
+    doc.refuse_unknown();
+    if (out) *out = k;
+    return "";
+  } catch (const WorldError& e) {
+    return e.what();
+  }
+}
+
+TEST(ParamDocument, ReadsEachKindAndRefusesWhatNoRowKnowsWithTheNearestKnownKey) {
+  Knobs k;
+  EXPECT_EQ(read_knobs(R"({"gain": 2.5, "loop": {"count": 7, "on": true, "limit_m": 2}})", &k), "");
+  EXPECT_EQ(k.gain, 2.5);
+  EXPECT_EQ(k.count, 7);
+  EXPECT_TRUE(k.on);
+  EXPECT_EQ(k.part.limit_m, 2.0);
+  EXPECT_EQ(read_knobs(R"({"loop": {"count": 1e1}, "comment": "ten"})", &k), "");  // 1e1 is 10
+  EXPECT_EQ(k.count, 10);
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"loop": {"cuont": 2}})",
+       "field 'loop.cuont': unknown parameter, did you mean 'loop.count'?"},
+      {R"({"gainn": 2})", "field 'gainn': unknown parameter, did you mean 'gain'?"},
+      {R"({"elsewhere": {}})", "field 'elsewhere': unknown parameter"},  // empty, still unknown
+      {R"({"loop": 3})", "field 'loop': expected an object"},
+      {R"({"gain": 11})", "field 'gain': must be at least 0 and at most 10"},
+      {R"({"gain": "2"})", "field 'gain': expected a number"},
+      {R"({"loop": {"limit_m": 0}})", "field 'loop.limit_m': must be above 0 and at most 2"},
+      {R"({"loop": {"count": 2.5}})", "field 'loop.count': expected a whole number from 1 to 100"},
+      {R"({"loop": {"count": 18446744073709551615}})",
+       "field 'loop.count': expected a whole number from 1 to 100"},
+      {R"({"loop": {"on": 1}})", "field 'loop.on': expected true or false"},
+      {R"([1, 2])", "knobs.json: expected a JSON object"},
+  };
+  for (const auto& [text, message] : bad)
+    EXPECT_NE(read_knobs(text).find(message), std::string::npos)
+        << text << " gave: " << read_knobs(text);
+}
+
+TEST(ParamDocument, WritesEachKindAsTheReaderReadsIt) {
+  nlohmann::ordered_json j;
+  Knobs k;
+  k.count = 4;
+  write_param_rows(j, knob_rows(), k);
+  EXPECT_EQ(j.dump(), R"({"gain":1.0,"loop":{"count":4,"on":false,"limit_m":0.5}})");
+  Knobs back;
+  EXPECT_EQ(read_knobs(j.dump(), &back), "");
+  EXPECT_EQ(back.count, 4);
 }
 
 }  // namespace

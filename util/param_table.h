@@ -2,7 +2,8 @@
 // coverage parameters): each entry names its JSON section and key, the member it reads and
 // writes, and the closed range of valid values (open at the low end with PLANTSIM_PARAM_ABOVE).
 // Whether a parameter is a real number, a whole number or a flag follows from the member's type.
-// Readers and writers walk the table, so a parameter is declared once for both. Each module
+// One reader and writer walks the table (worlds/param_json.h), so a parameter is declared once
+// for both. Each module
 // declares the rows of its own parameter structs (sim/sim_param_rows.h, robot/robot_param_rows.h,
 // controller/controller_param_rows.h); a table of a larger struct takes them over with
 // rows_of_part, so no row is written twice.

@@ -1,16 +1,14 @@
-// The table of coverage parameters.
+// The table of coverage parameters, read and written by the shared reader (worlds/param_json.h).
 #include "planner/coverage/coverage_params_json.h"
 
-#include <algorithm>
 #include <cmath>
-#include <functional>
 #include <nlohmann/json.hpp>
 #include <vector>
 
 #include "util/input_file.h"
 #include "util/param_table.h"
 #include "worlds/json_input.h"
-#include "worlds/known_keys.h"
+#include "worlds/param_json.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::planner {
@@ -56,48 +54,10 @@ const std::vector<Field>& fields() {
 
 CoverageParams parse_coverage_params(const std::string& text, const std::string& source) {
   const nlohmann::json j = worlds::parse_json_input(text, source);  // syntax, repeated keys
-  if (!j.is_object()) throw worlds::WorldError(source, "", "expected a JSON object");
+  worlds::ParamDocument doc(j, source);
   CoverageParams p;
-  std::vector<std::string> top{"comment"}, sections;
-  for (const Field& f : fields()) {
-    if (std::string(f.section).empty())
-      top.push_back(f.name);
-    else if (std::find(top.begin(), top.end(), f.section) == top.end())
-      top.push_back(f.section), sections.push_back(f.section);
-  }
-  for (const auto& [key, value] : j.items()) {
-    if (std::find(top.begin(), top.end(), key) == top.end())
-      throw worlds::WorldError(source, key, worlds::unknown_key_problem(key, top));
-    if (std::find(sections.begin(), sections.end(), key) == sections.end()) continue;
-    if (!value.is_object()) throw worlds::WorldError(source, key, "expected an object");
-    std::vector<std::string> known;
-    for (const Field& f : fields())
-      if (key == f.section) known.push_back(f.name);
-    for (const auto& [name, v] : value.items())
-      if (std::find(known.begin(), known.end(), name) == known.end())
-        throw worlds::WorldError(source, key + "." + name,
-                                 worlds::unknown_key_problem(name, known));
-  }
-  for (const Field& f : fields()) {
-    const std::string section = f.section;
-    const nlohmann::json* v = nullptr;
-    if (section.empty()) {
-      if (j.contains(f.name)) v = &j[f.name];
-    } else if (j.contains(section) && j[section].contains(f.name)) {
-      v = &j[section][f.name];
-    }
-    if (!v) continue;
-    const std::string field = section.empty() ? f.name : section + "." + f.name;
-    if (!v->is_number()) throw worlds::WorldError(source, field, "expected a number");
-    const double x = v->get<double>();
-    if (!std::isfinite(x) || x < f.lo || x > f.hi)
-      throw worlds::WorldError(
-          source, field,
-          "must be between " + nlohmann::json(f.lo).dump() + " and " + nlohmann::json(f.hi).dump());
-    if (f.kind == util::ParamKind::kWhole && x != std::floor(x))
-      throw worlds::WorldError(source, field, "expected a whole number");
-    f.set(p, x);
-  }
+  doc.read(fields(), p);
+  doc.refuse_unknown();
   if (std::abs(p.weights.cells + p.weights.turns - 1.0) > 1e-9)
     throw worlds::WorldError(source, "w1_cells",
                              "w1_cells + w2_turns must be 1 (the document's weights sum to 1)");
@@ -116,16 +76,7 @@ CoverageParams load_coverage_params(const std::string& path) {
 
 std::string coverage_params_json(const CoverageParams& p) {
   nlohmann::ordered_json j;
-  for (const Field& f : fields()) {
-    const double v = f.get(p);
-    nlohmann::ordered_json value = f.kind == util::ParamKind::kWhole
-                                       ? nlohmann::ordered_json(static_cast<long long>(v))
-                                       : nlohmann::ordered_json(v);
-    if (std::string(f.section).empty())
-      j[f.name] = value;
-    else
-      j[f.section][f.name] = value;
-  }
+  worlds::write_param_rows(j, fields(), p);
   return j.dump(2) + "\n";
 }
 
