@@ -12,6 +12,7 @@
 #include "controller/controller_param_rows.h"
 #include "robot/robot_param_rows.h"
 #include "sim/sim_param_rows.h"
+#include "util/choice_table.h"
 #include "util/input_file.h"
 #include "util/param_table.h"
 #include "worlds/json_input.h"
@@ -106,39 +107,22 @@ void read_tables(worlds::ParamDocument& doc, EpisodeConfig& c) {
   doc.read(bool_fields(), c);
 }
 
-void read_modes(worlds::ParamDocument& doc, EpisodeConfig& c) {
-  const std::string& source = doc.source();
-  if (const json* v = doc.find("perception", "mode")) {
-    const std::string m = v->is_string() ? v->get<std::string>() : "";
-    if (m == "sensors")
-      c.perception.mode = PerceptionMode::kSensors;
-    else if (m == "oracle")
-      c.perception.mode = PerceptionMode::kOracle;
-    else
-      throw worlds::WorldError(source, "perception.mode", "expected \"sensors\" or \"oracle\"");
-  }
-  if (const json* v = doc.find("localization", "estimator")) {
-    const std::string e = v->is_string() ? v->get<std::string>() : "";
-    if (e == "ekf")
-      c.perception.estimator = robot::EstimatorKind::kEkf;
-    else if (e == "particles")
-      c.perception.estimator = robot::EstimatorKind::kParticles;
-    else
-      throw worlds::WorldError(source, "localization.estimator",
-                               "expected \"ekf\" or \"particles\"");
-  }
-  if (const json* v = doc.find("", "travel")) {
-    const std::string t = v->is_string() ? v->get<std::string>() : "";
-    if (t == "path")
-      c.travel = TravelMode::kPath;
-    else if (t == "potential-field")
-      c.travel = TravelMode::kPotentialField;
-    else
-      throw worlds::WorldError(source, "travel", "expected \"path\" or \"potential-field\"");
-  }
+/// The choices: the perception's (robot/robot_param_rows.h) and how the robot travels.
+const util::ChoiceRows<EpisodeConfig>& choices() {
+  static const util::ChoiceRows<EpisodeConfig> rows = [] {
+    util::ChoiceRows<EpisodeConfig> t;
+    util::append_choices_of_part(t, robot::perception_choice_rows(), PLANTSIM_PART(perception));
+    t.push_back(PLANTSIM_CHOICE("", travel, "travel", TravelMode, {"path", TravelMode::kPath},
+                                {"potential-field", TravelMode::kPotentialField}));
+    return t;
+  }();
+  return rows;
+}
+
+void read_seed(worlds::ParamDocument& doc, EpisodeConfig& c) {
   if (const json* v = doc.find("", "seed")) {
     if (!v->is_number_unsigned())
-      throw worlds::WorldError(source, "seed", "expected a whole number");
+      throw worlds::WorldError(doc.source(), "seed", "expected a whole number");
     c.seed = v->get<std::uint64_t>();
   }
 }
@@ -182,7 +166,8 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
   const json parsed = worlds::parse_json_input(text, source);
   worlds::ParamDocument doc(parsed, source);
   read_tables(doc, c);
-  read_modes(doc, c);
+  doc.read(choices(), c);
+  read_seed(doc, c);
   doc.refuse_unknown();
   check_consistency(source, c);
   return c;
@@ -226,9 +211,7 @@ std::string config_json(const EpisodeConfig& c) {
   worlds::write_param_rows(j, fields(), c);
   worlds::write_param_rows(j, int_fields(), c);
   worlds::write_param_rows(j, bool_fields(), c);
-  j["perception"]["mode"] = std::string(to_string(c.perception.mode));
-  j["localization"]["estimator"] = std::string(to_string(c.perception.estimator));
-  j["travel"] = std::string(to_string(c.travel));
+  worlds::write_param_rows(j, choices(), c);
   j["seed"] = c.seed;
   return j.dump(2) + "\n";
 }

@@ -146,4 +146,14 @@ const util::ParamRows<PerceptionParams>& perception_param_rows() {
   return rows;
 }
 
+const util::ChoiceRows<PerceptionParams>& perception_choice_rows() {
+  static const util::ChoiceRows<PerceptionParams> rows = {
+      PLANTSIM_CHOICE("perception", mode, "mode", PerceptionMode,
+                      {"sensors", PerceptionMode::kSensors}, {"oracle", PerceptionMode::kOracle}),
+      PLANTSIM_CHOICE("localization", estimator, "estimator", EstimatorKind,
+                      {"ekf", EstimatorKind::kEkf}, {"particles", EstimatorKind::kParticles}),
+  };
+  return rows;
+}
+
 }  // namespace plantsim::robot

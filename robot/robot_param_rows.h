@@ -10,6 +10,7 @@
 #include "robot/obstacle_tracker.h"
 #include "robot/particle_localizer.h"
 #include "robot/perception.h"
+#include "util/choice_table.h"
 #include "util/param_table.h"
 
 namespace plantsim::robot {
@@ -22,5 +23,7 @@ const util::ParamRows<LostSearchParams>& lost_search_param_rows();  ///< "lost_s
 /// "perception": perception's own thresholds and its global match's (not its parts with
 /// sections of their own, above).
 const util::ParamRows<PerceptionParams>& perception_param_rows();
+/// perception.mode and localization.estimator.
+const util::ChoiceRows<PerceptionParams>& perception_choice_rows();
 
 }  // namespace plantsim::robot

@@ -235,7 +235,10 @@ TEST(RandomPlant, PlacementKeepsEveryGapAndTheSeedsPlant) {
 namespace plantsim::worlds {
 namespace {
 
+enum class Shape { kRound, kSquare, kStar };
+
 struct Knobs {
+  Shape shape = Shape::kRound;
   double gain = 1.0;
   int count = 3;
   bool on = false;
@@ -254,6 +257,14 @@ const util::ParamRows<Knobs>& knob_rows() {
   return rows;
 }
 
+const util::ChoiceRows<Knobs>& knob_choices() {
+  static const util::ChoiceRows<Knobs> rows = {
+      PLANTSIM_CHOICE("loop", shape, "shape", Shape, {"round", Shape::kRound},
+                      {"square", Shape::kSquare}, {"star", Shape::kStar}),
+  };
+  return rows;
+}
+
 /// The message of reading `text`, or "" when it is read; `out` gets the values.
 std::string read_knobs(const std::string& text, Knobs* out = nullptr) {
   try {
@@ -261,6 +272,7 @@ std::string read_knobs(const std::string& text, Knobs* out = nullptr) {
     ParamDocument doc(j, "knobs.json");
     Knobs k;
     doc.read(knob_rows(), k);
+    doc.read(knob_choices(), k);
     doc.refuse_unknown();
     if (out) *out = k;
     return "";
@@ -276,6 +288,8 @@ TEST(ParamDocument, ReadsEachKindAndRefusesWhatNoRowKnowsWithTheNearestKnownKey)
   EXPECT_EQ(k.count, 7);
   EXPECT_TRUE(k.on);
   EXPECT_EQ(k.part.limit_m, 2.0);
+  EXPECT_EQ(read_knobs(R"({"loop": {"shape": "star"}})", &k), "");
+  EXPECT_EQ(k.shape, Shape::kStar);
   EXPECT_EQ(read_knobs(R"({"loop": {"count": 1e1}, "comment": "ten"})", &k), "");  // 1e1 is 10
   EXPECT_EQ(k.count, 10);
   const std::pair<const char*, const char*> bad[] = {
@@ -291,6 +305,9 @@ TEST(ParamDocument, ReadsEachKindAndRefusesWhatNoRowKnowsWithTheNearestKnownKey)
       {R"({"loop": {"count": 18446744073709551615}})",
        "field 'loop.count': expected a whole number from 1 to 100"},
       {R"({"loop": {"on": 1}})", "field 'loop.on': expected true or false"},
+      {R"({"loop": {"shape": "Star"}})",
+       R"(field 'loop.shape': expected "round", "square" or "star")"},
+      {R"({"loop": {"shape": 2}})", R"(field 'loop.shape': expected "round", "square" or "star")"},
       {R"([1, 2])", "knobs.json: expected a JSON object"},
   };
   for (const auto& [text, message] : bad)
@@ -302,11 +319,15 @@ TEST(ParamDocument, WritesEachKindAsTheReaderReadsIt) {
   nlohmann::ordered_json j;
   Knobs k;
   k.count = 4;
+  k.shape = Shape::kSquare;
   write_param_rows(j, knob_rows(), k);
-  EXPECT_EQ(j.dump(), R"({"gain":1.0,"loop":{"count":4,"on":false,"limit_m":0.5}})");
+  write_param_rows(j, knob_choices(), k);
+  EXPECT_EQ(j.dump(),
+            R"({"gain":1.0,"loop":{"count":4,"on":false,"limit_m":0.5,"shape":"square"}})");
   Knobs back;
   EXPECT_EQ(read_knobs(j.dump(), &back), "");
   EXPECT_EQ(back.count, 4);
+  EXPECT_EQ(back.shape, Shape::kSquare);
 }
 
 }  // namespace

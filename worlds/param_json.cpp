@@ -58,6 +58,10 @@ double ParamDocument::checked(const nlohmann::json& v, const std::string& path,
   return d;
 }
 
+void ParamDocument::refuse_choice(const std::string& path, const std::string& options) const {
+  throw WorldError(source_, path, "expected " + options);
+}
+
 void ParamDocument::refuse_unknown() const {
   const std::vector<std::string> known(known_.begin(), known_.end());
   auto refuse = [&](const std::string& key) {

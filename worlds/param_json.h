@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "util/choice_table.h"
 #include "util/param_table.h"
 
 namespace plantsim::worlds {
@@ -31,6 +32,13 @@ class ParamDocument {
         r.set(out, checked(*v, r.path(), r.kind, r.lo, r.hi, r.above));
   }
 
+  /// Every choice the document holds, checked against its options and set in `out`.
+  template <typename P>
+  void read(const util::ChoiceRows<P>& rows, P& out) {
+    for (const util::Choice<P>& r : rows)
+      if (const nlohmann::json* v = find(r.section, r.name)) r.set(out, chosen(*v, r));
+  }
+
   /// Refuses the first key no lookup asked for (a top-level "comment" is a note, not a key).
   void refuse_unknown() const;
 
@@ -39,6 +47,15 @@ class ParamDocument {
  private:
   double checked(const nlohmann::json& v, const std::string& path, util::ParamKind kind, double lo,
                  double hi, bool above) const;
+
+  template <typename P>
+  int chosen(const nlohmann::json& v, const util::Choice<P>& r) const {
+    if (v.is_string())
+      for (const auto& [text, value] : r.options)
+        if (v.get<std::string>() == text) return value;
+    refuse_choice(r.path(), r.spelt());
+  }
+  [[noreturn]] void refuse_choice(const std::string& path, const std::string& options) const;
 
   const nlohmann::json& doc_;
   std::string source_;
@@ -59,6 +76,21 @@ void write_param_rows(nlohmann::ordered_json& out, const util::ParamRows<P>& row
       out[r.section][r.name] = value;
     else
       out[r.name] = value;
+  }
+}
+
+/// The choices' options as the file spells them.
+template <typename P>
+void write_param_rows(nlohmann::ordered_json& out, const util::ChoiceRows<P>& rows, const P& p) {
+  for (const util::Choice<P>& r : rows) {
+    const int chosen = r.get(p);
+    for (const auto& [text, value] : r.options) {
+      if (value != chosen) continue;
+      if (r.section[0])
+        out[r.section][r.name] = text;
+      else
+        out[r.name] = text;
+    }
   }
 }
 
