@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sim/kidnap_landing.h"
+#include "sim/target_catch.h"
 
 namespace plantsim::episode {
 
@@ -157,14 +158,23 @@ class EpisodeRun::Loop {
     t_s_ = t_s;
     const robot::SensorReadings readings = sensors_.read(physics_, t_s);  // sense
     perception_ = &perceiver_.update(readings);                           // estimate
-    if (recorder_.perceived(t_s, physics_, readings, *perception_, perceiver_)) return true;
+    recorder_.perceived(t_s, physics_, *perception_, readings);
+    if (sim::target_caught(physics_, plant_.robot.radius_m, config_.catch_distance_m)) {
+      recorder_.caught(t_s, physics_, *perception_);
+      return true;
+    }
+    recorder_.snapshot(t_s, *perception_, perceiver_);
     decision_ = travel_->decide(*perception_);  // decide
     return false;
   }
 
   /// Record the decision, actuate; true when the decision ended the episode.
   bool finish_control(double period_s) {
-    if (recorder_.decided(t_s_, physics_, *perception_, decision_)) return true;
+    recorder_.decided(t_s_, physics_, *perception_, decision_);
+    if (decision_.finished != robot::TravelEnd::kNone) {
+      recorder_.finished(physics_, decision_);
+      return true;
+    }
     const controller::Twist twist =
         governor_.limit(decision_.twist, perception_->slipping, period_s);  // actuate
     drive_.command(controller::to_wheels(twist, plant_.robot.wheel_base_m), period_s);

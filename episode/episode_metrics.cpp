@@ -7,13 +7,9 @@
 
 namespace plantsim::episode {
 
-using robot::ActorState;
-
-EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result,
-                               double catch_distance_m, double dt_s)
+EpisodeMetrics::EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double dt_s)
     : plant_(plant),
       r_(result),
-      catch_distance_m_(catch_distance_m),
       dt_s_(dt_s),
       previous_(plant.start.position()),
       unmapped_seen_(plant.unmapped.size(), 0) {}
@@ -80,13 +76,6 @@ void EpisodeMetrics::compare_obstacles(const std::vector<controller::MovingBox>&
         break;
       }
   }
-}
-
-bool EpisodeMetrics::target_caught(const PhysicsWorld& physics) const {
-  const std::optional<ActorState> target = physics.target();
-  return target && controller::distance_to_box(physics.robot_position(), target->box) -
-                           plant_.robot.radius_m <=
-                       catch_distance_m_;
 }
 
 void EpisodeMetrics::measure_final_error(const PhysicsWorld& physics) {

@@ -1,5 +1,5 @@
 // The episode's metrics, measured from the simulator's truth as the loop steps it (collisions and
-// whose doing, pose error at contact, driven length, localisation error, a caught target); the
+// whose doing, pose error at contact, driven length, localisation error); the
 // referee's verdicts are sim/failure_watch.h and sim/integrity_watch.h. Nothing here feeds back
 // into sensing or control.
 #pragma once
@@ -17,8 +17,7 @@ using sim::PhysicsWorld;
 
 class EpisodeMetrics {
  public:
-  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double catch_distance_m,
-                 double dt_s);
+  EpisodeMetrics(const worlds::World& plant, EpisodeResult& result, double dt_s);
   /// Every physics step, before it, with the contacts the last step left: collisions.
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   /// Every physics step, after it: driven length.
@@ -29,8 +28,6 @@ class EpisodeMetrics {
   void compare_estimate(const PhysicsWorld& physics, const Pose2& estimate);
   /// At each control step: which unmapped obstacles perception's obstacles cover (sensed).
   void compare_obstacles(const std::vector<controller::MovingBox>& perceived);
-  /// True when the moving target is within catch distance of the robot.
-  bool target_caught(const PhysicsWorld& physics) const;
   /// At each control step, the charger's signal: the pose error when charging starts.
   void charging(const PhysicsWorld& physics, bool on);
   /// The pose error now (for episodes ending without charging).
@@ -39,7 +36,6 @@ class EpisodeMetrics {
  private:
   const worlds::World& plant_;
   EpisodeResult& r_;
-  double catch_distance_m_;
   bool was_touching_obstacle_ = false;
   bool charging_measured_ = false;
   double dt_s_;

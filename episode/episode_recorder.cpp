@@ -15,9 +15,7 @@ using robot::Perception;
 
 EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig& config,
                                  EpisodeResult& result)
-    : config_(config),
-      r_(result),
-      metrics_(plant, result, config.catch_distance_m, config.step.dt_s) {
+    : config_(config), r_(result), metrics_(plant, result, config.step.dt_s) {
   r_.status = EpisodeStatus::kTimeout;  // until something ends the episode sooner
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s));
   const std::int64_t max_samples = max_steps / std::max(1, config.control_period_steps) + 1;
@@ -27,10 +25,7 @@ EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig
 
 bool EpisodeRecorder::first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start) {
   r_.plan_stats = plan.stats;
-  r_.explored = plan.explored;
-  r_.explored_label = plan.explored_label;
-  r_.tried = plan.tried;
-  r_.marks = plan.marks;
+  r_.plan_trace = plan.trace;
   r_.plan_note = plan.note;
   if (plan.status != planner::PlanStatus::kOk) {
     if (needed) {
@@ -57,33 +52,33 @@ void EpisodeRecorder::before_step(const PhysicsWorld& physics, const ContactStat
 
 void EpisodeRecorder::after_step(const PhysicsWorld& physics) { metrics_.after_step(physics); }
 
-bool EpisodeRecorder::perceived(double t_s, const PhysicsWorld& physics,
-                                const robot::SensorReadings& readings, const Perception& p,
-                                const robot::Perceiver& perceiver) {
+void EpisodeRecorder::perceived(double t_s, const PhysicsWorld& physics, const Perception& p,
+                                const robot::SensorReadings& readings) {
   metrics_.compare_estimate(physics, p.pose);
   metrics_.compare_obstacles(p.obstacles);
   metrics_.charging(physics, readings.charging);
   worst_health_ = std::max(worst_health_, p.health);  // ok < degraded < lost
   r_.time_s = t_s;
-  if (metrics_.target_caught(physics)) {
-    r_.caught = true;
-    r_.status = EpisodeStatus::kCaught;
-    sample(t_s, physics, p, nullptr);
-    return true;
-  }
-  if (config_.scan_log_period_s > 0 && t_s >= next_snapshot_s_) {
-    next_snapshot_s_ = t_s + config_.scan_log_period_s * r_.thinning.snapshots_every;
-    r_.perception_log.push_back(
-        {t_s, perceiver.last_scan(), perceiver.tracker().boxes(t_s), p.layer});
-    if (r_.perception_log.size() >= std::max<std::size_t>(2, config_.log_limits.snapshots)) {
-      keep_every_other(r_.perception_log);
-      r_.thinning.snapshots_every *= 2;
-    }
-  }
-  return false;
 }
 
-bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Perception& p,
+void EpisodeRecorder::caught(double t_s, const PhysicsWorld& physics, const Perception& p) {
+  r_.caught = true;
+  r_.status = EpisodeStatus::kCaught;
+  sample(t_s, physics, p, nullptr);
+}
+
+void EpisodeRecorder::snapshot(double t_s, const Perception& p, const robot::Perceiver& perceiver) {
+  if (config_.scan_log_period_s <= 0 || t_s < next_snapshot_s_) return;
+  next_snapshot_s_ = t_s + config_.scan_log_period_s * r_.thinning.snapshots_every;
+  r_.perception_log.push_back(
+      {t_s, perceiver.last_scan(), perceiver.tracker().boxes(t_s), p.layer});
+  if (r_.perception_log.size() >= std::max<std::size_t>(2, config_.log_limits.snapshots)) {
+    keep_every_other(r_.perception_log);
+    r_.thinning.snapshots_every *= 2;
+  }
+}
+
+void EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Perception& p,
                               const Decision& d) {
   const Pose2 truth = physics.robot_pose();
   watch_.observe(t_s, truth, p.pose, p.health, d.blocked);
@@ -96,7 +91,9 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
   track_moving_obstacles(t_s, physics);
   r_.max_cross_track_m = std::max(r_.max_cross_track_m, d.cross_track_m);
   sample(t_s, physics, p, &d);
-  if (d.finished == robot::TravelEnd::kNone) return false;
+}
+
+void EpisodeRecorder::finished(const PhysicsWorld& physics, const Decision& d) {
   // Success is the charger's signal with no collision on the way (and, undocking, the staging
   // pose reached again), on estimates the robot could trust: one that drove on an estimate
   // 0.25 m off without knowing docked by luck (the charger's marker), not by design.
@@ -110,7 +107,6 @@ bool EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
                                     : EpisodeStatus::kDockedOffEstimate;
   if (!charged) metrics_.measure_final_error(physics);
   give_up_ = d.give_up;
-  return true;
 }
 
 void EpisodeRecorder::sample(double t_s, const PhysicsWorld& physics, const Perception& p,

@@ -1,7 +1,8 @@
 // The episode's record: everything an episode writes into its result besides driving the robot,
 // the trajectory log, the events, the perception snapshots, the moving obstacles' tracks, the
 // referee's metrics (episode_metrics.h) and its verdict on a failure (failure_watch.h). The loop
-// (run_episode.cpp) hands it what each stage produced; nothing here feeds back into the robot.
+// (episode_loop.cpp) hands it what each stage produced and decides when the episode ends (the
+// travel's decision, or the referee's catch rule); nothing here feeds back into the robot.
 #pragma once
 
 #include <cstdint>
@@ -41,14 +42,19 @@ class EpisodeRecorder {
   /// A fault carried the robot from `from` and set it down at `to` (a kidnap).
   void carried(double t_s, const Pose2& from, const Pose2& to) { metrics_.carried(t_s, from, to); }
 
-  /// Every control step, once perception has spoken: its errors against the truth, its health,
-  /// a snapshot of what it saw. True when the episode ends here: the moving target is caught.
-  bool perceived(double t_s, const PhysicsWorld& physics, const robot::SensorReadings& readings,
-                 const robot::Perception& p, const robot::Perceiver& perceiver);
-  /// The travel's decision: the trajectory sample, the events the travel reported, and the end
-  /// when the decision ends the travel (true then).
-  bool decided(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
+  /// Every control step, once perception has spoken: its errors against the truth, its health.
+  void perceived(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
+                 const robot::SensorReadings& readings);
+  /// The moving target caught (the loop ends the episode here): the status and a last sample.
+  void caught(double t_s, const PhysicsWorld& physics, const robot::Perception& p);
+  /// A snapshot of what perception saw, at the log's spacing.
+  void snapshot(double t_s, const robot::Perception& p, const robot::Perceiver& perceiver);
+  /// The travel's decision: the trajectory sample and the events the travel reported.
+  void decided(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
                const robot::Decision& d);
+  /// The decision ended the travel (the loop ends the episode here): the status and the
+  /// referee's view of how it ended.
+  void finished(const PhysicsWorld& physics, const robot::Decision& d);
   /// At the end: the counts, the robot's last view, and the referee's verdict on a failure.
   void close(const PhysicsWorld& physics, const robot::Travel& travel,
              const controller::TractionGovernor& governor, const robot::Perceiver& perceiver,

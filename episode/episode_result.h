@@ -108,14 +108,10 @@ std::string status_name(const EpisodeOutcome& outcome);
 
 /// The log: what figures, replays and animations draw.
 struct EpisodeLog {
-  std::vector<Vec2> plan;        ///< the plan at the end (the last replan's, or the first)
-  std::vector<Vec2> first_plan;  ///< the plan the robot set off on (path_length_m is its length)
-  std::vector<Vec2> explored;    ///< the planner's exploration walk, if it made one (seed 003, 002)
-  std::string explored_label = "explored";  ///< what the planner calls it ("raw walk")
-  std::vector<std::vector<Vec2>>
-      tried;  ///< walks it tried before its answer (seed 003's ring search)
-  std::vector<planner::PlanMark> marks;  ///< its labels for figures (seed 003's junction letters)
-  std::string plan_note;                 ///< what the planner said about its plan
+  std::vector<Vec2> plan;         ///< the plan at the end (the last replan's, or the first)
+  std::vector<Vec2> first_plan;   ///< the plan the robot set off on (path_length_m is its length)
+  planner::PlanTrace plan_trace;  ///< what the planner did on its way (seed 003's walks, 002's)
+  std::string plan_note;          ///< what the planner said about its plan
   std::vector<TrajectorySample> trajectory;
   std::vector<geom::Rect> moving_final;  ///< where the moving obstacles were at the end
   /// Where each moving obstacle was over time (every 0.25 s, as the physics moved it).

@@ -42,6 +42,16 @@ struct PlanMark {
   Kind kind = Kind::kExplorationLetters;
 };
 
+/// What a method did on its way to the answer, for figures only (nothing drives on it).
+struct PlanTrace {
+  std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's
+                               ///< exploration, seed 002's raw walk)
+  std::string explored_label = "explored";  ///< what figures call it
+  std::vector<std::vector<Vec2>>
+      tried;                    ///< walks it tried and dropped or kept (seed 003's ring search)
+  std::vector<PlanMark> marks;  ///< labels for figures (seed 003's junction letters)
+};
+
 struct PlanResult {
   PlanStatus status = PlanStatus::kNoPath;
   std::vector<Vec2> path;  ///< start .. goal, empty unless status is kOk
@@ -53,12 +63,7 @@ struct PlanResult {
   bool start_snapped = false;  ///< the path starts at the nearest free point, not at the start
   bool goal_snapped = false;   ///< the path ends at the nearest free point, not at the goal
   std::string note;            ///< why a baseline failed (trapped, oscillating...) or what it met
-  std::vector<Vec2> explored;  ///< a walk the method made before its answer (seed 003's
-                               ///< exploration, seed 002's raw walk)
-  std::string explored_label = "explored";  ///< what figures call it
-  std::vector<std::vector<Vec2>>
-      tried;                    ///< walks it tried and dropped or kept (seed 003's ring search)
-  std::vector<PlanMark> marks;  ///< labels for figures (seed 003's junction letters)
+  PlanTrace trace;             ///< for figures
 };
 
 /// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.

@@ -75,7 +75,8 @@ bool draw_panel_layers(Figure& fig, const PixelTransform& t, const worlds::World
          p.run.travel == "path" ? "plan" : "plan (reference)");
   draw_start(c, world);
   draw_charger(c, world);
-  for (const LegendEntry& e : draw_plan_marks(fig, t, p.run.marks)) listed(true, e.colour, e.label);
+  for (const LegendEntry& e : draw_plan_marks(fig, t, p.run.plan_trace.marks))
+    listed(true, e.colour, e.label);
   return drove_any;
 }
 

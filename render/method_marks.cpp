@@ -29,11 +29,12 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
 
 std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeResult& run) {
   std::vector<LegendEntry> legend;
-  if (!run.explored.empty()) {
-    c.polyline(run.explored, 5.0, palette::kExplored);
-    legend.push_back({palette::kExplored, run.explored_label});
+  const planner::PlanTrace& trace = run.plan_trace;
+  if (!trace.explored.empty()) {
+    c.polyline(trace.explored, 5.0, palette::kExplored);
+    legend.push_back({palette::kExplored, trace.explored_label});
   }
-  if (draw_tried_walks(c, run.tried)) legend.push_back({palette::kTried, "ring search walks"});
+  if (draw_tried_walks(c, trace.tried)) legend.push_back({palette::kTried, "ring search walks"});
   return legend;
 }
 

@@ -256,7 +256,7 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
   draw_charger(c, world);
   listed(true, palette::kCharger, "charger");
   listed(draw_mapped_charger(c, world), palette::kCharger, "mapped charger", Swatch::kOutline);
-  for (const LegendEntry& e : draw_plan_marks(fig, t, run.marks)) legend.push_back(e);
+  for (const LegendEntry& e : draw_plan_marks(fig, t, run.plan_trace.marks)) legend.push_back(e);
   if (!world.moving.empty()) draw_time_ticks(fig, run, t);
   return legend;
 }

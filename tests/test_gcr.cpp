@@ -155,7 +155,7 @@ TEST(Gcr, Fig4GoalsInEveryDirectionGiveMirroredWalks) {
     EXPECT_TRUE(v.first_rotation_axes.front() == (Vec2{0, my}));
     const auto r = m.plan(mirror({-45, -45}), mirror({45, 45}));
     EXPECT_EQ(r.status, PlanStatus::kOk);
-    EXPECT_FALSE(r.explored.empty());  // the raw walk comes along for the figure
+    EXPECT_FALSE(r.trace.explored.empty());  // the raw walk comes along for the figure
   }
 }
 
@@ -186,9 +186,9 @@ TEST(Gcr, TheShortcutPassIsAnOptionAndOnlyShortens) {
   ASSERT_EQ(b.status, PlanStatus::kOk) << b.note;
   EXPECT_LT(b.length, a.length - 0.1);  // measured: the variant's path is shorter on this plant
   EXPECT_GT(a.length,
-            polyline_length(a.explored) + 1.0);  // as written: 112 m against a walk of 80 m
+            polyline_length(a.trace.explored) + 1.0);  // as written: 112 m against a walk of 80 m
   EXPECT_NE(a.note.find("longer than the walk, as written"), std::string::npos) << a.note;
-  EXPECT_LE(b.length, polyline_length(b.explored) + 1e-9);
+  EXPECT_LE(b.length, polyline_length(b.trace.explored) + 1e-9);
   EXPECT_NE(b.note.find("plantsim's"), std::string::npos) << b.note;
 }
 

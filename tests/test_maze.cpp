@@ -107,7 +107,7 @@ TEST(MazePlanner, PlansInsideTheCorridorsAndTheRobotDocks) {
     const PlanResult r = p->plan(w.start.position(), worlds::staging_pose(w).position());
     ASSERT_EQ(r.status, PlanStatus::kOk) << r.note;
     EXPECT_TRUE(stays_in_corridors(r.path, w.obstacles)) << name;
-    EXPECT_FALSE(r.explored.empty());
+    EXPECT_FALSE(r.trace.explored.empty());
     EXPECT_NE(r.note.find("ring search"), std::string::npos) << r.note;
     const episode::EpisodeResult e = episode::run_episode(w, *p, episode::EpisodeConfig{});
     EXPECT_TRUE(e.docked) << name << ": " << episode::status_name(e);
@@ -180,9 +180,9 @@ TEST(MazePlanner, FiguresGetTheSearchWalksAndEveryRecordedLetter) {
   for (const char* name : {"maze-left", "maze-right-resimplified"}) {
     const PlanResult r = plan_ring(w, name);
     ASSERT_EQ(r.status, PlanStatus::kOk) << r.note;
-    EXPECT_FALSE(r.tried.empty()) << name;
+    EXPECT_FALSE(r.trace.tried.empty()) << name;
     std::string explored_letters, tries;
-    for (const PlanMark& m : r.marks) {
+    for (const PlanMark& m : r.trace.marks) {
       if (m.kind == PlanMark::Kind::kExplorationLetters)
         for (char c : m.text)
           if (c != ' ') explored_letters += c;

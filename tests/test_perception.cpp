@@ -487,7 +487,7 @@ TEST(CollisionBlame, SomethingWalkingIntoAStandingRobotIsNotTheRobotsDoing) {
   w.moving = {person};
   PhysicsWorld physics(w);
   EpisodeResult result;
-  EpisodeMetrics metrics(w, result, 0.1, 1.0 / 60);
+  EpisodeMetrics metrics(w, result, 1.0 / 60);
   for (int k = 0; k < 600; ++k) {
     metrics.before_step(physics, physics.contacts());
     physics.set_robot_velocity({0, 0}, 0);
@@ -500,7 +500,7 @@ TEST(CollisionBlame, SomethingWalkingIntoAStandingRobotIsNotTheRobotsDoing) {
   const worlds::World empty_room = room();
   PhysicsWorld again(empty_room);
   EpisodeResult driven;
-  EpisodeMetrics blame(empty_room, driven, 0.1, 1.0 / 60);
+  EpisodeMetrics blame(empty_room, driven, 1.0 / 60);
   for (int k = 0; k < 600; ++k) {
     blame.before_step(again, again.contacts());
     again.set_robot_velocity({0.5, 0}, 0);  // into the box at x = 4

@@ -189,8 +189,8 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
     out.status = PlanStatus::kGoalBlocked;
   } else {
     const Walk raw = walk(start, goal);
-    out.explored = raw.points;  // the raw walk, drawn beside the optimised path
-    out.explored_label = "raw walk";
+    out.trace.explored = raw.points;  // the raw walk, drawn beside the optimised path
+    out.trace.explored_label = "raw walk";
     out.stats.expanded = static_cast<std::int64_t>(raw.points.size());
     out.stats.edges = raw.rotations;
     if (!raw.reached) {

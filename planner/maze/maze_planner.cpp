@@ -51,7 +51,7 @@ void add_tries(const TunnelMaze& maze, const MazeSolution& s, Vec2 start, Vec2 g
   std::map<std::pair<std::pair<int, int>, WalkEnd>, std::vector<std::size_t>> ended_at;
   for (std::size_t k = 0; k < s.attempts.size(); ++k) {
     const MazeWalk& w = s.attempts[k];
-    r.tried.push_back(lattice_path(maze, w.nodes, start, goal, false));
+    r.trace.tried.push_back(lattice_path(maze, w.nodes, start, goal, false));
     ended_at[{{w.nodes.back().column, w.nodes.back().row}, w.end}].push_back(k + 1);
   }
   for (const auto& [where, tries] : ended_at) {
@@ -63,7 +63,7 @@ void add_tries(const TunnelMaze& maze, const MazeSolution& s, Vec2 start, Vec2 g
             : end == WalkEnd::kBackAtEntrance ? ": back"
             : end == WalkEnd::kBlocked        ? ": closed"
                                               : ": step limit";
-    r.marks.push_back(
+    r.trace.marks.push_back(
         {maze.position({where.first.first, where.first.second}), text, PlanMark::Kind::kTriedEnd});
   }
 }
@@ -120,10 +120,10 @@ PlanResult MazePlanner::plan(Vec2 start, Vec2 goal) {
   }
   const MazeSolution s = solve_maze(*maze_, *entrance, Heading::kEast, *exit, hand_, third_string_);
   const std::vector<LatticeNode> best = shortest_route(*maze_, *entrance, *exit);
-  r.explored = lattice_path(*maze_, s.exploration.nodes, start, goal, false);
+  r.trace.explored = lattice_path(*maze_, s.exploration.nodes, start, goal, false);
   add_tries(*maze_, s, start, goal, r);
-  label_junctions(*maze_, s.exploration, PlanMark::Kind::kExplorationLetters, r.marks);
-  if (s.solved()) label_junctions(*maze_, s.route, PlanMark::Kind::kRouteLetters, r.marks);
+  label_junctions(*maze_, s.exploration, PlanMark::Kind::kExplorationLetters, r.trace.marks);
+  if (s.solved()) label_junctions(*maze_, s.route, PlanMark::Kind::kRouteLetters, r.trace.marks);
   r.note = note(s, best.empty() ? -1.0 : maze_->pitch_m() * (best.size() - 1.0));
   if (s.solved()) {
     r.status = PlanStatus::kOk;
