@@ -19,7 +19,7 @@
 
 namespace plantsim::app {
 
-util::MadeBy run_made_by(const episode::EpisodeResult& r, const episode::EpisodeConfig& config) {
+util::MadeBy run_made_by(const episode::EpisodeOutcome& r, const episode::EpisodeConfig& config) {
   util::MadeBy m;
   m.duration_s = r.wall_s;
   m.input = "config";
@@ -67,7 +67,7 @@ std::vector<std::string> metric_headers() {
           "max cross-track (mm)"};
 }
 
-std::vector<std::string> metric_row(const episode::EpisodeResult& r, const std::string& world_name,
+std::vector<std::string> metric_row(const episode::EpisodeOutcome& r, const std::string& world_name,
                                     bool drove) {
   using util::fixed;
   const std::string plan_ms = fixed(r.plan_stats.build_ms + r.plan_stats.query_ms, 2),
@@ -102,7 +102,7 @@ std::vector<std::string> metric_row(const episode::EpisodeResult& r, const std::
           fixed(1000 * r.max_cross_track_m, 0)};
 }
 
-std::string trajectory_csv(const episode::EpisodeResult& r) {
+std::string trajectory_csv(const episode::EpisodeLog& r) {
   std::string out =
       "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,"
       "wall_following,target_x_m,target_y_m,est_status\n";

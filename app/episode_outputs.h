@@ -16,14 +16,14 @@ namespace plantsim::app {
 std::string summary_json(const episode::EpisodeResult& r, const std::string& world_name,
                          const std::string& command_line, const util::MadeBy* made_by = nullptr);
 /// The stamp of a run: now, the episode's wall time, the hash of its whole config.
-util::MadeBy run_made_by(const episode::EpisodeResult& r, const episode::EpisodeConfig& config);
-std::string trajectory_csv(const episode::EpisodeResult& r);
+util::MadeBy run_made_by(const episode::EpisodeOutcome& r, const episode::EpisodeConfig& config);
+std::string trajectory_csv(const episode::EpisodeLog& r);
 
 /// The metrics table of reports: headers, and one row per episode.
 std::vector<std::string> metric_headers();
 /// The run's row under metric_headers(); `drove` false (a plan alone): "-" for what only driving
 /// measures.
-std::vector<std::string> metric_row(const episode::EpisodeResult& r, const std::string& world_name,
+std::vector<std::string> metric_row(const episode::EpisodeOutcome& r, const std::string& world_name,
                                     bool drove = true);
 
 /// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run

@@ -27,7 +27,7 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
 
 }  // namespace
 
-std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeResult& run) {
+std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeLog& run) {
   std::vector<LegendEntry> legend;
   const planner::PlanTrace& trace = run.plan_trace;
   if (!trace.explored.empty()) {

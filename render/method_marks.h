@@ -15,7 +15,7 @@ namespace plantsim::render {
 
 /// The walks a method made before its answer: the exploration or raw walk as a pale band, the
 /// search walks dashed; the legend entries of what it drew.
-std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeResult& run);
+std::vector<LegendEntry> draw_walks_before_answer(GlCanvas& c, const episode::EpisodeLog& run);
 /// The labels as text over the panel of transform t; returns the legend entries of what it placed.
 std::vector<LegendEntry> draw_plan_marks(Figure& fig, const PixelTransform& t,
                                          const std::vector<planner::PlanMark>& marks);

@@ -49,7 +49,7 @@ std::string length_line(const episode::EpisodeResult& run) {
   return line + buf;
 }
 
-std::string method_label(const episode::EpisodeResult& run) {
+std::string method_label(const episode::EpisodeOutcome& run) {
   if (run.travel == "path") return "planner " + run.planner;
   return run.travel + " (reference plan: " + run.planner + ")";
 }

@@ -28,7 +28,7 @@ struct RunFigureOptions {
 };
 
 /// "planner vg", or "potential-field (reference plan: vg)".
-std::string method_label(const episode::EpisodeResult& run);
+std::string method_label(const episode::EpisodeOutcome& run);
 
 /// Draws the run; `transform` receives the world-to-pixel mapping of the map panel.
 Image draw_run_figure(const worlds::World& world, const episode::EpisodeResult& run,
