@@ -14,7 +14,9 @@ NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect are
   cell_ = std::max(cell_m, std::sqrt(w * h / static_cast<double>(std::max(1L, max_cells))));
   nx_ = std::max(1L, static_cast<long>(std::ceil(w / cell_)));
   ny_ = std::max(1L, static_cast<long>(std::ceil(h / cell_)));
-  cells_.assign(static_cast<std::size_t>(nx_ * ny_), Answer::kNo);
+  inverse_cell_ = 1.0 / cell_;
+  static_assert(static_cast<int>(Answer::kNo) == 0);
+  cells_.assign((static_cast<std::size_t>(nx_ * ny_) + 3) / 4, 0);
   for (const Rect& b : boxes) {
     const Rect grown{b.xmin - margin_m, b.ymin - margin_m, b.xmax + margin_m, b.ymax + margin_m};
     // Cells the grown box touches, and one more on each side: a point on a cell's edge, or a
@@ -29,25 +31,17 @@ NearRaster::NearRaster(const std::vector<Rect>& boxes, double margin_m, Rect are
         std::min(ny_ - 1, static_cast<long>(std::floor((grown.ymax - area_.ymin) / cell_)) + 1);
     for (long j = j0; j <= j1; ++j)
       for (long i = i0; i <= i1; ++i) {
-        Answer& a = cells_[static_cast<std::size_t>(j * nx_ + i)];
-        if (a == Answer::kYes) continue;
+        const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
+        if (get(c) == Answer::kYes) continue;
         // Wholly inside, with a cell's rounding to spare on each side.
         const double x0 = area_.xmin + static_cast<double>(i) * cell_,
                      y0 = area_.ymin + static_cast<double>(j) * cell_;
         const double slack = 1e-9 * (1.0 + std::fabs(x0) + std::fabs(y0) + cell_);
         const bool inside = grown.xmin <= x0 - slack && x0 + cell_ + slack <= grown.xmax &&
                             grown.ymin <= y0 - slack && y0 + cell_ + slack <= grown.ymax;
-        a = inside ? Answer::kYes : Answer::kDepends;
+        set(c, inside ? Answer::kYes : Answer::kDepends);
       }
   }
-}
-
-NearRaster::Answer NearRaster::at(Vec2 p) const {
-  const double fx = (p.x - area_.xmin) / cell_, fy = (p.y - area_.ymin) / cell_;
-  if (!(fx >= 0 && fy >= 0 && fx < static_cast<double>(nx_) && fy < static_cast<double>(ny_)))
-    return Answer::kDepends;
-  const long i = static_cast<long>(fx), j = static_cast<long>(fy);
-  return cells_[static_cast<std::size_t>(j * nx_ + i)];
 }
 
 }  // namespace plantsim::geom

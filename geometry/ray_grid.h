@@ -81,8 +81,9 @@ class RayGrid {
   /// A fan of rays from one origin: ray k along unit `directions[k]`, whose angle lies within
   /// 1e-6 rad of `first_angle + k * increment`. hits[k] is what cast() finds for it (the same
   /// range; where two faces tie exactly either may be named). One pass over the boxes within
-  /// reach, each tried only on the rays its angular extent covers: a lidar scan without a walk
-  /// per beam.
+  /// reach, nearest cells first, each tried only on the rays its angular extent covers; the few
+  /// rays still open once most boxes are settled walk on alone from what the fan found, past
+  /// the boxes it tried: a lidar scan without a walk per beam.
   void cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment,
                 double max_range_m, std::vector<std::optional<RayGridHit>>& hits) const;
   /// True when some box comes within `margin_m` per axis of `p` (its bounding box, for oriented
@@ -100,6 +101,11 @@ class RayGrid {
   /// inside.
   bool enter(int i, Vec2 origin, Vec2 direction, double& t, Vec2& normal) const;
 
+  /// The cells the ray crosses, near to far, each box in them tested once (stamped `query`)
+  /// unless stamped `done_query` (nonzero: tested before on this ray's direction), until no
+  /// later cell can hold a hit nearer than `best`, which it updates.
+  void walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_t query,
+            std::uint32_t done_query, std::optional<RayGridHit>& best) const;
   /// The cells [i0, i1] x [j0, j1] that `q` overlaps, clamped to the grid.
   void cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const;
   /// A fresh stamp for a query that must visit each box once.

@@ -19,7 +19,7 @@ void MapRaycaster::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directi
 }
 
 const geom::NearRaster& MapRaycaster::raster_for(double margin_m) const {
-  if (!near_.empty() && near_.front()->margin_m() == margin_m) return *near_.front();  // per beam
+  if (!near_.empty() && near_.front()->margin_m() == margin_m) return *near_.front();  // per scan
   for (std::size_t i = 0; i < near_.size(); ++i)
     if (near_[i]->margin_m() == margin_m) {
       std::rotate(near_.begin(), near_.begin() + static_cast<std::ptrdiff_t>(i),
@@ -33,20 +33,6 @@ const geom::NearRaster& MapRaycaster::raster_for(double margin_m) const {
                std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area,
                                                   std::max(0.05, 0.5 * margin_m)));
   return *near_.front();
-}
-
-bool MapRaycaster::surface_near(geom::Vec2 point, double margin_m) const {
-  // Per axis: the rectangles themselves, the charger's oriented block by its bounding box. A
-  // raster made once per margin answers most points; the grid settles the cells it cannot.
-  switch (raster_for(margin_m).at(point)) {
-    case geom::NearRaster::Answer::kYes:
-      return true;
-    case geom::NearRaster::Answer::kNo:
-      return false;
-    case geom::NearRaster::Answer::kDepends:
-      break;
-  }
-  return surfaces_.grid().near(point, margin_m);
 }
 
 }  // namespace plantsim::robot

@@ -31,8 +31,35 @@ class MapRaycaster {
   void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle,
                 double increment, double max_range_m,
                 std::vector<std::optional<RayHit>>& hits) const;
-  /// True when some mapped surface lies within `margin_m` (per axis) of `point`.
-  bool surface_near(geom::Vec2 point, double margin_m) const;
+  /// "Does some mapped surface lie within the margin (per axis) of this point?" for one margin,
+  /// asked of many points (a scan's returns): a raster made once per margin answers most of
+  /// them, the grid settles the cells it cannot.
+  class SurfaceNear {
+   public:
+    bool operator()(geom::Vec2 point) const {
+      switch (raster_.at(point)) {
+        case geom::NearRaster::Answer::kYes:
+          return true;
+        case geom::NearRaster::Answer::kNo:
+          return false;
+        case geom::NearRaster::Answer::kDepends:
+          break;
+      }
+      return grid_.near(point, raster_.margin_m());
+    }
+
+   private:
+    friend class MapRaycaster;
+    SurfaceNear(const geom::NearRaster& raster, const geom::RayGrid& grid)
+        : raster_(raster), grid_(grid) {}
+    const geom::NearRaster& raster_;
+    const geom::RayGrid& grid_;
+  };
+  /// Per axis: the rectangles themselves, the charger's oriented block by its bounding box.
+  /// Valid until surface_near is asked for other margins (a raster may then be dropped).
+  SurfaceNear surface_near(double margin_m) const {
+    return {raster_for(margin_m), surfaces_.grid()};
+  }
 
  private:
   worlds::SurfaceGrid surfaces_;

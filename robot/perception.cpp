@@ -90,6 +90,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   const double explained_margin =
       std::max(p_.tracker.unexplained_margin_m,
                0.01 * std::ceil(100.0 * p_.explained_sigmas * estimator_->range_sigma_m()));
+  const MapRaycaster::SurfaceNear surface_near = raycaster_.surface_near(explained_margin);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.valid(i)) continue;
     const double r = scan.ranges[i];
@@ -99,7 +100,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
     // of the map's surface, or one that passes a mapped surface and meets something beyond it,
     // is a thing the map does not have, and is tracked. (No ray cast needed: the nearness test
     // is a broad-phase box query.)
-    const bool explained = raycaster_.surface_near(point, explained_margin);
+    const bool explained = surface_near(point);
     (explained ? scan_view_.explained : scan_view_.unexplained).push_back(point);
     if (!explained && r <= p_.tracker.range_m) unexplained.push_back(point);
     if (explained && r <= p_.field_range_m) near_static.push_back(point);
@@ -122,9 +123,10 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   static_field_.clear();
   for (const auto& cluster : cluster_in_order(near_static, p_.field_cluster_gap_m)) {
     const geom::Vec2* nearest = &cluster[0];
+    double nearest_m = geom::distance(*nearest, now_.pose.position());
     for (const geom::Vec2& q : cluster)
-      if (geom::distance(q, now_.pose.position()) < geom::distance(*nearest, now_.pose.position()))
-        nearest = &q;
+      if (const double d = geom::distance(q, now_.pose.position()); d < nearest_m)
+        nearest = &q, nearest_m = d;
     static_field_.push_back({{nearest->x, nearest->y, nearest->x, nearest->y}, {0, 0}});
   }
 }

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "geometry/bounded_atan2.h"
 #include "geometry/predicates.h"
 
 namespace plantsim::geom {
@@ -94,3 +95,23 @@ TEST(WrapAngle, StaysInHalfOpenRange) {
 
 }  // namespace
 }  // namespace plantsim::geom
+
+TEST(BoundedAtan2, WithinItsBoundOfLibmEverywhere) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI), scale(-6, 3);
+  double worst = 0;
+  auto check = [&](double y, double x) {
+    double diff = std::fabs(plantsim::geom::bounded_atan2(y, x) - std::atan2(y, x));
+    diff = std::min(diff, std::fabs(diff - 2 * M_PI));  // either end of the cut
+    worst = std::max(worst, diff);
+    ASSERT_LE(diff, plantsim::geom::kBoundedAtan2ErrorRad) << y << " " << x;
+  };
+  for (int k = 0; k < 200000; ++k) {
+    const double a = angle(rng), r = std::pow(10.0, scale(rng));
+    check(r * std::sin(a), r * std::cos(a));
+  }
+  // The axes, the diagonals, the reduction's seam at tan(pi/12) and the cut.
+  for (double y : {0.0, -0.0, 1.0, -1.0, 0.26794919243112270, -1e-300})
+    for (double x : {0.0, -0.0, 1.0, -1.0, 1e-300}) check(y, x);
+  EXPECT_GT(worst, 0.0);  // an approximation, not libm itself
+}

@@ -157,6 +157,9 @@ TEST(RayGrid, FanEqualsSingleCastsExactly) {
           ++hits;
           EXPECT_EQ(single->range_m, got->range_m)
               << "plant " << plant << " fan " << fan << " ray " << k;
+          // The same face: no two random boxes share one.
+          EXPECT_TRUE(single->normal.x == got->normal.x && single->normal.y == got->normal.y)
+              << "plant " << plant << " fan " << fan << " ray " << k;
         }
       }
     }
