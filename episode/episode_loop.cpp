@@ -242,7 +242,11 @@ EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
   const planner::PlanResult plan = planner.plan(map_.start.position(), plan_goal(map_));
   // The potential field needs no plan: without its reference it still drives.
   const bool needs_plan = config.travel != TravelMode::kPotentialField;
-  if (!recorder_->first_plan(plan, needs_plan, map_.start)) return;
+  if (needs_plan && plan.status != planner::PlanStatus::kOk) {
+    recorder_->no_way(plan, map_.start);  // the episode ends before it begins
+    return;
+  }
+  recorder_->first_plan(plan);
   loop_ = std::make_unique<Loop>(
       plant, map_, config, make_travel(map_, planner, config, plan, steering, result_), *recorder_);
 }

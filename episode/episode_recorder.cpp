@@ -23,27 +23,30 @@ EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig
       max_samples, static_cast<std::int64_t>(config.log_limits.trajectory))));
 }
 
-bool EpisodeRecorder::first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start) {
+void EpisodeRecorder::planner_said(const planner::PlanResult& plan) {
   r_.plan_stats = plan.stats;
   r_.plan_trace = plan.trace;
   r_.plan_note = plan.note;
-  if (plan.status != planner::PlanStatus::kOk) {
-    if (needed) {
-      r_.status = EpisodeStatus::kPlannerAnswer;
-      r_.plan_status = plan.status;
-      r_.failure = robot::Failure{
-          robot::FailureReason::kNoPath, 0.0, start,
-          "the planner: " + status_name(r_) + (plan.note.empty() ? "" : " (" + plan.note + ")")};
-      event(Kind::kFailure, 0.0, start.position());
-      return false;
-    }
+}
+
+void EpisodeRecorder::first_plan(const planner::PlanResult& plan) {
+  planner_said(plan);
+  if (plan.status != planner::PlanStatus::kOk)
     r_.plan_note =
         "no reference plan (" + std::string(planner::to_string(plan.status)) + "): " + plan.note;
-  }
   r_.plan = plan.path;
   r_.first_plan = plan.path;
   r_.path_length_m = plan.length;
-  return true;
+}
+
+void EpisodeRecorder::no_way(const planner::PlanResult& plan, const Pose2& start) {
+  planner_said(plan);
+  r_.status = EpisodeStatus::kPlannerAnswer;
+  r_.plan_status = plan.status;
+  r_.failure = robot::Failure{
+      robot::FailureReason::kNoPath, 0.0, start,
+      "the planner: " + status_name(r_) + (plan.note.empty() ? "" : " (" + plan.note + ")")};
+  event(Kind::kFailure, 0.0, start.position());
 }
 
 void EpisodeRecorder::before_step(const PhysicsWorld& physics, const ContactState& contact) {

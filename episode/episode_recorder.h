@@ -32,9 +32,11 @@ class EpisodeRecorder {
  public:
   EpisodeRecorder(const worlds::World& plant, const EpisodeConfig& config, EpisodeResult& result);
 
-  /// The first plan and what the planner said about it. False when the planner found no way
-  /// and the travel `needed` one: the episode ends at `start` before it begins.
-  bool first_plan(const planner::PlanResult& plan, bool needed, const Pose2& start);
+  /// The plan the robot sets off on and what the planner said about it (a travel that needs
+  /// no plan sets off without one).
+  void first_plan(const planner::PlanResult& plan);
+  /// The planner found no way for a travel that needs one: the episode ended at `start`.
+  void no_way(const planner::PlanResult& plan, const Pose2& start);
 
   /// Every physics step, before and after it (collisions, driven length).
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
@@ -61,6 +63,8 @@ class EpisodeRecorder {
              bool pursuit);
 
  private:
+  /// What every first plan leaves behind, a way found or not: its statistics, trace and note.
+  void planner_said(const planner::PlanResult& plan);
   using Kind = EpisodeResult::Event::Kind;
   void event(Kind kind, double t_s, Vec2 at);
   /// One trajectory sample; `d` null when the episode ended before a decision.
