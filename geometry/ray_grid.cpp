@@ -259,7 +259,8 @@ struct RayGrid::Fan {
   bool spread;  // rays spaced evenly by angle: a box is tried only on those its extent covers
   double last;  // the last ray's angle from the first
   std::uint32_t query;
-  long unvisited = 0;  // cell entries (a box counts once per cell it spans) not yet visited
+  long unvisited = 0;        // cell entries (a box counts once per cell it spans) not yet visited
+  bool open_listed = false;  // open_rays_ holds this fan's rays still open at the last ring
 };
 
 namespace {
@@ -349,12 +350,18 @@ void RayGrid::fan_visit_cell(Fan& fan, long i, long j) const {
 bool RayGrid::fan_settled_before_ring(Fan& fan, long k) const {
   if (k < 2) return false;
   const double ring_near = static_cast<double>(k - 1) * cell_;
+  // Hits only come nearer and rings only further: a ray settled before one ring stays settled,
+  // so each ring sifts the rays the last one left open.
   std::vector<long>& open = open_rays_;
-  open.clear();
-  for (long r = 0; r < fan.n; ++r) {
-    const auto& h = fan.hits[static_cast<std::size_t>(r)];
-    if (!h || h->range_m > ring_near) open.push_back(r);
+  if (!fan.open_listed) {
+    open.resize(static_cast<std::size_t>(fan.n));
+    for (long r = 0; r < fan.n; ++r) open[static_cast<std::size_t>(r)] = r;
+    fan.open_listed = true;
   }
+  std::erase_if(open, [&](long r) {
+    const auto& h = fan.hits[static_cast<std::size_t>(r)];
+    return h && h->range_m <= ring_near;
+  });
   if (open.empty()) return true;
   if (static_cast<long>(open.size()) * kBoxesPerOpenRay >= fan.unvisited) return false;
   // Each open ray walks on from what the fan found, past the boxes the fan has tried (on every

@@ -144,15 +144,15 @@ class EkfLocalizer {
   };
   Fit fit(const LidarScan& scan, const State& x0, const Covariance& P0, const Covariance& P0_inv,
           std::size_t stride);
-  /// The range noise variance the residuals at `x` show (robust; negative with too few beams).
-  double post_fit_variance(const LidarScan& scan, const State& x, const Covariance& P0);
+  /// The range noise variance the fit's residuals show (robust; negative with too few beams).
+  double post_fit_variance() const;
   EkfParams p_;
   LearntVariance range_learnt_;  // the accepted scans' post-fit variance
   GyroRestNoise gyro_learnt_;
   // Scratch: each used beam's innovation and predicted spread H P0 H' of the last scan_terms call.
   std::vector<std::pair<double, double>> residuals_;
-  double r_var_ = 0;             // the range variance of the scan being matched
-  std::vector<double> scratch_;  // post_fit_variance's
+  double r_var_ = 0;                     // the range variance of the scan being matched
+  mutable std::vector<double> scratch_;  // post_fit_variance's
   const MapRaycaster& map_;
   State x_;
   Covariance P_;
