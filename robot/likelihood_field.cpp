@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <list>
+#include <mutex>
+#include <vector>
 
 #include "geometry/predicates.h"
 
@@ -63,6 +66,42 @@ void LikelihoodField::add_outline(const geom::Rect& r, bool solid) {
     for (long i = i0; i <= left_end; ++i) visit(i, j);
     for (long i = std::max(right_start, left_end + 1); i <= i1; ++i) visit(i, j);
   }
+}
+
+namespace {
+
+// What a field is built from: the floor, the mapped rectangles, the charger's block, the cells.
+struct FieldKey {
+  geom::Rect floor, charger;
+  std::vector<geom::Rect> obstacles;
+  double resolution_m;
+  bool operator==(const FieldKey&) const = default;
+};
+
+}  // namespace
+
+std::shared_ptr<const LikelihoodField> shared_likelihood_field(const worlds::World& map,
+                                                               double resolution_m) {
+  // A batch on two threads runs two plants at most at a time; a few more spare a scenario that
+  // alternates among its worlds.
+  constexpr std::size_t kKept = 4;
+  static std::mutex mutex;
+  static std::list<std::pair<FieldKey, std::shared_ptr<const LikelihoodField>>> kept;
+  FieldKey key{map.floor, worlds::charger_body(map).bounding_box(), map.obstacles, resolution_m};
+  {
+    const std::lock_guard lock(mutex);
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+      if (it->first == key) {
+        kept.splice(kept.begin(), kept, it);  // the most recently asked first
+        return kept.front().second;
+      }
+  }
+  // Built outside the lock: another thread's plant need not wait for this one.
+  auto field = std::make_shared<const LikelihoodField>(map, resolution_m);
+  const std::lock_guard lock(mutex);
+  kept.emplace_front(std::move(key), field);
+  if (kept.size() > kKept) kept.pop_back();
+  return field;
 }
 
 }  // namespace plantsim::robot

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 
 #include "geometry/vec2.h"
 #include "util/huge_page_block.h"
@@ -53,5 +54,12 @@ class LikelihoodField {
   util::HugePageBlock storage_;
   float* cells_ = nullptr;  // nx_ * ny_ signed distances in storage_, row by row
 };
+
+/// The field of `map` at `resolution_m`, shared by every episode of the process that asks for
+/// the same map at the same resolution: a batch's episodes on one plant build it once (on a
+/// 100 x 60 m floor at 5 cm it is 10 MB, and building it cost 7 % of a particle filter episode).
+/// The fields of the last few maps asked for are kept; thread-safe.
+std::shared_ptr<const LikelihoodField> shared_likelihood_field(const worlds::World& map,
+                                                               double resolution_m);
 
 }  // namespace plantsim::robot

@@ -125,7 +125,7 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
       global_(global),
       p_(params),
       map_(map),
-      field_(map, params.field_resolution_m),
+      field_(shared_likelihood_field(map, params.field_resolution_m)),
       rng_(static_cast<std::uint64_t>(params.seed) ^ 0x7061727469636c65ULL),  // "particle"
       range_learnt_(motion.range_learning_rate),
       gyro_learnt_(motion.gyro_learning_rate) {
@@ -267,14 +267,14 @@ void ParticleLocalizer::take_points(const LidarScan& scan) {
 void ParticleLocalizer::tabulate_log_likelihood() {
   if (weigh_sigma_m_ == tabulated_sigma_m_) return;
   tabulated_sigma_m_ = weigh_sigma_m_;
-  per_reach_squared_ = 1.0 / sq(field_.reach_m());
+  per_reach_squared_ = 1.0 / sq(field_->reach_m());
   // log(z_hit exp(-d^2 / 2 s^2) + z_rand) against d^2 up to the field's reach: a table of it,
   // interpolated, in place of an exp and a log per beam and particle (the filter's main cost).
   const double k = 0.5 / sq(weigh_sigma_m_);
   log_table_.resize(kLogTableSize + 1);
   for (std::size_t i = 0; i <= kLogTableSize; ++i)
     log_table_[i] = std::log(
-        p_.z_hit * std::exp(-k * static_cast<double>(i) / kLogTableSize * sq(field_.reach_m())) +
+        p_.z_hit * std::exp(-k * static_cast<double>(i) / kLogTableSize * sq(field_->reach_m())) +
         p_.z_rand);
 }
 
@@ -289,7 +289,7 @@ double ParticleLocalizer::weigh() {
     const double c = std::cos(q.yaw), s = std::sin(q.yaw);
     double l = 0;
     for (const geom::Vec2& e : points_)
-      l += log_likelihood(field_.distance({q.x + c * e.x - s * e.y, q.y + s * e.x + c * e.y}));
+      l += log_likelihood(field_->distance({q.x + c * e.x - s * e.y, q.y + s * e.x + c * e.y}));
     log_w[n] = l;
     best = std::max(best, l);
   }
@@ -427,7 +427,7 @@ double ParticleLocalizer::explained_share(const geom::Pose2& pose) const {
   int explained = 0;
   for (const geom::Vec2& e : points_)
     explained +=
-        std::fabs(field_.distance({pose.x + c * e.x - s * e.y, pose.y + s * e.x + c * e.y})) <=
+        std::fabs(field_->distance({pose.x + c * e.x - s * e.y, pose.y + s * e.x + c * e.y})) <=
         3.0 * hit_sigma_m_;
   return static_cast<double>(explained) / static_cast<double>(points_.size());
 }
@@ -531,7 +531,7 @@ ParticleLocalizer::Reseed ParticleLocalizer::reseed_candidates(const LidarScan& 
     if (!std::all_of(out.candidates.begin(), out.candidates.end(),
                      [&](const Place& k) { return apart(k.pose, f.pose); }))
       continue;
-    f.pose = refine_on_field(field_, points, f.pose, 0.2, 0.05);
+    f.pose = refine_on_field(*field_, points, f.pose, 0.2, 0.05);
     const std::optional<double> agree =
         scan_agreement(raycaster_, scan, f.pose, global_.verify_tolerance_m);
     if (agree && *agree >= global_.verify_agreement) out.candidates.push_back(f);
@@ -677,7 +677,7 @@ PlaceHypotheses::Verdict ParticleLocalizer::judge_place(const LidarScan& scan, g
   if (points_.empty()) return {};
   // Refined within a few centimetres only: the odometry drifts that little between scans, and a
   // wider reach would let a look-alike slide along a corridor to keep fitting.
-  place = refine_on_field(field_, points_, place, 0.05, 0.01);
+  place = refine_on_field(*field_, points_, place, 0.05, 0.01);
   const std::optional<double> agree =
       scan_agreement(raycaster_, scan, place, global_.verify_tolerance_m);
   const bool contradicted =
@@ -691,7 +691,7 @@ double ParticleLocalizer::points_log_likelihood(const geom::Pose2& pose) {
   const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   double l = 0;
   for (const geom::Vec2& e : points_)
-    l += log_likelihood(field_.distance({pose.x + c * e.x - s * e.y, pose.y + s * e.x + c * e.y}));
+    l += log_likelihood(field_->distance({pose.x + c * e.x - s * e.y, pose.y + s * e.x + c * e.y}));
   return l;
 }
 

@@ -213,7 +213,7 @@ class ParticleLocalizer final : public PoseEstimator {
   GlobalMatchParams global_;
   ParticleParams p_;
   const worlds::World& map_;
-  LikelihoodField field_;
+  std::shared_ptr<const LikelihoodField> field_;  // shared among episodes on the same map
   std::optional<ScanMatcher> matcher_;  // for reseeding, built the first time it is needed
   util::RandomStream rng_;
   std::vector<Particle> set_, scratch_;

@@ -213,6 +213,28 @@ TEST(HugePageBlock, ZeroedWritableAndMovable) {
 
 // A pose measured with a spread open along x and tight along y moves the estimate along y only,
 // and narrows it there; one beyond the gate changes nothing.
+// Episodes on one plant share its field; a plant that differs by one box, or another
+// resolution, gets a field of its own, with that box in it.
+TEST(LikelihoodField, SharedAmongEpisodesOnTheSameMapOnly) {
+  const worlds::World w = l_room();
+  const auto a = shared_likelihood_field(w, 0.05);
+  EXPECT_EQ(a.get(), shared_likelihood_field(worlds::World(w), 0.05).get());
+  EXPECT_NE(a.get(), shared_likelihood_field(w, 0.1).get());
+  worlds::World moved = w;
+  ASSERT_FALSE(moved.obstacles.empty());
+  moved.obstacles.front().xmin += 0.5;
+  moved.obstacles.front().xmax += 0.5;
+  const auto b = shared_likelihood_field(moved, 0.05);
+  EXPECT_NE(a.get(), b.get());
+  const LikelihoodField built(moved, 0.05);
+  const geom::Rect& r = moved.obstacles.front();
+  for (const geom::Vec2 p :
+       {geom::Vec2{r.xmax + 0.2, 0.5 * (r.ymin + r.ymax)}, geom::Vec2{r.xmin - 0.3, r.ymin + 0.1}})
+    EXPECT_EQ(b->distance(p), built.distance(p));
+  EXPECT_NE(a->distance({r.xmax + 0.2, 0.5 * (r.ymin + r.ymax)}),
+            b->distance({r.xmax + 0.2, 0.5 * (r.ymin + r.ymax)}));
+}
+
 // A correlative match's answer is a grid cell and a rotation step off; refined on the exact
 // likelihood field it lands on the pose the scan was taken from, and the ray-cast check that
 // rejected the coarse answer (a return 20 m away moved 20 cm) accepts it.
