@@ -36,15 +36,6 @@ std::vector<std::pair<std::string, std::string>> stamp_of(const std::string& fol
   return out;
 }
 
-std::pair<int, int> parse_shard(const std::string& text) {
-  int i = 0, n = 0;
-  char slash = 0;
-  std::istringstream in(text);
-  if (!(in >> i >> slash >> n) || slash != '/' || !in.eof() || n < 1 || i < 0 || i >= n)
-    throw std::invalid_argument("--shard expects i/n with 0 <= i < n, got '" + text + "'");
-  return {i, n};
-}
-
 // The gate options both commands take.
 struct GateOptions {
   std::optional<double> min_success;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace plantsim::app {
 
@@ -36,6 +37,9 @@ void add_seed_option(CLI::App* cmd, std::uint64_t& seed, const std::string& desc
 /// Refuses (std::invalid_argument, before any work) an output file that is the input it is made
 /// from (`vary W.json --out W.json` replaced the user's world with its variant).
 void refuse_output_over_input(const std::string& out, const std::string& input);
+
+/// `--shard i/n` of batch and tune: {i, n} with 0 <= i < n (std::invalid_argument otherwise).
+std::pair<int, int> parse_shard(const std::string& text);
 
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);

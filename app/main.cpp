@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -59,6 +60,15 @@ const CLI::Validator& finite_number() {
       },
       "");
   return finite;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  int i = 0, n = 0;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> i >> slash >> n) || slash != '/' || !in.eof() || n < 1 || i < 0 || i >= n)
+    throw std::invalid_argument("--shard expects i/n with 0 <= i < n, got '" + text + "'");
+  return {i, n};
 }
 
 void refuse_output_over_input(const std::string& out, const std::string& input) {

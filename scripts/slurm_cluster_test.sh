@@ -2,7 +2,8 @@
 # The Slurm path as users take it, on a real single-node cluster: starts munged, slurmctld and
 # slurmd (background processes in a private folder, no systemd), submits the shipped array
 # script docs/slurm_batch.sh and the merge with --dependency=afterok and --kill-on-invalid-dep,
-# checks that the merge equals one uninterrupted run, then stops the daemons.
+# checks that the merge equals one uninterrupted run; the same for a tuning split by
+# docs/slurm_tune.sh; then stops the daemons.
 # Usage: scripts/slurm_cluster_test.sh [BUILD_DIR]   (needs root, slurm-wlm and munge)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -111,10 +112,39 @@ cd "$work/run"
 diff <(sort whole/episodes.jsonl) <(sort merged/episodes.jsonl) > /dev/null || fail "merged records differ from one run"
 cmp whole/summary.csv merged/summary.csv || fail "merged summary differs from one run"
 
+# A tuning split the same way: 3 tasks (NLopt's search, random search's points in two), the merge
+# validating; its evaluations and best.json equal one run's.
+cat > "$work/run/tune.yaml" <<YAML
+name: slurm_tune_ci
+worlds: [$root/data/worlds/examples/small_plant.json]
+seeds: 2
+tune:
+  validation_seeds: [11, 12]
+  budget: 2
+  parameters: {tracking.max_linear_speed_mps: [0.3, 1.2]}
+YAML
+cd /
+tune_job=$(sbatch --parsable --chdir="$work/run" --array=0-2 --cpus-per-task=1 --output="$work/tune_task_%a.log" \
+  --export=ALL,PLANTSIM_SCENARIO=tune.yaml,PLANTSIM_SHARDS=tune_shards "$work/run/docs/slurm_tune.sh") || fail "sbatch of the tuning array"
+tune_merge=$(sbatch --parsable --chdir="$work/run" --dependency=afterok:"$tune_job" --kill-on-invalid-dep=yes \
+  --output="$work/tune_merge.log" --wrap "build/plantsim tune tune.yaml --merge tune_shards/0 tune_shards/1 tune_shards/2 --out tuned --no-figures") || fail "sbatch of the tuning merge"
+for _ in $(seq 600); do
+  [ -z "$(squeue -h -j "$tune_job,$tune_merge" 2>/dev/null)" ] && break
+  sleep 1
+done
+[ -z "$(squeue -h -j "$tune_job,$tune_merge" 2>/dev/null)" ] || fail "tuning jobs still queued after 10 minutes: $(squeue)"
+[ -f "$work/run/tuned/best.json" ] || fail "the tuning merge wrote no best.json: $(cat "$work/tune_merge.log")"
+grep -q "taken from 3 shard folder" "$work/tune_merge.log" || fail "tuning merge log: $(cat "$work/tune_merge.log")"
+cd "$work/run"
+"$plantsim" tune tune.yaml --out tune_whole --quiet --no-figures > "$work/tune_whole.log" 2>&1 || fail "the single tuning"
+cmp tune_whole/best.json tuned/best.json || fail "the merged tuning's best.json differs from one run's"
+strip_wall() { python3 -c 'import json,sys; print("\n".join(sorted(json.dumps({k: v for k, v in json.loads(l).items() if k != "wall_s"}, sort_keys=True) for l in open(sys.argv[1]))))' "$1"; }
+diff <(strip_wall tune_whole/evaluations.jsonl) <(strip_wall tuned/evaluations.jsonl) > /dev/null || fail "the merged tuning's evaluations differ from one run's"
+
 # A dependency that can never be met is cancelled, not left waiting forever.
 bad=$(sbatch --parsable --chdir="$work/run" --dependency=afterok:999999 --kill-on-invalid-dep=yes --wrap true 2>/dev/null || echo refused)
 if [ "$bad" != refused ]; then
   for _ in $(seq 30); do [ -z "$(squeue -h -j "$bad" 2>/dev/null)" ] && break; sleep 1; done
   [ -z "$(squeue -h -j "$bad" 2>/dev/null)" ] || fail "a job with an invalid dependency stayed queued"
 fi
-echo "slurm_cluster_test: array of 4 shards + merge on a single-node cluster equals one run (${squeue_done:+12 episodes})"
+echo "slurm_cluster_test: array of 4 shards + merge on a single-node cluster equals one run (${squeue_done:+12 episodes}); a tuning in 3 shards + merge equals one tuning"

@@ -4,6 +4,7 @@
 // takes, held-out validation, a resume that reruns nothing, and bad input refused with exit 2
 // before any episode, nothing of the user's touched.
 #include <cmath>
+#include <map>
 
 #include "cli_fixture.h"
 #include "tune/objective.h"
@@ -267,6 +268,60 @@ TEST_F(Cli, TuneEndToEndHeldOutResumableAndItsBestRuns) {
   ASSERT_EQ(run("tune t.yaml --budget 3 --out b --quiet --no-figures", 600).exit_code, 0);
   EXPECT_TRUE(evaluations(dir_ / "b/evaluations.jsonl") == lines);
   EXPECT_EQ(read(dir_ / "b/best.json"), read(dir_ / "a/best.json"));
+}
+
+// Evaluations keyed by search and index, wall-clock times left out: a merge's file holds them in
+// the shards' order, one run's in the searches' order.
+std::map<std::string, nlohmann::json> by_search(const fs::path& jsonl) {
+  std::map<std::string, nlohmann::json> out;
+  for (const nlohmann::json& e : evaluations(jsonl))
+    out[e["search"].get<std::string>() + " " + std::to_string(e["index"].get<int>())] = e;
+  return out;
+}
+
+TEST_F(Cli, TuneShardsJoinedByAMergeEqualOneRun) {
+  write("t.yaml", tiny_scenario(kHeldOutSeeds));
+  ASSERT_EQ(run("tune t.yaml --budget 3 --out whole --quiet --no-figures", 600).exit_code, 0);
+  // Shard 0 searches with NLopt, shards 1 and 2 share random search's points; none validates.
+  std::size_t shard_lines = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::string dir = "s" + std::to_string(i);
+    const Outcome s =
+        run("tune t.yaml --budget 3 --quiet --shard " + std::to_string(i) + "/3 --out " + dir, 600);
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+    EXPECT_FALSE(fs::exists(dir_ / dir / "best.json")) << dir;
+    for (const auto& [key, e] : by_search(dir_ / dir / "evaluations.jsonl")) {
+      EXPECT_EQ(key.rfind("validation:", 0), std::string::npos) << dir << " validated";
+      if (key != "default 0") ++shard_lines;
+      const std::string search = i == 0 ? "nlopt " : "random ";
+      EXPECT_TRUE(key == "default 0" || key.rfind(search, 0) == 0) << dir << ": " << key;
+    }
+  }
+  EXPECT_EQ(shard_lines, 6u);  // three NLopt and three random points, each in one shard
+  const Outcome m =
+      run("tune t.yaml --budget 3 --merge s0 s1 s2 --out m --quiet --no-figures", 600);
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  EXPECT_NE(m.out.find("3 evaluations run"), std::string::npos) << m.out;  // the validations
+  EXPECT_TRUE(by_search(dir_ / "m/evaluations.jsonl") ==
+              by_search(dir_ / "whole/evaluations.jsonl"));
+  EXPECT_EQ(read(dir_ / "m/best.json"), read(dir_ / "whole/best.json"));
+  // A missing shard is run by the merge itself; a shard of another tuning is refused.
+  const Outcome partial =
+      run("tune t.yaml --budget 3 --merge s0 --out p --quiet --no-figures", 600);
+  ASSERT_EQ(partial.exit_code, 0) << partial.err;
+  EXPECT_NE(partial.out.find("6 evaluations run"), std::string::npos) << partial.out;
+  EXPECT_EQ(read(dir_ / "p/best.json"), read(dir_ / "whole/best.json"));
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"--budget 4 --merge s0", "another tuning"},
+           {"--budget 3 --merge s0 nowhere", "'nowhere' is not a folder"},
+           {"--budget 3 --merge t.yaml", "not a folder"},
+           {"--budget 3 --shard 3/3", "--shard expects i/n"},
+           {"--budget 3 --shard 1/3 --merge s0", "excludes"}}) {
+    const Outcome bad = run("tune t.yaml " + args + " --out out", 60);
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_NE(bad.err.find(expected), std::string::npos) << args << "\n" << bad.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << args << " wrote its folder";
+  }
 }
 
 TEST_F(Cli, TuneRefusesBadInputBeforeAnyEpisode) {

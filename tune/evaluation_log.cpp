@@ -64,47 +64,59 @@ Evaluation from_json(const json& j, const std::vector<TunedParameter>& parameter
 
 }  // namespace
 
+std::vector<Evaluation> read_evaluations(const std::string& path, const std::string& fingerprint,
+                                         const std::vector<TunedParameter>& parameters,
+                                         std::int64_t& cut, std::string* kept_text) {
+  std::vector<Evaluation> out;
+  std::ifstream in(path);
+  if (!in) return out;
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) {  // a line a kill cut short
+      ++cut;
+      break;
+    }
+    const std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    try {
+      const json j = json::parse(line);
+      if (j.at("tune").get<std::string>() != fingerprint)
+        throw std::invalid_argument(
+            "'" + path + "' holds evaluations of another tuning (fingerprint " +
+            j.at("tune").get<std::string>() + ", this one " + fingerprint +
+            ": another scenario, parameter, bound, objective, budget, method or seed)");
+      out.push_back(from_json(j, parameters));
+      if (kept_text) *kept_text += line + "\n";
+    } catch (const std::invalid_argument&) {
+      throw;
+    } catch (const std::exception&) {
+      ++cut;
+    }
+  }
+  return out;
+}
+
 EvaluationLog::EvaluationLog(const std::string& path, const std::string& fingerprint,
                              const std::vector<TunedParameter>& parameters)
     : path_(path), fingerprint_(fingerprint), parameters_(parameters) {
-  std::ifstream in(path);
-  std::string line, kept;
   std::int64_t cut = 0;
-  if (in) {
-    std::stringstream all;
-    all << in.rdbuf();
-    const std::string text = all.str();
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-      const std::size_t end = text.find('\n', begin);
-      if (end == std::string::npos) {  // a line a kill cut short
-        ++cut;
-        break;
-      }
-      line = text.substr(begin, end - begin);
-      begin = end + 1;
-      try {
-        const json j = json::parse(line);
-        if (j.at("tune").get<std::string>() != fingerprint)
-          throw std::invalid_argument(
-              "'" + path + "' holds evaluations of another tuning (fingerprint " +
-              j.at("tune").get<std::string>() + ", this one " + fingerprint +
-              ": another scenario, parameter, bound, objective, budget, method or seed); choose "
-              "another --out, or --fresh to discard them");
-        Evaluation e = from_json(j, parameters);
-        recorded_[{e.search, e.index}] = std::move(e);
-        kept += line + "\n";
-      } catch (const std::invalid_argument&) {
-        throw;
-      } catch (const std::exception&) {
-        ++cut;
-      }
-    }
-    if (cut > 0) {
-      util::write_file_atomically(path, kept);
-      std::fprintf(stderr, "tune: warning: cut %lld unfinished or malformed line(s) from %s\n",
-                   static_cast<long long>(cut), path.c_str());
-    }
+  std::string kept;
+  std::vector<Evaluation> known;
+  try {
+    known = read_evaluations(path, fingerprint, parameters, cut, &kept);
+  } catch (const std::invalid_argument& other) {
+    throw std::invalid_argument(std::string(other.what()) +
+                                "; choose another --out, or --fresh to discard them");
+  }
+  for (Evaluation& e : known) recorded_[{e.search, e.index}] = std::move(e);
+  if (cut > 0) {
+    util::write_file_atomically(path, kept);
+    std::fprintf(stderr, "tune: warning: cut %lld unfinished or malformed line(s) from %s\n",
+                 static_cast<long long>(cut), path.c_str());
   }
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
   out_ = fd >= 0 ? ::fdopen(fd, "ab") : nullptr;
@@ -131,6 +143,12 @@ void EvaluationLog::append(const Evaluation& e) {
   if (std::fwrite(line.data(), 1, line.size(), out_) != line.size() || std::fflush(out_) != 0)
     throw std::runtime_error(util::system_error_text("cannot append to " + path_));
   recorded_[{e.search, e.index}] = e;
+}
+
+bool EvaluationLog::adopt(const Evaluation& e) {
+  if (recorded_.count({e.search, e.index})) return false;
+  append(e);
+  return true;
 }
 
 }  // namespace plantsim::tune

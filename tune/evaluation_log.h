@@ -4,6 +4,7 @@
 // same candidates again and get the recorded answers without running an episode.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -26,6 +27,13 @@ struct Evaluation {
   std::vector<EpisodeOutcome> outcomes;
 };
 
+/// The evaluations of tuning `fingerprint` an evaluations file holds, in its order. A line of
+/// another tuning is refused (std::invalid_argument naming the file and both fingerprints); a
+/// torn or malformed line is left out and counted in `cut`. A missing file holds none.
+std::vector<Evaluation> read_evaluations(const std::string& path, const std::string& fingerprint,
+                                         const std::vector<TunedParameter>& parameters,
+                                         std::int64_t& cut, std::string* kept_text = nullptr);
+
 /// The folder's evaluations file, locked by the caller.
 class EvaluationLog {
  public:
@@ -42,6 +50,9 @@ class EvaluationLog {
                          const std::vector<double>& values) const;
   /// Appends and flushes (throws std::runtime_error naming the file on a full disk).
   void append(const Evaluation& e);
+  /// Appends another folder's evaluation of this tuning (a shard's) unless one with its search
+  /// and index is recorded; returns whether it was added.
+  bool adopt(const Evaluation& e);
   std::size_t recorded() const { return recorded_.size(); }
   std::size_t reused() const { return reused_; }
 

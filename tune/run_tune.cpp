@@ -160,6 +160,43 @@ const Evaluation& best_of(const std::vector<Evaluation>& history, const std::str
   return *best;
 }
 
+/// The shards' evaluations, every folder checked before the output folder is touched: a shard
+/// folder must hold an evaluations.jsonl of this very tuning.
+std::vector<Evaluation> read_shards(const TuneSpec& spec, const TuneOptions& o,
+                                    const std::string& fingerprint) {
+  std::vector<Evaluation> all;
+  std::error_code ec;
+  for (const std::string& dir : o.merge_dirs) {
+    const fs::path file = fs::path(dir) / "evaluations.jsonl";
+    if (!fs::is_directory(dir, ec))
+      throw std::invalid_argument("--merge: '" + dir + "' is not a folder");
+    if (fs::exists(o.out_dir, ec) && fs::equivalent(dir, o.out_dir, ec))
+      throw std::invalid_argument("--merge: '" + dir + "' is the output folder itself");
+    if (!fs::is_regular_file(fs::symlink_status(file, ec)))
+      throw std::invalid_argument("--merge: '" + dir +
+                                  "' holds no evaluations.jsonl (not a tuning shard's folder)");
+    std::int64_t cut = 0;
+    std::vector<Evaluation> some;
+    try {
+      some = read_evaluations(file.string(), fingerprint, spec.parameters, cut);
+    } catch (const std::invalid_argument& other) {
+      throw std::invalid_argument(std::string("--merge: ") + other.what());
+    }
+    if (cut > 0)
+      std::fprintf(stderr, "tune: warning: left out %lld unfinished line(s) of %s\n",
+                   static_cast<long long>(cut), file.c_str());
+    for (Evaluation& e : some) all.push_back(std::move(e));
+  }
+  return all;
+}
+
+/// Random search's points a shard of n evaluates: every (n-1)th, shard 0 being NLopt's.
+Evaluator share_of_random(const TuneOptions& o, const Evaluator& evaluate) {
+  return [&o, evaluate](const char* search, int index, const std::vector<double>& values) {
+    return index % (o.shard_count - 1) == o.shard_index - 1 ? evaluate(search, index, values) : 0.0;
+  };
+}
+
 std::vector<double> default_values(const TuneSpec& spec) {
   std::vector<double> v;
   for (const TunedParameter& p : spec.parameters) v.push_back(p.info.default_value);
@@ -190,6 +227,7 @@ TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
                    "tune: note: %s's default %g lies outside its bounds; the search starts at the "
                    "nearer bound\n",
                    spec.parameters[i].info.path.c_str(), defaults[i]);
+  const std::vector<Evaluation> merged = read_shards(spec, o, out.fingerprint);
   if (o.check_only) return out;
 
   prepare_folder(o);
@@ -197,6 +235,7 @@ TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
   prepare_folder(o);  // again, now that no other plantsim writes there
   remove_outputs(o.out_dir, !o.fresh);
   EvaluationLog log(o.out_dir + "/evaluations.jsonl", out.fingerprint, spec.parameters);
+  for (const Evaluation& e : merged) out.evaluations_merged += log.adopt(e) ? 1 : 0;
   Evaluations evaluations(spec, log, o);
 
   out.history.push_back(evaluations.evaluate(tuning, "default", 0, defaults, std::nullopt));
@@ -205,6 +244,15 @@ TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
     out.history.push_back(evaluations.evaluate(tuning, search, index, values, out.floor));
     return out.history.back().score.value;
   };
+  if (o.shard_count > 1) {  // a shard: its part of the searches, the rest is the merge's
+    if (o.shard_index == 0)
+      nlopt_search(spec, defaults, evaluate);
+    else
+      random_search(spec, share_of_random(o, evaluate));
+    out.evaluations_run = evaluations.ran();
+    out.evaluations_reused = static_cast<int>(log.reused());
+    return out;
+  }
   nlopt_search(spec, defaults, evaluate);
   random_search(spec, evaluate);
 

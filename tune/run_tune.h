@@ -23,6 +23,11 @@ struct TuneOptions {
   std::string
       command;  ///< the command line that makes it again, quoted for the shell (the report's)
   std::function<bool()> interrupted;  ///< polled between episodes (Python's Ctrl-C)
+  /// Shard i of n (n > 1): the default, then shard 0 NLopt's search and shards 1..n-1 every
+  /// (n-1)th of random search's points; no validation and no report (docs/tune.md, Slurm).
+  int shard_index = 0, shard_count = 1;
+  /// Folders of this tuning's shards whose evaluations are read in before the searches ask.
+  std::vector<std::string> merge_dirs;
 };
 
 /// One setting proven on the validation episodes.
@@ -34,9 +39,10 @@ struct Proven {
 struct TuneOutcome {
   std::int64_t tuning_episodes = 0, validation_episodes = 0;
   int evaluations_run = 0, evaluations_reused = 0;
-  double floor = 0;  ///< the constrained objectives' Wilson floor on the tuning episodes
+  int evaluations_merged = 0;  ///< taken from the shards' folders
+  double floor = 0;            ///< the constrained objectives' Wilson floor on the tuning episodes
   std::vector<Evaluation> history;        ///< default, then NLopt's, then random search's
-  std::vector<Proven> proven;             ///< default, nlopt, random
+  std::vector<Proven> proven;             ///< default, nlopt, random (none for a shard)
   std::string best;                       ///< which search's setting best.json holds
   PairedComparison best_against_default;  ///< on the validation episodes
   std::string fingerprint;
