@@ -92,17 +92,21 @@ YAML
 ln -s "$root/docs" "$work/run/docs"
 mkdir -p "$work/run/build" && ln -s "$plantsim" "$work/run/build/plantsim"
 export PLANTSIM_DATA=$(cd "$root/../shared/data" && pwd)
+# Waits up to 10 minutes for the jobs (a comma-separated list) to leave the queue; 1 if they did not.
+wait_for_jobs() {
+  for _ in $(seq 600); do
+    [ -z "$(squeue -h -j "$1" 2>/dev/null)" ] && return 0
+    sleep 1
+  done
+  return 1
+}
 # Submitted from elsewhere, with --chdir naming the checkout the tasks run in.
 cd /
 jobid=$(sbatch --parsable --chdir="$work/run" --array=0-3 --cpus-per-task=1 --output="$work/task_%a.log" \
   --export=ALL,PLANTSIM_SCENARIO=scenario.yaml,PLANTSIM_SHARDS=shards "$work/run/docs/slurm_batch.sh") || fail "sbatch of the array"
 merge=$(sbatch --parsable --chdir="$work/run" --dependency=afterok:"$jobid" --kill-on-invalid-dep=yes \
   --output="$work/merge.log" --wrap "build/plantsim merge shards/0 shards/1 shards/2 shards/3 --out merged") || fail "sbatch of the merge"
-for _ in $(seq 600); do
-  [ -z "$(squeue -h -j "$jobid,$merge" 2>/dev/null)" ] && break
-  sleep 1
-done
-[ -z "$(squeue -h -j "$jobid,$merge" 2>/dev/null)" ] && squeue_done=1 || fail "jobs still queued after 10 minutes: $(squeue)"
+wait_for_jobs "$jobid,$merge" && squeue_done=1 || fail "jobs still queued after 10 minutes: $(squeue)"
 [ -f "$work/run/merged/episodes.jsonl" ] || fail "the merge job wrote nothing"
 grep -q "12 of 12 episodes" "$work/merge.log" || fail "merge log: $(cat "$work/merge.log")"
 
@@ -128,11 +132,7 @@ tune_job=$(sbatch --parsable --chdir="$work/run" --array=0-2 --cpus-per-task=1 -
   --export=ALL,PLANTSIM_SCENARIO=tune.yaml,PLANTSIM_SHARDS=tune_shards "$work/run/docs/slurm_tune.sh") || fail "sbatch of the tuning array"
 tune_merge=$(sbatch --parsable --chdir="$work/run" --dependency=afterok:"$tune_job" --kill-on-invalid-dep=yes \
   --output="$work/tune_merge.log" --wrap "build/plantsim tune tune.yaml --merge tune_shards/0 tune_shards/1 tune_shards/2 --out tuned --no-figures") || fail "sbatch of the tuning merge"
-for _ in $(seq 600); do
-  [ -z "$(squeue -h -j "$tune_job,$tune_merge" 2>/dev/null)" ] && break
-  sleep 1
-done
-[ -z "$(squeue -h -j "$tune_job,$tune_merge" 2>/dev/null)" ] || fail "tuning jobs still queued after 10 minutes: $(squeue)"
+wait_for_jobs "$tune_job,$tune_merge" || fail "tuning jobs still queued after 10 minutes: $(squeue)"
 [ -f "$work/run/tuned/best.json" ] || fail "the tuning merge wrote no best.json: $(cat "$work/tune_merge.log")"
 grep -q "taken from 3 shard folder" "$work/tune_merge.log" || fail "tuning merge log: $(cat "$work/tune_merge.log")"
 cd "$work/run"
