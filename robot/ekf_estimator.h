@@ -22,7 +22,9 @@ class EkfEstimator final : public PoseEstimator {
   void predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) override {
     ekf_.predict(distance_m, gyro_yaw_rate_radps, dt_s);
   }
-  void standstill(double gyro_yaw_rate_radps) override { ekf_.standstill(gyro_yaw_rate_radps); }
+  void standstill(double gyro_yaw_rate_radps, double dt_s) override {
+    ekf_.standstill(gyro_yaw_rate_radps, dt_s);
+  }
   void observe(const LidarScan& scan) override;
   void widen(double position_sigma_m, double yaw_sigma_rad) override {
     ekf_.widen(position_sigma_m, yaw_sigma_rad);

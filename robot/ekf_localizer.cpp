@@ -11,7 +11,7 @@ EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
                            const MapRaycaster& map)
     : p_(params),
       range_learnt_(params.range_learning_rate),
-      gyro_learnt_(params.gyro_learning_rate),
+      gyro_learnt_(params.gyro_learning_rate, params.gyro_min_samples),
       map_(map) {
   x_ << initial_pose.x, initial_pose.y, initial_pose.yaw, 0.0;
   P_.setZero();
@@ -26,8 +26,7 @@ double EkfLocalizer::range_sigma_m() const {
 }
 
 double EkfLocalizer::gyro_noise_radps() const {
-  return p_.learn_noise ? gyro_learnt_.variance().sigma(p_.gyro_noise_radps, p_.gyro_min_samples)
-                        : p_.gyro_noise_radps;
+  return p_.learn_noise ? gyro_learnt_.sigma(p_.gyro_noise_radps) : p_.gyro_noise_radps;
 }
 
 double EkfLocalizer::position_sigma_m() const {
@@ -182,11 +181,26 @@ bool EkfLocalizer::update_pose(const geom::Pose2& z, const Eigen::Matrix3d& r, d
   return true;
 }
 
-void EkfLocalizer::standstill(double gyro_yaw_rate_radps) {
+void EkfLocalizer::standstill(double gyro_yaw_rate_radps, double dt_s) {
+  if (dt_s <= 0) return;
+  const double noise = gyro_noise_radps();
+  if (!at_rest(gyro_yaw_rate_radps - x_(3), noise * noise + P_(3, 3)))
+    return predict(0.0, gyro_yaw_rate_radps, dt_s);
+  gyro_learnt_.reading();
+  P_(3, 3) += p_.bias_walk_radps_per_sqrt_s * p_.bias_walk_radps_per_sqrt_s * dt_s;
   // z = bias + white noise: H = [0 0 0 1], R = the gyro's noise per reading. At rest two
   // readings in a row differ by the noise alone (the bias cancels, whatever its estimate): half
-  // their squared difference is learnt as the noise's variance.
-  if (p_.learn_noise) gyro_learnt_.at_rest(gyro_yaw_rate_radps);
+  // their squared difference is learnt as the noise's variance, and the readings wait for it.
+  if (!p_.learn_noise) {
+    update_bias(gyro_yaw_rate_radps);
+  } else {
+    gyro_learnt_.at_rest(gyro_yaw_rate_radps);
+    for (const double z : gyro_learnt_.take_readings()) update_bias(z);
+  }
+  update_health();
+}
+
+void EkfLocalizer::update_bias(double gyro_yaw_rate_radps) {
   const double r = gyro_noise_radps() * gyro_noise_radps();
   const double s = P_(3, 3) + r;
   if (!(s > 0)) return;

@@ -30,7 +30,11 @@ namespace plantsim::robot {
 struct EkfParams {
   double initial_position_sigma_m = 0.05;  ///< uncertainty of the start pose the robot is given
   double initial_yaw_sigma_rad = 0.02;
-  double initial_bias_sigma_radps = 0.005;  ///< gyro bias, before any correction
+  /// The gyro's turn-on bias before any reading at rest: a MEMS gyro's zero-rate offset is
+  /// specified to about 1 degree/s, and the robot measures it at rest before it drives, so a
+  /// prior as wide costs nothing (0.005 pulled a bias three times the datasheet's towards zero,
+  /// beyond the spread the filter gave it).
+  double initial_bias_sigma_radps = 0.02;
   double distance_noise = 0.02;     ///< std-dev of travel per metre travelled (encoders, slip)
   double lateral_noise = 0.007;     ///< sideways skid per radian turned while moving (m/rad)
   double gyro_noise_radps = 0.003;  ///< the gyro's white noise, as the filter assumes it
@@ -105,9 +109,10 @@ class EkfLocalizer {
   bool inconsistent() const { return inconsistent_; }
   /// Times an inconsistent window widened the covariance (adaptive fading).
   int inflations() const { return inflations_; }
-  /// The wheels did not turn since the last reading: the robot stands still, so the gyro's rate
-  /// is its bias plus noise (a zero-velocity update, as inertial navigation does at rest).
-  void standstill(double gyro_yaw_rate_radps);
+  /// In place of predict when the wheels did not turn since the last reading: the robot stands
+  /// still, so the gyro's rate is its bias plus noise (a zero-velocity update, as inertial
+  /// navigation does at rest); a rate too far from the bias for that is a turn (predict).
+  void standstill(double gyro_yaw_rate_radps, double dt_s);
   /// A pose measured directly with covariance `r` (a global match that leaves some directions
   /// open): the Kalman update of the estimate, unless the measurement lies beyond `gate_chi2` of
   /// its predicted spread (then nothing changes and it returns false).
@@ -134,6 +139,9 @@ class EkfLocalizer {
   /// The correction against the spread the prior and the update predict for it (NIS).
   void check_consistency(const State& x0, const Covariance& P0, int kept);
   void update_health();
+  /// One reading at rest: the Kalman update of the bias (and of the heading, through their
+  /// correlation).
+  void update_bias(double gyro_yaw_rate_radps);
   void record_nis(double nis, int dof);
   /// The scan matched from x0 (associated there, then again after the first step) and the
   /// iterated update's answer: its state, the beams' terms about it, the directions kept.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 namespace plantsim::robot {
 
@@ -40,10 +41,22 @@ class LearntVariance {
 
 /// The gyro's white noise from its readings at rest: two readings in a row at rest differ by
 /// the noise alone (the bias cancels, whatever its estimate), so half their squared difference
-/// is a sample of its variance.
+/// is a sample of its variance. The readings themselves measure the bias; until the noise is
+/// learnt from `min_samples` of them they are held back, then all weighed by what was learnt.
+/// (Weighed by the told noise as they came, the first readings of a gyro four times as noisy as
+/// its datasheet counted sixteen times what they are worth: after the start's calibration the bias
+/// was off by several of the filter's own sigmas, and on the open plants of wet_levers.yaml the
+/// heading drifted across open ground while the filter reported itself ok.)
+/// A gyro reading `innovation` from the bias's estimate, whose spread (noise and the bias's
+/// uncertainty) has variance `variance`, is what a robot at rest reads; farther, it turns.
+inline bool at_rest(double innovation, double variance) {
+  constexpr double kRestGateSigmas = 5.0;
+  return innovation * innovation <= kRestGateSigmas * kRestGateSigmas * variance;
+}
+
 class GyroRestNoise {
  public:
-  explicit GyroRestNoise(double rate) : variance_(rate) {}
+  GyroRestNoise(double rate, int min_samples) : variance_(rate), min_samples_(min_samples) {}
   /// Every reading, moving or not (call before at_rest for a reading at rest).
   void reading() { ++since_rest_; }
   void at_rest(double gyro_yaw_rate_radps) {
@@ -53,13 +66,34 @@ class GyroRestNoise {
     }
     last_rest_ = gyro_yaw_rate_radps;
     since_rest_ = 0;
+    held_.push_back(gyro_yaw_rate_radps);
   }
   const LearntVariance& variance() const { return variance_; }
+  /// The 1-sigma noise to weigh readings by: the learnt one when clearly above `told` and learnt
+  /// from at least `min_samples`, else `told`. A variance from n samples scatters as chi-square
+  /// with n degrees: weighed by its inverse, readings would count n / (n - 2) times what they
+  /// are worth on average, and the bias would look surer than it is.
+  double sigma(double told) const {
+    const int n = variance_.samples();
+    if (n < min_samples_ || n < 3) return told;
+    const double learnt = std::sqrt(variance_.variance() * n / (n - 2.0));
+    return learnt > kClearlyAbove * told ? learnt : told;
+  }
+  /// The readings at rest not yet used for the bias, once the noise is learnt (none before),
+  /// each to be weighed by sigma(told); taking them empties the store.
+  std::vector<double> take_readings() {
+    if (variance_.samples() < min_samples_) return {};
+    std::vector<double> out;
+    out.swap(held_);
+    return out;
+  }
 
  private:
   LearntVariance variance_;
+  int min_samples_;
   std::optional<double> last_rest_;
   int since_rest_ = 0;
+  std::vector<double> held_;
 };
 
 }  // namespace plantsim::robot

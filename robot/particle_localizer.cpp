@@ -128,7 +128,7 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
       field_(shared_likelihood_field(map, params.field_resolution_m)),
       rng_(static_cast<std::uint64_t>(params.seed) ^ 0x7061727469636c65ULL),  // "particle"
       range_learnt_(motion.range_learning_rate),
-      gyro_learnt_(motion.gyro_learning_rate) {
+      gyro_learnt_(motion.gyro_learning_rate, motion.gyro_min_samples) {
   // As AMCL starts: the prior drawn at the ceiling, KLD sampling choosing fewer at the first
   // resampling. (Started at the floor, 200 draws of a three-dimensional prior left the truth
   // 2.5 sigmas out with no particle near it, and the first sharp weighing collapsed the set 12 cm
@@ -158,22 +158,34 @@ void ParticleLocalizer::predict(double distance_m, double gyro_yaw_rate_radps, d
   pending_.moved_m += std::fabs(distance_m);
   pending_.turned_rad += std::fabs(turn);
   const double gyro_sigma =
-      motion_.learn_noise
-          ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps, motion_.gyro_min_samples)
-          : motion_.gyro_noise_radps;
+      motion_.learn_noise ? gyro_learnt_.sigma(motion_.gyro_noise_radps) : motion_.gyro_noise_radps;
   pending_.gyro_var += sq(gyro_sigma * dt_s);
   pending_.time_s += dt_s;
   update_health();
 }
 
-void ParticleLocalizer::standstill(double gyro_yaw_rate_radps) {
-  if (motion_.learn_noise) gyro_learnt_.at_rest(gyro_yaw_rate_radps);
+void ParticleLocalizer::standstill(double gyro_yaw_rate_radps, double dt_s) {
+  if (dt_s <= 0) return;
+  const double sigma =
+      motion_.learn_noise ? gyro_learnt_.sigma(motion_.gyro_noise_radps) : motion_.gyro_noise_radps;
+  if (!at_rest(gyro_yaw_rate_radps - bias_, sigma * sigma + bias_var_))
+    return predict(0.0, gyro_yaw_rate_radps, dt_s);
+  gyro_learnt_.reading();
   apply_motion();  // the motion so far under the biases as they were
+  if (!motion_.learn_noise) {
+    update_bias(gyro_yaw_rate_radps);
+  } else {
+    gyro_learnt_.at_rest(gyro_yaw_rate_radps);  // the readings wait until the noise is learnt
+    for (const double z : gyro_learnt_.take_readings()) update_bias(z);
+  }
+  update_health();
+}
+
+void ParticleLocalizer::update_bias(double gyro_yaw_rate_radps) {
   // At rest the gyro reads the bias plus white noise: the Kalman update of the set's bias, each
   // particle's moved to the posterior by the ensemble square-root update (its deviation from the
   // mean shrunk as the variance is), so that the set keeps its spread's shape.
-  const double r = sq(motion_.learn_noise ? gyro_learnt_.variance().sigma(motion_.gyro_noise_radps,
-                                                                          motion_.gyro_min_samples)
+  const double r = sq(motion_.learn_noise ? gyro_learnt_.sigma(motion_.gyro_noise_radps)
                                           : motion_.gyro_noise_radps);
   bias_moments();
   const double k = bias_var_ / (bias_var_ + r);

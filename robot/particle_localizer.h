@@ -115,7 +115,7 @@ class ParticleLocalizer final : public PoseEstimator {
                     const ParticleParams& params);
 
   void predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) override;
-  void standstill(double gyro_yaw_rate_radps) override;
+  void standstill(double gyro_yaw_rate_radps, double dt_s) override;
   void observe(const LidarScan& scan) override;
   void widen(double position_sigma_m, double yaw_sigma_rad) override;
   geom::Pose2 pose() const override;
@@ -204,6 +204,8 @@ class ParticleLocalizer final : public PoseEstimator {
   void confirm(const LidarScan& scan, const std::optional<double>& agree);
   /// The scan's verdict on a place (refined onto the scan first, written back).
   PlaceHypotheses::Verdict judge_place(const LidarScan& scan, geom::Pose2& place);
+  /// One reading at rest: the Kalman update of the set's bias.
+  void update_bias(double gyro_yaw_rate_radps);
   /// bias_ and bias_var_ from the set.
   void bias_moments();
   double normal(double sigma);

@@ -184,8 +184,10 @@ void Perceiver::localize(const SensorReadings& r) {
   // Wheels that did not turn at all: the robot stands still and the gyro reads its own bias.
   const bool wheels_still =
       r.dt_s > 0 && r.encoder_distance_m == 0 && r.odom_pose.yaw == odom_yaw_before_;
-  estimator_->predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
-  if (wheels_still) estimator_->standstill(r.gyro_yaw_rate_radps);
+  if (wheels_still)
+    estimator_->standstill(r.gyro_yaw_rate_radps, r.dt_s);
+  else
+    estimator_->predict(r.encoder_distance_m, r.gyro_yaw_rate_radps, r.dt_s);
   // Moved without the wheels: a contact (the robot never touches anything but the charger's
   // pads, which are not on the bumper), or a scan that pulls the estimate further than its
   // spread allows, or scans the map stops explaining. Widen the estimate so that the next

@@ -23,8 +23,13 @@ class PoseEstimator {
 
   /// Motion since the last call: the encoders' travel along the heading and the gyro's rate.
   virtual void predict(double distance_m, double gyro_yaw_rate_radps, double dt_s) = 0;
-  /// The wheels did not turn since the last reading: the gyro reads its bias plus noise.
-  virtual void standstill(double gyro_yaw_rate_radps) = 0;
+  /// In place of predict when the wheels did not turn since the last reading: a robot at rest
+  /// does not turn either, so the gyro reads its bias plus noise, a measurement of the bias (a
+  /// zero-velocity update) and not a turn. (Integrated as a turn as well, each reading counted
+  /// twice: once for the bias, and again through the heading the scans hold still, and the bias
+  /// looked surer than it was.) A reading too far from the bias to be its noise is a robot
+  /// turning on wheels that do not (sliding, or moved): that is taken as motion, as predict.
+  virtual void standstill(double gyro_yaw_rate_radps, double dt_s) = 0;
   /// One scan, matched to the map (and, when the estimate is wide or contradicted, globally).
   virtual void observe(const LidarScan& scan) = 0;
   /// Moved by something the encoders cannot see (a contact, scans the map stopped explaining):
