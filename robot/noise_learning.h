@@ -39,6 +39,13 @@ class LearntVariance {
   int samples_ = 0;
 };
 
+/// A gyro reading `innovation` from the bias's estimate, whose spread (noise and the bias's
+/// uncertainty) has variance `variance`, is what a robot at rest reads; farther, it turns.
+inline bool at_rest(double innovation, double variance) {
+  constexpr double kRestGateSigmas = 5.0;
+  return innovation * innovation <= kRestGateSigmas * kRestGateSigmas * variance;
+}
+
 /// The gyro's white noise from its readings at rest: two readings in a row at rest differ by
 /// the noise alone (the bias cancels, whatever its estimate), so half their squared difference
 /// is a sample of its variance. The readings themselves measure the bias; until the noise is
@@ -47,13 +54,6 @@ class LearntVariance {
 /// its datasheet counted sixteen times what they are worth: after the start's calibration the bias
 /// was off by several of the filter's own sigmas, and on the open plants of wet_levers.yaml the
 /// heading drifted across open ground while the filter reported itself ok.)
-/// A gyro reading `innovation` from the bias's estimate, whose spread (noise and the bias's
-/// uncertainty) has variance `variance`, is what a robot at rest reads; farther, it turns.
-inline bool at_rest(double innovation, double variance) {
-  constexpr double kRestGateSigmas = 5.0;
-  return innovation * innovation <= kRestGateSigmas * kRestGateSigmas * variance;
-}
-
 class GyroRestNoise {
  public:
   GyroRestNoise(double rate, int min_samples) : variance_(rate), min_samples_(min_samples) {}
