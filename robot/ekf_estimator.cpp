@@ -1,6 +1,7 @@
 // The EKF's scan handling: the local update, and the global match when the estimate is wide.
 #include "robot/ekf_estimator.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -8,7 +9,11 @@ namespace plantsim::robot {
 
 EkfEstimator::EkfEstimator(const worlds::World& map, const MapRaycaster& raycaster,
                            const EkfParams& ekf, const GlobalMatchParams& global)
-    : map_(map), raycaster_(raycaster), p_(global), ekf_(ekf, map.start, raycaster) {}
+    : map_(map),
+      raycaster_(raycaster),
+      p_(global),
+      lost_sigma_m_(ekf.lost_position_sigma_m),
+      ekf_(ekf, map.start, raycaster) {}
 
 void EkfEstimator::observe(const LidarScan& scan) {
   if (relocalize(scan)) ekf_.correct(scan);
@@ -17,6 +22,22 @@ void EkfEstimator::observe(const LidarScan& scan) {
 // A measured pose within this normalised distance of the estimate (chi-square, 3 degrees of
 // freedom, 0.999) updates it; farther, it is a look-alike the window happened to hold.
 constexpr double kPoseGateChi2 = 16.27;
+// A reset's position sigma at most this share of the sigma that would trigger another match.
+constexpr double kResetSigmaShare = 0.9;
+constexpr double kResetMinYawSigmaRad = 0.01;
+
+Eigen::Matrix3d reset_covariance(const Eigen::Matrix3d& spread, double cell_m, double max_sigma_m,
+                                 double min_yaw_sigma_rad) {
+  const double most = std::max(max_sigma_m, cell_m);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(spread.topLeftCorner<2, 2>());
+  const Eigen::Vector2d variances =
+      es.eigenvalues().cwiseMax(cell_m * cell_m).cwiseMin(most * most);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  covariance.topLeftCorner<2, 2>() =
+      es.eigenvectors() * variances.asDiagonal() * es.eigenvectors().transpose();
+  covariance(2, 2) = std::max(spread(2, 2), min_yaw_sigma_rad * min_yaw_sigma_rad);
+  return covariance;
+}
 
 bool EkfEstimator::relocalize(const LidarScan& scan) {
   const double sigma = ekf_.position_sigma_m();
@@ -76,10 +97,16 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
     if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);
     return local_ok;
   }
-  const double cell = matcher_->resolution_m();
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  covariance.diagonal() << cell * cell, cell * cell, 0.01 * 0.01;
-  ekf_.reset(m->pose, covariance);
+  // The spread of the poses that fit about as well, not the grid's step alone: a match on a few
+  // returns can sit cells off, mostly along what it leaves open, and a heading a degree off
+  // held at a third of that sends the robot across open ground sideways (seen on a sparse
+  // plant, very wet: a reset 0.16 m off at a 0.1 m sigma, the robot then driving up to 0.9 m
+  // off). The position's spread is capped below the sigma at which the filter would call
+  // itself lost or match again: a wider one would only repeat the match, scan after scan.
+  ekf_.reset(m->pose,
+             reset_covariance(m->spread, matcher_->resolution_m(),
+                              kResetSigmaShare * std::min(p_.global_match_sigma_m, lost_sigma_m_),
+                              kResetMinYawSigmaRad));
   ++relocalizations_;
   return true;  // the local update refines the match
 }

@@ -14,6 +14,12 @@
 
 namespace plantsim::robot {
 
+/// The covariance a confirmed global match restarts the filter with: the match's `spread` (the
+/// poses that fit about as well, ScanMatch::spread) with its position's principal sigmas held
+/// between the grid's cell and `max_sigma_m`, its heading's at least `min_yaw_sigma_rad`.
+Eigen::Matrix3d reset_covariance(const Eigen::Matrix3d& spread, double cell_m, double max_sigma_m,
+                                 double min_yaw_sigma_rad);
+
 class EkfEstimator final : public PoseEstimator {
  public:
   EkfEstimator(const worlds::World& map, const MapRaycaster& raycaster, const EkfParams& ekf,
@@ -50,6 +56,7 @@ class EkfEstimator final : public PoseEstimator {
   const worlds::World& map_;
   const MapRaycaster& raycaster_;
   GlobalMatchParams p_;
+  double lost_sigma_m_;  // EkfParams::lost_position_sigma_m
   EkfLocalizer ekf_;
   std::optional<ScanMatcher> matcher_;  // built the first time it is needed
   double next_match_s_ = 0;

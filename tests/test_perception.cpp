@@ -467,6 +467,30 @@ EpisodeResult run_with(const std::string& world_file, EpisodeConfig c) {
   return run_episode(w, *p, c);
 }
 
+TEST(Ekf, AResetIsAsOpenAsTheMatchLeavesItYetNotSoOpenItMatchesAgain) {
+  // A lone wall along x seen with its end out of view: the near-best poses spread 0.5 m along
+  // it and 2 cm across, the heading 0.02 rad either way.
+  const double along = 0.5, across = 0.02, yaw = 0.02, turn = 0.3;
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  const Eigen::Vector2d u(std::cos(turn), std::sin(turn)), v(-std::sin(turn), std::cos(turn));
+  spread.topLeftCorner<2, 2>() =
+      along * along * u * u.transpose() + across * across * v * v.transpose();
+  spread(2, 2) = yaw * yaw;
+  const Eigen::Matrix3d c = reset_covariance(spread, 0.1, 0.135, 0.01);
+  // Along the wall: as wide as allowed, not the 0.5 m (the filter would match again); across it:
+  // not narrower than the grid's cell; the heading as the near-best poses spread it.
+  EXPECT_NEAR(std::sqrt(u.dot(c.topLeftCorner<2, 2>() * u)), 0.135, 1e-9);
+  EXPECT_NEAR(std::sqrt(v.dot(c.topLeftCorner<2, 2>() * v)), 0.1, 1e-9);
+  EXPECT_NEAR(std::sqrt(c(2, 2)), yaw, 1e-12);
+  EXPECT_EQ(c(0, 2), 0.0);
+  // A match the poses pin tighter than a cell and a degree: the cell and the floor.
+  const Eigen::Matrix3d tight =
+      reset_covariance(Eigen::Matrix3d::Identity() * 1e-6, 0.1, 0.135, 0.01);
+  EXPECT_NEAR(tight(0, 0), 0.01, 1e-12);
+  EXPECT_NEAR(tight(1, 1), 0.01, 1e-12);
+  EXPECT_NEAR(tight(2, 2), 1e-4, 1e-12);
+}
+
 TEST(Determinism, TheSameSeedGivesTheSameTrajectoryWithTheLidarOn) {
   EpisodeConfig c;
   c.seed = 5;
