@@ -25,6 +25,22 @@ constexpr double kPoseGateChi2 = 16.27;
 // A reset's position sigma at most this share of the sigma that would trigger another match.
 constexpr double kResetSigmaShare = 0.9;
 constexpr double kResetMinYawSigmaRad = 0.01;
+// The global match's window: this many of the estimate's sigmas.
+constexpr double kWindowSigmas = 3.0;
+
+void EkfEstimator::keep_look_alikes_in_window(const ScanMatch& m) {
+  // The same ambiguity is matched again every period, each time as if new: the estimate
+  // narrows, its window (three sigmas) with it, the look-alikes leave the window and the
+  // ambiguity reads as certainty (seen on a tuning yard: pulled 2 m off, then `ok` there for
+  // 100 s). Until a match tells the places apart, the estimate stays wide enough that its
+  // window holds them.
+  for (const auto& [place, score] : m.alternatives) {
+    const Eigen::Vector2d offset(place.x - m.pose.x, place.y - m.pose.y);
+    const double apart = offset.norm();
+    if (apart < 1e-9) continue;  // the best itself, or a place apart in heading only
+    ekf_.widen_to_along(offset / apart, apart / kWindowSigmas);
+  }
+}
 
 Eigen::Matrix3d reset_covariance(const Eigen::Matrix3d& spread, double cell_m, double max_sigma_m,
                                  double min_yaw_sigma_rad) {
@@ -49,7 +65,7 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
   if (scan.t_s + 1e-9 < next_match_s_) return local_ok;
   next_match_s_ = scan.t_s + p_.global_match_period_s;
   if (!matcher_) matcher_.emplace(map_, p_.matcher);
-  const MatchWindow window{std::clamp(3.0 * sigma, 0.5, p_.global_match_max_window_m),
+  const MatchWindow window{std::clamp(kWindowSigmas * sigma, 0.5, p_.global_match_max_window_m),
                            std::clamp(3.0 * ekf_.yaw_sigma_rad(), 0.05, M_PI)};
   const int returns = valid_returns(scan);
   if (returns < p_.global_match_min_returns) return local_ok;  // open ground: nothing to match
@@ -87,8 +103,9 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
     // near-best poses: in the directions they agree on, not in those they leave open. (Seen:
     // the matcher's best pose within 0.2 m of the truth for 10 s beside a wall's end while the
     // estimate, 2.5 m off after open ground, went on blind and the episode failed.)
-    if (m->score >= p_.matcher.min_score && confirmed(agree))
-      ekf_.update_pose(m->pose, m->spread, kPoseGateChi2);
+    if (m->score >= p_.matcher.min_score && confirmed(agree) &&
+        ekf_.update_pose(m->pose, m->spread, kPoseGateChi2))
+      keep_look_alikes_in_window(*m);
     return ekf_.position_sigma_m() <= p_.local_update_max_sigma_m;
   }
   unmatched_ = !placed;

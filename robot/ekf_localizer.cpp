@@ -131,6 +131,13 @@ void EkfLocalizer::widen(double position_sigma_m, double yaw_sigma_rad) {
   P_(2, 2) += yaw_sigma_rad * yaw_sigma_rad;
 }
 
+void EkfLocalizer::widen_to_along(const Eigen::Vector2d& direction, double sigma_m) {
+  const double variance = direction.dot(P_.topLeftCorner<2, 2>() * direction);
+  if (variance >= sigma_m * sigma_m) return;
+  P_.topLeftCorner<2, 2>() += (sigma_m * sigma_m - variance) * direction * direction.transpose();
+  update_health();
+}
+
 namespace {
 
 // Yaw is compared with positions at this lever arm: a yaw error of 1 rad moves a point this far

@@ -93,6 +93,9 @@ class EkfLocalizer {
   /// Widens the position and heading uncertainty (independent additions): after the robot was
   /// moved by something its encoders cannot see, so that the scans can pull the estimate there.
   void widen(double position_sigma_m, double yaw_sigma_rad);
+  /// Widens the position's spread along `direction` (unit) until its sigma there is at least
+  /// `sigma_m`.
+  void widen_to_along(const Eigen::Vector2d& direction, double sigma_m);
   double yaw_sigma_rad() const { return std::sqrt(P_(2, 2)); }
   double gyro_bias_radps() const { return x_(3); }
   /// The range noise the filter uses: the larger of the told and the learnt (1-sigma, m).
