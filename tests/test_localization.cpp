@@ -634,6 +634,32 @@ TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
               r.localization_status.c_str());
 }
 
+// The record of the one episode a scenario of one world, one fault and one seed runs, through
+// the batch (as a user reruns one): `faults_and_seed` is the scenario's text from `faults:` on.
+nlohmann::json run_one_scenario_episode(const std::string& name, const std::string& world,
+                                        const std::string& faults_and_seed) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("plantsim_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "s.yaml") << "name: " << name << "\nworlds: ["
+                                << test::source_file("data/worlds/generated/styles/" + world)
+                                << "]\nplanners: [vg]\n"
+                                << faults_and_seed;
+  batch::RunOptions o;
+  o.out_dir = (dir / "out").string();
+  o.progress = false;
+  o.figures = false;
+  o.threads = 1;
+  batch::run_batch((dir / "s.yaml").string(), o);
+  std::ifstream in(dir / "out" / "episodes.jsonl");
+  std::string line;
+  std::getline(in, line);
+  fs::remove_all(dir);
+  return line.empty() ? nlohmann::json() : nlohmann::json::parse(line);
+}
+
 // A tuning-set episode (yard_s3, six boxes the map lacks, a wet floor, start 22): after open
 // ground the estimate's spread had grown to 0.7 m while it stayed 7 cm from the truth; coming up
 // to a box the map lacks, the returns from it were counted against every pose (the map has no
@@ -642,29 +668,13 @@ TEST(Localization, ASparsePlantIsCrossedWithoutGivingUpAndNeverOkWhenFarOff) {
 // as one short of a mapped surface is; and an estimate that reads what the map predicts is not
 // contradicted, even when no single place fits the scan.
 TEST(Localization, BoxesTheMapLacksInAnOpenYardDoNotMakeARightEstimateLost) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("plantsim_yard_boxes_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << "name: yard_boxes\nworlds: ["
-                                << test::source_file("data/worlds/generated/styles/yard_s3.json")
-                                << "]\nplanners: [vg]\nfaults:\n  unmapped6_wet: "
-                                   "{unmapped_obstacles: 6, drive: {tyre_friction: 0.1}}\n"
-                                   "seeds: [22]\n";
-  batch::RunOptions o;
-  o.out_dir = (dir / "out").string();
-  o.progress = false;
-  o.figures = false;
-  o.threads = 1;
-  batch::run_batch((dir / "s.yaml").string(), o);
-  std::ifstream in(dir / "out" / "episodes.jsonl");
-  std::string line;
-  ASSERT_TRUE(std::getline(in, line));
-  const auto j = nlohmann::json::parse(line);
-  EXPECT_TRUE(j["succeeded"].get<bool>()) << line.substr(0, 400);
+  const nlohmann::json j = run_one_scenario_episode(
+      "yard_boxes", "yard_s3.json",
+      "faults:\n  unmapped6_wet: {unmapped_obstacles: 6, drive: {tyre_friction: 0.1}}\n"
+      "seeds: [22]\n");
+  ASSERT_FALSE(j.is_null());
+  EXPECT_TRUE(j["succeeded"].get<bool>()) << j.dump().substr(0, 400);
   EXPECT_EQ(j["collisions"].get<int>(), 0);
-  fs::remove_all(dir);
 }
 
 // A tuning-set episode (yard_s3, very wet, every noise doubled, the robot untold, seed 1): lost 8 m
@@ -672,37 +682,22 @@ TEST(Localization, BoxesTheMapLacksInAnOpenYardDoNotMakeARightEstimateLost) {
 // match repeated every period, each time as if new, while the window shrank with the estimate
 // until the look-alikes left it; it then reported itself ok there for 101 s and failed.
 TEST(Localization, AnAmbiguousMatchRepeatedDoesNotBecomeCertainty) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::temp_directory_path() / ("plantsim_yard_alike_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml")
-      << "name: yard_alike\nworlds: ["
-      << test::source_file("data/worlds/generated/styles/yard_s3.json")
-      << "]\nplanners: [vg]\nfaults:\n  very_wet_noise2x_untold:\n"
-         "    drive: {tyre_friction: 0.05}\n"
-         "    odometry: {wheel_speed_noise: 0.04, left_scale_error: 0.006, right_scale_error: "
-         "-0.006}\n"
-         "    lidar: {range_noise_m: 0.06, dropout_probability: 0.1}\n"
-         "    imu: {yaw_rate_noise_radps: 0.012, bias_radps: 0.012}\n"
-         "    detection: {position_noise_m: 0.01, yaw_noise_rad: 0.01, false_negative_probability: "
-         "0.6, outlier_probability: 0.06, latency_s: 0.4}\n"
-         "seeds: [1]\n";
-  batch::RunOptions o;
-  o.out_dir = (dir / "out").string();
-  o.progress = false;
-  o.figures = false;
-  o.threads = 1;
-  batch::run_batch((dir / "s.yaml").string(), o);
-  std::ifstream in(dir / "out" / "episodes.jsonl");
-  std::string line;
-  ASSERT_TRUE(std::getline(in, line));
-  const auto j = nlohmann::json::parse(line);
-  EXPECT_TRUE(j["succeeded"].get<bool>()) << line.substr(0, 400);
+  const nlohmann::json j =
+      run_one_scenario_episode("yard_alike", "yard_s3.json",
+                               "faults:\n  very_wet_noise2x_untold:\n"
+                               "    drive: {tyre_friction: 0.05}\n"
+                               "    odometry: {wheel_speed_noise: 0.04, left_scale_error: 0.006, "
+                               "right_scale_error: -0.006}\n"
+                               "    lidar: {range_noise_m: 0.06, dropout_probability: 0.1}\n"
+                               "    imu: {yaw_rate_noise_radps: 0.012, bias_radps: 0.012}\n"
+                               "    detection: {position_noise_m: 0.01, yaw_noise_rad: 0.01, "
+                               "false_negative_probability: 0.6,"
+                               " outlier_probability: 0.06, latency_s: 0.4}\n"
+                               "seeds: [1]\n");
+  ASSERT_FALSE(j.is_null());
+  EXPECT_TRUE(j["succeeded"].get<bool>()) << j.dump().substr(0, 400);
   // Never ok while more than 0.10 m off for longer than a blink.
-  EXPECT_LT(j["ok_while_off_s"].get<double>(), 1.0) << line.substr(0, 400);
-  fs::remove_all(dir);
+  EXPECT_LT(j["ok_while_off_s"].get<double>(), 1.0) << j.dump().substr(0, 400);
 }
 
 TEST(Localization, EncoderNoiseAloneDoesNotPassForSlip) {
