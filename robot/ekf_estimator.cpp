@@ -111,7 +111,8 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
   unmatched_ = !placed;
   if (unmatched_) {
     // Returns, but no place that fits them alone: search wider next time.
-    if (!local_ok && 3.0 * sigma < p_.global_match_max_window_m) ekf_.widen(0.5 * sigma, 0.0);
+    if (!local_ok && kWindowSigmas * sigma < p_.global_match_max_window_m)
+      ekf_.widen(0.5 * sigma, 0.0);
     return local_ok;
   }
   // The spread of the poses that fit about as well, not the grid's step alone: a match on a few
