@@ -11,6 +11,7 @@
 #include "controller/docking.h"
 #include "controller/potential_field.h"
 #include "controller/traction.h"
+#include "robot/coastal_route.h"
 #include "robot/lost_search.h"
 #include "robot/perception.h"
 #include "sim/physics_world.h"
@@ -60,6 +61,7 @@ struct EpisodeConfig {
   controller::PotentialFieldParams field;
   double catch_distance_m = 0.1;         ///< a moving target is caught this close (edge to edge)
   robot::LostSearchParams lost_search;   ///< path travel: driving to find a view while lost
+  robot::CoastalParams coastal;          ///< path travel, sensors: routes keeping surfaces in sight
   double pursuit_replan_period_s = 1.0;  ///< path travel: plan to the target's position this often
   /// What the charger's pads accept as docked ("tolerance.*"); their travel and width are the
   /// plant's charger's, set when the episode starts.

@@ -74,6 +74,7 @@ const std::vector<Field>& table() {
     util::append_rows_of_part(t, robot::layer_param_rows(), PLANTSIM_PART(perception.layer));
     util::append_rows_of_part(t, robot::particle_param_rows(), PLANTSIM_PART(perception.particles));
     util::append_rows_of_part(t, robot::lost_search_param_rows(), PLANTSIM_PART(lost_search));
+    util::append_rows_of_part(t, robot::coastal_param_rows(), PLANTSIM_PART(coastal));
     t.push_back(PLANTSIM_PARAM_ABOVE("", timeout_s, "timeout_s", 0.0, 86400.0));
     return t;
   }();

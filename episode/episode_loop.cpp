@@ -52,11 +52,15 @@ std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Pl
                                            const EpisodeConfig& config,
                                            const planner::PlanResult& plan,
                                            const EpisodeSteering& steering, EpisodeResult& r) {
-  robot::TravelSettings settings{config.tracking, config.docking, config.field,
-                                 config.pursuit_replan_period_s, config.lost_search};
+  robot::TravelSettings settings{config.tracking,    config.docking,
+                                 config.field,       config.pursuit_replan_period_s,
+                                 config.lost_search, config.coastal};
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
   settings.docking.guard.footprint_radius_m = map.robot.radius_m;
   settings.map_planner = &planner;  // replans add what is sensed on top of its graph
+  // The datasheet's range, not the plant's lidar: what the robot side may know of its sensor.
+  if (config.perception.mode == robot::PerceptionMode::kSensors)
+    settings.lidar_range_m = config.lidar.max_range_m;
   const std::vector<Vec2> first_path = plan.status != planner::PlanStatus::kOk
                                            ? std::vector<Vec2>{map.start.position(), plan_goal(map)}
                                        : plan.drive_path.empty() ? plan.path

@@ -67,14 +67,10 @@ bool arc_enters_open_rect(Vec2 c, double radius, double from, double sweep, cons
          crosses_horizontal(e.ymax);
 }
 
-}  // namespace
-
-double distance_to_rect(Vec2 p, const Rect& r) { return distance(p, closest_point(r, p)); }
-
-double segment_rect_distance(Vec2 p, Vec2 q, const Rect& r) {
-  // Liang-Barsky: does the segment meet the closed rectangle?
+// The closed parameter interval of the segment p + t d, t in [0, 1], inside the closed rectangle
+// (Liang-Barsky); empty (lo > hi) when they do not meet.
+std::pair<double, double> span_in_rect(Vec2 p, Vec2 d, const Rect& r) {
   double t0 = 0, t1 = 1;
-  const Vec2 d = q - p;
   auto clip = [&](double denom, double num) {  // keeps t with denom * t <= num
     if (denom == 0) return num >= 0;
     const double t = num / denom;
@@ -86,7 +82,48 @@ double segment_rect_distance(Vec2 p, Vec2 q, const Rect& r) {
   };
   if (clip(-d.x, p.x - r.xmin) && clip(d.x, r.xmax - p.x) && clip(-d.y, p.y - r.ymin) &&
       clip(d.y, r.ymax - p.y))
-    return 0;
+    return {t0, t1};
+  return {1, 0};
+}
+
+// The same inside the closed disk (c, radius): |p + t d - c|^2 <= radius^2.
+std::pair<double, double> span_in_disk(Vec2 p, Vec2 d, Vec2 c, double radius) {
+  const Vec2 f = p - c;
+  const double a = dot(d, d), b = dot(f, d), k = dot(f, f) - radius * radius;
+  if (a == 0) return k <= 0 ? std::pair{0.0, 1.0} : std::pair{1.0, 0.0};
+  const double disc = b * b - a * k;
+  if (disc < 0) return {1, 0};
+  const double root = std::sqrt(disc);
+  return {std::max(0.0, (-b - root) / a), std::min(1.0, (-b + root) / a)};
+}
+
+}  // namespace
+
+std::optional<std::pair<double, double>> segment_span_within(Vec2 p, Vec2 q, const Rect& r,
+                                                             double d) {
+  // The grown rectangle is the union of two rectangles and four disks; the union of their spans
+  // is one interval because the grown rectangle is convex.
+  const Vec2 v = q - p;
+  double lo = 2, hi = -1;
+  auto take = [&](std::pair<double, double> s) {
+    if (s.first > s.second) return;
+    lo = std::min(lo, s.first);
+    hi = std::max(hi, s.second);
+  };
+  take(span_in_rect(p, v, {r.xmin - d, r.ymin, r.xmax + d, r.ymax}));
+  take(span_in_rect(p, v, {r.xmin, r.ymin - d, r.xmax, r.ymax + d}));
+  for (Vec2 k :
+       {Vec2{r.xmin, r.ymin}, Vec2{r.xmax, r.ymin}, Vec2{r.xmax, r.ymax}, Vec2{r.xmin, r.ymax}})
+    take(span_in_disk(p, v, k, d));
+  if (lo > hi) return std::nullopt;
+  return std::pair{lo, hi};
+}
+
+double distance_to_rect(Vec2 p, const Rect& r) { return distance(p, closest_point(r, p)); }
+
+double segment_rect_distance(Vec2 p, Vec2 q, const Rect& r) {
+  const Vec2 d = q - p;
+  if (const auto [t0, t1] = span_in_rect(p, d, r); t0 <= t1) return 0;  // they meet
   // Apart, a convex rectangle and a segment are nearest at an endpoint of one of them.
   double best = std::min(distance_to_rect(p, r), distance_to_rect(q, r));
   const double dd = dot(d, d);

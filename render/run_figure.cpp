@@ -44,6 +44,9 @@ std::string length_line(const episode::EpisodeResult& run) {
     std::snprintf(buf, sizeof buf, " (final plan %.2f m after %d replan%s)",
                   geom::polyline_length(run.plan), run.replans, run.replans == 1 ? "" : "s");
     line += buf;
+  } else if (run.plan != run.first_plan) {  // the robot's own route from the start
+    std::snprintf(buf, sizeof buf, " (coastal route %.2f m)", geom::polyline_length(run.plan));
+    line += buf;
   }
   std::snprintf(buf, sizeof buf, ", driven %.2f m", run.driven_length_m);
   return line + buf;
@@ -227,10 +230,15 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
   if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps))
     legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
   // The plans over the driven path, thin, so that neither hides the other.
-  const bool replanned = run.replans > 0 && run.plan != run.first_plan;
-  listed(replanned && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan),
+  // Changed without a replan: the coastal route the robot chose over the planner's path.
+  const bool changed = run.plan != run.first_plan;
+  const bool replanned = changed && run.replans > 0;
+  listed(changed && draw_dashed(c, run.first_plan, 1.6, 7.0, palette::kFirstPlan),
          palette::kFirstPlan, "first plan", Swatch::kDashed);
-  listed(draw_plan(c, run.plan, palette::kPlan), palette::kPlan, replanned ? "final plan" : "plan");
+  listed(draw_plan(c, run.plan, palette::kPlan), palette::kPlan,
+         replanned ? "final plan"
+         : changed ? "coastal route"
+                   : "plan");
   const auto [scan, scan_off] = draw_scan(c, run.last_scan);
   listed(scan, palette::kScan, "last scan");
   listed(scan_off, palette::kScanOffMap, "scan off map");

@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plantsim::robot {
 
@@ -53,6 +54,32 @@ Eigen::Matrix3d reset_covariance(const Eigen::Matrix3d& spread, double cell_m, d
       es.eigenvectors() * variances.asDiagonal() * es.eigenvectors().transpose();
   covariance(2, 2) = std::max(spread(2, 2), min_yaw_sigma_rad * min_yaw_sigma_rad);
   return covariance;
+}
+
+void EkfEstimator::place(const ScanMatch& m) {
+  // A match the estimate already holds within its uncertainty is evidence to fuse, not a place
+  // to restart from: a restart forgets what the estimate knew along the directions the scan
+  // leaves nearly open (seen on a tuning yard: lost by its spread alone, 1 cm off, the robot was
+  // restarted 0.29 m off by a match on a lone wall at 12 m and drove 160 s along it that far
+  // off, reporting itself degraded, not lost). The match's spread is floored at the grid's cell,
+  // not capped: where it is open, the estimate keeps its own.
+  if (ekf_.update_pose(
+          m.pose,
+          reset_covariance(m.spread, matcher_->resolution_m(),
+                           std::numeric_limits<double>::infinity(), kResetMinYawSigmaRad),
+          kPoseGateChi2))
+    return;
+  // The spread of the poses that fit about as well, not the grid's step alone: a match on a few
+  // returns can sit cells off, mostly along what it leaves open, and a heading a degree off
+  // held at a third of that sends the robot across open ground sideways (seen on a sparse
+  // plant, very wet: a reset 0.16 m off at a 0.1 m sigma, the robot then driving up to 0.9 m
+  // off). The position's spread is capped below the sigma at which the filter would call
+  // itself lost or match again: a wider one would only repeat the match, scan after scan.
+  ekf_.reset(m.pose,
+             reset_covariance(m.spread, matcher_->resolution_m(),
+                              kResetSigmaShare * std::min(p_.global_match_sigma_m, lost_sigma_m_),
+                              kResetMinYawSigmaRad));
+  ++relocalizations_;
 }
 
 bool EkfEstimator::relocalize(const LidarScan& scan) {
@@ -115,17 +142,7 @@ bool EkfEstimator::relocalize(const LidarScan& scan) {
       ekf_.widen(0.5 * sigma, 0.0);
     return local_ok;
   }
-  // The spread of the poses that fit about as well, not the grid's step alone: a match on a few
-  // returns can sit cells off, mostly along what it leaves open, and a heading a degree off
-  // held at a third of that sends the robot across open ground sideways (seen on a sparse
-  // plant, very wet: a reset 0.16 m off at a 0.1 m sigma, the robot then driving up to 0.9 m
-  // off). The position's spread is capped below the sigma at which the filter would call
-  // itself lost or match again: a wider one would only repeat the match, scan after scan.
-  ekf_.reset(m->pose,
-             reset_covariance(m->spread, matcher_->resolution_m(),
-                              kResetSigmaShare * std::min(p_.global_match_sigma_m, lost_sigma_m_),
-                              kResetMinYawSigmaRad));
-  ++relocalizations_;
+  place(*m);
   return true;  // the local update refines the match
 }
 

@@ -52,6 +52,8 @@ class EkfEstimator final : public PoseEstimator {
  private:
   /// Wide estimate: match the scan globally; true when the filter may also update locally.
   bool relocalize(const LidarScan& scan);
+  /// A confirmed, unambiguous match: fused when the estimate holds it, else a restart there.
+  void place(const ScanMatch& m);
   /// After an ambiguous match's update: the estimate kept wide enough that the next window
   /// still holds the places the scan fitted about as well.
   void keep_look_alikes_in_window(const ScanMatch& m);

@@ -117,6 +117,17 @@ const util::ParamRows<LostSearchParams>& lost_search_param_rows() {
   };
   return rows;
 }
+const util::ParamRows<CoastalParams>& coastal_param_rows() {
+  static const util::ParamRows<CoastalParams> rows = {
+      PLANTSIM_PARAM_ABOVE("coastal", sight_fraction, "sight_fraction", 0.0, 1.0),
+      PLANTSIM_PARAM("coastal", activate_blind_m, "activate_blind_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("coastal", blind_scale_m, "blind_scale_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("coastal", node_spacing_m, "node_spacing_m", 0.1, kMaxParameter),
+      PLANTSIM_PARAM("coastal", max_nodes, "max_nodes", 2, 100000),
+      PLANTSIM_PARAM("coastal", enabled, "enabled", 0, 1),
+  };
+  return rows;
+}
 const util::ParamRows<PerceptionParams>& perception_param_rows() {
   static const util::ParamRows<PerceptionParams> rows = [] {
     util::ParamRows<PerceptionParams> own = {

@@ -3,6 +3,7 @@
 // Defaults live in each struct; the episode's configuration takes these rows over as they are.
 #pragma once
 
+#include "robot/coastal_route.h"
 #include "robot/ekf_localizer.h"
 #include "robot/global_match.h"
 #include "robot/local_obstacle_layer.h"
@@ -20,6 +21,7 @@ const util::ParamRows<TrackerParams>& tracker_param_rows();         ///< "tracke
 const util::ParamRows<ObstacleLayerParams>& layer_param_rows();     ///< "layer"
 const util::ParamRows<ParticleParams>& particle_param_rows();       ///< "particles"
 const util::ParamRows<LostSearchParams>& lost_search_param_rows();  ///< "lost_search"
+const util::ParamRows<CoastalParams>& coastal_param_rows();         ///< "coastal"
 /// "perception": perception's own thresholds and its global match's (not its parts with
 /// sections of their own, above).
 const util::ParamRows<PerceptionParams>& perception_param_rows();

@@ -9,16 +9,32 @@
 
 namespace plantsim::robot {
 
+namespace {
+
+double sensed_extra_m(const worlds::World& map, const controller::DockingParams& docking) {
+  return std::max(0.0, docking.guard.safety_margin_m - map.inflation_margin_m) + 0.05;
+}
+
+}  // namespace
+
+std::vector<geom::Rect> sensed_blocks(const worlds::World& map,
+                                      const controller::DockingParams& docking,
+                                      const std::vector<controller::MovingBox>& seen) {
+  const double grow = sensed_extra_m(map, docking) + map.planning_inflation_m();
+  std::vector<geom::Rect> added;
+  added.reserve(seen.size());
+  for (const auto& b : seen) added.push_back(b.box.inflated(grow));
+  return added;
+}
+
 std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
                                                    const std::string& planner_name,
                                                    const controller::DockingParams& docking,
                                                    const geom::Pose2& from, geom::Vec2 to,
                                                    const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner) {
-  const double extra = std::max(0.0, docking.guard.safety_margin_m - map.inflation_margin_m) + 0.05;
-  std::vector<geom::Rect> added;
-  added.reserve(seen.size());
-  for (const auto& b : seen) added.push_back(b.box.inflated(extra + map.planning_inflation_m()));
+  const double extra = sensed_extra_m(map, docking);
+  const std::vector<geom::Rect> added = sensed_blocks(map, docking, seen);
   const std::optional<planner::PlanResult> around =
       map_planner ? map_planner->plan_around_added(added, from.position(), to) : std::nullopt;
   if (around) {

@@ -13,6 +13,7 @@
 #include "controller/docking.h"
 #include "controller/potential_field.h"
 #include "planner/planner.h"
+#include "robot/coastal_route.h"
 #include "robot/failure.h"
 #include "robot/lost_search.h"
 #include "robot/perception.h"
@@ -26,6 +27,8 @@ struct TravelSettings {
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
   LostSearchParams lost_search;  ///< driving to find a recognisable view while lost
+  CoastalParams coastal;         ///< path travel: routes that keep surfaces in the lidar's sight
+  double lidar_range_m = 0;      ///< the lidar's datasheet range (0: no lidar, no coastal route)
   /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
   /// is never rebuilt: the sensed obstacles are added on top, planner/vg/vg_overlay.h).
   const planner::Planner* map_planner = nullptr;
@@ -68,6 +71,11 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
                                                    const geom::Pose2& from, geom::Vec2 to,
                                                    const std::vector<controller::MovingBox>& seen,
                                                    const planner::Planner* map_planner = nullptr);
+
+/// What the robot has sensed, grown as plan_around grows it for the planner.
+std::vector<geom::Rect> sensed_blocks(const worlds::World& map,
+                                      const controller::DockingParams& docking,
+                                      const std::vector<controller::MovingBox>& seen);
 
 /// The docking controller's input from a perception.
 controller::DockingInput docking_input(const Perception& p);

@@ -5,16 +5,24 @@
 namespace plantsim::robot {
 namespace {
 
+std::vector<geom::Vec2> coastal(const worlds::World& map, const TravelSettings& s,
+                                const std::vector<geom::Vec2>& path,
+                                const std::vector<geom::Rect>& blocked = {}) {
+  return coastal_route(map, path, s.lidar_range_m, s.coastal, blocked);
+}
+
 class PathTravel : public Travel {
  public:
+  /// `replaced`: the route when it is not the planner's path (the figures draw what it drives).
   PathTravel(const worlds::World& map, std::string planner_name, const TravelSettings& s,
-             std::vector<geom::Vec2> path)
+             std::vector<geom::Vec2> path, std::vector<geom::Vec2> replaced)
       : map_(map),
         planner_(std::move(planner_name)),
         s_(s),
-        control_(s.tracking, s.docking, std::move(path), map.charger),
+        control_(s.tracking, s.docking, path, map.charger),
         search_(s.lost_search, s.docking.guard.footprint_radius_m),
-        staging_(worlds::staging_pose(map).position()) {}
+        staging_(worlds::staging_pose(map).position()),
+        plan_(std::move(replaced)) {}
 
   Decision decide(const Perception& p) override {
     controller::DockingCommand cmd = control_.step(docking_input(p));
@@ -25,8 +33,8 @@ class PathTravel : public Travel {
       next_try_s_ = p.t_s + 1.0;
       if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles,
                                   s_.map_planner)) {
-        control_.replace_path(*path);
-        plan_ = std::move(*path);
+        plan_ = coastal(map_, s_, *path, sensed_blocks(map_, s_.docking, p.obstacles));
+        control_.replace_path(plan_);
         need_plan_ = false;
       }
       if (need_plan_) {  // no way yet: wait
@@ -41,8 +49,8 @@ class PathTravel : public Travel {
       // if the robot stands inside their margin.
       if (auto path = plan_around(map_, planner_, s_.docking, p.pose, staging_, p.obstacles,
                                   s_.map_planner)) {
-        control_.replace_path(*path);
-        plan_ = std::move(*path);
+        plan_ = coastal(map_, s_, *path, sensed_blocks(map_, s_.docking, p.obstacles));
+        control_.replace_path(plan_);
         ++replans_;
         replanned = true;
       }
@@ -89,7 +97,9 @@ class PathTravel : public Travel {
 
 std::unique_ptr<Travel> make_path_travel(const worlds::World& map, const std::string& planner_name,
                                          const TravelSettings& s, std::vector<geom::Vec2> path) {
-  return std::make_unique<PathTravel>(map, planner_name, s, std::move(path));
+  std::vector<geom::Vec2> route = coastal(map, s, path);
+  std::vector<geom::Vec2> replaced = route != path ? route : std::vector<geom::Vec2>{};
+  return std::make_unique<PathTravel>(map, planner_name, s, std::move(route), std::move(replaced));
 }
 
 }  // namespace plantsim::robot

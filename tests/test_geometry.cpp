@@ -5,6 +5,7 @@
 #include <random>
 
 #include "geometry/bounded_atan2.h"
+#include "geometry/clearance.h"
 #include "geometry/predicates.h"
 
 namespace plantsim::geom {
@@ -115,3 +116,54 @@ TEST(BoundedAtan2, WithinItsBoundOfLibmEverywhere) {
     for (double x : {0.0, -0.0, 1.0, -1.0, 1e-300}) check(y, x);
   EXPECT_GT(worst, 0.0);  // an approximation, not libm itself
 }
+
+namespace plantsim::geom {
+namespace {
+
+// The part of a segment within a distance of a rectangle: one interval, against a dense sampling
+// of the segment's points by their exact distance.
+TEST(SegmentSpanWithin, MatchesSampledDistancesOnRandomSegments) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-20.0, 20.0);
+  const Rect r{-3, -1, 4, 2};
+  const double d = 5.0;
+  int met = 0, missed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec2 p{u(rng), u(rng)}, q{u(rng), u(rng)};
+    const auto span = segment_span_within(p, q, r, d);
+    constexpr int kSamples = 4000;
+    double lo = 2, hi = -1;
+    for (int k = 0; k <= kSamples; ++k) {
+      const double t = static_cast<double>(k) / kSamples;
+      if (distance_to_rect(p + t * (q - p), r) <= d) lo = std::min(lo, t), hi = std::max(hi, t);
+    }
+    if (lo > hi) {
+      // No sample within d: the span, if any, is shorter than two samples.
+      if (span) {
+        EXPECT_LT(span->second - span->first, 2.0 / kSamples);
+      }
+      ++missed;
+      continue;
+    }
+    ASSERT_TRUE(span.has_value());
+    EXPECT_NEAR(span->first, lo, 1.0 / kSamples);
+    EXPECT_NEAR(span->second, hi, 1.0 / kSamples);
+    // Its ends are at distance d (or are the segment's own ends).
+    for (const double t : {span->first, span->second})
+      if (t > 0 && t < 1) {
+        EXPECT_NEAR(distance_to_rect(p + t * (q - p), r), d, 1e-9);
+      }
+    ++met;
+  }
+  EXPECT_GT(met, 50);
+  EXPECT_GT(missed, 20);
+  // Along a side at 3 m, past the ends of the side: the corners' disks decide.
+  const auto along = segment_span_within({-10, 2 + 3}, {10, 2 + 3}, r, d);
+  ASSERT_TRUE(along.has_value());
+  const double reach = std::sqrt(d * d - 3.0 * 3.0);  // 4 m past either end of the top side
+  EXPECT_NEAR(along->first, (-3 - reach + 10) / 20.0, 1e-12);
+  EXPECT_NEAR(along->second, (4 + reach + 10) / 20.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace plantsim::geom
