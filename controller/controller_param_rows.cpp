@@ -81,6 +81,7 @@ const util::ParamRows<TractionParams>& traction_param_rows() {
       PLANTSIM_PARAM("traction", recover_per_s, "recover_per_s", 0.0, 10.0),
       PLANTSIM_PARAM("traction", creep_mps, "creep_mps", 0.0, 10.0),
       PLANTSIM_PARAM("traction", creep_radps, "creep_radps", 0.0, 10.0),
+      PLANTSIM_PARAM("traction", full_grip_accel_mps2, "full_grip_accel_mps2", 0.0, kMaxParameter),
       PLANTSIM_PARAM("traction", enabled, "enabled", 0, 1),
   };
   return rows;

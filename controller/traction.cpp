@@ -27,7 +27,12 @@ Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s) {
     scale_ = std::min(1.0, scale_ + p_.recover_per_s * dt_s);
   }
   // Full grip (no slip seen, or recovered): the motors' own limits are the robot's.
-  if (scale_ >= 1.0) return last_ = wanted;
+  if (scale_ >= 1.0) {
+    Twist out = wanted;
+    if (p_.full_grip_accel_mps2 > 0 && wanted.v_mps > 0 && last_.v_mps >= 0)
+      out.v_mps = ramp(last_.v_mps, wanted.v_mps, p_.full_grip_accel_mps2 * dt_s);
+    return last_ = out;
+  }
   // Speed and turn rate scaled together (the path's curvature stays), never below a creep:
   // a docking approach must still arrive.
   auto scaled = [&](double x, double creep) {

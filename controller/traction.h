@@ -21,6 +21,10 @@ struct TractionParams {
   double recover_per_s = 0.03;            ///< scale regained per second without slip
   double creep_mps = 0.1;  ///< speeds up to this are never scaled down (docking, pressing)
   double creep_radps = 0.3;
+  /// At full grip forward speed grows at most this fast (0: the motors' limit); reversing, to
+  /// yield, keeps the motors' limit. The robot cannot know the floor's grip before its wheels
+  /// spin, and a spin while driving straight along a lone wall is seen by nothing it has.
+  double full_grip_accel_mps2 = 0.0;
 };
 
 class TractionGovernor {

@@ -8,6 +8,7 @@
 #include "controller/diff_drive.h"
 #include "controller/docking.h"
 #include "controller/pure_pursuit.h"
+#include "controller/traction.h"
 
 namespace plantsim::controller {
 namespace {
@@ -347,6 +348,30 @@ TEST(YieldPolicy, OnlyWhatMovesThreatensAndOnlyPersonSizedBystandersHold) {
   EXPECT_FALSE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, fixture));
   const std::vector<MovingBox> charger = {{{3.2, -0.2, 3.4, 0.2}, {0, 0}}};
   EXPECT_FALSE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, charger));
+}
+
+// At full grip the governor passes the twist through unless `full_grip_accel_mps2` is set; then
+// forward speed grows at most that fast (a soft start: on a floor of friction 0.05 a set-off at
+// the motors' 1 m/s^2 spins the wheels, unseen along a lone wall), while braking and reversing
+// to yield keep the motors' limits.
+TEST(Traction, AFullGripAccelerationLimitRampsForwardSpeedOnly) {
+  const double dt = 0.05;
+  TractionGovernor passing({});
+  EXPECT_DOUBLE_EQ(passing.limit({0.6, 0.2}, false, dt).v_mps, 0.6);
+  TractionParams soft;
+  soft.full_grip_accel_mps2 = 0.3;
+  TractionGovernor governor(soft);
+  double v = 0;
+  for (int k = 1; k <= 40; ++k) {
+    const Twist out = governor.limit({0.6, 0.2}, false, dt);
+    EXPECT_NEAR(out.v_mps, std::min(0.6, 0.3 * dt * k), 1e-12);
+    EXPECT_DOUBLE_EQ(out.omega_radps, 0.2);  // turning is not limited at full grip
+    v = out.v_mps;
+  }
+  EXPECT_DOUBLE_EQ(v, 0.6);
+  EXPECT_DOUBLE_EQ(governor.limit({0.0, 0.0}, false, dt).v_mps, 0.0);    // braking: at once
+  EXPECT_DOUBLE_EQ(governor.limit({-0.5, 0.0}, false, dt).v_mps, -0.5);  // yielding: at once
+  EXPECT_EQ(governor.slips(), 0);
 }
 
 }  // namespace
