@@ -1,8 +1,9 @@
 // Driving within the grip the floor gives. The robot does not know the floor's friction; it
 // knows when its wheels slip (perception compares the encoders with the gyro and the scan).
 // The governor sits between the travel mode and the motors. Until a slip is seen it passes the
-// twist through (the motors' limits are the robot's); each slip scales the speed down and
-// limits how fast the commanded twist may grow (acceleration, turn-in-place) to the scaled
+// twist through (the motors' limits are the robot's) but for a soft start of forward speed,
+// because the first spin on an unknown floor is the one nothing sees; each slip scales the speed
+// down and limits how fast the commanded twist may grow (acceleration, turn-in-place) to the scaled
 // limits; they recover slowly while no slip is seen. Braking is never limited: stopping
 // for an obstacle always gets the motors' full deceleration. Pure: no physics, no truth.
 #pragma once
@@ -24,7 +25,7 @@ struct TractionParams {
   /// At full grip forward speed grows at most this fast (0: the motors' limit); reversing, to
   /// yield, keeps the motors' limit. The robot cannot know the floor's grip before its wheels
   /// spin, and a spin while driving straight along a lone wall is seen by nothing it has.
-  double full_grip_accel_mps2 = 0.0;
+  double full_grip_accel_mps2 = 0.3;
 };
 
 class TractionGovernor {

@@ -39,6 +39,9 @@ robot::PerceptionParams perception_params(const EpisodeConfig& c) {
 controller::TractionParams traction_params(const EpisodeConfig& c, const worlds::World& plant) {
   controller::TractionParams t = c.traction;
   t.max_accel_mps2 = std::min(t.max_accel_mps2, plant.robot.max_accel_mps2);
+  // Seed 001's field drives as its document's robot does, at the motors' limit: its pursuit
+  // stops and sets off in every local minimum, and a soft start there is not the method.
+  if (c.travel == TravelMode::kPotentialField) t.full_grip_accel_mps2 = 0.0;
   return t;
 }
 

@@ -14,9 +14,9 @@ bool draw_tried_walks(GlCanvas& c, const std::vector<std::vector<Vec2>>& walks) 
   bool drawn = false;
   const double px = 1.0 / c.transform().scale;
   for (std::size_t k = 0; k < walks.size(); ++k) {
-    // Walks share their first corridors: each is moved 2.5 px more along the diagonal.
-    const double shift =
-        2.5 * (static_cast<double>(k) - 0.5 * static_cast<double>(walks.size() - 1)) * px;
+    // Walks share their first corridors and the route drawn over them: each lies beside the
+    // route, 4 px off along the diagonal, and 2.5 px beyond the walk before it.
+    const double shift = (4.0 + 2.5 * static_cast<double>(k)) * px;
     std::vector<Vec2> moved;
     moved.reserve(walks[k].size());
     for (const Vec2& p : walks[k]) moved.push_back(p + Vec2{shift, -shift});

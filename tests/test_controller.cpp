@@ -350,17 +350,17 @@ TEST(YieldPolicy, OnlyWhatMovesThreatensAndOnlyPersonSizedBystandersHold) {
   EXPECT_FALSE(bystander_near_corridor(p, {0, 0}, {3, 0}, {3.3, 0}, 0.35, charger));
 }
 
-// At full grip the governor passes the twist through unless `full_grip_accel_mps2` is set; then
-// forward speed grows at most that fast (a soft start: on a floor of friction 0.05 a set-off at
-// the motors' 1 m/s^2 spins the wheels, unseen along a lone wall), while braking and reversing
-// to yield keep the motors' limits.
+// At full grip forward speed grows at most `full_grip_accel_mps2` (0.3 m/s^2 by default; 0 passes
+// the twist through). A soft start: on a floor of friction 0.05 a set-off at the motors' 1 m/s^2
+// spins the wheels, unseen along a lone wall. Braking and reversing to yield keep the motors'
+// limits.
 TEST(Traction, AFullGripAccelerationLimitRampsForwardSpeedOnly) {
   const double dt = 0.05;
-  TractionGovernor passing({});
+  TractionParams motors_limit;
+  motors_limit.full_grip_accel_mps2 = 0.0;
+  TractionGovernor passing(motors_limit);
   EXPECT_DOUBLE_EQ(passing.limit({0.6, 0.2}, false, dt).v_mps, 0.6);
-  TractionParams soft;
-  soft.full_grip_accel_mps2 = 0.3;
-  TractionGovernor governor(soft);
+  TractionGovernor governor({});  // the default: 0.3 m/s^2
   double v = 0;
   for (int k = 1; k <= 40; ++k) {
     const Twist out = governor.limit({0.6, 0.2}, false, dt);
