@@ -1,5 +1,6 @@
 // `plantsim plan WORLD`: plan from the world's start to its charger and print JSON.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -40,7 +41,7 @@ int plan_scenarios(const std::string& map_path, const std::string& scen_path,
     in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
     in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
     in.inflation_m = 0;
-    in.landmarks = landmarks;
+    if (landmarks > 0) in.options.set("landmarks", landmarks);
     in.search_budget_bytes = search_budget_bytes;
     vg = planner::make_planner(planner_name, in);
   }
@@ -76,6 +77,7 @@ struct PlanOptions {
   std::string inflation = "square";
   bool snap = false;
   int landmarks = 0;
+  std::vector<std::string> family_options;  ///< NAME=VALUE, the planner family's own
   int search_memory_mb = static_cast<int>(planner::kSearchMemoryBudgetBytes >> 20);
   std::string map, scen, goal;
 };
@@ -122,6 +124,10 @@ void add_plan_options(CLI::App* cmd, PlanOptions& o) {
                       std::to_string(planner::kSearchMemoryBudgetBytes >> 20) + ")")
       ->transform(decimal_whole_number())
       ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--option", o.family_options,
+                  "NAME=VALUE: an option of the planner's family (grid: resolution_m; gcr, "
+                  "gcr-shortcut: step_m; interval, polyanya: landmarks); repeatable; one the "
+                  "family does not take is refused (docs/planners.md#options)");
   cmd->add_flag("--snap", o.snap,
                 "Move a blocked start or charger to the nearest free point (reported)");
   cmd->add_option("--planner", o.planner, "Planner name")
@@ -172,7 +178,16 @@ int plan_world(PlanOptions& o) {
   planner::PlannerInput input = planner::planner_input(world, coverage);
   input.corner_steps = o.corner_steps;
   input.snap_to_free = o.snap;
-  input.landmarks = o.landmarks;
+  if (o.landmarks > 0) input.options.set("landmarks", o.landmarks);
+  for (const std::string& given : o.family_options) {
+    const std::size_t eq = given.find('=');
+    char* end = nullptr;
+    const double value = eq == std::string::npos ? 0 : std::strtod(given.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || eq == 0 || end == given.c_str() + eq + 1 || *end != '\0')
+      throw std::invalid_argument("plan: --option takes NAME=VALUE with a number, not '" + given +
+                                  "'");
+    input.options.set(given.substr(0, eq), value);
+  }
   input.search_budget_bytes = static_cast<std::size_t>(o.search_memory_mb) << 20;
   if (o.inflate >= 0) input.inflation_m = o.inflate;
   if (o.inflation == "round") {

@@ -135,7 +135,8 @@ int run_anyangle_cases(const std::string& shared_data, bool quick) {
           Method{"interval_16_landmarks", "interval", 16}, Method{"polyanya", "polyanya", 0},
           Method{"polyanya_16_landmarks", "polyanya", 16}}) {
       const std::string method = m.label;
-      in.landmarks = m.landmarks;
+      in.options = {};
+      if (m.landmarks > 0) in.options.set("landmarks", m.landmarks);
       reset_peak_memory();
       const double before = current_memory_mb().value_or(0);
       const auto t0 = Clock::now();

@@ -14,6 +14,7 @@
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "planner/vg/vg_overlay.h"
+#include "planner/vg/vg_planner.h"
 #include "render/png_io.h"
 #include "render/scaling_chart.h"
 #include "worlds/random_plant.h"
@@ -273,13 +274,13 @@ int run_planner_bench(const std::string& shared_data, bool quick, const std::str
     FirstQuery fast;
     if (!bench_first_queries(nw, reps, quick, !chart_png.empty(), curves, previous_first, fast))
       return 1;
-    auto p = planner::make_planner("vg", planner::planner_input(nw.world, false));
-    bench_later_queries(nw, *p, fast, quick);
-    const auto* vg = dynamic_cast<const planner::VisibilityGraphPlanner*>(p.get());
-    const planner::PlanResult way = p->plan(nw.world.start.position(), nw.world.charger.position());
-    if (!vg || way.status != planner::PlanStatus::kOk || way.path.size() < 2) continue;
-    if (!bench_replans_around_boxes(nw, *vg, way, reps) ||
-        !bench_replan_removed(nw, *vg, way, reps))
+    // The later queries and the replans are the visibility graph's own (its warm graph, its
+    // overlay, its changes), so it is built as itself, not through the registry.
+    planner::VisibilityGraphPlanner vg(planner::planner_input(nw.world, false));
+    bench_later_queries(nw, vg, fast, quick);
+    const planner::PlanResult way = vg.plan(nw.world.start.position(), nw.world.charger.position());
+    if (way.status != planner::PlanStatus::kOk || way.path.size() < 2) continue;
+    if (!bench_replans_around_boxes(nw, vg, way, reps) || !bench_replan_removed(nw, vg, way, reps))
       return 1;
   }
   const int anyangle = run_anyangle_cases(shared_data, quick);

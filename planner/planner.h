@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
+#include "planner/planner_options.h"
 #include "planner/search_budget.h"
 #include "worlds/world.h"
 
@@ -66,19 +67,19 @@ struct PlanResult {
   PlanTrace trace;             ///< for figures
 };
 
-/// What a planner is built from: raw obstacles, the floor, and the clearance to inflate by.
+/// What a planner is built from: the map (raw obstacles, the floor, a maze world's tunnel
+/// lattice), how to grow it for the robot, and the options of the chosen family by name.
 struct PlannerInput {
   Rect floor;
-  std::vector<Rect> obstacles;     ///< raw (not yet inflated)
-  double inflation_m = 0.3;        ///< applied to obstacles and walls
-  int corner_steps = 1;            ///< 1: square corners (the document); more: tighter staircase
-  double grid_resolution_m = 0.1;  ///< cell size of the grid baseline
-  bool snap_to_free = false;       ///< move a blocked start or goal to the nearest free point
-  int landmarks = 0;               ///< planner interval: landmarks for its ALT heuristic (0: none)
-  /// vg, interval, polyanya: a query whose search holds more stops (kSearchLimit)
+  std::vector<Rect> obstacles;  ///< raw (not yet inflated)
+  double inflation_m = 0.3;     ///< applied to obstacles and walls
+  int corner_steps = 1;         ///< 1: square corners (the document); more: tighter staircase
+  bool snap_to_free = false;    ///< move a blocked start or goal to the nearest free point
+  /// A searching planner (vg, interval, polyanya): a query whose search holds more stops
+  /// (kSearchLimit); the others search within their own bounds.
   std::size_t search_budget_bytes = kSearchMemoryBudgetBytes;
-  double gcr_step_m = 0.1;                 ///< step of the gradient / coordinate-rotation walk
-  std::optional<worlds::TunnelMaze> maze;  ///< the tunnel lattice of a maze world (seed 003)
+  std::optional<worlds::TunnelMaze> maze;  ///< map data: the tunnel lattice of a maze world
+  PlannerOptions options;                  ///< the family's own (registry: planner_option_specs)
 };
 
 /// The world's obstacles, optionally with the charger body as one more obstacle.

@@ -15,8 +15,12 @@ namespace plantsim::planner {
 /// Names accepted by make_planner, in the order reports list them.
 std::vector<std::string> planner_names();
 
-/// Builds the named planner; throws std::invalid_argument for an unknown name. Coverage planners
-/// get seed 004's default parameters (CoveragePlanner takes others).
+/// The options the named planner's family takes (empty for most); throws for an unknown name.
+std::vector<OptionSpec> planner_option_specs(std::string_view name);
+
+/// Builds the named planner; throws std::invalid_argument for an unknown name or an option its
+/// family does not take. Coverage planners get seed 004's default parameters (CoveragePlanner
+/// takes others).
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input);
 
 }  // namespace plantsim::planner

@@ -360,6 +360,30 @@ TEST_F(Cli, PlanWithTheIntervalPlannerAndLandmarks) {
   EXPECT_NE(o.err.find("(at most "), std::string::npos) << o.err;
 }
 
+// A family's own options by name (--option NAME=VALUE): the grid's resolution reaches the grid
+// (a coarser one, fewer cells); an option of another family, a value out of bounds or no
+// number is refused with exit 2 and nothing on stdout.
+TEST_F(Cli, PlanTakesAFamilysOptionsByNameAndRefusesOthers) {
+  const std::string world = test::source_file("data/worlds/plants/desulfurization_plant.json");
+  Outcome o = run("plan " + world + " --planner grid");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto fine = nlohmann::json::parse(o.out);
+  o = run("plan " + world + " --planner grid --option resolution_m=0.2");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const auto coarse = nlohmann::json::parse(o.out);
+  EXPECT_GT(fine["stats"]["vertices"].get<double>(), 3 * coarse["stats"]["vertices"].get<double>());
+  for (const auto& [extra, says] : std::vector<std::pair<std::string, std::string>>{
+           {"--planner vg --option landmarks=2", "planner vg: takes no option 'landmarks'"},
+           {"--planner grid --option resolution_m=-1", "must be from 0.001 to 100"},
+           {"--planner polyanya --option landmarks=2.5", "a whole number"},
+           {"--planner gcr --option step_m=x", "NAME=VALUE with a number"}}) {
+    o = run("plan " + world + " " + extra);
+    EXPECT_EQ(o.exit_code, 2) << extra << o.err;
+    EXPECT_TRUE(o.out.empty()) << extra << o.out;
+    EXPECT_NE(o.err.find(says), std::string::npos) << extra << o.err;
+  }
+}
+
 // A search past its memory budget (--search-memory-mb) ends with status "search limit", the
 // reason in the note, and exit 1; with the default budget the same query is answered.
 TEST_F(Cli, PlanPastTheSearchMemoryBudgetFailsWithItsReason) {

@@ -23,7 +23,7 @@ std::unique_ptr<planner::Planner> anyangle_planner(const worlds::GridMap& map,
   in.floor = {0, 0, static_cast<double>(map.width), static_cast<double>(map.height)};
   in.obstacles = worlds::merge_blocked_cells(map, worlds::blocked_for_anyangle);
   in.inflation_m = 0;
-  in.landmarks = landmarks;
+  if (landmarks > 0) in.options.set("landmarks", landmarks);
   return planner::make_planner(method, in);
 }
 

@@ -210,7 +210,7 @@ TEST(RandomWorlds, IntervalSearchMatchesTheVisibilityGraph) {
     auto vg = make_planner("vg", in);
     auto interval = make_planner("interval", in);
     PlannerInput with_landmarks = in;
-    with_landmarks.landmarks = 1 + world % 4;
+    with_landmarks.options.set("landmarks", 1 + world % 4);
     auto alt = make_planner("interval", with_landmarks);
     auto polyanya = make_planner("polyanya", world % 3 ? in : with_landmarks);
     for (int q = 0; q < 8; ++q) {
@@ -260,7 +260,7 @@ TEST(RandomWorlds, IntervalSearchMatchesOnALargePlantAndRefusesBadEnds) {
   auto vg = make_planner("vg", in);
   auto interval = make_planner("interval", in);
   PlannerInput with_landmarks = in;
-  with_landmarks.landmarks = 2;
+  with_landmarks.options.set("landmarks", 2);
   auto alt = make_planner("interval", with_landmarks);
   auto polyanya = make_planner("polyanya", in);
   std::mt19937_64 rng(5);
@@ -346,7 +346,7 @@ TEST(RandomWorlds, LandmarksPastTheBudgetAreRefusedWithTheMostThatFit) {
       planner_input(worlds::random_plant(worlds::as_dense_as_n1000(15000, 6000)), false);
   const std::size_t cells = IntervalPlanner(in).mesh().cells().size();
   ASSERT_GT(64 * cells, kLandmarkCellBudget) << "the plant must be big enough to pass the budget";
-  in.landmarks = 64;
+  in.options.set("landmarks", 64);
   try {
     IntervalPlanner refused(in);
     FAIL() << "64 landmarks over " << cells << " cells were accepted";

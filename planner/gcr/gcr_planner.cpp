@@ -15,10 +15,14 @@
 namespace plantsim::planner {
 using geom::polyline_length;
 
+std::vector<OptionSpec> gcr_planner_options() {
+  return {{"step_m", 0.1, 1e-3, 10.0, false, "the walk's unit step, metres"}};
+}
+
 GcrPlanner::GcrPlanner(const PlannerInput& input, bool shortcut_pass)
     : map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
            input.inflation_m),
-      step_m_(input.gcr_step_m),
+      step_m_(input.options.get(gcr_planner_options()[0])),
       shortcut_pass_(shortcut_pass) {}
 
 Vec2 GcrPlanner::gradient_step(Vec2 p, Vec2 goal, double unit) {

@@ -23,6 +23,9 @@
 
 namespace plantsim::planner {
 
+/// The gcr family's options: `step_m`, the walk's unit step (0.1 m).
+std::vector<OptionSpec> gcr_planner_options();
+
 class GcrPlanner : public Planner {
  public:
   /// `shortcut_pass`: plantsim's variant ("gcr-shortcut"): an extra shortcut pass after the

@@ -48,8 +48,12 @@ GridSearchResult grid_astar(int width, int height, const std::function<bool(int,
   return out;
 }
 
-GridPlanner::GridPlanner(const PlannerInput& input, double resolution_m)
-    : resolution_(resolution_m) {
+std::vector<OptionSpec> grid_planner_options() {
+  return {{"resolution_m", 0.1, 1e-3, 100.0, false, "the cells' size, metres"}};
+}
+
+GridPlanner::GridPlanner(const PlannerInput& input)
+    : resolution_(input.options.get(grid_planner_options()[0])) {
   const auto t0 = std::chrono::steady_clock::now();
   free_floor_ = input.floor.inflated(-input.inflation_m);
   origin_ = {input.floor.xmin, input.floor.ymin};

@@ -23,12 +23,15 @@ struct GridSearchResult {
 GridSearchResult grid_astar(int width, int height, const std::function<bool(int, int)>& free,
                             int sx, int sy, int gx, int gy);
 
-/// Planner "grid": cells of `grid_resolution_m` (default 0.1 m); a cell is blocked when it
-/// overlaps an inflated obstacle's interior or lies outside the free floor; the path runs
-/// from the start through cell centres to the goal.
+/// The grid family's options: `resolution_m`, the cells' size (0.1 m).
+std::vector<OptionSpec> grid_planner_options();
+
+/// Planner "grid": cells of option `resolution_m`; a cell is blocked when it overlaps an
+/// inflated obstacle's interior or lies outside the free floor; the path runs from the start
+/// through cell centres to the goal.
 class GridPlanner : public Planner {
  public:
-  explicit GridPlanner(const PlannerInput& input, double resolution_m = 0.1);
+  explicit GridPlanner(const PlannerInput& input);
   std::string name() const override { return "grid"; }
   PlanResult plan(Vec2 start, Vec2 goal) override;
 

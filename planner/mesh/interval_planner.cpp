@@ -32,24 +32,28 @@ void IntervalPlanner::check_landmark_budget(int landmarks, std::size_t cells) co
                                 std::to_string(kLandmarkCellBudget / cells) + " here)");
 }
 
+std::vector<OptionSpec> mesh_planner_options() {
+  return {{"landmarks", 0, 0, 64, true, "landmarks of the ALT heuristic, 0 for none"}};
+}
+
 IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
     : build_start_(std::chrono::steady_clock::now()),
       map_(inflate(input.obstacles, input.inflation_m, input.corner_steps), input.floor,
            input.inflation_m),
       snap_(input.snap_to_free),
       budget_bytes_(input.search_budget_bytes) {
-  if (input.landmarks < 0 || input.landmarks > 64)
-    throw std::invalid_argument(
-        std::string(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval") +
-        ": landmarks must be 0 to 64, not " + std::to_string(input.landmarks));
+  const std::vector<OptionSpec> options = mesh_planner_options();
+  check_options(kind == MeshKind::kConvexPolygons ? "polyanya" : "interval", input.options,
+                options);
+  const int landmarks = input.options.get_int(options[0]);
   mesh_ = std::make_unique<FreeSpaceMesh>(map_.rects(), map_.free_floor());
   if (kind == MeshKind::kConvexPolygons) {
     // Both sweeps have the same walls, so the polygons do not depend on which one is cut.
     convex_ = std::make_unique<ConvexMesh>(*mesh_);
     polygon_search_ = std::make_unique<PolygonSearch>(*convex_);
     polygon_search_->set_memory_budget(budget_bytes_);
-    check_landmark_budget(input.landmarks, static_cast<std::size_t>(convex_->polygon_count()));
-    polygon_search_->add_landmarks(input.landmarks);
+    check_landmark_budget(landmarks, static_cast<std::size_t>(convex_->polygon_count()));
+    polygon_search_->add_landmarks(landmarks);
     build_ms_ = util::ms_since(build_start_);
     return;
   }
@@ -63,8 +67,8 @@ IntervalPlanner::IntervalPlanner(const PlannerInput& input, MeshKind kind)
   }
   search_ = std::make_unique<IntervalSearch>(*mesh_);
   search_->set_memory_budget(budget_bytes_);
-  check_landmark_budget(input.landmarks, mesh_->cells().size());
-  search_->add_landmarks(input.landmarks);
+  check_landmark_budget(landmarks, mesh_->cells().size());
+  search_->add_landmarks(landmarks);
   build_ms_ = util::ms_since(build_start_);
 }
 

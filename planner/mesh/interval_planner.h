@@ -28,6 +28,9 @@ inline constexpr std::size_t kLandmarkCellBudget = 2'000'000;
 
 enum class MeshKind { kRectangles, kConvexPolygons };
 
+/// The mesh family's options (interval, polyanya): `landmarks`, 0 to 64, for the ALT heuristic.
+std::vector<OptionSpec> mesh_planner_options();
+
 class IntervalPlanner : public Planner {
  public:
   explicit IntervalPlanner(const PlannerInput& input, MeshKind kind = MeshKind::kRectangles);
