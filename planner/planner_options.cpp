@@ -20,7 +20,10 @@ double PlannerOptions::get(const OptionSpec& spec) const {
 
 void check_options(std::string_view planner, const PlannerOptions& options,
                    const std::vector<OptionSpec>& specs) {
-  for (const auto& [name, value] : options.given()) {
+  for (const auto& given : options.given()) {
+    // Not a structured binding: clang 14 (the sanitizer build's) cannot capture one.
+    const std::string& name = given.first;
+    const double value = given.second;
     const auto spec = std::find_if(specs.begin(), specs.end(),
                                    [&](const OptionSpec& s) { return s.name == name; });
     std::ostringstream why;
