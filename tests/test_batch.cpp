@@ -236,13 +236,17 @@ namespace {
 // and, refined a few centimetres a scan, could not climb out when the wall's end came into view;
 // particles drawn about it every third scan restarted the confirmation until the robot gave up
 // with its estimate 1 cm off. The place now moves onto the estimate that fits clearly better,
-// and the robot docks with no integrity breach.
+// and the robot docks with no integrity breach. The case was recorded with the robot setting off
+// at the motors' limit (before the soft start, traction.full_grip_accel_mps2): a later set-off
+// moves the kidnap's moment, and the landing with it (in the sanitizer build to a place the
+// search found only at 184 s, past the time a lost robot has), so the test keeps that limit.
 TEST_F(BatchFiles, AKidnappedParticleFilterConfirmsItsPlaceAtAYardsCorner) {
   const std::string scenario =
       write("yard.yaml", "name: yard_kidnap\nworlds: [" +
                              test::source_file("data/worlds/generated/styles/yard_s2.json") +
                              "]\nplanners: [vg]\ncontrollers:\n  particles: {localization: "
-                             "{estimator: particles}}\nfaults:\n  kidnap: {random_kidnap: "
+                             "{estimator: particles}, traction: {full_grip_accel_mps2: 0}}\n"
+                             "faults:\n  kidnap: {random_kidnap: "
                              "{after_s: [10, 60], distance_m: [3, 10]}}\nseeds: 4\n");
   const ReplayedEpisode e = replay_batch_episode(scenario, "yard_s2|vg|particles|kidnap|4");
   const episode::EpisodeResult& r = e.result;
