@@ -67,7 +67,7 @@ BeamCost beam_cost(const worlds::World& w, const episode::EpisodeResult& e,
   for (std::size_t i = 0; i < e.trajectory.size(); i += stride)
     poses.push_back(e.trajectory[i].truth);
   std::vector<geom::Vec2> directions(static_cast<std::size_t>(n));
-  std::vector<std::optional<sim::RayHit>> hits;
+  std::vector<double> hits;
   double checksum = 0;  // keeps the casts from being optimised away; compared below
   BeamCost cost;
   for (int pass = 0; pass < 2; ++pass) {
@@ -80,7 +80,7 @@ BeamCost beam_cost(const worlds::World& w, const episode::EpisodeResult& e,
       if (pass == 0) {
         physics.ray_fan(p.position(), directions, p.yaw + first, increment, lidar.max_range_m,
                         hits);
-        for (const auto& h : hits) sum += h ? h->range_m : 0.0;
+        for (const double h : hits) sum += std::isfinite(h) ? h : 0.0;
       } else {
         for (const geom::Vec2& d : directions)
           if (const auto h =

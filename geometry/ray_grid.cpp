@@ -96,17 +96,27 @@ void RayGrid::cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) co
   j1 = floor_within((q.ymax - area_.ymin) / cell_, 0L, ny_ - 1);
 }
 
+namespace {
+// Just beyond a ray's reach: a hit at t counts when t < this (t <= max_range_m).
+double beyond_reach(double max_range_m) {
+  return std::nextafter(max_range_m, std::numeric_limits<double>::infinity());
+}
+}  // namespace
+
 std::optional<RayGridHit> RayGrid::cast(Vec2 origin, Vec2 direction, double max_range_m) const {
-  std::optional<RayGridHit> best;
-  if (bounds_.empty() || !(max_range_m > 0)) return best;
-  walk(origin, direction, max_range_m, next_query(), 0, best);
-  return best;
+  if (bounds_.empty() || !(max_range_m > 0)) return std::nullopt;
+  double range = beyond_reach(max_range_m);
+  Vec2 normal;
+  int box = -1;
+  walk(origin, direction, max_range_m, next_query(), 0, {range, normal, box});
+  if (box < 0) return std::nullopt;
+  return RayGridHit{range, normal, box};
 }
 
 void RayGrid::walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_t query,
-                   std::uint32_t done_query, std::optional<RayGridHit>& best) const {
+                   std::uint32_t done_query, Best best, double t_from) const {
   // Clip the ray to the grid's extent; a ray that misses it hits nothing.
-  double t = 0, t_end = max_range_m;
+  double t = t_from, t_end = max_range_m;
   {
     const double lo[2] = {area_.xmin, area_.ymin}, hi[2] = {area_.xmax, area_.ymax};
     const double org[2] = {origin.x, origin.y}, dir[2] = {direction.x, direction.y};
@@ -147,13 +157,12 @@ void RayGrid::walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_
       stamp = query;
       double t;
       Vec2 normal;
-      if (enter(k, origin, direction, t, normal) && t <= max_range_m &&
-          (!best || t < best->range_m))
-        best = RayGridHit{t, normal, k};
+      if (enter(k, origin, direction, t, normal) && t < best.range_m)
+        best.range_m = t, best.normal = normal, best.box = k;
     }
     const double cell_exit = std::min(next_x, next_y);
     // A hit within this cell is nearer than anything a later cell can hold.
-    if ((best && best->range_m <= cell_exit) || cell_exit > t_end) break;
+    if ((best.box >= 0 && best.range_m <= cell_exit) || cell_exit > t_end) break;
     if (next_x < next_y) {
       i += step_i;
       next_x += delta_x;
@@ -254,7 +263,10 @@ struct RayGrid::Fan {
   Vec2 origin;
   std::span<const Vec2> directions;
   double first_angle, increment, max_range_m;
-  std::vector<std::optional<RayGridHit>>& hits;
+  double* range;  // the hits' arrays (FanHits), each ray's best so far
+  Vec2* normal;
+  int* box;
+  long ci, cj;  // the origin's cell, the rings' centre
   long n;
   bool spread;  // rays spaced evenly by angle: a box is tried only on those its extent covers
   double last;  // the last ray's angle from the first
@@ -283,24 +295,24 @@ void RayGrid::fan_try_box(Fan& fan, int box) const {
   if (nearest > fan.max_range_m) return;
   const bool is_rect = static_cast<std::size_t>(box) < rects_.size();
   const SeenFaces seen(is_rect ? rects_[static_cast<std::size_t>(box)] : b, o);
-  // A box no nearer than a ray's hit cannot change it. An inner ray certainly enters the box.
+  // A box no nearer than a ray's hit cannot change it (a ray with none holds a range beyond its
+  // reach, so that one test asks both). An inner ray certainly enters the box.
+  double* const range = fan.range;
+  const Vec2* const directions = fan.directions.data();
   auto try_ray = [&](long r, bool inner) {
-    auto& best = fan.hits[static_cast<std::size_t>(r)];
-    if (best && best->range_m <= nearest) return;
-    const Vec2 d = fan.directions[static_cast<std::size_t>(r)];
+    const double best = range[r];
+    if (best <= nearest) return;
+    const Vec2 d = directions[r];
     double t;
     Vec2 normal;
     if (inner)
       seen.enter(o, d, t, normal);
     else if (!enter(box, o, d, t, normal))
       return;
-    if (t > fan.max_range_m || (best && t >= best->range_m)) return;
-    // Field by field: a whole RayGridHit built aside and copied in stalled on store forwarding
-    // (a fifth of the fan's time).
-    if (!best) best.emplace();
-    best->range_m = t;
-    best->normal = normal;
-    best->box = box;
+    if (!(t < best)) return;
+    range[r] = t;
+    fan.normal[r] = normal;
+    fan.box[r] = box;
   };
   const auto extent = fan.spread ? angular_extent(box, o) : std::nullopt;
   if (!extent) {
@@ -358,28 +370,37 @@ bool RayGrid::fan_settled_before_ring(Fan& fan, long k) const {
     for (long r = 0; r < fan.n; ++r) open[static_cast<std::size_t>(r)] = r;
     fan.open_listed = true;
   }
-  std::erase_if(open, [&](long r) {
-    const auto& h = fan.hits[static_cast<std::size_t>(r)];
-    return h && h->range_m <= ring_near;
-  });
+  std::erase_if(open, [&](long r) { return fan.box[r] >= 0 && fan.range[r] <= ring_near; });
   if (open.empty()) return true;
   if (static_cast<long>(open.size()) * kBoxesPerOpenRay >= fan.unvisited) return false;
   // Each open ray walks on from what the fan found, past the boxes the fan has tried (on every
-  // ray their extent covers; a box outside a ray's extent cannot meet it).
+  // ray their extent covers; a box outside a ray's extent cannot meet it): from where it leaves
+  // the square of cells the rings have visited, since every box in them has been tried.
+  const Vec2 o = fan.origin;
+  const double visited_lo[2] = {area_.xmin + static_cast<double>(fan.ci - k + 1) * cell_,
+                                area_.ymin + static_cast<double>(fan.cj - k + 1) * cell_};
+  const double visited_hi[2] = {area_.xmin + static_cast<double>(fan.ci + k) * cell_,
+                                area_.ymin + static_cast<double>(fan.cj + k) * cell_};
   for (long r : open) {
     const std::uint32_t query = next_query();
     if (query <= fan.query) fan.query = 0;  // the stamps wrapped: the fan's marks are gone
-    walk(fan.origin, fan.directions[static_cast<std::size_t>(r)], fan.max_range_m, query, fan.query,
-         fan.hits[static_cast<std::size_t>(r)]);
+    const Vec2 d = fan.directions[static_cast<std::size_t>(r)];
+    double leaves = std::numeric_limits<double>::infinity();
+    if (d.x != 0) leaves = ((d.x > 0 ? visited_hi[0] : visited_lo[0]) - o.x) / d.x;
+    if (d.y != 0)
+      leaves = std::min(leaves, ((d.y > 0 ? visited_hi[1] : visited_lo[1]) - o.y) / d.y);
+    walk(o, d, fan.max_range_m, query, fan.query, {fan.range[r], fan.normal[r], fan.box[r]},
+         std::max(0.0, leaves));
   }
   return true;
 }
 
 void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle,
-                       double increment, double max_range_m,
-                       std::vector<std::optional<RayGridHit>>& hits) const {
+                       double increment, double max_range_m, FanHits& hits) const {
   const long n = static_cast<long>(directions.size());
-  hits.assign(directions.size(), std::nullopt);
+  hits.range_m.assign(directions.size(), beyond_reach(max_range_m));
+  hits.normal.resize(directions.size());
+  hits.box.assign(directions.size(), -1);
   if (bounds_.empty() || !(max_range_m > 0) || n == 0) return;
   // Each box within reach, once, against the rays whose angles its extent covers; cells in rings
   // about the origin's, near to far, so that a ray's hit is usually known before the boxes
@@ -395,9 +416,19 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
   cells_of({origin.x, origin.y, origin.x, origin.y}, ci, unused_i, cj, unused_j);
   const bool spread =
       n > 1 && increment > 0 && std::isfinite(increment) && std::isfinite(first_angle);
-  Fan fan{origin,      directions,  first_angle,
-          increment,   max_range_m, hits,
-          n,           spread,      static_cast<double>(n - 1) * increment,
+  Fan fan{origin,
+          directions,
+          first_angle,
+          increment,
+          max_range_m,
+          hits.range_m.data(),
+          hits.normal.data(),
+          hits.box.data(),
+          ci,
+          cj,
+          n,
+          spread,
+          static_cast<double>(n - 1) * increment,
           next_query()};
   for (long j = j0; j <= j1; ++j)
     fan.unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] -

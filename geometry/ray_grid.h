@@ -70,6 +70,17 @@ inline std::optional<std::pair<double, Vec2>> ray_enters_rect(const Rect& r, Vec
   return std::pair{t, normal};
 }
 
+/// A fan's answers as parallel arrays, one entry per ray: box -1 where the ray meets nothing
+/// within its range (range_m then holds no distance). Arrays, not optionals: the fan tests a
+/// box's rays in a tight loop that reads and writes a ray's range alone.
+struct FanHits {
+  std::vector<double> range_m;  ///< along the ray's unit direction from the origin
+  std::vector<Vec2> normal;     ///< unit, out of the face hit
+  std::vector<int> box;         ///< as RayGridHit::box, or -1
+  bool hit(std::size_t k) const { return box[k] >= 0; }
+  std::size_t size() const { return box.size(); }
+};
+
 class RayGrid {
  public:
   /// `cell_m` 0: chosen from the boxes' number and extent (a few per cell; at most max_cells).
@@ -85,7 +96,7 @@ class RayGrid {
   /// rays still open once most boxes are settled walk on alone from what the fan found, past
   /// the boxes it tried: a lidar scan without a walk per beam.
   void cast_fan(Vec2 origin, std::span<const Vec2> directions, double first_angle, double increment,
-                double max_range_m, std::vector<std::optional<RayGridHit>>& hits) const;
+                double max_range_m, FanHits& hits) const;
   /// True when some box comes within `margin_m` per axis of `p` (its bounding box, for oriented
   /// ones).
   bool near(Vec2 p, double margin_m) const;
@@ -101,11 +112,19 @@ class RayGrid {
   /// inside.
   bool enter(int i, Vec2 origin, Vec2 direction, double& t, Vec2& normal) const;
 
+  /// The best hit of one ray so far: box -1 for none, with `range_m` then just beyond the ray's
+  /// reach, so that one comparison (t < range_m) asks both "within reach" and "nearer".
+  struct Best {
+    double& range_m;
+    Vec2& normal;
+    int& box;
+  };
   /// The cells the ray crosses, near to far, each box in them tested once (stamped `query`)
   /// unless stamped `done_query` (nonzero: tested before on this ray's direction), until no
-  /// later cell can hold a hit nearer than `best`, which it updates.
+  /// later cell can hold a hit nearer than `best`, which it updates. Cells the ray crosses
+  /// before `t_from` are passed over (their boxes all tried).
   void walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_t query,
-            std::uint32_t done_query, std::optional<RayGridHit>& best) const;
+            std::uint32_t done_query, Best best, double t_from = 0) const;
   /// The cells [i0, i1] x [j0, j1] that `q` overlaps, clamped to the grid.
   void cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) const;
   /// A fresh stamp for a query that must visit each box once.

@@ -164,6 +164,10 @@ class EkfLocalizer {
   std::vector<std::pair<double, double>> residuals_;
   double r_var_ = 0;                     // the range variance of the scan being matched
   mutable std::vector<double> scratch_;  // post_fit_variance's
+  // position_sigma_m's last answer and the position block it was computed from: it is asked
+  // several times a control step between changes of the covariance.
+  mutable double sigma_of_[4] = {-1, -1, -1, -1};
+  mutable double sigma_ = 0;
   const MapRaycaster& map_;
   State x_;
   Covariance P_;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "robot/near_rasters.h"
+
 namespace plantsim::robot {
 
 MapRaycaster::MapRaycaster(const worlds::World& map) : surfaces_(map) {}
@@ -26,12 +28,8 @@ const geom::NearRaster& MapRaycaster::raster_for(double margin_m) const {
                   near_.begin() + static_cast<std::ptrdiff_t>(i) + 1);  // to the front
       return *near_.front();
     }
-  const geom::Rect& a = surfaces_.grid().area();
-  const geom::Rect area{a.xmin - margin_m, a.ymin - margin_m, a.xmax + margin_m, a.ymax + margin_m};
   if (near_.size() == kRasters) near_.pop_back();
-  near_.insert(near_.begin(),
-               std::make_unique<geom::NearRaster>(surfaces_.grid().bounds(), margin_m, area,
-                                                  std::max(0.05, 0.5 * margin_m)));
+  near_.insert(near_.begin(), shared_near_raster(surfaces_.grid(), margin_m));
   return *near_.front();
 }
 

@@ -63,10 +63,11 @@ class MapRaycaster {
 
  private:
   worlds::SurfaceGrid surfaces_;
-  // One raster per margin asked, built on first use (a learnt noise moves the margin between a
-  // few values), the least recently used dropped beyond kRasters.
+  // One raster per margin asked (a learnt noise moves the margin between a few values), the
+  // least recently used dropped beyond kRasters; each taken from the process's rasters of the
+  // same map and margin when another episode has built it (near_rasters.h).
   static constexpr std::size_t kRasters = 4;
-  mutable std::vector<std::unique_ptr<geom::NearRaster>> near_;
+  mutable std::vector<std::shared_ptr<const geom::NearRaster>> near_;
   const geom::NearRaster& raster_for(double margin_m) const;
 };
 

@@ -36,10 +36,8 @@ robot::LidarScan Lidar::scan(const PhysicsWorld& physics, const geom::Pose2& rob
     const double noise = params_.range_noise_m * noise_.gaussian();
     const bool dropped = noise_.uniform() < params_.dropout_probability;
     double r = no_return;
-    if (const auto& hit = hits_[i]) {
-      if (hit->range_m >= params_.min_range_m)
-        r = std::clamp(hit->range_m + noise, params_.min_range_m, params_.max_range_m);
-    }
+    if (const double hit = hits_[i]; hit >= params_.min_range_m && hit <= params_.max_range_m)
+      r = std::clamp(hit + noise, params_.min_range_m, params_.max_range_m);
     if (dropped) r = std::numeric_limits<double>::quiet_NaN();
     s.ranges[i] = r;
   }

@@ -51,7 +51,7 @@ class Lidar {
   util::RandomStream noise_;
   double next_scan_s_ = 0;
   robot::BeamDirections directions_;
-  std::vector<std::optional<worlds::RayHit>> hits_;  // likewise
+  std::vector<double> hits_;  // the fan's ranges, reused scan to scan
 };
 
 }  // namespace plantsim::sim

@@ -4,6 +4,7 @@
 #include <box2d/box2d.h>
 
 #include <cmath>
+#include <limits>
 
 #include "sim/box2d_scene.h"
 
@@ -197,19 +198,24 @@ std::optional<RayHit> PhysicsWorld::box2d_ray_cast(Vec2 from, Vec2 to) const {
 
 void PhysicsWorld::ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle,
                            double increment, double max_range_m,
-                           std::vector<std::optional<RayHit>>& hits) const {
-  surfaces_.cast_fan(from, directions, first_angle, increment, max_range_m, hits);
-  auto consider = [&](const Actor& a, SurfaceKind kind) {
+                           std::vector<double>& ranges) const {
+  const geom::FanHits& hits = surfaces_.fan(from, directions, first_angle, increment, max_range_m);
+  const std::size_t n = directions.size();
+  ranges.resize(n);
+  const double none = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < n; ++k) ranges[k] = hits.hit(k) ? hits.range_m[k] : none;
+  auto consider = [&](const Actor& a) {
     const geom::Rect box = state_of(a).box;
-    for (std::size_t k = 0; k < directions.size(); ++k) {
-      const auto e = geom::ray_enters_rect(box, from, directions[k]);
-      auto& best = hits[k];
-      if (e && e->first <= max_range_m && (!best || e->first < best->range_m))
-        best = RayHit{from + e->first * directions[k], e->second, e->first, kind};
+    for (std::size_t k = 0; k < n; ++k) {
+      double t;
+      Vec2 normal;
+      if (geom::ray_enters_rect(box, from, directions[k], t, normal) && t <= max_range_m &&
+          t < ranges[k])
+        ranges[k] = t;
     }
   };
-  for (const Actor& a : moving_) consider(a, SurfaceKind::kMoving);
-  if (target_) consider(*target_, SurfaceKind::kTarget);
+  for (const Actor& a : moving_) consider(a);
+  if (target_) consider(*target_);
 }
 
 }  // namespace plantsim::sim

@@ -70,10 +70,11 @@ class PhysicsWorld {
   /// casts are compared with in tests and `plantsim bench sim`; the sensors never use it.
   std::optional<RayHit> box2d_ray_cast(Vec2 from, Vec2 to) const;
   /// A lidar's fan: ray k from `from` along unit directions[k], whose angle is within 1e-6 rad of
-  /// first_angle + k * increment, to `max_range_m`. hits[k] has the range ray_cast finds along
-  /// that direction; the static parts are met in one pass over the boxes within reach.
+  /// first_angle + k * increment, to `max_range_m`. ranges[k] is the range ray_cast finds along
+  /// that direction, +infinity where it finds nothing (a lidar needs no more); the static parts
+  /// are met in one pass over the boxes within reach.
   void ray_fan(Vec2 from, std::span<const Vec2> directions, double first_angle, double increment,
-               double max_range_m, std::vector<std::optional<RayHit>>& hits) const;
+               double max_range_m, std::vector<double>& ranges) const;
 
   b2Body* robot_body() { return robot_; }  ///< for the drive model inside sim/
   /// Sets the robot's velocity directly (no tyre model): for baselines and tests.

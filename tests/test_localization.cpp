@@ -25,6 +25,7 @@
 #include "robot/likelihood_field.h"
 #include "robot/lost_search.h"
 #include "robot/map_raycaster.h"
+#include "robot/near_rasters.h"
 #include "robot/particle_localizer.h"
 #include "robot/place_hypotheses.h"
 #include "robot/place_refinement.h"
@@ -33,6 +34,7 @@
 #include "sim/kidnap_landing.h"
 #include "test_paths.h"
 #include "util/huge_page_block.h"
+#include "worlds/surfaces.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::sim {
@@ -233,6 +235,35 @@ TEST(LikelihoodField, SharedAmongEpisodesOnTheSameMapOnly) {
     EXPECT_EQ(b->distance(p), built.distance(p));
   EXPECT_NE(a->distance({r.xmax + 0.2, 0.5 * (r.ymin + r.ymax)}),
             b->distance({r.xmax + 0.2, 0.5 * (r.ymin + r.ymax)}));
+}
+
+// The nearness rasters likewise: two episodes' maps of one plant share a raster per margin; a
+// plant one box apart, or another margin, gets its own, which knows that box.
+TEST(MapRaycaster, NearnessRastersSharedAmongEpisodesOnTheSameMapOnly) {
+  const worlds::World w = l_room();
+  const worlds::SurfaceGrid one(w), again{worlds::World(w)};
+  const auto a = shared_near_raster(one.grid(), 0.07);
+  EXPECT_EQ(a.get(), shared_near_raster(again.grid(), 0.07).get());
+  EXPECT_NE(a.get(), shared_near_raster(one.grid(), 0.08).get());
+  worlds::World moved = w;
+  ASSERT_FALSE(moved.obstacles.empty());
+  moved.obstacles.front().xmin += 0.5;
+  moved.obstacles.front().xmax += 0.5;
+  const worlds::SurfaceGrid other(moved);
+  const auto b = shared_near_raster(other.grid(), 0.07);
+  EXPECT_NE(a.get(), b.get());
+  const geom::Rect& r = moved.obstacles.front();
+  const geom::Vec2 inside{r.xmax - 0.2, 0.5 * (r.ymin + r.ymax)};  // 0.3 m off the box unmoved
+  EXPECT_EQ(b->at(inside), geom::NearRaster::Answer::kYes);
+  EXPECT_EQ(a->at(inside), geom::NearRaster::Answer::kNo);
+  // And a raycaster's answers are the grid's, whichever episode built the raster.
+  const MapRaycaster first(w), second(w);
+  const auto near_first = first.surface_near(0.07), near_second = second.surface_near(0.07);
+  for (double x = w.floor.xmin; x <= w.floor.xmax; x += 0.13)
+    for (double y = w.floor.ymin; y <= w.floor.ymax; y += 0.17) {
+      EXPECT_EQ(near_first({x, y}), one.grid().near({x, y}, 0.07)) << x << "," << y;
+      EXPECT_EQ(near_second({x, y}), one.grid().near({x, y}, 0.07)) << x << "," << y;
+    }
 }
 
 // A correlative match's answer is a grid cell and a rotation step off; refined on the exact

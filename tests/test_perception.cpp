@@ -101,6 +101,44 @@ TEST(Lidar, MaxRangeAndDropoutRate) {
   EXPECT_NEAR(static_cast<double>(dropped) / beams, 0.3, 0.015);  // 10830 beams: sigma 0.0044
 }
 
+// A dropout never shifts the noise of the beams after it (each beam draws its noise and its
+// dropout whatever happens): the beams a dropout rate leaves keep the very ranges another rate
+// gives them. And the dropouts are independent Bernoulli draws: a dropout is followed by another
+// as often as any beam drops, and the count per scan has the binomial's spread.
+TEST(Lidar, DropoutsAreIndependentAndNeverShiftTheRangeNoise) {
+  const worlds::World w = room();
+  const PhysicsWorld physics(w);
+  LidarParams rare = exact_lidar(), frequent = exact_lidar();
+  rare.range_noise_m = frequent.range_noise_m = 0.02;
+  rare.dropout_probability = 0.02;
+  frequent.dropout_probability = 0.2;
+  Lidar a(rare, 11), b(frequent, 11);
+  long both = 0, pairs = 0, after_drop = 0, drops = 0, beams = 0;
+  double sum_sq = 0;
+  const int scans = 400;
+  for (int k = 0; k < scans; ++k) {
+    const LidarScan sa = a.scan(physics, w.start, k), sb = b.scan(physics, w.start, k);
+    int per_scan = 0;
+    for (std::size_t i = 0; i < sb.ranges.size(); ++i) {
+      if (!std::isnan(sa.ranges[i]) && !std::isnan(sb.ranges[i])) {
+        ++both;
+        ASSERT_EQ(sa.ranges[i], sb.ranges[i]) << "scan " << k << " beam " << i;
+      }
+      const bool dropped = std::isnan(sb.ranges[i]);
+      per_scan += dropped, ++beams;
+      if (i > 0 && std::isnan(sb.ranges[i - 1])) ++pairs, after_drop += dropped;
+    }
+    drops += per_scan;
+    sum_sq += (per_scan - 0.2 * 360) * (per_scan - 0.2 * 360);
+  }
+  EXPECT_GT(both, scans * 360 / 2);
+  EXPECT_NEAR(static_cast<double>(drops) / beams, 0.2, 0.004);  // 144,000 beams: sigma 0.001
+  // After a dropout the next beam drops with the same 0.2 (28,000 such beams: sigma 0.0024).
+  EXPECT_NEAR(static_cast<double>(after_drop) / pairs, 0.2, 0.012);
+  // Per scan the binomial's variance 360 x 0.2 x 0.8 = 57.6 (400 scans: within 20 %).
+  EXPECT_NEAR(sum_sq / scans, 57.6, 0.2 * 57.6);
+}
+
 // The sensors' random draws: the same seed the same stream, another seed another, and a normal
 // whose tails are a normal's (a ziggurat's tail is its delicate part: 3 and 4 sigma checked on a
 // million draws, where a wrong tail shows at many standard errors).

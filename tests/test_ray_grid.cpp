@@ -3,13 +3,20 @@
 // against Box2D's own ray casts through the physics (which work in single precision).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <iostream>
 #include <random>
+#include <string>
 
 #include "geometry/near_raster.h"
 #include "geometry/ray_grid.h"
 #include "sim/physics_world.h"
+#include "test_paths.h"
 #include "worlds/random_plant.h"
+#include "worlds/surfaces.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim::geom {
 namespace {
@@ -144,21 +151,22 @@ TEST(RayGrid, FanEqualsSingleCastsExactly) {
       std::vector<Vec2> directions;
       for (int k = 0; k < n; ++k) directions.push_back(unit_from_angle(first + k * increment));
       const double max_range = 5 + 40 * u(rng);
-      std::vector<std::optional<RayGridHit>> fanned;
+      FanHits fanned;
       grid.cast_fan(o, directions, first, increment, max_range, fanned);
       ASSERT_EQ(fanned.size(), directions.size());
       for (int k = 0; k < n; ++k) {
         const auto single = grid.cast(o, directions[static_cast<std::size_t>(k)], max_range);
-        const auto& got = fanned[static_cast<std::size_t>(k)];
+        const std::size_t got = static_cast<std::size_t>(k);
         ++rays;
-        ASSERT_EQ(single.has_value(), got.has_value())
+        ASSERT_EQ(single.has_value(), fanned.hit(got))
             << "plant " << plant << " fan " << fan << " ray " << k;
         if (single) {
           ++hits;
-          EXPECT_EQ(single->range_m, got->range_m)
+          EXPECT_EQ(single->range_m, fanned.range_m[got])
               << "plant " << plant << " fan " << fan << " ray " << k;
           // The same face: no two random boxes share one.
-          EXPECT_TRUE(single->normal.x == got->normal.x && single->normal.y == got->normal.y)
+          EXPECT_TRUE(single->normal.x == fanned.normal[got].x &&
+                      single->normal.y == fanned.normal[got].y)
               << "plant " << plant << " fan " << fan << " ray " << k;
         }
       }
@@ -224,6 +232,93 @@ TEST(RayGrid, AgreesWithBox2dThroughThePhysics) {
     EXPECT_NEAR(ours->range_m, box2d->range_m, 1e-4) << k;
   }
   EXPECT_GT(compared, 1000);
+}
+
+}  // namespace
+}  // namespace plantsim::geom
+
+namespace plantsim::geom {
+namespace {
+
+// Every world the project and its tests use (the repository's, the shared benchmarks', the ROS
+// maps and the MovingAI maps), each cast as the lidar casts it: a 360-beam fan over 270 degrees
+// and the EKF's every-sixth-beam fan, from random points of the floor (inside obstacles too),
+// the start and the charger's staging point. Each beam's range must be the single cast's within
+// 1e-9 m (it is in fact equal), and a beam hits in one where it hits in the other.
+std::vector<std::string> every_test_world() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> paths;
+  auto add = [&](const fs::path& folder, const std::string& ext, bool recursive) {
+    if (!fs::is_directory(folder)) return;
+    auto consider = [&](const fs::directory_entry& e) {
+      if (e.is_regular_file() && e.path().extension() == ext) paths.push_back(e.path().string());
+    };
+    if (recursive)
+      for (const auto& e : fs::recursive_directory_iterator(folder)) consider(e);
+    else
+      for (const auto& e : fs::directory_iterator(folder)) consider(e);
+  };
+  add(test::source_file("data/worlds"), ".json", true);
+  add(test::shared_data("worlds"), ".json", false);
+  add(test::shared_data("ros_maps"), ".yaml", false);
+  add(test::shared_data("movingai/maps"), ".map", false);
+  add(test::shared_data("anyangle"), ".map", false);
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+TEST(RayGrid, FanEqualsSingleCastsOnEveryTestWorld) {
+  const std::vector<std::string> paths = every_test_world();
+  ASSERT_GT(paths.size(), 100u);
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0, 1);
+  long beams = 0, hits = 0, worlds_cast = 0;
+  for (const std::string& path : paths) {
+    std::optional<worlds::World> w;
+    worlds::PoseOverrides poses_from;
+    if (path.ends_with(".map")) {  // a MovingAI map: its .scen's first query gives the poses
+      const std::string map_name = std::filesystem::path(path).filename().string();
+      poses_from.movingai_scen = path.find("/anyangle/") != std::string::npos
+                                     ? path.substr(0, path.size() - 4) + ".scen"
+                                     : test::shared_data("movingai/scen/" + map_name + ".scen");
+    }
+    try {
+      w = worlds::load_world(path, poses_from);
+    } catch (const worlds::WorldError& e) {
+      // Only the loaders' refusal fixtures may be refused (they are tested as such elsewhere).
+      EXPECT_NE(path.find("/invalid"), std::string::npos) << path << ": " << e.what();
+      continue;
+    }
+    ++worlds_cast;
+    const worlds::SurfaceGrid grid(*w);
+    std::vector<Pose2> poses{w->start, worlds::staging_pose(*w)};
+    for (int k = 0; k < 12; ++k)
+      poses.push_back({w->floor.xmin + w->floor.width() * u(rng),
+                       w->floor.ymin + w->floor.height() * u(rng), 2 * M_PI * u(rng)});
+    for (const Pose2& pose : poses)
+      for (const int stride : {1, 6}) {
+        const double fov = 1.5 * M_PI, increment = stride * fov / 359;
+        const double first = pose.yaw - 0.5 * fov;
+        std::vector<Vec2> directions;
+        for (int b = 0; b < 360; b += stride)
+          directions.push_back(unit_from_angle(first + (b / stride) * increment));
+        std::vector<std::optional<worlds::RayHit>> fanned;
+        grid.cast_fan(pose.position(), directions, first, increment, 20.0, fanned);
+        ASSERT_EQ(fanned.size(), directions.size());
+        for (std::size_t b = 0; b < directions.size(); ++b) {
+          const auto single = grid.cast(pose.position(), directions[b], 20.0);
+          ++beams;
+          ASSERT_EQ(single.has_value(), fanned[b].has_value()) << path << " beam " << b;
+          if (!single) continue;
+          ++hits;
+          ASSERT_NEAR(single->range_m, fanned[b]->range_m, 1e-9) << path << " beam " << b;
+        }
+      }
+  }
+  std::cout << worlds_cast << " of " << paths.size() << " worlds, " << beams << " beams, " << hits
+            << " hits\n";
+  EXPECT_GT(worlds_cast, 100);
+  EXPECT_GT(hits, beams / 2);
 }
 
 }  // namespace

@@ -41,17 +41,17 @@ void SurfaceGrid::cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directio
   hits.resize(directions.size());
   // Field by field into place: a RayHit built aside and copied in stalled on store forwarding.
   for (std::size_t k = 0; k < directions.size(); ++k) {
-    const auto& h = scratch_[k];
     auto& out = hits[k];
-    if (!h) {
+    if (!scratch_.hit(k)) {
       out.reset();
       continue;
     }
     if (!out) out.emplace();
-    out->point = from + h->range_m * directions[k];
-    out->normal = h->normal;
-    out->range_m = h->range_m;
-    out->kind = kinds_[static_cast<std::size_t>(h->box)];
+    const double range = scratch_.range_m[k];
+    out->point = from + range * directions[k];
+    out->normal = scratch_.normal[k];
+    out->range_m = range;
+    out->kind = kinds_[static_cast<std::size_t>(scratch_.box[k])];
   }
 }
 

@@ -41,12 +41,19 @@ class SurfaceGrid {
   void cast_fan(geom::Vec2 from, std::span<const geom::Vec2> directions, double first_angle,
                 double increment, double max_range_m,
                 std::vector<std::optional<RayHit>>& hits) const;
+  /// The same fan's answers as the grid gives them (ranges, normals, box indices), without
+  /// building a RayHit per ray; valid until the next fan.
+  const geom::FanHits& fan(geom::Vec2 from, std::span<const geom::Vec2> directions,
+                           double first_angle, double increment, double max_range_m) const {
+    grid_.cast_fan(from, directions, first_angle, increment, max_range_m, scratch_);
+    return scratch_;
+  }
   const geom::RayGrid& grid() const { return grid_; }
 
  private:
   geom::RayGrid grid_;
   std::vector<SurfaceKind> kinds_;  // per box, in the grid's order
-  mutable std::vector<std::optional<geom::RayGridHit>> scratch_;
+  mutable geom::FanHits scratch_;
 };
 
 }  // namespace plantsim::worlds
