@@ -7,13 +7,15 @@
 
 namespace plantsim::robot {
 
-std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
-                                                      double gap_m) {
-  std::vector<std::vector<geom::Vec2>> out;
-  for (const geom::Vec2& p : points) {
-    if (out.empty() || geom::distance(out.back().back(), p) > gap_m) out.emplace_back();
-    out.back().push_back(p);
-  }
+std::vector<std::span<const geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
+                                                          double gap_m) {
+  std::vector<std::span<const geom::Vec2>> out;
+  std::size_t first = 0;
+  for (std::size_t k = 1; k <= points.size(); ++k)
+    if (k == points.size() || geom::distance(points[k - 1], points[k]) > gap_m) {
+      out.emplace_back(points.data() + first, k - first);
+      first = k;
+    }
   // A 270-degree scan does not wrap; a full circle would join its ends here.
   return out;
 }

@@ -5,6 +5,7 @@
 // arc check, the stops and the replans use.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "controller/collision_check.h"
@@ -54,8 +55,9 @@ class ObstacleTracker {
   double last_t_s_ = 0;
 };
 
-/// Splits points in beam order into clusters wherever neighbours are more than `gap_m` apart.
-std::vector<std::vector<geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
-                                                      double gap_m);
+/// Splits points in beam order into clusters wherever neighbours are more than `gap_m` apart:
+/// each cluster a run of `points` (valid while they are).
+std::vector<std::span<const geom::Vec2>> cluster_in_order(const std::vector<geom::Vec2>& points,
+                                                          double gap_m);
 
 }  // namespace plantsim::robot

@@ -82,8 +82,13 @@ std::optional<geom::Pose2> Perceiver::carry_to_now(const ChargerDetection& d) co
 
 void Perceiver::interpret_scan(const LidarScan& scan) {
   const geom::Pose2 sensor = geom::compose(now_.pose, scan.mount);
-  scan_view_ = {now_.pose, {}, {}};
-  std::vector<geom::Vec2> unexplained, near_static;
+  scan_view_.pose = now_.pose;
+  scan_view_.explained.clear();
+  scan_view_.unexplained.clear();
+  std::vector<geom::Vec2>& unexplained = unexplained_;
+  std::vector<geom::Vec2>& near_static = near_static_;
+  unexplained.clear();
+  near_static.clear();
   const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
   // In whole centimetres: the map's nearness raster is built for one margin, and the learnt
   // noise moves a little with every scan.
@@ -107,7 +112,8 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   }
   tracker_.update(unexplained, sensor.position(), scan.t_s);
   // The layer remembers what stands: returns on a track that moves are left out of it.
-  std::vector<geom::Vec2> marks;
+  std::vector<geom::Vec2>& marks = marks_;
+  marks.clear();
   const std::vector<controller::MovingBox> tracked = tracker_.boxes(scan.t_s);
   for (const geom::Vec2& q : unexplained) {
     bool on_mover = false;

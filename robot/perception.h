@@ -132,9 +132,12 @@ class Perceiver {
   LocalObstacleLayer layer_;
   Perception now_;
   ScanView scan_view_;
-  std::vector<controller::FieldObstacle> static_field_;      // from the last scan
-  std::vector<geom::Rect> layer_rects_;                      // the layer after the last scan
-  BeamDirections directions_;                                // scratch for interpret_scan
+  std::vector<controller::FieldObstacle> static_field_;  // from the last scan
+  std::vector<geom::Rect> layer_rects_;                  // the layer after the last scan
+  BeamDirections directions_;                            // scratch for interpret_scan
+  // interpret_scan's lists, emptied and refilled each scan (not allocated afresh: the scan's
+  // lists grew from nothing ten times a scan).
+  std::vector<geom::Vec2> unexplained_, near_static_, marks_;
   std::deque<std::pair<double, geom::Pose2>> odom_history_;  // for detections that arrive late
   std::optional<geom::Vec2> last_target_;
   bool touched_before_ = false;  // the bumper at the last reading

@@ -19,6 +19,7 @@
 #include "planner/registry.h"
 #include "robot/ekf_estimator.h"
 #include "robot/ekf_localizer.h"
+#include "robot/obstacle_tracker.h"
 #include "robot/particle_localizer.h"
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"
@@ -561,6 +562,23 @@ TEST(Perception, SensorsModeDocksAndReportsItsLocalisation) {
   EXPECT_EQ(o.perception_mode, "oracle");
   // Oracle mode without fixes (the default) dead-reckons on noise-free encoders: tyre slip only.
   EXPECT_LT(o.localization_error_max_m, 0.05);
+}
+
+// Returns in beam order split where neighbours are farther apart than the gap: each cluster a
+// run of the points themselves, in order, none empty, together all of them.
+TEST(Perception, ClustersAreRunsOfTheReturnsSplitAtGaps) {
+  const std::vector<geom::Vec2> points{{0, 0},    {0.1, 0}, {0.2, 0}, {1.0, 0},
+                                       {1.05, 0}, {3, 3},   {3, 3.25}};
+  const auto clusters = cluster_in_order(points, 0.2);
+  ASSERT_EQ(clusters.size(), 4u);
+  EXPECT_EQ(clusters[0].size(), 3u);
+  EXPECT_EQ(clusters[1].size(), 2u);
+  EXPECT_EQ(clusters[2].size(), 1u);  // 0.25 apart: a gap
+  EXPECT_EQ(clusters[3].size(), 1u);
+  EXPECT_EQ(clusters[1].data(), points.data() + 3);
+  EXPECT_EQ(clusters[3][0], (geom::Vec2{3, 3.25}));
+  EXPECT_TRUE(cluster_in_order({}, 0.2).empty());
+  EXPECT_EQ(cluster_in_order({{5, 5}}, 0.2).size(), 1u);
 }
 
 TEST(Perception, ACrossingPersonIsTrackedFromTheScanAndStopsTheRobot) {
