@@ -89,7 +89,7 @@ void Perceiver::interpret_scan(const LidarScan& scan) {
   std::vector<geom::Vec2>& near_static = near_static_;
   unexplained.clear();
   near_static.clear();
-  const std::span<const geom::Vec2> directions = directions_.in_world(scan, sensor.yaw);
+  const BeamDirections::Turned directions = directions_.turned(scan, sensor.yaw);
   // In whole centimetres: the map's nearness raster is built for one margin, and the learnt
   // noise moves a little with every scan.
   const double explained_margin =
