@@ -375,7 +375,10 @@ bool RayGrid::fan_settled_before_ring(Fan& fan, long k) const {
   if (static_cast<long>(open.size()) * kBoxesPerOpenRay >= fan.unvisited) return false;
   // Each open ray walks on from what the fan found, past the boxes the fan has tried (on every
   // ray their extent covers; a box outside a ray's extent cannot meet it): from where it leaves
-  // the square of cells the rings have visited, since every box in them has been tried.
+  // the square of cells the rings have visited, since every box in them has been tried. An
+  // origin outside the grid is no exception (the rings then centre on the grid's edge cell):
+  // before the ray leaves the square through its far side, wherever it is not in the square it
+  // is outside the grid.
   const Vec2 o = fan.origin;
   const double visited_lo[2] = {area_.xmin + static_cast<double>(fan.ci - k + 1) * cell_,
                                 area_.ymin + static_cast<double>(fan.cj - k + 1) * cell_};

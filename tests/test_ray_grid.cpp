@@ -323,3 +323,44 @@ TEST(RayGrid, FanEqualsSingleCastsOnEveryTestWorld) {
 
 }  // namespace
 }  // namespace plantsim::geom
+
+namespace plantsim::geom {
+namespace {
+
+// Fans from far outside the grid, where the rings centre on the grid's edge cell: the rays still
+// open must walk from the sensor, not from where they would leave a square the sensor is not in.
+TEST(RayGrid, FanFromOutsideTheGridEqualsSingleCasts) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0, 1);
+  // Sparse boxes, so that many rays stay open and walk; the sensor 5 to 30 m off the boxes' area.
+  const std::vector<Rect> rects = random_rects(rng, 60, 0.2, 1.5);
+  const RayGrid grid(rects, {});
+  const Rect a = grid.area();
+  long compared = 0;
+  for (int fan = 0; fan < 400; ++fan) {
+    const double side = u(rng);
+    const Vec2 o = side < 0.25   ? Vec2{a.xmin - 5 - 25 * u(rng), a.ymin + a.height() * u(rng)}
+                   : side < 0.5  ? Vec2{a.xmax + 5 + 25 * u(rng), a.ymin + a.height() * u(rng)}
+                   : side < 0.75 ? Vec2{a.xmin + a.width() * u(rng), a.ymin - 5 - 25 * u(rng)}
+                                 : Vec2{a.xmin - 5 - 25 * u(rng), a.ymin - 5 - 25 * u(rng)};
+    const int n = 360;
+    const double first = 2 * M_PI * u(rng), increment = 2 * M_PI / n;
+    std::vector<Vec2> directions;
+    for (int k = 0; k < n; ++k) directions.push_back(unit_from_angle(first + k * increment));
+    FanHits fanned;
+    grid.cast_fan(o, directions, first, increment, 150.0, fanned);
+    for (int k = 0; k < n; ++k) {
+      const auto single = grid.cast(o, directions[static_cast<std::size_t>(k)], 150.0);
+      const std::size_t got = static_cast<std::size_t>(k);
+      ASSERT_EQ(single.has_value(), fanned.hit(got)) << "fan " << fan << " ray " << k;
+      if (single) {
+        EXPECT_EQ(single->range_m, fanned.range_m[got]) << "fan " << fan << " ray " << k;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 400L * 360);
+}
+
+}  // namespace
+}  // namespace plantsim::geom
