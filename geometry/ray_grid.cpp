@@ -175,21 +175,18 @@ void RayGrid::walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_
   }
 }
 
-std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 origin) const {
+bool RayGrid::silhouette(int i, Vec2 origin, Vec2& first, Vec2& last) const {
   // Corners as enter() sees the box; an origin within 1e-6 m of it is left to every ray (the
   // corners' angles would carry rounding far beyond the fan's tolerance).
   constexpr double kClearance = 1e-6;
   const std::size_t k = static_cast<std::size_t>(i);
-  const Vec2* first = nullptr;
-  const Vec2* last = nullptr;
-  Vec2 corners[4];
   if (k < rects_.size()) {
     const Rect& r = rects_[k];
     if (r.xmin - kClearance <= origin.x && origin.x <= r.xmax + kClearance &&
         r.ymin - kClearance <= origin.y && origin.y <= r.ymax + kClearance)
-      return std::nullopt;
-    corners[0] = {r.xmin, r.ymin}, corners[1] = {r.xmax, r.ymin}, corners[2] = {r.xmax, r.ymax},
-    corners[3] = {r.xmin, r.ymax};
+      return false;
+    const Vec2 corners[4] = {
+        {r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
     // Outside a rectangle, the side of it the origin lies on names the two corners that bound
     // its silhouette: [below, level, above][left, level, right], the clockwise-most corner then
     // the counter-clockwise-most (the search below finds the same two, at four times the cost).
@@ -197,33 +194,33 @@ std::optional<std::pair<double, double>> RayGrid::angular_extent(int i, Vec2 ori
         {{1, 3}, {1, 0}, {2, 0}}, {{0, 3}, {0, 0}, {2, 1}}, {{0, 2}, {3, 2}, {3, 1}}};
     const int sx = origin.x < r.xmin ? 0 : origin.x > r.xmax ? 2 : 1;
     const int sy = origin.y < r.ymin ? 0 : origin.y > r.ymax ? 2 : 1;
-    first = &corners[kSilhouette[sy][sx][0]];
-    last = &corners[kSilhouette[sy][sx][1]];
-  } else {
-    const OrientedBox& b = oriented_[k - rects_.size()];
-    const Vec2 o = rotate(origin - b.center, -b.yaw);
-    if (std::fabs(o.x) <= b.hx + kClearance && std::fabs(o.y) <= b.hy + kClearance)
-      return std::nullopt;
-    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-    for (int c = 0; c < 4; ++c) corners[c] = b.center + rotate({sx[c] * b.hx, sy[c] * b.hy}, b.yaw);
-    // Seen from outside, a convex box's extent runs from the corner every other lies
-    // counter-clockwise of to the one every other lies clockwise of, less than half a turn.
-    for (const Vec2& c : corners) {
-      bool all_ccw = true, all_cw = true;
-      for (const Vec2& other : corners) {
-        const double turn = cross(c - origin, other - origin);
-        all_ccw &= turn >= 0, all_cw &= turn <= 0;
-      }
-      if (all_ccw && !first) first = &c;
-      if (all_cw && !last) last = &c;
-    }
-    if (!first || !last) return std::nullopt;
+    first = corners[kSilhouette[sy][sx][0]];
+    last = corners[kSilhouette[sy][sx][1]];
+    return true;
   }
-  // The fan widens its tolerance by the bound.
-  const double lo = bounded_atan2(first->y - origin.y, first->x - origin.x);
-  double hi = bounded_atan2(last->y - origin.y, last->x - origin.x);
-  if (hi < lo) hi += 2 * M_PI;
-  return std::pair{lo, hi};
+  const OrientedBox& b = oriented_[k - rects_.size()];
+  const Vec2 o = rotate(origin - b.center, -b.yaw);
+  if (std::fabs(o.x) <= b.hx + kClearance && std::fabs(o.y) <= b.hy + kClearance) return false;
+  const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  Vec2 corners[4];
+  for (int c = 0; c < 4; ++c) corners[c] = b.center + rotate({sx[c] * b.hx, sy[c] * b.hy}, b.yaw);
+  // Seen from outside, a convex box's extent runs from the corner every other lies
+  // counter-clockwise of to the one every other lies clockwise of, less than half a turn.
+  const Vec2* cw_most = nullptr;
+  const Vec2* ccw_most = nullptr;
+  for (const Vec2& c : corners) {
+    bool all_ccw = true, all_cw = true;
+    for (const Vec2& other : corners) {
+      const double turn = cross(c - origin, other - origin);
+      all_ccw &= turn >= 0, all_cw &= turn <= 0;
+    }
+    if (all_ccw && !cw_most) cw_most = &c;
+    if (all_cw && !ccw_most) ccw_most = &c;
+  }
+  if (!cw_most || !ccw_most) return false;
+  first = *cw_most;
+  last = *ccw_most;
+  return true;
 }
 
 namespace {
@@ -273,8 +270,11 @@ struct RayGrid::Fan {
   std::uint32_t query;
   long unvisited = 0;        // cell entries (a box counts once per cell it spans) not yet visited
   bool open_listed = false;  // open_rays_ holds this fan's rays still open at the last ring
+  // The wedge no ray comes near (behind a lidar), from its clockwise edge to its
+  // counter-clockwise one, when it spans at most half a turn; a box within it meets no ray.
+  bool blind = false;
+  Vec2 blind_from{}, blind_to{};
 };
-
 namespace {
 // A ray's own angle lies within 1e-6 rad of its place in the fan; an extent's corners within
 // kBoundedAtan2ErrorRad of theirs.
@@ -282,6 +282,8 @@ constexpr double kFanAngleTolerance = 1e-6 + kBoundedAtan2ErrorRad;
 // A ray cast singly walks a few cells of a few boxes each; the rings' remaining boxes each cost an
 // angular extent. Past this many boxes left per open ray, the open rays are cast singly.
 constexpr long kBoxesPerOpenRay = 2;
+// Beyond the rays' tolerance, for the rounding of a cross product (about 1e-16 of its inputs).
+constexpr double kBlindMarginRad = 1e-9;
 }  // namespace
 
 void RayGrid::fan_try_box(Fan& fan, int box) const {
@@ -293,6 +295,14 @@ void RayGrid::fan_try_box(Fan& fan, int box) const {
   // beyond a ray's hit (hypot, exact to the last bit, cost a tenth of the fan).
   const double nearest = std::sqrt(gap_x * gap_x + gap_y * gap_y) * (1.0 - 1e-12);
   if (nearest > fan.max_range_m) return;
+  Vec2 first_corner, last_corner;
+  const bool bounded = fan.spread && silhouette(box, o, first_corner, last_corner);
+  // Both silhouette corners in the blind wedge (convex, at most half a turn): the extent between
+  // them, less than half a turn, lies in it too.
+  if (bounded && fan.blind && cross(fan.blind_from, first_corner - o) > 0 &&
+      cross(first_corner - o, fan.blind_to) > 0 && cross(fan.blind_from, last_corner - o) > 0 &&
+      cross(last_corner - o, fan.blind_to) > 0)
+    return;
   const bool is_rect = static_cast<std::size_t>(box) < rects_.size();
   const SeenFaces seen(is_rect ? rects_[static_cast<std::size_t>(box)] : b, o);
   // A box no nearer than a ray's hit cannot change it (a ray with none holds a range beyond its
@@ -314,22 +324,26 @@ void RayGrid::fan_try_box(Fan& fan, int box) const {
     fan.normal[r] = normal;
     fan.box[r] = box;
   };
-  const auto extent = fan.spread ? angular_extent(box, o) : std::nullopt;
-  if (!extent) {
+  if (!bounded) {
     for (long r = 0; r < fan.n; ++r) try_ray(r, false);
     return;
   }
+  // The fan widens its tolerance by the bound.
+  const double extent_lo = bounded_atan2(first_corner.y - o.y, first_corner.x - o.x);
+  double extent_hi = bounded_atan2(last_corner.y - o.y, last_corner.x - o.x);
+  if (extent_hi < extent_lo) extent_hi += 2 * M_PI;
   // The extent relative to the first ray, its start brought into [0, 2 pi); then the rays it
   // covers at each whole turn that can hold some. Inner rays (of a rectangle) lie inside it by
   // more than a ray's own angular tolerance and the extent's rounding together.
   const double turn = 2 * M_PI;
-  double lo = extent->first - fan.first_angle - kFanAngleTolerance,
-         hi = extent->second - fan.first_angle + kFanAngleTolerance;
+  double lo = extent_lo - fan.first_angle - kFanAngleTolerance,
+         hi = extent_hi - fan.first_angle + kFanAngleTolerance;
   constexpr long kManyTurns = 1L << 40;  // far beyond any angle's whole turns
   const double turns = static_cast<double>(floor_within(lo / turn, -kManyTurns, kManyTurns)) * turn;
   lo -= turns, hi -= turns;
   const double inner = 3 * kFanAngleTolerance;
   for (double shift = -turn; lo + shift <= fan.last + kFanAngleTolerance; shift += turn) {
+    if (hi + shift < 0) continue;  // short of the first ray: no ray at this turn
     const long r0 = ceil_within((lo + shift) / fan.increment, 0, fan.n);
     const long r1 = floor_within((hi + shift) / fan.increment, -1, fan.n - 1);
     long inner0 = r1 + 1, inner1 = r1;
@@ -433,6 +447,12 @@ void RayGrid::cast_fan(Vec2 origin, std::span<const Vec2> directions, double fir
           spread,
           static_cast<double>(n - 1) * increment,
           next_query()};
+  if (const double seen = fan.last + 2 * (kFanAngleTolerance + kBlindMarginRad);
+      spread && seen >= M_PI && seen < 2 * M_PI) {
+    fan.blind = true;
+    fan.blind_from = unit_from_angle(first_angle + fan.last + kFanAngleTolerance + kBlindMarginRad);
+    fan.blind_to = unit_from_angle(first_angle - kFanAngleTolerance - kBlindMarginRad);
+  }
   for (long j = j0; j <= j1; ++j)
     fan.unvisited += first_[static_cast<std::size_t>(j * nx_ + i1 + 1)] -
                      first_[static_cast<std::size_t>(j * nx_ + i0)];

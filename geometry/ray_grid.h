@@ -135,9 +135,10 @@ class RayGrid {
   void fan_try_box(Fan& fan, int box) const;
   void fan_visit_cell(Fan& fan, long i, long j) const;
   bool fan_settled_before_ring(Fan& fan, long k) const;
-  /// The angular extent [lo, hi] (radians, hi - lo < pi) box i covers seen from `origin`; none
-  /// when the origin lies in the box or so near it that the extent is ill-conditioned.
-  std::optional<std::pair<double, double>> angular_extent(int i, Vec2 origin) const;
+  /// The corners that bound box i's silhouette seen from `origin`: `first` the clockwise-most,
+  /// `last` the counter-clockwise-most (less than half a turn apart); false when the origin lies
+  /// in the box or so near it that the extent is ill-conditioned.
+  bool silhouette(int i, Vec2 origin, Vec2& first, Vec2& last) const;
 
   std::vector<Rect> rects_;
   std::vector<OrientedBox> oriented_;

@@ -3,7 +3,9 @@
 // decides, determinism with the lidar on, and bad sensor parameters refused.
 #include <gtest/gtest.h>
 
+#include <boost/random/uniform_01.hpp>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -170,6 +172,32 @@ TEST(RandomStream, DeterministicPerSeedWithANormalsMomentsAndTails) {
   EXPECT_NEAR(beyond4, 63, 5 * 8);     // P(|g| > 4) = 6.3e-5
   EXPECT_NEAR(usum / n, 0.5, 0.0015);  // 0.00029
   EXPECT_NEAR(below_half, n / 2, 5 * 500);
+}
+
+// The uniform draw keeps Boost's uniform_01 on the same engine bit for bit (the scenarios' noise
+// is unchanged by the faster conversion), and the conversion is the nearest double on the values
+// where rounding is delicate: ties at 2^53 and above, the top bit, and the draws that round to
+// 2^64.
+TEST(RandomStream, UniformIsBoostsUniform01BitForBit) {
+  util::RandomStream ours(11);
+  pcg64 engine(11);
+  boost::random::uniform_01<double> boosts;
+  for (int k = 0; k < 2'000'000; ++k) {
+    const double a = ours.uniform(), b = boosts(engine);
+    ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0) << k << ": " << a << " vs " << b;
+  }
+  std::vector<std::uint64_t> delicate = {0, 1, ~0ULL, ~0ULL - 1023, ~0ULL - 1024, ~0ULL - 1025};
+  for (int bit = 53; bit < 64; ++bit) {  // a double's step here is 2^(bit - 52)
+    const std::uint64_t step = 1ULL << (bit - 52);
+    for (const std::uint64_t low : {0ULL, 1ULL, 2ULL, 3ULL, (1ULL << 52) - 1}) {
+      const std::uint64_t tie = (1ULL << bit) + low * step + step / 2;  // to even: up or down
+      for (const std::uint64_t x : {tie - 1, tie, tie + 1}) delicate.push_back(x);
+    }
+  }
+  pcg64 any(5);
+  for (int k = 0; k < 1'000'000; ++k) delicate.push_back(any());
+  for (const std::uint64_t x : delicate)
+    ASSERT_EQ(util::nearest_double(x), static_cast<double>(x)) << x;
 }
 
 TEST(Lidar, NoiseHasTheConfiguredSpread) {

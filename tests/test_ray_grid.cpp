@@ -364,3 +364,82 @@ TEST(RayGrid, FanFromOutsideTheGridEqualsSingleCasts) {
 
 }  // namespace
 }  // namespace plantsim::geom
+
+namespace plantsim::geom {
+namespace {
+
+// A fan wider than half a turn passes over the boxes in the wedge behind it, where no ray comes
+// near: those astride the wedge's edges, and rays as far off their place in the fan as the
+// fan allows (1e-6 rad), must still meet what single casts meet. Spans from just under half a
+// turn (no wedge passed over) to nearly a whole turn, the lidar's 360 rays and the EKF's 60.
+TEST(RayGrid, FanPassesOverOnlyTheBoxesBehindItsRays) {
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::vector<Rect> rects = random_rects(rng, 300, 0.2, 2.0);
+  const RayGrid grid(rects, {});
+  long compared = 0, hits = 0;
+  for (const double span : {M_PI - 1e-3, M_PI + 1e-7, 1.2 * M_PI, 1.5 * M_PI, 1.95 * M_PI})
+    for (const int n : {360, 60})
+      for (int fan = 0; fan < 60; ++fan) {
+        Vec2 o{100 * u(rng), 60 * u(rng)};
+        while (grid.near(o, 0.05)) o = {100 * u(rng), 60 * u(rng)};
+        const double first = 2 * M_PI * u(rng), increment = span / (n - 1);
+        std::vector<Vec2> directions;
+        for (int k = 0; k < n; ++k)
+          directions.push_back(unit_from_angle(first + k * increment + 1e-6 * (2 * u(rng) - 1)));
+        FanHits fanned;
+        grid.cast_fan(o, directions, first, increment, 20.0, fanned);
+        for (int k = 0; k < n; ++k) {
+          const std::size_t got = static_cast<std::size_t>(k);
+          const auto single = grid.cast(o, directions[got], 20.0);
+          ASSERT_EQ(single.has_value(), fanned.hit(got)) << "span " << span << " ray " << k;
+          ++compared;
+          if (!single) continue;
+          ++hits;
+          EXPECT_EQ(single->range_m, fanned.range_m[got]) << "span " << span << " ray " << k;
+          EXPECT_EQ(single->box, fanned.box[got]) << "span " << span << " ray " << k;
+        }
+      }
+  EXPECT_EQ(compared, 5L * 60 * (360 + 60));
+  EXPECT_GT(hits, compared / 2);
+}
+
+// The wedge's edges to the last micro-radian: a box lying almost wholly behind the fan, which its
+// first or last ray (0.9e-6 rad off its place, within the fan's tolerance) enters 2e-7 rad inside
+// the box's edge, 10 m out.
+TEST(RayGrid, FanMeetsBoxesJustInsideItsEdgeRays) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> u(0, 1);
+  int met = 0;
+  for (const double span : {M_PI + 1e-7, 1.5 * M_PI, 1.95 * M_PI})
+    for (const int n : {360, 60})
+      for (int fan = 0; fan < 20; ++fan) {
+        const Vec2 o{100 * u(rng), 60 * u(rng)};
+        const double first = 2 * M_PI * u(rng), increment = span / (n - 1);
+        const double first_ray = first - 0.9e-6, last_ray = first + span + 0.9e-6;
+        // Boxes along a ray, 10 to 11 m out, reaching 2 m to its side: behind the last ray
+        // counter-clockwise, behind the first clockwise.
+        const double at_last = last_ray - 2e-7, at_first = first_ray + 2e-7;
+        const std::vector<OrientedBox> boxes = {
+            {o + rotate({10.5, 1.0}, at_last), 0.5, 1.0, at_last},
+            {o + rotate({10.5, -1.0}, at_first), 0.5, 1.0, at_first}};
+        const RayGrid grid({}, boxes);
+        std::vector<Vec2> directions;
+        for (int k = 0; k < n; ++k) directions.push_back(unit_from_angle(first + k * increment));
+        directions.front() = unit_from_angle(first_ray);
+        directions.back() = unit_from_angle(last_ray);
+        FanHits fanned;
+        grid.cast_fan(o, directions, first, increment, 20.0, fanned);
+        for (const std::size_t k : {std::size_t{0}, directions.size() - 1}) {
+          const auto single = grid.cast(o, directions[k], 20.0);
+          ASSERT_TRUE(single) << "span " << span << " ray " << k;
+          ASSERT_TRUE(fanned.hit(k)) << "span " << span << " ray " << k;
+          EXPECT_EQ(single->range_m, fanned.range_m[k]) << "span " << span << " ray " << k;
+          met += fanned.hit(k);
+        }
+      }
+  EXPECT_EQ(met, 3 * 2 * 20 * 2);
+}
+
+}  // namespace
+}  // namespace plantsim::geom
