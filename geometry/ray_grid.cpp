@@ -97,6 +97,32 @@ void RayGrid::cells_of(const Rect& q, long& i0, long& i1, long& j0, long& j1) co
 }
 
 namespace {
+// Whether a ray's line passes clear of a box: the signed distances of the box's corners from the
+// line (cross products, no division) all of one sign by more than their rounding. Most boxes a
+// walk meets lie beside the ray; ray_enters_rect would tell so at four divisions, and says the
+// same whenever this does (its own rounding matters only within far less of a corner).
+class LineClearance {
+ public:
+  LineClearance(Vec2 o, Vec2 d, const Rect& area) : o_(o), d_(d) {
+    const double scale =
+        std::max({std::fabs(o.x), std::fabs(o.y), std::fabs(area.xmin), std::fabs(area.xmax),
+                  std::fabs(area.ymin), std::fabs(area.ymax)});
+    margin_ = 1e-12 * (1.0 + scale);  // the rounding is about 1e-16 of the coordinates
+  }
+  bool operator()(const Rect& b) const {
+    // cross(d, c - o) = d.x (c.y - o.y) - d.y (c.x - o.x), each term at its extreme corner.
+    const double y_lo = d_.x * ((d_.x >= 0 ? b.ymin : b.ymax) - o_.y);
+    const double y_hi = d_.x * ((d_.x >= 0 ? b.ymax : b.ymin) - o_.y);
+    const double x_lo = -d_.y * ((d_.y >= 0 ? b.xmax : b.xmin) - o_.x);
+    const double x_hi = -d_.y * ((d_.y >= 0 ? b.xmin : b.xmax) - o_.x);
+    return y_lo + x_lo > margin_ || y_hi + x_hi < -margin_;
+  }
+
+ private:
+  Vec2 o_, d_;
+  double margin_ = 0;
+};
+
 // Just beyond a ray's reach: a hit at t counts when t < this (t <= max_range_m).
 double beyond_reach(double max_range_m) {
   return std::nextafter(max_range_m, std::numeric_limits<double>::infinity());
@@ -147,6 +173,7 @@ void RayGrid::walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_
   double next_y = boundary(j, area_.ymin, origin.y, direction.y, step_j);
   const double delta_x = direction.x != 0 ? cell_ / std::fabs(direction.x) : inf;
   const double delta_y = direction.y != 0 ? cell_ / std::fabs(direction.y) : inf;
+  const LineClearance clear_of(origin, direction, area_);
   while (true) {
     const std::size_t c = static_cast<std::size_t>(j * nx_ + i);
     for (std::uint32_t m = first_[c]; m < first_[c + 1]; ++m) {
@@ -155,6 +182,7 @@ void RayGrid::walk(Vec2 origin, Vec2 direction, double max_range_m, std::uint32_
       // Tested in an earlier cell, or by the fan this walk finishes.
       if (stamp == query || (done_query != 0 && stamp == done_query)) continue;
       stamp = query;
+      if (clear_of(bounds_[static_cast<std::size_t>(k)])) continue;
       double t;
       Vec2 normal;
       if (enter(k, origin, direction, t, normal) && t < best.range_m)
@@ -378,13 +406,20 @@ bool RayGrid::fan_settled_before_ring(Fan& fan, long k) const {
   const double ring_near = static_cast<double>(k - 1) * cell_;
   // Hits only come nearer and rings only further: a ray settled before one ring stays settled,
   // so each ring sifts the rays the last one left open.
+  // Kept without a branch: whether a ray is settled is as good as a coin toss to the CPU.
   std::vector<long>& open = open_rays_;
+  auto still_open = [&](long r) {
+    return static_cast<std::size_t>(!((fan.box[r] >= 0) & (fan.range[r] <= ring_near)));
+  };
+  std::size_t kept = 0;
   if (!fan.open_listed) {
     open.resize(static_cast<std::size_t>(fan.n));
-    for (long r = 0; r < fan.n; ++r) open[static_cast<std::size_t>(r)] = r;
+    for (long r = 0; r < fan.n; ++r) open[kept] = r, kept += still_open(r);
     fan.open_listed = true;
+  } else {
+    for (const long r : open) open[kept] = r, kept += still_open(r);
   }
-  std::erase_if(open, [&](long r) { return fan.box[r] >= 0 && fan.range[r] <= ring_near; });
+  open.resize(kept);
   if (open.empty()) return true;
   if (static_cast<long>(open.size()) * kBoxesPerOpenRay >= fan.unvisited) return false;
   // Each open ray walks on from what the fan found, past the boxes the fan has tried (on every
