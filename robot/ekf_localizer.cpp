@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "robot/median_spread.h"
+
 namespace plantsim::robot {
 
 EkfLocalizer::EkfLocalizer(EkfParams params, const geom::Pose2& initial_pose,
@@ -349,12 +351,7 @@ double EkfLocalizer::post_fit_variance() const {
   std::vector<double>& r = scratch_;
   r.clear();
   for (const auto& [innovation, spread] : residuals_) r.push_back(innovation);
-  const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-  std::nth_element(r.begin(), mid, r.end());
-  const double median = *mid;
-  for (double& v : r) v = std::fabs(v - median);
-  std::nth_element(r.begin(), mid, r.end());
-  const double sigma = 1.4826 * *mid;
+  const double sigma = 1.4826 * median_spread(r).mad;
   const double n = static_cast<double>(r.size());
   return sigma * sigma * n / (n - 3.0);
 }

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "robot/median_spread.h"
 #include "robot/place_refinement.h"
 #include "robot/scan_points.h"
 
@@ -106,14 +107,7 @@ ScanMatcherParams reseed_matcher(ScanMatcherParams m) {
 }
 
 // Robust variance of residuals: the median absolute deviation's, scaled for a normal.
-double robust_variance(std::vector<double>& r) {
-  const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
-  std::nth_element(r.begin(), mid, r.end());
-  const double median = *mid;
-  for (double& v : r) v = std::fabs(v - median);
-  std::nth_element(r.begin(), mid, r.end());
-  return sq(1.4826 * *mid);
-}
+double robust_variance(std::vector<double>& r) { return sq(1.4826 * median_spread(r).mad); }
 
 }  // namespace
 

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -25,6 +28,7 @@
 #include "robot/likelihood_field.h"
 #include "robot/lost_search.h"
 #include "robot/map_raycaster.h"
+#include "robot/median_spread.h"
 #include "robot/near_rasters.h"
 #include "robot/particle_localizer.h"
 #include "robot/place_hypotheses.h"
@@ -101,6 +105,41 @@ worlds::World l_room() {
   w.start = {1.5, 4.5, 0};
   w.charger = {13.5, 4.5, 0};
   return w;
+}
+
+// The network's spread is nth_element's bit for bit, its median equal (a zero's sign aside): every
+// size up to the network's 64 and past it (selection), ties (values on a millimetre grid), both
+// zeros, values all equal.
+TEST(MedianSpread, EqualsTwoSelectionsBitForBit) {
+  auto selected = [](std::vector<double> r) {
+    const auto mid = r.begin() + static_cast<std::ptrdiff_t>(r.size() / 2);
+    std::nth_element(r.begin(), mid, r.end());
+    const double median = *mid;
+    for (double& v : r) v = std::fabs(v - median);
+    std::nth_element(r.begin(), mid, r.end());
+    return robot::MedianSpread{median, *mid};
+  };
+  std::mt19937_64 rng(43);
+  std::normal_distribution<double> residual(0.002, 0.01);
+  long compared = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const std::size_t n = 1 + static_cast<std::size_t>(trial % 90);
+    std::vector<double> values(n);
+    for (double& v : values) {
+      v = residual(rng);
+      if (trial % 3 == 1) v = std::round(v * 1000) / 1000;   // ties
+      if (trial % 7 == 2) v = (trial % 2 ? -0.0 : 0.0) * v;  // zeros of both signs
+    }
+    if (trial % 11 == 5) std::fill(values.begin(), values.end(), 0.25);
+    const robot::MedianSpread want = selected(values);
+    std::vector<double> ours = values;
+    const robot::MedianSpread got = robot::median_spread(ours);
+    ASSERT_EQ(got.median, want.median) << "n " << n;  // a zero's sign may differ
+    ASSERT_EQ(std::memcmp(&got.mad, &want.mad, sizeof(double)), 0)
+        << "n " << n << ": " << got.mad << " vs " << want.mad;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4000);
 }
 
 TEST(ScanMatcher, FindsTheTruePoseFromAnOffPrior) {
