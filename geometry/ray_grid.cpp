@@ -303,6 +303,7 @@ struct RayGrid::Fan {
   bool blind = false;
   Vec2 blind_from{}, blind_to{};
 };
+
 namespace {
 // A ray's own angle lies within 1e-6 rad of its place in the fan; an extent's corners within
 // kBoundedAtan2ErrorRad of theirs.
