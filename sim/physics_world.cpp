@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "sim/box2d_scene.h"
+#include "sim/box2d_step_timers.h"
 
 namespace plantsim::sim {
 
@@ -25,6 +26,8 @@ PhysicsWorld::PhysicsWorld(const worlds::World& w)
     : world_(std::make_unique<b2World>(b2Vec2(0, 0))),
       surfaces_(w),
       robot_radius_m_(w.robot.radius_m) {
+  // Names the timers' file, so that every program stepping a world links plantsim's b2Timer.
+  static_cast<void>(box2d_step_timers());
   detail::add_static_scene(*world_, w);
 
   for (const worlds::MovingObstacle& m : w.moving) moving_.push_back(make_actor(m, false));

@@ -1,5 +1,6 @@
 // Closed-loop episodes in Box2D: docking within tolerance with no collisions on the shared
 // worlds, the wheel model, and bit-for-bit determinism.
+#include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
 #include "episode/episode_config.h"
@@ -9,6 +10,7 @@
 #include "episode/stepped_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "sim/box2d_step_timers.h"
 #include "sim/physics_world.h"
 #include "sim/wheel_drive.h"
 #include "test_paths.h"
@@ -345,3 +347,46 @@ TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
 
 }  // namespace
 }  // namespace plantsim::episode
+
+// Box2D's profile is what its step timers fill: zero while plantsim keeps them off (the library's
+// own b2Timer replaced by the program's), real durations when the bench turns them on, and the
+// bodies move the same either way.
+TEST(Box2dStepTimers, OffTheProfileStaysZeroOnItMeasuresAndTheMotionIsTheSame) {
+  auto fall = [](bool timed, float& profiled_ms) {
+    plantsim::sim::set_box2d_step_timers(timed);
+    b2World world(b2Vec2(0.0f, -9.8f));
+    b2BodyDef ground_def;
+    b2Body* ground = world.CreateBody(&ground_def);
+    b2PolygonShape floor;
+    floor.SetAsBox(50.0f, 0.5f);
+    ground->CreateFixture(&floor, 0.0f);
+    std::vector<b2Body*> boxes;
+    for (int i = 0; i < 40; ++i) {
+      b2BodyDef def;
+      def.type = b2_dynamicBody;
+      def.position.Set(-20.0f + static_cast<float>(i), 2.0f + 0.3f * static_cast<float>(i % 7));
+      b2Body* body = world.CreateBody(&def);
+      b2PolygonShape box;
+      box.SetAsBox(0.4f, 0.4f);
+      body->CreateFixture(&box, 1.0f);
+      boxes.push_back(body);
+    }
+    profiled_ms = 0;
+    for (int k = 0; k < 600; ++k) {
+      world.Step(1.0f / 60.0f, 8, 3);
+      profiled_ms += world.GetProfile().step;
+    }
+    plantsim::sim::set_box2d_step_timers(false);
+    std::vector<float> heights;
+    for (const b2Body* b : boxes) heights.push_back(b->GetPosition().y);
+    return heights;
+  };
+  EXPECT_FALSE(plantsim::sim::box2d_step_timers());
+  float off_ms = -1, on_ms = -1;
+  const std::vector<float> off = fall(false, off_ms);
+  const std::vector<float> on = fall(true, on_ms);
+  EXPECT_EQ(off_ms, 0.0f);
+  EXPECT_GT(on_ms, 0.0f);
+  EXPECT_EQ(off, on);
+  EXPECT_LT(off.front(), 1.0f);  // the boxes fell onto the floor
+}
