@@ -276,11 +276,19 @@ EkfLocalizer::ScanTerms EkfLocalizer::scan_terms(const LidarScan& scan, const St
     if (outlier && innovation < 0) continue;
     ++expected;
     if (outlier) continue;
-    scan_info += H.transpose() * H / r_var;
-    gradient += H.transpose() * innovation / r_var;
+    // H' H / r and H' innovation / r on the pose block only, each term as Eigen's outer product
+    // forms it (H_i H_j, then / r), so the sums are the same bit for bit: H's bias entry is zero,
+    // so the bias row and column only ever added zeros, and H_i H_j = H_j H_i exactly (ten of
+    // the sixteen divisions were repeats or zeros).
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j) scan_info(i, j) += H(i) * H(j) / r_var;
+      gradient(i) += H(i) * innovation / r_var;
+    }
     residuals_.emplace_back(innovation, s - r_var);
     ++used;
   }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j) scan_info(j, i) = scan_info(i, j);
   return terms;
 }
 
