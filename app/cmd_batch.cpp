@@ -10,6 +10,7 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
+#include "app/output_kinds.h"
 #include "batch/batch_gate.h"
 #include "batch/batch_merge.h"
 #include "batch/batch_runner.h"
@@ -75,10 +76,11 @@ struct GateOptions {
                                     " of the batch folder '" + d + "'; name the report otherwise");
     if (fs::path(report).remove_filename().lexically_normal() ==
         (fs::path(out_dir) / "").lexically_normal()) {
-      if (fs::exists(fs::symlink_status(junit))) util::check_output_file(junit, "--junit");
+      if (fs::exists(fs::symlink_status(junit)))
+        util::check_output_file(junit, "--junit", junit_report_kind());
       return {report.filename().string()};
     }
-    util::check_output_file(junit, "--junit");
+    util::check_output_file(junit, "--junit", junit_report_kind());
     return {};
   }
 
@@ -196,6 +198,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
     std::vector<std::string> dirs;
     std::string out;
     bool allow_partial = false;
+    std::string scenario;
     GateOptions gate;
   };
   auto opt = std::make_shared<Options>();
@@ -203,6 +206,9 @@ std::function<int()> add_merge_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", opt->out, "Merged output folder")->required();
+  cmd->add_option("--scenario", opt->scenario,
+                  "The scenario file, when it no longer stands where the records say (it must be "
+                  "their scenario by content)");
   cmd->add_flag("--allow-partial", opt->allow_partial,
                 "Merge even when some of the scenario's episodes are missing");
   opt->gate.add_to(cmd);
@@ -210,6 +216,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
     batch::MergeOptions m;
     m.own_files = opt->gate.check_outputs(opt->out, opt->dirs);
     m.allow_partial = opt->allow_partial;
+    m.scenario = opt->scenario;
     m.gate = opt->gate.as_override();
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
     std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out

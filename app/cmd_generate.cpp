@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/output_kinds.h"
 #include "util/atomic_file.h"
 #include "worlds/plant_styles.h"
 #include "worlds/random_plant.h"
@@ -36,7 +37,8 @@ std::function<int()> add_generate_command(CLI::App& app) {
   cmd->add_flag("--overlap", opt->allow_overlap, "Let rectangles overlap and touch");
   cmd->add_option("--out", *out, "Output file (default: stdout)");
   return [opt, out, style]() {
-    if (!out->empty()) util::check_output_file(*out, "--out");  // before any work: exit 2
+    if (!out->empty())
+      util::check_output_file(*out, "--out", world_file_kind());  // before any work: exit 2
     const worlds::World w =
         style->empty() ? worlds::random_plant(*opt)
                        : worlds::styled_plant(*style, opt->seed, opt->width_m, opt->height_m);

@@ -4,6 +4,7 @@
 
 #include "app/commands.h"
 #include "app/nav2_import.h"
+#include "app/output_kinds.h"
 #include "util/atomic_file.h"
 #include "util/unicode_text.h"
 
@@ -20,7 +21,8 @@ std::function<int()> add_nav2_import_command(CLI::App& app) {
   cmd->add_option("--out", *out, "Write the config here (default: stdout)");
   return [params, out]() {
     refuse_output_over_input(*out, *params);
-    if (!out->empty()) util::check_output_file(*out, "--out");  // before any work: exit 2
+    if (!out->empty())
+      util::check_output_file(*out, "--out", config_file_kind());  // before any work: exit 2
     const Nav2Import im = import_nav2_params(*params);
     const std::string text = im.config.dump(2) + "\n";
     std::cerr << util::printable(nav2_report(im), true);  // names from the file, shown as text

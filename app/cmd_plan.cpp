@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "app/commands.h"
 #include "planner/grid/grid_astar.h"
@@ -179,6 +180,7 @@ int plan_world(PlanOptions& o) {
   input.corner_steps = o.corner_steps;
   input.snap_to_free = o.snap;
   if (o.landmarks > 0) input.options.set("landmarks", o.landmarks);
+  std::set<std::string> named;
   for (const std::string& given : o.family_options) {
     const std::size_t eq = given.find('=');
     char* end = nullptr;
@@ -186,6 +188,11 @@ int plan_world(PlanOptions& o) {
     if (eq == std::string::npos || eq == 0 || end == given.c_str() + eq + 1 || *end != '\0')
       throw std::invalid_argument("plan: --option takes NAME=VALUE with a number, not '" + given +
                                   "'");
+    // The last of two would win unseen: a sweep script that appends its value would plan
+    // with the first one's.
+    if (!named.insert(given.substr(0, eq)).second)
+      throw std::invalid_argument("plan: --option " + given.substr(0, eq) +
+                                  " is given twice; give each option once");
     input.options.set(given.substr(0, eq), value);
   }
   input.search_budget_bytes = static_cast<std::size_t>(o.search_memory_mb) << 20;

@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/episode_outputs.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_work.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -56,6 +57,7 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
   episode::EpisodeConfig config =
       opt.config.empty() ? episode::EpisodeConfig{} : episode::load_episode_config(opt.config);
   auto p = planner::make_planner(opt.planner, planner::planner_input(world, true));
+  episode::check_episode_work(world, config);
   // Every input is valid by now. The outputs are written into a staging folder beside the
   // destination (an unwritable place fails here, before the simulation) and moved into place
   // as a set: a rerun never mixes files of two runs.

@@ -14,6 +14,7 @@
 
 #include "app/commands.h"
 #include "app/dashboard_history.h"
+#include "app/output_kinds.h"
 #include "render/dashboard.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
@@ -323,8 +324,8 @@ std::string markdown_links(const std::vector<render::DashboardLink>& links) {
 
 int summarize(const SummarizeOptions& opt) {
   // Before any work: an output that cannot be written is bad input (exit 2), not a failure.
-  if (!opt.out.empty()) util::check_output_file(opt.out, "--out");
-  if (!opt.html.empty()) util::check_output_file(opt.html, "--html");
+  if (!opt.out.empty()) util::check_output_file(opt.out, "--out", summary_markdown_kind());
+  if (!opt.html.empty()) util::check_output_file(opt.html, "--html", dashboard_kind());
   const util::MadeBy made_by;
   std::string md =
       "# plantsim results\n\n" + made_by.text() +

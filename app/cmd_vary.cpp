@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/output_kinds.h"
 #include "batch/plant_faults.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -39,7 +40,8 @@ std::function<int()> add_vary_command(CLI::App& app) {
   cmd->add_option("--name", o->name, "Name of the variant (default: <name>_mismatch)");
   cmd->add_option("--out", o->out, "Output file (default: stdout)");
   return [o]() {
-    if (!o->out.empty()) util::check_output_file(o->out, "--out");  // before any work: exit 2
+    if (!o->out.empty())
+      util::check_output_file(o->out, "--out", world_file_kind());  // before any work: exit 2
     refuse_output_over_input(o->out, util::resolve_input_path(o->world, ""));
     worlds::World w = worlds::load_world(o->world);
     nlohmann::ordered_json doc = nlohmann::ordered_json::parse(

@@ -144,4 +144,8 @@ std::string junit_xml(const std::string& suite_name,
   return xml + "  </testsuite>\n</testsuites>\n";
 }
 
+bool looks_like_junit_report(const std::string& head) {
+  return head.rfind("<?xml", 0) == 0 && head.find("<testsuites") != std::string::npos;
+}
+
 }  // namespace plantsim::batch

@@ -52,4 +52,7 @@ std::string junit_xml(
     GateStatistic statistic,
     const std::vector<std::pair<std::string, std::string>>& suite_properties = {});
 
+/// Whether a file's first bytes are a JUnit report as junit_xml writes them.
+bool looks_like_junit_report(const std::string& head);
+
 }  // namespace plantsim::batch

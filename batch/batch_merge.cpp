@@ -13,6 +13,7 @@
 #include <set>
 
 #include "batch/batch_report.h"
+#include "batch/episode_record.h"
 #include "batch/episode_records.h"
 #include "batch/episode_space.h"
 #include "batch/scenario_setup.h"
@@ -29,6 +30,7 @@ struct ShardRecords {
   std::map<std::string, std::pair<std::int64_t, std::string>> by_id;  // id -> (index, line)
   std::string fingerprint, first_dir, scenario_file;
   std::int64_t expected = 0;
+  std::int64_t unkeyed = 0;  ///< records of builds before episode keys
 };
 
 /// The same episode from a run whose lists were ordered otherwise differs in its index and
@@ -59,6 +61,12 @@ void add_record(ShardRecords& s, const std::string& dir, const std::string& path
   }
   const std::string id = j["id"].get<std::string>();
   const std::int64_t index = j["index"].get<std::int64_t>();
+  if (!j.contains("key"))
+    ++s.unkeyed;
+  else if (!j["key"].is_string() || j["key"].get<std::string>() != episode_key(theirs, id))
+    throw std::invalid_argument("merge: " + path + " holds episode '" + id +
+                                "' whose key does not match its scenario and id: a record of "
+                                "another run, or one edited; merge only what batches wrote");
   if (index < 0 || index >= s.expected)
     throw std::invalid_argument("merge: " + path + " holds episode '" + id + "' with index " +
                                 std::to_string(index) + ", outside the scenario's " +
@@ -99,7 +107,22 @@ struct MergedScenario {
   std::optional<EpisodeSpace> episodes;  // over *spec
 };
 
-void find_scenario(const ShardRecords& s, MergedScenario& out) {
+void find_scenario(const ShardRecords& s, const std::string& given, MergedScenario& out) {
+  if (!given.empty()) {  // named by the user: it must load and be the records' scenario
+    BatchSpec spec = load_batch_spec(given);
+    ScenarioWorlds loaded = load_scenario_worlds(spec);
+    const std::string fingerprint =
+        scenario_identity(spec, loaded.contents, loaded.names, s.expected).fingerprint;
+    if (fingerprint != s.fingerprint)
+      throw std::invalid_argument("merge: --scenario " + given + " is scenario " + fingerprint +
+                                  " by its content; the records are of scenario " + s.fingerprint);
+    out.worlds = std::move(loaded.worlds);
+    out.planners = spec.planners;
+    out.gate = spec.gate;
+    out.spec = std::move(spec);
+    out.episodes.emplace(*out.spec, loaded.names);
+    return;
+  }
   std::error_code ec;
   if (s.scenario_file.empty() || !std::filesystem::exists(s.scenario_file, ec)) return;
   try {
@@ -147,7 +170,15 @@ void check_ids_by_their_parts(const ShardRecords& s) {
 /// Refuses a record foreign to the scenario, and missing episodes unless `allow_partial`.
 void check_against_scenario(const ShardRecords& s, const MergedScenario& scenario,
                             bool allow_partial) {
-  if (!scenario.episodes) check_ids_by_their_parts(s);
+  if (!scenario.episodes) {
+    if (s.unkeyed > 0)
+      throw std::invalid_argument(
+          "merge: the scenario file " + s.scenario_file + " is gone or changed, and " +
+          std::to_string(s.unkeyed) +
+          " record(s) carry no episode key (an older build): nothing can tell them from records "
+          "of another run; give the scenario with --scenario FILE");
+    check_ids_by_their_parts(s);
+  }
   if (scenario.episodes)
     for (const auto& [id, entry] : s.by_id)
       if (!scenario.episodes->find(id))
@@ -181,7 +212,7 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   check_batch_output_folder(out_dir, options.own_files);
   const ShardRecords shards = read_shards(dirs);
   MergedScenario scenario;
-  find_scenario(shards, scenario);
+  find_scenario(shards, options.scenario, scenario);
   check_against_scenario(shards, scenario, options.allow_partial);
   std::vector<std::pair<std::int64_t, std::string>> ordered;
   for (const auto& [id, entry] : shards.by_id) ordered.push_back(entry);

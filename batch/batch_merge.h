@@ -14,7 +14,10 @@
 namespace plantsim::batch {
 
 struct MergeOptions {
-  bool allow_partial = false;          ///< merge even when episodes of the scenario are missing
+  bool allow_partial = false;  ///< merge even when episodes of the scenario are missing
+  /// The scenario file, when it no longer stands where the records say (moved, or another
+  /// checkout): it must be the records' scenario by content (its fingerprint), whatever its path.
+  std::string scenario;
   std::vector<std::string> own_files;  ///< further files of this merge in its output folder
   GateOverride gate;
 };

@@ -25,8 +25,10 @@
 #include "batch/episode_space.h"
 #include "batch/progress.h"
 #include "batch/scenario_setup.h"
+#include "episode/episode_work.h"
 #include "util/atomic_file.h"
 #include "util/folder_lock.h"
+#include "util/thread_team.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
@@ -132,9 +134,10 @@ void run_episodes(const RunContext& run, const std::vector<Episode>& todo, std::
   Progress progress(static_cast<std::int64_t>(todo.size()), run.options.progress);
   std::exception_ptr failure;
   auto worker = [&]() {
-    EpisodeRunner runner(run.spec, run.loaded.worlds, run.loaded.contents, run.configs,
-                         run.options.steering);
     try {
+      // Inside the try: a thread short of memory for its runner ends the batch with a message.
+      EpisodeRunner runner(run.spec, run.loaded.worlds, run.loaded.contents, run.configs,
+                           run.options.steering);
       for (std::size_t k = next++; k < todo.size(); k = next++) {
         const Episode& e = todo[k];
         if (run.options.steering.interrupted && run.options.steering.interrupted())
@@ -162,9 +165,7 @@ void run_episodes(const RunContext& run, const std::vector<Episode>& todo, std::
   };
   const int threads = run.options.threads > 0 ? run.options.threads
                                               : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+  util::run_on_threads(threads, worker);
   const bool synced = ::fsync(::fileno(out)) == 0 || errno == EINVAL;
   const std::string sync_error = synced ? "" : util::system_error_text("cannot sync " + jsonl);
   if (std::fclose(out) != 0 && !failure)
@@ -206,6 +207,8 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const ScenarioWorlds loaded = load_scenario_worlds(spec);
   check_charger_offsets(spec, loaded.worlds);
   const std::vector<episode::EpisodeConfig> configs = episode_configs(spec);
+  for (const worlds::World& w : loaded.worlds)
+    for (const episode::EpisodeConfig& c : configs) episode::check_episode_work(w, c);
   const EpisodeSpace all(spec, loaded.names);
   const ScenarioIdentity scenario =
       scenario_identity(spec, loaded.contents, loaded.names, all.size());

@@ -7,10 +7,19 @@
 
 #include "episode/episode_json.h"
 #include "geometry/predicates.h"
+#include "util/fingerprint.h"
 
 namespace plantsim::batch {
 
 using nlohmann::json;
+
+std::string episode_key(const std::string& scenario_fingerprint, const std::string& id) {
+  return util::Fingerprint()
+      .add(std::string_view("plantsim episode key v1"))
+      .add(scenario_fingerprint)
+      .add(id)
+      .hex();
+}
 
 std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioIdentity& scenario,
                         const worlds::World& plant, const episode::EpisodeResult& r,
@@ -23,6 +32,7 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioI
   j["scenario"] = scenario.fingerprint;
   j["scenario_episodes"] = scenario.episodes;
   j["scenario_file"] = scenario.file;
+  j["key"] = episode_key(scenario.fingerprint, e.id);
   j["world"] = world_name;
   j["planner"] = spec.planners[e.planner];
   j["controller"] = spec.controllers[e.controller].name;

@@ -12,6 +12,11 @@
 
 namespace plantsim::batch {
 
+/// The episode's key: its scenario's fingerprint and its id as one hash, written in its record
+/// so that a merge without the scenario file still refuses a record of another run (or one
+/// edited) standing in for a missing episode.
+std::string episode_key(const std::string& scenario_fingerprint, const std::string& id);
+
 /// The JSON record (one line, no newline) of episode `e` run on `plant` with result `r`;
 /// `optimal_m` is the exact shortest path to the staging pose (the planners' yardstick);
 /// `shortest_possible_m` the driven length's lower bound (docked episodes;

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "batch/batch_gate.h"
 #include "batch/record_schema.h"
 #include "util/atomic_file.h"
 
@@ -33,11 +34,7 @@ struct Fd {
 bool junit_report(const std::filesystem::directory_entry& e) {
   std::error_code ec;
   if (e.path().extension() != ".xml" || !e.is_regular_file(ec) || e.is_symlink(ec)) return false;
-  std::ifstream in(e.path());
-  std::string head(512, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  return head.rfind("<?xml", 0) == 0 && head.find("<testsuites") != std::string::npos;
+  return looks_like_junit_report(util::file_head(e.path().string(), 512));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "episode/episode_work.h"
 #include "sim/kidnap_landing.h"
 #include "sim/target_catch.h"
 
@@ -242,6 +243,7 @@ EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
                        const EpisodeConfig& config, const EpisodeSteering& steering)
     : map_copy_(worlds::differs_from_map(plant) ? worlds::robot_map(plant) : worlds::World{}),
       map_(worlds::differs_from_map(plant) ? map_copy_ : plant) {
+  check_episode_work(plant, config);  // the commands check it earlier; this holds for every caller
   result_.planner = planner.name();
   result_.travel = std::string(to_string(config.travel));
   result_.perception_mode = std::string(to_string(config.perception.mode));

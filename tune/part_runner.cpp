@@ -11,6 +11,8 @@
 #include "batch/episode_runner.h"
 #include "batch/episode_space.h"
 #include "episode/episode_config_json.h"
+#include "episode/episode_work.h"
+#include "util/thread_team.h"
 
 namespace plantsim::tune {
 
@@ -42,8 +44,10 @@ PartRunner::PartRunner(const batch::BatchSpec& spec, int threads)
     throw std::invalid_argument(spec_.source + ": a tuning part of more than 1000000 episodes");
   episodes_ = space.shard(0, 1);
   for (const batch::Episode& e : episodes_) ids_.push_back(e.id);
-  for (const episode::EpisodeConfig& c : batch::episode_configs(spec_))
+  for (const episode::EpisodeConfig& c : batch::episode_configs(spec_)) {
     timeout_s_ = std::max(timeout_s_, c.timeout_s);
+    for (const worlds::World& w : loaded_.worlds) episode::check_episode_work(w, c);
+  }
 }
 
 std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
@@ -66,8 +70,8 @@ std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
   std::mutex failure_mutex;
   std::exception_ptr failure;
   auto worker = [&]() {
-    batch::EpisodeRunner runner(spec, loaded_.worlds, loaded_.contents, configs);
     try {
+      batch::EpisodeRunner runner(spec, loaded_.worlds, loaded_.contents, configs);
       for (std::size_t k = next++; k < episodes_.size(); k = next++) {
         if (interrupted && interrupted())
           throw TuneInterrupted("the tuning was interrupted; its finished evaluations are kept");
@@ -85,9 +89,7 @@ std::vector<EpisodeOutcome> PartRunner::run(const std::string& overrides,
       next = episodes_.size();
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads_; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
+  util::run_on_threads(threads_, worker);
   if (failure) std::rethrow_exception(failure);
   return out;
 }

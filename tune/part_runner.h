@@ -41,6 +41,7 @@ class PartRunner {
 
   const std::vector<std::string>& ids() const { return ids_; }
   const batch::BatchSpec& spec() const { return spec_; }
+  const batch::ScenarioWorlds& worlds() const { return loaded_; }
   /// The longest episode timeout of the part's settings (bounds a mean time).
   double timeout_s() const { return timeout_s_; }
   /// The scenario fingerprint of the part (ties the records to what made them).

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "tune/held_out.h"
 #include "tune/part_runner.h"
 #include "tune/search.h"
 #include "tune/tune_report.h"
@@ -215,6 +216,7 @@ const std::vector<std::string>& tune_output_names() {
 TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
   const auto began = std::chrono::steady_clock::now();
   const PartRunner tuning(spec.tuning, spec.threads), validation(spec.validation, spec.threads);
+  check_held_out(tuning.spec(), tuning.worlds(), validation.spec(), validation.worlds());
   TuneOutcome out;
   out.tuning_episodes = static_cast<std::int64_t>(tuning.ids().size());
   out.validation_episodes = static_cast<std::int64_t>(validation.ids().size());

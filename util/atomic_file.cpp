@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace plantsim::util {
@@ -21,6 +22,23 @@ namespace fs = std::filesystem;
 std::string parent_or_dot(const std::string& path) {
   const fs::path parent = fs::path(path).parent_path();
   return parent.empty() ? "." : parent.string();
+}
+
+/// `path` with `suffix` appended to its last name, that name cut first (never inside a UTF-8
+/// character) so the whole stays within the system's 255-byte limit on one name: a legal
+/// 250-byte `--out` name was refused because its "<name>.partial-<pid>" was not.
+std::string sibling_name(const std::string& path, const std::string& suffix) {
+  constexpr std::size_t kNameMax = 255;
+  const fs::path p(path);
+  std::string base = p.filename().string();
+  const std::size_t room = kNameMax > suffix.size() ? kNameMax - suffix.size() : 0;
+  if (base.size() > room) {
+    base.resize(room);
+    while (!base.empty() && (static_cast<unsigned char>(base.back()) & 0xC0) == 0x80)
+      base.pop_back();  // a continuation byte: drop the partial character with its lead byte
+    if (!base.empty() && (static_cast<unsigned char>(base.back()) & 0x80) != 0) base.pop_back();
+  }
+  return (p.parent_path() / (base + suffix)).string();
 }
 
 }  // namespace
@@ -57,15 +75,11 @@ std::string not_a_regular_file(const std::string& path) {
 /// A new temporary file beside `path`, created exclusively (never an existing file or link).
 std::pair<int, std::string> exclusive_temporary(const std::string& path) {
   static std::atomic<unsigned> counter{0};
-  // A file name near the system's 255-byte limit leaves no room for the suffix: its temporary
-  // takes the name's first 200 bytes (a 254-byte --junit name failed after the whole batch).
-  const fs::path p(path);
-  std::string base = p.filename().string();
-  if (base.size() > 200) base.resize(200);
-  const std::string stem = (p.parent_path() / base).string();
+  // A file name near the system's 255-byte limit leaves no room for the suffix (a 254-byte
+  // --junit name failed after the whole batch): sibling_name cuts the name to fit.
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string tmp =
-        stem + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+        sibling_name(path, ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd >= 0) return {fd, tmp};
     if (errno != EEXIST)
@@ -77,11 +91,25 @@ std::pair<int, std::string> exclusive_temporary(const std::string& path) {
 
 }  // namespace
 
-void check_output_file(const std::string& path, const std::string& option) {
+std::string file_head(const std::string& path, std::size_t bytes) {
+  if (!not_a_regular_file(path).empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  std::string head(bytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return head;
+}
+
+void check_output_file(const std::string& path, const std::string& option, const OutputKind& kind) {
   const std::string what = not_a_regular_file(path);
   if (!what.empty())
     throw std::invalid_argument(option + " " + path + " is " + what +
                                 "; plantsim writes only new or regular files");
+  std::error_code exists_ec;
+  if (fs::exists(fs::symlink_status(path, exists_ec)) && !kind.is_own(path))
+    throw std::invalid_argument(option + " " + path + " exists and is not " + kind.what +
+                                " plantsim wrote; it would be replaced: name a new file (or "
+                                "remove this one yourself)");
   const std::string folder = parent_or_dot(path);
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
@@ -183,7 +211,7 @@ StagedFolder::StagedFolder(std::string destination, const std::vector<std::strin
                                     "choose a new or empty folder");
     }
   }
-  staging_ = destination_ + ".partial-" + std::to_string(::getpid());
+  staging_ = sibling_name(destination_, ".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);
   fs::create_directories(staging_, ec);
   if (ec || !fs::is_directory(staging_))
@@ -206,7 +234,7 @@ void StagedFolder::commit() {
   // removed only once the new one is in place.
   std::string aside;
   if (fs::exists(destination_, ec)) {
-    aside = destination_ + ".old-" + std::to_string(::getpid());
+    aside = sibling_name(destination_, ".old-" + std::to_string(::getpid()));
     fs::remove_all(aside, ec);
     if (::rename(destination_.c_str(), aside.c_str()) != 0)
       throw std::runtime_error(system_error_text("cannot replace " + destination_));

@@ -3,6 +3,8 @@
 // is written as a whole the same way (util::StagedFolder).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,10 +18,22 @@ namespace plantsim::util {
 /// and the system's reason ("No space left on device").
 void write_file_atomically(const std::string& path, std::string_view bytes);
 
+/// What an output file may replace: an earlier output of its own kind, told by its content
+/// (`is_own` reads the existing file; it must not throw). Anything else at the path (the
+/// scenario, a world, a run's summary.json given by mistake) is the user's and is kept.
+struct OutputKind {
+  std::string what;  ///< "a JUnit report", for the message
+  std::function<bool(const std::string& existing_path)> is_own;
+};
+
 /// Checks, before any work, that write_file_atomically(path, ...) can succeed as far as can be
-/// known: the folder exists and is writable, the target is missing or a regular file.
-/// Throws std::invalid_argument naming `option` (e.g. "--junit") and the problem.
-void check_output_file(const std::string& path, const std::string& option);
+/// known: the folder exists and is writable, the target is missing or a regular file that
+/// `kind` recognises as an earlier output of its own. Throws std::invalid_argument naming
+/// `option` (e.g. "--junit") and the problem.
+void check_output_file(const std::string& path, const std::string& option, const OutputKind& kind);
+
+/// The first `bytes` of a regular file (empty when it cannot be read), for OutputKind tests.
+std::string file_head(const std::string& path, std::size_t bytes = 4096);
 
 /// Flushes a file or folder to the disk; throws std::runtime_error naming it and the reason.
 void sync_path(const std::string& path);

@@ -16,5 +16,8 @@ inline constexpr double kMaxResolution_m = 10.0;
 /// Coordinates in world files lie within +-this (metres): beyond it a plant is not a plant and
 /// coordinate differences lose the millimetres docking is judged by.
 inline constexpr double kMaxCoordinate_m = 1e7;
+/// Headings in world files and pose options lie within +-this (radians): Box2D asserts on an
+/// angle it cannot normalise (a yaw of 1e39 aborted `run --start`), and no plant needs more.
+inline constexpr double kMaxYaw_rad = 100.0;
 
 }  // namespace plantsim::worlds

@@ -106,7 +106,7 @@ class FieldReader {
     known.insert(known.end(), extra_keys.begin(), extra_keys.end());
     keys(value, path, known);
     return {number(value, "x", path), number(value, "y", path),
-            bounded(value, "yaw", path, -100.0, 100.0)};
+            bounded(value, "yaw", path, -kMaxYaw_rad, kMaxYaw_rad)};
   }
 
   std::vector<Rect> rects(const json& value, const std::string& path) const {
@@ -399,6 +399,11 @@ World read_plain_schema(const json& doc, const FieldReader& in, const std::strin
 }  // namespace
 
 void check_pose_free(const World& w, const Pose2& pose, const std::string& field) {
+  // Every pose a world can be given (files, --start/--charger, Python's start=) passes here.
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw))
+    throw WorldError(w.source, field, "x, y and yaw must be finite numbers");
+  if (std::fabs(pose.yaw) > kMaxYaw_rad)
+    throw WorldError(w.source, field + ".yaw", "must lie within +-100 rad");
   const double r = w.robot.radius_m;
   const Vec2 p = pose.position();
   if (!geom::in_closed_rect(w.floor, p))
@@ -481,6 +486,15 @@ void validate_world(const World& w) {
     throw WorldError(w.source, "robot.wheel_base_m", "wheels must fit inside the footprint");
   check_pose_free(w, w.start, "start");
   check_pose_free(w, w.charger, "charger");
+  // The charger's face is the robot's radius ahead of the docked pose and plans keep the
+  // radius plus the margin from it: a staging pose nearer than the margin lies inside the
+  // inflated charger, where no plan can end (5e-324 m loaded, then every episode failed).
+  if (w.charger_spec.staging_distance_m <= w.inflation_margin_m)
+    throw WorldError(w.source, "charger.staging_distance_m",
+                     "must exceed the planning margin inflation_margin_m (" +
+                         FieldReader::short_number(w.inflation_margin_m) +
+                         " m): the staging pose would lie inside the charger's inflated body, "
+                         "where no plan can end");
   check_movers_clear_of_start(w);
   if (!docking_area_clear(w))
     throw WorldError(w.source, "charger",
