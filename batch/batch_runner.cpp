@@ -226,10 +226,13 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   const std::string jsonl = o.out_dir + "/episodes.jsonl";
   remove_batch_temporaries(o.out_dir);
   // The report is written anew from every record at the end: no summary, chart or failure
-  // figure of an earlier run stays beside it (with --fresh, nor do the records).
-  remove_batch_outputs(o.out_dir, !o.fresh);
+  // figure of an earlier run stays beside it (with --fresh, nor do the records). A resume reads
+  // the records back before: one that cannot read them leaves the earlier report where it was
+  // (a hostile line once ran out of memory after the report was gone).
+  if (o.fresh) remove_batch_outputs(o.out_dir, false);
   const std::set<std::string> done =
       resume(jsonl, o, all, scenario.fingerprint, outcome.malformed_lines_cut);
+  if (!o.fresh) remove_batch_outputs(o.out_dir, true);
   std::vector<Episode> todo;
   for (const Episode& e : mine)
     if (!done.count(e.id)) todo.push_back(e);

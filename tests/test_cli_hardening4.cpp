@@ -174,6 +174,21 @@ TEST_F(Cli, AMergeWithoutItsScenarioRefusesAForeignRecord) {
   EXPECT_NE(o.out.find("4 of 4"), std::string::npos) << o.out;
 }
 
+// A resume that cannot read its records (here: records of another scenario) failed after it had
+// removed the earlier report; the report stays until the records are read.
+TEST_F(Cli, AResumeThatCannotReadItsRecordsKeepsTheEarlierReport) {
+  write("w.json", read(kSmallPlant));
+  write("s.yaml", small_batch("w.json", 1));
+  ASSERT_EQ(run("batch s.yaml --out b --quiet", 600).exit_code, 0);
+  ASSERT_TRUE(fs::exists(dir_ / "b/report.html"));
+  write("s.yaml", small_batch("w.json", 2));  // another scenario now
+  const Outcome o = run("batch s.yaml --out b --quiet", 600);
+  EXPECT_EQ(o.exit_code, 2) << o.err;
+  EXPECT_NE(o.err.find("holds episodes of another scenario"), std::string::npos) << o.err;
+  EXPECT_TRUE(fs::exists(dir_ / "b/report.html"));
+  EXPECT_TRUE(fs::exists(dir_ / "b/summary.json"));
+}
+
 // The longest episode a config accepted (83,000 s with 1,000 movers) ran for an hour or more.
 TEST_F(Cli, AnEpisodeAskingForAnHourIsRefusedSayingHowLong) {
   write("w.json", world_json([](nlohmann::json& j) {
