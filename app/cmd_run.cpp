@@ -2,6 +2,7 @@
 // trajectory and the figure into the output folder. Exit 1 when the robot did not dock.
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/commands.h"
@@ -66,9 +67,11 @@ int run_one(const RunCommandOptions& opt, const std::string& command) {
       run_folder_names());
   const std::string& out_dir = staged.path();
   config.seed = opt.seed;
+  // Read as the config file's `travel` is, by its one table of names: a third mode is not
+  // taken for the field here.
   if (!opt.travel.empty())
-    config.travel =
-        opt.travel == "path" ? episode::TravelMode::kPath : episode::TravelMode::kPotentialField;
+    config = episode::parse_episode_config(nlohmann::json{{"travel", opt.travel}}.dump(),
+                                           "--travel", config);
   if (opt.undock) config.docking.undock = true;
   if (opt.animate) config.scan_log_period_s = render::AnimationOptions{}.frame_every_s;
   const episode::EpisodeResult r = episode::run_episode(world, *p, config);

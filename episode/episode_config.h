@@ -25,7 +25,13 @@ namespace plantsim::episode {
 /// path is then only the reference the result is measured against).
 enum class TravelMode { kPath, kPotentialField };
 inline std::string_view to_string(TravelMode m) {
-  return m == TravelMode::kPath ? "path" : "potential-field";
+  switch (m) {  // a new mode without its name does not compile (-Wswitch, -Werror)
+    case TravelMode::kPath:
+      return "path";
+    case TravelMode::kPotentialField:
+      return "potential-field";
+  }
+  return "unknown";
 }
 
 /// A kidnap: at `at_s` the robot is lifted and set down moved by (dx, dy) and turned by dyaw

@@ -17,7 +17,14 @@ std::string_view to_string(LocalizationHealth h) {
 }
 
 std::string_view to_string(EstimatorKind k) {
-  return k == EstimatorKind::kEkf ? "ekf" : "particles";
+  // A switch, not a ternary: a third kind without its name does not compile (-Wswitch, -Werror).
+  switch (k) {
+    case EstimatorKind::kEkf:
+      return "ekf";
+    case EstimatorKind::kParticles:
+      return "particles";
+  }
+  return "unknown";
 }
 
 }  // namespace plantsim::robot
