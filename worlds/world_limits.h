@@ -16,5 +16,8 @@ inline constexpr double kMaxResolution_m = 10.0;
 /// Coordinates in world files lie within +-this (metres): beyond it a plant is not a plant and
 /// coordinate differences lose the millimetres docking is judged by.
 inline constexpr double kMaxCoordinate_m = 1e7;
+/// A pose's yaw lies within +-this (radians): a yaw of 1e39 is no heading (its wrap to [-pi, pi]
+/// keeps no digit of the intended angle). World files and the Python module refuse beyond it.
+inline constexpr double kMaxYaw_rad = 100.0;
 
 }  // namespace plantsim::worlds

@@ -106,7 +106,7 @@ class FieldReader {
     known.insert(known.end(), extra_keys.begin(), extra_keys.end());
     keys(value, path, known);
     return {number(value, "x", path), number(value, "y", path),
-            bounded(value, "yaw", path, -100.0, 100.0)};
+            bounded(value, "yaw", path, -kMaxYaw_rad, kMaxYaw_rad)};
   }
 
   std::vector<Rect> rects(const json& value, const std::string& path) const {
