@@ -11,13 +11,20 @@ namespace {
 
 const char* kind_name(ElementKind k) {
   switch (k) {
-    case ElementKind::kReal: return "real";
-    case ElementKind::kInteger: return "integer";
-    case ElementKind::kBool: return "bool";
-    case ElementKind::kComplex: return "complex";
-    case ElementKind::kText: return "text";
-    case ElementKind::kObject: return "object";
-    case ElementKind::kOther: break;
+    case ElementKind::kReal:
+      return "real";
+    case ElementKind::kInteger:
+      return "integer";
+    case ElementKind::kBool:
+      return "bool";
+    case ElementKind::kComplex:
+      return "complex";
+    case ElementKind::kText:
+      return "text";
+    case ElementKind::kObject:
+      return "object";
+    case ElementKind::kOther:
+      break;
   }
   return "non-numeric";
 }
@@ -38,15 +45,22 @@ ActionProblem problem(ActionProblem::Kind kind, std::string message) {
 
 ElementKind element_kind(char numpy_kind) {
   switch (numpy_kind) {
-    case 'f': return ElementKind::kReal;
+    case 'f':
+      return ElementKind::kReal;
     case 'i':
-    case 'u': return ElementKind::kInteger;
-    case 'b': return ElementKind::kBool;
-    case 'c': return ElementKind::kComplex;
+    case 'u':
+      return ElementKind::kInteger;
+    case 'b':
+      return ElementKind::kBool;
+    case 'c':
+      return ElementKind::kComplex;
     case 'U':
-    case 'S': return ElementKind::kText;
-    case 'O': return ElementKind::kObject;
-    default: return ElementKind::kOther;
+    case 'S':
+      return ElementKind::kText;
+    case 'O':
+      return ElementKind::kObject;
+    default:
+      return ElementKind::kOther;
   }
 }
 
@@ -57,9 +71,9 @@ ActionProblem action_problem(const ActionInput& a, std::size_t envs, const std::
   if (a.kind != ElementKind::kReal && a.kind != ElementKind::kInteger)
     return problem(K::kType, argument + " must hold real numbers (" + unit + "), got " +
                                  kind_name(a.kind) + " elements");
-  const bool shape_ok = envs == 0 ? a.shape == std::vector<std::int64_t>{2}
-                                  : a.shape == std::vector<std::int64_t>{
-                                                   static_cast<std::int64_t>(envs), 2};
+  const bool shape_ok =
+      envs == 0 ? a.shape == std::vector<std::int64_t>{2}
+                : a.shape == std::vector<std::int64_t>{static_cast<std::int64_t>(envs), 2};
   if (!shape_ok)
     return problem(K::kValue, argument + " must be two numbers" +
                                   (envs == 0 ? "" : " per environment") + ", shape " + expected +
