@@ -17,6 +17,7 @@
 #include "render/png_io.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
+#include "util/c_number.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
 
@@ -38,7 +39,7 @@ double driven_coverage(const planner::CoverageGrid& g, const std::vector<geom::V
 
 std::string percent(double share) {
   char s[32];
-  std::snprintf(s, sizeof s, "%.2f %%", 100 * share);
+  util::c_snprintf(s, sizeof s, "%.2f %%", 100 * share);
   return s;
 }
 
@@ -59,15 +60,16 @@ bool drive_coverage(const worlds::World& world, const episode::EpisodeConfig& co
   const double dc =
       start_cell ? driven_coverage(run.planner->grid(), panel.driven, *start_cell) : 0.0;
   char buf[160];
-  std::snprintf(buf, sizeof buf, "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
-                episode::status_name(e).c_str(), e.time_s, 100 * dc, e.collisions);
+  util::c_snprintf(buf, sizeof buf,
+                   "driven: %s after %.0f s, %.1f %% of cells passed, %d collisions",
+                   episode::status_name(e).c_str(), e.time_s, 100 * dc, e.collisions);
   panel.extra = buf;
   j["driven"] = {{"status", episode::status_name(e)},
                  {"time_s", e.time_s},
                  {"driven_coverage", dc},
                  {"collisions", e.collisions},
                  {"driven_length_m", e.driven_length_m}};
-  std::snprintf(buf, sizeof buf, "%.1f", 100 * dc);
+  util::c_snprintf(buf, sizeof buf, "%.1f", 100 * dc);
   driven = buf;
   status = episode::status_name(e);
   return e.docked;
@@ -90,9 +92,9 @@ bool cover_all(const worlds::World& world, const CoverageOptions& opt,
       all_covered = drive_coverage(world, config, run, panel, j, driven, status) && all_covered;
     summary["methods"][run.method] = j;
     char f[3][32];
-    std::snprintf(f[0], 32, "%.2f", 100 * m.coverage);
-    std::snprintf(f[1], 32, "%.2f", 100 * m.repetition);
-    std::snprintf(f[2], 32, "%.1f", m.length_m);
+    util::c_snprintf(f[0], 32, "%.2f", 100 * m.coverage);
+    util::c_snprintf(f[1], 32, "%.2f", 100 * m.repetition);
+    util::c_snprintf(f[2], 32, "%.1f", m.length_m);
     report.rows.push_back({run.method, std::to_string(panel.plan.regions.size()),
                            run.planned() ? f[0] : "-", run.planned() ? f[1] : "-",
                            std::to_string(m.turns), std::to_string(m.dead_ends), f[2],

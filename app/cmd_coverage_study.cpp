@@ -19,6 +19,7 @@
 #include "render/png_io.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
+#include "util/c_number.h"
 #include "worlds/cell_block_world.h"
 
 namespace plantsim::app {
@@ -103,20 +104,21 @@ ShareTally study_share(double share, const StudyOptions& opt, const planner::Cov
 void add_verdicts(double share, const StudyOptions& opt, const render::StudyShare& row,
                   const ShareTally& t, std::vector<std::string>& verdicts) {
   char line[600];
-  std::snprintf(line, sizeof line,
-                "Here, %.0f %% of cells blocked, %d maps: mean repetition CHNN %.2f %%, Potts "
-                "%.2f %%, optimum %.2f %%, greedy %.2f %%, cells %.2f %%;",
-                100 * share, opt.maps, mean(row.methods[0].repetition_percent),
-                mean(row.methods[1].repetition_percent), mean(row.methods[2].repetition_percent),
-                mean(row.methods[3].repetition_percent), mean(row.methods[4].repetition_percent));
+  util::c_snprintf(line, sizeof line,
+                   "Here, %.0f %% of cells blocked, %d maps: mean repetition CHNN %.2f %%, Potts "
+                   "%.2f %%, optimum %.2f %%, greedy %.2f %%, cells %.2f %%;",
+                   100 * share, opt.maps, mean(row.methods[0].repetition_percent),
+                   mean(row.methods[1].repetition_percent), mean(row.methods[2].repetition_percent),
+                   mean(row.methods[3].repetition_percent),
+                   mean(row.methods[4].repetition_percent));
   verdicts.push_back(line);
   std::cout << line << "\n";
-  std::snprintf(line, sizeof line,
-                "    the CHNN repeats less than cells on %d of %d maps, has fewer dead ends on "
-                "%d, fewer turns on %d; valid order in %d of %d restarts; optimum proven on %d "
-                "of %d maps.",
-                t.chnn_below_cells, t.compared, t.chnn_fewer_dead_ends, t.chnn_fewer_turns, t.valid,
-                t.restarts, t.proven, opt.maps);
+  util::c_snprintf(line, sizeof line,
+                   "    the CHNN repeats less than cells on %d of %d maps, has fewer dead ends on "
+                   "%d, fewer turns on %d; valid order in %d of %d restarts; optimum proven on %d "
+                   "of %d maps.",
+                   t.chnn_below_cells, t.compared, t.chnn_fewer_dead_ends, t.chnn_fewer_turns,
+                   t.valid, t.restarts, t.proven, opt.maps);
   verdicts.push_back(line);
   std::cout << line << "\n";
 }
@@ -135,16 +137,16 @@ nlohmann::ordered_json share_summary(double share, const StudyOptions& opt,
                             {"mean_turns", mean(m.turns)},
                             {"mean_dead_ends", mean(m.dead_ends)}};
     char f[3][32];
-    std::snprintf(f[0], 32, "%.2f", mean(m.repetition_percent));
-    std::snprintf(f[1], 32, "%.1f", mean(m.turns));
-    std::snprintf(f[2], 32, "%.1f", mean(m.dead_ends));
+    util::c_snprintf(f[0], 32, "%.2f", mean(m.repetition_percent));
+    util::c_snprintf(f[1], 32, "%.1f", mean(m.turns));
+    util::c_snprintf(f[2], 32, "%.1f", mean(m.dead_ends));
     std::string note;
     if (m.name == "coverage-chnn")
       note = std::to_string(t.valid) + " of " + std::to_string(t.restarts) + " restarts valid";
     if (m.name == "coverage-exact")
       note = "proven on " + std::to_string(t.proven) + " of " + std::to_string(opt.maps) + " maps";
     char b[16];
-    std::snprintf(b, sizeof b, "%.0f %%", 100 * share);
+    util::c_snprintf(b, sizeof b, "%.0f %%", 100 * share);
     report.rows.push_back({b, m.name, std::to_string(planned) + " of " + std::to_string(opt.maps),
                            f[0], f[1], f[2], note});
   }

@@ -12,6 +12,7 @@
 #include "planner/mesh/interval_planner.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "util/c_number.h"
 #include "worlds/grid_map.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -184,7 +185,7 @@ int plan_world(PlanOptions& o) {
   for (const std::string& given : o.family_options) {
     const std::size_t eq = given.find('=');
     char* end = nullptr;
-    const double value = eq == std::string::npos ? 0 : std::strtod(given.c_str() + eq + 1, &end);
+    const double value = eq == std::string::npos ? 0 : util::c_strtod(given.c_str() + eq + 1, &end);
     if (eq == std::string::npos || eq == 0 || end == given.c_str() + eq + 1 || *end != '\0')
       throw std::invalid_argument("plan: --option takes NAME=VALUE with a number, not '" + given +
                                   "'");

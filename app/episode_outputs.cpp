@@ -14,6 +14,7 @@
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
+#include "util/c_number.h"
 #include "util/fingerprint.h"
 #include "util/fixed_text.h"
 
@@ -108,12 +109,12 @@ std::string trajectory_csv(const episode::EpisodeLog& r) {
       "wall_following,target_x_m,target_y_m,est_status\n";
   char line[256];
   for (const auto& s : r.trajectory) {
-    std::snprintf(line, sizeof line,
-                  "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f,%s\n", s.t_s,
-                  s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y, s.estimate.yaw,
-                  s.position_sigma_m, s.speed_mps, s.cross_track_m,
-                  std::string(controller::to_string(s.phase)).c_str(), s.wall_following ? 1 : 0,
-                  s.target.x, s.target.y, std::string(robot::to_string(s.health)).c_str());
+    util::c_snprintf(line, sizeof line,
+                     "%.4f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f,%.4f,%.4f,%s,%d,%.4f,%.4f,%s\n",
+                     s.t_s, s.truth.x, s.truth.y, s.truth.yaw, s.estimate.x, s.estimate.y,
+                     s.estimate.yaw, s.position_sigma_m, s.speed_mps, s.cross_track_m,
+                     std::string(controller::to_string(s.phase)).c_str(), s.wall_following ? 1 : 0,
+                     s.target.x, s.target.y, std::string(robot::to_string(s.health)).c_str());
     out += line;
   }
   return out;

@@ -10,6 +10,7 @@
 
 #include "app/commands.h"
 #include "util/build_stamp.h"
+#include "util/c_number.h"
 #include "util/data_dir.h"
 #include "util/shell_word.h"
 #include "util/unicode_text.h"
@@ -53,7 +54,7 @@ const CLI::Validator& finite_number() {
   static const CLI::Validator finite(
       [](std::string& text) -> std::string {
         char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
+        const double v = util::c_strtod(text.c_str(), &end);
         if (end != text.c_str() && !std::isfinite(v))
           return "expects a finite number, got '" + text + "'";
         return "";

@@ -22,6 +22,7 @@
 #include "render/report.h"
 #include "render/run_figure.h"
 #include "util/atomic_file.h"
+#include "util/c_number.h"
 #include "util/csv.h"
 #include "util/fixed_text.h"
 #include "util/shell_word.h"
@@ -122,7 +123,7 @@ ChartData read_chart_data(const std::vector<std::string>& lines) {
     d.sweep_parameter = j["sweep_parameter"].get<std::string>();
     char* end = nullptr;
     const std::string value = j["sweep_value"].get<std::string>();
-    const double x = std::strtod(value.c_str(), &end);
+    const double x = util::c_strtod(value.c_str(), &end);
     if (end && *end == '\0' && end != value.c_str()) {
       auto& [k, n] = d.sweep_counts[x];
       k += record_succeeded(j);

@@ -12,6 +12,7 @@
 #include "episode/episode_config_json.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "util/c_number.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"
 #include "worlds/known_keys.h"
@@ -65,7 +66,7 @@ std::string overrides_json(const YAML::Node& node, const std::string& source,
       if (decimal_number(s)) {
         if (s.find_first_of(".eE") == std::string::npos && s[0] != '-' && s.size() <= 18)
           return static_cast<std::uint64_t>(std::stoull(s));
-        return std::strtod(s.c_str(), nullptr);
+        return util::c_strtod(s.c_str(), nullptr);
       }
       return s;
     }
@@ -243,7 +244,7 @@ std::string checked_name(const YAML::Node& key, const std::string& path, const s
 double fraction(const YAML::Node& n, const std::string& path, const std::string& field) {
   if (!n.IsScalar() || !decimal_number(n.Scalar()))
     throw WorldError(path, field, "expected a number from 0 to 1");
-  const double v = std::strtod(n.Scalar().c_str(), nullptr);
+  const double v = util::c_strtod(n.Scalar().c_str(), nullptr);
   if (!(v >= 0 && v <= 1)) throw WorldError(path, field, "expected a number from 0 to 1");
   return v;
 }
@@ -469,7 +470,7 @@ void apply_sweep(const YAML::Node& doc, const std::string& path, BatchSpec& s,
     for (std::size_t i = 0; i + 1 < values.size(); ++i)
       if (values[i] == value ||
           (decimal_number(values[i]) && decimal_number(value) &&
-           std::strtod(values[i].c_str(), nullptr) == std::strtod(value.c_str(), nullptr)))
+           util::c_strtod(values[i].c_str(), nullptr) == util::c_strtod(value.c_str(), nullptr)))
         throw WorldError(path, "sweep.values",
                          "'" + value + "' is the value '" + values[i] + "' again");
   }

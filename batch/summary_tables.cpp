@@ -14,6 +14,7 @@
 #include "batch/batch_gate.h"
 #include "batch/wilson_interval.h"
 #include "robot/failure.h"
+#include "util/c_number.h"
 #include "util/csv.h"
 
 namespace plantsim::batch {
@@ -87,7 +88,7 @@ void ConfigurationTally::add(const json& j) {
 std::string field(double value, int decimals, bool exists = true) {
   if (!exists) return "";
   char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  util::c_snprintf(text, sizeof text, "%.*f", decimals, value);
   return text;
 }
 
@@ -227,7 +228,7 @@ std::string sweep_csv(const std::vector<std::string>& lines) {
   // Numeric values in increasing order, so that the rows trace a curve.
   auto numeric = [](const std::string& s, double& v) {
     char* end = nullptr;
-    v = std::strtod(s.c_str(), &end);
+    v = util::c_strtod(s.c_str(), &end);
     return end && *end == '\0' && end != s.c_str();
   };
   double x = 0, y = 0;
@@ -245,14 +246,14 @@ std::string sweep_csv(const std::vector<std::string>& lines) {
     const Acc& a = acc[value];
     const auto [lo, hi] = wilson_interval(a.docked, a.n);
     char row[600];
-    std::snprintf(row, sizeof row,
-                  ",%lld,%lld,%.4f,%.4f,%.4f,%lld,%lld,%lld,%lld,%.3f,%.3f,%.2f,%.3f\n",
-                  static_cast<long long>(a.n), static_cast<long long>(a.docked),
-                  static_cast<double>(a.docked) / a.n, lo, hi, static_cast<long long>(a.charging),
-                  static_cast<long long>(a.collisions), static_cast<long long>(a.robot_collisions),
-                  static_cast<long long>(a.failed_with_collision),
-                  static_cast<double>(a.stops) / a.n, static_cast<double>(a.replans) / a.n,
-                  a.time / a.n, a.docked ? 1000 * a.pos / a.docked : 0.0);
+    util::c_snprintf(
+        row, sizeof row, ",%lld,%lld,%.4f,%.4f,%.4f,%lld,%lld,%lld,%lld,%.3f,%.3f,%.2f,%.3f\n",
+        static_cast<long long>(a.n), static_cast<long long>(a.docked),
+        static_cast<double>(a.docked) / a.n, lo, hi, static_cast<long long>(a.charging),
+        static_cast<long long>(a.collisions), static_cast<long long>(a.robot_collisions),
+        static_cast<long long>(a.failed_with_collision), static_cast<double>(a.stops) / a.n,
+        static_cast<double>(a.replans) / a.n, a.time / a.n,
+        a.docked ? 1000 * a.pos / a.docked : 0.0);
     out += util::csv_field(parameter) + "," + util::csv_field(value) + row;
   }
   return out;

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <string>
 
+#include "util/c_number.h"
+
 namespace plantsim::planner {
 
 /// 2 GiB, the default (PlannerInput::search_budget_bytes): what the largest plants (200,000
@@ -20,7 +22,7 @@ inline std::string search_limit_note(const std::string& planner, std::size_t bud
                                      std::size_t bytes, const std::string& what) {
   const auto mib = [](std::size_t b) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(b) / (1 << 20));
+    util::c_snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(b) / (1 << 20));
     return std::string(text);
   };
   return planner + ": the search passed its memory budget of " + mib(budget) + " (" + mib(bytes) +

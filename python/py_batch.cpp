@@ -10,6 +10,7 @@
 #include "batch/summary_tables.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
+#include "python/py_convert.h"
 #include "python/py_interrupt.h"
 #include "util/input_file.h"
 #include "worlds/world.h"
@@ -17,12 +18,13 @@
 namespace plantsim::python {
 namespace {
 
-py::dict batch(const std::string& scenario, const std::string& out, const py::object& controller,
-               const py::object& docking, const std::string& controller_name, int threads,
-               bool figures, bool fresh, bool progress) {
+py::dict batch(const py::object& scenario_arg, const std::string& out, const py::object& controller,
+               const py::object& docking, const std::string& controller_name,
+               const py::object& threads, bool figures, bool fresh, bool progress) {
+  const std::string scenario = file_from(scenario_arg, "scenario");
   batch::RunOptions o;
   o.out_dir = out;
-  o.threads = threads;
+  o.threads = static_cast<int>(whole_from(threads, "threads", 0, 4096));  // 0: one per core
   o.figures = figures;
   o.fresh = fresh;
   o.progress = progress;

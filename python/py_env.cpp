@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -21,8 +22,10 @@
 #include "batch/scenario_setup.h"
 #include "episode/stepped_episode.h"
 #include "planner/registry.h"
+#include "python/action_check.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
+#include "python/py_interrupt.h"
 #include "python/py_world.h"
 #include "util/worker_pool.h"
 #include "worlds/world_fingerprint.h"
@@ -152,24 +155,28 @@ class EnvCore {
   /// reset() in two halves: the draw from the shared source (one thread at a time), then the
   /// episode's own planning and first second (any thread: VectorEnv runs them in parallel).
   void draw(std::uint64_t seed, const std::string& id) { drawn_ = source_->draw(seed, id); }
+  /// Throws std::invalid_argument when the episode ends before the agent's first step (its plan
+  /// failed at the start, most often): reset() cannot hand out a first observation of it, and
+  /// there is no perception to observe (stepping on, or observing it, read a null pointer).
+  /// The environment is left without an episode, ready for another reset.
   void begin() {
+    episode_.reset();
     id_ = drawn_.id;
-    episode_ = std::make_unique<SteppedEpisode>(drawn_.plant, drawn_.planner, drawn_.config,
-                                                steer_docking_);
+    auto e = std::make_unique<SteppedEpisode>(drawn_.plant, drawn_.planner, drawn_.config,
+                                              steer_docking_);
     reward_ = 0;
     truncated_by_limit_ = false;
-    episode_->start();
+    if (!e->start() || e->view().perception == nullptr)
+      throw std::invalid_argument(ended_at_start(*e));
+    episode_ = std::move(e);
     last_distance_ = distance_to_staging();
   }
 
-  /// One period's command: runs to the next period the outside steers, or to the end.
+  /// One period's command (checked by the caller: finite): runs to the next period the outside
+  /// steers, or to the end.
   void step(controller::Twist command) {
     if (!episode_ || done())
       throw std::invalid_argument("the episode has ended: call reset() first");
-    if (!std::isfinite(command.v_mps) || !std::isfinite(command.omega_radps))
-      throw std::invalid_argument("a non-finite action (" + std::to_string(command.v_mps) + ", " +
-                                  std::to_string(command.omega_radps) + ") at t = " +
-                                  std::to_string(episode_->view().perception->t_s) + " s");
     episode_->step(command);
     const double d = distance_to_staging();
     reward_ = weights_.progress * (last_distance_ - d) - weights_.per_step;
@@ -179,6 +186,15 @@ class EnvCore {
       reward_ += episode_->result().docked ? weights_.docked : -weights_.failed;
     if (!episode_->ended() && max_steps_ > 0 && episode_->steps() >= max_steps_)
       truncated_by_limit_ = true;
+  }
+
+  std::string ended_at_start(const SteppedEpisode& e) const {
+    const episode::EpisodeResult& r = e.result();
+    const std::string why =
+        r.failure && !r.failure->detail.empty() ? r.failure->detail : episode::status_name(r);
+    return "episode '" + id_ + "' (world '" + drawn_.plant->name + "', planner '" + drawn_.planner +
+           "') ended before the agent's first step: " + why +
+           ". Try another seed, start or planner (plantsim.plan(world, planner) shows the plan)";
   }
 
   bool terminated() const {
@@ -194,6 +210,7 @@ class EnvCore {
   double reward() const { return reward_; }
   const SteppedEpisode& episode() const { return *episode_; }
   bool has_episode() const { return episode_ != nullptr; }
+  void clear() { episode_.reset(); }
   const EpisodeSource& source() const { return *source_; }
   const std::string& id() const { return id_; }
   RewardWeights weights_;
@@ -263,6 +280,8 @@ struct ObservationArrays {
   py::array_t<double> time;
 
   void fill(py::ssize_t r, const episode::OutsideView& v) {
+    if (v.perception == nullptr)  // EnvCore never keeps such an episode (begin() refuses it)
+      throw std::logic_error("an episode without a perception to observe");
     const robot::Perception& p = *v.perception;
     auto sc = scan.mutable_unchecked<2>();
     const py::ssize_t beams = sc.shape(1);
@@ -370,58 +389,109 @@ bool docking_argument(const std::string& docking) {
   return docking == "agent";
 }
 
-controller::Twist twist_of(const py::handle& action, const std::string& kind, double wheel_base) {
-  std::vector<double> a;
+/// An action argument as numpy sees it (numpy.asarray: no conversion yet, so that complex,
+/// bool, text and object elements are refused, not cast); the values only when the count fits.
+ActionInput action_input(const py::handle& action, const std::string& argument, std::size_t count) {
+  static const py::object* asarray =
+      new py::object(py::module_::import("numpy").attr("asarray"));  // kept for the process
+  py::array a;
   try {
-    a = action.cast<std::vector<double>>();
-  } catch (const py::cast_error&) {
+    a = (*asarray)(action);
+  } catch (const py::error_already_set& e) {  // a ragged nested list, for one
+    throw py::type_error(argument + " must be an array of real numbers, got " +
+                         py::repr(action).cast<std::string>().substr(0, 80) + " (" + e.what() +
+                         ")");
   }
-  if (a.size() != 2)
-    throw std::invalid_argument(
-        "an action is two numbers: (v m/s, omega rad/s), or (left, right) "
-        "wheel speeds m/s with action=\"wheels\"; got " +
-        py::repr(action).cast<std::string>());
-  if (kind == "wheels") return {(a[0] + a[1]) / 2, (a[1] - a[0]) / wheel_base};
-  return {a[0], a[1]};
+  ActionInput in;
+  in.kind = element_kind(a.dtype().kind());
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) in.shape.push_back(a.shape(d));
+  if ((in.kind == ElementKind::kReal || in.kind == ElementKind::kInteger) &&
+      static_cast<std::size_t>(a.size()) == count) {
+    const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    in.values.assign(values.data(), values.data() + count);
+  }
+  return in;
 }
 
+/// The checked actions (python/action_check.h) as commands; throws before anything steps.
+std::vector<controller::Twist> twists_of(const py::handle& action, const std::string& argument,
+                                         std::size_t envs, const std::string& kind,
+                                         const std::vector<double>& wheel_bases) {
+  const std::size_t rows = envs == 0 ? 1 : envs;
+  const ActionInput in = action_input(action, argument, 2 * rows);
+  if (const ActionProblem p = action_problem(in, envs, argument)) {
+    if (p.kind == ActionProblem::Kind::kType) throw py::type_error(p.message);
+    throw std::invalid_argument(p.message);
+  }
+  std::vector<controller::Twist> t(rows);
+  for (std::size_t i = 0; i < rows; ++i) {
+    const double a = in.values[2 * i], b = in.values[2 * i + 1];
+    t[i] = kind == "wheels" ? controller::Twist{(a + b) / 2, (b - a) / wheel_bases[i]}
+                            : controller::Twist{a, b};
+  }
+  return t;
+}
+
+std::string action_argument(const std::string& action) {
+  if (action != "twist" && action != "wheels")
+    throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
+  return action;
+}
+
+std::string options_episode(const py::object& options) {
+  if (options.is_none()) return "";
+  if (!py::isinstance<py::dict>(options))
+    throw py::type_error("options must be a dict ({\"episode\": id}) or None");
+  const py::dict o = options.cast<py::dict>();
+  for (const auto& kv : o)
+    if (!py::isinstance<py::str>(kv.first) || kv.first.cast<std::string>() != "episode")
+      throw std::invalid_argument("unknown option " + py::repr(kv.first).cast<std::string>() +
+                                  " (options: episode)");
+  if (!o.contains("episode")) return "";
+  if (!py::isinstance<py::str>(o["episode"]))
+    throw py::type_error("options['episode'] must be an episode id (str)");
+  return o["episode"].cast<std::string>();
+}
+
+/// One environment. Calls run one at a time (CallGuard); reset plans in the background,
+/// answering Ctrl-C (Background); an interrupted reset leaves no episode: reset() again.
 struct PyEnv {
   PyEnv(const py::object& world, const py::object& scenario, const py::object& config,
         const std::string& planner, const py::object& start, const std::string& docking,
-        const std::string& action, const py::object& reward, std::int64_t max_steps)
+        const std::string& action, const py::object& reward, const py::object& max_steps)
       : core(source_of(world, scenario, config, planner, start), docking_argument(docking),
-             max_steps),
-        action_kind(action),
+             whole_from(max_steps, "max_steps", 0, std::numeric_limits<std::int64_t>::max())),
+        action_kind(action_argument(action)),
         reward_fn(reward) {
-    if (action != "twist" && action != "wheels")
-      throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
     if (!reward.is_none() && !PyCallable_Check(reward.ptr()))
-      throw std::invalid_argument("reward must be callable: f(obs, info) -> float, or None");
+      throw py::type_error("reward must be callable: f(obs, info) -> float, or None");
   }
 
   py::tuple reset(const py::object& seed, const py::object& options) {
-    std::string id;
-    if (!options.is_none()) {
-      const py::dict o = options.cast<py::dict>();
-      for (const auto& kv : o)
-        if (kv.first.cast<std::string>() != "episode")
-          throw std::invalid_argument("unknown option '" + kv.first.cast<std::string>() +
-                                      "' (options: episode)");
-      if (o.contains("episode")) id = o["episode"].cast<std::string>();
-    }
-    if (!seed.is_none()) next_seed = seed.cast<std::uint64_t>();
-    const std::uint64_t s = next_seed++;
-    {
-      py::gil_scoped_release release;
-      core.reset(s, id);
-    }
+    const std::string id = options_episode(options);
+    const std::optional<std::uint64_t> s =
+        seed.is_none() ? std::nullopt : std::optional<std::uint64_t>(seed_from(seed, "seed"));
+    const CallGuard::Held held = guard.enter("Env");
+    background.settle();
+    if (s) next_seed = *s;
+    const std::uint64_t this_seed = next_seed++;
+    core.clear();  // until the new episode has begun: a failed or interrupted reset leaves none
+    background.run([this, this_seed, id] {
+      core.draw(this_seed, id);
+      if (!background.stopping()) core.begin();
+    });
     return py::make_tuple(observation(), info_of(core));
   }
 
   py::tuple step(const py::handle& action) {
-    if (!core.has_episode()) throw std::invalid_argument("call reset() before step()");
+    const CallGuard::Held held = guard.enter("Env");
+    if (background.settle()) core.clear();  // an interrupted reset's episode: nobody asked for it
+    if (!core.has_episode())
+      throw std::invalid_argument(
+          "no episode: call reset() before step() (a reset that raised or was interrupted "
+          "leaves none)");
     const controller::Twist t =
-        twist_of(action, action_kind, core.episode().plant().robot.wheel_base_m);
+        twists_of(action, "action", 0, action_kind, {core.episode().plant().robot.wheel_base_m})[0];
     {
       py::gil_scoped_release release;
       core.step(t);
@@ -448,67 +518,83 @@ struct PyEnv {
   std::string action_kind;
   py::object reward_fn;
   std::uint64_t next_seed = 1;
+  CallGuard guard;
+  Background background;  // last: destroyed first, waiting for work that uses the members above
 };
 
+/// n environments stepped on a worker pool. Calls one at a time; plans (reset, autoreset) in the
+/// background, answering Ctrl-C; after an interrupted or failed reset or autoreset, reset().
 struct PyVectorEnv {
-  PyVectorEnv(int n, const py::object& world, const py::object& scenario, const py::object& config,
-              const std::string& planner, const py::object& start, const std::string& docking,
-              const std::string& action, std::int64_t max_steps, int threads)
-      : action_kind(action),
-        pool(std::clamp(
-            threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()), 1,
-            std::max(1, n))) {
-    if (n < 1 || n > 4096) throw std::invalid_argument("n must be from 1 to 4096");
-    if (action != "twist" && action != "wheels")
-      throw std::invalid_argument("action must be \"twist\" or \"wheels\", got '" + action + "'");
+  PyVectorEnv(const py::object& n_arg, const py::object& world, const py::object& scenario,
+              const py::object& config, const std::string& planner, const py::object& start,
+              const std::string& docking, const std::string& action, const py::object& max_steps,
+              const py::object& threads)
+      : action_kind(action_argument(action)), pool(pool_threads(n_arg, threads)) {
+    const auto n = static_cast<int>(whole_from(n_arg, "n", 1, 4096));
+    const std::int64_t limit =
+        whole_from(max_steps, "max_steps", 0, std::numeric_limits<std::int64_t>::max());
     const std::shared_ptr<EpisodeSource> source =
         source_of(world, scenario, config, planner, start);
     for (int i = 0; i < n; ++i)
-      envs.push_back(std::make_unique<EnvCore>(source, docking_argument(docking), max_steps));
-    // One source for all: its draws are made one at a time (resets run on one thread below).
+      envs.push_back(std::make_unique<EnvCore>(source, docking_argument(docking), limit));
+    // One source for all: its draws are made one at a time (on one thread, below).
+  }
+
+  /// The pool's threads: 0 one per core; at most n and 4 per core (util/worker_pool.h); a
+  /// negative or absurd count refused.
+  static int pool_threads(const py::object& n, const py::object& threads) {
+    const auto envs = static_cast<std::size_t>(whole_from(n, "n", 1, 4096));
+    const auto asked = static_cast<int>(whole_from(threads, "threads", 0, 4096));
+    return util::WorkerPool::threads_for(asked, envs);
   }
 
   py::tuple reset(const py::object& seed) {
-    if (!seed.is_none()) first_seed = seed.cast<std::uint64_t>();
+    const std::optional<std::uint64_t> s =
+        seed.is_none() ? std::nullopt : std::optional<std::uint64_t>(seed_from(seed, "seed"));
+    const CallGuard::Held held = guard.enter("VectorEnv");
+    background.settle();
+    if (s) first_seed = *s;
+    ready = false;
     resets.assign(envs.size(), 0);
-    {
-      py::gil_scoped_release release;
-      for (std::size_t i = 0; i < envs.size(); ++i) envs[i]->draw(seed_of(i), "");
-      pool.run(envs.size(), [&](std::size_t i) { envs[i]->begin(); });
-    }
+    background.run([this] {
+      for (std::size_t i = 0; i < envs.size() && !background.stopping(); ++i)
+        envs[i]->draw(seed_of(i), "");
+      begin_all(std::vector<char>(envs.size(), 1), {});
+    });
+    ready = true;
     return py::make_tuple(observations(), infos());
   }
 
-  py::tuple step(const py::array_t<double, py::array::c_style | py::array::forcecast>& actions) {
-    if (actions.ndim() != 2 || actions.shape(0) != static_cast<py::ssize_t>(envs.size()) ||
-        actions.shape(1) != 2)
-      throw std::invalid_argument("actions must be an array of shape (" +
-                                  std::to_string(envs.size()) + ", 2)");
-    if (resets.empty()) throw std::invalid_argument("call reset() before step()");
-    auto a = actions.unchecked<2>();
-    std::vector<controller::Twist> twists(envs.size());
-    for (std::size_t i = 0; i < envs.size(); ++i) {
-      const auto k = static_cast<py::ssize_t>(i);
-      twists[i] = action_kind == "wheels"
-                      ? controller::Twist{(a(k, 0) + a(k, 1)) / 2,
-                                          (a(k, 1) - a(k, 0)) /
-                                              envs[i]->episode().plant().robot.wheel_base_m}
-                      : controller::Twist{a(k, 0), a(k, 1)};
-    }
+  py::tuple step(const py::handle& actions) {
+    const CallGuard::Held held = guard.enter("VectorEnv");
+    background.settle();
+    if (!ready)
+      throw std::invalid_argument(
+          "call reset() before step() (a reset or autoreset that raised or was interrupted "
+          "needs a new reset())");
+    std::vector<double> wheel_bases;
+    for (const auto& e : envs) wheel_bases.push_back(e->episode().plant().robot.wheel_base_m);
+    // Every action checked before any environment steps.
+    std::vector<controller::Twist> twists =
+        twists_of(actions, "actions", envs.size(), action_kind, wheel_bases);
     std::vector<char> was_done(envs.size());
-    for (std::size_t i = 0; i < envs.size(); ++i) was_done[i] = envs[i]->done();
-    {
-      py::gil_scoped_release release;
-      // Gymnasium's next-step autoreset: an environment that ended at the last step starts
-      // its next episode now (reward 0, not terminated); the others take their actions.
-      for (std::size_t i = 0; i < envs.size(); ++i)
-        if (was_done[i]) ++resets[i], envs[i]->draw(seed_of(i), "");
-      pool.run(envs.size(), [&](std::size_t i) {
-        if (was_done[i])
-          envs[i]->begin();
-        else
-          envs[i]->step(twists[i]);
+    bool any_done = false;
+    for (std::size_t i = 0; i < envs.size(); ++i)
+      any_done |= (was_done[i] = static_cast<char>(envs[i]->done())) != 0;
+    if (!any_done) {
+      py::gil_scoped_release release;  // a step is one control period: no planning to wait for
+      pool.run(envs.size(), [&](std::size_t i) { envs[i]->step(twists[i]); });
+    } else {
+      // Gymnasium's next-step autoreset: an environment that ended at the last step starts its
+      // next episode now (reward 0, not terminated), planning in the background; the others
+      // take their actions.
+      ready = false;
+      background.run([this, was_done, twists = std::move(twists)] {
+        for (std::size_t i = 0; i < envs.size(); ++i)
+          if (was_done[i]) ++resets[i], envs[i]->draw(seed_of(i), "");
+        begin_all(was_done, twists);
       });
+      ready = true;
     }
     py::array_t<double> rewards(static_cast<py::ssize_t>(envs.size()));
     py::array_t<bool> terminated(static_cast<py::ssize_t>(envs.size())),
@@ -522,10 +608,24 @@ struct PyVectorEnv {
     return py::make_tuple(observations(), rewards, terminated, truncated, infos());
   }
 
+  /// Begins the environments marked in `begin` and steps the others with `twists` (empty: none
+  /// to step), on the pool; a begin not yet started when Ctrl-C came is skipped. The first
+  /// failure is rethrown naming its environment.
+  void begin_all(const std::vector<char>& begin, const std::vector<controller::Twist>& twists) {
+    pool.run(envs.size(), [&](std::size_t i) {
+      if (!begin[i]) return envs[i]->step(twists[i]);
+      if (background.stopping()) return;
+      try {
+        envs[i]->begin();
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("VectorEnv environment " + std::to_string(i) + ": " + e.what());
+      }
+    });
+  }
+
   std::uint64_t seed_of(std::size_t i) const {
     return first_seed + i + static_cast<std::uint64_t>(resets[i]) * envs.size();
   }
-
   py::dict observations() const {
     ObservationArrays a(static_cast<py::ssize_t>(envs.size()),
                         static_cast<py::ssize_t>(PyEnv::beams_of(*envs.front())));
@@ -553,6 +653,9 @@ struct PyVectorEnv {
   util::WorkerPool pool;
   std::uint64_t first_seed = 1;
   std::vector<std::int64_t> resets;
+  bool ready = false;  // every environment holds an episode begun by a finished reset or step
+  CallGuard guard;
+  Background background;  // last: destroyed first, waiting for work that uses the members above
 };
 
 /// (max speed m/s, wheel base m, lidar beams, lidar max range m) for the spaces.
@@ -569,7 +672,7 @@ void bind_env(py::module_& m) {
   py::class_<PyEnv>(m, "_Env")
       .def(py::init<const py::object&, const py::object&, const py::object&, const std::string&,
                     const py::object&, const std::string&, const std::string&, const py::object&,
-                    std::int64_t>(),
+                    const py::object&>(),
            py::arg("world"), py::arg("scenario"), py::arg("config"), py::arg("planner"),
            py::arg("start"), py::arg("docking"), py::arg("action"), py::arg("reward"),
            py::arg("max_steps"))
@@ -577,12 +680,12 @@ void bind_env(py::module_& m) {
       .def("step", &PyEnv::step, py::arg("action"))
       .def_property_readonly("limits", [](const PyEnv& e) { return limits_of(e.core.source()); });
   py::class_<PyVectorEnv>(m, "_VectorEnv")
-      .def(
-          py::init<int, const py::object&, const py::object&, const py::object&, const std::string&,
-                   const py::object&, const std::string&, const std::string&, std::int64_t, int>(),
-          py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
-          py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("action"),
-          py::arg("max_steps"), py::arg("threads"))
+      .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&,
+                    const std::string&, const py::object&, const std::string&, const std::string&,
+                    const py::object&, const py::object&>(),
+           py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
+           py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("action"),
+           py::arg("max_steps"), py::arg("threads"))
       .def("reset", &PyVectorEnv::reset, py::arg("seed"))
       .def_property_readonly(
           "limits", [](const PyVectorEnv& e) { return limits_of(e.envs.front()->source()); })

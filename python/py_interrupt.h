@@ -6,10 +6,13 @@
 #pragma once
 
 #include <atomic>
+#include <condition_variable>
 #include <exception>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 #include "python/py_bindings.h"
 
@@ -23,6 +26,64 @@ struct Interruptible {
 
 /// Runs `work` off the GIL; sets `stop` when a signal handler raises. Call with the GIL held.
 Interruptible run_interruptibly(const std::function<void()>& work, std::atomic<bool>& stop);
+
+/// One Python object's calls, one at a time (plantsim.Env, VectorEnv: their stepping runs with
+/// the GIL released, and two threads stepping one Env at once crashed). A caller waits for the
+/// object with the GIL released (so the holder can take the GIL back to build its results: no
+/// deadlock), answering Ctrl-C every 50 ms while it waits. A call from the holding thread itself
+/// (a reward function that steps its own Env) is refused with RuntimeError, not deadlocked.
+class CallGuard {
+ public:
+  class Held {
+   public:
+    explicit Held(CallGuard& g) : g_(g) {}
+    ~Held();
+    Held(const Held&) = delete;
+    Held& operator=(const Held&) = delete;
+
+   private:
+    CallGuard& g_;
+  };
+  /// Call with the GIL held; `what` names the object in the errors ("Env").
+  [[nodiscard]] Held enter(const char* what);
+
+ private:
+  std::timed_mutex mutex_;
+  std::atomic<std::thread::id> owner_{};
+};
+
+/// Work that may outlast the call that started it (planning a new episode: seconds on a large
+/// plant, and no planner can be stopped halfway). It runs on a thread of its own with the GIL
+/// released while the caller answers Ctrl-C every 50 ms; on KeyboardInterrupt the call returns
+/// at once, `stop` is set (the work skips what it has not begun), and the next run() or
+/// settle() waits for the rest first. The destructor waits for it too, so the work may use its
+/// owner's members: declare the Background last (destroyed first).
+class Background {
+ public:
+  Background() = default;
+  ~Background();
+  Background(const Background&) = delete;
+  Background& operator=(const Background&) = delete;
+
+  /// Runs `work` (call with the GIL held): returns when it is done, rethrowing what it threw;
+  /// raises KeyboardInterrupt (error_already_set) when a signal handler raised, the work left
+  /// running. When no thread can be started, runs `work` on the caller (not interruptible).
+  void run(std::function<void()> work);
+  /// Waits for interrupted work to end (call with the GIL held; a signal raises again). True
+  /// when there was such work (its outcome is dropped: the object must be reset).
+  bool settle();
+  /// Set when the caller was interrupted; the work checks it between its parts.
+  bool stopping() const { return stop_.load(std::memory_order_relaxed); }
+
+ private:
+  void wait_interruptibly();
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable done_cv_;
+  bool done_ = true;
+  std::exception_ptr failure_;
+  std::atomic<bool> stop_{false};
+};
 
 /// Keeps the calling thread's Python thread state from construction to destruction (on the same
 /// thread), the GIL not held in between: each gil_scoped_acquire meanwhile reuses it. Without it

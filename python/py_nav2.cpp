@@ -10,8 +10,8 @@ namespace plantsim::python {
 void bind_nav2(py::module_& m) {
   m.def(
       "nav2_import",
-      [](const std::string& path) {
-        const app::Nav2Import im = app::import_nav2_params(path);
+      [](const py::object& path) {
+        const app::Nav2Import im = app::import_nav2_params(file_from(path, "path"));
         py::dict d;
         d["config"] = from_json_text(im.config.dump());
         auto rows = [](const std::vector<app::Nav2Parameter>& ps) {

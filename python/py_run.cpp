@@ -150,7 +150,7 @@ void bind_observation(py::module_& m) {
 robot::Steering steering_of(py::object callable, const std::string& role) {
   if (callable.is_none()) return {};
   if (!PyCallable_Check(callable.ptr()))
-    throw std::invalid_argument(role + " must be callable: f(observation) -> (v, omega) or None");
+    throw py::type_error(role + " must be callable: f(observation) -> (v, omega) or None");
   return [f = share_across_threads(std::move(callable)),
           role](const robot::SteeringInput& in) -> std::optional<controller::Twist> {
     py::gil_scoped_acquire gil;
@@ -224,10 +224,9 @@ episode::EpisodeConfig config_argument(const py::handle& config) {
   if (py::isinstance<py::dict>(config))
     return episode::parse_episode_config(to_json_text(config), "<config dict>");
   if (py::isinstance<py::str>(config) || py::hasattr(config, "__fspath__"))
-    return episode::load_episode_config(
-        py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
-  throw std::invalid_argument(
-      "config must be a dict or the path of a config file (docs/config.md)");
+    return episode::load_episode_config(file_from(config, "config"));
+  throw py::type_error("config must be a dict or the path of a config file (docs/config.md), got " +
+                       py::str(py::type::of(config).attr("__name__")).cast<std::string>());
 }
 
 episode::EpisodeSteering steering_argument(const py::object& controller, const py::object& docking,
@@ -278,25 +277,23 @@ PyWorld with_start(const PyWorld& w, const py::object& start, std::uint64_t seed
     moved->start = *pose;
     return {moved};
   }
-  std::vector<double> v;
+  geom::Pose2 pose;
   try {
-    v = start.cast<std::vector<double>>();
-  } catch (const py::cast_error&) {
-  }
-  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    pose = pose_from(start, "start");  // the world files' limits: |yaw| <= 100 rad, ...
+  } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(
-        "start must be \"world\", \"random\" or [x, y, yaw] (three finite "
-        "numbers), got " +
-        py::repr(start).cast<std::string>());
+        std::string("start must be \"world\", \"random\" or [x, y, yaw]: ") + e.what());
+  }
   auto moved = std::make_shared<worlds::World>(*w.world);
-  moved->start = geom::Pose2{v[0], v[1], v[2]};
+  moved->start = pose;
   worlds::validate_world(*moved);  // a start in an obstacle or off the floor is refused
   return {moved};
 }
 
-PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& config_arg,
+PyRun run(const py::handle& world_arg, const py::object& seed_arg, const py::object& config_arg,
           const py::object& controller, const py::object& docking, const std::string& planner_name,
           const py::object& out, const std::string& controller_name, const py::object& start) {
+  const std::uint64_t seed = seed_from(seed_arg, "seed");
   const PyWorld w = with_start(world_argument(world_arg), start, seed);
   episode::EpisodeConfig config = config_argument(config_arg);
   config.seed = seed;
@@ -311,9 +308,7 @@ PyRun run(const py::handle& world_arg, std::uint64_t seed, const py::object& con
   const episode::EpisodeSteering steering = steering_argument(controller, docking, name);
   std::unique_ptr<util::StagedFolder> staged;  // checked before the run, as `plantsim run` does
   if (!out.is_none())
-    staged = std::make_unique<util::StagedFolder>(
-        py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>(),
-        app::run_folder_names());
+    staged = std::make_unique<util::StagedFolder>(path_from(out, "out"), app::run_folder_names());
   auto p = planner::make_planner(planner_name, planner::planner_input(*w.world, true));
   const std::string line = "plantsim.run('" + w.world->source + "', seed=" + std::to_string(seed) +
                            (steering ? ", controller=" + steering.name : "") + ")";

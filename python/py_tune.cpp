@@ -3,6 +3,8 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "python/py_bindings.h"
@@ -14,11 +16,20 @@
 namespace plantsim::python {
 namespace {
 
-py::object tune(const std::string& scenario, const std::string& out,
-                const std::vector<std::string>& params, std::optional<int> budget,
+py::object tune(const py::object& scenario_arg, const std::string& out,
+                const std::vector<std::string>& params, const py::object& budget_arg,
                 std::optional<std::string> objective, std::optional<std::string> method,
-                std::optional<double> min_wilson, std::uint64_t seed, int threads, bool figures,
-                bool fresh, bool progress) {
+                std::optional<double> min_wilson, const py::object& seed_arg,
+                const py::object& threads_arg, bool figures, bool fresh, bool progress) {
+  const std::string scenario = file_from(scenario_arg, "scenario");
+  std::optional<int> budget;
+  if (!budget_arg.is_none())  // its range checked by the tuning's own rule (tune_spec.cpp)
+    budget = static_cast<int>(whole_from(budget_arg, "budget", std::numeric_limits<int>::min(),
+                                         std::numeric_limits<int>::max()));
+  const std::uint64_t seed = seed_from(seed_arg, "seed");
+  const int threads = static_cast<int>(whole_from(threads_arg, "threads", 0, 4096));
+  if (min_wilson && !std::isfinite(*min_wilson))
+    throw std::invalid_argument("min_wilson must be a finite number from 0 to 1");
   tune::TuneRequest r;
   r.scenario = scenario;
   r.parameters = params;

@@ -10,6 +10,7 @@
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/png_pipeline.h"
+#include "util/c_number.h"
 #include "util/process.h"
 
 namespace plantsim::render {
@@ -64,12 +65,12 @@ std::string write_animation(const worlds::World& world, const episode::EpisodeRe
     fig.legend(o.width_px - 150.0, 60, legend);
     fig.world_axes(world.floor, t);
     char title[160];
-    std::snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(),
-                  run.trajectory[i].t_s,
-                  std::string(controller::to_string(run.trajectory[i].phase)).c_str());
+    util::c_snprintf(title, sizeof title, "%s  t = %.1f s  %s", world.name.c_str(),
+                     run.trajectory[i].t_s,
+                     std::string(controller::to_string(run.trajectory[i].phase)).c_str());
     fig.text(title, 50, 26, 16, palette::kAxis, Anchor::kLeft, true);
     char name[64];
-    std::snprintf(name, sizeof name, "/frame_%04d.png", index++);
+    util::c_snprintf(name, sizeof name, "/frame_%04d.png", index++);
     writer.push(fig.finish(), frames + name);
   }
   writer.close();

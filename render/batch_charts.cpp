@@ -10,6 +10,7 @@
 #include "render/colormap.h"
 #include "render/layers.h"
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 namespace {
@@ -169,9 +170,9 @@ Image draw_error_strips(const std::vector<EpisodeOutcome>& episodes, const Docki
   const PixelBox right{left.right + gap, left.top, left.right + gap + panel_w, left.bottom};
   method_labels(fig, left, methods, counts);
   char head[120];
-  std::snprintf(head, sizeof head, "Position error (gate %.0f mm)", 1000 * gates.position_m);
+  util::c_snprintf(head, sizeof head, "Position error (gate %.0f mm)", 1000 * gates.position_m);
   strip_panel(fig, left, methods, pos, gates.position_m, head, "mm", 1000.0);
-  std::snprintf(head, sizeof head, "Heading error (gate %.0f deg)", gates.heading_deg);
+  util::c_snprintf(head, sizeof head, "Heading error (gate %.0f deg)", gates.heading_deg);
   strip_panel(fig, right, methods, heading, gates.heading_deg, head, "deg", 1.0);
   // Each row is named in its dots' colour; the legend says what the red lines are.
   fig.legend(20, 76, {{palette::kCollisionMark, "gate"}}, 1, 200);

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <string>
 
+#include "util/c_number.h"
+
 namespace plantsim::render {
 
 Rgb cividis(double t) {
@@ -41,7 +43,7 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 std::string tick_label(double value, double step) {
   const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  util::c_snprintf(buf, sizeof buf, "%.*f", decimals, value);
   return buf;
 }
 

@@ -10,6 +10,7 @@
 #include "render/method_marks.h"
 #include "render/palette.h"
 #include "render/run_figure.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 
@@ -25,7 +26,7 @@ std::string what_differs(const ComparisonPanel& a, const ComparisonPanel& b) {
   const double la = a.run.path_length_m, lb = b.run.path_length_m;
   const double ta = x.build_ms + x.query_ms, tb = y.build_ms + y.query_ms;
   char line[512];
-  std::snprintf(
+  util::c_snprintf(
       line, sizeof line,
       "%s vs %s: path %.2f vs %.2f m (%s); vertices %lld vs %lld; edges evaluated %lld vs %lld; "
       "segment tests %lld vs %lld; plan time %.2f vs %.2f ms",
@@ -107,15 +108,15 @@ std::string structure_text(const ComparisonPanel& p) {
 void draw_panel_text(Figure& fig, const ComparisonPanel& p, double x0, double y0, double cell_w) {
   char line1[256], line2[256];
   if (p.run.travel == "path")
-    std::snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(),
-                  p.run.path_length_m, p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
+    util::c_snprintf(line1, sizeof line1, "%s: path %.2f m, plan %.2f ms", p.label.c_str(),
+                     p.run.path_length_m, p.run.plan_stats.build_ms + p.run.plan_stats.query_ms);
   else  // no plan of its own: the drawn plan is the reference
-    std::snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)", p.label.c_str(),
-                  p.run.driven_length_m, p.run.path_length_m);
+    util::c_snprintf(line1, sizeof line1, "%s: driven %.2f m (reference plan %.2f m)",
+                     p.label.c_str(), p.run.driven_length_m, p.run.path_length_m);
   const PlanStats& st = p.run.plan_stats;
   const std::string structure = structure_text(p);
-  std::snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms,
-                structure.c_str());
+  util::c_snprintf(line2, sizeof line2, "build %.2f + query %.2f ms, %s", st.build_ms, st.query_ms,
+                   structure.c_str());
   fig.text_fitted(line1, x0 + 60, y0 + 20, 15, palette::kAxis, cell_w - 80, true);
   fig.text_fitted(line2, x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);
   fig.text_fitted(p.drove ? result_line(p.run) : episode::status_name(p.run), x0 + 60, y0 + 54, 12,

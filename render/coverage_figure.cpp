@@ -7,6 +7,7 @@
 
 #include "render/layers.h"
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 namespace {
@@ -25,26 +26,26 @@ std::string describe_order(const planner::CoveragePlan& p) {
   char line[256];
   if (!p.ok) return p.failure;
   if (p.regions.empty()) {
-    std::snprintf(line, sizeof line, "cell by cell (no sub-regions); %d reachable cells",
-                  p.metrics.reachable_cells);
+    util::c_snprintf(line, sizeof line, "cell by cell (no sub-regions); %d reachable cells",
+                     p.metrics.reachable_cells);
     return line;
   }
-  std::snprintf(line, sizeof line, "%d sub-regions, order cost %.2f (greedy %.2f)",
-                static_cast<int>(p.regions.size()), p.order_cost, p.greedy_cost);
+  util::c_snprintf(line, sizeof line, "%d sub-regions, order cost %.2f (greedy %.2f)",
+                   static_cast<int>(p.regions.size()), p.order_cost, p.greedy_cost);
   std::string s = line;
   if (p.network_restarts > 0) {
-    std::snprintf(line, sizeof line, "; valid order in %d of %d restarts", p.network_valid,
-                  p.network_restarts);
+    util::c_snprintf(line, sizeof line, "; valid order in %d of %d restarts", p.network_valid,
+                     p.network_restarts);
     s += line;
   }
   if (p.exact) {
     if (!p.exact->searched)
-      std::snprintf(line, sizeof line, "; NOT searched: the search handles at most 63 regions");
+      util::c_snprintf(line, sizeof line, "; NOT searched: the search handles at most 63 regions");
     else if (p.exact->proven)
-      std::snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
+      util::c_snprintf(line, sizeof line, "; proven optimal in %.1f s", p.exact->seconds);
     else
-      std::snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)",
-                    p.exact->seconds, p.exact->lower_bound);
+      util::c_snprintf(line, sizeof line, "; NOT proven optimal in %.0f s (bound %.2f)",
+                       p.exact->seconds, p.exact->lower_bound);
     s += line;
   }
   return s;
@@ -120,12 +121,12 @@ void draw_panel_text(Figure& fig, const CoveragePanel& p, double x0, double y0, 
   const planner::CoverageMetrics& m = p.plan.metrics;
   char line1[256];
   if (p.plan.ok)
-    std::snprintf(line1, sizeof line1,
-                  "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
-                  p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends,
-                  m.length_m);
+    util::c_snprintf(line1, sizeof line1,
+                     "%s: coverage %.1f %%, repetition %.2f %%, %d turns, %d dead ends, %.0f m",
+                     p.label.c_str(), 100 * m.coverage, 100 * m.repetition, m.turns, m.dead_ends,
+                     m.length_m);
   else
-    std::snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
+    util::c_snprintf(line1, sizeof line1, "%s: NO PLAN", p.label.c_str());
   fig.text_fitted(line1, x0 + 60, y0 + 20, 15,
                   p.plan.ok ? palette::kAxis : palette::kOkabeVermillion, cell_w - 80, true);
   fig.text_fitted(describe_order(p.plan), x0 + 60, y0 + 38, 12, palette::kAxis, cell_w - 80);

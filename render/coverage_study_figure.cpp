@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 
@@ -44,8 +45,8 @@ Image draw_coverage_study(const std::vector<StudyShare>& shares, const std::stri
       o.x_label = "map";
       o.legend = false;
       char plot_title[96];
-      std::snprintf(plot_title, sizeof plot_title, "%.0f %% of cells blocked: %s",
-                    100 * s.blocked_share, measures[k].name);
+      util::c_snprintf(plot_title, sizeof plot_title, "%.0f %% of cells blocked: %s",
+                       100 * s.blocked_share, measures[k].name);
       const double left = 20 + plot_w * k + 55;
       fig.plot({left, top + 40, left + plot_w - 75, top + row_px - 50}, series, plot_title,
                measures[k].unit, o);

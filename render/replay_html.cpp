@@ -8,6 +8,7 @@
 
 #include "render/layers.h"
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 namespace {
@@ -30,7 +31,7 @@ json points(const std::vector<Vec2>& pts) {
 
 std::string css(Rgb c) {
   char buf[16];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+  util::c_snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
   return buf;
 }
 

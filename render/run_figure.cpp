@@ -12,6 +12,7 @@
 #include "render/layers.h"
 #include "render/method_marks.h"
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 
@@ -20,17 +21,17 @@ std::string result_line(const episode::EpisodeResult& run) {
   if (run.trajectory.empty()) return episode::status_name(run);
   std::string error = "error n/a";
   if (run.error_measured) {
-    std::snprintf(buf, sizeof buf, "error %.1f mm / %.1f deg", 1000 * run.position_error_m,
-                  run.heading_error_deg);
+    util::c_snprintf(buf, sizeof buf, "error %.1f mm / %.1f deg", 1000 * run.position_error_m,
+                     run.heading_error_deg);
     error = buf;
   }
-  std::snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s",
-                episode::status_name(run).c_str(), error.c_str(), run.collisions, run.retries,
-                run.time_s);
+  util::c_snprintf(buf, sizeof buf, "%s, %s, %d collisions, %d retries, %.1f s",
+                   episode::status_name(run).c_str(), error.c_str(), run.collisions, run.retries,
+                   run.time_s);
   std::string line = buf;
   if (run.travel != "path") {
-    std::snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima,
-                  run.wall_follows);
+    util::c_snprintf(buf, sizeof buf, ", %d minima, %d wall-follows", run.local_minima,
+                     run.wall_follows);
     line += buf;
   }
   return line;
@@ -38,17 +39,17 @@ std::string result_line(const episode::EpisodeResult& run) {
 
 std::string length_line(const episode::EpisodeResult& run) {
   char buf[200];
-  std::snprintf(buf, sizeof buf, "planned %.2f m", run.path_length_m);
+  util::c_snprintf(buf, sizeof buf, "planned %.2f m", run.path_length_m);
   std::string line = buf;
   if (run.replans > 0 && run.plan != run.first_plan) {
-    std::snprintf(buf, sizeof buf, " (final plan %.2f m after %d replan%s)",
-                  geom::polyline_length(run.plan), run.replans, run.replans == 1 ? "" : "s");
+    util::c_snprintf(buf, sizeof buf, " (final plan %.2f m after %d replan%s)",
+                     geom::polyline_length(run.plan), run.replans, run.replans == 1 ? "" : "s");
     line += buf;
   } else if (run.plan != run.first_plan) {  // the robot's own route from the start
-    std::snprintf(buf, sizeof buf, " (coastal route %.2f m)", geom::polyline_length(run.plan));
+    util::c_snprintf(buf, sizeof buf, " (coastal route %.2f m)", geom::polyline_length(run.plan));
     line += buf;
   }
-  std::snprintf(buf, sizeof buf, ", driven %.2f m", run.driven_length_m);
+  util::c_snprintf(buf, sizeof buf, ", driven %.2f m", run.driven_length_m);
   return line + buf;
 }
 
@@ -83,7 +84,7 @@ void draw_time_ticks(Figure& fig, const episode::EpisodeResult& run, const Pixel
   const double px = 1.0 / t.scale;
   for (double time = period; time <= run.trajectory.back().t_s; time += period) {
     char label[32];
-    std::snprintf(label, sizeof label, "%.0f s", time);
+    util::c_snprintf(label, sizeof label, "%.0f s", time);
     const Vec2 robot = sample_at(run.trajectory, time).truth.position();
     c.fill_disk(robot, 3.5 * px, palette::kRobot);
     const Vec2 rp = t.to_pixel(robot);
@@ -178,17 +179,17 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const episode::
   if (run.error_measured) draw_footprint(c, world.robot, run.measured_pose, palette::kRobot, 2.0);
   close_close_up(c, lo, hi);
   char head[160];
-  std::snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f mm)", o.close_up_m,
-                1000 * tol);
+  util::c_snprintf(head, sizeof head, "Docking, last %.1f m (band: +/-%.0f mm)", o.close_up_m,
+                   1000 * tol);
   fig.text(head, box.left, box.top + 12, 13, palette::kAxis, Anchor::kLeft, true);
   char foot[160], gate[80];
   if (run.error_measured)
-    std::snprintf(foot, sizeof foot, "%s: %.1f mm, %.1f deg off",
-                  run.charging ? "at contact" : "at the end", 1000 * run.position_error_m,
-                  run.heading_error_deg);
+    util::c_snprintf(foot, sizeof foot, "%s: %.1f mm, %.1f deg off",
+                     run.charging ? "at contact" : "at the end", 1000 * run.position_error_m,
+                     run.heading_error_deg);
   else
-    std::snprintf(foot, sizeof foot, "no docking error measured");
-  std::snprintf(gate, sizeof gate, "gates: %.0f mm, %.0f deg", 1000 * tol, o.dock_tolerance_deg);
+    util::c_snprintf(foot, sizeof foot, "no docking error measured");
+  util::c_snprintf(gate, sizeof gate, "gates: %.0f mm, %.0f deg", 1000 * tol, o.dock_tolerance_deg);
   fig.text_fitted(foot, box.left, lo.y + 16, 12, palette::kAxis, box.width());
   fig.text_fitted(gate, box.left, lo.y + 31, 12, palette::kAxis, box.width());
   fig.note_inset({box.left, box.top, box.right, lo.y + 35});
@@ -276,8 +277,9 @@ void draw_titles(Figure& fig, const worlds::World& world, const episode::Episode
   if (!o.setting.empty()) title += "  |  " + o.setting;
   if (run.failure) {
     char failed[120];
-    std::snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s",
-                  std::string(robot::to_string(run.failure->reason)).c_str(), run.failure->time_s);
+    util::c_snprintf(failed, sizeof failed, "  |  failed: %s at %.1f s",
+                     std::string(robot::to_string(run.failure->reason)).c_str(),
+                     run.failure->time_s);
     title += failed;
   }
   fig.text_fitted(o.title.empty() ? title : o.title, 70, 26, 18, palette::kAxis, o.width_px - 90.0,
@@ -308,9 +310,9 @@ void draw_failure_inset(Figure& fig, const worlds::World& world, const episode::
   close_close_up(c, lo, hi);
   char head[160], foot[80];
   const std::string_view reason = robot::to_string(f.reason);
-  std::snprintf(head, sizeof head, "%.*s at %.1f s", static_cast<int>(reason.size()), reason.data(),
-                f.time_s);
-  std::snprintf(foot, sizeof foot, "%.0f m around where it failed:", kFailureView_m);
+  util::c_snprintf(head, sizeof head, "%.*s at %.1f s", static_cast<int>(reason.size()),
+                   reason.data(), f.time_s);
+  util::c_snprintf(foot, sizeof foot, "%.0f m around where it failed:", kFailureView_m);
   fig.text_fitted(head, box.left, box.top + 12, 13, palette::kAxis, box.width(), true);
   fig.text_fitted(foot, box.left, lo.y + 16, 12, palette::kAxis, box.width());
   fig.text_fitted(f.detail, box.left, lo.y + 31, 12, palette::kAxis, box.width());

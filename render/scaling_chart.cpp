@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "render/palette.h"
+#include "util/c_number.h"
 
 namespace plantsim::render {
 namespace {
@@ -14,9 +15,9 @@ namespace {
 std::string decade_label(double v) {
   char buf[32];
   if (v >= 1)
-    std::snprintf(buf, sizeof buf, "%.0f", v);
+    util::c_snprintf(buf, sizeof buf, "%.0f", v);
   else
-    std::snprintf(buf, sizeof buf, "%g", v);
+    util::c_snprintf(buf, sizeof buf, "%g", v);
   return buf;
 }
 

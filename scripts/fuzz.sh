@@ -10,7 +10,7 @@ root=$PWD
 seconds=${1:-60}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params names)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params names actions)
 data=$(cd ../shared/data && pwd)
 
 ./scripts/sanitize_tree.sh  # the harnesses are built in the sanitizer tree
@@ -18,7 +18,9 @@ mkdir -p build-fuzz
 
 corpus=build-fuzz/corpus
 rm -rf "$corpus"
-mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names} build-fuzz/artifacts
+mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names,actions} build-fuzz/artifacts
+# Actions: the regression fixtures seed the corpus (their layout: fuzz/fuzz_actions.cpp).
+cp fuzz/regressions/actions/* "$corpus/actions/"
 small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
 for f in data/worlds/examples/*.json data/worlds/plants/*.json tests/fixtures/*.json "$data"/worlds/world_N10.json "$data"/worlds/world_N50.json; do
   small "$f" && cp "$f" "$corpus/world_json/$(basename "$f")"

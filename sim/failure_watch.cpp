@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include "util/c_number.h"
+
 namespace plantsim::sim {
 
 using robot::Failure;
@@ -28,8 +30,9 @@ void FailureWatch::observe(double t_s, const geom::Pose2& truth, const geom::Pos
 bool FailureWatch::lost(const Localisation& l, std::string& detail) const {
   if (l.health != LocalizationHealth::kLost && l.error_m <= p_.lost_error_m) return false;
   char text[160];
-  std::snprintf(text, sizeof text, "the estimate was %.2f m from the true position, its status %s",
-                l.error_m, std::string(to_string(l.health)).c_str());
+  util::c_snprintf(text, sizeof text,
+                   "the estimate was %.2f m from the true position, its status %s", l.error_m,
+                   std::string(to_string(l.health)).c_str());
   detail = text;
   return true;
 }
@@ -45,10 +48,10 @@ Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
     f.time_s = breach->time_s;
     f.pose = breach->pose;
     char text[200];
-    std::snprintf(text, sizeof text,
-                  "drove on an estimate more than 0.25 m off (worst %.2f m) for %.1f s without "
-                  "reporting itself lost",
-                  breach->worst_error_m, breach->unnoticed_s);
+    util::c_snprintf(text, sizeof text,
+                     "drove on an estimate more than 0.25 m off (worst %.2f m) for %.1f s without "
+                     "reporting itself lost",
+                     breach->worst_error_m, breach->unnoticed_s);
     f.detail = text;
     return f;
   }
@@ -77,8 +80,8 @@ Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
     f.pose = anchor_pose_;
     then = at_anchor_;
     char text[160];
-    std::snprintf(text, sizeof text, "no progress for the last %.0f s, %s", end_s - anchor_s_,
-                  blocked ? "held by what blocked its way" : "not held by anything it saw");
+    util::c_snprintf(text, sizeof text, "no progress for the last %.0f s, %s", end_s - anchor_s_,
+                     blocked ? "held by what blocked its way" : "not held by anything it saw");
     f.detail = text;
   } else {
     f.reason = FailureReason::kTimeout;

@@ -3,8 +3,11 @@
 // after the others ran, and one thread alone running everything itself.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <functional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -37,6 +40,47 @@ TEST(WorkerPool, EveryIndexOnceRunAfterRunAndExceptionsReachTheCaller) {
   WorkerPool alone(1);
   const std::thread::id caller = std::this_thread::get_id();
   alone.run(4, [&](std::size_t) { EXPECT_EQ(std::this_thread::get_id(), caller); });
+}
+
+TEST(WorkerPool, ThreadsThatCannotStartAreLeftOutAndThePoolStillRuns) {
+  // Under a thread or memory limit std::thread throws std::system_error: the pool used to let it
+  // escape its constructor with started helpers still joinable (std::terminate, an abort).
+  for (const int can_start : {0, 1, 2}) {
+    int started = 0;
+    const WorkerPool::ThreadStarter starter = [&](std::function<void()> body) {
+      if (started == can_start)
+        throw std::system_error(std::make_error_code(std::errc::resource_unavailable_try_again));
+      ++started;
+      return std::thread(std::move(body));
+    };
+    WorkerPool pool(4, starter);
+    EXPECT_EQ(pool.threads(), can_start + 1);
+    for (int run = 0; run < 50; ++run) {
+      std::vector<std::atomic<int>> hits(7);
+      pool.run(hits.size(), [&](std::size_t i) { hits[i].fetch_add(1); });
+      for (auto& h : hits) ASSERT_EQ(h.load(), 1) << can_start << " " << run;
+    }
+  }
+}
+
+TEST(WorkerPool, ThreadsAreCappedAtFourPerCoreAndAtTheJobs) {
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  EXPECT_EQ(WorkerPool::max_threads(), std::min(4 * cores, 1024));
+  EXPECT_EQ(WorkerPool::threads_for(400, 400), std::min(400, WorkerPool::max_threads()));
+  EXPECT_EQ(WorkerPool::threads_for(400, 3), std::min(3, WorkerPool::max_threads()));
+  EXPECT_EQ(WorkerPool::threads_for(0, 400), cores);
+  EXPECT_EQ(WorkerPool::threads_for(-5, 1), 1);
+  // A pool asked for far more threads than the cap starts only the cap, and still runs.
+  int started = 0;
+  WorkerPool pool(100000, [&](std::function<void()> body) {
+    ++started;
+    return std::thread(std::move(body));
+  });
+  EXPECT_EQ(pool.threads(), WorkerPool::max_threads());
+  EXPECT_EQ(started, WorkerPool::max_threads() - 1);
+  std::atomic<int> ran{0};
+  pool.run(1000, [&](std::size_t) { ran.fetch_add(1); });
+  EXPECT_EQ(ran.load(), 1000);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "util/c_number.h"
 #include "util/data_dir.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
@@ -68,13 +69,11 @@ TunedParameter checked_parameter(const std::string& key, double lo, double hi,
 }
 
 double parse_bound(const std::string& text, const std::string& where) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  // strtod in the "C" locale: std::stod follows the host's LC_NUMERIC (a Python caller with a
+  // German locale read "0.5" as 0).
+  char* end = nullptr;
+  const double v = util::c_strtod(text.c_str(), &end);
+  const auto used = static_cast<std::size_t>(end - text.c_str());
   if (used == 0 || used != text.size() || !std::isfinite(v))
     throw std::invalid_argument(where + ": '" + text + "' is not a number");
   return v;

@@ -3,6 +3,8 @@
 
 #include <cstdlib>
 
+#include "util/c_number.h"
+
 namespace plantsim::util {
 
 namespace {
@@ -12,7 +14,7 @@ namespace {
 bool formula_like(const std::string& s) {
   if (s.empty() || std::string("=+-@\t\r").find(s[0]) == std::string::npos) return false;
   char* end = nullptr;
-  std::strtod(s.c_str(), &end);
+  util::c_strtod(s.c_str(), &end);
   return end != s.c_str() + s.size();
 }
 

@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <string>
 
+#include "util/c_number.h"
+
 namespace plantsim::util {
 
 inline std::string fixed(double v, int decimals = 3) {
   char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  util::c_snprintf(text, sizeof text, "%.*f", decimals, v);
   return text;
 }
 

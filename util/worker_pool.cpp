@@ -5,7 +5,9 @@
 // (two threads stepped 8 environments slower than one).
 #include "util/worker_pool.h"
 
+#include <algorithm>
 #include <chrono>
+#include <system_error>
 
 namespace plantsim::util {
 namespace {
@@ -22,8 +24,31 @@ bool spin_until(Ready ready) {
 
 }  // namespace
 
-WorkerPool::WorkerPool(int threads) {
-  for (int t = 1; t < threads; ++t) helpers_.emplace_back([this] { help(); });
+WorkerPool::WorkerPool(int threads, const ThreadStarter& start) {
+  const int wanted = std::min(threads, max_threads());
+  for (int t = 1; t < wanted; ++t) {
+    try {
+      helpers_.push_back(start ? start([this] { help(); }) : std::thread([this] { help(); }));
+    } catch (const std::system_error&) {
+      // No more threads to be had (RLIMIT_NPROC, memory for a stack): run with those started.
+      // Throwing here instead would destroy the started, joinable helpers: std::terminate.
+      break;
+    }
+  }
+}
+
+int WorkerPool::max_threads() {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<int>(std::min(4u * cores, 1024u));
+}
+
+int WorkerPool::threads_for(int requested, std::size_t jobs) {
+  const int asked = requested > 0
+                        ? requested
+                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const auto most = static_cast<int>(std::min<std::size_t>(
+      std::max<std::size_t>(jobs, 1), static_cast<std::size_t>(max_threads())));
+  return std::clamp(asked, 1, most);
 }
 
 WorkerPool::~WorkerPool() {

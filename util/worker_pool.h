@@ -17,8 +17,14 @@ namespace plantsim::util {
 
 class WorkerPool {
  public:
-  /// `threads` in all, the caller among them (1: everything on the caller).
-  explicit WorkerPool(int threads);
+  /// Starts one helper thread running `body` (std::thread by default; tests inject failures).
+  using ThreadStarter = std::function<std::thread(std::function<void()>)>;
+
+  /// `threads` in all, the caller among them (1: everything on the caller), at most
+  /// max_threads(). A helper that cannot be started (std::thread throws std::system_error under
+  /// a thread or memory limit) is left out: the pool runs with those that started, down to the
+  /// caller alone, instead of aborting.
+  explicit WorkerPool(int threads, const ThreadStarter& start = {});
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
@@ -26,6 +32,17 @@ class WorkerPool {
   /// Runs job(i) for every i in [0, n), spread over the threads; returns when all are done. The
   /// first exception a job throws is rethrown here (the other jobs still run).
   void run(std::size_t n, const std::function<void(std::size_t)>& job);
+
+  /// The threads the pool runs on, the caller included (fewer than asked when some failed).
+  int threads() const { return static_cast<int>(helpers_.size()) + 1; }
+
+  /// The most threads a pool takes: 4 per core. Every helper takes part in every run, so
+  /// helpers beyond the cores only add switches (400 on 2 cores made each run wait for 400
+  /// wake-ups and spins).
+  static int max_threads();
+  /// The threads for `jobs` jobs per run when `requested` are asked (0 or less: one per core),
+  /// from 1 to the smaller of `jobs` and max_threads().
+  static int threads_for(int requested, std::size_t jobs);
 
  private:
   void work(const std::function<void(std::size_t)>& job, std::size_t n);

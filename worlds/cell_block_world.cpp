@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/c_number.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::worlds {
@@ -41,8 +42,8 @@ World cell_block_world(const CellBlockOptions& o) {
       if (blocked[c][r])
         w.obstacles.push_back({c * kCell, r * kCell, (c + 1) * kCell, (r + 1) * kCell});
   char name[64];
-  std::snprintf(name, sizeof name, "cell_blocks_%02.0f_seed%llu", 100 * o.blocked_share,
-                static_cast<unsigned long long>(o.seed));
+  util::c_snprintf(name, sizeof name, "cell_blocks_%02.0f_seed%llu", 100 * o.blocked_share,
+                   static_cast<unsigned long long>(o.seed));
   w.name = name;
   w.source = "generated (" + w.name + ")";
   w.floor = {0, 0, kColumns * kCell, kRows * kCell};

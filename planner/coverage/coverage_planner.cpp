@@ -8,6 +8,7 @@
 
 #include "geometry/polyline.h"
 #include "planner/coverage/cell_coverage.h"
+#include "util/c_number.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -54,35 +55,36 @@ std::vector<Vec2> cell_path(const CoverageGrid& grid, const std::vector<Cell>& c
 std::string coverage_note(const CoveragePlan& plan, CoverageMethod method) {
   const CoverageMetrics& m = plan.metrics;
   char note[400];
-  std::snprintf(note, sizeof note,
-                "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, "
-                "%d dead ends, "
-                "%.1f m from start to end cell",
-                static_cast<int>(plan.regions.size()), 100 * m.coverage, m.reachable_cells,
-                100 * m.repetition, m.turns, m.dead_ends, m.length_m);
+  util::c_snprintf(
+      note, sizeof note,
+      "%d regions; coverage %.2f %% of %d reachable cells, repetition %.2f %%, %d turns, "
+      "%d dead ends, "
+      "%.1f m from start to end cell",
+      static_cast<int>(plan.regions.size()), 100 * m.coverage, m.reachable_cells,
+      100 * m.repetition, m.turns, m.dead_ends, m.length_m);
   std::string text = note;
   if (method != CoverageMethod::kCells) {
-    std::snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", plan.order_cost,
-                  plan.greedy_cost);
+    util::c_snprintf(note, sizeof note, "; order cost %.2f (greedy %.2f)", plan.order_cost,
+                     plan.greedy_cost);
     text += note;
   }
   if (method == CoverageMethod::kChnn || method == CoverageMethod::kPotts) {
-    std::snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts",
-                  plan.network_valid, plan.network_restarts);
+    util::c_snprintf(note, sizeof note, "; settled on a permutation in %d of %d restarts",
+                     plan.network_valid, plan.network_restarts);
     text += note;
   }
   if (plan.exact) {
     if (!plan.exact->searched)
-      std::snprintf(note, sizeof note,
-                    "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
-                    static_cast<int>(plan.regions.size()));
+      util::c_snprintf(note, sizeof note,
+                       "; NOT searched: %d regions, the search handles at most 63 (greedy order)",
+                       static_cast<int>(plan.regions.size()));
     else if (plan.exact->proven)
-      std::snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)",
-                    plan.exact->seconds, static_cast<unsigned long long>(plan.exact->prefixes));
+      util::c_snprintf(note, sizeof note, "; proven optimal in %.2f s (%llu prefixes)",
+                       plan.exact->seconds, static_cast<unsigned long long>(plan.exact->prefixes));
     else
-      std::snprintf(note, sizeof note,
-                    "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
-                    plan.exact->seconds, plan.exact->lower_bound);
+      util::c_snprintf(note, sizeof note,
+                       "; NOT proven optimal: search stopped after %.1f s, lower bound %.2f",
+                       plan.exact->seconds, plan.exact->lower_bound);
     text += note;
   }
   return text;

@@ -10,6 +10,7 @@
 
 #include "geometry/polyline.h"
 #include "planner/inflation.h"
+#include "util/c_number.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -214,14 +215,14 @@ PlanResult GcrPlanner::plan(Vec2 start, Vec2 goal) {
       out.path = best;
       out.length = polyline_length(best);
       char note[200];
-      std::snprintf(note, sizeof note,
-                    "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s%s", raw_length,
-                    raw.rotations, out.length,
-                    longer && !shortcut_pass_ ? " (longer than the walk, as written)" : "",
-                    shortcut_pass_
-                        ? (longer ? " (plantsim's variant: the walk, shorter than the optimisation)"
-                                  : " (with plantsim's shortcut pass)")
-                        : "");
+      util::c_snprintf(
+          note, sizeof note, "raw walk %.2f m, %d coordinate rotations, optimised %.2f m%s%s",
+          raw_length, raw.rotations, out.length,
+          longer && !shortcut_pass_ ? " (longer than the walk, as written)" : "",
+          shortcut_pass_
+              ? (longer ? " (plantsim's variant: the walk, shorter than the optimisation)"
+                        : " (with plantsim's shortcut pass)")
+              : "");
       out.note = note;
     }
   }

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "geometry/polyline.h"
+#include "util/c_number.h"
 #include "util/stopwatch.h"
 
 namespace plantsim::planner {
@@ -89,10 +90,10 @@ void label_junctions(const TunnelMaze& maze, const MazeWalk& w, PlanMark::Kind k
 // shortest corridor route beside them.
 std::string MazePlanner::note(const MazeSolution& s, double shortest_m) const {
   char line[512];
-  std::snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
-                hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
-                std::string(to_string(s.exploration.end)).c_str(), s.exploration.length_m(*maze_),
-                s.simplified.c_str());
+  util::c_snprintf(line, sizeof line, "%s hand: explored %s (%s, %.1f m) -> simplified %s; ",
+                   hand_ == Hand::kLeft ? "left" : "right", s.exploration.turns.c_str(),
+                   std::string(to_string(s.exploration.end)).c_str(),
+                   s.exploration.length_m(*maze_), s.simplified.c_str());
   std::string text = line;
   if (s.ring_search)
     text += "ring search: " + s.search_log + "third string " + s.third +
@@ -100,9 +101,9 @@ std::string MazePlanner::note(const MazeSolution& s, double shortest_m) const {
                  ? " (simplified again where that still reaches the exit)"
                  : " (driven as recorded)") +
             "; ";
-  std::snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
-                s.route.turns.c_str(), s.route.length_m(*maze_),
-                std::string(to_string(s.route.end)).c_str(), shortest_m);
+  util::c_snprintf(line, sizeof line, "route %s %.1f m (%s); shortest corridor route %.1f m",
+                   s.route.turns.c_str(), s.route.length_m(*maze_),
+                   std::string(to_string(s.route.end)).c_str(), shortest_m);
   return text + line;
 }
 

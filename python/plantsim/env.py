@@ -132,10 +132,11 @@ class Env:
         """A new episode. seed: the episode's seed (noise, and with start="random" its start; for
         a scenario, its episode at index seed mod the episode count); None: the next seed (1
         first). options: {"episode": id} for a scenario's episode by its id. Returns (obs, info)."""
+        result = self._env.reset(seed, options)  # checks the seed first (InputError naming it)
         if seed is not None:
             self.np_random = np.random.default_rng(seed)
             self.action_space.seed(seed)
-        return self._env.reset(seed, options)
+        return result
 
     def step(self, action):
         """Drives one control period with `action`; returns (obs, reward, terminated, truncated,
@@ -188,7 +189,9 @@ class VectorEnv:
         return self._env.reset(seed)
 
     def step(self, actions):
-        return self._env.step(np.asarray(actions, dtype=np.float64))
+        # Passed as given: the C++ side refuses complex, bool, text and object elements before
+        # any environment steps (a cast to float64 here made 1+2j a 1 and "0.5" a 0.5).
+        return self._env.step(actions)
 
     def close(self):
         pass

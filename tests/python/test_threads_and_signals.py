@@ -208,3 +208,98 @@ def test_run_starts_where_the_batch_starts_the_same_seed(data, tmp_path):
     for bad in ("nowhere", [1, 2], [1, 2, float("nan")]):
         with pytest.raises(plantsim.InputError, match="start must be"):
             plantsim.run(world, start=bad)
+
+
+# Issue 85: one Env or VectorEnv called from several threads; Ctrl-C while episodes are planned.
+
+ENV_WORLD = "data/worlds/examples/small_plant.json"
+
+
+def test_one_env_called_from_several_threads_at_once_does_not_crash(source):
+    # Calls run one at a time (the GIL is released while they step): before, two threads'
+    # resets and steps on one Env freed each other's episode under them (SIGSEGV).
+    out = python(f"""
+        import threading, numpy as np, plantsim
+        world = {str(source / ENV_WORLD)!r}
+        env = plantsim.Env(world, max_steps=60)
+        venv = plantsim.VectorEnv(2, world, threads=2, max_steps=60)
+        done, refused = [], []
+        def hammer(k):
+            for r in range(3):
+                try:
+                    env.reset(seed=10 * k + r)
+                    for _ in range(40):
+                        env.step((0.2, 0.0))
+                except plantsim.InputError:  # another thread's steps ended the episode: fine
+                    refused.append(k)
+                venv.reset(seed=k + r)
+                for _ in range(40):
+                    venv.step(np.zeros((2, 2)))
+            done.append(k)
+        threads = [threading.Thread(target=hammer, args=(k,)) for k in range(4)]
+        [t.start() for t in threads]
+        [t.join(240) for t in threads]
+        print(sorted(done))
+    """, timeout=300)
+    assert out.returncode == 0, (out.returncode, out.stderr[-2000:])
+    assert out.stdout.strip() == "[0, 1, 2, 3]", out.stdout
+
+
+def test_an_env_called_back_from_its_own_reward_is_refused(source):
+    env = plantsim.Env(source / ENV_WORLD, reward=lambda obs, info: env.step((0.0, 0.0))[1])
+    env.reset(seed=1)
+    with pytest.raises(RuntimeError, match="cannot nest"):
+        env.step((0.1, 0.0))
+    env.reset(seed=2)  # not left locked
+
+
+def test_vector_env_with_hundreds_of_threads_starts_and_steps_promptly(source):
+    # Threads are capped at 4 per core and at n (docs/python.md); 400 helpers on 2 cores made
+    # every run wait for 400 wake-ups and spins.
+    out = python(f"""
+        import time, numpy as np, plantsim
+        started = time.monotonic()
+        env = plantsim.VectorEnv(400, {str(source / ENV_WORLD)!r}, start="world", threads=400)
+        env.reset(seed=1)
+        for _ in range(5):
+            env.step(np.zeros((400, 2)))
+        print("ok", round(time.monotonic() - started, 1))
+    """, timeout=240)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert out.stdout.split()[0] == "ok", out.stdout
+
+
+def big_world(data):
+    return data / "worlds/world_N1000.json"
+
+
+@pytest.mark.parametrize("vector", [False, True])
+def test_ctrl_c_stops_a_reset_that_plans_promptly_and_a_later_reset_works(data, vector):
+    # vg-traditional plans world_N1000 in about 6 s, and no planner can be stopped halfway: the call
+    # returns at the interrupt, the plans finish in the background, and the next reset waits
+    # for them before it begins (before: Ctrl-C waited for every plan).
+    make = (f"plantsim.VectorEnv(2, {str(big_world(data))!r}, start='world', planner='vg-traditional', threads=2)"
+            if vector else f"plantsim.Env({str(big_world(data))!r}, start='world', planner='vg-traditional')")
+    out = python(f"""
+        import os, signal, threading, time, plantsim
+        env = {make}
+        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        started = time.monotonic()
+        try:
+            env.reset(seed=1)
+            print("finished", round(time.monotonic() - started, 3))
+        except KeyboardInterrupt:
+            print("interrupted", round(time.monotonic() - started - 0.5, 3))
+        try:
+            env.step(env.action_space.sample())
+            print("stepped")
+        except plantsim.InputError:
+            print("refused")
+        obs, info = env.reset(seed=2)
+        print("reset", obs["pose"].shape[-1])
+    """, timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
+    words = out.stdout.split()
+    assert words[0] == "interrupted", out.stdout
+    assert float(words[1]) < 1.0, out.stdout
+    assert words[2:] == ["refused", "reset", "3"], out.stdout
