@@ -1,0 +1,36 @@
+// A local distance field for sampling controllers (MPPI, DWB): each cell of a square window
+// around the robot holds the distance from its centre to the nearest box the robot knows of
+// (its map's and what it sensed), so a trajectory's thousands of points each cost one array
+// read. Outside the window, or outside the floor, the distance is 0: unknown is not free.
+#pragma once
+
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace plantsim::controller::mppi {
+
+class ClearanceGrid {
+ public:
+  /// The window of half side `half_side_m` around `center`, in cells of `cell_m`; `boxes` are
+  /// the obstacles, `floor` the area inside the walls.
+  ClearanceGrid(geom::Vec2 center, double half_side_m, double cell_m,
+                const std::vector<geom::Rect>& boxes, const geom::Rect& floor);
+
+  /// Distance (m) from (x, y) to the nearest box or wall, as the point's cell holds it.
+  float at(float x, float y) const {
+    const float fx = (x - x0_) * inverse_cell_, fy = (y - y0_) * inverse_cell_;
+    if (!(fx >= 0.0f && fy >= 0.0f && fx < static_cast<float>(n_) && fy < static_cast<float>(n_)))
+      return 0.0f;
+    return cells_[static_cast<std::size_t>(static_cast<int>(fy) * n_ + static_cast<int>(fx))];
+  }
+  double cell_m() const { return cell_; }
+
+ private:
+  float x0_, y0_, inverse_cell_;
+  double cell_;
+  int n_;
+  std::vector<float> cells_;
+};
+
+}  // namespace plantsim::controller::mppi

@@ -1,0 +1,87 @@
+// The MPPI cycle (see the header).
+#include "controller/mppi/mppi_optimizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace plantsim::controller::mppi {
+
+MppiOptimizer::MppiOptimizer(MppiParams params, CriticParams critics, std::uint64_t seed)
+    : p_(params), c_(critics), rng_(seed), u_(params.time_steps) {
+  r_.resize(p_.batch_size, p_.time_steps);
+  costs_.resize(p_.batch_size);
+}
+
+void MppiOptimizer::set_path(const std::vector<geom::Vec2>& plan, double path_spacing_m) {
+  path_.clear();
+  path_s_.clear();
+  if (plan.empty()) return;
+  path_.push_back(plan.front());
+  path_s_.push_back(0.0f);
+  double s = 0;
+  for (std::size_t i = 1; i < plan.size(); ++i) {
+    const geom::Vec2 a = plan[i - 1], b = plan[i];
+    const double len = geom::distance(a, b);
+    const int pieces = std::max(1, static_cast<int>(std::ceil(len / path_spacing_m)));
+    for (int k = 1; k <= pieces; ++k) {
+      path_.push_back(a + (static_cast<double>(k) / pieces) * (b - a));
+      path_s_.push_back(static_cast<float>(s + len * k / pieces));
+    }
+    s += len;
+  }
+}
+
+void MppiOptimizer::optimise_once(const MppiQuery& q) {
+  draw_noise(p_, rng_, r_);
+  roll_out(p_, u_, q.state, r_);
+  costs_.setZero();
+  const CriticInput in{r_, p_, q.state, path_, path_s_, q.goal, q.clearance, q.robot_radius_m};
+  all_critics(in, c_, costs_);
+  // The control cost of Williams et al.: gamma / sigma^2 * u . noise, summed over the steps.
+  const auto gamma = static_cast<float>(p_.gamma);
+  costs_ += gamma / static_cast<float>(p_.vx_std * p_.vx_std) *
+                (r_.noise_vx.rowwise() * u_.vx.transpose()).rowwise().sum() +
+            gamma / static_cast<float>(p_.wz_std * p_.wz_std) *
+                (r_.noise_wz.rowwise() * u_.wz.transpose()).rowwise().sum();
+  const float best = costs_.minCoeff();
+  const Eigen::ArrayXf weights = (-(costs_ - best) / static_cast<float>(p_.temperature)).exp();
+  const Eigen::ArrayXf softmax = weights / weights.sum();
+  // The samples' own (limited) commands averaged: a sample the limits cut is averaged as driven.
+  u_.vx = (r_.vx.colwise() * softmax).colwise().sum().transpose();
+  u_.wz = (r_.wz.colwise() * softmax).colwise().sum().transpose();
+}
+
+void MppiOptimizer::remember_optimum(const MppiQuery& q) {
+  optimal_.clear();
+  const auto dt = static_cast<float>(p_.model_dt);
+  float x = q.state.x, y = q.state.y, yaw = q.state.yaw;
+  for (Eigen::Index t = 0; t < u_.vx.size(); ++t) {
+    x += u_.vx(t) * std::cos(yaw) * dt;
+    y += u_.vx(t) * std::sin(yaw) * dt;
+    yaw += u_.wz(t) * dt;
+    optimal_.push_back({x, y, yaw});
+  }
+}
+
+Twist MppiOptimizer::step(const MppiQuery& q) {
+  for (int i = 0; i < std::max(1, p_.iteration_count); ++i) optimise_once(q);
+  remember_optimum(q);
+  const Twist command{u_.vx(0), u_.wz(0)};
+  u_.shift();
+  return command;
+}
+
+std::vector<std::vector<geom::Pose2>> MppiOptimizer::sampled_trajectories(int count) const {
+  std::vector<std::vector<geom::Pose2>> out;
+  const Eigen::Index rows = r_.x.rows();
+  for (int k = 0; k < count && rows > 0; ++k) {
+    const Eigen::Index b = (static_cast<Eigen::Index>(k) * rows) / std::max(1, count);
+    std::vector<geom::Pose2> poses;
+    for (Eigen::Index t = 0; t < r_.x.cols(); ++t)
+      poses.push_back({r_.x(b, t), r_.y(b, t), r_.yaw(b, t)});
+    out.push_back(std::move(poses));
+  }
+  return out;
+}
+
+}  // namespace plantsim::controller::mppi
