@@ -1,9 +1,10 @@
-// `plantsim bench planner|sim|render|batch|startup`: one JSON line per case with its same-run
-// baseline.
+// `plantsim bench planner|sim|render|batch|startup|controllers`: one JSON line per case with its
+// same-run baseline.
 #include <filesystem>
 
 #include "app/commands.h"
 #include "bench/batch_bench.h"
+#include "bench/controller_bench.h"
 #include "bench/planner_bench.h"
 #include "bench/render_bench.h"
 #include "bench/sim_bench.h"
@@ -23,7 +24,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   cmd->add_option("target", opt->target, "What to measure")
       ->required()
-      ->check(CLI::IsMember({"planner", "sim", "render", "batch", "startup"}));
+      ->check(CLI::IsMember({"planner", "sim", "render", "batch", "startup", "controllers"}));
   cmd->add_flag("--quick", opt->quick, "Fewer repetitions and no slow baselines");
   cmd->add_option("--chart", opt->chart,
                   "planner: also time the grid and draw the log-log time chart into this PNG");
@@ -38,6 +39,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
     if (opt->target == "render") return bench::run_render_bench(data, opt->quick);
     if (opt->target == "batch") return bench::run_batch_bench(data, opt->quick);
     if (opt->target == "startup") return bench::run_startup_bench(data, opt->quick);
+    if (opt->target == "controllers") return bench::run_controller_bench(data, opt->quick);
     return bench::run_planner_bench(data, opt->quick, opt->chart);
   };
 }

@@ -19,8 +19,8 @@ struct CriticInput {
   const Rollouts& rollouts;
   const MppiParams& params;
   RobotState state;
-  const std::vector<geom::Vec2>& path;  ///< dense, from the robot's projection to the goal
-  const std::vector<float>& path_s;     ///< arc length of each path point from path[0]
+  const std::vector<geom::Vec2>& path;  ///< dense, the plan ahead of the robot (prune_distance)
+  const std::vector<float>& path_s;     ///< arc length of each point along the whole plan
   geom::Pose2 goal;
   const ClearanceGrid* clearance = nullptr;  ///< none: no obstacle cost
   float robot_radius_m = 0.2f;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plantsim::controller::mppi {
 
@@ -15,6 +16,7 @@ MppiOptimizer::MppiOptimizer(MppiParams params, CriticParams critics, std::uint6
 void MppiOptimizer::set_path(const std::vector<geom::Vec2>& plan, double path_spacing_m) {
   path_.clear();
   path_s_.clear();
+  progress_ = 0;
   if (plan.empty()) return;
   path_.push_back(plan.front());
   path_s_.push_back(0.0f);
@@ -31,11 +33,31 @@ void MppiOptimizer::set_path(const std::vector<geom::Vec2>& plan, double path_sp
   }
 }
 
+void MppiOptimizer::prune_path(const RobotState& s) {
+  // The nearest point within the next prune_distance (Nav2 prunes the plan the same way): a
+  // plan that passes the robot twice is not taken for its later pass.
+  window_.clear();
+  window_s_.clear();
+  if (path_.empty()) return;
+  float best = std::numeric_limits<float>::infinity();
+  const float reach = path_s_[progress_] + static_cast<float>(p_.prune_distance);
+  for (std::size_t k = progress_; k < path_.size() && path_s_[k] <= reach; ++k) {
+    const float dx = s.x - static_cast<float>(path_[k].x),
+                dy = s.y - static_cast<float>(path_[k].y);
+    if (dx * dx + dy * dy < best) best = dx * dx + dy * dy, progress_ = k;
+  }
+  const float end = path_s_[progress_] + static_cast<float>(p_.prune_distance);
+  for (std::size_t k = progress_; k < path_.size() && path_s_[k] <= end; ++k) {
+    window_.push_back(path_[k]);
+    window_s_.push_back(path_s_[k]);
+  }
+}
+
 void MppiOptimizer::optimise_once(const MppiQuery& q) {
   draw_noise(p_, rng_, r_);
   roll_out(p_, u_, q.state, r_);
   costs_.setZero();
-  const CriticInput in{r_, p_, q.state, path_, path_s_, q.goal, q.clearance, q.robot_radius_m};
+  const CriticInput in{r_, p_, q.state, window_, window_s_, q.goal, q.clearance, q.robot_radius_m};
   all_critics(in, c_, costs_);
   // The control cost of Williams et al.: gamma / sigma^2 * u . noise, summed over the steps.
   const auto gamma = static_cast<float>(p_.gamma);
@@ -64,6 +86,7 @@ void MppiOptimizer::remember_optimum(const MppiQuery& q) {
 }
 
 Twist MppiOptimizer::step(const MppiQuery& q) {
+  prune_path(q.state);
   for (int i = 0; i < std::max(1, p_.iteration_count); ++i) optimise_once(q);
   remember_optimum(q);
   const Twist command{u_.vx(0), u_.wz(0)};

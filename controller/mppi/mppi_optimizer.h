@@ -37,6 +37,7 @@ class MppiOptimizer {
   const ControlSequence& control_sequence() const { return u_; }
 
  private:
+  void prune_path(const RobotState& s);
   void optimise_once(const MppiQuery& q);
   void remember_optimum(const MppiQuery& q);
 
@@ -46,8 +47,11 @@ class MppiOptimizer {
   ControlSequence u_;
   Rollouts r_;
   Costs costs_;
-  std::vector<geom::Vec2> path_;
+  std::vector<geom::Vec2> path_;  ///< the whole plan, resampled
   std::vector<float> path_s_;
+  std::size_t progress_ = 0;        ///< the plan's point nearest the robot, never back
+  std::vector<geom::Vec2> window_;  ///< the plan the critics see: prune_distance of it
+  std::vector<float> window_s_;
   std::vector<geom::Pose2> optimal_;
 };
 

@@ -17,6 +17,7 @@ struct MppiParams {
   double wz_max = 1.9;                  ///< rad/s
   double ax_max = 3.0, ax_min = -3.0;   ///< m/s^2 (ax_min negative: braking)
   double az_max = 3.5;                  ///< rad/s^2
+  double prune_distance = 1.7;          ///< m of the plan ahead of the robot the critics see
 };
 
 /// The critics' weights and thresholds (nav2_bringup's values).
