@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "controller/dwb/dwb_planner.h"
 #include "controller/mppi/mppi_optimizer.h"
 #include "controller/pure_pursuit.h"
 #include "planner/planner.h"
@@ -57,6 +58,7 @@ int run_controller_bench(const std::string& shared_data, bool quick) {
   const int cycles = quick ? 60 : 400;
 
   controller::PurePursuit rpp(controller::PurePursuitParams{}, plan.path);
+  controller::PurePursuit rpp_again = rpp;  // for the clearance field's drive, below
   const CycleTimes rpp_t = time_cycles(
       cycles, world.start, [&](const geom::Pose2& p, double v) { return rpp.step(p, v).twist; });
   const Measure rpp_median{"rpp_cycle_median", rpp_t.median_ms, "ms"};
@@ -69,14 +71,34 @@ int run_controller_bench(const std::string& shared_data, bool quick) {
   mppi.set_path(plan.path);
   const geom::Pose2 goal = worlds::staging_pose(world);
   const CycleTimes mppi_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
-    const controller::mppi::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles,
-                                               world.floor);
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
     controller::mppi::RobotState s{static_cast<float>(p.x), static_cast<float>(p.y),
                                    static_cast<float>(p.yaw), static_cast<float>(v), 0.0f};
     return mppi.step({s, goal, &grid, static_cast<float>(world.robot.radius_m)});
   });
   report("controllers", {"mppi_2000x56_cycle_median", mppi_t.median_ms, "ms"}, rpp_median);
   report("controllers", {"mppi_2000x56_cycle_p99", mppi_t.p99_ms, "ms"}, rpp_median);
+
+  controller::dwb::DwbPlanner dwb({});
+  dwb.set_path(plan.path);
+  double omega = 0;
+  const CycleTimes dwb_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
+    const controller::Twist u = dwb.step({p, {v, omega}, goal, &grid, world.robot.radius_m});
+    omega = u.omega_radps;
+    return u;
+  });
+  report("controllers", {"dwb_20x20_cycle_median", dwb_t.median_ms, "ms"}, rpp_median);
+  report("controllers", {"dwb_20x20_cycle_p99", dwb_t.p99_ms, "ms"}, rpp_median);
+
+  // Of each MPPI and DWB cycle above: the clearance field alone, on the same drive as RPP's.
+  volatile float sink = 0;  // the field is read, so it is built
+  const CycleTimes grid_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
+    sink = grid.at(static_cast<float>(p.x), static_cast<float>(p.y));
+    return rpp_again.step(p, v).twist;
+  });
+  report("controllers", {"clearance_grid_6m_cycle_median", grid_t.median_ms, "ms"}, rpp_median);
   return 0;
 }
 

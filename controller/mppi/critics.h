@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "controller/mppi/clearance_grid.h"
+#include "controller/clearance_grid.h"
 #include "controller/mppi/mppi_params.h"
 #include "controller/mppi/rollouts.h"
 #include "geometry/vec2.h"

@@ -1,13 +1,13 @@
 // The distance field (see the header): each cell's distance computed exactly from the boxes
 // near the window only, so a plant of thousands of boxes costs what its neighbourhood costs.
-#include "controller/mppi/clearance_grid.h"
+#include "controller/clearance_grid.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/clearance.h"
 
-namespace plantsim::controller::mppi {
+namespace plantsim::controller {
 
 ClearanceGrid::ClearanceGrid(geom::Vec2 center, double half_side_m, double cell_m,
                              const std::vector<geom::Rect>& boxes, const geom::Rect& floor)
@@ -38,4 +38,4 @@ ClearanceGrid::ClearanceGrid(geom::Vec2 center, double half_side_m, double cell_
     }
 }
 
-}  // namespace plantsim::controller::mppi
+}  // namespace plantsim::controller

@@ -8,7 +8,7 @@
 
 #include "geometry/vec2.h"
 
-namespace plantsim::controller::mppi {
+namespace plantsim::controller {
 
 class ClearanceGrid {
  public:
@@ -33,4 +33,4 @@ class ClearanceGrid {
   std::vector<float> cells_;
 };
 
-}  // namespace plantsim::controller::mppi
+}  // namespace plantsim::controller
