@@ -14,6 +14,7 @@
 #include "planner/registry.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"
+#include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 #include "worlds/names.h"
 #include "worlds/world_error.h"
@@ -397,10 +398,11 @@ std::string config_file_json(const std::string& file, const std::string& path,
   }
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception&) {
+    j = worlds::parse_json_input(text, resolved);  // bounded: depth, keys given twice
+  } catch (const WorldError& e) {
     throw WorldError(path, field,
-                     "'" + file + "' is not JSON (expected a config file, docs/config.md)");
+                     "'" + file + "' is not JSON (expected a config file, docs/config.md): " +
+                         e.what());
   }
   episode::parse_episode_config(text, resolved);  // throws on a bad key or value, naming the file
   return j.dump();
