@@ -28,6 +28,35 @@ T yaml_value(const YAML::Node& doc, const std::string& key, const std::string& p
   }
 }
 
+// map_server's reading of one pixel (Nav2's map_io): its shade from 0 (black) to 1 (white),
+// with alpha averaged in as a fourth channel beside red, green and blue in trinary mode; in
+// scale and raw modes a pixel not fully opaque is unknown (Nav2 does so in scale mode; in raw
+// mode it ignores alpha, and plantsim keeps the unknown: a raw value is an occupancy, and a
+// transparent pixel gives none).
+struct PixelClass {
+  bool occupied = false, free = false;
+};
+
+PixelClass classify(const MapImage& img, std::size_t i, const std::string& mode, bool negate,
+                    double occupied_thresh, double free_thresh) {
+  double shade = img.shade(i);
+  if (!img.alpha.empty()) {
+    if (mode != "trinary" && img.alpha[i] != img.max_value) return {};
+    if (mode == "trinary") shade = (3 * shade + img.opacity(i)) / 4;
+  }
+  PixelClass c;
+  if (mode == "raw") {
+    const double v = std::round(shade * 255);  // the value an 8-bit image would hold
+    c.occupied = v >= 100.0 * occupied_thresh && v <= 100;
+    c.free = v <= 100.0 * free_thresh;
+  } else {
+    const double p = negate ? shade : 1 - shade;
+    c.occupied = p > occupied_thresh;
+    c.free = p < free_thresh;
+  }
+  return c;
+}
+
 }  // namespace
 
 RosMap load_ros_map(const std::string& yaml_path) {
@@ -74,20 +103,11 @@ RosMap load_ros_map(const std::string& yaml_path) {
   m.grid.height = pgm.height;
   m.grid.cells.resize(pgm.values.size());
   for (std::size_t i = 0; i < pgm.values.size(); ++i) {
-    const double v = pgm.values[i];
-    bool occupied, free;
-    if (mode == "raw") {
-      occupied = v >= 100.0 * occupied_thresh && v <= 100;
-      free = v <= 100.0 * free_thresh;
-    } else {
-      const double p = negate ? v / pgm.max_value : (pgm.max_value - v) / pgm.max_value;
-      occupied = p > occupied_thresh;
-      free = p < free_thresh;
-    }
-    m.occupied += occupied;
-    m.free += free;
-    m.unknown += !occupied && !free;
-    m.grid.cells[i] = free ? '.' : '@';
+    const PixelClass c = classify(pgm, i, mode, negate == 1, occupied_thresh, free_thresh);
+    m.occupied += c.occupied;
+    m.free += c.free;
+    m.unknown += !c.occupied && !c.free;
+    m.grid.cells[i] = c.free ? '.' : '@';
   }
   return m;
 }
