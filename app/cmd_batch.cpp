@@ -2,7 +2,6 @@
 // `plantsim merge DIR... --out DIR`. Both judge each configuration against the gate (the
 // scenario's `gate:` and --min-success) and exit 1 when one is below its threshold.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -17,6 +16,8 @@
 #include "batch/episode_records.h"
 #include "batch/episode_runner.h"
 #include "util/atomic_file.h"
+#include "util/input_file.h"
+#include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 
 namespace plantsim::app {
@@ -27,8 +28,9 @@ namespace {
 std::vector<std::pair<std::string, std::string>> stamp_of(const std::string& folder) {
   std::vector<std::pair<std::string, std::string>> out;
   try {
-    std::ifstream in(folder + "/summary.json");
-    const nlohmann::json j = nlohmann::json::parse(in).at("made_by");
+    const std::string path = folder + "/summary.json";
+    const nlohmann::json j =
+        worlds::parse_json_input(util::read_input_file(path, 64u << 20), path).at("made_by");
     for (const auto& [key, value] : j.items())
       out.emplace_back(key == "plantsim" ? "plantsim_version" : "plantsim_" + key,
                        value.is_string() ? value.get<std::string>() : value.dump());

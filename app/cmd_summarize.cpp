@@ -82,7 +82,8 @@ std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
 std::string batch_line(const std::string& dir, std::string& verdict) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+    const std::string path = dir + "/summary.json";
+    j = worlds::parse_json_input(util::read_input_file(path, 64u << 20), path);
   } catch (const std::exception&) {
     return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
   }
@@ -99,7 +100,7 @@ std::string batch_line(const std::string& dir, std::string& verdict) {
 std::string stale_note(const std::string& summary_path) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(util::read_input_file(summary_path, 64u << 20));
+    j = worlds::parse_json_input(util::read_input_file(summary_path, 64u << 20), summary_path);
   } catch (const std::exception&) {
     return "";  // no summary.json: said elsewhere
   }
@@ -119,8 +120,8 @@ std::string stale_note(const std::string& summary_path) {
 /// A tuning folder in one line: its verdict on the validation episodes (summary.json).
 std::string tune_line(const std::string& dir) {
   try {
-    const nlohmann::json j =
-        nlohmann::json::parse(util::read_input_file(dir + "/summary.json", 64u << 20));
+    const std::string path = dir + "/summary.json";
+    const nlohmann::json j = worlds::parse_json_input(util::read_input_file(path, 64u << 20), path);
     return j.at("verdict").get<std::string>();
   } catch (const std::exception&) {
     return "no readable summary.json: the tuning did not finish; see its evaluations.jsonl";

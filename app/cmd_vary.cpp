@@ -15,6 +15,7 @@
 #include "util/atomic_file.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"
+#include "worlds/json_input.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
 
@@ -44,8 +45,9 @@ std::function<int()> add_vary_command(CLI::App& app) {
       util::check_output_file(o->out, "--out", world_file_kind());  // before any work: exit 2
     refuse_output_over_input(o->out, util::resolve_input_path(o->world, ""));
     worlds::World w = worlds::load_world(o->world);
-    nlohmann::ordered_json doc = nlohmann::ordered_json::parse(
-        util::read_input_file(util::resolve_input_path(o->world, "")));
+    const std::string world_path = util::resolve_input_path(o->world, "");
+    nlohmann::ordered_json doc =
+        worlds::parse_ordered_json_input(util::read_input_file(world_path), world_path);
     if (doc.contains("rects"))
       throw worlds::WorldError(o->world, "",
                                "vary takes plantsim worlds, not plain benchmark worlds");

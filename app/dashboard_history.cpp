@@ -7,6 +7,7 @@
 
 #include "util/atomic_file.h"
 #include "util/input_file.h"
+#include "worlds/json_input.h"
 
 namespace plantsim::app {
 
@@ -30,7 +31,7 @@ std::vector<HistoryLine> read_history(const std::string& path) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     try {
-      const json j = json::parse(line);
+      const json j = worlds::parse_json_input(line, path);
       out.push_back({j.at("batch").get<std::string>(),
                      {j.at("date").get<std::string>(), j.at("commit").get<std::string>(),
                       j.at("verdict").get<std::string>(), j.at("succeeded").get<std::int64_t>(),
@@ -45,7 +46,8 @@ std::vector<HistoryLine> read_history(const std::string& path) {
 /// The batch's current run from its summary.json (nothing when it has no stamp).
 std::optional<render::TrendPoint> current_run(const std::string& summary_path) {
   try {
-    const json j = json::parse(util::read_input_file(summary_path, 64u << 20));
+    const json j =
+        worlds::parse_json_input(util::read_input_file(summary_path, 64u << 20), summary_path);
     const json& m = j.at("made_by");
     return render::TrendPoint{m.at("date").get<std::string>(), m.at("commit").get<std::string>(),
                               j.value("verdict", std::string("not gated")),

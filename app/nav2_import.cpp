@@ -11,6 +11,7 @@
 #include <set>
 
 #include "episode/episode_config_json.h"
+#include "worlds/decimal_number.h"
 #include "worlds/world_error.h"
 #include "worlds/yaml_input.h"
 
@@ -29,13 +30,11 @@ class Importer {
     return node;
   }
 
+  // Decimal by plantsim's one rule (worlds/decimal_number.h): yaml-cpp's as<double>() took
+  // `.inf`, and its integers read `010` as 8.
   double number(const YAML::Node& n, const std::string& key) const {
-    try {
-      const double v = n.as<double>();
-      if (std::isfinite(v)) return v;
-    } catch (const YAML::Exception&) {
-    }
-    throw worlds::WorldError(file_, key, "expected a finite number");
+    if (const auto v = worlds::decimal_number(n)) return *v;
+    throw worlds::WorldError(file_, key, "expected a finite decimal number");
   }
   bool flag(const YAML::Node& n, const std::string& key) const {
     try {

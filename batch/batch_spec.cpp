@@ -15,6 +15,8 @@
 #include "util/c_number.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"
+#include "worlds/decimal_number.h"
+#include "worlds/json_input.h"
 #include "worlds/known_keys.h"
 #include "worlds/names.h"
 #include "worlds/world_error.h"
@@ -25,28 +27,10 @@ namespace {
 
 using worlds::WorldError;
 
-// [-+]digits[.digits][(e|E)[-+]digits], the whole string.
-bool decimal_number(const std::string& s) {
-  std::size_t i = 0;
-  auto digits = [&]() {
-    const std::size_t from = i;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
-    return i > from;
-  };
-  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-  bool any = digits();
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    any = digits() || any;
-  }
-  if (!any) return false;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
-    if (!digits()) return false;
-  }
-  return i == s.size();
-}
+// Every number of a scenario by one rule (worlds/decimal_number.h): decimal, `010` is 10.
+using worlds::decimal_number;
+using worlds::decimal_whole_number;
+using worlds::is_decimal_number;
 
 // A YAML mapping of overrides as JSON text, validated by the episode-config reader.
 std::string overrides_json(const YAML::Node& node, const std::string& source,
@@ -63,9 +47,8 @@ std::string overrides_json(const YAML::Node& node, const std::string& source,
       if (s == "true" || s == "false") return s == "true";
       // Plain decimal numbers only: std::stod would read "0x10" as 16 and std::stoull as 0, and
       // "inf" or "nan" as numbers; anything else stays text for the config reader to refuse.
-      if (decimal_number(s)) {
-        if (s.find_first_of(".eE") == std::string::npos && s[0] != '-' && s.size() <= 18)
-          return static_cast<std::uint64_t>(std::stoull(s));
+      if (is_decimal_number(s)) {
+        if (const auto whole = decimal_whole_number(s); whole && s.size() <= 18) return *whole;
         return util::c_strtod(s.c_str(), nullptr);
       }
       return s;
@@ -90,12 +73,9 @@ std::vector<double> read_numbers(const YAML::Node& n, std::size_t count, const s
   std::vector<double> v(count);
   for (std::size_t i = 0; i < count; ++i) {
     const std::string at = where + "[" + std::to_string(i) + "]";
-    try {
-      v[i] = n[i].as<double>();
-    } catch (const YAML::Exception&) {
-      throw WorldError(source, at, "expected a number");
-    }
-    if (!std::isfinite(v[i])) throw WorldError(source, at, "must be finite");
+    const auto number = decimal_number(n[i]);
+    if (!number) throw WorldError(source, at, "expected a finite decimal number");
+    v[i] = *number;
   }
   return v;
 }
@@ -150,23 +130,15 @@ void take_plant_keys(YAML::Node& body, FaultSetting& f, const std::string& sourc
   flag("crossing_obstacle", f.crossing_obstacle);
   flag("crossing_final_approach", f.crossing_final_approach);
   if (body["standing_at_dock_s"]) {
-    double t = -1;
-    try {
-      t = body["standing_at_dock_s"].as<double>();
-    } catch (const YAML::Exception&) {
-    }
+    const double t = decimal_number(body["standing_at_dock_s"]).value_or(-1);
     if (!(t >= 0 && t <= 3600))
       throw WorldError(source, field + ".standing_at_dock_s", "expected seconds from 0 to 3600");
     f.standing_at_dock_s = t;
     body.remove("standing_at_dock_s");
   }
   if (body["unmapped_obstacles"]) {
-    long n = -1;
-    try {
-      n = body["unmapped_obstacles"].as<long>();
-    } catch (const YAML::Exception&) {
-    }
-    if (n < 0 || n > 50)
+    const std::uint64_t n = decimal_whole_number(body["unmapped_obstacles"]).value_or(51);
+    if (n > 50)
       throw WorldError(source, field + ".unmapped_obstacles",
                        "expected a whole number from 0 to 50");
     f.unmapped_obstacles = static_cast<int>(n);
@@ -242,11 +214,9 @@ std::string checked_name(const YAML::Node& key, const std::string& path, const s
 }
 
 double fraction(const YAML::Node& n, const std::string& path, const std::string& field) {
-  if (!n.IsScalar() || !decimal_number(n.Scalar()))
-    throw WorldError(path, field, "expected a number from 0 to 1");
-  const double v = util::c_strtod(n.Scalar().c_str(), nullptr);
-  if (!(v >= 0 && v <= 1)) throw WorldError(path, field, "expected a number from 0 to 1");
-  return v;
+  const auto v = decimal_number(n);
+  if (!v || !(*v >= 0 && *v <= 1)) throw WorldError(path, field, "expected a number from 0 to 1");
+  return *v;
 }
 
 // gate: {min_success: R, statistic: success_rate | wilson_low, pool: worlds,
@@ -398,10 +368,11 @@ std::string config_file_json(const std::string& file, const std::string& path,
   }
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception&) {
-    throw WorldError(path, field,
-                     "'" + file + "' is not JSON (expected a config file, docs/config.md)");
+    j = worlds::parse_json_input(text, resolved);  // bounded: depth, keys given twice
+  } catch (const WorldError& e) {
+    throw WorldError(
+        path, field,
+        "'" + file + "' is not JSON (expected a config file, docs/config.md): " + e.what());
   }
   episode::parse_episode_config(text, resolved);  // throws on a bad key or value, naming the file
   return j.dump();
@@ -469,7 +440,7 @@ void apply_sweep(const YAML::Node& doc, const std::string& path, BatchSpec& s,
     const std::string& value = values.back();
     for (std::size_t i = 0; i + 1 < values.size(); ++i)
       if (values[i] == value ||
-          (decimal_number(values[i]) && decimal_number(value) &&
+          (is_decimal_number(values[i]) && is_decimal_number(value) &&
            util::c_strtod(values[i].c_str(), nullptr) == util::c_strtod(value.c_str(), nullptr)))
         throw WorldError(path, "sweep.values",
                          "'" + value + "' is the value '" + values[i] + "' again");
@@ -528,19 +499,22 @@ void read_seeds(const YAML::Node& doc, const std::string& path, BatchSpec& s) {
   if (!seeds) throw WorldError(path, "seeds", "missing (a count, or a list of seeds)");
   try {
     if (seeds.IsScalar()) {
-      const long n = seeds.as<long>();
-      if (n <= 0 || n > 1000000) throw WorldError(path, "seeds", "count must be from 1 to 1000000");
-      for (long k = 1; k <= n; ++k) s.seeds.push_back(static_cast<std::uint64_t>(k));
+      // Decimal: yaml-cpp's as<long>() read `seeds: 010` as 8 seeds.
+      const auto n = decimal_whole_number(seeds);
+      if (!n) throw WorldError(path, "seeds", "expected a count or a list of whole numbers");
+      if (*n == 0 || *n > 1000000)
+        throw WorldError(path, "seeds", "count must be from 1 to 1000000");
+      for (std::uint64_t k = 1; k <= *n; ++k) s.seeds.push_back(k);
     } else if (seeds.IsSequence()) {
       if (seeds.size() > 1000000) throw WorldError(path, "seeds", "more than 1000000 seeds");
       std::set<std::uint64_t> seen;
       for (const auto& v : seeds) {
-        if (!v.IsScalar() || !decimal_number(v.Scalar()) ||
-            v.Scalar().find_first_of("-.eE") != std::string::npos)
+        const auto seed = decimal_whole_number(v);
+        if (!seed)
           throw WorldError(
               path, "seeds",
               "expected whole numbers, got '" + (v.IsScalar() ? v.Scalar() : "a list") + "'");
-        s.seeds.push_back(v.as<std::uint64_t>());
+        s.seeds.push_back(*seed);
         if (!seen.insert(s.seeds.back()).second)
           throw WorldError(path, "seeds",
                            "seed " + v.Scalar() + " is listed twice (one episode id each)");

@@ -10,7 +10,7 @@ root=$PWD
 seconds=${1:-60}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params names actions)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(world_json ros_map movingai episode_config scenario coverage_params names bounded_parsers tune_spec nav2_params actions)
 data=$(cd ../shared/data && pwd)
 
 ./scripts/sanitize_tree.sh  # the harnesses are built in the sanitizer tree
@@ -18,7 +18,7 @@ mkdir -p build-fuzz
 
 corpus=build-fuzz/corpus
 rm -rf "$corpus"
-mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names,actions} build-fuzz/artifacts
+mkdir -p "$corpus"/{world_json,ros_map,movingai,episode_config,scenario,coverage_params,names,bounded_parsers,tune_spec,nav2_params,actions} build-fuzz/artifacts
 # Actions: the regression fixtures seed the corpus (their layout: fuzz/fuzz_actions.cpp).
 cp fuzz/regressions/actions/* "$corpus/actions/"
 small() { [ "$(stat -c %s "$1")" -le 65536 ]; }
@@ -29,6 +29,17 @@ for f in configs/*.json; do cp "$f" "$corpus/episode_config/"; done
 cp configs/coverage_params.json "$corpus/coverage_params/"
 printf '{"chnn": {"restarts": 3, "eta": 1e3}, "exact": {"max_prefixes": 10}}' > "$corpus/coverage_params/small.json"
 for f in data/scenarios/*.yaml; do cp "$f" "$corpus/scenario/"; done
+# The bounded readers: small JSON and YAML inputs of every kind (the regressions add the hostile ones).
+for f in configs/*.json data/worlds/examples/*.json data/scenarios/*.yaml tests/fixtures/nav2/*.yaml; do
+  small "$f" && cp "$f" "$corpus/bounded_parsers/$(basename "$f")"
+done
+# Tuning scenarios over the harness's own tiny world (w.json in its scratch folder).
+for f in data/scenarios/tune_*.yaml data/scenarios/*_tuning.yaml; do
+  sed -e '/^  - .*\.json$/d' -e 's/^worlds:.*$/worlds: [w.json]/' "$f" > "$corpus/tune_spec/$(basename "$f")"
+done
+printf 'worlds: [w.json]\nplanners: [vg]\nseeds: 2\ntune:\n  validation_seeds: [5, 6]\n  budget: 12\n  method: bobyqa\n  objective: success_then_time\n  min_wilson: 0.5\n  parameters: {tracking.max_linear_speed_mps: [0.3, 1.5], docking.approach_speed_mps: [0.04, 0.2]}\n' \
+  > "$corpus/tune_spec/small.yaml"
+for f in tests/fixtures/nav2/*.yaml; do cp "$f" "$corpus/nav2_params/"; done
 # Names and words people and attackers use (issue 51's cases among them).
 i=0
 for n in "small_plant" "脱硫 plant #2 (100%)" "plant';touch\${IFS}X;'" "x'; touch F; echo '" $'\e[2Jwiped' \

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "util/atomic_file.h"
+#include "worlds/json_input.h"
 
 namespace plantsim::tune {
 
@@ -83,7 +84,7 @@ std::vector<Evaluation> read_evaluations(const std::string& path, const std::str
     const std::string line = text.substr(begin, end - begin);
     begin = end + 1;
     try {
-      const json j = json::parse(line);
+      const json j = worlds::parse_json_input(line, path);  // bounded; WorldError cuts it
       if (j.at("tune").get<std::string>() != fingerprint)
         throw std::invalid_argument(
             "'" + path + "' holds evaluations of another tuning (fingerprint " +

@@ -12,6 +12,7 @@
 
 #include "util/c_number.h"
 #include "util/data_dir.h"
+#include "worlds/decimal_number.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_error.h"
 #include "worlds/yaml_input.h"
@@ -68,15 +69,12 @@ TunedParameter checked_parameter(const std::string& key, double lo, double hi,
   return p;
 }
 
+// By the decimal rule of every YAML number (worlds/decimal_number.h), on the command line as in
+// the scenario: std::stod took `0x10` as 16.
 double parse_bound(const std::string& text, const std::string& where) {
-  // strtod in the "C" locale: std::stod follows the host's LC_NUMERIC (a Python caller with a
-  // German locale read "0.5" as 0).
-  char* end = nullptr;
-  const double v = util::c_strtod(text.c_str(), &end);
-  const auto used = static_cast<std::size_t>(end - text.c_str());
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw std::invalid_argument(where + ": '" + text + "' is not a number");
-  return v;
+  const auto v = worlds::decimal_number(text);
+  if (!v) throw std::invalid_argument(where + ": '" + text + "' is not a number");
+  return *v;
 }
 
 /// "KEY=LOW:HIGH" from the command line.
@@ -235,17 +233,28 @@ TuneSpec load_tune_spec(const TuneRequest& r) {
                                : t["method"] ? t["method"].as<std::string>()
                                              : "sbplx";
     spec.method = parse_method(method, r.method ? "--method" : "tune.method");
-    const long budget = r.budget ? *r.budget : t["budget"] ? t["budget"].as<long>() : 60;
+    long budget = 60;
+    if (r.budget) {
+      budget = *r.budget;
+    } else if (t["budget"]) {
+      // Decimal as --budget reads it: yaml-cpp's as<long>() read `budget: 010` as 8.
+      const auto v = worlds::decimal_whole_number(t["budget"]);
+      if (!v || *v > static_cast<std::uint64_t>(kMaxBudget))
+        throw WorldError(r.scenario, "tune.budget",
+                         "expected a whole number of evaluations from 1 to 100000");
+      budget = static_cast<long>(*v);
+    }
     if (budget < 1 || budget > kMaxBudget)
       throw std::invalid_argument(std::string(r.budget ? "--budget" : "tune.budget") +
                                   ": the number of evaluations must be 1 to 100000, got " +
                                   std::to_string(budget));
     spec.budget = static_cast<int>(budget);
     if (r.min_wilson || t["min_wilson"]) {
-      const double floor = r.min_wilson ? *r.min_wilson : t["min_wilson"].as<double>();
-      if (!(floor >= 0 && floor <= 1))
+      const auto floor = r.min_wilson ? r.min_wilson : worlds::decimal_number(t["min_wilson"]);
+      if (!floor) throw WorldError(r.scenario, "tune.min_wilson", "expected a decimal number");
+      if (!(*floor >= 0 && *floor <= 1))
         throw std::invalid_argument("--min-wilson: a Wilson lower bound from 0 to 1");
-      spec.min_wilson = floor;
+      spec.min_wilson = *floor;
     }
   } catch (const YAML::Exception& e) {
     throw WorldError(r.scenario, "tune", std::string("unexpected value: ") + e.what());

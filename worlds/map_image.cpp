@@ -1,12 +1,11 @@
-// PGM parsing by hand (a few lines of header), PNG decoding through libpng's simplified API.
+// PGM parsing by hand (a few lines of header); PNG handed to worlds/map_image_png.h.
 #include "worlds/map_image.h"
-
-#include <png.h>
 
 #include <cctype>
 #include <sstream>
 
 #include "util/input_file.h"
+#include "worlds/map_image_png.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::worlds {
@@ -51,40 +50,24 @@ MapImage decode_pgm(const std::string& bytes, const std::string& path) {
       throw WorldError(path, "pixels", "file ends before the last pixel");
     p.values.resize(count);
     const auto* raw = reinterpret_cast<const unsigned char*>(bytes.data() + start);
-    for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t i = 0; i < count; ++i) {
       p.values[i] = bytes_per == 1 ? raw[i] : (raw[2 * i] << 8) | raw[2 * i + 1];
+      // Above the header's maximum a sample has no shade (read as one, it came out free).
+      if (p.values[i] > static_cast<std::uint32_t>(p.max_value))
+        throw WorldError(path, "pixels", "a value is out of range (above the maximum)");
+    }
   } else {
     // Text pixels take at least two bytes each: a header claiming more cannot be honest.
     if (count > bytes.size()) throw WorldError(path, "pixels", "file ends before the last pixel");
     p.values.resize(count);
-    for (int& v : p.values)
-      if (!(in >> v) || v < 0 || v > p.max_value)
+    for (std::uint32_t& v : p.values) {
+      long value = -1;
+      if (!(in >> value) || value < 0 || value > p.max_value)
         throw WorldError(path, "pixels",
                          "file ends before the last pixel or a value is out of range");
+      v = static_cast<std::uint32_t>(value);
+    }
   }
-  return p;
-}
-
-MapImage decode_png(const std::string& bytes, const std::string& path) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
-    throw WorldError(path, "", std::string("not a readable PNG image: ") + image.message);
-  if (static_cast<double>(image.width) * image.height > kMaxMapPixels) {
-    png_image_free(&image);
-    throw WorldError(path, "", "image too large (over 64 Mpixel)");
-  }
-  image.format = PNG_FORMAT_RGBA;
-  std::vector<unsigned char> rgba(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, rgba.data(), 0, nullptr))
-    throw WorldError(path, "", std::string("PNG image cannot be decoded: ") + image.message);
-  MapImage p;
-  p.width = static_cast<int>(image.width);
-  p.height = static_cast<int>(image.height);
-  p.max_value = 255;
-  p.values.resize(static_cast<std::size_t>(p.width) * p.height);
-  for (std::size_t i = 0; i < p.values.size(); ++i)
-    p.values[i] = (rgba[4 * i] + rgba[4 * i + 1] + rgba[4 * i + 2]) / 3;
   return p;
 }
 
@@ -100,7 +83,7 @@ MapImage read_map_image(const std::string& path) {
         std::string(e.what()) + " (the YAML's 'image' must name a readable PGM or PNG file)");
   }
   if (bytes.rfind("P5", 0) == 0 || bytes.rfind("P2", 0) == 0) return decode_pgm(bytes, path);
-  if (bytes.rfind("\x89PNG", 0) == 0) return decode_png(bytes, path);
+  if (bytes.rfind("\x89PNG", 0) == 0) return decode_png_map(bytes, path);
   throw WorldError(path, "magic", "not a PGM (P5, P2) or PNG image");
 }
 

@@ -9,6 +9,7 @@
 
 #include "geometry/predicates.h"
 #include "worlds/charger_placement.h"
+#include "worlds/decimal_number.h"
 #include "worlds/map_image.h"
 #include "worlds/world_error.h"
 #include "worlds/world_limits.h"
@@ -18,14 +19,64 @@
 namespace plantsim::worlds {
 namespace {
 
-template <typename T>
-T yaml_value(const YAML::Node& doc, const std::string& key, const std::string& path) {
-  if (!doc[key]) throw WorldError(path, key, "missing");
-  try {
-    return doc[key].as<T>();
-  } catch (const YAML::Exception&) {
-    throw WorldError(path, key, "has the wrong type");
+YAML::Node required(const YAML::Node& node, const std::string& key, const std::string& path) {
+  if (!node) throw WorldError(path, key, "missing");
+  return node;
+}
+
+// Numbers by plantsim's one rule for YAML (worlds/decimal_number.h): `010` is 10.
+double number(const YAML::Node& doc, const std::string& key, const std::string& path) {
+  const auto v = decimal_number(required(doc[key], key, path));
+  if (!v) throw WorldError(path, key, "expected a decimal number");
+  return *v;
+}
+
+std::string text(const YAML::Node& doc, const std::string& key, const std::string& path) {
+  if (!required(doc[key], key, path).IsScalar())
+    throw WorldError(path, key, "expected a single value");
+  return doc[key].Scalar();
+}
+
+std::vector<double> numbers(const YAML::Node& doc, const std::string& key,
+                            const std::string& path) {
+  const YAML::Node n = required(doc[key], key, path);
+  if (!n.IsSequence()) throw WorldError(path, key, "expected a list of decimal numbers");
+  std::vector<double> out;
+  for (const YAML::Node& item : n) {
+    const auto v = decimal_number(item);
+    if (!v) throw WorldError(path, key, "expected a list of decimal numbers");
+    out.push_back(*v);
   }
+  return out;
+}
+
+// map_server's reading of one pixel (Nav2's map_io): its shade from 0 (black) to 1 (white),
+// with alpha averaged in as a fourth channel beside red, green and blue in trinary mode; in
+// scale and raw modes a pixel not fully opaque is unknown (Nav2 does so in scale mode; in raw
+// mode it ignores alpha, and plantsim keeps the unknown: a raw value is an occupancy, and a
+// transparent pixel gives none).
+struct PixelClass {
+  bool occupied = false, free = false;
+};
+
+PixelClass classify(const MapImage& img, std::size_t i, const std::string& mode, bool negate,
+                    double occupied_thresh, double free_thresh) {
+  double shade = img.shade(i);
+  if (!img.alpha.empty()) {
+    if (mode != "trinary" && img.alpha[i] != img.max_value) return {};
+    if (mode == "trinary") shade = (3 * shade + img.opacity(i)) / 4;
+  }
+  PixelClass c;
+  if (mode == "raw") {
+    const double v = std::round(shade * 255);  // the value an 8-bit image would hold
+    c.occupied = v >= 100.0 * occupied_thresh && v <= 100;
+    c.free = v <= 100.0 * free_thresh;
+  } else {
+    const double p = negate ? shade : 1 - shade;
+    c.occupied = p > occupied_thresh;
+    c.free = p < free_thresh;
+  }
+  return c;
 }
 
 }  // namespace
@@ -34,14 +85,14 @@ RosMap load_ros_map(const std::string& yaml_path) {
   const YAML::Node doc = load_yaml_input(yaml_path);
   if (!doc.IsMap()) throw WorldError(yaml_path, "", "expected a map_server YAML mapping");
   RosMap m;
-  const std::string image = yaml_value<std::string>(doc, "image", yaml_path);
-  m.resolution_m = yaml_value<double>(doc, "resolution", yaml_path);
-  const auto origin = yaml_value<std::vector<double>>(doc, "origin", yaml_path);
-  const int negate = doc["negate"] ? yaml_value<int>(doc, "negate", yaml_path) : 0;
-  const double occupied_thresh = yaml_value<double>(doc, "occupied_thresh", yaml_path);
-  const double free_thresh = yaml_value<double>(doc, "free_thresh", yaml_path);
-  const std::string mode =
-      doc["mode"] ? yaml_value<std::string>(doc, "mode", yaml_path) : "trinary";
+  const std::string image = text(doc, "image", yaml_path);
+  m.resolution_m = number(doc, "resolution", yaml_path);
+  const auto origin = numbers(doc, "origin", yaml_path);
+  std::optional<std::uint64_t> negate = 0;
+  if (doc["negate"]) negate = decimal_whole_number(doc["negate"]);
+  const double occupied_thresh = number(doc, "occupied_thresh", yaml_path);
+  const double free_thresh = number(doc, "free_thresh", yaml_path);
+  const std::string mode = doc["mode"] ? text(doc, "mode", yaml_path) : "trinary";
   // A pixel from a millimetre to 10 m: finer or coarser is a unit mistake, and would make the
   // inflation span thousands of pixels or the floor thousands of kilometres.
   if (!(m.resolution_m >= kMinResolution_m && m.resolution_m <= kMaxResolution_m))
@@ -52,7 +103,7 @@ RosMap load_ros_map(const std::string& yaml_path) {
     throw WorldError(yaml_path, "origin", "expected [x, y, yaw], finite, within +-1e7 m");
   if (origin[2] != 0.0)
     throw WorldError(yaml_path, "origin", "a rotated map (yaw != 0) is not supported");
-  if (negate != 0 && negate != 1) throw WorldError(yaml_path, "negate", "must be 0 or 1");
+  if (negate != 0u && negate != 1u) throw WorldError(yaml_path, "negate", "must be 0 or 1");
   if (!(free_thresh >= 0 && free_thresh <= occupied_thresh && occupied_thresh <= 1))
     throw WorldError(yaml_path, "free_thresh", "needs 0 <= free_thresh <= occupied_thresh <= 1");
   if (mode != "trinary" && mode != "scale" && mode != "raw")
@@ -74,20 +125,11 @@ RosMap load_ros_map(const std::string& yaml_path) {
   m.grid.height = pgm.height;
   m.grid.cells.resize(pgm.values.size());
   for (std::size_t i = 0; i < pgm.values.size(); ++i) {
-    const double v = pgm.values[i];
-    bool occupied, free;
-    if (mode == "raw") {
-      occupied = v >= 100.0 * occupied_thresh && v <= 100;
-      free = v <= 100.0 * free_thresh;
-    } else {
-      const double p = negate ? v / pgm.max_value : (pgm.max_value - v) / pgm.max_value;
-      occupied = p > occupied_thresh;
-      free = p < free_thresh;
-    }
-    m.occupied += occupied;
-    m.free += free;
-    m.unknown += !occupied && !free;
-    m.grid.cells[i] = free ? '.' : '@';
+    const PixelClass c = classify(pgm, i, mode, negate == 1u, occupied_thresh, free_thresh);
+    m.occupied += c.occupied;
+    m.free += c.free;
+    m.unknown += !c.occupied && !c.free;
+    m.grid.cells[i] = c.free ? '.' : '@';
   }
   return m;
 }

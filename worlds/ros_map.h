@@ -1,8 +1,12 @@
-// ROS map_server maps (YAML + PGM) as plantsim worlds. Occupancy follows map_server: a pixel's
-// probability is (255 - value) / 255 (value / 255 when negate is set); above occupied_thresh
-// it is occupied, below free_thresh free, otherwise unknown ("trinary" and "scale" modes);
-// "raw" mode reads the value as a percentage. Unknown counts as blocked: a robot must not
-// plan through what it has never seen. Blocked pixels are merged into few rectangles.
+// ROS map_server maps (YAML + PGM or PNG) as plantsim worlds. Occupancy follows map_server
+// (Nav2's map_io): a pixel's shade s runs from 0 (black) to 1 (white) over its samples' full
+// scale (8 or 16 bits, a PGM's maximum), colours averaged; its probability is 1 - s (s when
+// negate is set); above occupied_thresh it is occupied, below free_thresh free, otherwise
+// unknown ("trinary" and "scale" modes); "raw" mode reads round(255 s) as a percentage. Alpha:
+// in trinary mode averaged in as a fourth channel (a transparent white pixel is unknown at the
+// usual thresholds), in scale and raw modes a pixel not fully opaque is unknown. Unknown
+// counts as blocked: a robot must not plan through what it has never seen. Blocked pixels are
+// merged into few rectangles.
 #pragma once
 
 #include <functional>
