@@ -16,6 +16,7 @@
 #include "app/dashboard_history.h"
 #include "app/output_kinds.h"
 #include "render/dashboard.h"
+#include "render/overall_verdict.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
 #include "util/build_stamp.h"
@@ -329,11 +330,10 @@ int summarize(const SummarizeOptions& opt) {
   if (!opt.html.empty()) util::check_output_file(opt.html, "--html", dashboard_kind());
   const util::MadeBy made_by;
   std::string md =
-      "# plantsim results\n\n" + made_by.text() +
+      made_by.text() +
       "\n\n| world | planner | travel | status | position error (mm) | "
       "heading error (deg) | collisions | retries | stops | replans | time (s) | planned (m) | "
       "driven (m) | figure |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  bool all_docked = true;
   std::vector<render::DashboardRun> runs;
   const std::string html_base =
       opt.html.empty() ? "." : std::filesystem::path(opt.html).parent_path().string();
@@ -354,18 +354,15 @@ int summarize(const SummarizeOptions& opt) {
     const nlohmann::json j = read_summary(d);
     md += markdown_row(j, std::filesystem::relative(d, base.empty() ? "." : base).string());
     runs.push_back(dashboard_run(j, d, html_base));
-    all_docked = all_docked && runs.back().succeeded;
   }
   if (runs.empty()) md += "| (no runs) |\n";
   // The links, made relative to the dashboard and (for summary.md) to the table.
   std::vector<render::DashboardLink> links, md_links;
   std::vector<std::string> summaries;
-  bool all_passed = true;
   for (const auto& l : link_reports) {
     links.push_back(link_to(l, html_base.empty() ? "." : html_base));
     md_links.push_back(link_to(l, base.empty() ? "." : base));
     summaries.push_back((std::filesystem::path(l).parent_path() / "summary.json").string());
-    all_passed = all_passed && links.back().verdict != "failed";
   }
   md += markdown_links(md_links);
   if (!opt.html.empty()) {
@@ -377,11 +374,15 @@ int summarize(const SummarizeOptions& opt) {
         opt.html,
         render::dashboard_html("plantsim results", kDashboardHeaders, runs, links, made_by.text()));
   }
+  // One verdict over the runs and the linked reports, first in summary.md as on the dashboard.
+  const render::OverallVerdict verdict = render::overall_verdict(runs, links);
+  md = "# plantsim results: " + verdict.word + "\n\n**" + verdict.word +
+       "**: " + markdown_cell(verdict.why) + "\n\n" + md;
   if (opt.out.empty())
     std::cout << md;
   else
     util::write_file_atomically(opt.out, md);
-  return all_docked && all_passed ? kExitOk : kExitFailed;
+  return verdict.failed() ? kExitFailed : kExitOk;
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ const util::OutputKind& junit_report_kind() {
 
 const util::OutputKind& summary_markdown_kind() {
   static const util::OutputKind kind{"a results table", [](const std::string& path) {
-                                       return util::file_head(path).rfind("# plantsim results\n",
+                                       return util::file_head(path).rfind("# plantsim results",
                                                                           0) == 0;
                                      }};
   return kind;

@@ -1,6 +1,7 @@
 // The dashboard's HTML, escaped, with the same image-load marker as the reports.
 #include "render/dashboard.h"
 
+#include "render/overall_verdict.h"
 #include "render/report.h"
 #include "util/fixed_text.h"
 
@@ -82,21 +83,13 @@ std::string link_row(const DashboardLink& l) {
          "</td></tr>\n";
 }
 
-/// The verdict first, what a team lead reads before anything else: the batches below their gates.
-std::string batches_banner(const std::vector<DashboardLink>& links, int batches, int passed,
-                           int failed) {
-  std::string names;
-  for (const auto& l : links)
-    if (l.kind == "batch" && l.verdict == "failed")
-      names += (names.empty() ? "" : ", ") + html_escape(l.title);
-  if (failed > 0)
-    return "<div class=\"banner fail\"><b>FAIL</b>: " + std::to_string(failed) + " of " +
-           std::to_string(batches) + " batches below their gates: " + names +
-           " (their reports say which configurations, by how much)</div>\n";
-  if (passed > 0)
-    return "<div class=\"banner pass\"><b>PASS</b>: every gated batch (" + std::to_string(passed) +
-           " of " + std::to_string(batches) + ") meets its gate</div>\n";
-  return "<div class=\"banner none\"><b>NO GATE</b>: no batch sets one</div>\n";
+/// The verdict first, what a team lead reads before anything else (render/overall_verdict.h).
+std::string verdict_banner(const OverallVerdict& v) {
+  const char* css = v.kind == OverallVerdict::Kind::kFail   ? "fail"
+                    : v.kind == OverallVerdict::Kind::kPass ? "pass"
+                                                            : "none";
+  return "<div class=\"banner " + std::string(css) + "\"><b>" + v.word +
+         "</b>: " + html_escape(v.why) + "</div>\n";
 }
 
 }  // namespace
@@ -124,7 +117,7 @@ std::string dashboard_html(const std::string& title, const std::vector<std::stri
     if (l.kind == "batch")
       ++batches, passed += l.verdict == "passed", failed += l.verdict == "failed";
   h += "<h1>" + html_escape(title) + "</h1>\n" + stamp_paragraph(runs, links, made_by);
-  if (batches > 0) h += batches_banner(links, batches, passed, failed);
+  h += verdict_banner(overall_verdict(runs, links));
   h += "<p>" + std::to_string(ok) + " of " + std::to_string(runs.size()) + " single runs succeeded";
   if (batches > 0)
     h += "; of " + std::to_string(batches) + " batches, " + std::to_string(passed) +

@@ -264,5 +264,29 @@ TEST_F(Cli, OnlyACommandThatDrawsOpensOsMesa) {
   EXPECT_TRUE(fs::exists(dir_ / "r/run.png"));
 }
 
+// The dashboard said PASS ("0 failed") over a single run that failed, and summary.md had no
+// headline: one verdict over runs and linked reports heads both, and the exit code agrees.
+TEST_F(Cli, OneVerdictOverRunsAndBatchesHeadsTheDashboardAndTheTable) {
+  write("short.json", R"({"timeout_s": 5})");
+  ASSERT_EQ(run("run " + kCorridor + " --out good", 120).exit_code, 0);
+  ASSERT_EQ(run("run " + kCorridor + " --config short.json --out bad", 120).exit_code, 1);
+  Outcome o = run("summarize good bad --html index.html --out s.md", 60);
+  EXPECT_EQ(o.exit_code, 1) << o.err;
+  const std::string html = read(dir_ / "index.html");
+  const std::size_t banner = html.find(
+      "<div class=\"banner fail\"><b>FAIL</b>: 1 of 2 single runs did not succeed: "
+      "corridor_crossing (timeout)");
+  ASSERT_NE(banner, std::string::npos) << html.substr(0, 3000);
+  EXPECT_LT(banner, html.find("<table"));
+  const std::string md = read(dir_ / "s.md");
+  EXPECT_EQ(md.rfind("# plantsim results: FAIL\n\n**FAIL**: 1 of 2 single runs", 0), 0u) << md;
+  // Without the failed run: PASS, exit 0, on both.
+  o = run("summarize good --html index.html --out s.md", 60);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(read(dir_ / "index.html").find("<div class=\"banner pass\"><b>PASS</b>: every single"),
+            std::string::npos);
+  EXPECT_EQ(read(dir_ / "s.md").rfind("# plantsim results: PASS\n", 0), 0u);
+}
+
 }  // namespace
 }  // namespace plantsim
