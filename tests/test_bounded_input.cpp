@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_folder.h"
 #include "worlds/json_input.h"
 #include "worlds/world_error.h"
 #include "worlds/yaml_input.h"
@@ -71,23 +72,11 @@ TEST(BoundedJson, NestingUpToTheLimitLoadsAndKeysGivenTwiceAreNamedThroughArrays
   EXPECT_NE(refusal([] { parse_ordered_json_input(nested(100, "[", "]"), "o.json"); }), "");
 }
 
-class BoundedYaml : public ::testing::Test {
+class BoundedYaml : public test::ScratchFolder {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("plantsim_bounded_yaml_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
   std::string load(const std::string& name, const std::string& text) {
     return refusal([&] { load_yaml_input(write(name, text)); });
   }
-  std::filesystem::path dir_;
 };
 
 // YAML::Load built the whole tree before the nodes were counted: 8 MB took 1.9 GB.

@@ -13,27 +13,15 @@
 #include <fstream>
 #include <vector>
 
+#include "scratch_folder.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_error.h"
 
 namespace plantsim::worlds {
 namespace {
 
-class MapImages : public ::testing::Test {
+class MapImages : public test::ScratchFolder {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("plantsim_map_images_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
   // A PNG of `width` x (samples / channels / width) pixels, samples row by row.
   void write_png(const std::string& name, int width, int depth, int colour_type,
                  const std::vector<std::uint16_t>& samples, bool interlaced = false) {
@@ -74,8 +62,6 @@ class MapImages : public ::testing::Test {
                                               mode + "\n"));
   }
   static std::string cells(const RosMap& m) { return {m.grid.cells.begin(), m.grid.cells.end()}; }
-
-  std::filesystem::path dir_;
 };
 
 // 0.75 of white is unknown at these thresholds (occupancy 0.25): the simplified API's

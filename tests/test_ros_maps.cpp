@@ -10,6 +10,7 @@
 #include "episode/run_episode.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "scratch_folder.h"
 #include "test_paths.h"
 #include "worlds/ros_map.h"
 #include "worlds/world_error.h"
@@ -18,20 +19,7 @@
 namespace plantsim::worlds {
 namespace {
 
-class TinyMaps : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("plantsim_ros_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p) << text;
-    return p;
-  }
-  std::filesystem::path dir_;
-};
+using TinyMaps = test::ScratchFolder;
 
 TEST_F(TinyMaps, TrinaryNegateAndRawModes) {
   // One row: black (occupied), white (free), mid grey (unknown), near-white (free at 0.196).

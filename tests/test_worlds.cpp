@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "scratch_folder.h"
 #include "test_paths.h"
 #include "worlds/param_json.h"
 #include "worlds/random_plant.h"
@@ -15,21 +16,8 @@
 namespace plantsim::worlds {
 namespace {
 
-class WorldFiles : public ::testing::Test {
+class WorldFiles : public test::ScratchFolder {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("plantsim_worlds_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p) << text;
-    return p;
-  }
   static nlohmann::json good() {
     std::ifstream f(test::source_file("data/worlds/examples/small_plant.json"));
     return nlohmann::json::parse(f);
@@ -45,7 +33,6 @@ class WorldFiles : public ::testing::Test {
       EXPECT_NE(what.find(needle), std::string::npos) << what;
     }
   }
-  std::filesystem::path dir_;
 };
 
 TEST_F(WorldFiles, LoadsTheExampleWorld) {

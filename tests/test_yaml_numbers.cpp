@@ -9,6 +9,7 @@
 
 #include "app/nav2_import.h"
 #include "batch/batch_spec.h"
+#include "scratch_folder.h"
 #include "test_paths.h"
 #include "tune/tune_spec.h"
 #include "worlds/decimal_number.h"
@@ -18,19 +19,8 @@
 namespace plantsim {
 namespace {
 
-class YamlNumbers : public ::testing::Test {
+class YamlNumbers : public test::ScratchFolder {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("plantsim_yaml_numbers_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const auto p = (dir_ / name).string();
-    std::ofstream(p) << text;
-    return p;
-  }
   std::string scenario(const std::string& rest) {
     return write("s.yaml", "worlds: [" + test::shared_data("worlds/world_N10.json") +
                                "]\nplanners: [vg]\n" + rest);
@@ -44,7 +34,6 @@ class YamlNumbers : public ::testing::Test {
     }
     return "";
   }
-  std::filesystem::path dir_;
 };
 
 // yaml-cpp's as<int>() reads a leading 0 as octal and 0x as hexadecimal; the command line reads
