@@ -97,13 +97,14 @@ struct GateOptions {
 
   /// `folder`'s records judged; junit.xml carries the stamp of its summary.json.
   int judge(const std::string& folder, const batch::Gate& scenario_gate, const std::string& suite,
-            const char* who) const {
+            const char* who, const std::string& scenario_path = "") const {
     const std::vector<std::string> records = batch::read_episode_records(folder);
     const batch::Gate gate = as_override().applied_to(scenario_gate);
     const auto verdicts = batch::judge_configurations(records, gate);
     if (!junit.empty())
       util::write_file_atomically(
-          junit, batch::junit_xml(suite, verdicts, gate.statistic, stamp_of(folder)));
+          junit, batch::junit_xml(suite, verdicts, gate.statistic, stamp_of(folder),
+                                  {scenario_path, folder}));
     int gated = 0, failed = 0;
     for (const auto& v : verdicts) gated += v.threshold.has_value(), failed += !v.passed;
     if (gated == 0) return kExitOk;
@@ -188,7 +189,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
               << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
               << " collisions -> " << o.out_dir << "\n";
     return opt->gate.judge(o.out_dir, r.gate, std::filesystem::path(opt->scenario).stem().string(),
-                           "batch");
+                           "batch", opt->scenario);
   };
 }
 
@@ -223,7 +224,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
     std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out
               << "\n";
-    return opt->gate.judge(opt->out, r.gate, "merge", "merge");
+    return opt->gate.judge(opt->out, r.gate, "merge", "merge", opt->scenario);
   };
 }
 

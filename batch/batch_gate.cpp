@@ -9,6 +9,8 @@
 #include "batch/wilson_interval.h"
 #include "render/report.h"
 #include "util/fixed_text.h"
+#include "util/shell_word.h"
+#include "worlds/names.h"
 
 namespace plantsim::batch {
 const char* statistic_name(GateStatistic s) {
@@ -78,7 +80,15 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
     ConfigurationVerdict& v = by_key[key];
     std::tie(v.world, v.planner, v.controller, v.fault) = key;
     ++v.episodes;
-    v.succeeded += record_succeeded(j);
+    if (record_succeeded(j)) {
+      ++v.succeeded;
+    } else {
+      const nlohmann::json& why = j.contains("failure") && j["failure"].is_string()
+                                      ? j["failure"]
+                                      : j.value("status", nlohmann::json("failed"));
+      v.failed.push_back({j.value("id", std::string()),
+                          why.is_string() ? why.get<std::string>() : std::string("failed")});
+    }
     v.pursuit = v.pursuit || record_is_pursuit(j);
   }
   std::vector<ConfigurationVerdict> out;
@@ -105,9 +115,38 @@ std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts
   return text;
 }
 
+std::string episode_rerun_command(const std::string& scenario_path, const std::string& id,
+                                  const std::string& out_dir) {
+  return "plantsim batch " + util::shell_word(scenario_path) + " --episode " +
+         util::shell_word(id) + " --out " +
+         (out_dir == "DIR" ? out_dir : util::shell_word(out_dir));
+}
+
+namespace {
+
+/// A failure's text: every failed episode (up to a limit) with its reason, and how to replay it.
+std::string failed_episodes_text(const ConfigurationVerdict& v, const JunitContext& context) {
+  constexpr std::size_t kListed = 50;
+  std::string text = std::to_string(v.failed.size()) + " failed episode(s):\n";
+  for (std::size_t i = 0; i < v.failed.size() && i < kListed; ++i) {
+    const GateFailure& f = v.failed[i];
+    text += "  " + f.id + ": " + f.reason + "\n";
+    if (!context.scenario_path.empty())
+      text += "    replay: " + episode_rerun_command(context.scenario_path, f.id, context.folder) +
+              "  (then " + context.folder + "/episodes/" + worlds::file_name_component(f.id) +
+              "/report.html)\n";
+  }
+  if (v.failed.size() > kListed)
+    text += "  ... and " + std::to_string(v.failed.size() - kListed) + " more (episodes.jsonl)\n";
+  return text;
+}
+
+}  // namespace
+
 std::string junit_xml(const std::string& suite_name,
                       const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic,
-                      const std::vector<std::pair<std::string, std::string>>& suite_properties) {
+                      const std::vector<std::pair<std::string, std::string>>& suite_properties,
+                      const JunitContext& context) {
   int failures = 0;
   for (const ConfigurationVerdict& v : verdicts) failures += !v.passed;
   std::string xml =
@@ -133,7 +172,8 @@ std::string junit_xml(const std::string& suite_name,
         "</properties>\n";
     if (!v.passed)
       xml += "      <failure message=\"" + xml_escaped(verdict_line(v, statistic)) +
-             "\" type=\"success_below_threshold\"/>\n";
+             "\" type=\"success_below_threshold\">" +
+             xml_escaped(failed_episodes_text(v, context)) + "</failure>\n";
     else if (!v.threshold)
       xml += "      <system-out>" +
              xml_escaped(std::to_string(v.succeeded) + "/" + std::to_string(v.episodes) + " " +

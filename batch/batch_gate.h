@@ -19,8 +19,15 @@ bool record_succeeded(const nlohmann::json& record);
 /// True for a record of a pursuit world (its goal is a target to catch, not the charger).
 bool record_is_pursuit(const nlohmann::json& record);
 
+/// An episode that did not succeed, as its record says: its id and why (the failure reason, or
+/// the status when it has none).
+struct GateFailure {
+  std::string id, reason;
+};
+
 struct ConfigurationVerdict {
   std::string world, planner, controller, fault;
+  std::vector<GateFailure> failed;  ///< in the records' order
   std::int64_t episodes = 0, succeeded = 0;
   bool pursuit = false;  ///< a pursuit world: success is "caught"
   const char* outcome() const { return pursuit ? "caught" : "docked"; }
@@ -45,12 +52,24 @@ std::vector<ConfigurationVerdict> judge_configurations(const std::vector<std::st
 std::string gate_failures_text(const std::vector<ConfigurationVerdict>& verdicts,
                                GateStatistic statistic);
 
-/// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold);
+/// The command that re-runs one episode alone into `out_dir`/episodes/, with its report and
+/// replay, quoted for the shell (names may hold anything).
+std::string episode_rerun_command(const std::string& scenario_path, const std::string& id,
+                                  const std::string& out_dir = "DIR");
+
+/// Where JUnit's failures point a reader: the scenario and the batch folder, for the command
+/// that re-runs each failed episode with its replay (empty: the command is left out).
+struct JunitContext {
+  std::string scenario_path, folder;
+};
+
+/// JUnit XML (one testsuite, one testcase per configuration, <failure> when below threshold,
+/// its text listing the failed episodes with their reasons and how to replay each);
 /// `suite_properties` (the build's stamp) as the testsuite's <properties>.
-std::string junit_xml(
-    const std::string& suite_name, const std::vector<ConfigurationVerdict>& verdicts,
-    GateStatistic statistic,
-    const std::vector<std::pair<std::string, std::string>>& suite_properties = {});
+std::string junit_xml(const std::string& suite_name,
+                      const std::vector<ConfigurationVerdict>& verdicts, GateStatistic statistic,
+                      const std::vector<std::pair<std::string, std::string>>& suite_properties = {},
+                      const JunitContext& context = {});
 
 /// Whether a file's first bytes are a JUnit report as junit_xml writes them.
 bool looks_like_junit_report(const std::string& head);

@@ -35,12 +35,6 @@ using nlohmann::json;
 
 using util::fixed;
 
-/// The command that re-runs one episode, quoted for the shell (names may hold anything).
-std::string rerun_command(const std::string& scenario_path, const std::string& id) {
-  return "plantsim batch " + util::shell_word(scenario_path) + " --episode " +
-         util::shell_word(id) + " --out DIR";
-}
-
 /// Every failed episode in one table (reason, when, why, the command that re-runs it), and how
 /// many of them the gallery below draws.
 std::string failure_table_html(const std::vector<std::string>& lines, std::size_t drawn,
@@ -62,8 +56,8 @@ std::string failure_table_html(const std::vector<std::string>& lines, std::size_
             render::html_escape(text("failure")) + "</td><td>" +
             (at != j.end() && at->is_number() ? fixed(at->get<double>(), 1) : "-") +
             "</td><td class=\"l\">" + render::html_escape(text("failure_detail")) +
-            "</td><td class=\"l\"><code>" + render::html_escape(rerun_command(scenario_path, id)) +
-            "</code></td></tr>\n";
+            "</td><td class=\"l\"><code>" +
+            render::html_escape(episode_rerun_command(scenario_path, id)) + "</code></td></tr>\n";
   }
   if (failed == 0) return "<h2>Failures</h2>\n<p>None: every episode succeeded.</p>\n";
   std::string h =
@@ -230,10 +224,10 @@ void add_failure_figures(FigureWriter& chart, const std::vector<FailedEpisode>& 
     const std::string stem =
         "failures/" + std::to_string(i + 1) + "_" + worlds::file_name_component(f.id);
     write_failure_replay(f, why, out_dir + "/" + stem + ".html");
-    chart(
-        render::draw_run_figure(f.plant, f.result, options), stem + ".png",
-        "FAILED " + f.id + ": " + why + ". Re-run it alone: " + rerun_command(scenario_path, f.id),
-        stem + ".html");
+    chart(render::draw_run_figure(f.plant, f.result, options), stem + ".png",
+          "FAILED " + f.id + ": " + why +
+              ". Re-run it alone: " + episode_rerun_command(scenario_path, f.id),
+          stem + ".html");
   }
 }
 

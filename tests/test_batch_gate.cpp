@@ -122,6 +122,33 @@ TEST(Gate, JUnitReportHasOneCasePerConfigurationAndTheFailures) {
   EXPECT_EQ(xml.find("<failure", xml.find("<failure") + 1), std::string::npos) << xml;
 }
 
+// JUnit's <failure> had one line: a CI page showed "3/4 docked" and nothing to act on. It lists
+// each failed episode with its reason and the command that replays it alone.
+TEST(Gate, JUnitFailuresListTheFailedEpisodesWithReasonsAndReplays) {
+  std::vector<std::string> lines = records("plant", "vg", "wet", 3, 0);
+  lines.push_back(nlohmann::json{{"world", "plant"},
+                                 {"planner", "vg"},
+                                 {"controller", "default"},
+                                 {"fault", "wet"},
+                                 {"id", "plant|vg|default|wet|4"},
+                                 {"succeeded", false},
+                                 {"status", "failed"},
+                                 {"failure", "localization_lost"}}
+                      .dump());
+  Gate gate;
+  gate.min_success = 0.9;
+  const std::string xml = junit_xml("suite", judge_configurations(lines, gate), gate.statistic, {},
+                                    {"my scenario.yaml", "out"});
+  EXPECT_NE(xml.find("1 failed episode(s):\n  plant|vg|default|wet|4: localization_lost\n"),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("replay: plantsim batch &apos;my scenario.yaml&apos; --episode "
+                     "&apos;plant|vg|default|wet|4&apos; --out out  (then "
+                     "out/episodes/plant_vg_default_wet_4/report.html)"),
+            std::string::npos)
+      << xml;
+}
+
 // XML 1.0 has no U+FFFE or U+FFFF: a fault so named made junit.xml that no reader parses.
 TEST(Gate, JUnitReportHoldsNoCharacterXmlRefuses) {
   const std::string name =
