@@ -24,8 +24,13 @@ from ._plantsim import PHASES, _Env, _VectorEnv
 
 
 class Box:
-    """Real arrays within bounds, with the fields of Gymnasium's spaces.Box (low, high, shape,
-    dtype) and its sample() and contains()."""
+    """Arrays within bounds, with the fields of Gymnasium's spaces.Box (low, high, shape, dtype)
+    and its sample() and contains(). sample() draws as Gymnasium's does: reals uniformly within
+    finite bounds (a normal draw on an infinite side, shifted past a finite one), whole numbers
+    uniformly from low to high inclusive, booleans as fair coins. contains() takes an array of
+    the space's shape whose dtype casts to the space's (a float for an int space does not), within
+    the bounds; NaN is contained in a real space, where plantsim marks "none" with it (a lidar
+    dropout, an unseen charger) - a departure from Gymnasium, whose Box refuses NaN."""
 
     def __init__(self, low, high, shape=None, dtype=np.float64, seed=None):
         shape = tuple(shape) if shape is not None else np.shape(low)
@@ -36,25 +41,47 @@ class Box:
 
     def seed(self, seed=None):
         self._rng = np.random.default_rng(seed)
+        return [seed]
 
     def sample(self):
-        low = np.where(np.isfinite(self.low), self.low, -1.0)
-        high = np.where(np.isfinite(self.high), self.high, 1.0)
-        return self._rng.uniform(low, high).astype(self.dtype)
+        if self.dtype == np.bool_:
+            return np.asarray(self._rng.integers(0, 2, size=self.shape), dtype=np.bool_)
+        if np.issubdtype(self.dtype, np.integer):
+            return np.asarray(self._rng.integers(self.low, self.high, size=self.shape, endpoint=True),
+                              dtype=self.dtype)
+        low, high = np.asarray(self.low, np.float64), np.asarray(self.high, np.float64)
+        bounded_low, bounded_high = np.isfinite(low), np.isfinite(high)
+        normal = self._rng.normal(size=self.shape)
+        uniform = self._rng.uniform(np.where(bounded_low, low, 0.0), np.where(bounded_high, high, 0.0),
+                                    size=self.shape)
+        exponential = self._rng.exponential(size=self.shape)
+        value = np.where(bounded_low & bounded_high, uniform,
+                         np.where(bounded_low, low + exponential,
+                                  np.where(bounded_high, high - exponential, normal)))
+        return np.asarray(value, dtype=self.dtype)
 
     def contains(self, x):
         x = np.asarray(x)
-        if x.shape != self.shape:
+        if x.shape != self.shape or not np.can_cast(x.dtype, self.dtype, casting="same_kind"):
+            return False
+        if self.dtype == np.bool_:
+            return x.dtype == np.bool_
+        if np.issubdtype(self.dtype, np.integer) and not np.issubdtype(x.dtype, np.integer):
             return False
         inside = (x >= self.low) & (x <= self.high)
-        return bool(np.all(inside | np.isnan(x)))  # NaN marks "none" (a dropout, no charger)
+        if np.issubdtype(self.dtype, np.floating):
+            inside |= np.isnan(x)
+        return bool(np.all(inside))
+
+    def __contains__(self, x):
+        return self.contains(x)
 
     def __repr__(self):
         return f"Box({self.low.min()}, {self.high.max()}, {self.shape}, {self.dtype})"
 
 
 class Dict:
-    """Named spaces, as Gymnasium's spaces.Dict."""
+    """Named spaces, as Gymnasium's spaces.Dict (a mapping of its spaces)."""
 
     def __init__(self, spaces):
         self.spaces = dict(spaces)
@@ -62,8 +89,26 @@ class Dict:
     def __getitem__(self, key):
         return self.spaces[key]
 
+    def __iter__(self):
+        return iter(self.spaces)
+
+    def __len__(self):
+        return len(self.spaces)
+
     def keys(self):
         return self.spaces.keys()
+
+    def items(self):
+        return self.spaces.items()
+
+    def values(self):
+        return self.spaces.values()
+
+    def seed(self, seed=None):
+        seeds = np.random.SeedSequence(seed).spawn(len(self.spaces))
+        for s, child in zip(self.spaces.values(), seeds):
+            s.seed(int(child.generate_state(1)[0]))
+        return [seed]
 
     def sample(self):
         return {k: s.sample() for k, s in self.spaces.items()}
@@ -71,6 +116,9 @@ class Dict:
     def contains(self, x):
         return isinstance(x, dict) and x.keys() == self.spaces.keys() and all(
             s.contains(x[k]) for k, s in self.spaces.items())
+
+    def __contains__(self, x):
+        return self.contains(x)
 
     def __repr__(self):
         return "Dict(" + ", ".join(f"{k}: {s!r}" for k, s in self.spaces.items()) + ")"

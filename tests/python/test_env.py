@@ -163,3 +163,30 @@ def test_bad_input_is_refused(source):
         env.step((1.0, 2.0, 3.0))
     with pytest.raises(plantsim.InputError, match="non-finite"):
         env.step((float("nan"), 0.0))
+
+
+def test_spaces_sample_and_contain_as_gymnasium_says(source):
+    """Gymnasium's spaces' rules: sample() works for every space (a scalar Box raised) and stays
+    inside it, a whole-number space reaches its high end (Box(0, 7) never gave 7), a boolean one
+    gives both values (it gave True every time), contains() refuses a dtype that does not cast
+    (a float for an int space) and a wrong shape; Dict is a mapping of its spaces."""
+    from plantsim.env import Box
+    env = plantsim.Env(source / WORLD)
+    env.observation_space.seed(5)
+    env.action_space.seed(5)
+    for _ in range(20):
+        sample = env.observation_space.sample()
+        assert env.observation_space.contains(sample)
+        assert env.action_space.contains(env.action_space.sample())
+    assert dict(env.observation_space.items()).keys() == set(env.observation_space)
+    assert len(env.observation_space) == len(list(env.observation_space.keys()))
+    whole = Box(0, 7, (), np.int64, seed=1)
+    assert {int(whole.sample()) for _ in range(400)} == set(range(8))
+    flag = Box(0, 1, (), np.bool_, seed=2)
+    assert {bool(flag.sample()) for _ in range(60)} == {False, True}
+    assert not whole.contains(np.float64(3.0)) and whole.contains(np.int64(3))
+    assert not whole.contains(np.int64(8))
+    assert not Box(0.0, 1.0, (2,)).contains(np.zeros(3))
+    assert Box(0.0, 1.0, (2,)).contains(np.array([0.5, 0.5], dtype=np.float32))
+    half = Box(0.0, np.inf, (1000,), seed=3).sample()
+    assert np.all(half >= 0) and np.all(np.isfinite(half))
