@@ -35,6 +35,18 @@ inline std::string write_scratch(const std::string& name, const std::string& byt
   return path;
 }
 
+/// A tiny world file, w.json, in the scratch folder, written once per process: the world a fuzzed
+/// scenario names.
+inline void ensure_scratch_world() {
+  static const bool written = [] {
+    write_scratch(
+        "w.json",
+        R"({"W": 10, "H": 10, "rects": [[4, 4, 5, 5]], "start": [1, 1], "goal": [8, 8]})");
+    return true;
+  }();
+  (void)written;
+}
+
 /// The input split at the first "\n--8<--\n" into two files' contents (the second may be empty).
 inline std::pair<std::string, std::string> two_parts(const std::uint8_t* data, std::size_t size) {
   const std::string all(reinterpret_cast<const char*>(data), size);

@@ -4,13 +4,7 @@
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const bool world_ready = [] {
-    plantsim::fuzz::write_scratch(
-        "w.json",
-        R"({"W": 10, "H": 10, "rects": [[4, 4, 5, 5]], "start": [1, 1], "goal": [8, 8]})");
-    return true;
-  }();
-  (void)world_ready;
+  plantsim::fuzz::ensure_scratch_world();
   const std::string path = plantsim::fuzz::write_scratch(
       "s.yaml", std::string(reinterpret_cast<const char*>(data), size));
   plantsim::fuzz::expect_clean_refusal([&] { plantsim::batch::load_batch_spec(path); });

@@ -5,13 +5,7 @@
 #include "tune/tune_spec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const bool world_ready = [] {
-    plantsim::fuzz::write_scratch(
-        "w.json",
-        R"({"W": 10, "H": 10, "rects": [[4, 4, 5, 5]], "start": [1, 1], "goal": [8, 8]})");
-    return true;
-  }();
-  (void)world_ready;
+  plantsim::fuzz::ensure_scratch_world();
   plantsim::tune::TuneRequest request;
   request.scenario = plantsim::fuzz::write_scratch(
       "t.yaml", std::string(reinterpret_cast<const char*>(data), size));
