@@ -133,8 +133,8 @@ std::function<int()> add_coverage_command(CLI::App& app) {
   cmd->add_flag("--drive", opt->drive, "Also sweep and dock in the simulation");
   return [opt, cmd]() {
     const worlds::World world = worlds::load_world(opt->world);
-    episode::EpisodeConfig config =
-        opt->config.empty() ? episode::EpisodeConfig{} : episode::load_episode_config(opt->config);
+    episode::EpisodeConfig config;
+    if (!opt->config.empty()) config = episode::load_episode_config(opt->config);
     planner::CoverageParams params = opt->params.empty()
                                          ? planner::CoverageParams{}
                                          : planner::load_coverage_params(opt->params);

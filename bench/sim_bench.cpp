@@ -143,7 +143,7 @@ int run_sim_bench(const std::string& shared_data, bool quick) {
     episode::EpisodeConfig oracle = config;
     oracle.perception.mode = robot::PerceptionMode::kOracle;
     episode::EpisodeConfig particles = config;
-    particles.perception.estimator = robot::EstimatorKind::kParticles;
+    particles.perception.estimator = "particles";
 
     // Best of the repetitions for each (the least disturbed by the machine).
     double best_full = 0, best_with_plan = 0, best_no_lidar = 0, best_oracle = 0, best_bare = 0,

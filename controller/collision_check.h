@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "controller/diff_drive.h"
+#include "controller/moving_box.h"
 #include "geometry/vec2.h"
 
 namespace plantsim::controller {
@@ -16,12 +17,6 @@ double distance_to_box(geom::Vec2 p, const geom::Rect& r);
 
 /// Distance from the segment ab to the closed box r (0 when they meet).
 double segment_distance_to_box(geom::Vec2 a, geom::Vec2 b, const geom::Rect& r);
-
-/// A sensed obstacle: its box now and its velocity (map frame).
-struct MovingBox {
-  geom::Rect box;
-  geom::Vec2 velocity;
-};
 
 /// True when the disk of `radius_m` stays clear of every box along the arc of `twist` from
 /// `pose` over `distance_m` of travel (sampled every `step_m`), the robot reaching each sample

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "controller/collision_check.h"
+#include "controller/pure_pursuit_controller.h"
 
 namespace plantsim::controller {
 
@@ -56,8 +57,13 @@ void DockingController::fail(DockFailure why) {
 
 DockingController::DockingController(PurePursuitParams tracking, DockingParams docking,
                                      std::vector<Vec2> path, Pose2 charger_on_map)
-    : follower_(tracking, docking.travel, {docking.align_tolerance_rad, docking.align_speed_radps},
-                std::move(path)),
+    : DockingController(make_pure_pursuit(tracking), docking, std::move(path), charger_on_map) {}
+
+DockingController::DockingController(std::unique_ptr<LocalController> tracker,
+                                     DockingParams docking, std::vector<Vec2> path,
+                                     Pose2 charger_on_map)
+    : follower_(std::move(tracker), docking.travel,
+                {docking.align_tolerance_rad, docking.align_speed_radps}, std::move(path)),
       params_(docking),
       guard_(docking.guard),
       dock_(docking.filter, docking.staging_distance_m, charger_on_map),

@@ -21,6 +21,7 @@
 #include "controller/docking_input.h"
 #include "controller/motion_guard.h"
 #include "controller/path_follower.h"
+#include "controller/pure_pursuit.h"
 #include "controller/yield_policy.h"
 
 namespace plantsim::controller {
@@ -91,6 +92,10 @@ struct DockingCommand {
 
 class DockingController {
  public:
+  /// Travels with `tracker` (the local controller) along `path`.
+  DockingController(std::unique_ptr<LocalController> tracker, DockingParams docking,
+                    std::vector<Vec2> path, Pose2 charger_on_map);
+  /// ... with pure pursuit of these parameters.
   DockingController(PurePursuitParams tracking, DockingParams docking, std::vector<Vec2> path,
                     Pose2 charger_on_map);
 

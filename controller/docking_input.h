@@ -16,6 +16,7 @@ struct DockingInput {
   Pose2 pose;                               ///< estimated pose in the map frame (localisation)
   Pose2 odom_pose;                          ///< pose in the continuous odometry frame
   double speed_mps = 0;                     ///< estimated forward speed
+  double yaw_rate_radps = 0;                ///< the gyro's reading
   double dt_s = 0;                          ///< control period
   bool charger_contact = false;             ///< the charger's pads touch the robot's contacts
   bool charging = false;                    ///< the charger reports a good connection

@@ -15,18 +15,19 @@ double uncertainty_speed_fraction(const PathFollowParams& p, double position_sig
   return 1.0 - share * (1.0 - p.uncertain_speed_fraction);
 }
 
-PathFollower::PathFollower(PurePursuitParams tracking, PathFollowParams params, InPlaceTurn turn,
-                           std::vector<Vec2> path)
-    : tracker_(tracking, std::move(path)), params_(params), turn_(turn) {}
-
-void PathFollower::replace_path(std::vector<Vec2> path) {
-  tracker_ = PurePursuit(tracker_.params(), std::move(path));
+PathFollower::PathFollower(std::unique_ptr<LocalController> tracker, PathFollowParams params,
+                           InPlaceTurn turn, std::vector<Vec2> path)
+    : tracker_(std::move(tracker)), params_(params), turn_(turn) {
+  tracker_->set_path(std::move(path));
 }
+
+void PathFollower::replace_path(std::vector<Vec2> path) { tracker_->set_path(std::move(path)); }
 
 FollowStep PathFollower::step(const DockingInput& in, MotionGuard& guard,
                               const YieldParams& yield) {
   FollowStep out;
-  TrackingCommand t = tracker_.step(in.pose, in.speed_mps);
+  TrackingCommand t =
+      tracker_->step({in.pose, in.speed_mps, in.yaw_rate_radps, in.dt_s, &in.nearby_obstacles});
   // Slower when unsure where it is: the same arc, at a share of the speed.
   const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
   t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};

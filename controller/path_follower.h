@@ -1,15 +1,17 @@
-// The docking stack's travel to the staging pose: pure pursuit along the plan, slowed as the
+// The docking stack's travel to the staging pose: its local controller (pure pursuit by default,
+// local_controller.h) along the plan, slowed as the
 // estimate grows uncertain, stopping short of what moves into the arc ahead (never checking past
 // the corner where it will stop and turn); while stopped, it backs out along the stretch just
 // driven from something that will not yield, or faces the carrot in place, and asks for a new
 // plan when the block lasts.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "controller/docking_input.h"
+#include "controller/local_controller.h"
 #include "controller/motion_guard.h"
-#include "controller/pure_pursuit.h"
 #include "controller/yield_policy.h"
 
 namespace plantsim::controller {
@@ -43,7 +45,7 @@ struct FollowStep {
 
 class PathFollower {
  public:
-  PathFollower(PurePursuitParams tracking, PathFollowParams params, InPlaceTurn turn,
+  PathFollower(std::unique_ptr<LocalController> tracker, PathFollowParams params, InPlaceTurn turn,
                std::vector<Vec2> path);
 
   FollowStep step(const DockingInput& in, MotionGuard& guard, const YieldParams& yield);
@@ -54,7 +56,7 @@ class PathFollower {
   void hold_blocked(const DockingInput& in, const TrackingCommand& t, MotionGuard& guard,
                     const YieldParams& yield, FollowStep& out);
 
-  PurePursuit tracker_;
+  std::unique_ptr<LocalController> tracker_;
   PathFollowParams params_;
   InPlaceTurn turn_;
   double blocked_time_s_ = 0;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "controller/diff_drive.h"
+#include "controller/local_controller.h"
 #include "controller/path_geometry.h"
 
 namespace plantsim::controller {
@@ -27,15 +28,6 @@ struct PurePursuitParams {
   double rotate_in_place_speed_radps = 1.0;
   double goal_tolerance_m = 0.03;  ///< done within this of the end
   double progress_window_m = 2.0;  ///< how far ahead the closest-point search looks
-};
-
-struct TrackingCommand {
-  Twist twist;
-  bool goal_reached = false;
-  double cross_track_error_m = 0;      ///< distance from the path (estimated pose)
-  double carrot_bearing_rad = 0;       ///< where the carrot lies, robot frame (0: dead ahead)
-  double straight_ahead_m = INFINITY;  ///< how far it drives on before it stops (the path's end or
-                                       ///< a sharp corner, where it turns in place)
 };
 
 class PurePursuit {

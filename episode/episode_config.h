@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "controller/docking.h"
@@ -17,6 +18,7 @@
 #include "sim/physics_world.h"
 #include "sim/sensor_suite.h"  // the parameter structs of every sensor
 #include "sim/wheel_drive.h"
+#include "util/param_spec.h"
 
 namespace plantsim::episode {
 
@@ -61,6 +63,12 @@ struct EpisodeConfig {
   sim::BeaconParams beacon;
   robot::PerceptionParams perception;  ///< mode, EKF and tracker
   controller::PurePursuitParams tracking;
+  /// The local controller that follows the plan, by its registry name
+  /// (controller/local_controller_registry.h); pure pursuit's parameters are `tracking`.
+  std::string local_controller = "pure-pursuit";
+  /// The parameters of registered components that have no struct here (MPPI's, DWB's, a
+  /// plugin's), by "section.name"; a parameter not set has its declared default.
+  util::NamedValues component_params;
   controller::DockingParams docking;
   controller::TractionParams traction;
   TravelMode travel = TravelMode::kPath;

@@ -3,13 +3,19 @@
 // only assembles them with the episode's own and reads and writes the file.
 #include "episode/episode_config_json.h"
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <mutex>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "controller/controller_param_rows.h"
+#include "controller/local_controller_registry.h"
+#include "robot/estimator_registry.h"
 #include "robot/robot_param_rows.h"
 #include "sim/sim_param_rows.h"
 #include "util/choice_table.h"
@@ -32,6 +38,32 @@ using nlohmann::json;
 
 using Field = util::Param<EpisodeConfig>;
 
+/// A name that lives as long as the program (a row's section and key are C strings).
+const char* interned(const std::string& text) {
+  static std::mutex mutex;
+  static std::deque<std::string> kept;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const std::string& k : kept)
+    if (k == text) return k.c_str();
+  kept.push_back(text);
+  return kept.back().c_str();
+}
+
+/// Every registered component's parameters: local controllers', then estimators'.
+std::vector<util::ParamSpec> registered_specs() {
+  std::vector<util::ParamSpec> out;
+  for (const auto* e : controller::local_controllers().entries())
+    out.insert(out.end(), e->params.begin(), e->params.end());
+  for (const auto* e : robot::estimators().entries())
+    out.insert(out.end(), e->params.begin(), e->params.end());
+  return out;
+}
+
+/// Grows by one with every component registered (registries never shrink).
+std::size_t registered_component_count() {
+  return controller::local_controllers().entries().size() + robot::estimators().entries().size();
+}
+
 // The episode's own rows: the faults, a moving target's pursuit, the loop's period and timeout.
 util::ParamRows<KidnapFault> kidnap_param_rows() {
   return {
@@ -44,9 +76,9 @@ util::ParamRows<KidnapFault> kidnap_param_rows() {
   };
 }
 
-/// Every parameter: each module's rows, assembled (in docs/config.md's section order, which is
-/// also the order `plantsim config` writes them in).
-const std::vector<Field>& table() {
+/// Every parameter with a struct in EpisodeConfig: each module's rows, assembled (in
+/// docs/config.md's section order, which is also the order `plantsim config` writes them in).
+const std::vector<Field>& typed_table() {
   static const std::vector<Field> rows = [] {
     std::vector<Field> t;
     util::append_rows_of_part(t, sim::step_param_rows(), PLANTSIM_PART(step));
@@ -81,6 +113,45 @@ const std::vector<Field>& table() {
   return rows;
 }
 
+/// The registered components' parameters (built-in or a plugin's) that no typed row holds, each
+/// a row of EpisodeConfig::component_params that reads its declared default until set.
+std::vector<Field> component_rows() {
+  std::set<std::string> typed;
+  for (const Field& f : typed_table()) typed.insert(f.path());
+  std::vector<Field> out;
+  for (const util::ParamSpec& spec : registered_specs()) {
+    const std::string path = spec.path();
+    if (!typed.insert(path).second) continue;  // a built-in's typed row, or declared twice
+    const double fallback = spec.default_value;
+    out.push_back(
+        Field{interned(spec.section), interned(spec.name), spec.kind,
+              [path, fallback](const EpisodeConfig& c) {
+                const double* v = util::find_value(c.component_params, path);
+                return v ? *v : fallback;
+              },
+              [path](EpisodeConfig& c, double v) { util::set_value(c.component_params, path, v); },
+              spec.lo, spec.hi, spec.above});
+  }
+  return out;
+}
+
+/// Every parameter: the typed rows, then the components'. Plugins add components while the
+/// program starts; each table made stays alive, so a reference handed out earlier stays valid.
+const std::vector<Field>& table() {
+  static std::mutex mutex;
+  static std::deque<std::vector<Field>> made;
+  static std::size_t made_for = 0;
+  std::lock_guard<std::mutex> lock(mutex);
+  const std::size_t generation = registered_component_count();
+  if (made.empty() || made_for != generation) {
+    std::vector<Field> t = typed_table();
+    for (Field& f : component_rows()) t.push_back(std::move(f));
+    made.push_back(std::move(t));
+    made_for = generation;
+  }
+  return made.back();
+}
+
 /// The rows of one kind, in the table's order: reals, whole numbers and flags are read and
 /// written in turn.
 std::vector<Field> rows_of(util::ParamKind kind) {
@@ -89,18 +160,9 @@ std::vector<Field> rows_of(util::ParamKind kind) {
     if (f.kind == kind) out.push_back(f);
   return out;
 }
-const std::vector<Field>& fields() {
-  static const std::vector<Field> rows = rows_of(util::ParamKind::kReal);
-  return rows;
-}
-const std::vector<Field>& int_fields() {
-  static const std::vector<Field> rows = rows_of(util::ParamKind::kWhole);
-  return rows;
-}
-const std::vector<Field>& bool_fields() {
-  static const std::vector<Field> rows = rows_of(util::ParamKind::kFlag);
-  return rows;
-}
+std::vector<Field> fields() { return rows_of(util::ParamKind::kReal); }
+std::vector<Field> int_fields() { return rows_of(util::ParamKind::kWhole); }
+std::vector<Field> bool_fields() { return rows_of(util::ParamKind::kFlag); }
 
 void read_tables(worlds::ParamDocument& doc, EpisodeConfig& c) {
   doc.read(fields(), c);
@@ -118,6 +180,30 @@ const util::ChoiceRows<EpisodeConfig>& choices() {
     return t;
   }();
   return rows;
+}
+
+/// A component chosen by name: one of its registry's.
+template <typename Registry>
+std::string chosen_component(worlds::ParamDocument& doc, const std::string& section,
+                             const std::string& name, const Registry& registry) {
+  const json* v = doc.find(section, name);
+  const std::string path = section.empty() ? name : section + "." + name;
+  if (!v->is_string()) throw worlds::WorldError(doc.source(), path, "expected a name");
+  try {
+    return registry.at(v->get<std::string>()).name;
+  } catch (const util::RegistryError& e) {
+    throw worlds::WorldError(doc.source(), path, e.what());
+  }
+}
+
+/// The components chosen by name: the local controller and the estimator.
+void read_components(worlds::ParamDocument& doc, EpisodeConfig& c) {
+  if (doc.find("", "local_controller"))
+    c.local_controller =
+        chosen_component(doc, "", "local_controller", controller::local_controllers());
+  if (doc.find("localization", "estimator"))
+    c.perception.estimator =
+        chosen_component(doc, "localization", "estimator", robot::estimators());
 }
 
 void read_seed(worlds::ParamDocument& doc, EpisodeConfig& c) {
@@ -168,10 +254,18 @@ EpisodeConfig parse_episode_config(const std::string& text, const std::string& s
   worlds::ParamDocument doc(parsed, source);
   read_tables(doc, c);
   doc.read(choices(), c);
+  read_components(doc, c);
   read_seed(doc, c);
   doc.refuse_unknown();
   check_consistency(source, c);
   return c;
+}
+
+EpisodeConfig load_episode_config(const std::string& path) {
+  return load_episode_config(path, EpisodeConfig());
+}
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source) {
+  return parse_episode_config(text, source, EpisodeConfig());
 }
 
 EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
@@ -182,6 +276,19 @@ EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base) {
     throw worlds::WorldError(path, "", e.what());
   }
   return parse_episode_config(text, path, base);
+}
+
+util::ParamValues component_values(const EpisodeConfig& c,
+                                   const std::vector<util::ParamSpec>& specs) {
+  util::ParamValues out;
+  const std::vector<Field>& rows = table();
+  for (const util::ParamSpec& spec : specs) {
+    const std::string path = spec.path();
+    const auto row =
+        std::find_if(rows.begin(), rows.end(), [&](const Field& f) { return f.path() == path; });
+    out.set(path, row == rows.end() ? spec.default_value : row->get(c));
+  }
+  return out;
 }
 
 std::vector<NumberParameter> number_parameters() {
@@ -213,6 +320,8 @@ std::string config_json(const EpisodeConfig& c) {
   worlds::write_param_rows(j, int_fields(), c);
   worlds::write_param_rows(j, bool_fields(), c);
   worlds::write_param_rows(j, choices(), c);
+  j["local_controller"] = c.local_controller;
+  j["localization"]["estimator"] = c.perception.estimator;
   j["seed"] = c.seed;
   return j.dump(2) + "\n";
 }

@@ -7,13 +7,18 @@
 #include <vector>
 
 #include "episode/episode_config.h"
+#include "util/param_spec.h"
 
 namespace plantsim::episode {
 
 /// Applies the file's values over `base`. Throws worlds::WorldError naming file and field.
-EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base = {});
+EpisodeConfig load_episode_config(const std::string& path, EpisodeConfig base);
 EpisodeConfig parse_episode_config(const std::string& text, const std::string& source,
-                                   EpisodeConfig base = {});
+                                   EpisodeConfig base);
+/// ... over the defaults (an overload, not a default argument: GCC 12 reads the temporary's
+/// maps as uninitialised at every call site).
+EpisodeConfig load_episode_config(const std::string& path);
+EpisodeConfig parse_episode_config(const std::string& text, const std::string& source);
 
 /// A number parameter of the configuration (not a flag or a mode), as `plantsim tune` searches it:
 /// its "section.key", its documented range and its default.
@@ -31,6 +36,11 @@ std::vector<NumberParameter> number_parameters();
 NumberParameter number_parameter(const std::string& path);
 
 /// The defaults as JSON (what `plantsim config` prints).
+/// The values of a component's declared parameters in `config` (each from its row: a typed one,
+/// or component_params, or its default), for its factory.
+util::ParamValues component_values(const EpisodeConfig& config,
+                                   const std::vector<util::ParamSpec>& specs);
+
 std::string default_config_json();
 /// `config` as JSON, every key (read back by parse_episode_config as the same config).
 std::string config_json(const EpisodeConfig& config);

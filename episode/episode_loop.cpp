@@ -6,7 +6,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "controller/local_controller_registry.h"
+#include "episode/episode_config_json.h"
 #include "episode/episode_work.h"
+#include "robot/estimator_registry.h"
 #include "sim/kidnap_landing.h"
 #include "sim/target_catch.h"
 
@@ -34,7 +37,24 @@ SensorParams sensor_params(const EpisodeConfig& c, const worlds::World& plant) {
 robot::PerceptionParams perception_params(const EpisodeConfig& c) {
   robot::PerceptionParams p = c.perception;
   p.field_range_m = c.field.sensor_range_m;
+  p.estimator_params =
+      component_values(c, robot::estimators().at(c.perception.estimator).params).named();
   return p;
+}
+
+/// The facts a local controller is built for: the robot's own spec and map, never the plant's.
+controller::LocalControllerContext local_context(const worlds::World& map, const EpisodeConfig& c) {
+  controller::LocalControllerContext x;
+  x.footprint_radius_m = map.robot.radius_m;
+  x.wheel_base_m = map.robot.wheel_base_m;
+  x.max_wheel_speed_mps = map.robot.max_speed_mps;
+  x.max_accel_mps2 = map.robot.max_accel_mps2;
+  x.control_period_s = std::max(1, c.control_period_steps) * c.step.dt_s;
+  x.map_obstacles = map.obstacles;
+  x.map_obstacles.push_back(worlds::charger_body(map).bounding_box());
+  x.floor = map.floor;
+  x.seed = c.seed;
+  return x;
 }
 
 controller::TractionParams traction_params(const EpisodeConfig& c, const worlds::World& plant) {
@@ -56,12 +76,19 @@ std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Pl
                                            const EpisodeConfig& config,
                                            const planner::PlanResult& plan,
                                            const EpisodeSteering& steering, EpisodeResult& r) {
-  robot::TravelSettings settings{config.tracking,    config.docking,
-                                 config.field,       config.pursuit_replan_period_s,
-                                 config.lost_search, config.coastal};
+  robot::TravelSettings settings;
+  settings.tracking = config.tracking;
+  settings.docking = config.docking;
+  settings.field = config.field;
+  settings.pursuit_replan_period_s = config.pursuit_replan_period_s;
+  settings.lost_search = config.lost_search;
+  settings.coastal = config.coastal;
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
   settings.docking.guard.footprint_radius_m = map.robot.radius_m;
   settings.map_planner = &planner;  // replans add what is sensed on top of its graph
+  settings.local = &controller::local_controllers().at(config.local_controller);
+  settings.local_params = component_values(config, settings.local->params);
+  settings.local_context = local_context(map, config);
   // The datasheet's range, not the plant's lidar: what the robot side may know of its sensor.
   if (config.perception.mode == robot::PerceptionMode::kSensors)
     settings.lidar_range_m = config.lidar.max_range_m;

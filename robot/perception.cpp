@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "geometry/predicates.h"
 #include "robot/ekf_estimator.h"
+#include "robot/estimator_registry.h"
 
 namespace plantsim::robot {
 namespace {
@@ -48,9 +50,12 @@ std::vector<controller::FieldObstacle> map_near(const worlds::World& map, geom::
 std::unique_ptr<PoseEstimator> make_estimator(const worlds::World& map,
                                               const MapRaycaster& raycaster,
                                               const PerceptionParams& p) {
-  if (p.estimator == EstimatorKind::kParticles)
-    return std::make_unique<ParticleLocalizer>(map, raycaster, p.ekf, p.global, p.particles);
-  return std::make_unique<EkfEstimator>(map, raycaster, p.ekf, p.global);
+  const EstimatorEntry& e = estimators().at(p.estimator);
+  std::unique_ptr<PoseEstimator> made =
+      e.make({&map, &raycaster, &p}, util::ParamValues(p.estimator_params));
+  if (!made)
+    throw std::runtime_error("estimator \"" + e.name + "\" (" + e.origin + ") made nothing");
+  return made;
 }
 
 }  // namespace

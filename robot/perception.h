@@ -10,6 +10,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "robot/pose_estimator.h"
 #include "robot/readings.h"
 #include "robot/scan_matcher.h"
+#include "util/param_spec.h"
 
 namespace plantsim::robot {
 
@@ -37,7 +39,10 @@ struct PerceptionParams {
   double field_range_m = 3.0;  ///< scan returns closer than this reach the potential field
   double field_cluster_gap_m = 0.3;  ///< returns closer than this form one obstacle for the field
   double target_exclusion_m = 0.6;   ///< returns this close to the beacon's target are the target
-  EstimatorKind estimator = EstimatorKind::kEkf;  ///< the pose estimator (pose_estimator.h)
+  /// The pose estimator by its registry name (estimator_registry.h) and a plugin's parameters
+  /// (the built-ins read theirs, typed, below).
+  std::string estimator = "ekf";
+  util::NamedValues estimator_params;
   EkfParams ekf;  ///< the EKF's, and the odometry's noise and health thresholds both use
   ParticleParams particles;
   TrackerParams tracker;

@@ -16,15 +16,4 @@ std::string_view to_string(LocalizationHealth h) {
   return "unknown";
 }
 
-std::string_view to_string(EstimatorKind k) {
-  // A switch, not a ternary: a third kind without its name does not compile (-Wswitch, -Werror).
-  switch (k) {
-    case EstimatorKind::kEkf:
-      return "ekf";
-    case EstimatorKind::kParticles:
-      return "particles";
-  }
-  return "unknown";
-}
-
 }  // namespace plantsim::robot

@@ -14,9 +14,6 @@ namespace plantsim::robot {
 enum class LocalizationHealth { kOk, kDegraded, kLost };  ///< in order of severity
 std::string_view to_string(LocalizationHealth h);
 
-enum class EstimatorKind { kEkf, kParticles };
-std::string_view to_string(EstimatorKind k);
-
 class PoseEstimator {
  public:
   virtual ~PoseEstimator() = default;

@@ -161,8 +161,6 @@ const util::ChoiceRows<PerceptionParams>& perception_choice_rows() {
   static const util::ChoiceRows<PerceptionParams> rows = {
       PLANTSIM_CHOICE("perception", mode, "mode", PerceptionMode,
                       {"sensors", PerceptionMode::kSensors}, {"oracle", PerceptionMode::kOracle}),
-      PLANTSIM_CHOICE("localization", estimator, "estimator", EstimatorKind,
-                      {"ekf", EstimatorKind::kEkf}, {"particles", EstimatorKind::kParticles}),
   };
   return rows;
 }

@@ -25,7 +25,7 @@ const util::ParamRows<CoastalParams>& coastal_param_rows();         ///< "coasta
 /// "perception": perception's own thresholds and its global match's (not its parts with
 /// sections of their own, above).
 const util::ParamRows<PerceptionParams>& perception_param_rows();
-/// perception.mode and localization.estimator.
+/// perception.mode (localization.estimator is a name: estimator_registry.h).
 const util::ChoiceRows<PerceptionParams>& perception_choice_rows();
 
 }  // namespace plantsim::robot

@@ -3,7 +3,9 @@
 #include "robot/travel.h"
 
 #include <algorithm>
+#include <stdexcept>
 
+#include "controller/pure_pursuit_controller.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 
@@ -61,11 +63,22 @@ std::optional<std::vector<geom::Vec2>> plan_around(const worlds::World& map,
   return path;
 }
 
+std::unique_ptr<controller::LocalController> make_local_controller(const TravelSettings& s) {
+  if (!s.local) return controller::make_pure_pursuit(s.tracking);
+  std::unique_ptr<controller::LocalController> made =
+      s.local->make(s.local_context, s.local_params);
+  if (!made)
+    throw std::runtime_error("local controller \"" + s.local->name + "\" (" + s.local->origin +
+                             ") made nothing");
+  return made;
+}
+
 controller::DockingInput docking_input(const Perception& p) {
   controller::DockingInput in;
   in.pose = p.pose;
   in.odom_pose = p.odom_pose;
   in.speed_mps = p.speed_mps;
+  in.yaw_rate_radps = p.yaw_rate_radps;
   in.dt_s = p.dt_s;
   in.charger_contact = p.charger_contact;
   in.charging = p.charging;

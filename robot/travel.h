@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "controller/docking.h"
+#include "controller/local_controller.h"
 #include "controller/potential_field.h"
 #include "planner/planner.h"
 #include "robot/coastal_route.h"
@@ -22,7 +23,7 @@
 namespace plantsim::robot {
 
 struct TravelSettings {
-  controller::PurePursuitParams tracking;
+  controller::PurePursuitParams tracking;  ///< pure pursuit's, when no local controller is chosen
   controller::DockingParams docking;  ///< staging distance and footprint already set from the map
   controller::PotentialFieldParams field;
   double pursuit_replan_period_s = 1.0;
@@ -32,7 +33,15 @@ struct TravelSettings {
   /// The episode's planner on the map; a visibility-graph one is reused for replans (its graph
   /// is never rebuilt: the sensed obstacles are added on top, planner/vg/vg_overlay.h).
   const planner::Planner* map_planner = nullptr;
+  /// The local controller that follows the plan (controller/local_controller_registry.h), its
+  /// parameters and the facts it is built for; none: pure pursuit of `tracking`.
+  const controller::LocalControllerEntry* local = nullptr;
+  util::ParamValues local_params;
+  controller::LocalControllerContext local_context;
 };
+
+/// A new local controller as the settings choose it.
+std::unique_ptr<controller::LocalController> make_local_controller(const TravelSettings& s);
 
 /// How a travel ended, when it has.
 enum class TravelEnd { kNone, kDocked, kUndocked, kFailed, kTrapped };

@@ -19,7 +19,7 @@ class PathTravel : public Travel {
       : map_(map),
         planner_(std::move(planner_name)),
         s_(s),
-        control_(s.tracking, s.docking, path, map.charger),
+        control_(make_local_controller(s), s.docking, path, map.charger),
         search_(s.lost_search, s.docking.guard.footprint_radius_m),
         staging_(worlds::staging_pose(map).position()),
         plan_(std::move(replaced)) {}

@@ -12,7 +12,7 @@ class PursuitTravel : public Travel {
       : map_(map),
         planner_(std::move(planner_name)),
         s_(s),
-        control_(s.tracking, s.docking, std::move(path), map.charger),
+        control_(make_local_controller(s), s.docking, std::move(path), map.charger),
         next_plan_s_(s.pursuit_replan_period_s) {}
 
   Decision decide(const Perception& p) override {
@@ -24,7 +24,8 @@ class PursuitTravel : public Travel {
         if (control_.phase() == controller::DockPhase::kTravel)
           control_.replace_path(*path);
         else
-          control_ = controller::DockingController(s_.tracking, s_.docking, *path, map_.charger);
+          control_ = controller::DockingController(make_local_controller(s_), s_.docking, *path,
+                                                   map_.charger);
         ++replans_;
         replanned = true;
       }

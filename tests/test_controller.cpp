@@ -134,7 +134,7 @@ DockingCommand press_until_given_up(DockingController& dc, Pose2 p) {
 }
 
 TEST(Docking, PadsHeldUntilTheChargerSaysChargingPressedWithoutIsAMissAndBacksOff) {
-  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);     // path end reached
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kApproach);  // already aligned
   const DockingCommand miss = press_until_given_up(dc, {2, 0.05, 0});
@@ -154,7 +154,7 @@ TEST(Docking, PadsHeldUntilTheChargerSaysChargingPressedWithoutIsAMissAndBacksOf
 TEST(Docking, AfterTheLastRetryItBacksOffBeforeFailing) {
   DockingParams p;
   p.max_retries = 1;
-  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   dc.step(at({1, 0, 0}));
   dc.step(at({1, 0, 0}));
   EXPECT_EQ(press_until_given_up(dc, {2, 0.05, 0}).phase, DockPhase::kBackOff);  // retry 1
@@ -167,7 +167,7 @@ TEST(Docking, AfterTheLastRetryItBacksOffBeforeFailing) {
 }
 
 TEST(Docking, TheBumperOnSomethingOtherThanThePadsIsAMiss) {
-  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   dc.step(at({1, 0, 0}));
   dc.step(at({1, 0, 0}));
   DockingInput in = at({1.8, 0.1, 0});
@@ -178,7 +178,7 @@ TEST(Docking, TheBumperOnSomethingOtherThanThePadsIsAMiss) {
 }
 
 TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
-  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   dc.step(at({1, 0, 0}));
   dc.step(at({1, 0, 0}));
   DockingInput in = at({1.2, 0, 0});
@@ -209,7 +209,7 @@ TEST(Docking, TheApproachAndTheBackOffStopForWhatTheySense) {
 TEST(Docking, APersonStandingBesideTheApproachIsWaitedForAtTheStagingPose) {
   DockingParams p;
   p.yield.bystander_wait_s = 2.0;
-  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   EXPECT_EQ(dc.step(at({1, 0, 0})).phase, DockPhase::kAlign);
   DockingInput in = at({1, 0, 0});
   in.nearby_obstacles = {{{1.3, 0.9, 1.8, 1.4}, {0, 0}}};  // 0.9 m to the side, halfway in
@@ -225,7 +225,7 @@ TEST(Docking, APersonStandingBesideTheApproachIsWaitedForAtTheStagingPose) {
                                   geom::Rect{1.3, 2.5, 1.8, 3.0},  // 2.5 m away
                                   geom::Rect{2.2, -0.15, 2.3, 0.15}})  // the charger
   {
-    DockingController fresh({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+    DockingController fresh(PurePursuitParams{}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
     fresh.step(at({1, 0, 0}));
     DockingInput near = at({1, 0, 0});
     near.nearby_obstacles = {{other, {0, 0}}};
@@ -245,7 +245,7 @@ TEST(CollisionCheck, SegmentToBoxDistance) {
 }
 
 TEST(Docking, DetectionsReanchorTheDockInTheOdometryFrame) {
-  DockingController dc({}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, {}, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   dc.step(at({1, 0, 0}));  // staging reached: dock placed from the map
   // The charger is really 3 cm to the left of where the map says: detections show it.
   DockingInput in = at({1, 0, 0});
@@ -264,7 +264,7 @@ namespace {
 TEST(Docking, UndockReversesToTheStagingPoseGuarded) {
   DockingParams p;
   p.undock = true;
-  DockingController dc({}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
+  DockingController dc(PurePursuitParams{}, p, {{0, 0}, {1, 0}}, Pose2{2, 0, 0});
   DockingInput in;
   auto at_pose = [&](Pose2 pose, bool contact, bool charging) {
     in = {};

@@ -631,7 +631,7 @@ TEST(KidnapLanding, LandsOnFreeFloorWithinItsDistances) {
 
 TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
   EpisodeConfig c;
-  c.perception.estimator = robot::EstimatorKind::kParticles;
+  c.perception.estimator = "particles";
   c.kidnap = {8.0, 0.0, -1.2, 0.3};  // the EKF's test above, with the particle filter
   const EpisodeResult near = run(l_room(), c);
   EXPECT_TRUE(near.docked) << episode::status_name(near)
@@ -655,7 +655,7 @@ TEST(Localization, ParticlesFindAKidnappedRobotAgainAndDock) {
     EXPECT_GE(r.relocalizations, 1) << seed;
     EXPECT_FALSE(r.integrity.breach.has_value()) << seed;
   }
-  c.perception.estimator = robot::EstimatorKind::kEkf;  // the EKF on the same draw
+  c.perception.estimator = "ekf";  // the EKF on the same draw
   const EpisodeResult ekf = run(racks, c);
   EXPECT_FALSE(ekf.docked) << "the EKF's window does not reach this far";
 }

@@ -15,13 +15,13 @@
 #include <utility>
 #include <vector>
 
+#include "util/param_spec.h"
+
 namespace plantsim::util {
 
 /// No parameter is meaningful beyond this; a bound keeps 1e308 out of the physics (it would
 /// turn forces non-finite) and out of step counts (a timeout of 1e308 never ends).
 inline constexpr double kMaxParameter = 1e6;
-
-enum class ParamKind { kReal, kWhole, kFlag };
 
 template <typename P>
 struct Param {
@@ -80,6 +80,25 @@ void append_rows_of_part(ParamRows<P>& whole, const ParamRows<Part>& rows, Reach
         Param<P>{r.section, r.name, r.kind,
                  [get = r.get, part](const P& p) { return get(part(const_cast<P&>(p))); },
                  [set = r.set, part](P& p, double v) { set(part(p), v); }, r.lo, r.hi, r.above});
+}
+
+/// The rows as plain specs (util/param_spec.h), each default read from `defaults`: how a built-in
+/// component whose parameters are a struct declares them to its registry.
+template <typename P>
+std::vector<ParamSpec> specs_of(const ParamRows<P>& rows, const P& defaults = P{}) {
+  std::vector<ParamSpec> out;
+  for (const Param<P>& r : rows)
+    out.push_back({r.section, r.name, r.kind, r.get(defaults), r.lo, r.hi, r.above, ""});
+  return out;
+}
+
+/// The struct the values describe: each row set from its value ("section.name"), the rest left at
+/// `base`.
+template <typename P>
+P struct_of(const ParamRows<P>& rows, const ParamValues& values, P base = P{}) {
+  for (const Param<P>& r : rows)
+    if (values.has(r.path())) r.set(base, values.real(r.path()));
+  return base;
 }
 
 }  // namespace plantsim::util

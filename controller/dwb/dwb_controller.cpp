@@ -1,0 +1,104 @@
+// DWB behind the local controller interface, and its configuration rows.
+#include "controller/dwb/dwb_controller.h"
+
+#include <algorithm>
+
+#include "controller/dwb/dwb_planner.h"
+#include "controller/sampling_follow.h"
+
+namespace plantsim::controller::dwb {
+
+using util::kMaxParameter;
+
+const util::ParamRows<DwbControllerParams>& dwb_param_rows() {
+  static const util::ParamRows<DwbControllerParams> rows = {
+      PLANTSIM_PARAM("dwb", planner.min_vel_x, "min_vel_x", -kMaxParameter, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.max_vel_x, "max_vel_x", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.max_vel_theta, "max_vel_theta", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.min_speed_theta, "min_speed_theta", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.acc_lim_x, "acc_lim_x", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.decel_lim_x, "decel_lim_x", -kMaxParameter, 0.0),
+      PLANTSIM_PARAM("dwb", planner.acc_lim_theta, "acc_lim_theta", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.decel_lim_theta, "decel_lim_theta", -kMaxParameter, 0.0),
+      PLANTSIM_PARAM("dwb", planner.vx_samples, "vx_samples", 1, 1000),
+      PLANTSIM_PARAM("dwb", planner.vtheta_samples, "vtheta_samples", 1, 1000),
+      PLANTSIM_PARAM_ABOVE("dwb", planner.sim_time, "sim_time", 0.0, 60.0),
+      PLANTSIM_PARAM_ABOVE("dwb", planner.time_granularity, "time_granularity", 0.0, 10.0),
+      PLANTSIM_PARAM("dwb", planner.xy_goal_tolerance, "xy_goal_tolerance", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.base_obstacle_scale, "base_obstacle_scale", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.path_align_scale, "path_align_scale", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.goal_align_scale, "goal_align_scale", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.path_dist_scale, "path_dist_scale", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.goal_dist_scale, "goal_dist_scale", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.rotate_to_goal_scale, "rotate_to_goal_scale", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.forward_point_distance, "forward_point_distance", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.slowing_factor, "slowing_factor", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.oscillation_reset_dist, "oscillation_reset_dist", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.inflation_radius_m, "inflation_radius_m", 0.0, kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.forward_prune_distance, "forward_prune_distance", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM_ABOVE("dwb", goal_tolerance_m, "goal_tolerance_m", 0.0, kMaxParameter),
+  };
+  return rows;
+}
+
+namespace {
+
+class DwbController : public LocalController {
+ public:
+  DwbController(const LocalControllerContext& ctx, DwbControllerParams p)
+      : ctx_(ctx), p_(fitted(p, ctx)), planner_(p_.planner) {}
+
+  void set_path(std::vector<geom::Vec2> path) override {
+    planner_.set_path(path);
+    progress_ = PathProgress(std::move(path));
+  }
+
+  TrackingCommand step(const LocalQuery& q) override {
+    TrackingCommand out;
+    progress_.update(q.pose, 0.5, p_.goal_tolerance_m, out);
+    if (out.goal_reached) return out;
+    const ClearanceGrid grid = local_clearance(ctx_, q, 3.0, 0.05);
+    DwbQuery query;
+    query.pose = q.pose;
+    query.velocity = {q.speed_mps, q.yaw_rate_radps};
+    query.goal = progress_.goal();
+    query.clearance = &grid;
+    query.robot_radius_m = ctx_.footprint_radius_m;
+    out.twist = planner_.step(query);
+    return out;
+  }
+
+ private:
+  /// The window is what one control period reaches (Nav2 sets controller_period from the
+  /// controller's frequency), no faster than the wheels turn.
+  static DwbControllerParams fitted(DwbControllerParams p, const LocalControllerContext& ctx) {
+    p.planner.controller_period = ctx.control_period_s;
+    p.planner.max_vel_x = std::min(p.planner.max_vel_x, ctx.max_wheel_speed_mps);
+    return p;
+  }
+
+  LocalControllerContext ctx_;
+  DwbControllerParams p_;
+  DwbPlanner planner_;
+  PathProgress progress_;
+};
+
+}  // namespace
+
+LocalControllerEntry dwb_entry() {
+  LocalControllerEntry e;
+  e.name = "dwb";
+  e.summary = "the dynamic window approach with Nav2 DWB's critics";
+  e.params = util::specs_of(dwb_param_rows());
+  e.capabilities = {"samples-trajectories"};
+  e.make = [](const LocalControllerContext& ctx, const util::ParamValues& v) {
+    return std::make_unique<DwbController>(ctx, util::struct_of(dwb_param_rows(), v));
+  };
+  return e;
+}
+
+}  // namespace plantsim::controller::dwb

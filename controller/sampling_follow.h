@@ -1,0 +1,37 @@
+// What a sampling controller (MPPI, DWB) reports besides its command, in the form the path
+// follower reads it: progress along the plan (never back), distance from it, the bearing of the
+// plan ahead, the goal it steers to, and the local distance field it scores against, built from
+// the map the controller was given and what the robot senses this step.
+#pragma once
+
+#include <vector>
+
+#include "controller/clearance_grid.h"
+#include "controller/local_controller.h"
+#include "controller/path_geometry.h"
+
+namespace plantsim::controller {
+
+class PathProgress {
+ public:
+  PathProgress() = default;
+  explicit PathProgress(std::vector<Vec2> path);
+
+  /// Moves on to the plan's point nearest `pose`, and fills the command's cross-track error,
+  /// carrot bearing (`carrot_m` ahead) and goal_reached (within `goal_tolerance_m` of the end).
+  void update(const Pose2& pose, double carrot_m, double goal_tolerance_m, TrackingCommand& out);
+  /// The plan's end, facing along its last segment.
+  Pose2 goal() const;
+  const std::vector<Vec2>& path() const { return path_; }
+
+ private:
+  std::vector<Vec2> path_;
+  std::size_t segment_ = 0;
+};
+
+/// The distance field of `half_side_m` around the robot (cells of `cell_m`): the map's boxes
+/// near it and the sensed ones.
+ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuery& q,
+                              double half_side_m, double cell_m);
+
+}  // namespace plantsim::controller
