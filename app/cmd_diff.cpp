@@ -74,6 +74,10 @@ std::function<int()> add_diff_command(CLI::App& app) {
                                                    "_vs_" + folder_name(opt->candidate)
                                              : opt->out;
     std::vector<std::string> replaceable = kDiffFiles;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec))  // an earlier diff's --junit report
+      if (e.path().extension() == ".xml" && junit_report_kind().is_own(e.path().string()))
+        replaceable.push_back(e.path().filename().string());
     const bool junit_inside = !opt->junit.empty() && inside(opt->junit, out);
     if (junit_inside) {
       const std::string name = fs::path(opt->junit).filename().string();

@@ -287,8 +287,11 @@ TEST_F(DiffCli, IdenticalFoldersShowNoDetectableChange) {
   const std::string md = read(out / "diff.md");
   EXPECT_EQ(md.substr(0, md.find('\n')), "# plantsim diff: NO DETECTABLE CHANGE");
   EXPECT_NE(read(dir_ / "junit.xml").find("failures=\"0\""), std::string::npos);
-  // A second diff into the same folder replaces its own outputs.
-  EXPECT_EQ(run("diff base again --junit junit.xml").exit_code, 0);
+  // A second diff into the same folder replaces its own outputs, a JUnit report it holds too.
+  EXPECT_EQ(run("diff base again --junit results/diff_base_vs_again/j.xml").exit_code, 0);
+  EXPECT_TRUE(fs::exists(out / "j.xml"));
+  EXPECT_EQ(run("diff base again").exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "j.xml"));
 }
 
 TEST_F(DiffCli, ReplaysInTheFoldersAreLinkedSideBySide) {
