@@ -43,6 +43,35 @@ bool within(const std::string& path, const std::string& folder) {
   return std::mismatch(f.begin(), f.end(), p.begin(), p.end()).first == f.end();
 }
 
+/// Checks, before anything is written, that the outputs may be written: `out` not in a batch
+/// folder, a --junit file missing or a JUnit report. Returns the names `out` may hold (an earlier
+/// diff's files, a JUnit report in it).
+std::vector<std::string> check_outputs(const std::string& out, const std::string& junit,
+                                       bool junit_inside, const std::vector<std::string>& inputs) {
+  std::vector<std::string> replaceable = kDiffFiles;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(out, ec))  // an earlier diff's --junit report
+    if (e.path().extension() == ".xml" && junit_report_kind().is_own(e.path().string()))
+      replaceable.push_back(e.path().filename().string());
+  if (junit_inside) {
+    const std::string name = fs::path(junit).filename().string();
+    if (std::find(kDiffFiles.begin(), kDiffFiles.end(), name) != kDiffFiles.end() || name.empty())
+      throw std::invalid_argument("--junit: '" + junit + "' is " + name +
+                                  " of the diff's folder; name the report otherwise");
+    if (fs::exists(fs::symlink_status(junit)))
+      util::check_output_file(junit, "--junit", junit_report_kind());
+    replaceable.push_back(name);
+  } else if (!junit.empty()) {
+    util::check_output_file(junit, "--junit", junit_report_kind());
+  }
+  for (const std::string& input : inputs)
+    if (within(out, input))
+      throw std::invalid_argument("--out: '" + out + "' is in the batch folder '" + input +
+                                  "' (a batch resumes only a folder of its own files); write "
+                                  "the diff elsewhere");
+  return replaceable;
+}
+
 }  // namespace
 
 std::function<int()> add_diff_command(CLI::App& app) {
@@ -73,28 +102,9 @@ std::function<int()> add_diff_command(CLI::App& app) {
     const std::string out = opt->out.empty() ? "results/diff_" + folder_name(opt->baseline) +
                                                    "_vs_" + folder_name(opt->candidate)
                                              : opt->out;
-    std::vector<std::string> replaceable = kDiffFiles;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(out, ec))  // an earlier diff's --junit report
-      if (e.path().extension() == ".xml" && junit_report_kind().is_own(e.path().string()))
-        replaceable.push_back(e.path().filename().string());
     const bool junit_inside = !opt->junit.empty() && inside(opt->junit, out);
-    if (junit_inside) {
-      const std::string name = fs::path(opt->junit).filename().string();
-      if (std::find(kDiffFiles.begin(), kDiffFiles.end(), name) != kDiffFiles.end() || name.empty())
-        throw std::invalid_argument("--junit: '" + opt->junit + "' is " + name +
-                                    " of the diff's folder; name the report otherwise");
-      if (fs::exists(fs::symlink_status(opt->junit)))
-        util::check_output_file(opt->junit, "--junit", junit_report_kind());
-      replaceable.push_back(name);
-    } else if (!opt->junit.empty()) {
-      util::check_output_file(opt->junit, "--junit", junit_report_kind());
-    }
-    for (const std::string& input : {opt->baseline, opt->candidate})
-      if (within(out, input))
-        throw std::invalid_argument("--out: '" + out + "' is in the batch folder '" + input +
-                                    "' (a batch resumes only a folder of its own files); write "
-                                    "the diff elsewhere");
+    const std::vector<std::string> replaceable =
+        check_outputs(out, opt->junit, junit_inside, {opt->baseline, opt->candidate});
     util::StagedFolder staged(out, replaceable);  // refuses a folder holding anything else
     util::MadeBy made_by;
     made_by.input = "records";
