@@ -57,5 +57,6 @@ std::function<int()> add_coverage_study_command(CLI::App& app);
 std::function<int()> add_vary_command(CLI::App& app);
 std::function<int()> add_nav2_import_command(CLI::App& app);
 std::function<int()> add_tune_command(CLI::App& app);
+std::function<int()> add_diff_command(CLI::App& app);
 
 }  // namespace plantsim::app

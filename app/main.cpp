@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_vary_command(app));
   remember(plantsim::app::add_nav2_import_command(app));
   remember(plantsim::app::add_tune_command(app));
+  remember(plantsim::app::add_diff_command(app));
   remember(plantsim::app::add_coverage_command(app));
   remember(plantsim::app::add_coverage_study_command(app));
   for (CLI::App* sub : app.get_subcommands({}))
@@ -159,9 +160,7 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);

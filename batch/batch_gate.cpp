@@ -188,4 +188,6 @@ bool looks_like_junit_report(const std::string& head) {
   return head.rfind("<?xml", 0) == 0 && head.find("<testsuites") != std::string::npos;
 }
 
+std::string junit_text(const std::string& s) { return xml_escaped(s); }
+
 }  // namespace plantsim::batch

@@ -74,4 +74,8 @@ std::string junit_xml(const std::string& suite_name,
 /// Whether a file's first bytes are a JUnit report as junit_xml writes them.
 bool looks_like_junit_report(const std::string& head);
 
+/// Text made safe inside JUnit XML's attributes and elements, as junit_xml escapes it (for other
+/// JUnit writers: plantsim diff).
+std::string junit_text(const std::string& s);
+
 }  // namespace plantsim::batch
