@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "robot/median_spread.h"
-#include "robot/place_refinement.h"
 
 namespace plantsim::robot {
 namespace {
@@ -31,6 +30,9 @@ ParticleLocalizer::ParticleLocalizer(const worlds::World& map, const MapRaycaste
       sampler_(params.kld),
       recovery_(params.recovery),
       search_(map, raycaster, global, params.search),
+      confirmation_(params.confirm,
+                    {params.contradicted_agreement, params.min_explained, params.min_returns},
+                    global),
       rng_(static_cast<std::uint64_t>(params.seed) ^ 0x7061727469636c65ULL),  // "particle"
       range_learnt_(told.range_learning_rate),
       gyro_learnt_(told.gyro_learning_rate, told.gyro_min_samples) {
@@ -102,8 +104,8 @@ void ParticleLocalizer::bias_moments() {
 }
 
 bool ParticleLocalizer::may_defer() const {
-  return health_ == LocalizationHealth::kOk && failed_matches_ == 0 && !confirm_.active &&
-         !nudge_ && handover_.empty() &&
+  return health_ == LocalizationHealth::kOk && failed_matches_ == 0 && !confirmation_.active() &&
+         !confirmation_.nudge() && !confirmation_.handing_over() &&
          since_weigh_m_ + motion_.deferred().moved_m + motion_.pending().moved_m <
              p_.update_min_m &&
          since_weigh_rad_ + motion_.deferred().turned_rad + motion_.pending().turned_rad <
@@ -120,9 +122,7 @@ void ParticleLocalizer::apply_motion() {
   if (m.time_s <= 0) return;
   since_weigh_m_ += m.moved_m;
   since_weigh_rad_ += m.turned_rad;
-  confirm_.turned_rad += m.turned_rad;
-  confirm_.moved_m += m.moved_m;
-  places_.move(m.delta);
+  confirmation_.moved(m);
   motion_.sample(m, bias_, set_, rng_);
   bias_moments();
 }
@@ -182,7 +182,10 @@ void ParticleLocalizer::judge(const LidarScan& scan) {
   const bool unexplained = share >= 0 && share < p_.min_explained &&
                            (returns >= p_.min_returns || view_changed_scans_ > 0);
   estimate_agrees_ = !agree || *agree >= global_.verify_agreement;  // none: nothing against it
-  if (confirm_.active) confirm(scan, agree);
+  if (confirmation_.active() &&
+      confirmation_.check(scan, agree, estimate_, position_sigma_m(), told_.lost_position_sigma_m,
+                          field_, raycaster_))
+    failed_matches_ = std::max(failed_matches_, 2);  // reseed
   if (!agree && !unexplained) {
     // Too few beams meet a mapped surface to judge by agreement; but a scan of min_returns whose
     // returns the map explains in fair share ends a run of contradictions (a box the map lacks
@@ -221,24 +224,23 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   // Contradicted, not merely wide: a set spread over open ground contracts by itself when the
   // plant comes into view, and look-alikes drawn in would only split it.
   const bool contradicted = failed_matches_ >= 2;
-  const bool handover = !handover_.empty();
+  const bool handover = confirmation_.handing_over();
   if (handover) {
-    candidates.swap(handover_);
-    handover_.clear();
+    candidates = confirmation_.take_handover();
     unmatched_ = false;
   } else if (!contradicted) {
     unmatched_ = false;
   } else if (search_.due(scan.t_s) && valid_returns(scan) >= p_.min_returns) {
     ParticlePlaceSearch::Result found =  // (estimate_fits: nothing against it)
-        search_.search(scan, estimate_, !doubted_, estimate_agrees_, field_.field());
-    doubted_ = false;
+        search_.search(scan, estimate_, !confirmation_.doubted(), estimate_agrees_, field_.field());
+    confirmation_.clear_doubt();
     candidates = std::move(found.candidates);
     if (found.estimate_fits) failed_matches_ = 0;
     unmatched_ = candidates.empty() && !found.estimate_fits;
     // A search that finds nothing is repeated less and less often (up to 8 periods apart).
     search_.searched(scan.t_s, unmatched_);
   }
-  if (deferred && candidates.empty() && !nudge_) {  // the weights did not change
+  if (deferred && candidates.empty() && !confirmation_.nudge()) {  // the weights did not change
     update_health();
     return;
   }
@@ -249,15 +251,12 @@ void ParticleLocalizer::observe(const LidarScan& scan) {
   if (!candidates.empty()) {
     resample(candidates, handover ? 1.0 : recovery_.fresh_share());
     ++relocalizations_;
-    confirm_ = {true, 0, 0, 0, 0};
+    confirmation_.start(candidates);
     view_changed_scans_ = 0;
-    std::vector<geom::Pose2> places;
-    for (const Place& c : candidates) places.push_back(c.pose);
-    places_.reset(places);
     summarise();
-  } else if (nudge_) {
-    resample({*nudge_}, recovery_.params().reseed_fraction);
-    nudge_.reset();
+  } else if (confirmation_.nudge()) {
+    resample({*confirmation_.nudge()}, recovery_.params().reseed_fraction);
+    confirmation_.clear_nudge();
     summarise();
   } else if (effective < 0.5 * static_cast<double>(set_.size())) {
     resample({}, 0.0);
@@ -315,88 +314,9 @@ double ParticleLocalizer::yaw_sigma_rad() const {
   return std::sqrt(std::max(0.0, pose_covariance()(2, 2)));
 }
 
-PlaceHypotheses::Verdict ParticleLocalizer::judge_place(const LidarScan& scan, geom::Pose2& place) {
-  if (field_.points().empty()) return {};
-  // Refined within a few centimetres only: the odometry drifts that little between scans, and a
-  // wider reach would let a look-alike slide along a corridor to keep fitting.
-  place = refine_on_field(field_.field(), field_.points(), place, 0.05, 0.01);
-  const std::optional<double> agree =
-      scan_agreement(raycaster_, scan, place, global_.verify_tolerance_m);
-  const bool contradicted =
-      (agree && *agree < p_.contradicted_agreement) ||
-      (valid_returns(scan) >= p_.min_returns && field_.explained_share(place) < p_.min_explained);
-  return {contradicted, field_.log_likelihood(place)};
-}
-
-void ParticleLocalizer::confirm(const LidarScan& scan, const std::optional<double>& agree) {
-  places_.check([&](geom::Pose2& place) { return judge_place(scan, place); }, p_.confirm_strikes,
-                p_.rival_margin);
-  const std::vector<geom::Pose2> rivals =
-      places_.rivals(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad);
-  // Progress counts only while the set is one hypothesis: two live ones are not yet a place.
-  if (position_sigma_m() > told_.lost_position_sigma_m) {
-    confirm_.turned_rad = confirm_.moved_m = 0;
-    return;
-  }
-  // The estimate's own place ruled out while others live: the set chose a look-alike.
-  if (!rivals.empty() &&
-      !places_.holds(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad)) {
-    confirm_.turned_rad = confirm_.moved_m = 0;
-    confirm_.strikes = 0;
-    for (const geom::Pose2& r : rivals) handover_.push_back({r, 0, Eigen::Matrix3d::Zero()});
-    return;
-  }
-  // The estimate's own place, refined scan by scan, has moved off it: the set lost the spread
-  // that held the truth (along a wall the scans leave open, until a corner comes into view).
-  // Fresh particles are drawn about the place and the scans choose.
-  const std::optional<geom::Pose2> own =
-      places_.nearest(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad);
-  const bool own_off =
-      own && geom::distance(own->position(), estimate_.position()) > p_.place_offset_m;
-  // ... unless the estimate fits the scan clearly better than its place does (by kClearlyBetter
-  // nats: along a lone wall both fit alike, and there the place is the guard): then the place is
-  // what drifted (refined a few centimetres a scan, it cannot climb out once the wall's end comes
-  // into view), and it moves onto the estimate. Drawing particles about it would pull the set off
-  // the better fit, scan after scan (training yard_s2, seed 4: the place 0.42 m off and 19 nats
-  // worse, the estimate 1 cm off, the confirmation started again every third scan until the
-  // robot gave up).
-  constexpr double kClearlyBetter = 5.0;
-  if (own_off && field_.log_likelihood(estimate_) >= field_.log_likelihood(*own) + kClearlyBetter) {
-    places_.move_nearest(estimate_, global_.matcher.apart_m, global_.matcher.apart_rad, estimate_);
-    confirm_.offset_scans = 0;
-  } else if (own_off) {
-    if (++confirm_.offset_scans >= p_.confirm_strikes) {
-      confirm_.turned_rad = confirm_.moved_m = 0;
-      confirm_.offset_scans = 0;
-      nudge_ = Place{*own, 0, Eigen::Matrix3d::Zero()};
-    }
-    return;
-  }
-  confirm_.offset_scans = 0;
-  if (agree && *agree < p_.contradicted_agreement) {
-    confirm_.turned_rad = confirm_.moved_m = 0;
-    if (++confirm_.strikes >= p_.confirm_strikes) {
-      confirm_.strikes = 0;
-      if (!rivals.empty()) {
-        for (const geom::Pose2& r : rivals) handover_.push_back({r, 0, Eigen::Matrix3d::Zero()});
-      } else {
-        doubted_ = true;
-        failed_matches_ = std::max(failed_matches_, 2);  // reseed
-      }
-    }
-    return;
-  }
-  // A rival place still agreeing with every view so far: the estimate is one of two look-alikes.
-  if (!rivals.empty()) return;
-  if (confirm_.turned_rad >= p_.confirm_turn_rad || confirm_.moved_m >= p_.confirm_move_m) {
-    confirm_ = {};
-    places_.clear();
-  }
-}
-
 void ParticleLocalizer::update_health() {
   const double sigma = position_sigma_m();
-  if (confirm_.active || sigma > told_.lost_position_sigma_m ||
+  if (confirmation_.active() || sigma > told_.lost_position_sigma_m ||
       failed_matches_ >= told_.lost_failed_matches ||
       view_changed_scans_ >= p_.view_change_lost_scans)
     health_ = LocalizationHealth::kLost;

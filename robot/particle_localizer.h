@@ -18,6 +18,13 @@
 // from the prior (KLD sampling then chooses fewer), and a settled filter weighs a scan only after
 // `update_min_m` of travel or `update_min_rad` of turn: in between the particles are left alone,
 // the estimate follows the odometry and every scan is still judged against the map.
+//
+// The parts, each in its own file and owning its parameters and state, as nav2_amcl splits
+// them: the motion model (particle_motion_model.h), the likelihood field model
+// (particle_field_model.h), KLD sampling (particle_kld_sampler.h), recovery with w_slow / w_fast
+// (particle_recovery.h) about the places a global match finds (particle_place_search.h), the
+// clusters (particle_clusters.h) and the confirmation of a reseeded estimate
+// (particle_confirmation.h). This class owns the cycle, the judging of each scan and the health.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +37,7 @@
 #include "robot/global_match.h"
 #include "robot/noise_learning.h"
 #include "robot/particle_clusters.h"
+#include "robot/particle_confirmation.h"
 #include "robot/particle_field_model.h"
 #include "robot/particle_kld_sampler.h"
 #include "robot/particle_motion_model.h"
@@ -44,11 +52,12 @@ namespace plantsim::robot {
 
 /// The particle filter's parameters (section `particles`): its parts' own, then the cycle's.
 struct ParticleParams {
-  KldSamplerParams kld;              ///< the set's size, bins and roughening
-  ParticleFieldParams field;         ///< the likelihood field model
-  ParticleMotionParams motion;       ///< the motion model (`motion_*` keys)
-  ParticleRecoveryParams recovery;   ///< w_slow / w_fast and the share drawn anew
-  ParticlePlaceSearchParams search;  ///< where fresh particles are drawn
+  KldSamplerParams kld;                ///< the set's size, bins and roughening
+  ParticleFieldParams field;           ///< the likelihood field model
+  ParticleMotionParams motion;         ///< the motion model (`motion_*` keys)
+  ParticleRecoveryParams recovery;     ///< w_slow / w_fast and the share drawn anew
+  ParticlePlaceSearchParams search;    ///< where fresh particles are drawn
+  ParticleConfirmationParams confirm;  ///< a reseeded estimate's confirmation
   /// A settled filter weighs a scan after this much travel or turn (AMCL's defaults): the same
   /// view weighed again makes the set surer than the scans are, and costs (at 0.05 m and rad a
   /// particle filter episode cost 2.6 to 5.2 times the EKF's).
@@ -70,22 +79,6 @@ struct ParticleParams {
   /// a row the filter reports itself lost.
   int view_change_returns = 10;
   int view_change_lost_scans = 8;
-  /// After a reseed the filter reports itself lost until its estimate is confirmed by views the
-  /// reseed did not use: the set one tight hypothesis and every scan agreeing with the map at
-  /// it (global_match.h's verify_agreement) while the robot turns this far or moves this far.
-  /// A scan that disagrees starts the confirmation again; `confirm_strikes` of them reseed,
-  /// searching wide even if the estimate fits best nearby (a look-alike seen from one side).
-  /// The reseed's other places are carried along meanwhile (place_hypotheses.h): the estimate
-  /// is not confirmed while one of them still agrees with the scans (`confirm_strikes`
-  /// contradictions or trailing the best place's summed log-likelihood by `rival_margin` rule a
-  /// place out), and an estimate whose place is ruled out, or is contradicted, hands over to them.
-  double confirm_turn_rad = 4.7;
-  double confirm_move_m = 3.0;
-  int confirm_strikes = 3;
-  double rival_margin = 30;
-  /// The estimate is not confirmed while its own place (refined onto each scan) lies farther
-  /// than this from it; after `confirm_strikes` such scans fresh particles are drawn about it.
-  double place_offset_m = 0.25;
   int seed = 1;  ///< the filter's random numbers (deterministic per seed)
 };
 
@@ -137,11 +130,6 @@ class ParticleLocalizer final : public PoseEstimator {
   void summarise();
   void judge(const LidarScan& scan);
   void update_health();
-  /// One scan's part in confirming a reseeded estimate (`agree`: the scan's agreement with the
-  /// map at it, none when too few beams judge) and in ruling out its rivals.
-  void confirm(const LidarScan& scan, const std::optional<double>& agree);
-  /// The scan's verdict on a place (refined onto the scan first, written back).
-  PlaceHypotheses::Verdict judge_place(const LidarScan& scan, geom::Pose2& place);
   /// One reading at rest: the Kalman update of the set's bias.
   void update_bias(double gyro_yaw_rate_radps);
   /// bias_ and bias_var_ from the set.
@@ -160,6 +148,7 @@ class ParticleLocalizer final : public PoseEstimator {
   KldSampler sampler_;
   ParticleRecovery recovery_;
   ParticlePlaceSearch search_;
+  ParticleConfirmation confirmation_;
   util::RandomStream rng_;
   std::vector<Particle> set_, scratch_;
   double since_weigh_m_ = 0, since_weigh_rad_ = 0;
@@ -173,21 +162,10 @@ class ParticleLocalizer final : public PoseEstimator {
   LocalizationHealth health_ = LocalizationHealth::kOk;
   bool unmatched_ = false;
   int relocalizations_ = 0;
-  struct Confirmation {
-    bool active = false;
-    double turned_rad = 0, moved_m = 0;
-    int strikes = 0;
-    int offset_scans = 0;  // scans in a row the estimate's own place lay off it
-  };
-  Confirmation confirm_;
-  std::optional<Place> nudge_;    // fresh particles to draw about the estimate's own place
-  PlaceHypotheses places_;        // the last reseed's places, until the scans rule them out
-  std::vector<Place> handover_;   // rivals still agreeing when the estimate was contradicted
   double last_share_ = -1;        // the last scan's explained share at the estimate
   int last_returns_ = 0;          // and its valid returns
   int view_changed_scans_ = 0;    // unexplained scans since the view changed at once
   bool estimate_agrees_ = false;  // the last scan agreed with the map at the estimate
-  bool doubted_ = false;  // the confirmation failed: the next search does not trust the estimate
 };
 
 }  // namespace plantsim::robot
