@@ -230,7 +230,7 @@ void check_consistency(const std::string& source, const EpisodeConfig& c) {
     throw worlds::WorldError(source, "localization.period_s",
                              "true-pose fixes exist only in perception.mode \"oracle\" (sensors "
                              "mode localises with the EKF)");
-  if (c.perception.particles.min_particles > c.perception.particles.max_particles)
+  if (c.perception.particles.kld.min_particles > c.perception.particles.kld.max_particles)
     throw worlds::WorldError(source, "particles.min_particles", "must not exceed max_particles");
   if (c.lidar.min_range_m >= c.lidar.max_range_m)
     throw worlds::WorldError(source, "lidar.min_range_m", "must be below lidar.max_range_m");

@@ -365,6 +365,8 @@ std::vector<double> average_nees(double left_mps, double right_mps, int runs, Li
     told_map.start = told;
     ParticleParams pp;
     pp.seed = static_cast<int>(seed);
+    pp.motion.distance_noise = ep.distance_noise;  // the particles' own motion model, matched
+    pp.motion.bias_walk_radps_per_sqrt_s = ep.bias_walk_radps_per_sqrt_s;
     std::unique_ptr<PoseEstimator> estimator;
     if (kind == "ekf")
       estimator = std::make_unique<EkfEstimator>(told_map, map, ep, GlobalMatchParams{});
