@@ -143,7 +143,10 @@ std::function<int()> add_batch_command(CLI::App& app) {
                   "Run only this episode (its id in episodes.jsonl) and write its run folder "
                   "(figures, replay)");
   opt->gate.add_to(cmd);
-  return [opt, cmd]() {
+  auto plugin_files = std::make_shared<std::vector<std::string>>();
+  add_plugin_option(cmd, *plugin_files);
+  return [opt, cmd, plugin_files]() {
+    load_plugins(*plugin_files);
     if (!opt->episode.empty()) {
       // One episode, exactly as the batch runs it, with the outputs of `plantsim run`.
       // Into a batch's own folder, it goes beside the records (episodes/<id>), never over them.

@@ -118,7 +118,12 @@ std::function<int()> add_run_command(CLI::App& app) {
                 "After charging starts, reverse to the staging pose (docking.undock)");
   cmd->add_flag("--animate", opt->animate,
                 "Also write animation frames (and an MP4 when ffmpeg is installed)");
-  return [opt, cmd]() { return run_one(*opt, command_line(cmd)); };
+  auto plugin_files = std::make_shared<std::vector<std::string>>();
+  add_plugin_option(cmd, *plugin_files);
+  return [opt, cmd, plugin_files]() {
+    load_plugins(*plugin_files);
+    return run_one(*opt, command_line(cmd));
+  };
 }
 
 }  // namespace plantsim::app

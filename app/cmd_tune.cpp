@@ -95,7 +95,10 @@ std::function<int()> add_tune_command(CLI::App& app) {
   cmd->add_flag("--fresh", opt->fresh,
                 "Discard the folder's earlier evaluations instead of resuming");
   cmd->add_flag("--check", opt->check, "Check the scenario, parameters and bounds; run nothing");
-  return [opt, cmd]() {
+  auto plugin_files = std::make_shared<std::vector<std::string>>();
+  add_plugin_option(cmd, *plugin_files);
+  return [opt, cmd, plugin_files]() {
+    load_plugins(*plugin_files);
     tune::TuneRequest r = opt->request;
     r.budget = opt->budget;
     r.min_wilson = opt->min_wilson;

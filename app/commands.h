@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace plantsim::app {
 
@@ -41,6 +42,11 @@ void refuse_output_over_input(const std::string& out, const std::string& input);
 /// `--shard i/n` of batch and tune: {i, n} with 0 <= i < n (std::invalid_argument otherwise).
 std::pair<int, int> parse_shard(const std::string& text);
 
+/// `--plugin FILE.so` (repeatable) on `cmd`, and the loading of what it names (before anything
+/// reads a configuration; a bad plugin throws plugins::PluginError, an invalid_argument: exit 2).
+void add_plugin_option(CLI::App* cmd, std::vector<std::string>& files);
+void load_plugins(const std::vector<std::string>& files);
+
 /// Each returns the action to run when its subcommand was chosen.
 std::function<int()> add_plan_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
@@ -58,5 +64,6 @@ std::function<int()> add_vary_command(CLI::App& app);
 std::function<int()> add_nav2_import_command(CLI::App& app);
 std::function<int()> add_tune_command(CLI::App& app);
 std::function<int()> add_diff_command(CLI::App& app);
+std::function<int()> add_info_command(CLI::App& app);
 
 }  // namespace plantsim::app

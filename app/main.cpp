@@ -132,6 +132,7 @@ int main(int argc, char** argv) {
   remember(plantsim::app::add_nav2_import_command(app));
   remember(plantsim::app::add_tune_command(app));
   remember(plantsim::app::add_diff_command(app));
+  remember(plantsim::app::add_info_command(app));
   remember(plantsim::app::add_coverage_command(app));
   remember(plantsim::app::add_coverage_study_command(app));
   for (CLI::App* sub : app.get_subcommands({}))

@@ -17,6 +17,7 @@
 #include "util/input_file.h"
 #include "worlds/decimal_number.h"
 #include "worlds/json_input.h"
+#include "plugins/plugin_loader.h"
 #include "worlds/known_keys.h"
 #include "worlds/names.h"
 #include "worlds/world_error.h"
@@ -303,8 +304,9 @@ void check_top_keys(const YAML::Node& doc, const std::string& path) {
   for (const auto& kv : doc) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     // `tune` is `plantsim tune`'s (tune/tune_spec.h): a batch runs the scenario's `worlds`.
-    const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers", "faults",
-                                            "sweep", "seeds",  "starts",   "gate",        "tune"};
+    const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers",
+                                            "faults", "sweep", "seeds",  "starts",
+                                            "gate",  "tune",   "plugins"};
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, key, worlds::unknown_key_problem(key, known));
   }
@@ -326,6 +328,26 @@ void read_worlds(const YAML::Node& doc, const std::string& path, const std::stri
     if (!std::filesystem::exists(resolved, ec))
       throw WorldError(path, field, "'" + w.Scalar() + "' not found (looked for " + resolved + ")");
     s.world_files.push_back(resolved);
+  }
+}
+
+/// The plugins the scenario's components come from, loaded before anything names them.
+void read_plugins(const YAML::Node& doc, const std::string& path, const std::string& base,
+                  BatchSpec& s) {
+  if (!doc["plugins"]) return;
+  if (!doc["plugins"].IsSequence())
+    throw WorldError(path, "plugins", "expected a list of plugin files (.so)");
+  for (std::size_t i = 0; i < doc["plugins"].size(); ++i) {
+    const YAML::Node p = doc["plugins"][i];
+    const std::string field = "plugins[" + std::to_string(i) + "]";
+    if (!p.IsScalar()) throw WorldError(path, field, "expected a file name");
+    const std::string resolved = util::resolve_input_path(p.Scalar(), base);
+    try {
+      plugins::load_plugin(resolved);
+    } catch (const plugins::PluginError& e) {
+      throw WorldError(path, field, e.what());
+    }
+    s.plugin_files.push_back(resolved);
   }
 }
 
@@ -585,6 +607,7 @@ BatchSpec read_batch_spec(const std::string& path) {
                        : worlds::name_from_file(path, "rename the scenario file or give it a name");
   if (const std::string problem = worlds::name_problem(s.name); !problem.empty())
     throw WorldError(path, "name", "the name " + problem);
+  read_plugins(doc, path, std::filesystem::path(path).parent_path().string(), s);
   read_worlds(doc, path, std::filesystem::path(path).parent_path().string(), s);
   read_planners(doc, path, s);
   read_controllers(doc, path, s);

@@ -87,6 +87,7 @@ struct BatchSpec {
   std::vector<std::string> world_files;
   std::vector<std::string> planners;
   std::vector<NamedConfig> controllers;
+  std::vector<std::string> plugin_files;  ///< `plugins:`, loaded when the scenario was read
   std::vector<FaultSetting>
       faults;                   ///< after expanding the sweep, if any (one per value and fault)
   std::string sweep_parameter;  ///< the swept parameter, or empty

@@ -10,6 +10,7 @@
 #include "episode/episode_config_json.h"
 #include "episode/episode_work.h"
 #include "robot/estimator_registry.h"
+#include "util/component_failure.h"
 #include "sim/kidnap_landing.h"
 #include "sim/target_catch.h"
 
@@ -192,15 +193,33 @@ class EpisodeRun::Loop {
   bool begin_control(double t_s) {
     t_s_ = t_s;
     const robot::SensorReadings readings = sensors_.read(physics_, t_s);  // sense
-    perception_ = &perceiver_.update(readings);                           // estimate
+    try {
+      perception_ = &perceiver_.update(readings);  // estimate
+    } catch (const util::ComponentFailure& e) {  // a plugin's estimator threw: the episode ends
+      perception_ = &perceiver_.current();
+      decision_ = plugin_failed(e);
+      return false;
+    }
     recorder_.perceived(t_s, physics_, *perception_, readings);
     if (sim::target_caught(physics_, plant_.robot.radius_m, config_.catch_distance_m)) {
       recorder_.caught(t_s, physics_, *perception_);
       return true;
     }
     recorder_.snapshot(t_s, *perception_, perceiver_);
-    decision_ = travel_->decide(*perception_);  // decide
+    try {
+      decision_ = travel_->decide(*perception_);  // decide
+    } catch (const util::ComponentFailure& e) {  // a plugin's controller threw: the episode ends
+      decision_ = plugin_failed(e);
+    }
     return false;
+  }
+
+  /// The decision that ends the episode when a plugin's component threw.
+  static robot::Decision plugin_failed(const util::ComponentFailure& e) {
+    robot::Decision d;
+    d.finished = robot::TravelEnd::kFailed;
+    d.give_up = robot::GiveUp{robot::FailureReason::kPluginError, e.what()};
+    return d;
   }
 
   /// Record the decision, actuate; true when the decision ended the episode.
@@ -283,8 +302,14 @@ EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
     return;
   }
   recorder_->first_plan(plan);
-  loop_ = std::make_unique<Loop>(
-      plant, map_, config, make_travel(map_, planner, config, plan, steering, result_), *recorder_);
+  try {
+    loop_ = std::make_unique<Loop>(plant, map_, config,
+                                   make_travel(map_, planner, config, plan, steering, result_),
+                                   *recorder_);
+  } catch (const util::ComponentFailure& e) {  // a plugin's factory threw for this episode
+    recorder_->not_started(
+        robot::Failure{robot::FailureReason::kPluginError, 0.0, map_.start, e.what()});
+  }
 }
 
 EpisodeRun::~EpisodeRun() = default;

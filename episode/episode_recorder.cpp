@@ -49,6 +49,12 @@ void EpisodeRecorder::no_way(const planner::PlanResult& plan, const Pose2& start
   event(Kind::kFailure, 0.0, start.position());
 }
 
+void EpisodeRecorder::not_started(const robot::Failure& why) {
+  r_.status = EpisodeStatus::kFailed;
+  r_.failure = why;
+  event(Kind::kFailure, why.time_s, why.pose.position());
+}
+
 void EpisodeRecorder::before_step(const PhysicsWorld& physics, const ContactState& contact) {
   metrics_.before_step(physics, contact);
 }

@@ -37,6 +37,8 @@ class EpisodeRecorder {
   void first_plan(const planner::PlanResult& plan);
   /// The planner found no way for a travel that needs one: the episode ended at `start`.
   void no_way(const planner::PlanResult& plan, const Pose2& start);
+  /// The episode ended before its first step for `why` (a plugin's factory threw).
+  void not_started(const robot::Failure& why);
 
   /// Every physics step, before and after it (collisions, driven length).
   void before_step(const PhysicsWorld& physics, const ContactState& contact);

@@ -6,7 +6,9 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
+#include "geometry/vec2.h"
 #include "robot/pose_estimator.h"
 #include "util/component_info.h"
 #include "util/component_registry.h"
@@ -20,10 +22,13 @@ namespace plantsim::robot {
 class MapRaycaster;
 struct PerceptionParams;
 
-/// What an estimator is built for: the robot's map (where it starts, the walls and boxes it
-/// knows). The raycaster and the perception's typed parameters
-/// are the built-ins' own (opaque to a plugin, which gets its values as ParamValues).
+/// What an estimator is built for: the robot's map (where it starts, the floor inside the walls,
+/// the boxes it knows). The last three are the built-ins' own, opaque to a plugin (which gets its
+/// parameters as ParamValues).
 struct EstimatorContext {
+  geom::Pose2 start;  ///< where the robot starts, known (map frame)
+  geom::Rect floor;
+  std::vector<geom::Rect> obstacles;  ///< the map's boxes and the charger's block
   const worlds::World* map = nullptr;
   const MapRaycaster* raycaster = nullptr;
   const PerceptionParams* perception = nullptr;

@@ -25,6 +25,8 @@ std::string_view to_string(FailureReason r) {
       return "trapped";
     case FailureReason::kTimeout:
       return "timeout";
+    case FailureReason::kPluginError:
+      return "plugin_error";
   }
   return "unknown";
 }

@@ -23,13 +23,15 @@ enum class FailureReason {
   kTargetLost,            ///< a pursuit that never caught its target
   kTrapped,               ///< seed 001's potential field met too many local minima
   kTimeout,               ///< still making progress when the time ran out
+  kPluginError,           ///< a plugin's component threw (its message is the detail)
 };
 inline constexpr std::array kAllFailureReasons{
     FailureReason::kCollision,    FailureReason::kLocalizationLost,
     FailureReason::kNoPath,       FailureReason::kBlocked,
     FailureReason::kStuck,        FailureReason::kDockRetriesExhausted,
     FailureReason::kUndockFailed, FailureReason::kTargetLost,
-    FailureReason::kTrapped,      FailureReason::kTimeout};
+    FailureReason::kTrapped,      FailureReason::kTimeout,
+    FailureReason::kPluginError};
 
 std::string_view to_string(FailureReason r);
 /// The reason named `text` (as to_string writes it), or none.

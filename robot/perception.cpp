@@ -51,8 +51,15 @@ std::unique_ptr<PoseEstimator> make_estimator(const worlds::World& map,
                                               const MapRaycaster& raycaster,
                                               const PerceptionParams& p) {
   const EstimatorEntry& e = estimators().at(p.estimator);
-  std::unique_ptr<PoseEstimator> made =
-      e.make({&map, &raycaster, &p}, util::ParamValues(p.estimator_params));
+  EstimatorContext context;
+  context.start = map.start;
+  context.floor = map.floor;
+  context.obstacles = map.obstacles;
+  context.obstacles.push_back(worlds::charger_body(map).bounding_box());
+  context.map = &map;
+  context.raycaster = &raycaster;
+  context.perception = &p;
+  std::unique_ptr<PoseEstimator> made = e.make(context, util::ParamValues(p.estimator_params));
   if (!made)
     throw std::runtime_error("estimator \"" + e.name + "\" (" + e.origin + ") made nothing");
   return made;

@@ -9,7 +9,7 @@ import os
 import re
 import sys
 
-ORDER = ["util", "geometry", "worlds", "planner", "controller", "robot", "sim", "episode", "render", "batch",
+ORDER = ["util", "geometry", "worlds", "planner", "controller", "robot", "plugins", "sim", "episode", "render", "batch",
          "tune", "bench", "app", "python"]
 CONSUMERS = {"tests", "fuzz"}  # may include and link every module; nothing includes them
 NOT_CODE = {"build", "build-sanitize", "results", "docs", "scripts", "data", "configs", "examples", "cmake"}

@@ -89,7 +89,8 @@ Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
   }
   // A robot that did not know where it was failed for that, whatever it then did.
   std::string why;
-  if (f.reason != FailureReason::kTrapped && (lost(then, why) || lost(now_, why))) {
+  if (f.reason != FailureReason::kTrapped && f.reason != FailureReason::kPluginError &&
+      (lost(then, why) || lost(now_, why))) {
     f.detail = why + " (" + std::string(to_string(f.reason)) + ": " + f.detail + ")";
     f.reason = FailureReason::kLocalizationLost;
   }

@@ -1,0 +1,59 @@
+// `plantsim info`: every registered component (the built-ins and those of the plugins given with
+// --plugin) with its origin, summary, capabilities and parameters (default and bounds), as the
+// configuration spells them: what a user needs to choose, configure, sweep and tune it.
+#include <iostream>
+
+#include "app/commands.h"
+#include "controller/local_controller_registry.h"
+#include "robot/estimator_registry.h"
+#include "util/c_number.h"
+
+namespace plantsim::app {
+
+namespace {
+
+std::string number(double v) {
+  char text[64];
+  util::c_snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+void print_component(const util::ComponentInfo& c) {
+  std::cout << "  " << c.name << "  (" << c.origin << ")\n    " << c.summary << "\n";
+  if (!c.capabilities.empty()) {
+    std::cout << "    capabilities:";
+    for (const std::string& k : c.capabilities) std::cout << " " << k;
+    std::cout << "\n";
+  }
+  for (const util::ParamSpec& p : c.params) {
+    const char* kind = p.kind == util::ParamKind::kFlag    ? "flag"
+                       : p.kind == util::ParamKind::kWhole ? "whole"
+                                                           : "real";
+    std::cout << "    " << p.path() << " = " << number(p.default_value) << "  " << kind << " in "
+              << (p.above ? "(" : "[") << number(p.lo) << ", " << number(p.hi) << "]"
+              << (p.doc.empty() ? "" : "  " + p.doc) << "\n";
+  }
+}
+
+template <typename Registry>
+void print_registry(const std::string& title, const std::string& key, const Registry& r) {
+  std::cout << title << " (" << key << "):\n";
+  for (const auto* e : r.entries()) print_component(*e);
+}
+
+}  // namespace
+
+std::function<int()> add_info_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "info", "List the components (built-in and the plugins') with their parameters and bounds");
+  auto plugin_files = std::make_shared<std::vector<std::string>>();
+  add_plugin_option(cmd, *plugin_files);
+  return [plugin_files]() {
+    load_plugins(*plugin_files);
+    print_registry("local controllers", "local_controller", controller::local_controllers());
+    print_registry("estimators", "localization.estimator", robot::estimators());
+    return kExitOk;
+  };
+}
+
+}  // namespace plantsim::app

@@ -1,0 +1,175 @@
+// The loader and the registrar it hands a plugin.
+#include "plugins/plugin_loader.h"
+
+#include <dlfcn.h>
+
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <set>
+
+#include "controller/local_controller_registry.h"
+#include "plugins/guarded_components.h"
+#include "plugins/plugin_api.h"
+#include "util/component_failure.h"
+#include "util/component_registry.h"
+
+namespace plantsim::plugins {
+
+namespace {
+
+std::mutex& loader_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::deque<LoadedPlugin>& loaded() {
+  static auto* plugins = new std::deque<LoadedPlugin>;  // as long as the components it lists
+  return *plugins;
+}
+
+/// The component's declared parameters, checked: sections and keys a configuration can spell,
+/// defaults within their bounds, no key declared twice.
+void check_params(const util::ComponentInfo& c, const std::string& who) {
+  std::set<std::string> seen;
+  for (const util::ParamSpec& s : c.params) {
+    if (!util::component_name_ok(s.section) || !util::component_name_ok(s.name))
+      throw PluginError(who + ": parameter \"" + s.path() +
+                        "\" is not a section.key a configuration can spell (a-z, 0-9, '-', "
+                        "'_', starting with a letter)");
+    if (!seen.insert(s.path()).second)
+      throw PluginError(who + ": parameter \"" + s.path() + "\" declared twice");
+    if (!(s.lo <= s.hi) || !(s.default_value >= s.lo && s.default_value <= s.hi) ||
+        (s.above && !(s.default_value > s.lo)))
+      throw PluginError(who + ": parameter \"" + s.path() + "\" has a default outside its bounds");
+  }
+}
+
+/// Collects a plugin's components; add() puts them into the registries once all are checked.
+class CheckingRegistrar : public Registrar {
+ public:
+  explicit CheckingRegistrar(std::string file) : file_(std::move(file)) {}
+
+  void add_local_controller(controller::LocalControllerEntry e) override {
+    controllers_.push_back(std::move(e));
+  }
+  void add_estimator(robot::EstimatorEntry e) override { estimators_.push_back(std::move(e)); }
+
+  /// Checks every component, tries each factory with its defaults, then registers them all.
+  void add(LoadedPlugin& record) {
+    if (controllers_.empty() && estimators_.empty())
+      throw PluginError(file_ + ": the plugin registered no component");
+    std::set<std::string> names;
+    for (const auto& e : controllers_) check(e, "local controller", names);
+    for (const auto& e : estimators_) check(e, "estimator", names);
+    for (auto& e : controllers_) {
+      e = guarded(std::move(e), file_);
+      try_factory(e, controller::LocalControllerContext{});
+    }
+    for (auto& e : estimators_) {
+      e = guarded(std::move(e), file_);
+      robot::EstimatorContext context;
+      context.floor = {0, 0, 10, 10};
+      context.start = {1, 1, 0};
+      try_factory(e, context);
+    }
+    for (auto& e : controllers_) {
+      record.local_controllers.push_back(e.name);
+      controller::local_controllers().add(std::move(e), file_);
+    }
+    for (auto& e : estimators_) {
+      record.estimators.push_back(e.name);
+      robot::estimators().add(std::move(e), file_);
+    }
+  }
+
+ private:
+  template <typename Entry>
+  void check(const Entry& e, const std::string& kind, std::set<std::string>& names) {
+    const std::string who = file_ + ": " + kind + " \"" + e.name + "\"";
+    if (!util::component_name_ok(e.name))
+      throw PluginError(file_ + ": " + kind + " name \"" + e.name +
+                        "\" is not a name a configuration can spell (a-z, 0-9, '-', '_', "
+                        "starting with a letter, at most 48)");
+    if (!e.make) throw PluginError(who + " has no factory");
+    const bool taken = kind == "estimator" ? robot::estimators().find(e.name) != nullptr
+                                           : controller::local_controllers().find(e.name) != nullptr;
+    if (taken || !names.insert(kind + e.name).second) {
+      const auto* have = kind == "estimator"
+                             ? static_cast<const util::ComponentInfo*>(robot::estimators().find(e.name))
+                             : controller::local_controllers().find(e.name);
+      throw PluginError(who + " clashes with the one from " +
+                        (have ? have->origin : std::string("the same plugin")));
+    }
+    check_params(e, who);
+  }
+
+  template <typename Entry, typename Context>
+  void try_factory(const Entry& e, const Context& context) {
+    try {
+      e.make(context, util::defaults_of(e.params));
+    } catch (const util::ComponentFailure& failure) {
+      throw PluginError(file_ + ": its factory failed with the default parameters: " +
+                        failure.what());
+    }
+  }
+
+  std::string file_;
+  std::vector<controller::LocalControllerEntry> controllers_;
+  std::vector<robot::EstimatorEntry> estimators_;
+};
+
+}  // namespace
+
+const LoadedPlugin& load_plugin(const std::string& path) {
+  std::lock_guard<std::mutex> lock(loader_mutex());
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw PluginError(path + ": no such plugin file");
+  const std::string canonical = std::filesystem::canonical(path, ec).string();
+  for (const LoadedPlugin& p : loaded())
+    if (p.canonical == canonical) return p;
+  // A path without a slash would be searched for on the library path: load the file named.
+  const std::string opened = std::filesystem::absolute(path).string();
+  void* handle = dlopen(opened.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = dlerror();
+    throw PluginError(path + ": cannot be loaded: " + (why ? why : "unknown reason"));
+  }
+  using AbiFunction = int (*)();
+  using RegisterFunction = void (*)(Registrar&);
+  auto abi = reinterpret_cast<AbiFunction>(dlsym(handle, PLANTSIM_PLUGIN_ABI_SYMBOL));
+  auto enter = reinterpret_cast<RegisterFunction>(dlsym(handle, PLANTSIM_PLUGIN_REGISTER_SYMBOL));
+  // The library stays open even when refused: a static object of it may already be registered
+  // with the C++ runtime, and closing it would leave that dangling.
+  if (!abi)
+    throw PluginError(path + ": not a plantsim plugin (no " PLANTSIM_PLUGIN_ABI_SYMBOL
+                             " symbol; build it with PLANTSIM_PLUGIN from plugins/plugin_api.h)");
+  if (abi() != PLANTSIM_PLUGIN_ABI_VERSION)
+    throw PluginError(path + ": built for plugin ABI version " + std::to_string(abi()) +
+                      ", this plantsim loads version " +
+                      std::to_string(PLANTSIM_PLUGIN_ABI_VERSION) +
+                      ": rebuild it against this plantsim's installed package");
+  if (!enter)
+    throw PluginError(path + ": no " PLANTSIM_PLUGIN_REGISTER_SYMBOL " symbol");
+  CheckingRegistrar registrar(path);
+  try {
+    enter(registrar);
+  } catch (const PluginError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw PluginError(path + ": its registration threw: " + e.what());
+  } catch (...) {
+    throw PluginError(path + ": its registration threw");
+  }
+  LoadedPlugin record{path, canonical, {}, {}};
+  registrar.add(record);
+  loaded().push_back(std::move(record));
+  return loaded().back();
+}
+
+std::vector<LoadedPlugin> loaded_plugins() {
+  std::lock_guard<std::mutex> lock(loader_mutex());
+  return {loaded().begin(), loaded().end()};
+}
+
+}  // namespace plantsim::plugins
