@@ -10,9 +10,9 @@
 #include "episode/episode_config_json.h"
 #include "episode/episode_work.h"
 #include "robot/estimator_registry.h"
-#include "util/component_failure.h"
 #include "sim/kidnap_landing.h"
 #include "sim/target_catch.h"
+#include "util/component_failure.h"
 
 namespace plantsim::episode {
 
@@ -195,7 +195,7 @@ class EpisodeRun::Loop {
     const robot::SensorReadings readings = sensors_.read(physics_, t_s);  // sense
     try {
       perception_ = &perceiver_.update(readings);  // estimate
-    } catch (const util::ComponentFailure& e) {  // a plugin's estimator threw: the episode ends
+    } catch (const util::ComponentFailure& e) {    // a plugin's estimator threw: the episode ends
       perception_ = &perceiver_.current();
       decision_ = plugin_failed(e);
       return false;
@@ -208,7 +208,7 @@ class EpisodeRun::Loop {
     recorder_.snapshot(t_s, *perception_, perceiver_);
     try {
       decision_ = travel_->decide(*perception_);  // decide
-    } catch (const util::ComponentFailure& e) {  // a plugin's controller threw: the episode ends
+    } catch (const util::ComponentFailure& e) {   // a plugin's controller threw: the episode ends
       decision_ = plugin_failed(e);
     }
     return false;

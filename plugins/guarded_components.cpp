@@ -115,8 +115,8 @@ controller::LocalControllerEntry guarded(controller::LocalControllerEntry e,
 }
 
 robot::EstimatorEntry guarded(robot::EstimatorEntry e, const std::string& origin) {
-  guard_factory<robot::EstimatorEntry, GuardedEstimator>(e,
-                                                        "estimator \"" + e.name + "\" of " + origin);
+  guard_factory<robot::EstimatorEntry, GuardedEstimator>(
+      e, "estimator \"" + e.name + "\" of " + origin);
   return e;
 }
 

@@ -34,11 +34,11 @@ class Registrar {
 
 /// In one source file of the plugin: `PLANTSIM_PLUGIN(my_register)` where
 /// `void my_register(plantsim::plugins::Registrar&)` adds the plugin's components.
-#define PLANTSIM_PLUGIN(register_function)                                                  \
-  extern "C" __attribute__((visibility("default"))) int plantsim_plugin_abi_version() {    \
-    return PLANTSIM_PLUGIN_ABI_VERSION;                                                     \
-  }                                                                                         \
-  extern "C" __attribute__((visibility("default"))) void plantsim_plugin_register(         \
-      plantsim::plugins::Registrar& registrar) {                                            \
-    register_function(registrar);                                                           \
+#define PLANTSIM_PLUGIN(register_function)                                              \
+  extern "C" __attribute__((visibility("default"))) int plantsim_plugin_abi_version() { \
+    return PLANTSIM_PLUGIN_ABI_VERSION;                                                 \
+  }                                                                                     \
+  extern "C" __attribute__((visibility("default"))) void plantsim_plugin_register(      \
+      plantsim::plugins::Registrar& registrar) {                                        \
+    register_function(registrar);                                                       \
   }

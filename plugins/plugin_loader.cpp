@@ -91,12 +91,14 @@ class CheckingRegistrar : public Registrar {
                         "\" is not a name a configuration can spell (a-z, 0-9, '-', '_', "
                         "starting with a letter, at most 48)");
     if (!e.make) throw PluginError(who + " has no factory");
-    const bool taken = kind == "estimator" ? robot::estimators().find(e.name) != nullptr
-                                           : controller::local_controllers().find(e.name) != nullptr;
+    const bool taken = kind == "estimator"
+                           ? robot::estimators().find(e.name) != nullptr
+                           : controller::local_controllers().find(e.name) != nullptr;
     if (taken || !names.insert(kind + e.name).second) {
-      const auto* have = kind == "estimator"
-                             ? static_cast<const util::ComponentInfo*>(robot::estimators().find(e.name))
-                             : controller::local_controllers().find(e.name);
+      const auto* have =
+          kind == "estimator"
+              ? static_cast<const util::ComponentInfo*>(robot::estimators().find(e.name))
+              : controller::local_controllers().find(e.name);
       throw PluginError(who + " clashes with the one from " +
                         (have ? have->origin : std::string("the same plugin")));
     }
@@ -108,8 +110,8 @@ class CheckingRegistrar : public Registrar {
     try {
       e.make(context, util::defaults_of(e.params));
     } catch (const util::ComponentFailure& failure) {
-      throw PluginError(file_ + ": its factory failed with the default parameters: " +
-                        failure.what());
+      throw PluginError(file_ +
+                        ": its factory failed with the default parameters: " + failure.what());
     }
   }
 
@@ -149,8 +151,7 @@ const LoadedPlugin& load_plugin(const std::string& path) {
                       ", this plantsim loads version " +
                       std::to_string(PLANTSIM_PLUGIN_ABI_VERSION) +
                       ": rebuild it against this plantsim's installed package");
-  if (!enter)
-    throw PluginError(path + ": no " PLANTSIM_PLUGIN_REGISTER_SYMBOL " symbol");
+  if (!enter) throw PluginError(path + ": no " PLANTSIM_PLUGIN_REGISTER_SYMBOL " symbol");
   CheckingRegistrar registrar(path);
   try {
     enter(registrar);
