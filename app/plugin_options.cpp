@@ -12,7 +12,7 @@ void add_plugin_option(CLI::App* cmd, std::vector<std::string>& files) {
 }
 
 void load_plugins(const std::vector<std::string>& files) {
-  for (const std::string& f : files) plugins::load_plugin(f);  // PluginError: exit 2
+  for (const std::string& f : files) plugins::load_plugin(f, true);  // PluginError: exit 2
 }
 
 }  // namespace plantsim::app

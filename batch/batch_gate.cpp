@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "batch/wilson_interval.h"
+#include "plugins/plugin_loader.h"
 #include "render/report.h"
 #include "util/fixed_text.h"
 #include "util/shell_word.h"
@@ -119,7 +120,8 @@ std::string episode_rerun_command(const std::string& scenario_path, const std::s
                                   const std::string& out_dir) {
   return "plantsim batch " + util::shell_word(scenario_path) + " --episode " +
          util::shell_word(id) + " --out " +
-         (out_dir == "DIR" ? out_dir : util::shell_word(out_dir));
+         (out_dir == "DIR" ? out_dir : util::shell_word(out_dir)) +
+         plugins::command_line_plugin_arguments();
 }
 
 namespace {

@@ -26,6 +26,7 @@
 #include "batch/progress.h"
 #include "batch/scenario_setup.h"
 #include "episode/episode_work.h"
+#include "plugins/plugin_loader.h"
 #include "util/atomic_file.h"
 #include "util/folder_lock.h"
 #include "util/thread_team.h"
@@ -185,7 +186,8 @@ void write_report(const RunContext& run, const std::string& scenario_path,
                                                     std::to_string(o.shard_count)
                                               : "";
   write_batch_report(records, o.out_dir, "plantsim batch: " + run.spec.name,
-                     "plantsim batch " + scenario_path + " --out " + o.out_dir + shard,
+                     "plantsim batch " + scenario_path + " --out " + o.out_dir + shard +
+                         plugins::command_line_plugin_arguments(),
                      o.figures ? &run.loaded.worlds : nullptr, run.spec.planners,
                      o.gate.applied_to(run.spec.gate), o.figures, made_by, failures, scenario_path);
 }

@@ -13,6 +13,7 @@
 #include "plugins/plugin_api.h"
 #include "util/component_failure.h"
 #include "util/component_registry.h"
+#include "util/shell_word.h"
 
 namespace plantsim::plugins {
 
@@ -122,14 +123,17 @@ class CheckingRegistrar : public Registrar {
 
 }  // namespace
 
-const LoadedPlugin& load_plugin(const std::string& path) {
+const LoadedPlugin& load_plugin(const std::string& path, bool from_command_line) {
   std::lock_guard<std::mutex> lock(loader_mutex());
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw PluginError(path + ": no such plugin file");
   const std::string canonical = std::filesystem::canonical(path, ec).string();
-  for (const LoadedPlugin& p : loaded())
-    if (p.canonical == canonical) return p;
+  for (LoadedPlugin& p : loaded())
+    if (p.canonical == canonical) {
+      p.from_command_line |= from_command_line;
+      return p;
+    }
   // A path without a slash would be searched for on the library path: load the file named.
   const std::string opened = std::filesystem::absolute(path).string();
   void* handle = dlopen(opened.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -162,10 +166,17 @@ const LoadedPlugin& load_plugin(const std::string& path) {
   } catch (...) {
     throw PluginError(path + ": its registration threw");
   }
-  LoadedPlugin record{path, canonical, {}, {}};
+  LoadedPlugin record{path, from_command_line, canonical, {}, {}};
   registrar.add(record);
   loaded().push_back(std::move(record));
   return loaded().back();
+}
+
+std::string command_line_plugin_arguments() {
+  std::string out;
+  for (const LoadedPlugin& p : loaded_plugins())
+    if (p.from_command_line) out += " --plugin " + util::shell_word(p.path);
+  return out;
 }
 
 std::vector<LoadedPlugin> loaded_plugins() {

@@ -17,13 +17,19 @@ class PluginError : public std::invalid_argument {
 };
 
 struct LoadedPlugin {
-  std::string path;  ///< as given
+  std::string path;                ///< as given
+  bool from_command_line = false;  ///< given with --plugin (not named by a scenario)
   std::string canonical;
   std::vector<std::string> local_controllers, estimators;  ///< the names it registered
 };
 
 /// Loads the plugin at `path` (once: a second load of the same file returns the first).
-const LoadedPlugin& load_plugin(const std::string& path);
+/// `from_command_line`: given with --plugin, so a printed re-run command must repeat it.
+const LoadedPlugin& load_plugin(const std::string& path, bool from_command_line = false);
+
+/// " --plugin FILE" for each plugin given on the command line, quoted for the shell: what a
+/// printed re-run command adds so that it runs with the same components.
+std::string command_line_plugin_arguments();
 
 /// Every plugin loaded so far, in order.
 std::vector<LoadedPlugin> loaded_plugins();
