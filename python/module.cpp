@@ -20,4 +20,5 @@ PYBIND11_MODULE(_plantsim, m) {
   bind_tune(m);
   bind_nav2(m);
   bind_env(m);
+  bind_plugins(m);
 }

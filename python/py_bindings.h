@@ -14,5 +14,6 @@ void bind_batch(py::module_& m);
 void bind_tune(py::module_& m);
 void bind_nav2(py::module_& m);
 void bind_env(py::module_& m);
+void bind_plugins(py::module_& m);
 
 }  // namespace plantsim::python

@@ -30,13 +30,13 @@ def _find_shared_data():
 if not os.environ.get("PLANTSIM_DATA") and _find_shared_data():
     os.environ["PLANTSIM_DATA"] = _find_shared_data()  # read by the C++ loaders; yours wins
 
-from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, load_world, nav2_import, plan,
-                        planners, run)
+from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, components, load_plugin, load_world,
+                        nav2_import, plan, planners, run)
 from ._plantsim import _batch, _tune
 from .env import Env, VectorEnv
 
-__all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "load_world",
-           "nav2_import", "plan", "planners", "run", "tune"]
+__all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "components",
+           "load_plugin", "load_world", "nav2_import", "plan", "planners", "run", "tune"]
 
 
 def _number(text):
