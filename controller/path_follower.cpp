@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "util/component_failure.h"
+
 namespace plantsim::controller {
 
 double uncertainty_speed_fraction(const PathFollowParams& p, double position_sigma_m) {
@@ -18,16 +20,28 @@ double uncertainty_speed_fraction(const PathFollowParams& p, double position_sig
 PathFollower::PathFollower(std::unique_ptr<LocalController> tracker, PathFollowParams params,
                            InPlaceTurn turn, std::vector<Vec2> path)
     : tracker_(std::move(tracker)), params_(params), turn_(turn) {
-  tracker_->set_path(std::move(path));
+  replace_path(std::move(path));
 }
 
-void PathFollower::replace_path(std::vector<Vec2> path) { tracker_->set_path(std::move(path)); }
+void PathFollower::replace_path(std::vector<Vec2> path) {
+  try {
+    tracker_->set_path(std::move(path));
+  } catch (...) {
+    if (tracker_->plugin_origin().empty()) throw;  // a built-in's: plantsim's own error
+    util::rethrow_as_component_failure(tracker_->plugin_origin());
+  }
+}
 
 FollowStep PathFollower::step(const DockingInput& in, MotionGuard& guard,
                               const YieldParams& yield) {
   FollowStep out;
-  TrackingCommand t =
-      tracker_->step({in.pose, in.speed_mps, in.yaw_rate_radps, in.dt_s, &in.nearby_obstacles});
+  TrackingCommand t;
+  try {
+    t = tracker_->step({in.pose, in.speed_mps, in.yaw_rate_radps, in.dt_s, &in.nearby_obstacles});
+  } catch (...) {
+    if (tracker_->plugin_origin().empty()) throw;  // a built-in's: plantsim's own error
+    util::rethrow_as_component_failure(tracker_->plugin_origin());
+  }
   // Slower when unsure where it is: the same arc, at a share of the speed.
   const double slow = uncertainty_speed_fraction(params_, in.position_sigma_m);
   t.twist = {slow * t.twist.v_mps, slow * t.twist.omega_radps};

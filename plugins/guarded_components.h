@@ -1,6 +1,6 @@
-// A plugin's components wrapped so that whatever they throw, at construction or at any call,
+// A plugin's components guarded so that whatever they throw, at construction or at any call,
 // reaches the episode as util::ComponentFailure naming the plugin's file and the component: the
-// episode ends with `plugin_error` and the batch goes on. Built-ins are never wrapped.
+// episode ends with `plugin_error` and the batch goes on. Built-ins are never guarded.
 #pragma once
 
 #include "controller/local_controller.h"

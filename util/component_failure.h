@@ -4,6 +4,7 @@
 // component and what it said.
 #pragma once
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -13,5 +14,19 @@ class ComponentFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// Inside a catch: rethrows the exception being handled as a ComponentFailure naming `who`.
+[[noreturn, gnu::cold, gnu::noinline]] inline void rethrow_as_component_failure(
+    const std::string& who) {
+  try {
+    throw;
+  } catch (const ComponentFailure&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw ComponentFailure(who + " threw: " + e.what());
+  } catch (...) {
+    throw ComponentFailure(who + " threw something that is not a std::exception");
+  }
+}
 
 }  // namespace plantsim::util
