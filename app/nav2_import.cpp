@@ -192,6 +192,13 @@ void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string
   im.rest(c, w, "no counterpart in plantsim's pure pursuit");
 }
 
+/// plantsim's local controller in the manner of a Nav2 controller plugin, or null.
+const char* plantsim_counterpart(const std::string& plugin) {
+  if (plugin == "nav2_mppi_controller::MPPIController") return "mppi";
+  if (plugin == "dwb_core::DWBLocalPlanner") return "dwb";
+  return nullptr;
+}
+
 void controller_server(Importer& im, const YAML::Node& root) {
   const YAML::Node s = Importer::params(root["controller_server"]);
   if (!s) return;
@@ -211,7 +218,13 @@ void controller_server(Importer& im, const YAML::Node& root) {
     const std::string plugin = c["plugin"] ? c["plugin"].Scalar() : "";
     if (plugin == kRpp)
       regulated_pure_pursuit(im, c, w + "." + id);
-    else {
+    else if (const char* own = plantsim_counterpart(plugin)) {
+      im.out().plugins_not_implemented.push_back(id + ": " + plugin);
+      im.rest(c, w + "." + id,
+              "a parameter of " + plugin + ": plantsim has it (local_controller: " + own +
+                  ", docs/controllers.md) but nav2-import does not map its parameters yet; "
+                  "pure pursuit drives the imported config");
+    } else {
       im.out().plugins_not_implemented.push_back(id + ": " + plugin);
       im.rest(c, w + "." + id,
               "a parameter of " + plugin +

@@ -12,12 +12,12 @@
 #include "episode/episode_config_json.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
+#include "plugins/plugin_loader.h"
 #include "util/c_number.h"
 #include "util/data_dir.h"
 #include "util/input_file.h"
 #include "worlds/decimal_number.h"
 #include "worlds/json_input.h"
-#include "plugins/plugin_loader.h"
 #include "worlds/known_keys.h"
 #include "worlds/names.h"
 #include "worlds/world_error.h"
@@ -304,9 +304,9 @@ void check_top_keys(const YAML::Node& doc, const std::string& path) {
   for (const auto& kv : doc) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     // `tune` is `plantsim tune`'s (tune/tune_spec.h): a batch runs the scenario's `worlds`.
-    const std::vector<std::string> known = {"name",  "worlds", "planners", "controllers",
-                                            "faults", "sweep", "seeds",  "starts",
-                                            "gate",  "tune",   "plugins"};
+    const std::vector<std::string> known = {"name",   "worlds", "planners", "controllers",
+                                            "faults", "sweep",  "seeds",    "starts",
+                                            "gate",   "tune",   "plugins"};
     if (std::find(known.begin(), known.end(), key) == known.end())
       throw WorldError(path, key, worlds::unknown_key_problem(key, known));
   }
