@@ -32,6 +32,20 @@ Pose2 PathProgress::goal() const {
   return {b.x, b.y, std::atan2(b.y - a.y, b.x - a.x)};
 }
 
+void SamplingController::set_path(std::vector<Vec2> path) {
+  set_method_path(path);
+  progress_ = PathProgress(std::move(path));
+}
+
+TrackingCommand SamplingController::step(const LocalQuery& q) {
+  TrackingCommand out;
+  progress_.update(q.pose, 0.5, goal_tolerance_m_, out);
+  if (out.goal_reached) return out;
+  const ClearanceGrid field = local_clearance(ctx_, q, 3.0, 0.05);
+  out.twist = sample(q, field, progress_.goal());
+  return out;
+}
+
 ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuery& q,
                               double half_side_m, double cell_m) {
   // Boxes beyond the window and the field's reach (its own half side) change no cell.

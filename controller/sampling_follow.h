@@ -34,4 +34,26 @@ class PathProgress {
 ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuery& q,
                               double half_side_m, double cell_m);
 
+/// A sampling method as a local controller: progress on the plan, the goal and the local field
+/// (a 6 m window in 5 cm cells) are this adapter's; the method only samples the command.
+class SamplingController : public LocalController {
+ public:
+  SamplingController(const LocalControllerContext& ctx, double goal_tolerance_m)
+      : ctx_(ctx), goal_tolerance_m_(goal_tolerance_m) {}
+
+  void set_path(std::vector<Vec2> path) final;
+  TrackingCommand step(const LocalQuery& q) final;
+
+ protected:
+  virtual void set_method_path(const std::vector<Vec2>& path) = 0;
+  /// The command to drive now, from the field and the plan's end.
+  virtual Twist sample(const LocalQuery& q, const ClearanceGrid& field, const Pose2& goal) = 0;
+  const LocalControllerContext& context() const { return ctx_; }
+
+ private:
+  LocalControllerContext ctx_;
+  double goal_tolerance_m_;
+  PathProgress progress_;
+};
+
 }  // namespace plantsim::controller

@@ -47,32 +47,24 @@ const util::ParamRows<DwbControllerParams>& dwb_param_rows() {
 
 namespace {
 
-class DwbController : public LocalController {
+class DwbController : public SamplingController {
  public:
   DwbController(const LocalControllerContext& ctx, DwbControllerParams p)
-      : ctx_(ctx), p_(fitted(p, ctx)), planner_(p_.planner) {}
+      : SamplingController(ctx, p.goal_tolerance_m), p_(fitted(p, ctx)), planner_(p_.planner) {}
 
-  void set_path(std::vector<geom::Vec2> path) override {
-    planner_.set_path(path);
-    progress_ = PathProgress(std::move(path));
-  }
+ private:
+  void set_method_path(const std::vector<geom::Vec2>& path) override { planner_.set_path(path); }
 
-  TrackingCommand step(const LocalQuery& q) override {
-    TrackingCommand out;
-    progress_.update(q.pose, 0.5, p_.goal_tolerance_m, out);
-    if (out.goal_reached) return out;
-    const ClearanceGrid grid = local_clearance(ctx_, q, 3.0, 0.05);
+  Twist sample(const LocalQuery& q, const ClearanceGrid& field, const Pose2& goal) override {
     DwbQuery query;
     query.pose = q.pose;
     query.velocity = {q.speed_mps, q.yaw_rate_radps};
-    query.goal = progress_.goal();
-    query.clearance = &grid;
-    query.robot_radius_m = ctx_.footprint_radius_m;
-    out.twist = planner_.step(query);
-    return out;
+    query.goal = goal;
+    query.clearance = &field;
+    query.robot_radius_m = context().footprint_radius_m;
+    return planner_.step(query);
   }
 
- private:
   /// The window is what one control period reaches (Nav2 sets controller_period from the
   /// controller's frequency), no faster than the wheels turn.
   static DwbControllerParams fitted(DwbControllerParams p, const LocalControllerContext& ctx) {
@@ -81,10 +73,8 @@ class DwbController : public LocalController {
     return p;
   }
 
-  LocalControllerContext ctx_;
   DwbControllerParams p_;
   DwbPlanner planner_;
-  PathProgress progress_;
 };
 
 }  // namespace

@@ -72,33 +72,27 @@ const util::ParamRows<MppiControllerParams>& mppi_param_rows() {
 
 namespace {
 
-class MppiController : public LocalController {
+class MppiController : public SamplingController {
  public:
   MppiController(const LocalControllerContext& ctx, MppiControllerParams p)
-      : ctx_(ctx), p_(bounded_by_motors(p, ctx)), optimizer_(p_.optimizer, p_.critics, ctx.seed) {}
+      : SamplingController(ctx, p.goal_tolerance_m),
+        p_(bounded_by_motors(p, ctx)),
+        optimizer_(p_.optimizer, p_.critics, ctx.seed) {}
 
-  void set_path(std::vector<geom::Vec2> path) override {
-    optimizer_.set_path(path);
-    progress_ = PathProgress(std::move(path));
-  }
+ private:
+  void set_method_path(const std::vector<geom::Vec2>& path) override { optimizer_.set_path(path); }
 
-  TrackingCommand step(const LocalQuery& q) override {
-    TrackingCommand out;
-    progress_.update(q.pose, 0.5, p_.goal_tolerance_m, out);
-    if (out.goal_reached) return out;
-    const ClearanceGrid grid = local_clearance(ctx_, q, 3.0, 0.05);
+  Twist sample(const LocalQuery& q, const ClearanceGrid& field, const Pose2& goal) override {
     MppiQuery query;
     query.state = {static_cast<float>(q.pose.x), static_cast<float>(q.pose.y),
                    static_cast<float>(q.pose.yaw), static_cast<float>(q.speed_mps),
                    static_cast<float>(q.yaw_rate_radps)};
-    query.goal = progress_.goal();
-    query.clearance = &grid;
-    query.robot_radius_m = static_cast<float>(ctx_.footprint_radius_m);
-    out.twist = optimizer_.step(query);
-    return out;
+    query.goal = goal;
+    query.clearance = &field;
+    query.robot_radius_m = static_cast<float>(context().footprint_radius_m);
+    return optimizer_.step(query);
   }
 
- private:
   /// No faster than the wheels turn: a forward speed the motors cannot reach would be sampled
   /// and scored as if it could.
   static MppiControllerParams bounded_by_motors(MppiControllerParams p,
@@ -108,10 +102,8 @@ class MppiController : public LocalController {
     return p;
   }
 
-  LocalControllerContext ctx_;
   MppiControllerParams p_;
   MppiOptimizer optimizer_;
-  PathProgress progress_;
 };
 
 }  // namespace
