@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -192,11 +193,94 @@ void regulated_pure_pursuit(Importer& im, const YAML::Node& c, const std::string
   im.rest(c, w, "no counterpart in plantsim's pure pursuit");
 }
 
-/// plantsim's local controller in the manner of a Nav2 controller plugin, or null.
-const char* plantsim_counterpart(const std::string& plugin) {
-  if (plugin == "nav2_mppi_controller::MPPIController") return "mppi";
-  if (plugin == "dwb_core::DWBLocalPlanner") return "dwb";
-  return nullptr;
+constexpr const char* kMppi = "nav2_mppi_controller::MPPIController";
+constexpr const char* kDwb = "dwb_core::DWBLocalPlanner";
+
+/// `keys` of `block` (named `where`) into `section`.<the same key>.
+void map_same(Importer& im, const YAML::Node& block, const std::string& where,
+              const std::string& section, std::initializer_list<const char*> keys) {
+  for (const char* key : keys) im.map(block, where, key, section + "." + key);
+}
+
+/// One critic's block: each {Nav2 key, plantsim key in `section`}.
+void map_critic(Importer& im, const YAML::Node& c, const std::string& w, const char* critic,
+                const std::string& section,
+                std::initializer_list<std::pair<const char*, const char*>> keys) {
+  // ROS 2 files write a critic's parameters as a block or flat ("BaseObstacle.scale: 0.02", as
+  // nav2_bringup does).
+  const YAML::Node block = c[critic];
+  for (const auto& [nav2, own] : keys) {
+    if (block && block.IsMap()) im.map(block, w + "." + critic, nav2, section + "." + own);
+    im.map(c, w, std::string(critic) + "." + nav2, section + "." + own);
+  }
+}
+
+/// nav2_mppi_controller's parameters by today's names (docs/controllers.md).
+void mppi_controller(Importer& im, const YAML::Node& c, const std::string& w) {
+  im.out().config["local_controller"] = "mppi";
+  map_same(
+      im, c, w, "mppi",
+      {"batch_size", "time_steps", "model_dt", "iteration_count", "temperature", "gamma", "vx_std",
+       "wz_std", "vx_max", "vx_min", "wz_max", "ax_max", "ax_min", "az_max", "prune_distance"});
+  map_critic(im, c, w, "ConstraintCritic", "mppi", {{"cost_weight", "constraint_weight"}});
+  map_critic(im, c, w, "ObstaclesCritic", "mppi",
+             {{"critical_weight", "critical_weight"},
+              {"repulsion_weight", "repulsion_weight"},
+              {"collision_cost", "collision_cost"},
+              {"collision_margin_distance", "collision_margin_distance"},
+              {"inflation_radius", "inflation_radius"},
+              {"near_goal_distance", "obstacles_near_goal_distance"}});
+  map_critic(
+      im, c, w, "GoalCritic", "mppi",
+      {{"cost_weight", "goal_weight"}, {"threshold_to_consider", "goal_threshold_to_consider"}});
+  map_critic(im, c, w, "GoalAngleCritic", "mppi",
+             {{"cost_weight", "goal_angle_weight"},
+              {"threshold_to_consider", "goal_angle_threshold_to_consider"}});
+  map_critic(im, c, w, "PathAlignCritic", "mppi",
+             {{"cost_weight", "path_align_weight"},
+              {"trajectory_point_step", "path_align_trajectory_point_step"},
+              {"threshold_to_consider", "path_align_threshold_to_consider"},
+              {"max_path_occupancy_ratio", "max_path_occupancy_ratio"}});
+  map_critic(im, c, w, "PathFollowCritic", "mppi",
+             {{"cost_weight", "path_follow_weight"},
+              {"offset_from_furthest", "path_follow_offset_from_furthest"},
+              {"threshold_to_consider", "path_follow_threshold_to_consider"}});
+  map_critic(im, c, w, "PathAngleCritic", "mppi",
+             {{"cost_weight", "path_angle_weight"},
+              {"offset_from_furthest", "path_angle_offset_from_furthest"},
+              {"threshold_to_consider", "path_angle_threshold_to_consider"},
+              {"max_angle_to_furthest", "max_angle_to_furthest"}});
+  map_critic(im, c, w, "PreferForwardCritic", "mppi",
+             {{"cost_weight", "prefer_forward_weight"},
+              {"threshold_to_consider", "prefer_forward_threshold_to_consider"}});
+  im.not_mapped(c, w, "critics",
+                "plantsim's MPPI always runs its eight critics (constraint, obstacles on its "
+                "local distance field in place of CostCritic's costmap, goal, goal angle, path "
+                "align, path follow, path angle, prefer forward): docs/controllers.md");
+  im.rest(c, w, "a parameter of " + std::string(kMppi) + " plantsim's MPPI does not have");
+}
+
+/// nav2_dwb_controller's parameters by today's names (docs/controllers.md).
+void dwb_controller(Importer& im, const YAML::Node& c, const std::string& w) {
+  im.out().config["local_controller"] = "dwb";
+  map_same(im, c, w, "dwb",
+           {"min_vel_x", "max_vel_x", "max_vel_theta", "min_speed_theta", "acc_lim_x",
+            "decel_lim_x", "acc_lim_theta", "decel_lim_theta", "vx_samples", "vtheta_samples",
+            "sim_time", "xy_goal_tolerance", "forward_prune_distance"});
+  map_critic(im, c, w, "BaseObstacle", "dwb", {{"scale", "base_obstacle_scale"}});
+  map_critic(im, c, w, "PathAlign", "dwb",
+             {{"scale", "path_align_scale"}, {"forward_point_distance", "forward_point_distance"}});
+  map_critic(im, c, w, "GoalAlign", "dwb", {{"scale", "goal_align_scale"}});
+  map_critic(im, c, w, "PathDist", "dwb", {{"scale", "path_dist_scale"}});
+  map_critic(im, c, w, "GoalDist", "dwb", {{"scale", "goal_dist_scale"}});
+  map_critic(im, c, w, "RotateToGoal", "dwb",
+             {{"scale", "rotate_to_goal_scale"}, {"slowing_factor", "slowing_factor"}});
+  map_critic(im, c, w, "Oscillation", "dwb",
+             {{"oscillation_reset_dist", "oscillation_reset_dist"}});
+  im.not_mapped(c, w, "critics",
+                "plantsim's DWB always runs its seven critics (BaseObstacle, Oscillation, "
+                "RotateToGoal, PathAlign, GoalAlign, PathDist, GoalDist): docs/controllers.md");
+  im.rest(c, w, "a parameter of " + std::string(kDwb) + " plantsim's DWB does not have");
 }
 
 void controller_server(Importer& im, const YAML::Node& root) {
@@ -218,13 +302,11 @@ void controller_server(Importer& im, const YAML::Node& root) {
     const std::string plugin = c["plugin"] ? c["plugin"].Scalar() : "";
     if (plugin == kRpp)
       regulated_pure_pursuit(im, c, w + "." + id);
-    else if (const char* own = plantsim_counterpart(plugin)) {
-      im.out().plugins_not_implemented.push_back(id + ": " + plugin);
-      im.rest(c, w + "." + id,
-              "a parameter of " + plugin + ": plantsim has it (local_controller: " + own +
-                  ", docs/controllers.md) but nav2-import does not map its parameters yet; "
-                  "pure pursuit drives the imported config");
-    } else {
+    else if (plugin == kMppi)
+      mppi_controller(im, c, w + "." + id);
+    else if (plugin == kDwb)
+      dwb_controller(im, c, w + "." + id);
+    else {
       im.out().plugins_not_implemented.push_back(id + ": " + plugin);
       im.rest(c, w + "." + id,
               "a parameter of " + plugin +
@@ -235,7 +317,12 @@ void controller_server(Importer& im, const YAML::Node& root) {
     const YAML::Node g = s[checker];
     if (!g) continue;
     const std::string gw = w + "." + checker;
-    im.map(g, gw, "xy_goal_tolerance", "tracking.goal_tolerance_m",
+    // The goal checker serves whichever controller drives: its tolerance is that one's.
+    const nlohmann::ordered_json& config = im.out().config;
+    const std::string local =
+        config.contains("local_controller") ? config["local_controller"].get<std::string>() : "";
+    im.map(g, gw, "xy_goal_tolerance",
+           local.empty() ? "tracking.goal_tolerance_m" : local + ".goal_tolerance_m",
            "the tolerance at the staging pose, where docking begins");
     im.not_mapped(g, gw, "yaw_goal_tolerance",
                   "plantsim aligns at the staging pose to docking.align_tolerance_rad");
@@ -387,12 +474,13 @@ Nav2Import import_nav2_params(const std::string& path) {
     throw worlds::WorldError(path, "", std::string("unexpected structure: ") + e.what());
   }
   Nav2Import out = im.out();
-  if (out.config.contains("docking") && out.config["docking"].contains("max_retries"))
-    out.config["docking"]["max_retries"] =
-        static_cast<int>(out.config["docking"]["max_retries"].get<double>());
-  if (out.config.contains("step") && out.config["step"].contains("control_period_steps"))
-    out.config["step"]["control_period_steps"] =
-        static_cast<int>(out.config["step"]["control_period_steps"].get<double>());
+  // Whole-number parameters written as whole numbers (mapped values arrive as reals).
+  for (auto& [section, keys] : out.config.items()) {
+    if (!keys.is_object()) continue;
+    for (auto& [key, value] : keys.items())
+      if (value.is_number_float() && episode::number_parameter(section + "." + key).whole)
+        value = static_cast<long long>(value.get<double>());
+  }
   episode::parse_episode_config(out.config.dump(),
                                 path + " (as a plantsim config)");  // throws naming the field
   return out;

@@ -21,10 +21,19 @@ def test_regulated_pure_pursuit_readme(source):
     assert not im["plugins_not_implemented"]
 
 
-def test_an_mppi_controller_is_named_not_failed(source):
+def test_nav2_bringups_mppi_file_drives_mppi(source):
     im = plantsim.nav2_import(str(source / "tests/fixtures/nav2/nav2_bringup_mppi.yaml"))
-    assert im["plugins_not_implemented"] == ["FollowPath: nav2_mppi_controller::MPPIController"]
-    assert any(p["nav2"].endswith("FollowPath.vx_max") and "MPPIController" in p["note"] for p in im["not_mapped"])
+    assert not im["plugins_not_implemented"]
+    c = im["config"]
+    assert c["local_controller"] == "mppi"
+    assert c["mppi"]["vx_max"] == 0.5 and c["mppi"]["vx_min"] == -0.35 and c["mppi"]["temperature"] == 0.3
+    assert c["mppi"]["batch_size"] == 2000 and isinstance(c["mppi"]["batch_size"], int)
+    assert c["mppi"]["goal_tolerance_m"] == 0.25  # the goal checker serves the controller that drives
+    why = {p["nav2"].split(".")[-1]: p["note"] for p in im["not_mapped"]}
+    assert "eight critics" in why["critics"] and "motion_model" in why
+    # The imported file drives MPPI to the dock.
+    r = plantsim.run(str(source / "data/worlds/examples/corridor_crossing.json"), config=c)
+    assert r.docked and r.summary["collisions"] == 0
     fields = {p["nav2"]: p for p in im["world_fields"]}
     assert fields["local_costmap.robot_radius"]["plantsim"] == "world file: robot.radius_m"
     assert "inflation_radius" in " ".join(fields)
@@ -77,3 +86,35 @@ def test_todays_names_the_smoothers_caps_and_every_section_listed(source):
     assert fields["velocity_smoother.max_accel"] == "world file: robot.max_accel_mps2"
     mapped = {p["nav2"]: p["note"] for p in im["mapped"]}
     assert "meaning changed" in mapped["controller_server.FollowPath.max_angular_accel"]
+
+
+def test_a_dwb_file_maps_its_kinematics_and_critics_scales(tmp_path):
+    f = tmp_path / "dwb.yaml"
+    f.write_text("""controller_server:
+  ros__parameters:
+    controller_plugins: ["FollowPath"]
+    FollowPath:
+      plugin: "dwb_core::DWBLocalPlanner"
+      max_vel_x: 0.3
+      vx_samples: 25
+      sim_time: 1.5
+      critics: ["RotateToGoal", "Oscillation", "BaseObstacle", "GoalAlign", "PathAlign", "PathDist", "GoalDist"]
+      BaseObstacle.scale: 0.02
+      PathAlign:
+        scale: 30.0
+        forward_point_distance: 0.3
+      RotateToGoal:
+        scale: 31.0
+        slowing_factor: 4.0
+      trans_stopped_velocity: 0.25
+""")
+    im = plantsim.nav2_import(str(f))
+    c = im["config"]
+    assert c["local_controller"] == "dwb" and not im["plugins_not_implemented"]
+    assert c["dwb"]["max_vel_x"] == 0.3 and c["dwb"]["vx_samples"] == 25 and c["dwb"]["sim_time"] == 1.5
+    assert c["dwb"]["path_align_scale"] == 30.0 and c["dwb"]["forward_point_distance"] == 0.3
+    assert c["dwb"]["rotate_to_goal_scale"] == 31.0 and c["dwb"]["slowing_factor"] == 4.0
+    notes = {p["nav2"]: p["note"] for p in im["not_mapped"]}
+    assert "DWB does not have" in notes["controller_server.FollowPath.trans_stopped_velocity"]
+    # A flat key, as nav2_bringup writes them (BaseObstacle.scale), maps as a block's does.
+    assert c["dwb"]["base_obstacle_scale"] == 0.02
