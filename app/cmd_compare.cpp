@@ -67,7 +67,7 @@ render::ComparisonPanel compare_one(const std::string& name, const worlds::World
   const bool field = name == kFieldEntry;
   auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
   episode::EpisodeConfig c = config;
-  if (field) c.travel = episode::TravelMode::kPotentialField;
+  if (field) c.travel = "potential-field";
   panel.run = episode::run_episode(world, *p, c);
   if (opt.graph) panel.graph_edges = p->graph_edges();
   return panel;

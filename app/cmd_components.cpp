@@ -5,7 +5,9 @@
 
 #include "app/commands.h"
 #include "controller/local_controller_registry.h"
+#include "planner/registry.h"
 #include "robot/estimator_registry.h"
+#include "robot/travel_registry.h"
 #include "util/c_number.h"
 
 namespace plantsim::app {
@@ -35,6 +37,14 @@ void print_component(const util::ComponentInfo& c) {
   }
 }
 
+/// A planner's options, set by name with `plantsim plan --option NAME=VALUE`.
+void print_options(const std::vector<planner::OptionSpec>& options) {
+  for (const planner::OptionSpec& o : options)
+    std::cout << "    option " << o.name << " = " << number(o.default_value) << "  "
+              << (o.integer ? "whole" : "real") << " in [" << number(o.min) << ", " << number(o.max)
+              << "]" << (o.meaning.empty() ? "" : "  " + o.meaning) << "\n";
+}
+
 template <typename Registry>
 void print_registry(const std::string& title, const std::string& key, const Registry& r) {
   std::cout << title << " (" << key << "):\n";
@@ -50,8 +60,14 @@ std::function<int()> add_info_command(CLI::App& app) {
   add_plugin_option(cmd, *plugin_files);
   return [plugin_files]() {
     load_plugins(*plugin_files);
+    print_registry("travel modes", "travel", robot::travel_modes());
     print_registry("local controllers", "local_controller", controller::local_controllers());
     print_registry("estimators", "localization.estimator", robot::estimators());
+    std::cout << "planners (planner):\n";
+    for (const auto* e : planner::planners().entries()) {
+      print_component(*e);
+      print_options(e->options);
+    }
     return kExitOk;
   };
 }

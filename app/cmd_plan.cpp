@@ -166,7 +166,7 @@ nlohmann::json plan_json(const planner::PlanResult& r, const std::string& planne
 
 /// A world file: its start to its charger (or staging pose), as JSON on stdout.
 int plan_world(PlanOptions& o) {
-  if (o.landmarks > 0 && o.planner != "interval" && o.planner != "polyanya")
+  if (o.landmarks > 0 && !planner::planner_can(o.planner, planner::capability::kSearchesAMesh))
     throw std::invalid_argument(
         "plan: --landmarks is for the mesh planners (interval, polyanya), not " + o.planner);
   if (!o.map.empty())
@@ -176,7 +176,7 @@ int plan_world(PlanOptions& o) {
   const worlds::World world = worlds::load_world(o.world);
   // A coverage plan covers the cells the charger's body leaves free and ends at the staging pose,
   // as `plantsim coverage` and an episode plan it: one world, one answer.
-  const bool coverage = o.planner.rfind("coverage-", 0) == 0;
+  const bool coverage = planner::planner_can(o.planner, planner::capability::kCoverage);
   planner::PlannerInput input = planner::planner_input(world, coverage);
   input.corner_steps = o.corner_steps;
   input.snap_to_free = o.snap;

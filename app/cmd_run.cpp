@@ -102,8 +102,8 @@ std::function<int()> add_run_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "Simulate one docking episode and write its results");
   auto opt = std::make_shared<RunCommandOptions>();
   add_world_options(cmd, opt->world, opt->scen, opt->query);
-  cmd->add_option("--planner", opt->planner, "Planner name")
-      ->check(CLI::IsMember(planner::planner_names()));
+  // Checked once the plugins are loaded (a plugin may add the planner named).
+  cmd->add_option("--planner", opt->planner, "Planner name (plantsim info lists them)");
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>)");
   add_seed_option(cmd, opt->seed, "Random seed for noise");
   cmd->add_option("--start", opt->start, "Override the start pose: x,y,yaw");
@@ -122,6 +122,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   add_plugin_option(cmd, *plugin_files);
   return [opt, cmd, plugin_files]() {
     load_plugins(*plugin_files);
+    planner::planners().at(opt->planner);  // an unknown name: exit 2, the known ones listed
     return run_one(*opt, command_line(cmd));
   };
 }

@@ -22,20 +22,6 @@
 
 namespace plantsim::episode {
 
-/// How the robot travels to the staging pose (or to a moving target): along the planner's
-/// path by pure pursuit, or by seed 001's potential field with wall following (the planner's
-/// path is then only the reference the result is measured against).
-enum class TravelMode { kPath, kPotentialField };
-inline std::string_view to_string(TravelMode m) {
-  switch (m) {  // a new mode without its name does not compile (-Wswitch, -Werror)
-    case TravelMode::kPath:
-      return "path";
-    case TravelMode::kPotentialField:
-      return "potential-field";
-  }
-  return "unknown";
-}
-
 /// A kidnap: at `at_s` the robot is lifted and set down moved by (dx, dy) and turned by dyaw
 /// (in the world frame), at rest; nothing it senses says so but the scans that follow. Off
 /// while at_s < 0. With distance_max_m > 0 the landing is drawn instead (sim/kidnap_landing.h):
@@ -71,7 +57,9 @@ struct EpisodeConfig {
   util::NamedValues component_params;
   controller::DockingParams docking;
   controller::TractionParams traction;
-  TravelMode travel = TravelMode::kPath;
+  /// How the robot travels, by its registry name (robot/travel_registry.h): "path" or
+  /// "potential-field" (seed 001; its parameters are `field`).
+  std::string travel = "path";
   controller::PotentialFieldParams field;
   double catch_distance_m = 0.1;         ///< a moving target is caught this close (edge to edge)
   robot::LostSearchParams lost_search;   ///< path travel: driving to find a view while lost

@@ -17,6 +17,7 @@
 #include "controller/local_controller_registry.h"
 #include "robot/estimator_registry.h"
 #include "robot/robot_param_rows.h"
+#include "robot/travel_registry.h"
 #include "sim/sim_param_rows.h"
 #include "util/choice_table.h"
 #include "util/input_file.h"
@@ -49,9 +50,11 @@ const char* interned(const std::string& text) {
   return kept.back().c_str();
 }
 
-/// Every registered component's parameters: local controllers', then estimators'.
+/// Every registered component's parameters: travel modes', local controllers', estimators'.
 std::vector<util::ParamSpec> registered_specs() {
   std::vector<util::ParamSpec> out;
+  for (const auto* e : robot::travel_modes().entries())
+    out.insert(out.end(), e->params.begin(), e->params.end());
   for (const auto* e : controller::local_controllers().entries())
     out.insert(out.end(), e->params.begin(), e->params.end());
   for (const auto* e : robot::estimators().entries())
@@ -61,7 +64,8 @@ std::vector<util::ParamSpec> registered_specs() {
 
 /// Grows by one with every component registered (registries never shrink).
 std::size_t registered_component_count() {
-  return controller::local_controllers().entries().size() + robot::estimators().entries().size();
+  return robot::travel_modes().entries().size() + controller::local_controllers().entries().size() +
+         robot::estimators().entries().size();
 }
 
 // The episode's own rows: the faults, a moving target's pursuit, the loop's period and timeout.
@@ -170,13 +174,11 @@ void read_tables(worlds::ParamDocument& doc, EpisodeConfig& c) {
   doc.read(bool_fields(), c);
 }
 
-/// The choices: the perception's (robot/robot_param_rows.h) and how the robot travels.
+/// The choices: the perception's (robot/robot_param_rows.h).
 const util::ChoiceRows<EpisodeConfig>& choices() {
   static const util::ChoiceRows<EpisodeConfig> rows = [] {
     util::ChoiceRows<EpisodeConfig> t;
     util::append_choices_of_part(t, robot::perception_choice_rows(), PLANTSIM_PART(perception));
-    t.push_back(PLANTSIM_CHOICE("", travel, "travel", TravelMode, {"path", TravelMode::kPath},
-                                {"potential-field", TravelMode::kPotentialField}));
     return t;
   }();
   return rows;
@@ -196,8 +198,9 @@ std::string chosen_component(worlds::ParamDocument& doc, const std::string& sect
   }
 }
 
-/// The components chosen by name: the local controller and the estimator.
+/// The components chosen by name: the travel mode, the local controller and the estimator.
 void read_components(worlds::ParamDocument& doc, EpisodeConfig& c) {
+  if (doc.find("", "travel")) c.travel = chosen_component(doc, "", "travel", robot::travel_modes());
   if (doc.find("", "local_controller"))
     c.local_controller =
         chosen_component(doc, "", "local_controller", controller::local_controllers());
@@ -320,6 +323,7 @@ std::string config_json(const EpisodeConfig& c) {
   worlds::write_param_rows(j, int_fields(), c);
   worlds::write_param_rows(j, bool_fields(), c);
   worlds::write_param_rows(j, choices(), c);
+  j["travel"] = c.travel;
   j["local_controller"] = c.local_controller;
   j["localization"]["estimator"] = c.perception.estimator;
   j["seed"] = c.seed;

@@ -10,6 +10,7 @@
 #include "episode/episode_config_json.h"
 #include "episode/episode_work.h"
 #include "robot/estimator_registry.h"
+#include "robot/travel_registry.h"
 #include "sim/kidnap_landing.h"
 #include "sim/target_catch.h"
 #include "util/component_failure.h"
@@ -63,7 +64,8 @@ controller::TractionParams traction_params(const EpisodeConfig& c, const worlds:
   t.max_accel_mps2 = std::min(t.max_accel_mps2, plant.robot.max_accel_mps2);
   // Seed 001's field drives as its document's robot does, at the motors' limit: its pursuit
   // stops and sets off in every local minimum, and a soft start there is not the method.
-  if (c.travel == TravelMode::kPotentialField) t.full_grip_accel_mps2 = 0.0;
+  if (robot::travel_modes().at(c.travel).can(robot::travel_capability::kStartsAtMotorLimit))
+    t.full_grip_accel_mps2 = 0.0;
   return t;
 }
 
@@ -97,12 +99,10 @@ std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Pl
                                            ? std::vector<Vec2>{map.start.position(), plan_goal(map)}
                                        : plan.drive_path.empty() ? plan.path
                                                                  : plan.drive_path;
-  const bool pursuit = map.target.has_value();
+  const robot::TravelEntry& mode = robot::travel_modes().at(config.travel);
   std::unique_ptr<robot::Travel> travel =
-      config.travel == TravelMode::kPotentialField
-          ? make_field_travel(map, planner.name(), settings, pursuit, map.robot.radius_m)
-      : pursuit ? make_pursuit_travel(map, planner.name(), settings, first_path)
-                : make_path_travel(map, planner.name(), settings, first_path);
+      mode.make(robot::TravelContext{&map, planner.name(), &settings, first_path},
+                component_values(config, mode.params));
   if (steering) {
     travel = steering.wrap(std::move(travel), map, first_path);
     r.steered_by = steering.name;
@@ -291,12 +291,20 @@ EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
       map_(worlds::differs_from_map(plant) ? map_copy_ : plant) {
   check_episode_work(plant, config);  // the commands check it earlier; this holds for every caller
   result_.planner = planner.name();
-  result_.travel = std::string(to_string(config.travel));
+  result_.travel = config.travel;
   result_.perception_mode = std::string(to_string(config.perception.mode));
   recorder_ = std::make_unique<EpisodeRecorder>(plant, config, result_);
-  const planner::PlanResult plan = planner.plan(map_.start.position(), plan_goal(map_));
-  // The potential field needs no plan: without its reference it still drives.
-  const bool needs_plan = config.travel != TravelMode::kPotentialField;
+  planner::PlanResult plan;
+  try {
+    plan = planner.plan(map_.start.position(), plan_goal(map_));
+  } catch (const util::ComponentFailure& e) {  // a plugin's planner threw: the episode ends
+    recorder_->not_started(
+        robot::Failure{robot::FailureReason::kPluginError, 0.0, map_.start, e.what()});
+    return;
+  }
+  // A mode that needs no plan (the potential field) drives without its reference.
+  const bool needs_plan =
+      robot::travel_modes().at(config.travel).can(robot::travel_capability::kNeedsAPlan);
   if (needs_plan && plan.status != planner::PlanStatus::kOk) {
     recorder_->no_way(plan, map_.start);  // the episode ends before it begins
     return;

@@ -84,7 +84,7 @@ struct EpisodeOutcome {
   double driven_length_m = 0;      ///< ground truth
   double max_cross_track_m = 0;
   std::string planner;
-  std::string travel = "path";    ///< to_string(TravelMode)
+  std::string travel = "path";    ///< the travel mode's name (robot/travel_registry.h)
   std::string steered_by;         ///< an outside controller's name (EpisodeSteering), or empty
   int local_minima = 0;           ///< potential-field travel: local minima met
   int wall_follows = 0;           ///< ... and wall-following episodes begun

@@ -8,16 +8,6 @@
 
 namespace plantsim::planner {
 
-PlannerOptions& PlannerOptions::set(const std::string& name, double value) {
-  values_[name] = value;
-  return *this;
-}
-
-double PlannerOptions::get(const OptionSpec& spec) const {
-  const auto it = values_.find(spec.name);
-  return it == values_.end() ? spec.default_value : it->second;
-}
-
 void check_options(std::string_view planner, const PlannerOptions& options,
                    const std::vector<OptionSpec>& specs) {
   for (const auto& given : options.given()) {

@@ -22,9 +22,16 @@ struct OptionSpec {
 
 class PlannerOptions {
  public:
-  PlannerOptions& set(const std::string& name, double value);
+  // Inline: a plugin's planner (installed header) reads its options without linking plantsim.
+  PlannerOptions& set(const std::string& name, double value) {
+    values_[name] = value;
+    return *this;
+  }
   /// The value given for `spec`, else its default.
-  double get(const OptionSpec& spec) const;
+  double get(const OptionSpec& spec) const {
+    const auto it = values_.find(spec.name);
+    return it == values_.end() ? spec.default_value : it->second;
+  }
   int get_int(const OptionSpec& spec) const { return static_cast<int>(get(spec)); }
   const std::map<std::string, double>& given() const { return values_; }
 

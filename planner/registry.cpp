@@ -1,8 +1,8 @@
-// The planners by name (see the header).
+// The planners by name (see the header): the built-in families' entries.
 #include "planner/registry.h"
 
-#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "planner/coverage/coverage_planner.h"
 #include "planner/gcr/gcr_planner.h"
@@ -14,60 +14,127 @@
 
 namespace plantsim::planner {
 
-std::vector<std::string> planner_names() {
-  return {"vg",
-          "vg-traditional",
-          "vg-round",
-          "interval",
-          "polyanya",
-          "grid",
-          "gcr",
-          "gcr-shortcut",
-          "maze-left",
-          "maze-right",
-          "maze-left-explore",
-          "maze-right-explore",
-          "maze-left-resimplified",
-          "maze-right-resimplified",
-          "coverage",
-          "coverage-chnn",
-          "coverage-potts",
-          "coverage-exact",
-          "coverage-greedy",
-          "coverage-cells"};
+namespace {
+
+using Make = std::function<std::unique_ptr<Planner>(const PlannerInput&)>;
+
+PlannerEntry entry(std::string name, std::string summary, Make make,
+                   std::vector<OptionSpec> options = {},
+                   std::vector<std::string> capabilities = {}) {
+  PlannerEntry e;
+  e.name = std::move(name);
+  e.summary = std::move(summary);
+  e.make = std::move(make);
+  e.options = std::move(options);
+  e.capabilities = std::move(capabilities);
+  return e;
 }
 
+template <typename P, typename... Args>
+Make made(Args... args) {
+  return [=](const PlannerInput& in) { return std::make_unique<P>(in, args...); };
+}
+
+void add_path_planners(PlannerRegistry& r) {
+  const std::string b = "built-in";
+  r.add(entry("vg", "seed 000 improved: reduced visibility graph of the grown boxes, A*",
+              made<VisibilityGraphPlanner>()),
+        b);
+  r.add(entry("vg-traditional",
+              "seed 000's traditional visibility graph: every corner pair, Dijkstra",
+              made<TraditionalVisibilityPlanner>()),
+        b);
+  r.add(entry("vg-round", "shortest paths around the boxes grown by a disk (tangents and arcs)",
+              made<RoundTangentPlanner>(), {}, {capability::kRoundMargin}),
+        b);
+  r.add(entry("interval", "vg's shortest paths by interval search over a mesh of rectangles",
+              made<IntervalPlanner>(), mesh_planner_options(), {capability::kSearchesAMesh}),
+        b);
+  r.add(entry("polyanya", "interval search over a mesh of convex polygons (Polyanya)",
+              made<IntervalPlanner>(MeshKind::kConvexPolygons), mesh_planner_options(),
+              {capability::kSearchesAMesh}),
+        b);
+  r.add(entry("grid", "A* through the centres of a grid's free cells", made<GridPlanner>(),
+              grid_planner_options()),
+        b);
+  r.add(entry("gcr", "seed 002: gradient and coordinate-rotation walk, optimised locally",
+              made<GcrPlanner>(), gcr_planner_options()),
+        b);
+  r.add(entry("gcr-shortcut", "seed 002 and plantsim's last shortcut pass", made<GcrPlanner>(true),
+              gcr_planner_options()),
+        b);
+}
+
+void add_maze_planners(PlannerRegistry& r) {
+  struct Variant {
+    const char* suffix;
+    const char* what;
+    bool explore;
+    ThirdString third;
+  };
+  const Variant variants[] = {
+      {"", "the path string simplified", false, ThirdString::kAsRecorded},
+      {"-explore", "driving its whole exploration", true, ThirdString::kAsRecorded},
+      {"-resimplified", "the third string simplified again", false, ThirdString::kResimplified}};
+  for (const Variant& v : variants)
+    for (Hand hand : {Hand::kLeft, Hand::kRight}) {
+      const std::string side = hand == Hand::kLeft ? "left" : "right";
+      r.add(entry("maze-" + side + v.suffix,
+                  "seed 003: the " + side + "-hand rule in the tunnel maze, " + v.what,
+                  made<MazePlanner>(hand, v.explore, v.third)),
+            "built-in");
+    }
+}
+
+void add_coverage_planners(PlannerRegistry& r) {
+  const std::pair<const char*, const char*> methods[] = {
+      {"coverage", "seed 004: full coverage, sub-regions ordered by its Hopfield network"},
+      {"coverage-chnn", "seed 004's Hopfield (CHNN) ordering, as `coverage`"},
+      {"coverage-potts", "full coverage ordered by plantsim's annealed Potts network"},
+      {"coverage-exact", "full coverage in the proven optimum order"},
+      {"coverage-greedy", "full coverage, the nearest sweep next"},
+      {"coverage-cells", "seed 004's cell-by-cell comparison method"}};
+  for (const auto& [name, summary] : methods) {
+    const std::string n = name;
+    r.add(entry(n, summary,
+                [n](const PlannerInput& in) { return std::make_unique<CoveragePlanner>(in, n); },
+                {}, {capability::kCoverage}),
+          "built-in");
+  }
+}
+
+}  // namespace
+
+PlannerRegistry& planners() {
+  static PlannerRegistry* registry = [] {
+    auto* r = new PlannerRegistry("planner");
+    add_path_planners(*r);
+    add_maze_planners(*r);
+    add_coverage_planners(*r);
+    return r;
+  }();
+  return *registry;
+}
+
+std::vector<std::string> planner_names() { return planners().names(); }
+
 std::vector<OptionSpec> planner_option_specs(std::string_view name) {
-  if (name == "interval" || name == "polyanya") return mesh_planner_options();
-  if (name == "grid") return grid_planner_options();
-  if (name == "gcr" || name == "gcr-shortcut") return gcr_planner_options();
-  const auto names = planner_names();
-  if (std::find(names.begin(), names.end(), name) == names.end())
+  try {
+    return planners().at(name).options;
+  } catch (const util::RegistryError&) {
     throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
-  return {};
+  }
+}
+
+bool planner_can(std::string_view name, std::string_view capability) {
+  const PlannerEntry* e = planners().find(name);
+  return e && e->can(std::string(capability));
 }
 
 std::unique_ptr<Planner> make_planner(std::string_view name, const PlannerInput& input) {
-  check_options(name, input.options, planner_option_specs(name));
-  if (name == "vg") return std::make_unique<VisibilityGraphPlanner>(input);
-  if (name == "vg-traditional") return std::make_unique<TraditionalVisibilityPlanner>(input);
-  if (name == "vg-round") return std::make_unique<RoundTangentPlanner>(input);
-  if (name == "interval") return std::make_unique<IntervalPlanner>(input);
-  if (name == "polyanya")
-    return std::make_unique<IntervalPlanner>(input, MeshKind::kConvexPolygons);
-  if (name == "grid") return std::make_unique<GridPlanner>(input);
-  if (name == "gcr") return std::make_unique<GcrPlanner>(input);
-  if (name == "gcr-shortcut") return std::make_unique<GcrPlanner>(input, true);
-  if (name == "maze-left") return std::make_unique<MazePlanner>(input, Hand::kLeft);
-  if (name == "maze-right") return std::make_unique<MazePlanner>(input, Hand::kRight);
-  if (name == "maze-left-explore") return std::make_unique<MazePlanner>(input, Hand::kLeft, true);
-  if (name == "maze-right-explore") return std::make_unique<MazePlanner>(input, Hand::kRight, true);
-  if (name == "maze-left-resimplified")
-    return std::make_unique<MazePlanner>(input, Hand::kLeft, false, ThirdString::kResimplified);
-  if (name == "maze-right-resimplified")
-    return std::make_unique<MazePlanner>(input, Hand::kRight, false, ThirdString::kResimplified);
-  if (is_coverage_planner(name)) return std::make_unique<CoveragePlanner>(input, name);
-  throw std::invalid_argument("unknown planner '" + std::string(name) + "'");
+  const std::vector<OptionSpec> specs = planner_option_specs(name);
+  check_options(name, input.options, specs);
+  return planners().at(name).make(input);
 }
 
 }  // namespace plantsim::planner

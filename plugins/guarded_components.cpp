@@ -11,6 +11,8 @@
 
 namespace plantsim::plugins {
 
+using geom::Vec2;
+
 namespace {
 
 // Each call forwarded inside a try; what it throws leaves as a ComponentFailure.
@@ -67,9 +69,59 @@ void guard_factory(Entry& e, const std::string& who, Wrap wrap) {
   };
 }
 
+/// A plugin's planner, each call inside a try. One whose factory threw stands in as a planner
+/// whose every query throws: the failure then ends each episode that asks it, with its reason,
+/// as a throwing query would (a batch builds its planners apart from the episodes).
+class GuardedPlanner : public planner::Planner {
+ public:
+  GuardedPlanner(std::unique_ptr<planner::Planner> inner, std::string name, std::string who,
+                 std::string factory_failure)
+      : inner_(std::move(inner)),
+        name_(std::move(name)),
+        who_(std::move(who)),
+        factory_failure_(std::move(factory_failure)) {}
+  std::string name() const override { return name_; }
+  planner::PlanResult plan(Vec2 start, Vec2 goal) override{
+      PLANTSIM_GUARDED(made().plan(start, goal))} std::vector<std::pair<Vec2, Vec2>> graph_edges()
+      const override{PLANTSIM_GUARDED(made().graph_edges())} std::optional<
+          planner::PlanResult> plan_around_added(const std::vector<geom::Rect>& added, Vec2 start,
+                                                 Vec2 goal) const override {
+    PLANTSIM_GUARDED(made().plan_around_added(added, start, goal))
+  }
+
+ private:
+  planner::Planner& made() const {
+    if (!inner_) throw util::ComponentFailure(factory_failure_);
+    return *inner_;
+  }
+
+  std::unique_ptr<planner::Planner> inner_;
+  std::string name_, who_, factory_failure_;
+};
+
 #undef PLANTSIM_GUARDED
 
 }  // namespace
+
+planner::PlannerEntry guarded(planner::PlannerEntry e, const std::string& origin) {
+  const std::string who = "planner \"" + e.name + "\" of " + origin;
+  auto make = std::move(e.make);
+  e.make = [make, who, name = e.name](const planner::PlannerInput& input) {
+    std::unique_ptr<planner::Planner> made;
+    std::string failure;
+    try {
+      made = make(input);
+      if (!made) failure = who + " made nothing";
+    } catch (const std::exception& x) {
+      failure = who + " threw: " + x.what();
+    } catch (...) {
+      failure = who + " threw something that is not a std::exception";
+    }
+    return std::unique_ptr<planner::Planner>(
+        std::make_unique<GuardedPlanner>(std::move(made), name, who, failure));
+  };
+  return e;
+}
 
 controller::LocalControllerEntry guarded(controller::LocalControllerEntry e,
                                          const std::string& origin) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "controller/local_controller.h"
+#include "planner/registry.h"
 #include "robot/estimator_registry.h"
 
 namespace plantsim::plugins {
@@ -12,5 +13,6 @@ namespace plantsim::plugins {
 controller::LocalControllerEntry guarded(controller::LocalControllerEntry e,
                                          const std::string& origin);
 robot::EstimatorEntry guarded(robot::EstimatorEntry e, const std::string& origin);
+planner::PlannerEntry guarded(planner::PlannerEntry e, const std::string& origin);
 
 }  // namespace plantsim::plugins

@@ -8,11 +8,12 @@
 #pragma once
 
 #include "controller/local_controller.h"
+#include "planner/registry.h"
 #include "robot/estimator_registry.h"
 
 /// Raised whenever an installed header's types change layout: a plugin built against another
 /// version is refused by name before any episode.
-#define PLANTSIM_PLUGIN_ABI_VERSION 1
+#define PLANTSIM_PLUGIN_ABI_VERSION 2
 
 namespace plantsim::plugins {
 
@@ -24,6 +25,8 @@ class Registrar {
   virtual ~Registrar() = default;
   virtual void add_local_controller(controller::LocalControllerEntry entry) = 0;
   virtual void add_estimator(robot::EstimatorEntry entry) = 0;
+  /// A planner: it sees the robot's map (PlannerInput: the boxes, the floor, the margin).
+  virtual void add_planner(planner::PlannerEntry entry) = 0;
 };
 
 }  // namespace plantsim::plugins

@@ -54,14 +54,20 @@ class CheckingRegistrar : public Registrar {
     controllers_.push_back(std::move(e));
   }
   void add_estimator(robot::EstimatorEntry e) override { estimators_.push_back(std::move(e)); }
+  void add_planner(planner::PlannerEntry e) override { planners_.push_back(std::move(e)); }
 
   /// Checks every component, tries each factory with its defaults, then registers them all.
   void add(LoadedPlugin& record) {
-    if (controllers_.empty() && estimators_.empty())
+    if (controllers_.empty() && estimators_.empty() && planners_.empty())
       throw PluginError(file_ + ": the plugin registered no component");
     std::set<std::string> names;
-    for (const auto& e : controllers_) check(e, "local controller", names);
-    for (const auto& e : estimators_) check(e, "estimator", names);
+    for (const auto& e : controllers_) check(e, controller::local_controllers(), names);
+    for (const auto& e : estimators_) check(e, robot::estimators(), names);
+    for (const auto& e : planners_) check(e, planner::planners(), names);
+    for (auto& e : planners_) {
+      try_planner_factory(e);
+      e = guarded(std::move(e), file_);
+    }
     for (auto& e : controllers_) {
       e = guarded(std::move(e), file_);
       try_factory(e, controller::LocalControllerContext{});
@@ -81,28 +87,27 @@ class CheckingRegistrar : public Registrar {
       record.estimators.push_back(e.name);
       robot::estimators().add(std::move(e), file_);
     }
+    for (auto& e : planners_) {
+      record.planners.push_back(e.name);
+      planner::planners().add(std::move(e), file_);
+    }
   }
 
  private:
   template <typename Entry>
-  void check(const Entry& e, const std::string& kind, std::set<std::string>& names) {
+  void check(const Entry& e, const util::ComponentRegistry<Entry>& registry,
+             std::set<std::string>& names) {
+    const std::string& kind = registry.kind();
     const std::string who = file_ + ": " + kind + " \"" + e.name + "\"";
     if (!util::component_name_ok(e.name))
       throw PluginError(file_ + ": " + kind + " name \"" + e.name +
                         "\" is not a name a configuration can spell (a-z, 0-9, '-', '_', "
                         "starting with a letter, at most 48)");
     if (!e.make) throw PluginError(who + " has no factory");
-    const bool taken = kind == "estimator"
-                           ? robot::estimators().find(e.name) != nullptr
-                           : controller::local_controllers().find(e.name) != nullptr;
-    if (taken || !names.insert(kind + e.name).second) {
-      const auto* have =
-          kind == "estimator"
-              ? static_cast<const util::ComponentInfo*>(robot::estimators().find(e.name))
-              : controller::local_controllers().find(e.name);
+    const Entry* have = registry.find(e.name);
+    if (have || !names.insert(kind + e.name).second)
       throw PluginError(who + " clashes with the one from " +
                         (have ? have->origin : std::string("the same plugin")));
-    }
     check_params(e, who);
   }
 
@@ -116,9 +121,32 @@ class CheckingRegistrar : public Registrar {
     }
   }
 
+  /// A planner's factory on a small empty floor, before it is guarded (the guard turns a
+  /// throwing factory into a planner that fails each episode, which loading must not hide).
+  void try_planner_factory(const planner::PlannerEntry& e) {
+    std::set<std::string> options;
+    for (const planner::OptionSpec& o : e.options)
+      if (!util::component_name_ok(o.name) || !options.insert(o.name).second ||
+          !(o.min <= o.default_value && o.default_value <= o.max))
+        throw PluginError(file_ + ": planner \"" + e.name + "\": option \"" + o.name +
+                          "\" is unnamed, declared twice or has a default outside its bounds");
+    planner::PlannerInput input;
+    input.floor = {0, 0, 10, 10};
+    try {
+      if (!e.make(input)) throw std::runtime_error("it made nothing");
+    } catch (const std::exception& x) {
+      throw PluginError(file_ + ": planner \"" + e.name +
+                        "\": its factory failed on an empty 10 x 10 m floor: " + x.what());
+    } catch (...) {
+      throw PluginError(file_ + ": planner \"" + e.name +
+                        "\": its factory threw something that is not a std::exception");
+    }
+  }
+
   std::string file_;
   std::vector<controller::LocalControllerEntry> controllers_;
   std::vector<robot::EstimatorEntry> estimators_;
+  std::vector<planner::PlannerEntry> planners_;
 };
 
 }  // namespace
@@ -166,7 +194,7 @@ const LoadedPlugin& load_plugin(const std::string& path, bool from_command_line)
   } catch (...) {
     throw PluginError(path + ": its registration threw");
   }
-  LoadedPlugin record{path, from_command_line, canonical, {}, {}};
+  LoadedPlugin record{path, from_command_line, canonical, {}, {}, {}};
   registrar.add(record);
   loaded().push_back(std::move(record));
   return loaded().back();

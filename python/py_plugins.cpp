@@ -4,9 +4,11 @@
 #include <pybind11/stl.h>
 
 #include "controller/local_controller_registry.h"
+#include "planner/registry.h"
 #include "plugins/plugin_loader.h"
 #include "python/py_bindings.h"
 #include "robot/estimator_registry.h"
+#include "robot/travel_registry.h"
 
 namespace plantsim::python {
 
@@ -57,6 +59,7 @@ void bind_plugins(py::module_& m) {
         d["path"] = p.path;
         d["local_controllers"] = p.local_controllers;
         d["estimators"] = p.estimators;
+        d["planners"] = p.planners;
         return d;
       },
       py::arg("path"),
@@ -67,8 +70,27 @@ void bind_plugins(py::module_& m) {
       "components",
       []() {
         py::dict d;
+        d["travel_modes"] = registry_list(robot::travel_modes());
         d["local_controllers"] = registry_list(controller::local_controllers());
         d["estimators"] = registry_list(robot::estimators());
+        py::list planners;
+        for (const auto* e : planner::planners().entries()) {
+          py::dict row = component_dict(*e);
+          py::list options;
+          for (const planner::OptionSpec& o : e->options) {
+            py::dict option;
+            option["name"] = o.name;
+            option["default"] = o.default_value;
+            option["low"] = o.min;
+            option["high"] = o.max;
+            option["whole"] = o.integer;
+            option["doc"] = o.meaning;
+            options.append(option);
+          }
+          row["options"] = options;
+          planners.append(row);
+        }
+        d["planners"] = planners;
         return d;
       },
       "Every registered component (built-in and loaded plugins') with its parameters and bounds, "

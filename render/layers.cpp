@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/predicates.h"
+#include "planner/registry.h"
 #include "render/colormap.h"
 #include "render/palette.h"
 
@@ -26,11 +27,13 @@ void draw_floor(GlCanvas& c, const worlds::World& w) {
 }
 
 MarginShape margin_shape(const std::string& planner_name) {
-  return planner_name == "vg-round" ? MarginShape::kRound : MarginShape::kSquare;
+  return planner::planner_can(planner_name, planner::capability::kRoundMargin)
+             ? MarginShape::kRound
+             : MarginShape::kSquare;
 }
 
 bool searches_a_mesh(const std::string& planner_name) {
-  return planner_name == "interval" || planner_name == "polyanya";
+  return planner::planner_can(planner_name, planner::capability::kSearchesAMesh);
 }
 
 bool draw_obstacles(GlCanvas& c, const worlds::World& w, MarginShape shape) {

@@ -222,7 +222,7 @@ TEST(FailureEpisodes, TrappedWhenThePotentialFieldGivesUp) {
   worlds::World w = room();
   w.obstacles = {{5.8, 1.5, 6.2, 6.5}};
   EpisodeConfig c;
-  c.travel = TravelMode::kPotentialField;
+  c.travel = "potential-field";
   c.field.max_wall_follows = 0;  // the first local minimum ends it
   expect_reason(run(w, c), FailureReason::kTrapped);
 }

@@ -34,7 +34,7 @@ struct Case {
   episode::EpisodeResult run;
 };
 
-Case simulate(const std::string& file, episode::TravelMode travel = episode::TravelMode::kPath) {
+Case simulate(const std::string& file, const std::string& travel = "path") {
   Case c{worlds::load_world(file), {}};
   auto p = planner::make_planner("vg", planner::planner_input(c.world, true));
   episode::EpisodeConfig config;
@@ -175,8 +175,8 @@ TEST(FigureLayout, AFailureAwayFromTheDockIsShownCloseUp) {
 }
 
 TEST(FigureLayout, PursuitSaysNoErrorWasMeasuredAndDrawsTargetAndWallFollowing) {
-  const Case c = simulate(test::source_file("data/worlds/plants/seed001_slow_target.json"),
-                          episode::TravelMode::kPotentialField);
+  const Case c =
+      simulate(test::source_file("data/worlds/plants/seed001_slow_target.json"), "potential-field");
   ASSERT_TRUE(c.run.caught);
   FigureLayout layout;
   const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);

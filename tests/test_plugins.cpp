@@ -4,6 +4,10 @@
 // `plugin_error`, and a batch goes on with the others.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
 #include "cli_fixture.h"
 #include "controller/local_controller_registry.h"
 #include "episode/episode_config_json.h"
@@ -49,6 +53,7 @@ TEST(Plugins, EachBadOneIsRefusedNamingItsFile) {
         Bad{TEST_PLUGIN_FACTORY_THROWS, "cannot be built"},
         Bad{TEST_PLUGIN_UNRESOLVED, "plantsim_test_symbol_nobody_defines"},
         Bad{TEST_PLUGIN_BAD_BOUNDS, "outside its bounds"},
+        Bad{TEST_PLUGIN_PLANNER_FACTORY_THROWS, "no planner today"},
         Bad{"/nonexistent/plugin.so", "no such plugin file"}}) {
     try {
       plugins::load_plugin(b.file);
@@ -61,6 +66,44 @@ TEST(Plugins, EachBadOneIsRefusedNamingItsFile) {
   // Nothing of a refused plugin was registered.
   EXPECT_FALSE(controller::local_controllers().find("test-factory-throws"));
   EXPECT_FALSE(controller::local_controllers().find("test-bad-bounds"));
+  EXPECT_FALSE(planner::planners().find("test-planner-factory-throws"));
+}
+
+TEST(Plugins, APlannerIsChosenByNameWithItsOptionsAndCapabilities) {
+  const plugins::LoadedPlugin& p = plugins::load_plugin(TEST_PLUGIN_GOOD);
+  EXPECT_EQ(p.planners, (std::vector<std::string>{"test-straight", "test-planner-thrower"}));
+  EXPECT_EQ(planner::planners().at("test-straight").origin, TEST_PLUGIN_GOOD);
+  const auto names = planner::planner_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "test-straight"), names.end());
+  // Render asks capabilities, not names: the plugin's lists none, the built-ins theirs.
+  EXPECT_FALSE(planner::planner_can("test-straight", planner::capability::kSearchesAMesh));
+  EXPECT_TRUE(planner::planner_can("polyanya", planner::capability::kSearchesAMesh));
+  EXPECT_TRUE(planner::planner_can("vg-round", planner::capability::kRoundMargin));
+  EXPECT_TRUE(planner::planner_can("coverage", planner::capability::kCoverage));
+  EXPECT_FALSE(planner::planner_can("no-such-planner", planner::capability::kCoverage));
+  // Its option is bounded as a built-in family's: 7 m is refused, 2 m bends the line.
+  planner::PlannerInput in;
+  in.floor = {0, 0, 20, 20};
+  in.options.set("detour_m", 7.0);
+  EXPECT_THROW(planner::make_planner("test-straight", in), std::invalid_argument);
+  in.options = {};
+  in.options.set("detour_m", 2.0);
+  const planner::PlanResult r = planner::make_planner("test-straight", in)->plan({1, 1}, {9, 1});
+  ASSERT_EQ(r.path.size(), 3u);
+  EXPECT_DOUBLE_EQ(r.path[1].y, 3.0);
+  EXPECT_NEAR(r.length, 2 * std::hypot(4.0, 2.0), 1e-12);
+}
+
+TEST(Plugins, APlannerThatThrowsEndsItsEpisodeWithPluginError) {
+  plugins::load_plugin(TEST_PLUGIN_GOOD);
+  const worlds::World w =
+      worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json"));
+  auto thrower = planner::make_planner("test-planner-thrower", planner::planner_input(w, true));
+  const episode::EpisodeResult r = episode::run_episode(w, *thrower, episode::EpisodeConfig{});
+  ASSERT_TRUE(r.failure);
+  EXPECT_EQ(r.failure->reason, robot::FailureReason::kPluginError);
+  EXPECT_NE(r.failure->detail.find("the test planner found no way"), std::string::npos);
+  EXPECT_NE(r.failure->detail.find(TEST_PLUGIN_GOOD), std::string::npos);
 }
 
 TEST(Plugins, APartThatThrowsEndsItsEpisodeWithPluginError) {
@@ -94,6 +137,23 @@ TEST_F(PluginCli, ABadPluginExitsTwoBeforeAnyWork) {
   EXPECT_NE(info.out.find("test-thrower.throw_after_steps = 30  whole in [-1, 100000]"),
             std::string::npos)
       << info.out;
+  EXPECT_NE(info.out.find("option detour_m = 0  real in [0, 5]"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("capabilities: searches-a-mesh"), std::string::npos) << info.out;
+  // A planner no built-in or plugin has: exit 2 before work, the known ones listed.
+  const Outcome unknown = run("run " + world + " --out out --planner straight");
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.err;
+  EXPECT_NE(unknown.err.find("unknown planner \"straight\""), std::string::npos) << unknown.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(PluginCli, APluginsPlannerDrivesARun) {
+  const std::string world = test::source_file("data/worlds/examples/corridor_crossing.json");
+  const Outcome o = run("run " + world + " --out out --planner test-straight --plugin " +
+                        std::string(TEST_PLUGIN_GOOD));
+  EXPECT_NE(o.exit_code, 2) << o.err;
+  const nlohmann::json summary =
+      nlohmann::json::parse(std::ifstream(dir_ / "out" / "summary.json"));
+  EXPECT_EQ(summary["planner"], "test-straight") << summary.dump();
 }
 
 TEST_F(PluginCli, ABatchGoesOnPastAPluginThatThrows) {

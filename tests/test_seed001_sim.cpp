@@ -17,7 +17,7 @@ using namespace plantsim::episode;  // the episode's config and result
 using episode::run_episode;
 namespace {
 
-EpisodeResult run(const worlds::World& world, TravelMode travel, std::uint64_t seed = 1) {
+EpisodeResult run(const worlds::World& world, const std::string& travel, std::uint64_t seed = 1) {
   auto p = planner::make_planner("vg", planner::planner_input(world, true));
   EpisodeConfig config;
   config.travel = travel;
@@ -46,7 +46,7 @@ TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
   ASSERT_TRUE(world.target.has_value());
   int caught = 0, while_moving = 0, with_contact = 0, begun_by_robot = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    const EpisodeResult r = run(world, TravelMode::kPotentialField, seed);
+    const EpisodeResult r = run(world, "potential-field", seed);
     caught += r.caught && episode::status_name(r) == "caught";
     while_moving += r.caught && r.time_s < park_time(*world.target);
     with_contact += r.collisions > 0;
@@ -64,7 +64,7 @@ TEST(Seed001, CatchesATargetSlowerThanItselfAmongMovingObstacles) {
 TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
   const auto world =
       worlds::load_world(test::source_file("data/worlds/plants/seed001_target_behind_wall.json"));
-  const EpisodeResult r = run(world, TravelMode::kPotentialField);
+  const EpisodeResult r = run(world, "potential-field");
   EXPECT_EQ(episode::status_name(r), "caught");
   EXPECT_EQ(r.collisions, 0);
   EXPECT_GE(r.local_minima, 1);
@@ -77,7 +77,7 @@ TEST(Seed001, FollowsTheWallAroundThenReachesAFasterTarget) {
 
 TEST(Seed001, PotentialFieldTravelHandsOverToDocking) {
   const auto world = worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
-  const EpisodeResult r = run(world, TravelMode::kPotentialField);
+  const EpisodeResult r = run(world, "potential-field");
   EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_EQ(r.collisions, 0);
   EXPECT_EQ(r.travel, "potential-field");
@@ -89,7 +89,7 @@ TEST(Seed001, DrivesEvenWhenTheReferencePlannerFindsNoPath) {
   auto p = planner::make_planner("maze-left",
                                  planner::planner_input(world, true));  // no lattice: no path
   EpisodeConfig config;
-  config.travel = TravelMode::kPotentialField;
+  config.travel = "potential-field";
   const EpisodeResult r = episode::run_episode(world, *p, config);
   EXPECT_TRUE(r.docked) << episode::status_name(r);
   EXPECT_TRUE(r.plan.empty());

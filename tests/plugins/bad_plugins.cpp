@@ -1,6 +1,6 @@
 // Test plugins that must be refused, one per PLANTSIM_BAD_PLUGIN value: no ABI symbol, another
 // ABI version, a name a built-in has, a factory that throws, a symbol nothing defines, a
-// parameter whose default lies outside its bounds.
+// parameter whose default lies outside its bounds, a planner whose factory throws.
 #include <stdexcept>
 
 #include "plugins/plugin_api.h"
@@ -70,6 +70,18 @@ void register_components(plugins::Registrar& r) {
   controller::LocalControllerEntry e = still("test-bad-bounds");
   e.params = {{"test-bad-bounds", "gain", util::ParamKind::kReal, 5.0, 0.0, 1.0, false, ""}};
   r.add_local_controller(e);
+}
+}  // namespace
+PLANTSIM_PLUGIN(register_components)
+#elif PLANTSIM_BAD_PLUGIN == 7  // a planner whose factory throws
+namespace {
+void register_components(plugins::Registrar& r) {
+  planner::PlannerEntry e;
+  e.name = "test-planner-factory-throws";
+  e.make = [](const planner::PlannerInput&) -> std::unique_ptr<planner::Planner> {
+    throw std::runtime_error("no planner today");
+  };
+  r.add_planner(e);
 }
 }  // namespace
 PLANTSIM_PLUGIN(register_components)

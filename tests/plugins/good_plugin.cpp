@@ -1,6 +1,9 @@
 // A test plugin that loads: "test-thrower", a local controller that creeps along and throws after
 // `test-thrower.throw_after_steps` steps (never while negative), and "test-map-refuser", whose
-// factory throws for any map with boxes (so never at load, always in an episode).
+// factory throws for any map with boxes (so never at load, always in an episode); two planners:
+// "test-straight", the straight line to the goal bent sideways by its option `detour_m` at the
+// middle (whatever is in the way), and "test-planner-thrower", whose every query throws.
+#include <cmath>
 #include <stdexcept>
 
 #include "plugins/plugin_api.h"
@@ -24,7 +27,56 @@ class Thrower : public controller::LocalController {
   long long after_, steps_ = 0;
 };
 
+class Straight : public planner::Planner {
+ public:
+  explicit Straight(double detour_m) : detour_m_(detour_m) {}
+  std::string name() const override { return "test-straight"; }
+  planner::PlanResult plan(geom::Vec2 start, geom::Vec2 goal) override {
+    const geom::Vec2 d = goal - start;
+    const double n = std::hypot(d.x, d.y);
+    const geom::Vec2 side = n > 0 ? geom::Vec2{-d.y / n, d.x / n} : geom::Vec2{0, 0};
+    const geom::Vec2 middle = start + d * 0.5 + side * detour_m_;
+    planner::PlanResult r;
+    r.status = planner::PlanStatus::kOk;
+    r.path = detour_m_ > 0 ? std::vector<geom::Vec2>{start, middle, goal}
+                           : std::vector<geom::Vec2>{start, goal};
+    for (std::size_t i = 1; i < r.path.size(); ++i) {
+      const geom::Vec2 s = r.path[i] - r.path[i - 1];
+      r.length += std::hypot(s.x, s.y);
+    }
+    return r;
+  }
+
+ private:
+  double detour_m_;
+};
+
+class PlannerThrower : public planner::Planner {
+ public:
+  std::string name() const override { return "test-planner-thrower"; }
+  planner::PlanResult plan(geom::Vec2, geom::Vec2) override {
+    throw std::runtime_error("the test planner found no way");
+  }
+};
+
+void register_planners(plugins::Registrar& r) {
+  planner::PlannerEntry straight;
+  straight.name = "test-straight";
+  straight.summary = "the straight line, bent sideways at the middle";
+  straight.options = {{"detour_m", 0.0, 0.0, 5.0, false, "sideways offset of the middle point"}};
+  straight.make = [spec = straight.options[0]](const planner::PlannerInput& in) {
+    return std::make_unique<Straight>(in.options.get(spec));
+  };
+  r.add_planner(straight);
+  planner::PlannerEntry thrower;
+  thrower.name = "test-planner-thrower";
+  thrower.summary = "throws at every query";
+  thrower.make = [](const planner::PlannerInput&) { return std::make_unique<PlannerThrower>(); };
+  r.add_planner(thrower);
+}
+
 void register_components(plugins::Registrar& r) {
+  register_planners(r);
   controller::LocalControllerEntry thrower;
   thrower.name = "test-thrower";
   thrower.summary = "throws after a number of steps";
