@@ -6,8 +6,10 @@
 #include "app/commands.h"
 #include "controller/local_controller_registry.h"
 #include "planner/registry.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 #include "robot/travel_registry.h"
+#include "sim/sensor_model.h"
 #include "util/c_number.h"
 
 namespace plantsim::app {
@@ -63,6 +65,9 @@ std::function<int()> add_info_command(CLI::App& app) {
     print_registry("travel modes", "travel", robot::travel_modes());
     print_registry("local controllers", "local_controller", controller::local_controllers());
     print_registry("estimators", "localization.estimator", robot::estimators());
+    print_registry("dock detectors", "docking.detector", robot::dock_detectors());
+    std::cout << "sensor models (the simulator's, read in this order; not a plugin's):\n";
+    for (const auto* e : sim::sensor_models().entries()) print_component(*e);
     std::cout << "planners (planner):\n";
     for (const auto* e : planner::planners().entries()) {
       print_component(*e);

@@ -9,7 +9,7 @@ include(CMakePackageConfigHelpers)
 set(PLANTSIM_PLUGIN_HEADERS
   plugins/plugin_api.h
   controller/local_controller.h controller/diff_drive.h controller/moving_box.h
-  robot/estimator_registry.h robot/pose_estimator.h robot/readings.h
+  robot/estimator_registry.h robot/pose_estimator.h robot/readings.h robot/dock_detector.h
   planner/registry.h planner/planner.h planner/planner_options.h planner/search_budget.h
   worlds/world.h worlds/tunnel_maze.h util/c_number.h
   util/component_info.h util/component_registry.h util/param_spec.h

@@ -15,6 +15,7 @@
 
 #include "controller/controller_param_rows.h"
 #include "controller/local_controller_registry.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 #include "robot/robot_param_rows.h"
 #include "robot/travel_registry.h"
@@ -59,13 +60,15 @@ std::vector<util::ParamSpec> registered_specs() {
     out.insert(out.end(), e->params.begin(), e->params.end());
   for (const auto* e : robot::estimators().entries())
     out.insert(out.end(), e->params.begin(), e->params.end());
+  for (const auto* e : robot::dock_detectors().entries())
+    out.insert(out.end(), e->params.begin(), e->params.end());
   return out;
 }
 
 /// Grows by one with every component registered (registries never shrink).
 std::size_t registered_component_count() {
   return robot::travel_modes().entries().size() + controller::local_controllers().entries().size() +
-         robot::estimators().entries().size();
+         robot::estimators().entries().size() + robot::dock_detectors().entries().size();
 }
 
 // The episode's own rows: the faults, a moving target's pursuit, the loop's period and timeout.
@@ -198,7 +201,8 @@ std::string chosen_component(worlds::ParamDocument& doc, const std::string& sect
   }
 }
 
-/// The components chosen by name: the travel mode, the local controller and the estimator.
+/// The components chosen by name: the travel mode, the local controller, the estimator and the
+/// dock detector.
 void read_components(worlds::ParamDocument& doc, EpisodeConfig& c) {
   if (doc.find("", "travel")) c.travel = chosen_component(doc, "", "travel", robot::travel_modes());
   if (doc.find("", "local_controller"))
@@ -207,6 +211,9 @@ void read_components(worlds::ParamDocument& doc, EpisodeConfig& c) {
   if (doc.find("localization", "estimator"))
     c.perception.estimator =
         chosen_component(doc, "localization", "estimator", robot::estimators());
+  if (doc.find("docking", "detector"))
+    c.perception.dock_detector =
+        chosen_component(doc, "docking", "detector", robot::dock_detectors());
 }
 
 void read_seed(worlds::ParamDocument& doc, EpisodeConfig& c) {
@@ -326,6 +333,7 @@ std::string config_json(const EpisodeConfig& c) {
   j["travel"] = c.travel;
   j["local_controller"] = c.local_controller;
   j["localization"]["estimator"] = c.perception.estimator;
+  j["docking"]["detector"] = c.perception.dock_detector;
   j["seed"] = c.seed;
   return j.dump(2) + "\n";
 }

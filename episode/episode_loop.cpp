@@ -9,6 +9,7 @@
 #include "controller/local_controller_registry.h"
 #include "episode/episode_config_json.h"
 #include "episode/episode_work.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 #include "robot/travel_registry.h"
 #include "sim/kidnap_landing.h"
@@ -41,6 +42,8 @@ robot::PerceptionParams perception_params(const EpisodeConfig& c) {
   p.field_range_m = c.field.sensor_range_m;
   p.estimator_params =
       component_values(c, robot::estimators().at(c.perception.estimator).params).named();
+  p.dock_detector_params =
+      component_values(c, robot::dock_detectors().at(c.perception.dock_detector).params).named();
   return p;
 }
 
@@ -195,7 +198,7 @@ class EpisodeRun::Loop {
     const robot::SensorReadings readings = sensors_.read(physics_, t_s);  // sense
     try {
       perception_ = &perceiver_.update(readings);  // estimate
-    } catch (const util::ComponentFailure& e) {    // a plugin's estimator threw: the episode ends
+    } catch (const util::ComponentFailure& e) {  // a plugin's estimator or detector threw: it ends
       perception_ = &perceiver_.current();
       decision_ = plugin_failed(e);
       return false;

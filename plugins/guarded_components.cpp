@@ -53,6 +53,19 @@ class GuardedEstimator : public robot::PoseEstimator {
   std::string who_;
 };
 
+class GuardedDockDetector : public robot::DockDetector {
+ public:
+  GuardedDockDetector(std::unique_ptr<robot::DockDetector> inner, std::string who)
+      : inner_(std::move(inner)), who_(std::move(who)) {}
+  std::optional<robot::ChargerDetection> detect(const robot::DockDetectorQuery& q) override {
+    PLANTSIM_GUARDED(inner_->detect(q))
+  }
+
+ private:
+  std::unique_ptr<robot::DockDetector> inner_;
+  std::string who_;
+};
+
 /// Guards the factory; what it makes is wrapped by `wrap`.
 template <typename Entry, typename Wrap>
 void guard_factory(Entry& e, const std::string& who, Wrap wrap) {
@@ -102,6 +115,15 @@ class GuardedPlanner : public planner::Planner {
 #undef PLANTSIM_GUARDED
 
 }  // namespace
+
+robot::DockDetectorEntry guarded(robot::DockDetectorEntry e, const std::string& origin) {
+  guard_factory(e, "dock detector \"" + e.name + "\" of " + origin,
+                [](std::unique_ptr<robot::DockDetector> made, const std::string& who) {
+                  return std::unique_ptr<robot::DockDetector>(
+                      std::make_unique<GuardedDockDetector>(std::move(made), who));
+                });
+  return e;
+}
 
 planner::PlannerEntry guarded(planner::PlannerEntry e, const std::string& origin) {
   const std::string who = "planner \"" + e.name + "\" of " + origin;

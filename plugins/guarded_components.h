@@ -5,6 +5,7 @@
 
 #include "controller/local_controller.h"
 #include "planner/registry.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 
 namespace plantsim::plugins {
@@ -14,5 +15,6 @@ controller::LocalControllerEntry guarded(controller::LocalControllerEntry e,
                                          const std::string& origin);
 robot::EstimatorEntry guarded(robot::EstimatorEntry e, const std::string& origin);
 planner::PlannerEntry guarded(planner::PlannerEntry e, const std::string& origin);
+robot::DockDetectorEntry guarded(robot::DockDetectorEntry e, const std::string& origin);
 
 }  // namespace plantsim::plugins

@@ -9,6 +9,7 @@
 
 #include "controller/local_controller.h"
 #include "planner/registry.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 
 /// Raised whenever an installed header's types change layout: a plugin built against another
@@ -27,6 +28,8 @@ class Registrar {
   virtual void add_estimator(robot::EstimatorEntry entry) = 0;
   /// A planner: it sees the robot's map (PlannerInput: the boxes, the floor, the margin).
   virtual void add_planner(planner::PlannerEntry entry) = 0;
+  /// A dock detector: it sees the readings, the estimate and the map's charger.
+  virtual void add_dock_detector(robot::DockDetectorEntry entry) = 0;
 };
 
 }  // namespace plantsim::plugins

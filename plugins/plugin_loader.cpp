@@ -55,15 +55,26 @@ class CheckingRegistrar : public Registrar {
   }
   void add_estimator(robot::EstimatorEntry e) override { estimators_.push_back(std::move(e)); }
   void add_planner(planner::PlannerEntry e) override { planners_.push_back(std::move(e)); }
+  void add_dock_detector(robot::DockDetectorEntry e) override {
+    detectors_.push_back(std::move(e));
+  }
 
   /// Checks every component, tries each factory with its defaults, then registers them all.
   void add(LoadedPlugin& record) {
-    if (controllers_.empty() && estimators_.empty() && planners_.empty())
+    if (controllers_.empty() && estimators_.empty() && planners_.empty() && detectors_.empty())
       throw PluginError(file_ + ": the plugin registered no component");
     std::set<std::string> names;
     for (const auto& e : controllers_) check(e, controller::local_controllers(), names);
     for (const auto& e : estimators_) check(e, robot::estimators(), names);
     for (const auto& e : planners_) check(e, planner::planners(), names);
+    for (const auto& e : detectors_) check(e, robot::dock_detectors(), names);
+    for (auto& e : detectors_) {
+      e = guarded(std::move(e), file_);
+      robot::DockDetectorContext context;
+      context.mapped_dock = {5, 5, 0};
+      context.charger_width_m = 0.3;
+      try_factory(e, context);
+    }
     for (auto& e : planners_) {
       try_planner_factory(e);
       e = guarded(std::move(e), file_);
@@ -90,6 +101,10 @@ class CheckingRegistrar : public Registrar {
     for (auto& e : planners_) {
       record.planners.push_back(e.name);
       planner::planners().add(std::move(e), file_);
+    }
+    for (auto& e : detectors_) {
+      record.dock_detectors.push_back(e.name);
+      robot::dock_detectors().add(std::move(e), file_);
     }
   }
 
@@ -147,6 +162,7 @@ class CheckingRegistrar : public Registrar {
   std::vector<controller::LocalControllerEntry> controllers_;
   std::vector<robot::EstimatorEntry> estimators_;
   std::vector<planner::PlannerEntry> planners_;
+  std::vector<robot::DockDetectorEntry> detectors_;
 };
 
 }  // namespace
@@ -194,7 +210,7 @@ const LoadedPlugin& load_plugin(const std::string& path, bool from_command_line)
   } catch (...) {
     throw PluginError(path + ": its registration threw");
   }
-  LoadedPlugin record{path, from_command_line, canonical, {}, {}, {}};
+  LoadedPlugin record{path, from_command_line, canonical, {}, {}, {}, {}};
   registrar.add(record);
   loaded().push_back(std::move(record));
   return loaded().back();

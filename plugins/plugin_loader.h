@@ -20,7 +20,8 @@ struct LoadedPlugin {
   std::string path;                ///< as given
   bool from_command_line = false;  ///< given with --plugin (not named by a scenario)
   std::string canonical;
-  std::vector<std::string> local_controllers, estimators, planners;  ///< the names it registered
+  /// The names it registered.
+  std::vector<std::string> local_controllers, estimators, planners, dock_detectors;
 };
 
 /// Loads the plugin at `path` (once: a second load of the same file returns the first).

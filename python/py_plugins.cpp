@@ -7,6 +7,7 @@
 #include "planner/registry.h"
 #include "plugins/plugin_loader.h"
 #include "python/py_bindings.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
 #include "robot/travel_registry.h"
 
@@ -60,6 +61,7 @@ void bind_plugins(py::module_& m) {
         d["local_controllers"] = p.local_controllers;
         d["estimators"] = p.estimators;
         d["planners"] = p.planners;
+        d["dock_detectors"] = p.dock_detectors;
         return d;
       },
       py::arg("path"),
@@ -73,6 +75,7 @@ void bind_plugins(py::module_& m) {
         d["travel_modes"] = registry_list(robot::travel_modes());
         d["local_controllers"] = registry_list(controller::local_controllers());
         d["estimators"] = registry_list(robot::estimators());
+        d["dock_detectors"] = registry_list(robot::dock_detectors());
         py::list planners;
         for (const auto* e : planner::planners().entries()) {
           py::dict row = component_dict(*e);

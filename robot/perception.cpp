@@ -65,6 +65,20 @@ std::unique_ptr<PoseEstimator> make_estimator(const worlds::World& map,
   return made;
 }
 
+std::unique_ptr<DockDetector> make_dock_detector(const worlds::World& map,
+                                                 const PerceptionParams& p) {
+  const DockDetectorEntry& e = dock_detectors().at(p.dock_detector);
+  DockDetectorContext context;
+  context.mapped_dock = map.charger;
+  context.charger_width_m = map.charger_spec.width_m;
+  context.boxes = map.obstacles;
+  context.boxes.push_back(worlds::charger_body(map).bounding_box());
+  std::unique_ptr<DockDetector> made = e.make(context, util::ParamValues(p.dock_detector_params));
+  if (!made)
+    throw std::runtime_error("dock detector \"" + e.name + "\" (" + e.origin + ") made nothing");
+  return made;
+}
+
 }  // namespace
 
 std::string_view to_string(PerceptionMode m) {
@@ -76,6 +90,7 @@ Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
       p_(params),
       raycaster_(map),
       estimator_(make_estimator(map, raycaster_, params)),
+      dock_detector_(make_dock_detector(map, params)),
       tracker_(params.tracker),
       layer_(params.layer) {
   now_.pose = map.start;
@@ -90,6 +105,14 @@ std::optional<geom::Pose2> Perceiver::carry_to_now(const ChargerDetection& d) co
     if (t <= d.captured_s + 1e-9) then = &pose;
   if (!then) return std::nullopt;  // older than the history: too late to use
   return geom::compose(geom::compose(geom::inverse(now_.odom_pose), *then), d.dock_in_robot);
+}
+
+std::optional<ChargerDetection> Perceiver::sight_dock(const SensorReadings& r) {
+  DockDetectorQuery q;
+  q.readings = &r;
+  q.estimate = now_.pose;
+  q.expected_dock_in_robot = geom::compose(geom::inverse(now_.pose), map_.charger);
+  return dock_detector_->detect(q);
 }
 
 void Perceiver::interpret_scan(const LidarScan& scan) {
@@ -169,7 +192,8 @@ const Perception& Perceiver::update_oracle(const SensorReadings& r) {
   now_.obstacles = known_actors(*r.oracle, now_.pose, p_.range_m);
   now_.field = map_near(map_, now_.pose.position(), p_.field_range_m);
   for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
-  now_.charger_in_robot = r.charger ? std::optional(r.charger->dock_in_robot) : std::nullopt;
+  const std::optional<ChargerDetection> sighted = sight_dock(r);
+  now_.charger_in_robot = sighted ? std::optional(sighted->dock_in_robot) : std::nullopt;
   if (r.oracle->target) {
     now_.target = r.oracle->target->box.center();
     now_.target_velocity = r.oracle->target->velocity;
@@ -269,7 +293,8 @@ void Perceiver::publish_obstacles(const SensorReadings& r) {
   // The static returns of the last scan, and the tracked obstacles with their velocities.
   now_.field = static_field_;
   for (const auto& m : now_.obstacles) now_.field.push_back({m.box, m.velocity});
-  now_.charger_in_robot = r.charger ? carry_to_now(*r.charger) : std::nullopt;
+  const std::optional<ChargerDetection> sighted = sight_dock(r);
+  now_.charger_in_robot = sighted ? carry_to_now(*sighted) : std::nullopt;
 }
 
 const Perception& Perceiver::update(const SensorReadings& r) {

@@ -17,6 +17,7 @@
 #include "controller/collision_check.h"
 #include "controller/potential_field.h"
 #include "robot/beam_directions.h"
+#include "robot/dock_detector.h"
 #include "robot/ekf_localizer.h"
 #include "robot/global_match.h"
 #include "robot/local_obstacle_layer.h"
@@ -43,6 +44,9 @@ struct PerceptionParams {
   /// (the built-ins read theirs, typed, below).
   std::string estimator = "ekf";
   util::NamedValues estimator_params;
+  /// The dock detector by its registry name (dock_detector.h) and its parameters.
+  std::string dock_detector = "camera";
+  util::NamedValues dock_detector_params;
   EkfParams ekf;  ///< the EKF's, and the odometry's noise and health thresholds both use
   ParticleParams particles;
   TrackerParams tracker;
@@ -129,10 +133,13 @@ class Perceiver {
   void publish_obstacles(const SensorReadings& r);
   void interpret_scan(const LidarScan& scan);
   std::optional<geom::Pose2> carry_to_now(const ChargerDetection& d) const;
+  /// The dock detector's sighting this period, if any.
+  std::optional<ChargerDetection> sight_dock(const SensorReadings& r);
   const worlds::World& map_;
   PerceptionParams p_;
   MapRaycaster raycaster_;
   std::unique_ptr<PoseEstimator> estimator_;
+  std::unique_ptr<DockDetector> dock_detector_;
   ObstacleTracker tracker_;
   LocalObstacleLayer layer_;
   Perception now_;

@@ -7,7 +7,9 @@
 #include "episode/episode_config_json.h"
 #include "episode/run_episode.h"
 #include "planner/registry.h"
+#include "robot/dock_detector.h"
 #include "robot/estimator_registry.h"
+#include "robot/travel_registry.h"
 #include "test_paths.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -61,6 +63,48 @@ TEST(Components, BuiltInsAreRegisteredWithTheirParameters) {
       EXPECT_NO_THROW(episode::number_parameter(s.path())) << s.path();
   EXPECT_EQ(episode::number_parameter("mppi.temperature").default_value, 0.3);
   EXPECT_TRUE(episode::number_parameter("dwb.vx_samples").whole);
+  // Travel modes and dock detectors: asked by capability, never by name.
+  EXPECT_EQ(robot::travel_modes().names(), (std::vector<std::string>{"path", "potential-field"}));
+  EXPECT_TRUE(robot::travel_modes().at("path").can(robot::travel_capability::kNeedsAPlan));
+  EXPECT_FALSE(
+      robot::travel_modes().at("potential-field").can(robot::travel_capability::kNeedsAPlan));
+  EXPECT_EQ(robot::dock_detectors().names(), (std::vector<std::string>{"camera", "none"}));
+}
+
+TEST(Components, TravelAndDockDetectorChosenByNameAndWrittenBack) {
+  const episode::EpisodeConfig c = episode::parse_episode_config(
+      R"({"travel": "potential-field", "docking": {"detector": "none"}})", "c.json");
+  EXPECT_EQ(c.travel, "potential-field");
+  EXPECT_EQ(c.perception.dock_detector, "none");
+  const episode::EpisodeConfig again = episode::parse_episode_config(episode::config_json(c), "w");
+  EXPECT_EQ(again.travel, "potential-field");
+  EXPECT_EQ(again.perception.dock_detector, "none");
+  for (const char* bad : {R"({"travel": "teleport"})", R"({"docking": {"detector": "radar"}})"})
+    EXPECT_THROW(episode::parse_episode_config(bad, "bad.json"), worlds::WorldError) << bad;
+}
+
+// Without a sighting the docking goes on the map's charger: where the map is right it docks as
+// well; where the map's charger is 6 cm off, the camera's sightings correct it and none cannot.
+TEST(Components, TheDockDetectorIsWhatCorrectsAMisplacedCharger) {
+  worlds::World w =
+      worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json"));
+  w.moving.clear();
+  auto run = [&](const worlds::World& plant, const char* detector) {
+    auto planner = planner::make_planner("vg", planner::planner_input(plant, true));
+    episode::EpisodeConfig c = episode::parse_episode_config(
+        std::string(R"({"docking": {"detector": ")") + detector + "\"}}", "c.json");
+    return episode::run_episode(plant, *planner, c);
+  };
+  const episode::EpisodeResult exact = run(w, "none");
+  EXPECT_TRUE(exact.docked) << episode::status_name(exact);
+  worlds::World shifted = w;
+  shifted.charger_map_offset = {0.0, 0.06, 0.0};  // the map's charger 6 cm beside the real one
+  const episode::EpisodeResult camera = run(shifted, "camera");
+  const episode::EpisodeResult blind = run(shifted, "none");
+  EXPECT_TRUE(camera.docked) << episode::status_name(camera);
+  EXPECT_LT(camera.position_error_m, 0.02);
+  EXPECT_FALSE(blind.docked && blind.position_error_m < 0.02)
+      << "docked " << blind.position_error_m << " m off without a sighting";
 }
 
 TEST(Components, ChosenAndConfiguredByNameWithTheirBoundsChecked) {

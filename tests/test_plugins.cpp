@@ -21,12 +21,12 @@
 namespace plantsim {
 namespace {
 
-episode::EpisodeResult run_with(const std::string& config_text) {
+episode::EpisodeResult run_with(const std::string& config_text, double timeout_s = 60) {
   const worlds::World w =
       worlds::load_world(test::source_file("data/worlds/examples/corridor_crossing.json"));
   auto planner = planner::make_planner("vg", planner::planner_input(w, true));
   episode::EpisodeConfig c = episode::parse_episode_config(config_text, "c.json");
-  c.timeout_s = 60;
+  c.timeout_s = timeout_s;
   return episode::run_episode(w, *planner, c);
 }
 
@@ -92,6 +92,27 @@ TEST(Plugins, APlannerIsChosenByNameWithItsOptionsAndCapabilities) {
   ASSERT_EQ(r.path.size(), 3u);
   EXPECT_DOUBLE_EQ(r.path[1].y, 3.0);
   EXPECT_NEAR(r.length, 2 * std::hypot(4.0, 2.0), 1e-12);
+}
+
+// A plugin's dock detector drives the docking: sightings 4 cm to the side dock the robot 4 cm off
+// (the pads still take it); one that throws ends the episode with plugin_error.
+TEST(Plugins, ADockDetectorIsChosenByNameAndItsSightingsSteerTheDocking) {
+  const plugins::LoadedPlugin& p = plugins::load_plugin(TEST_PLUGIN_GOOD);
+  EXPECT_EQ(p.dock_detectors,
+            (std::vector<std::string>{"test-offset-camera", "test-detector-thrower"}));
+  const episode::EpisodeResult straight =
+      run_with(R"({"docking": {"detector": "test-offset-camera"}})", 600);
+  const episode::EpisodeResult shifted = run_with(
+      R"({"docking": {"detector": "test-offset-camera"}, "test-offset-camera": {"offset_m": 0.04}})",
+      600);
+  ASSERT_TRUE(straight.error_measured && shifted.error_measured);
+  EXPECT_LT(straight.position_error_m, 0.01);
+  EXPECT_GT(shifted.position_error_m, 0.025);
+  const episode::EpisodeResult thrown =
+      run_with(R"({"docking": {"detector": "test-detector-thrower"}})", 600);
+  ASSERT_TRUE(thrown.failure);
+  EXPECT_EQ(thrown.failure->reason, robot::FailureReason::kPluginError);
+  EXPECT_NE(thrown.failure->detail.find("the test detector is blinded"), std::string::npos);
 }
 
 TEST(Plugins, APlannerThatThrowsEndsItsEpisodeWithPluginError) {

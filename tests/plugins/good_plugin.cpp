@@ -2,7 +2,9 @@
 // `test-thrower.throw_after_steps` steps (never while negative), and "test-map-refuser", whose
 // factory throws for any map with boxes (so never at load, always in an episode); two planners:
 // "test-straight", the straight line to the goal bent sideways by its option `detour_m` at the
-// middle (whatever is in the way), and "test-planner-thrower", whose every query throws.
+// middle (whatever is in the way), and "test-planner-thrower", whose every query throws; two dock
+// detectors: "test-offset-camera", the camera's sightings moved sideways by its `offset_m`, and
+// "test-detector-thrower", which throws at its first sighting.
 #include <cmath>
 #include <stdexcept>
 
@@ -75,8 +77,44 @@ void register_planners(plugins::Registrar& r) {
   r.add_planner(thrower);
 }
 
+class OffsetCamera : public robot::DockDetector {
+ public:
+  explicit OffsetCamera(double offset_m, bool throws) : offset_m_(offset_m), throws_(throws) {}
+  std::optional<robot::ChargerDetection> detect(const robot::DockDetectorQuery& q) override {
+    std::optional<robot::ChargerDetection> d = q.readings->charger;
+    if (d && throws_) throw std::runtime_error("the test detector is blinded");
+    // Sideways in the docked pose's own frame: the robot docks that far to its left.
+    if (d) d->dock_in_robot = geom::compose(d->dock_in_robot, geom::Pose2{0.0, offset_m_, 0.0});
+    return d;
+  }
+
+ private:
+  double offset_m_;
+  bool throws_;
+};
+
+void register_dock_detectors(plugins::Registrar& r) {
+  robot::DockDetectorEntry offset;
+  offset.name = "test-offset-camera";
+  offset.summary = "the camera's sightings moved sideways";
+  offset.params = {{"test-offset-camera", "offset_m", util::ParamKind::kReal, 0.0, -0.2, 0.2, false,
+                    "sideways shift of every sighting"}};
+  offset.make = [](const robot::DockDetectorContext&, const util::ParamValues& v) {
+    return std::make_unique<OffsetCamera>(v.real("test-offset-camera.offset_m"), false);
+  };
+  r.add_dock_detector(offset);
+  robot::DockDetectorEntry thrower;
+  thrower.name = "test-detector-thrower";
+  thrower.summary = "throws at its first sighting";
+  thrower.make = [](const robot::DockDetectorContext&, const util::ParamValues&) {
+    return std::make_unique<OffsetCamera>(0.0, true);
+  };
+  r.add_dock_detector(thrower);
+}
+
 void register_components(plugins::Registrar& r) {
   register_planners(r);
+  register_dock_detectors(r);
   controller::LocalControllerEntry thrower;
   thrower.name = "test-thrower";
   thrower.summary = "throws after a number of steps";
