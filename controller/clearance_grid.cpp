@@ -38,4 +38,18 @@ ClearanceGrid::ClearanceGrid(geom::Vec2 center, double half_side_m, double cell_
     }
 }
 
+float ClearanceGrid::interpolated(float x, float y) const {
+  // Cell centres sit at half cells; outside the window it is 0 as `at` says.
+  const float fx = (x - x0_) * inverse_cell_ - 0.5f, fy = (y - y0_) * inverse_cell_ - 0.5f;
+  const auto n = static_cast<float>(n_);
+  if (!(fx >= -0.5f && fy >= -0.5f && fx < n - 0.5f && fy < n - 0.5f)) return 0.0f;
+  const float cx = std::clamp(fx, 0.0f, n - 1.0f), cy = std::clamp(fy, 0.0f, n - 1.0f);
+  const int i = std::min(static_cast<int>(cx), n_ - 2), j = std::min(static_cast<int>(cy), n_ - 2);
+  if (n_ < 2) return cells_[0];
+  const float u = cx - static_cast<float>(i), v = cy - static_cast<float>(j);
+  const auto cell = [&](int a, int b) { return cells_[static_cast<std::size_t>(b * n_ + a)]; };
+  return (1 - v) * ((1 - u) * cell(i, j) + u * cell(i + 1, j)) +
+         v * ((1 - u) * cell(i, j + 1) + u * cell(i + 1, j + 1));
+}
+
 }  // namespace plantsim::controller

@@ -24,6 +24,10 @@ class ClearanceGrid {
       return 0.0f;
     return cells_[static_cast<std::size_t>(static_cast<int>(fy) * n_ + static_cast<int>(fx))];
   }
+  /// The same distance interpolated between the four nearest cell centres: within a few
+  /// millimetres of the exact distance where `at` may be off by half a cell's diagonal, for a
+  /// collision test that rejects only what really touches.
+  float interpolated(float x, float y) const;
   double cell_m() const { return cell_; }
 
  private:
