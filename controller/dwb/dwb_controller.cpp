@@ -54,7 +54,12 @@ namespace {
 class DwbController : public SamplingController {
  public:
   DwbController(const LocalControllerContext& ctx, DwbControllerParams p)
-      : SamplingController(ctx, p.goal_tolerance_m), p_(fitted(p, ctx)), planner_(p_.planner) {}
+      : SamplingController(
+            ctx, p.goal_tolerance_m,
+            field_reach(ctx.footprint_radius_m,
+                        std::max(p.planner.inflation_radius_m, p.planner.local_goal_margin_m))),
+        p_(fitted(p, ctx)),
+        planner_(p_.planner) {}
 
  private:
   void set_method_path(const std::vector<geom::Vec2>& path) override { planner_.set_path(path); }

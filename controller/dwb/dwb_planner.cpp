@@ -34,7 +34,11 @@ void DwbPlanner::set_path(const std::vector<geom::Vec2>& plan) {
 
 std::vector<geom::Pose2> DwbPlanner::simulate(const DwbQuery& q, Twist target) const {
   std::vector<geom::Pose2> poses;
+  poses.reserve(static_cast<std::size_t>(std::ceil(p_.sim_time / p_.time_granularity)) + 1);
   geom::Pose2 s = q.pose;
+  // The heading as its cosine and sine, turned pose by pose (a step turns at most
+  // max_vel_theta * time_granularity, 0.025 rad): no trigonometry per pose.
+  double c = std::cos(s.yaw), sn = std::sin(s.yaw);
   double v = q.velocity.v_mps, w = q.velocity.omega_radps;
   const double dt = p_.time_granularity;
   for (double t = 0; t < p_.sim_time - 1e-9; t += dt) {
@@ -44,9 +48,14 @@ std::vector<geom::Pose2> DwbPlanner::simulate(const DwbQuery& q, Twist target) c
         (std::fabs(target.omega_radps) > std::fabs(w) ? p_.acc_lim_theta : -p_.decel_lim_theta) *
         dt;
     w = std::clamp(target.omega_radps, w - dw, w + dw);
-    s.x += v * std::cos(s.yaw) * dt;
-    s.y += v * std::sin(s.yaw) * dt;
+    s.x += v * c * dt;
+    s.y += v * sn * dt;
     s.yaw += w * dt;
+    const double a = w * dt, a2 = a * a;
+    const double rc = 1 - a2 * (0.5 - a2 * (1.0 / 24 - a2 / 720));
+    const double rs = a * (1 - a2 * (1.0 / 6 - a2 * (1.0 / 120 - a2 / 5040)));
+    const double turned = c * rc - sn * rs;
+    sn = sn * rc + c * rs, c = turned;
     poses.push_back(s);
   }
   return poses;
@@ -59,8 +68,9 @@ double DwbPlanner::edge_distance(const DwbQuery& q, const geom::Pose2& s) {
 
 double DwbPlanner::path_distance_cells(geom::Vec2 p) const {
   double best = std::numeric_limits<double>::infinity();
-  for (const geom::Vec2& a : plan_.window()) best = std::min(best, geom::distance(a, p));
-  return best / kCell_m;
+  for (const geom::Vec2& a : plan_.window())
+    best = std::min(best, (a.x - p.x) * (a.x - p.x) + (a.y - p.y) * (a.y - p.y));
+  return std::sqrt(best) / kCell_m;
 }
 
 ScoredTrajectory DwbPlanner::score(const DwbQuery& q, Twist command) const {
