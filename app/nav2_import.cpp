@@ -276,7 +276,9 @@ void dwb_controller(Importer& im, const YAML::Node& c, const std::string& w) {
   map_critic(im, c, w, "RotateToGoal", "dwb",
              {{"scale", "rotate_to_goal_scale"}, {"slowing_factor", "slowing_factor"}});
   map_critic(im, c, w, "Oscillation", "dwb",
-             {{"oscillation_reset_dist", "oscillation_reset_dist"}});
+             {{"oscillation_reset_dist", "oscillation_reset_dist"},
+              {"oscillation_reset_angle", "oscillation_reset_angle"},
+              {"x_only_threshold", "x_only_threshold"}});
   im.not_mapped(c, w, "critics",
                 "plantsim's DWB always runs its seven critics (BaseObstacle, Oscillation, "
                 "RotateToGoal, PathAlign, GoalAlign, PathDist, GoalDist): docs/controllers.md");

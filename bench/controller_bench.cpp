@@ -12,6 +12,7 @@
 #include "controller/dwb/dwb_planner.h"
 #include "controller/mppi/mppi_optimizer.h"
 #include "controller/pure_pursuit.h"
+#include "controller/sampling_follow.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "worlds/world.h"
@@ -66,12 +67,15 @@ int run_controller_bench(const std::string& shared_data, bool quick) {
   report("controllers", {"rpp_cycle_p99", rpp_t.p99_ms, "ms"});
 
   // MPPI's clearance field: a 6 m window around the robot, made afresh each cycle as the
-  // robot's local layer would be (its cost counted with the cycle's).
+  // robot's local layer would be (its cost counted with the cycle's), out to the reach the
+  // controllers ask of it (their inflation beyond the footprint).
+  const double reach = controller::field_reach(world.robot.radius_m, 0.55);
   controller::mppi::MppiOptimizer mppi({}, {}, 1);
   mppi.set_path(plan.path);
   const geom::Pose2 goal = worlds::staging_pose(world);
   const CycleTimes mppi_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
-    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor,
+                                         reach);
     controller::mppi::RobotState s{static_cast<float>(p.x), static_cast<float>(p.y),
                                    static_cast<float>(p.yaw), static_cast<float>(v), 0.0f};
     return mppi.step({s, goal, &grid, static_cast<float>(world.robot.radius_m)});
@@ -83,7 +87,8 @@ int run_controller_bench(const std::string& shared_data, bool quick) {
   dwb.set_path(plan.path);
   double omega = 0;
   const CycleTimes dwb_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
-    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor,
+                                         reach);
     const controller::Twist u = dwb.step({p, {v, omega}, goal, &grid, world.robot.radius_m});
     omega = u.omega_radps;
     return u;
@@ -94,7 +99,8 @@ int run_controller_bench(const std::string& shared_data, bool quick) {
   // Of each MPPI and DWB cycle above: the clearance field alone, on the same drive as RPP's.
   volatile float sink = 0;  // the field is read, so it is built
   const CycleTimes grid_t = time_cycles(cycles, world.start, [&](const geom::Pose2& p, double v) {
-    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor);
+    const controller::ClearanceGrid grid(p.position(), 3.0, 0.05, world.obstacles, world.floor,
+                                         reach);
     sink = grid.at(static_cast<float>(p.x), static_cast<float>(p.y));
     return rpp_again.step(p, v).twist;
   });

@@ -41,13 +41,13 @@ TrackingCommand SamplingController::step(const LocalQuery& q) {
   TrackingCommand out;
   progress_.update(q.pose, 0.5, goal_tolerance_m_, out);
   if (out.goal_reached) return out;
-  const ClearanceGrid field = local_clearance(ctx_, q, 3.0, 0.05);
+  const ClearanceGrid field = local_clearance(ctx_, q, 3.0, 0.05, field_reach_m_);
   out.twist = sample(q, field, progress_.goal());
   return out;
 }
 
 ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuery& q,
-                              double half_side_m, double cell_m) {
+                              double half_side_m, double cell_m, double reach_m) {
   // Boxes beyond the window and the field's reach (its own half side) change no cell.
   const Vec2 c = q.pose.position();
   const double reach = 2.0 * half_side_m;
@@ -60,7 +60,7 @@ ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuer
   for (const geom::Rect& r : ctx.map_obstacles) add(r);
   if (q.nearby_obstacles)
     for (const MovingBox& m : *q.nearby_obstacles) add(m.box);
-  return ClearanceGrid(c, half_side_m, cell_m, boxes, ctx.floor);
+  return ClearanceGrid(c, half_side_m, cell_m, boxes, ctx.floor, reach_m);
 }
 
 }  // namespace plantsim::controller

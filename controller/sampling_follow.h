@@ -29,17 +29,26 @@ class PathProgress {
   std::size_t segment_ = 0;
 };
 
-/// The distance field of `half_side_m` around the robot (cells of `cell_m`): the map's boxes
-/// near it and the sensed ones.
+/// How far from the robot's centre obstacles matter to critics that look `inflation_m` beyond
+/// its footprint: the field's reach, two cells more so that interpolating near it stays exact.
+inline double field_reach(double footprint_radius_m, double inflation_m) {
+  return footprint_radius_m + inflation_m + 0.1;
+}
+
+/// The distance field of `half_side_m` around the robot (cells of `cell_m`, distances up to
+/// `reach_m`): the map's boxes near it and the sensed ones.
 ClearanceGrid local_clearance(const LocalControllerContext& ctx, const LocalQuery& q,
-                              double half_side_m, double cell_m);
+                              double half_side_m, double cell_m, double reach_m = INFINITY);
 
 /// A sampling method as a local controller: progress on the plan, the goal and the local field
 /// (a 6 m window in 5 cm cells) are this adapter's; the method only samples the command.
 class SamplingController : public LocalController {
  public:
-  SamplingController(const LocalControllerContext& ctx, double goal_tolerance_m)
-      : ctx_(ctx), goal_tolerance_m_(goal_tolerance_m) {}
+  /// `field_reach_m`: the furthest from the robot's centre an obstacle's distance matters to
+  /// the method's critics (its footprint plus its inflation).
+  SamplingController(const LocalControllerContext& ctx, double goal_tolerance_m,
+                     double field_reach_m)
+      : ctx_(ctx), goal_tolerance_m_(goal_tolerance_m), field_reach_m_(field_reach_m) {}
 
   void set_path(std::vector<Vec2> path) final;
   TrackingCommand step(const LocalQuery& q) final;
@@ -53,6 +62,7 @@ class SamplingController : public LocalController {
  private:
   LocalControllerContext ctx_;
   double goal_tolerance_m_;
+  double field_reach_m_;
   PathProgress progress_;
 };
 

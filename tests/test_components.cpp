@@ -170,5 +170,20 @@ TEST_P(SamplingControllers, DockWithoutContact) {
 
 INSTANTIATE_TEST_SUITE_P(Nav2, SamplingControllers, ::testing::Values("mppi", "dwb"));
 
+// Issue 87: DWB stood still 0.3 m short of the ring's first corner (its plan turns at the
+// inflated margin; the goal beyond pulled every arc across the corner until none was valid)
+// and, on coal_mine_roadways, touched a roadway's corner the same way. Seed 1, sensors mode.
+TEST(Nav2Dwb, DocksRoundTheCableTunnelRingsSharpCorners) {
+  const worlds::World w =
+      worlds::load_world(test::source_file("data/worlds/plants/cable_tunnel_ring.json"));
+  const episode::EpisodeConfig c =
+      episode::parse_episode_config(R"({"local_controller": "dwb"})", "c.json");
+  auto planner = planner::make_planner("vg", planner::planner_input(w, true));
+  const episode::EpisodeResult r = episode::run_episode(w, *planner, c);
+  EXPECT_TRUE(r.docked) << episode::status_name(r);
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_LT(r.time_s, 150.0);
+}
+
 }  // namespace
 }  // namespace plantsim

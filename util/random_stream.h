@@ -23,6 +23,8 @@ class RandomStream {
   explicit RandomStream(std::uint64_t seed) : engine_(seed) {}
   /// A draw of the standard normal N(0, 1).
   double gaussian() { return normal_(engine_); }
+  /// The engine's next 64 bits, for a caller that turns many into draws at once (MPPI's noise).
+  std::uint64_t bits() { return engine_(); }
   /// A draw uniform in [0, 1): bit for bit Boost's uniform_01 on this engine (the 64-bit draw
   /// to the nearest double, times 2^-64, drawn again when that rounds to 1), without its
   /// unsigned-to-double conversion, whose branch on the draw's top bit the CPU mispredicts half

@@ -37,9 +37,13 @@ const util::ParamRows<DwbControllerParams>& dwb_param_rows() {
       PLANTSIM_PARAM("dwb", planner.slowing_factor, "slowing_factor", 0.0, kMaxParameter),
       PLANTSIM_PARAM("dwb", planner.oscillation_reset_dist, "oscillation_reset_dist", 0.0,
                      kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.oscillation_reset_angle, "oscillation_reset_angle", 0.0,
+                     kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.x_only_threshold, "x_only_threshold", 0.0, kMaxParameter),
       PLANTSIM_PARAM("dwb", planner.inflation_radius_m, "inflation_radius_m", 0.0, kMaxParameter),
       PLANTSIM_PARAM("dwb", planner.forward_prune_distance, "forward_prune_distance", 0.0,
                      kMaxParameter),
+      PLANTSIM_PARAM("dwb", planner.local_goal_margin_m, "local_goal_margin_m", 0.0, kMaxParameter),
       PLANTSIM_PARAM_ABOVE("dwb", goal_tolerance_m, "goal_tolerance_m", 0.0, kMaxParameter),
   };
   return rows;
@@ -50,7 +54,12 @@ namespace {
 class DwbController : public SamplingController {
  public:
   DwbController(const LocalControllerContext& ctx, DwbControllerParams p)
-      : SamplingController(ctx, p.goal_tolerance_m), p_(fitted(p, ctx)), planner_(p_.planner) {}
+      : SamplingController(
+            ctx, p.goal_tolerance_m,
+            field_reach(ctx.footprint_radius_m,
+                        std::max(p.planner.inflation_radius_m, p.planner.local_goal_margin_m))),
+        p_(fitted(p, ctx)),
+        planner_(p_.planner) {}
 
  private:
   void set_method_path(const std::vector<geom::Vec2>& path) override { planner_.set_path(path); }
@@ -65,11 +74,13 @@ class DwbController : public SamplingController {
     return planner_.step(query);
   }
 
-  /// The window is what one control period reaches (Nav2 sets controller_period from the
-  /// controller's frequency), no faster than the wheels turn.
+  /// No faster, and no quicker to speed up or brake, than the wheels: a trajectory the drive
+  /// cannot follow would be scored as if it could, and the robot would leave it towards what
+  /// it passes.
   static DwbControllerParams fitted(DwbControllerParams p, const LocalControllerContext& ctx) {
-    p.planner.controller_period = ctx.control_period_s;
     p.planner.max_vel_x = std::min(p.planner.max_vel_x, ctx.max_wheel_speed_mps);
+    p.planner.acc_lim_x = std::min(p.planner.acc_lim_x, ctx.max_accel_mps2);
+    p.planner.decel_lim_x = std::max(p.planner.decel_lim_x, -ctx.max_accel_mps2);
     return p;
   }
 

@@ -16,7 +16,6 @@ struct DwbParams {
   int vx_samples = 20, vtheta_samples = 20;
   double sim_time = 1.7;            ///< s each trajectory is simulated
   double time_granularity = 0.025;  ///< s between its poses (linear_granularity 0.05 at most)
-  double controller_period = 0.05;  ///< s: the dynamic window is what one period can reach
   double xy_goal_tolerance = 0.25;  ///< m: within it, RotateToGoal takes over
   // Critics' scales (nav2_bringup)
   double base_obstacle_scale = 0.02;
@@ -26,9 +25,12 @@ struct DwbParams {
   double forward_point_distance = 0.325;  ///< m ahead of the pose for the align critics
   double slowing_factor = 5.0;            ///< RotateToGoal: cost of speed near the goal
   double oscillation_reset_dist = 0.05;   ///< m driven that forgets a reversal
+  double oscillation_reset_angle = 0.2;   ///< rad turned that forgets a reversal
+  double x_only_threshold = 0.05;         ///< m/s: faster, turns' reversals are not tracked
   double inflation_radius_m = 0.55;       ///< the obstacle cost decays to 0 here from the footprint
-  double forward_prune_distance =
-      2.0;  ///< m of the plan ahead the critics see (its end: the local goal)
+  double forward_prune_distance = 2.0;    ///< m of the plan ahead the critics see
+  double local_goal_margin_m = 0.05;      ///< the local goal is the furthest point of that plan
+                                          ///< the footprint reaches in a straight line this clear
 };
 
 }  // namespace plantsim::controller::dwb

@@ -1,17 +1,20 @@
 // The dynamic window approach in the manner of nav2_dwb_controller: each control cycle samples
-// (v, omega) pairs in the window the accelerations reach within one period, simulates each for
-// sim_time (speeds ramped as the limits allow), scores the trajectories with DWB's critics
-// (BaseObstacle, Oscillation, RotateToGoal, PathAlign, GoalAlign, PathDist, GoalDist, each
-// times its scale) and sends the cheapest valid pair. Grid distances are in cells of 5 cm, as
-// DWB's map-grid critics count them on nav2_bringup's local costmap.
+// (v, omega) pairs in the window the accelerations reach within sim_time (as its
+// StandardTrajectoryGenerator does), simulates each for sim_time (speeds ramped as the limits
+// allow), scores the trajectories with DWB's critics (BaseObstacle, Oscillation, RotateToGoal,
+// PathAlign, GoalAlign, PathDist, GoalDist, each times its scale) and sends the cheapest valid
+// pair. Grid distances are in cells of 5 cm, as DWB's map-grid critics count them on
+// nav2_bringup's local costmap; the goal critics steer to the local goal in sight
+// (plan_window.h).
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "controller/clearance_grid.h"
 #include "controller/diff_drive.h"
 #include "controller/dwb/dwb_params.h"
+#include "controller/dwb/oscillation.h"
+#include "controller/dwb/plan_window.h"
 
 namespace plantsim::controller::dwb {
 
@@ -53,16 +56,13 @@ class DwbPlanner {
   ScoredTrajectory score(const DwbQuery& q, Twist command) const;
 
  private:
+  /// The footprint's edge to the nearest obstacle at `s` (negative: overlapping).
+  static double edge_distance(const DwbQuery& q, const geom::Pose2& s);
   double path_distance_cells(geom::Vec2 p) const;
-  void prune(geom::Vec2 robot);
   DwbParams p_;
-  std::vector<geom::Vec2> path_;    ///< the whole plan, every 5 cm
-  std::size_t progress_ = 0;        ///< its point nearest the robot, never back
-  std::vector<geom::Vec2> window_;  ///< forward_prune_distance of it from there
+  PlanWindow plan_;
   std::vector<ScoredTrajectory> scored_;
-  // Oscillation: the signs of the last command and where the robot was when they last flipped.
-  int last_v_sign_ = 0, last_w_sign_ = 0;
-  std::optional<geom::Vec2> flipped_at_;
+  OscillationCritic oscillation_;
 };
 
 }  // namespace plantsim::controller::dwb

@@ -24,6 +24,8 @@ struct CriticInput {
   geom::Pose2 goal;
   const ClearanceGrid* clearance = nullptr;  ///< none: no obstacle cost
   float robot_radius_m = 0.2f;
+  /// furthest_reached(*this) when already found (all_critics finds it once for two critics).
+  std::size_t furthest = static_cast<std::size_t>(-1);
   /// The robot's distance to the goal (straight line), which switches critics on and off.
   float distance_to_goal() const;
 };

@@ -75,7 +75,10 @@ namespace {
 class MppiController : public SamplingController {
  public:
   MppiController(const LocalControllerContext& ctx, MppiControllerParams p)
-      : SamplingController(ctx, p.goal_tolerance_m),
+      : SamplingController(
+            ctx, p.goal_tolerance_m,
+            field_reach(ctx.footprint_radius_m,
+                        std::max(p.critics.inflation_radius, p.critics.collision_margin_distance))),
         p_(bounded_by_motors(p, ctx)),
         optimizer_(p_.optimizer, p_.critics, ctx.seed) {}
 

@@ -59,18 +59,19 @@ void MppiOptimizer::optimise_once(const MppiQuery& q) {
   costs_.setZero();
   const CriticInput in{r_, p_, q.state, window_, window_s_, q.goal, q.clearance, q.robot_radius_m};
   all_critics(in, c_, costs_);
-  // The control cost of Williams et al.: gamma / sigma^2 * u . noise, summed over the steps.
+  // The control cost of Williams et al.: gamma / sigma^2 * u . noise, summed over the steps
+  // (each a product of the noise table with the sequence).
   const auto gamma = static_cast<float>(p_.gamma);
   costs_ += gamma / static_cast<float>(p_.vx_std * p_.vx_std) *
-                (r_.noise_vx.rowwise() * u_.vx.transpose()).rowwise().sum() +
+                (r_.noise_vx.matrix() * u_.vx.matrix()).array() +
             gamma / static_cast<float>(p_.wz_std * p_.wz_std) *
-                (r_.noise_wz.rowwise() * u_.wz.transpose()).rowwise().sum();
+                (r_.noise_wz.matrix() * u_.wz.matrix()).array();
   const float best = costs_.minCoeff();
-  const Eigen::ArrayXf weights = (-(costs_ - best) / static_cast<float>(p_.temperature)).exp();
-  const Eigen::ArrayXf softmax = weights / weights.sum();
+  weights_ = (-(costs_ - best) / static_cast<float>(p_.temperature)).exp();
+  weights_ /= weights_.sum();
   // The samples' own (limited) commands averaged: a sample the limits cut is averaged as driven.
-  u_.vx = (r_.vx.colwise() * softmax).colwise().sum().transpose();
-  u_.wz = (r_.wz.colwise() * softmax).colwise().sum().transpose();
+  u_.vx = (r_.vx.matrix().transpose() * weights_.matrix()).array();
+  u_.wz = (r_.wz.matrix().transpose() * weights_.matrix()).array();
 }
 
 void MppiOptimizer::remember_optimum(const MppiQuery& q) {

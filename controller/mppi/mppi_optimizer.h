@@ -47,6 +47,7 @@ class MppiOptimizer {
   ControlSequence u_;
   Rollouts r_;
   Costs costs_;
+  Eigen::ArrayXf weights_;        ///< the softmax over the samples' costs
   std::vector<geom::Vec2> path_;  ///< the whole plan, resampled
   std::vector<float> path_s_;
   std::size_t progress_ = 0;        ///< the plan's point nearest the robot, never back

@@ -1,7 +1,8 @@
 // MPPI's samples: control sequences drawn as noise around the last optimum, passed through the
 // differential drive's limits (speeds, then accelerations step by step, as
 // nav2_mppi_controller's DiffDriveMotionModel does), and integrated into poses. One row per
-// sample, one column per time step, in single precision as Nav2 computes them.
+// sample, one column per time step, in single precision as Nav2 computes them; stored column
+// by column, so that each step is one contiguous vector over the whole batch.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,7 +12,7 @@
 
 namespace plantsim::controller::mppi {
 
-using Table = Eigen::Array<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using Table = Eigen::Array<float, Eigen::Dynamic, Eigen::Dynamic>;
 
 /// The optimum so far: one command per time step.
 struct ControlSequence {
@@ -34,7 +35,8 @@ struct Rollouts {
   void resize(int batch, int steps);
 };
 
-/// Draws the noise for every sample and step (batch x steps normal draws per control).
+/// Draws the noise for every sample and step (batch x steps normal draws per control), by the
+/// Box-Muller transform over whole columns: two draws from each 64 bits of the stream.
 void draw_noise(const MppiParams& p, util::RandomStream& rng, Rollouts& r);
 
 /// The commands (sequence + noise, limited) and the poses they reach from `state`.
