@@ -127,8 +127,8 @@ std::vector<std::string> navigation_row(const episode::EpisodeOutcome& r,
           value(r.rms_jerk_mps3, 2),
           value(r.rms_angular_accel_radps2, 2),
           std::to_string(r.controller_cycles),
-          value(r.controller_ms_median, 3),
-          value(r.controller_ms_p99, 3)};
+          value(r.controller_ms_median, 4),  // pure pursuit's step takes microseconds
+          value(r.controller_ms_p99, 4)};
 }
 
 std::string trajectory_csv(const episode::EpisodeLog& r) {
