@@ -7,8 +7,8 @@ Prints two Markdown tables from DIR/episodes.jsonl: per local controller and fau
 worlds (successes, mean simulated time of the successes, and the navigation metrics pooled as
 summary.csv pools them per row: the smallest minimum clearance, means of the episodes' mean
 clearance, near share, RMS jerk and angular acceleration, the median of the episodes' median
-compute times and the largest of their 99th percentiles; docs/batch.md), then every episode
-that did not succeed with its reason.
+compute times and the largest of their 99th percentiles; docs/batch.md), the successes per world
+and controller, then every episode that did not succeed with its reason.
 """
 import json
 import statistics
@@ -39,14 +39,15 @@ def row(controller, fault, records):
              fmt(mean(numbers(records, "near_obstacle_share")), 3),
              fmt(mean(numbers(records, "rms_jerk_mps3")), 2),
              fmt(mean(numbers(records, "rms_angular_accel_radps2")), 2),
-             fmt(lower_median(numbers(records, "controller_ms_median")), 3),
-             fmt(max(numbers(records, "controller_ms_p99"), default=None), 3)]
+             fmt(lower_median(numbers(records, "controller_ms_median")), 4),
+             fmt(max(numbers(records, "controller_ms_p99"), default=None), 4)]
     return "| " + " | ".join(cells) + " |"
 
 
 def main(folder):
     with open(f"{folder}/episodes.jsonl") as f:
         records = [json.loads(line) for line in f if line.strip()]
+    records.sort(key=lambda r: r["index"])  # the scenario's order, not the order they finished
     groups = defaultdict(list)
     for r in records:
         groups[(r["controller"], r["fault"])].append(r)
@@ -57,12 +58,26 @@ def main(folder):
     for (controller, fault), group in groups.items():
         print(row(controller, fault, group))
     print()
+    controllers = list(dict.fromkeys(r["controller"] for r in records))
+    print("| world | " + " | ".join(controllers) + " |")
+    print("|---|" + "---|" * len(controllers))
+    by_world = defaultdict(list)
+    for r in records:
+        by_world[r["world"]].append(r)
+    for world, group in by_world.items():
+        cells = []
+        for c in controllers:
+            mine = [r for r in group if r["controller"] == c]
+            cells.append(f"{sum(r['succeeded'] for r in mine)}/{len(mine)}")
+        print(f"| {world} | " + " | ".join(cells) + " |")
+    print()
     print("| episode | status | reason | at (s) |")
     print("|---|---|---|---|")
     for r in records:
         if not r["succeeded"]:
             at = r.get("failure_time_s")
-            print(f"| {r['id']} | {r['status']} | {r.get('failure') or '-'} | {fmt(at, 1) if at is not None else '-'} |")
+            episode = r["id"].replace("|", "\\|")  # the id's separators, not table columns
+            print(f"| {episode} | {r['status']} | {r.get('failure') or '-'} | {fmt(at, 1) if at is not None else '-'} |")
 
 
 if __name__ == "__main__":
