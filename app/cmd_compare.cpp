@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "app/episode_outputs.h"
+#include "controller/local_controller_registry.h"
 #include "episode/episode_config_json.h"
 #include "episode/run_episode.h"
 #include "planner/planner.h"
@@ -31,6 +32,7 @@ struct CompareOptions {
   int query = 0;
   std::string world;
   std::vector<std::string> planners = {"vg", "vg-traditional", "grid"};
+  std::vector<std::string> controllers;  ///< given: one panel per local controller instead
   std::string out;
   std::string title;
   std::string config;
@@ -39,11 +41,12 @@ struct CompareOptions {
 };
 
 /// One planner's panel: its plan alone (--plan-only), or the episode it drives.
+/// With --controllers, `name` is the planner and `local` the panel's local controller.
 render::ComparisonPanel compare_one(const std::string& name, const worlds::World& world,
-                                    const CompareOptions& opt,
-                                    const episode::EpisodeConfig& config) {
+                                    const CompareOptions& opt, const episode::EpisodeConfig& config,
+                                    const std::string& local = "") {
   render::ComparisonPanel panel;
-  panel.label = name;
+  panel.label = local.empty() ? name : local;
   panel.drove = !opt.plan_only;
   if (opt.plan_only) {
     auto p = planner::make_planner(name, planner::planner_input(world, false));
@@ -68,6 +71,7 @@ render::ComparisonPanel compare_one(const std::string& name, const worlds::World
   auto p = planner::make_planner(field ? "vg" : name, planner::planner_input(world, true));
   episode::EpisodeConfig c = config;
   if (field) c.travel = "potential-field";
+  if (!local.empty()) c.local_controller = local;
   panel.run = episode::run_episode(world, *p, c);
   if (opt.graph) panel.graph_edges = p->graph_edges();
   return panel;
@@ -98,6 +102,42 @@ nlohmann::ordered_json comparison_json(const worlds::World& world, const std::st
   return data;
 }
 
+/// The panels' methods: the planners, or with --controllers the local controllers (each then
+/// follows the one planner given, vg by default). A name twice drew the same method twice, as if
+/// compared with itself: refused.
+std::vector<std::string> compared_methods(CompareOptions& opt, bool planners_given) {
+  const bool by_controller = !opt.controllers.empty();
+  if (by_controller) {
+    if (opt.plan_only) throw std::invalid_argument("--controllers: --plan-only drives nothing");
+    if (!planners_given) opt.planners = {"vg"};
+    if (opt.planners.size() != 1)
+      throw std::invalid_argument("--controllers: name one planner for them to follow");
+  }
+  const std::vector<std::string>& methods = by_controller ? opt.controllers : opt.planners;
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (methods[i] == methods[j])
+        throw std::invalid_argument(std::string(by_controller ? "--controllers" : "--planners") +
+                                    ": '" + methods[i] + "' is listed twice");
+  return methods;
+}
+
+std::string comparison_title(const CompareOptions& opt, const std::string& world) {
+  if (!opt.title.empty()) return opt.title;
+  return opt.controllers.empty() ? world + ": planners compared"
+                                 : world + ": local controllers compared (" + opt.planners[0] + ")";
+}
+
+std::string comparison_notes(const CompareOptions& opt) {
+  if (opt.plan_only)
+    return "Plans from the start to the charger's docked position (the staging pose on ROS maps); "
+           "nothing driven.";
+  return opt.controllers.empty() ? "Each planner plans to the staging pose; the robot drives and "
+                                   "docks in the simulation."
+                                 : "The planner plans to the staging pose; each local controller "
+                                   "follows that plan and the robot docks in the simulation.";
+}
+
 }  // namespace
 
 std::function<int()> add_compare_command(CLI::App& app) {
@@ -112,17 +152,19 @@ std::function<int()> add_compare_command(CLI::App& app) {
                   "field instead")
       ->delimiter(',')
       ->check(CLI::IsMember(choices));
+  cmd->add_option("--controllers", opt->controllers,
+                  "Local controllers to compare instead (comma separated), each driving the one "
+                  "planner given (default vg)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(controller::local_controllers().names()));
   cmd->add_option("--out", opt->out, "Output folder (default results/<world name>_compare)");
   cmd->add_option("--title", opt->title, "Figure title");
   cmd->add_option("--config", opt->config, "Episode parameters (JSON)");
   cmd->add_flag("--graph", opt->graph, "Draw each planner's graph");
   cmd->add_flag("--plan-only", opt->plan_only, "Plan start to charger only; do not drive");
   return [opt, cmd]() {
-    // One panel per planner: a name twice drew the same method twice, as if compared with itself.
-    for (std::size_t i = 0; i < opt->planners.size(); ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (opt->planners[i] == opt->planners[j])
-          throw std::invalid_argument("--planners: '" + opt->planners[i] + "' is listed twice");
+    const bool by_controller = !opt->controllers.empty();
+    const std::vector<std::string> methods = compared_methods(*opt, cmd->count("--planners") > 0);
     worlds::PoseOverrides poses;
     poses.movingai_scen = opt->scen;
     poses.movingai_query = opt->query;
@@ -137,18 +179,26 @@ std::function<int()> add_compare_command(CLI::App& app) {
     std::vector<render::ComparisonPanel> panels;
     render::Report report;
     report.headers = metric_headers();
+    report.more_tables = {{"Navigation over the travel to the staging pose (docs/batch.md)",
+                           navigation_headers(),
+                           {}}};
     bool all_ok = true;
-    for (const std::string& name : opt->planners) {
-      render::ComparisonPanel panel = compare_one(name, world, *opt, config);
+    for (const std::string& method : methods) {
+      const std::string& name = by_controller ? opt->planners[0] : method;
+      render::ComparisonPanel panel =
+          compare_one(name, world, *opt, config, by_controller ? method : "");
       all_ok = all_ok && (opt->plan_only ? panel.run.plan_status == planner::PlanStatus::kOk
                                          : panel.run.succeeded());
       report.rows.push_back(metric_row(panel.run, world.name, panel.drove));
-      std::cout << name << ": " << episode::status_name(panel.run) << ", path "
+      if (panel.drove) report.more_tables[0].rows.push_back(navigation_row(panel.run, method));
+      std::cout << method << ": " << episode::status_name(panel.run) << ", path "
                 << panel.run.path_length_m << " m, plan "
                 << panel.run.plan_stats.build_ms + panel.run.plan_stats.query_ms << " ms\n";
       panels.push_back(std::move(panel));
     }
-    const std::string title = opt->title.empty() ? world.name + ": planners compared" : opt->title;
+    if (report.more_tables[0].rows.empty())
+      report.more_tables.clear();  // plans alone drove nothing
+    const std::string title = comparison_title(*opt, world.name);
     render::write_png(render::draw_comparison(world, panels, title), out_dir + "/comparison.png");
     util::write_file_atomically(
         out_dir + "/comparison.json",
@@ -157,10 +207,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};
     report.files = {"comparison.json"};
-    report.notes = opt->plan_only ? "Plans from the start to the charger's docked position (the "
-                                    "staging pose on ROS maps); nothing driven."
-                                  : "Each planner plans to the staging pose; the robot drives and "
-                                    "docks in the simulation.";
+    report.notes = comparison_notes(*opt);
     render::write_report(report, out_dir + "/report.html");
     staged.commit();
     return all_ok ? kExitOk : kExitFailed;

@@ -103,6 +103,34 @@ std::vector<std::string> metric_row(const episode::EpisodeOutcome& r, const std:
           fixed(1000 * r.max_cross_track_m, 0)};
 }
 
+std::vector<std::string> navigation_headers() {
+  return {"run",
+          "min clearance (m)",
+          "mean clearance (m)",
+          "share of time within 0.3 m",
+          "RMS jerk (m/s^3)",
+          "RMS angular accel. (rad/s^2)",
+          "controller cycles",
+          "controller median (ms)",
+          "controller p99 (ms)"};
+}
+
+std::vector<std::string> navigation_row(const episode::EpisodeOutcome& r,
+                                        const std::string& label) {
+  auto value = [](double v, int decimals) {
+    return std::isnan(v) ? std::string("-") : util::fixed(v, decimals);
+  };
+  return {label,
+          value(r.min_clearance_m, 3),
+          value(r.mean_clearance_m, 3),
+          value(r.near_obstacle_share, 3),
+          value(r.rms_jerk_mps3, 2),
+          value(r.rms_angular_accel_radps2, 2),
+          std::to_string(r.controller_cycles),
+          value(r.controller_ms_median, 4),  // pure pursuit's step takes microseconds
+          value(r.controller_ms_p99, 4)};
+}
+
 std::string trajectory_csv(const episode::EpisodeLog& r) {
   std::string out =
       "t_s,x_m,y_m,yaw_rad,est_x_m,est_y_m,est_yaw_rad,est_sigma_m,speed_mps,cross_track_m,phase,"
@@ -151,6 +179,9 @@ void write_run_folder(const worlds::World& world, const episode::EpisodeResult& 
   report.command = line;
   report.headers = metric_headers();
   report.rows = {metric_row(r, world.name)};
+  report.more_tables = {{"Navigation over the travel to the staging pose (docs/batch.md)",
+                         navigation_headers(),
+                         {navigation_row(r, world.name)}}};
   report.figures = figures;
   report.files = files;
   report.body_html = render::replay_html(world, r);

@@ -26,6 +26,11 @@ std::vector<std::string> metric_headers();
 std::vector<std::string> metric_row(const episode::EpisodeOutcome& r, const std::string& world_name,
                                     bool drove = true);
 
+/// The navigation metrics' table (docs/batch.md): headers, and one row per episode named `label`
+/// ("-" where not measured; the controller's times are wall times of this machine).
+std::vector<std::string> navigation_headers();
+std::vector<std::string> navigation_row(const episode::EpisodeOutcome& r, const std::string& label);
+
 /// Writes every file of a run into `out_dir` (a staging folder): `setting` is named in the run
 /// figure's title; `animate` adds frames/ (and animation.mp4 when ffmpeg is installed).
 void write_run_folder(const worlds::World& world, const episode::EpisodeResult& r,

@@ -17,6 +17,7 @@
 #include "batch/episode_records.h"
 #include "batch/episode_space.h"
 #include "batch/scenario_setup.h"
+#include "episode/episode_json.h"
 #include "util/atomic_file.h"
 #include "util/folder_lock.h"
 
@@ -34,9 +35,10 @@ struct ShardRecords {
 };
 
 /// The same episode from a run whose lists were ordered otherwise differs in its index and
-/// scenario file only; anything else is a different result.
+/// scenario file only, and from any other run in its wall times (the controller's compute time);
+/// anything else is a different result.
 json result_of(const std::string& record) {
-  json r = json::parse(record);
+  json r = episode::without_wall_times(json::parse(record));
   r.erase("index"), r.erase("scenario_file");
   return r;
 }

@@ -17,6 +17,7 @@
 #include "planner/registry.h"
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
+#include "render/navigation_chart.h"
 #include "render/png_io.h"
 #include "render/replay_html.h"
 #include "render/report.h"
@@ -97,6 +98,14 @@ render::EpisodeOutcome outcome_of(const json& j) {
   if (j.contains("localization_error_max_m") && j["localization_error_max_m"].is_number())
     e.localization_error_max_m = j["localization_error_max_m"].get<double>();
   e.localization_ok = j.value("localization_status", std::string("ok")) == "ok";
+  // Navigation metrics: null (not measured) or absent (older records) stay unknown.
+  const auto measured = [&](const char* key) {
+    const auto it = j.find(key);
+    return it != j.end() && it->is_number() ? it->get<double>() : -1.0;
+  };
+  e.min_clearance_m = measured("min_clearance_m");
+  e.rms_jerk_mps3 = measured("rms_jerk_mps3");
+  e.controller_ms_median = measured("controller_ms_median");
   return e;
 }
 
@@ -163,6 +172,12 @@ void add_charts(FigureWriter& chart, const ChartData& d,
         "cm, and how many episodes' estimator reported worse than ok");
   chart(render::draw_efficiency_chart(d.episodes), "chart_efficiency.png",
         "Driven length over the shortest possible (ECDF) and time to dock, per method");
+  if (std::any_of(d.episodes.begin(), d.episodes.end(),
+                  [](const render::EpisodeOutcome& e) { return e.min_clearance_m >= 0; }))
+    chart(render::draw_navigation_chart(d.episodes), "chart_navigation.png",
+          "Per method: each episode's smallest clearance to the true obstacles on its travel "
+          "(red: 0.3 m), its RMS jerk, and the local controller's median compute time per cycle "
+          "(wall time)");
   std::set<std::string> worlds;
   for (const render::EpisodeOutcome& e : d.episodes) worlds.insert(e.world);
   if (worlds.size() > 1)

@@ -2,6 +2,9 @@
 #include "batch/batch_summary.h"
 
 #include <map>
+#include <tuple>
+
+#include "batch/navigation_tally.h"
 
 namespace plantsim::batch {
 
@@ -19,9 +22,15 @@ json batch_summary_json(const std::vector<std::string>& lines,
                         const std::string& title, const std::string& command) {
   std::int64_t episodes = 0, succeeded = 0, docked_not_ok = 0, docked_lost = 0;
   std::map<std::string, std::int64_t> by_reason;
+  // Each configuration's navigation metrics, world by world and pooled over the worlds (a gate
+  // that pools judges the configuration over every world).
+  using Key = std::tuple<std::string, std::string, std::string, std::string>;
+  std::map<Key, NavigationTally> navigation;
   for (const std::string& line : lines) {
     const json j = json::parse(line);
     ++episodes;
+    for (const std::string& world : {j["world"].get<std::string>(), std::string(kAllWorlds)})
+      navigation[{world, j["planner"], j["controller"], j["fault"]}].add(j);
     if (record_succeeded(j)) {
       ++succeeded;
       // Integrity: a success whose estimator did not end `ok` (summary.csv has it per
@@ -50,6 +59,7 @@ json batch_summary_json(const std::vector<std::string>& lines,
               {"threshold", v.threshold ? json(*v.threshold) : json(nullptr)},
               {"passed", v.passed},
               {"lower_bound_clears", v.lower_bound_clears()}};
+    c.update(navigation[{v.world, v.planner, v.controller, v.fault}].json());
     configurations.push_back(std::move(c));
     if (!v.threshold) continue;
     ++gated;

@@ -71,6 +71,21 @@ const std::vector<Column> kDetail = {
     {"docked_not_ok", "docked, estimate not ok"},
     {"localization_not_ok_share", "share of time not ok"}};
 
+// The navigation-benchmark metrics per configuration (batch/navigation_tally.h; the controller's
+// times are wall times of this machine, docs/batch.md).
+const std::vector<Column> kNavigation = {
+    {"world", "world"},
+    {"planner", "planner"},
+    {"controller", "controller"},
+    {"fault", "fault"},
+    {"min_clearance_m", "min clearance (m)"},
+    {"mean_clearance_m", "mean clearance (m)"},
+    {"near_obstacle_share", "share of time within 0.3 m"},
+    {"mean_rms_jerk_mps3", "RMS jerk (m/s^3)"},
+    {"mean_rms_angular_accel_radps2", "RMS angular accel. (rad/s^2)"},
+    {"controller_ms_median", "controller median (ms)"},
+    {"controller_ms_p99_max", "controller p99, worst (ms)"}};
+
 std::vector<int> indices(const std::vector<std::string>& header, const std::vector<Column>& cols,
                          std::vector<std::string>* titles) {
   std::vector<int> out;
@@ -106,6 +121,24 @@ std::string failures_of(const std::vector<std::string>& header,
     failures += (failures.empty() ? "" : ", ") + header[i].substr(7) + " " + cells[i];
   }
   return failures.empty() ? "-" : failures;
+}
+
+/// A table of `cols` of every summary row, under `heading`.
+std::string column_table(const std::string& heading, const std::vector<std::string>& header,
+                         const std::vector<std::vector<std::string>>& rows,
+                         const std::vector<Column>& cols) {
+  std::vector<std::string> titles;
+  const std::vector<int> picked = indices(header, cols, &titles);
+  std::string h = "<h2>" + render::html_escape(heading) + "</h2>\n<table><tr>";
+  for (const std::string& t : titles) h += "<th>" + render::html_escape(t) + "</th>";
+  h += "</tr>\n";
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    h += "<tr>";
+    for (int i : picked)
+      h += "<td>" + render::html_escape(measured_cell(header, rows[r], i)) + "</td>";
+    h += "</tr>\n";
+  }
+  return h + "</table>\n";
 }
 
 }  // namespace
@@ -163,9 +196,8 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
   }
   if (rows.empty()) return "";
   const std::vector<std::string> header = rows.front();
-  std::vector<std::string> main_titles, detail_titles;
+  std::vector<std::string> main_titles;
   const std::vector<int> main = indices(header, kMain, &main_titles);
-  const std::vector<int> detail = indices(header, kDetail, &detail_titles);
   const auto rate = std::find(header.begin(), header.end(), "success_rate") - header.begin();
   const auto low = std::find(header.begin(), header.end(), "ci95_low") - header.begin();
   const auto high = std::find(header.begin(), header.end(), "ci95_high") - header.begin();
@@ -182,9 +214,6 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
     std::vector<std::string> cells;
   };
   std::vector<Row> table;
-  std::string details = "<h2>Details per configuration</h2>\n<table><tr>";
-  for (const std::string& t : detail_titles) details += "<th>" + render::html_escape(t) + "</th>";
-  details += "</tr>\n";
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const std::vector<std::string>& cells = rows[r];
     const ConfigurationVerdict* v = verdict_of(cells, verdicts);
@@ -199,10 +228,6 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
                         cell(cells, static_cast<int>(high)) + ")");
     row.cells.push_back(failures_of(header, cells));
     table.push_back(std::move(row));
-    details += "<tr>";
-    for (int i : detail)
-      details += "<td>" + render::html_escape(measured_cell(header, cells, i)) + "</td>";
-    details += "</tr>\n";
   }
   std::stable_sort(table.begin(), table.end(),
                    [](const Row& a, const Row& b) { return a.failed && !b.failed; });
@@ -210,7 +235,9 @@ std::string fill_verdict_table(render::Report& report, const std::string& csv,
     report.rows.push_back(std::move(row.cells));
     report.row_classes.push_back(row.failed ? "fail" : "");
   }
-  return details + "</table>\n";
+  return column_table("Details per configuration", header, rows, kDetail) +
+         column_table("Navigation per configuration (docs/batch.md: navigation metrics)", header,
+                      rows, kNavigation);
 }
 
 }  // namespace plantsim::batch

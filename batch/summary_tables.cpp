@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "batch/batch_gate.h"
+#include "batch/navigation_tally.h"
 #include "batch/wilson_interval.h"
 #include "robot/failure.h"
 #include "util/c_number.h"
@@ -38,6 +39,7 @@ struct ConfigurationTally {
   std::int64_t ratio_n = 0, driven_n = 0;
   std::array<std::int64_t, robot::kAllFailureReasons.size()>
       failed{};  // per reason, in kAllFailureReasons' order
+  NavigationTally navigation;
   void add(const json& j);
   /// The row's numbers after its four names, comma first, newline last.
   std::string row() const;
@@ -79,6 +81,7 @@ void ConfigurationTally::add(const json& j) {
   a.replans += j.value("replans", 0);
   a.recoveries += j.value("recoveries", 0);
   a.charging += j.value("charging", false);
+  a.navigation.add(j);
   if (j.contains("failure") && j["failure"].is_string())
     if (const auto reason = robot::failure_reason_from_string(j["failure"].get<std::string>()))
       ++a.failed[static_cast<std::size_t>(*reason)];
@@ -136,6 +139,7 @@ std::string ConfigurationTally::row() const {
       field(a.time > 0 ? a.not_ok_s / a.time : 0.0, 4)};
   std::string line;
   for (const std::string& c : cells) line += "," + c;
+  line += a.navigation.csv_cells();
   for (std::int64_t count : a.failed) line += "," + std::to_string(count);
   return line;
 }
@@ -149,6 +153,7 @@ std::string summary_header() {
       "collisions_robot_moving,max_localization_error_mm,localization_not_ok,mean_stops,"
       "mean_replans,mean_recoveries,charging,docked_not_ok,docked_lost,p95_localization_error_mm,"
       "localization_not_ok_share";
+  for (std::string_view column : kNavigationColumns) out += "," + std::string(column);
   for (robot::FailureReason reason : robot::kAllFailureReasons) {
     out += ",failed_";
     out += robot::to_string(reason);

@@ -46,6 +46,15 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeOutcome& r) {
   j["ok_while_off_s"] = r.integrity.ok_while_off_s;
   j["localization_not_ok_s"] = r.integrity.not_ok_s;
   j["unmapped_seen"] = r.unmapped_seen;
+  // Navigation-benchmark metrics (NaN, written null, where not measured: no travel).
+  j["min_clearance_m"] = r.min_clearance_m;
+  j["mean_clearance_m"] = r.mean_clearance_m;
+  j["near_obstacle_share"] = r.near_obstacle_share;
+  j["rms_jerk_mps3"] = r.rms_jerk_mps3;
+  j["rms_angular_accel_radps2"] = r.rms_angular_accel_radps2;
+  j["controller_cycles"] = r.controller_cycles;
+  j["controller_ms_median"] = r.controller_ms_median;  // wall time: kWallTimeFields
+  j["controller_ms_p99"] = r.controller_ms_p99;
 }
 
 }  // namespace plantsim::episode

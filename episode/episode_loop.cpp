@@ -78,9 +78,11 @@ geom::Vec2 plan_goal(const worlds::World& map) {
   return map.target ? map.target->waypoints.back() : worlds::staging_pose(map).position();
 }
 
+/// `local` is the configuration's local controller entry, wrapped to time its calls.
 std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Planner& planner,
                                            const EpisodeConfig& config,
                                            const planner::PlanResult& plan,
+                                           const controller::LocalControllerEntry& local,
                                            const EpisodeSteering& steering, EpisodeResult& r) {
   robot::TravelSettings settings;
   settings.tracking = config.tracking;
@@ -92,8 +94,8 @@ std::unique_ptr<robot::Travel> make_travel(const worlds::World& map, planner::Pl
   settings.docking.staging_distance_m = map.charger_spec.staging_distance_m;
   settings.docking.guard.footprint_radius_m = map.robot.radius_m;
   settings.map_planner = &planner;  // replans add what is sensed on top of its graph
-  settings.local = &controller::local_controllers().at(config.local_controller);
-  settings.local_params = component_values(config, settings.local->params);
+  settings.local = &local;
+  settings.local_params = component_values(config, local.params);
   settings.local_context = local_context(map, config);
   // The datasheet's range, not the plant's lidar: what the robot side may know of its sensor.
   if (config.perception.mode == robot::PerceptionMode::kSensors)
@@ -313,10 +315,12 @@ EpisodeRun::EpisodeRun(const worlds::World& plant, planner::Planner& planner,
     return;
   }
   recorder_->first_plan(plan);
+  timed_local_ = std::make_unique<controller::LocalControllerEntry>(timed_entry(
+      controller::local_controllers().at(config.local_controller), recorder_->controller_clock()));
   try {
-    loop_ = std::make_unique<Loop>(plant, map_, config,
-                                   make_travel(map_, planner, config, plan, steering, result_),
-                                   *recorder_);
+    loop_ = std::make_unique<Loop>(
+        plant, map_, config,
+        make_travel(map_, planner, config, plan, *timed_local_, steering, result_), *recorder_);
   } catch (const util::ComponentFailure& e) {  // a plugin's factory threw for this episode
     recorder_->not_started(
         robot::Failure{robot::FailureReason::kPluginError, 0.0, map_.start, e.what()});

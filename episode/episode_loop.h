@@ -50,6 +50,9 @@ class EpisodeRun {
   worlds::World map_copy_;    // the robot's map when it differs from the plant
   const worlds::World& map_;  // map_copy_ or the plant
   std::unique_ptr<EpisodeRecorder> recorder_;
+  // The local controller's entry with its calls timed (controller_clock.h): the travel holds a
+  // pointer to it, so it outlives the loop.
+  std::unique_ptr<controller::LocalControllerEntry> timed_local_;
   std::unique_ptr<Loop> loop_;  // none when the episode ended at its first plan
 };
 

@@ -15,7 +15,10 @@ using robot::Perception;
 
 EpisodeRecorder::EpisodeRecorder(const worlds::World& plant, const EpisodeConfig& config,
                                  EpisodeResult& result)
-    : config_(config), r_(result), metrics_(plant, result, config.step.dt_s) {
+    : config_(config),
+      r_(result),
+      metrics_(plant, result, config.step.dt_s),
+      navigation_(plant, std::max(1, config.control_period_steps) * config.step.dt_s) {
   r_.status = EpisodeStatus::kTimeout;  // until something ends the episode sooner
   const auto max_steps = static_cast<std::int64_t>(std::ceil(config.timeout_s / config.step.dt_s));
   const std::int64_t max_samples = max_steps / std::max(1, config.control_period_steps) + 1;
@@ -98,6 +101,10 @@ void EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
   if (d.events.recovered) event(Kind::kRecovery, t_s, truth.position());
   if (d.events.retried) event(Kind::kRetry, t_s, truth.position());
   track_moving_obstacles(t_s, physics);
+  std::vector<geom::Rect> moving;
+  for (const robot::ActorState& a : physics.actors()) moving.push_back(a.box);
+  navigation_.sample(truth, geom::dot(physics.robot_velocity(), truth.heading()),
+                     physics.robot_yaw_rate(), moving, d.phase == controller::DockPhase::kTravel);
   r_.max_cross_track_m = std::max(r_.max_cross_track_m, d.cross_track_m);
   sample(t_s, physics, p, &d);
 }
@@ -186,6 +193,10 @@ void EpisodeRecorder::close(const PhysicsWorld& physics, const robot::Travel& tr
   if (auto final_plan = travel.final_plan()) r_.plan = *final_plan;
   r_.last_scan = perceiver.last_scan();
   r_.relocalizations = perceiver.relocalizations();
+  navigation_.write(r_);
+  r_.controller_cycles = controller_clock_.cycles();
+  r_.controller_ms_median = controller_clock_.quantile_ms(0.5);
+  r_.controller_ms_p99 = controller_clock_.quantile_ms(0.99);
   r_.tracked_final = perceiver.tracker().boxes(r_.time_s);
   r_.layer_final = perceiver.current().layer;
   if (r_.succeeded()) return;

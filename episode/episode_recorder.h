@@ -9,9 +9,11 @@
 #include <optional>
 
 #include "controller/traction.h"
+#include "episode/controller_clock.h"
 #include "episode/episode_config.h"
 #include "episode/episode_metrics.h"
 #include "episode/episode_result.h"
+#include "episode/navigation_metrics.h"
 #include "planner/planner.h"
 #include "robot/perception.h"
 #include "robot/travel.h"
@@ -44,7 +46,12 @@ class EpisodeRecorder {
   void before_step(const PhysicsWorld& physics, const ContactState& contact);
   void after_step(const PhysicsWorld& physics);
   /// A fault carried the robot from `from` and set it down at `to` (a kidnap).
-  void carried(double t_s, const Pose2& from, const Pose2& to) { metrics_.carried(t_s, from, to); }
+  void carried(double t_s, const Pose2& from, const Pose2& to) {
+    metrics_.carried(t_s, from, to);
+    navigation_.carried();
+  }
+  /// Where the local controller's step calls are timed (timed_entry): the referee's clock.
+  ControllerClock& controller_clock() { return controller_clock_; }
 
   /// Every control step, once perception has spoken: its errors against the truth, its health.
   void perceived(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
@@ -78,6 +85,8 @@ class EpisodeRecorder {
   const EpisodeConfig& config_;
   EpisodeResult& r_;
   EpisodeMetrics metrics_;
+  NavigationMetrics navigation_;
+  ControllerClock controller_clock_;
   FailureWatch watch_;
   sim::IntegrityWatch integrity_;
   robot::LocalizationHealth worst_health_ = robot::LocalizationHealth::kOk;

@@ -4,6 +4,7 @@
 // perception snapshots) that figures, replays and animations draw.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -99,6 +100,18 @@ struct EpisodeOutcome {
   sim::IntegrityRecord integrity;  ///< driving on a bad estimate (sim/integrity_watch.h)
   int relocalizations = 0;         ///< times the estimate restarted from a global scan match
   int unmapped_seen = 0;  ///< unmapped obstacles perception marked at some time (of the plant's)
+  // Navigation-benchmark metrics over the travel to the staging pose, from the truth
+  // (episode/navigation_metrics.h; docs/batch.md defines each); NaN where not measured.
+  double min_clearance_m = NAN;           ///< true footprint to the nearest true obstacle, smallest
+  double mean_clearance_m = NAN;          ///< ... its mean over the travel's control periods
+  double near_obstacle_share = NAN;       ///< share of those periods closer than 0.3 m to one
+  double rms_jerk_mps3 = NAN;             ///< RMS of the forward speed's second difference
+  double rms_angular_accel_radps2 = NAN;  ///< RMS of the yaw rate's first difference
+  // The local controller's wall time per step call (episode/controller_clock.h): not
+  // deterministic, never compared between runs (kWallTimeFields, episode_json.h).
+  std::int64_t controller_cycles = 0;  ///< its step calls
+  double controller_ms_median = NAN;
+  double controller_ms_p99 = NAN;
 };
 
 /// The status as the records spell it: "docked", "docked_with_collision", "docked_off_estimate",

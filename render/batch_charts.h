@@ -31,6 +31,10 @@ struct EpisodeOutcome {
   double time_s = 0;
   double localization_error_max_m = -1;  ///< worst true-vs-estimated position error (< 0: unknown)
   bool localization_ok = true;           ///< the estimator never reported worse than `ok`
+  // Navigation metrics (docs/batch.md); < 0: not measured.
+  double min_clearance_m = -1;       ///< the true footprint's smallest clearance on the travel
+  double rms_jerk_mps3 = -1;         ///< RMS jerk of the true motion
+  double controller_ms_median = -1;  ///< the local controller's median wall time per cycle
 };
 
 /// One episode's driven path (thinned) and whether it succeeded.

@@ -87,6 +87,17 @@ std::string report_html(const Report& r) {
     }
     h += "</table>\n";
   }
+  for (const ReportTable& t : r.more_tables) {
+    h += "<h2>" + html_escape(t.heading) + "</h2>\n<table><tr>";
+    for (const auto& c : t.headers) h += "<th>" + html_escape(c) + "</th>";
+    h += "</tr>\n";
+    for (const auto& row : t.rows) {
+      h += "<tr>";
+      for (const auto& c : row) h += "<td>" + html_escape(c) + "</td>";
+      h += "</tr>\n";
+    }
+    h += "</table>\n";
+  }
   h += r.body_html;
   for (std::size_t i = 0; i < r.figures.size(); ++i) {
     const ReportFigure& f = r.figures[i];

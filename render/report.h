@@ -14,11 +14,19 @@ struct ReportFigure {
   std::string caption;
 };
 
+/// A further table of a report, under its own heading.
+struct ReportTable {
+  std::string heading;
+  std::vector<std::string> headers;
+  std::vector<std::vector<std::string>> rows;
+};
+
 struct Report {
   std::string title;
   std::string command;
   std::vector<std::string> headers;
   std::vector<std::vector<std::string>> rows;
+  std::vector<ReportTable> more_tables;  ///< after the first table, each under its heading
   std::vector<ReportFigure> figures;
   std::vector<std::string> files;  ///< other outputs to link (CSV, JSON)
   std::string notes;               ///< a paragraph of plain text

@@ -120,6 +120,16 @@ done
 ./build/plantsim batch data/scenarios/seed001_pursuit.yaml --out results/batch_seed001_pursuit --quiet --fresh || status=1
 ./build/plantsim batch data/scenarios/seed003_maze.yaml --out results/batch_seed003_maze --quiet --fresh || status=1
 ./build/plantsim batch data/scenarios/seed004_coverage.yaml --out results/batch_seed004_coverage --quiet --fresh || status=1
+# The local controllers Nav2 users choose between (pure pursuit, DWB, MPPI): one plant side by
+# side, then every plant scenario and generated style under four conditions (docs/controllers.md;
+# a failure is a result here, exit 1; only bad input fails the demo).
+rc=0
+./build/plantsim compare data/worlds/plants/desulfurization_plant.json --controllers pure-pursuit,dwb,mppi \
+  --out results/controllers_desulfurization || rc=$?
+[ "$rc" -le 1 ] || status=1
+rc=0
+./build/plantsim batch data/scenarios/controllers.yaml --out results/batch_controllers --quiet --fresh || rc=$?
+[ "$rc" -le 1 ] || status=1
 
 links+=(--link results/planners_N50/report.html --link results/round_vs_square/report.html \
   --link results/batch_plant_mismatch/report.html --link results/batch_plant_mismatch_person/report.html \
@@ -128,7 +138,8 @@ links+=(--link results/planners_N50/report.html --link results/round_vs_square/r
   --link results/batch_seed003_maze/report.html --link results/batch_seed004_coverage/report.html \
   --link results/coverage_study/report.html \
   --link results/pursuit_seed001_slow_target/report.html --link results/pursuit_seed001_target_behind_wall/report.html \
-  --link results/pursuit_seed001_target_moves_on/report.html --link results/batch_seed001_pursuit/report.html)
+  --link results/pursuit_seed001_target_moves_on/report.html --link results/batch_seed001_pursuit/report.html \
+  --link results/controllers_desulfurization/report.html --link results/batch_controllers/report.html)
 fi
 
 ./build/plantsim summarize "${dirs[@]}" --out results/summary.md --html results/index.html "${links[@]}" || status=1

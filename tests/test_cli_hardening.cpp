@@ -112,6 +112,22 @@ TEST_F(Cli, APlannerComparedWithItselfIsRefused) {
   EXPECT_EQ(twice.exit_code, 2);
   EXPECT_NE(twice.err.find("'vg' is listed twice"), std::string::npos) << twice.err;
   EXPECT_FALSE(fs::exists(dir_ / "c"));
+  // Local controllers compared follow one planner's plan, and are driven.
+  for (const auto& [args, needle] : std::vector<std::pair<std::string, std::string>>{
+           {"--controllers dwb,pure-pursuit,dwb", "'dwb' is listed twice"},
+           {"--controllers dwb --plan-only", "drives nothing"},
+           {"--controllers dwb --planners vg,grid", "name one planner"},
+           {"--controllers teleport", "teleport"}}) {
+    const Outcome o = run("compare " + kCorridor + " " + args + " --out c");
+    EXPECT_EQ(o.exit_code, 2) << args;
+    EXPECT_NE(o.err.find(needle), std::string::npos) << args << ": " << o.err;
+    EXPECT_FALSE(fs::exists(dir_ / "c"));
+  }
+  const Outcome one = run("compare " + kCorridor + " --controllers pure-pursuit --out c");
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  const std::string report = read(dir_ / "c/report.html");
+  EXPECT_NE(report.find("local controllers compared (vg)"), std::string::npos);
+  EXPECT_NE(report.find("<td>pure-pursuit</td>"), std::string::npos);  // its navigation row
 }
 
 TEST_F(Cli, ScenariosThatRunNothingOrTooMuchOrCollideIdsAreRefused) {

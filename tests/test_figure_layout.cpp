@@ -19,6 +19,7 @@
 #include "render/batch_charts.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"
+#include "render/navigation_chart.h"
 #include "render/palette.h"
 #include "render/png_io.h"
 #include "render/run_figure.h"
@@ -503,6 +504,35 @@ TEST(FigureLayout, BatchChartsDrawGatesIntervalsAndEveryMethod) {
   EXPECT_NE(layout.legend[0].colour, layout.legend[3].colour);
   EXPECT_EQ(layout.legend[2].swatch, Swatch::kDashed);
   EXPECT_EQ(layout.legend[0].swatch, Swatch::kBar);
+}
+
+// The navigation chart: a strip per method in each of its three panels, episodes that never
+// travelled left out, failures as crosses beside the 0.3 m line.
+TEST(FigureLayout, NavigationChartDrawsEveryMethodsClearanceJerkAndComputeTime) {
+  std::vector<EpisodeOutcome> episodes;
+  const char* methods[] = {"vg / pure-pursuit / none", "vg / dwb / none", "vg / mppi / none"};
+  for (int i = 0; i < 30; ++i) {
+    EpisodeOutcome e;
+    e.method = methods[i % 3];
+    e.docked = i % 7 != 0;
+    e.min_clearance_m = i == 4 ? -1.0 : 0.05 * (i % 11);  // one never travelled
+    e.rms_jerk_mps3 = 0.5 + 0.1 * (i % 5);
+    e.controller_ms_median = i % 3 == 2 ? 4.0 + 0.1 * i : 0.01 * i;
+    episodes.push_back(e);
+  }
+  FigureLayout layout;
+  const Image img = draw_navigation_chart(episodes, 1400, &layout);
+  keep(img, "layout_navigation");
+  test::expect_sound_layout(img, layout, "navigation chart");
+  auto has_text = [&](const std::string& t) {
+    return std::find(layout.texts.begin(), layout.texts.end(), t) != layout.texts.end();
+  };
+  EXPECT_TRUE(has_text("vg / pure-pursuit / none (10)"));
+  EXPECT_TRUE(has_text("vg / dwb / none (9)"));  // episode 4 never travelled
+  EXPECT_TRUE(has_text("vg / mppi / none (10)"));
+  EXPECT_TRUE(test::has_legend(layout, "0.3 m"));
+  EXPECT_TRUE(test::has_legend(layout, "succeeded (dot, its method's colour)"));
+  EXPECT_TRUE(test::has_legend(layout, "failed (black cross)"));
 }
 
 }  // namespace
