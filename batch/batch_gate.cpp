@@ -15,7 +15,13 @@
 
 namespace plantsim::batch {
 const char* statistic_name(GateStatistic s) {
-  return s == GateStatistic::kWilsonLow ? "wilson_low" : "success_rate";
+  switch (s) {  // a new statistic without its name does not compile (-Wswitch, -Werror)
+    case GateStatistic::kWilsonLow:
+      return "wilson_low";
+    case GateStatistic::kSuccessRate:
+      return "success_rate";
+  }
+  return "unknown";
 }
 
 namespace {

@@ -82,7 +82,13 @@ std::unique_ptr<DockDetector> make_dock_detector(const worlds::World& map,
 }  // namespace
 
 std::string_view to_string(PerceptionMode m) {
-  return m == PerceptionMode::kSensors ? "sensors" : "oracle";
+  switch (m) {  // a new mode without its name does not compile (-Wswitch, -Werror)
+    case PerceptionMode::kSensors:
+      return "sensors";
+    case PerceptionMode::kOracle:
+      return "oracle";
+  }
+  return "unknown";
 }
 
 Perceiver::Perceiver(const worlds::World& map, const PerceptionParams& params)
