@@ -44,6 +44,7 @@ std::string summary_json(const episode::EpisodeResult& r, const std::string& wor
     j["logs_thinned"] = {{"trajectory_every_control_periods", r.thinning.trajectory_every},
                          {"moving_tracks_every_s", 0.25 * r.thinning.moving_every},
                          {"perception_snapshots_every", r.thinning.snapshots_every},
+                         {"controller_sketches_every_s", r.thinning.sketches_every},
                          {"events_dropped", r.thinning.events_dropped}};
   return j.dump(2) + "\n";
 }

@@ -6,6 +6,7 @@
 // never the simulator. Header-only: installed for plugins, with its value types.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -70,6 +71,39 @@ class LocalController {
  private:
   std::string plugin_origin_;
 };
+
+/// What a controller that samples trajectories weighed at its last step, in the map frame: a
+/// few of its samples (spread over the batch, not the best ones) and the trajectory it chose
+/// (MPPI's optimum, DWB's best scored). The replay draws them; nothing that decides reads them.
+struct TrajectorySketch {
+  std::vector<std::vector<geom::Vec2>> sampled;
+  std::vector<geom::Vec2> chosen;
+};
+
+/// Implemented beside LocalController by a controller that samples trajectories (MPPI, DWB, or a
+/// plugin's): a second base, so that the local controller's interface and a plugin's vtable stay
+/// as they were. Asked once a second at most, after a step.
+class SketchesTrajectories {
+ public:
+  virtual ~SketchesTrajectories() = default;
+  /// At most `max_sampled` samples, each at most `max_points` points (first and last kept).
+  virtual TrajectorySketch last_trajectories(int max_sampled, int max_points) const = 0;
+};
+
+/// `poses`' positions, at most `max_points` of them evenly spaced, first and last kept.
+inline std::vector<geom::Vec2> sketch_points(const std::vector<geom::Pose2>& poses,
+                                             int max_points) {
+  std::vector<geom::Vec2> out;
+  const std::size_t n = poses.size();
+  if (n == 0 || max_points <= 0) return out;
+  const std::size_t want =
+      std::min<std::size_t>(n, static_cast<std::size_t>(std::max(2, max_points)));
+  for (std::size_t k = 0; k < want; ++k) {
+    const std::size_t i = want == 1 ? 0 : k * (n - 1) / (want - 1);
+    out.push_back(poses[i].position());
+  }
+  return out;
+}
 
 /// A local controller's registry entry (local_controller_registry.h).
 struct LocalControllerEntry : util::ComponentInfo {

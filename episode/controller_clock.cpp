@@ -13,7 +13,9 @@ namespace {
 class TimedController final : public controller::LocalController {
  public:
   TimedController(std::unique_ptr<controller::LocalController> inner, ControllerClock& clock)
-      : inner_(std::move(inner)), clock_(clock) {
+      : inner_(std::move(inner)),
+        clock_(clock),
+        sketcher_(dynamic_cast<const controller::SketchesTrajectories*>(inner_.get())) {
     set_plugin_origin(inner_->plugin_origin());
   }
   void set_path(std::vector<geom::Vec2> path) override { inner_->set_path(std::move(path)); }
@@ -21,12 +23,15 @@ class TimedController final : public controller::LocalController {
     const auto began = std::chrono::steady_clock::now();
     controller::TrackingCommand out = inner_->step(q);
     clock_.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
+    if (sketcher_ && clock_.sketch_wanted())
+      clock_.keep_sketch(sketcher_->last_trajectories(kSketchSamples, kSketchPoints));
     return out;
   }
 
  private:
   std::unique_ptr<controller::LocalController> inner_;
   ControllerClock& clock_;
+  const controller::SketchesTrajectories* sketcher_;  ///< inner_ when it samples, else null
 };
 
 }  // namespace

@@ -107,6 +107,21 @@ void EpisodeRecorder::decided(double t_s, const PhysicsWorld& physics, const Per
                      physics.robot_yaw_rate(), moving, d.phase == controller::DockPhase::kTravel);
   r_.max_cross_track_m = std::max(r_.max_cross_track_m, d.cross_track_m);
   sample(t_s, physics, p, &d);
+  sketch(t_s);
+}
+
+void EpisodeRecorder::sketch(double t_s) {
+  // Kept at the time of the step that made it; the next asked for a second after it (the log's
+  // spacing), the controller answering at its next step whenever that is.
+  if (std::optional<controller::TrajectorySketch> s = controller_clock_.take_sketch()) {
+    r_.controller_sketches.push_back({t_s, std::move(*s)});
+    if (r_.controller_sketches.size() >= std::max<std::size_t>(2, config_.log_limits.snapshots)) {
+      keep_every_other(r_.controller_sketches);
+      r_.thinning.sketches_every *= 2;
+    }
+    next_sketch_s_ = t_s + kSketchPeriod_s * r_.thinning.sketches_every;
+  }
+  if (t_s >= next_sketch_s_ && !controller_clock_.sketch_wanted()) controller_clock_.want_sketch();
 }
 
 void EpisodeRecorder::finished(const PhysicsWorld& physics, const Decision& d) {

@@ -80,6 +80,9 @@ class EpisodeRecorder {
   void sample(double t_s, const PhysicsWorld& physics, const robot::Perception& p,
               const robot::Decision* d);
   void track_moving_obstacles(double t_s, const PhysicsWorld& physics);
+  /// The controller's last sketch kept, and the next asked for (controller_clock.h).
+  void sketch(double t_s);
+  static constexpr double kSketchPeriod_s = 1.0;
   std::optional<std::pair<double, Pose2>> first_collision(const PhysicsWorld& physics) const;
 
   const EpisodeConfig& config_;
@@ -92,6 +95,7 @@ class EpisodeRecorder {
   robot::LocalizationHealth worst_health_ = robot::LocalizationHealth::kOk;
   std::optional<robot::GiveUp> give_up_;
   double next_snapshot_s_ = 0;
+  double next_sketch_s_ = 0;
   double next_track_s_ = 0;
   std::int64_t decisions_ = 0;  // trajectory samples offered (one per control period)
 };

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "controller/docking.h"
+#include "controller/local_controller.h"
 #include "planner/planner.h"
 #include "robot/failure.h"
 #include "robot/perception.h"
@@ -161,14 +162,23 @@ struct EpisodeLog {
     Pose2 to;
   };
   std::vector<Carry> carries;
+  /// What a local controller that samples trajectories (MPPI, DWB) weighed, about once a second
+  /// while it drove: a few samples and its choice (controller_clock.h), for the replay.
+  struct ControllerSketch {
+    double t_s;
+    controller::TrajectorySketch sketch;
+  };
+  std::vector<ControllerSketch> controller_sketches;
   /// How the logs were thinned to their limits (EpisodeConfig::log_limits): 1 and 0 when not.
   struct LogThinning {
     int trajectory_every = 1;  ///< control periods between the trajectory's samples at the end
     int moving_every = 1;      ///< moving tracks kept every this many 0.25 s
     int snapshots_every = 1;   ///< perception snapshots kept every this many scan_log_period_s
+    int sketches_every = 1;    ///< controller sketches kept every this many seconds
     std::int64_t events_dropped = 0;
     bool any() const {
-      return trajectory_every > 1 || moving_every > 1 || snapshots_every > 1 || events_dropped > 0;
+      return trajectory_every > 1 || moving_every > 1 || snapshots_every > 1 ||
+             sketches_every > 1 || events_dropped > 0;
     }
   } thinning;
 };

@@ -47,6 +47,9 @@ inline constexpr Rgb kExplored{180, 222,
 inline constexpr Rgb kExploredText{40, 105,
                                    40};    ///< letters recorded on it (darker, to read on the band)
 inline constexpr Rgb kTried{0, 110, 110};  ///< the ring search's walks (dashed), seed 003
+/// A sampling controller's trajectories in the replay: a few of its samples (thin) and its choice.
+inline constexpr Rgb kSampledTrajectory = kOkabeSkyBlue;
+inline constexpr Rgb kChosenTrajectory = kOkabeReddishPurple;
 inline constexpr Rgb kWallFollow{
     215, 185,
     240};  ///< potential-field travel while following a wall (band; not the speed scale's yellow)

@@ -102,6 +102,26 @@ void add_trajectory(json& j, const episode::EpisodeResult& run, const ReplayOpti
                             {"to", {round_to(c.to.x, 1e-3), round_to(c.to.y, 1e-3)}}});
 }
 
+/// A sampling controller's sketches (its samples and its choice, about once a second), thinned
+/// to at most `max_sketches`, to the centimetre.
+json sketches(const episode::EpisodeResult& run, std::size_t max_sketches) {
+  auto cm = [](const std::vector<Vec2>& pts) {
+    json out = json::array();
+    for (const Vec2& p : pts) out.push_back({round_to(p.x, 1e-2), round_to(p.y, 1e-2)});
+    return out;
+  };
+  json out = json::array();
+  const std::size_t n = run.controller_sketches.size();
+  const std::size_t step = std::max<std::size_t>(1, (n + max_sketches - 1) / max_sketches);
+  for (std::size_t i = 0; i < n; i += step) {
+    const auto& at = run.controller_sketches[i];
+    json sampled = json::array();
+    for (const auto& trajectory : at.sketch.sampled) sampled.push_back(cm(trajectory));
+    out.push_back({{"t", round_to(at.t_s, 1e-3)}, {"s", sampled}, {"c", cm(at.sketch.chosen)}});
+  }
+  return out;
+}
+
 json replay_data(const worlds::World& world, const episode::EpisodeResult& run,
                  const ReplayOptions& o) {
   json j;
@@ -130,6 +150,7 @@ json replay_data(const worlds::World& world, const episode::EpisodeResult& run,
   j["plan_from_t"] = j["first_plan"].empty() ? 0.0 : round_to(last_replan_s, 1e-3);
   add_trajectory(j, run, o);
   add_events_and_failure(j, run);
+  j["sketches"] = sketches(run, 400);
   j["moving_label"] = moving_tracks_label(run.moving_tracks);  // as the run figure's legend
   j["moving"] = json::array();
   for (const auto& track : run.moving_tracks) {
@@ -140,16 +161,25 @@ json replay_data(const worlds::World& world, const episode::EpisodeResult& run,
     j["moving"].push_back(m);
   }
   j["status"] = episode::status_name(run);
-  j["colours"] = {
-      {"floor", css(palette::kFloor)},          {"obstacle", css(palette::kObstacle)},
-      {"unmapped", css(palette::kUnmapped)},    {"plan", css(palette::kPlan)},
-      {"first_plan", css(palette::kFirstPlan)}, {"charger", css(palette::kCharger)},
-      {"start", css(palette::kStart)},          {"moving", css(palette::kMoving)},
-      {"robot", css(palette::kRobot)},          {"axis", css(palette::kAxis)},
-      {"estimate", css(palette::kEstimate)},    {"stop", css(palette::kStopMark)},
-      {"replan", css(palette::kReplanMark)},    {"recovery", css(palette::kRecoveryMark)},
-      {"retry", css(palette::kRetryMark)},      {"collision", css(palette::kCollisionMark)},
-      {"failure", css(palette::kCollisionMark)}};
+  j["colours"] = {{"floor", css(palette::kFloor)},
+                  {"obstacle", css(palette::kObstacle)},
+                  {"unmapped", css(palette::kUnmapped)},
+                  {"plan", css(palette::kPlan)},
+                  {"first_plan", css(palette::kFirstPlan)},
+                  {"charger", css(palette::kCharger)},
+                  {"start", css(palette::kStart)},
+                  {"moving", css(palette::kMoving)},
+                  {"robot", css(palette::kRobot)},
+                  {"axis", css(palette::kAxis)},
+                  {"estimate", css(palette::kEstimate)},
+                  {"stop", css(palette::kStopMark)},
+                  {"replan", css(palette::kReplanMark)},
+                  {"recovery", css(palette::kRecoveryMark)},
+                  {"retry", css(palette::kRetryMark)},
+                  {"collision", css(palette::kCollisionMark)},
+                  {"failure", css(palette::kCollisionMark)},
+                  {"sampled", css(palette::kSampledTrajectory)},
+                  {"chosen", css(palette::kChosenTrajectory)}};
   return j;
 }
 
@@ -171,15 +201,25 @@ constexpr const char* kPlayer = R"JS(
   }
   const dpr = window.devicePixelRatio || 1, W = canvas.width, H = canvas.height;
   canvas.width = W * dpr; canvas.height = H * dpr; canvas.style.width = W + 'px'; canvas.style.maxWidth = '100%';
-  const legendW = 170, full = D.floor;
+  const legendW = 200, full = D.floor;
   let view = full.slice(), time = 0, playing = true, last = null, frames = 0;
+  // A link may start the replay at a moment: report.html#t=53.4 (a failure's, say).
+  const startAt = /[#&]t=([0-9]+(?:\.[0-9]+)?)/.exec(location.hash);
+  if (startAt) time = Math.min(tEnd, parseFloat(startAt[1]));
   function index(t) { let lo = 0, hi = N - 1; while (lo < hi) { const m = (lo + hi + 1) >> 1; if (T[m] <= t) lo = m; else hi = m - 1; } return lo; }
+  // The smallest box holding `pts`, `m` metres more on each side.
+  function around(pts, m) {
+    const xs = pts.map(p => p[0]), ys = pts.map(p => p[1]);
+    return [Math.min(...xs) - m, Math.min(...ys) - m, Math.max(...xs) + m, Math.max(...ys) + m];
+  }
   // Zoomed: on the dock while the robot docks near it, on the robot wherever else it docks (a
-  // failed approach far from the charger), and on the failure's place as the replay ends there.
+  // failed approach far from the charger), and from the failure on on its place together with
+  // where the robot is and where it believes it is (an episode goes on after its failure's
+  // moment: a kidnapped robot drives on, lost, for minutes).
   function targetView(i) {
     if (!zoomBox.checked || !N) return full;
     const F = D.failure;
-    if (F && time >= F.t - 3) return [F.x - 3, F.y - 3, F.x + 3, F.y + 3];
+    if (F && time >= F.t - 3) return around([[F.x, F.y], [D.x[i], D.y[i]], [D.ex[i], D.ey[i]]], 3);
     if (!D.docking[i]) return full;
     const near = Math.hypot(D.x[i] - D.dock[0], D.y[i] - D.dock[1]) < 1.5;
     const r = 1.5, cx = near ? D.dock[0] : D.x[i], cy = near ? D.dock[1] : D.y[i];
@@ -201,6 +241,13 @@ constexpr const char* kPlayer = R"JS(
     pts.forEach((p, k) => k ? ctx.lineTo(g.px(p[0]), g.py(p[1])) : ctx.moveTo(g.px(p[0]), g.py(p[1])));
     ctx.stroke(); ctx.setLineDash([]);
   }
+  // The controller's sketch in force at `t`: the last one made, while the robot travels and
+  // at most 1.5 s old (sketches come about once a second).
+  function sketchAt(t, i) {
+    let best = null;
+    for (const k of D.sketches) { if (k.t <= t) best = k; else break; }
+    return best && t - best.t <= 1.5 && !D.docking[i] ? best : null;
+  }
   function movingBox(m, t) {
     let k = 0; while (k + 1 < m.t.length && m.t[k + 1] <= t) k++;
     return m.boxes[k];
@@ -219,13 +266,21 @@ constexpr const char* kPlayer = R"JS(
     // A carry (a kidnap) is no driving: no trail across it, a thin dotted line from where the
     // robot was lifted to where it was set down.
     const carriedIn = k => D.carries.some(c => T[k - 1] <= c.t && c.t <= T[k]);  // a carry's own time is either side
-    D.carries.forEach(c => { if (c.t <= time) line(g, [c.from, c.to], C.axis, 1, [2, 4]); });
+    D.carries.forEach(c => {  // the carry dotted, the landing a triangle with the kidnap's time
+      if (c.t > time) return;
+      line(g, [c.from, c.to], C.axis, 1, [2, 4]);
+      const x = g.px(c.to[0]), y = g.py(c.to[1]);
+      ctx.fillStyle = C.axis; ctx.beginPath(); ctx.moveTo(x, y - 7); ctx.lineTo(x + 6, y + 5); ctx.lineTo(x - 6, y + 5); ctx.closePath(); ctx.fill();
+      ctx.font = '12px DejaVu Sans, sans-serif'; ctx.fillText('kidnapped at ' + c.t.toFixed(1) + ' s', x + 9, y + 4);
+    });
     for (let k = 1; k <= i; k++) {
       if (carriedIn(k)) continue;
       ctx.beginPath(); ctx.strokeStyle = speedColour(D.v[k]); ctx.lineWidth = 4; ctx.lineCap = 'round';
       ctx.moveTo(g.px(D.x[k - 1]), g.py(D.y[k - 1])); ctx.lineTo(g.px(D.x[k]), g.py(D.y[k])); ctx.stroke();
     }
     line(g, replanned || !D.first_plan.length ? D.plan : D.first_plan, C.plan, 1.5);
+    const sk = sketchAt(time, i);  // what a sampling controller weighed at its last sketch
+    if (sk) { sk.s.forEach(p => line(g, p, C.sampled, 1)); line(g, sk.c, C.chosen, 2.5); }
     D.moving.forEach(m => { if (m.t.length) rect(g, movingBox(m, time), C.moving, C.axis); });
     const cb = D.charger;
     ctx.save(); ctx.translate(g.px(cb[0]), g.py(cb[1])); ctx.rotate(-cb[4]);
@@ -277,22 +332,49 @@ constexpr const char* kPlayer = R"JS(
       ctx.fillText('FAILED: ' + F.reason + ' at t = ' + F.t.toFixed(1) + ' s, (' + F.x.toFixed(2) + ', ' +
                    F.y.toFixed(2) + ') m' + (F.detail ? ': ' + F.detail : ''), 10, H - 12, W - 20);
     }
-    const items = [['plan', C.plan], ['driven (speed)', speedColour(D.max_speed * 0.6)], ['robot', C.robot],
-                   ['estimate (dashed)', C.estimate], ['charger', C.charger], ['start', C.start]];
+    // Each entry's swatch is drawn as the map draws it (line, dashes, ring, cross, square, ...),
+    // so that entries stay apart by shape where colours do not (colour-vision deficiencies).
+    const items = [['plan', C.plan, 'line'], ['driven (speed)', speedColour(D.max_speed * 0.6), 'thick'],
+                   ['robot', C.robot, 'ring'], ['estimate (dashed)', C.estimate, 'dash'],
+                   ['charger', C.charger, 'fill'], ['start', C.start, 'dot']];
+    const marks = { stop: 'ring', replan: 'ring', recovery: 'ring', retry: 'square', collision: 'cross' };
     ['stop', 'replan', 'recovery', 'retry', 'collision'].forEach(k => {
-      if (D.events.some(e => e.k === k)) items.push([k, C[k]]);
+      if (D.events.some(e => e.k === k)) items.push([k, C[k], marks[k]]);
     });
-    if (F) items.push(['failure (cross)', C.failure]);
-    if (D.obstacles.length) items.push(['obstacle', C.obstacle]);
-    if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan]);
-    if (D.moving.length) items.push([D.moving_label, C.moving]);
-    if (D.unmapped.length) items.push(['not on map', C.unmapped]);
-    if (D.carries.length) items.push(['carried (dotted)', C.axis]);
+    if (F) items.push(['failure (cross)', C.failure, 'cross']);
+    if (D.obstacles.length) items.push(['obstacle', C.obstacle, 'fill']);
+    if (D.first_plan.length && replanned) items.push(['first plan', C.first_plan, 'dash']);
+    if (D.moving.length) items.push([D.moving_label, C.moving, 'fill']);
+    if (D.unmapped.length) items.push(['not on map', C.unmapped, 'outline']);
+    if (D.carries.length) items.push(['kidnap: carry, landing', C.axis, 'tri']);
+    if (D.sketches.length) {
+      items.push(['sampled trajectories', C.sampled, 'line']);
+      items.push(['chosen trajectory', C.chosen, 'thick']);
+    }
     ctx.font = '13px DejaVu Sans, sans-serif';
     items.forEach((it, k) => {
-      const y = 50 + 20 * k; ctx.fillStyle = it[1]; ctx.fillRect(W - legendW, y - 8, 22, 6);
+      const y = 50 + 20 * k, x = W - legendW, cy = y - 5;
+      ctx.fillStyle = it[1]; ctx.strokeStyle = it[1]; ctx.lineWidth = 2; ctx.beginPath();
+      switch (it[2]) {
+        case 'thick': ctx.fillRect(x, cy - 3, 22, 6); break;
+        case 'fill': ctx.fillRect(x + 4, cy - 6, 14, 12); break;
+        case 'outline': ctx.strokeRect(x + 4, cy - 6, 14, 12); break;
+        case 'square': ctx.strokeRect(x + 6, cy - 5, 10, 10); break;
+        case 'ring': ctx.arc(x + 11, cy, 6, 0, 2 * Math.PI); ctx.stroke(); break;
+        case 'dot': ctx.arc(x + 11, cy, 5, 0, 2 * Math.PI); ctx.fill(); break;
+        case 'cross': ctx.moveTo(x + 5, cy - 6); ctx.lineTo(x + 17, cy + 6); ctx.moveTo(x + 5, cy + 6); ctx.lineTo(x + 17, cy - 6); ctx.stroke(); break;
+        case 'tri': ctx.moveTo(x + 11, cy - 7); ctx.lineTo(x + 17, cy + 5); ctx.lineTo(x + 5, cy + 5); ctx.closePath(); ctx.fill(); break;
+        case 'dash': ctx.setLineDash([4, 3]); ctx.moveTo(x, cy); ctx.lineTo(x + 22, cy); ctx.stroke(); ctx.setLineDash([]); break;
+        default: ctx.lineWidth = 1.5; ctx.moveTo(x, cy); ctx.lineTo(x + 22, cy); ctx.stroke();
+      }
       ctx.fillStyle = C.axis; ctx.fillText(it[0], W - legendW + 30, y);
     });
+    section.dataset.replayLegend = items.map(it => it[0]).join('|');
+    // Whether the robot and its estimate lie inside the view asked for (the browser test's
+    // check of the framing; the canvas shows at least this much).
+    const inside = (x, y) => x >= view[0] && x <= view[2] && y >= view[1] && y <= view[3];
+    section.dataset.replayInView = N ? [inside(D.x[i], D.y[i]) ? 'robot' : '',
+                                        inside(D.ex[i], D.ey[i]) ? 'estimate' : ''].filter(Boolean).join(' ') : '';
     frames++;
     section.dataset.replayFrames = frames; section.dataset.replayTime = time.toFixed(3);
     slider.value = tEnd > 0 ? Math.round(1000 * time / tEnd) : 0;

@@ -62,4 +62,23 @@ else
   echo "browser_test: FAIL the replay shows no estimator verdict (${estimator:-none})" >&2
   status=1
 fi
+# A sampling controller's replay lists what it draws of it; a kidnapped robot's replay, opened at
+# its last seconds (report.html#t=...), keeps the robot and its estimate in view after the
+# failure (the view was locked on the failure's place while the robot drove on, lost).
+"$plantsim" run "$root/data/worlds/examples/small_plant.json" --config "$root/tests/fixtures/replay_mppi.json" --out mppi > /dev/null
+legend="$(dom mppi/report.html | grep -o 'data-replay-legend="[^"]*"' || true)"
+if [[ "$legend" == *"sampled trajectories|chosen trajectory"* ]]; then
+  echo "browser_test: the MPPI replay draws its sampled and chosen trajectories"
+else
+  echo "browser_test: FAIL the MPPI replay's legend lacks its trajectories (${legend:-none})" >&2
+  status=1
+fi
+"$plantsim" run "$root/data/worlds/examples/small_plant.json" --config "$root/tests/fixtures/replay_kidnap.json" --out kidnap > /dev/null || true
+in_view="$(dom 'kidnap/report.html#t=115' | grep -o 'data-replay-in-view="[^"]*"' | cut -d'"' -f2 || true)"
+if [ "$in_view" = "robot estimate" ]; then
+  echo "browser_test: after a kidnap's failure the replay keeps the robot and its estimate in view"
+else
+  echo "browser_test: FAIL after a kidnap's failure the replay shows '${in_view:-nothing}' of the robot and its estimate" >&2
+  status=1
+fi
 exit $status

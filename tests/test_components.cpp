@@ -166,6 +166,33 @@ TEST_P(SamplingControllers, DockWithoutContact) {
   rpp.timeout_s = 200;
   const episode::EpisodeResult base = episode::run_episode(w, *planner, rpp);
   EXPECT_NE(r.time_s, base.time_s);
+  // What it weighed, for the replay: about once a second while it drove, a few samples and its
+  // choice, starting where the robot was; pure pursuit samples nothing.
+  EXPECT_TRUE(base.controller_sketches.empty());
+  ASSERT_GE(r.controller_sketches.size(), 5u);
+  EXPECT_LT(r.controller_sketches.front().t_s, 2.0);
+  int chosen = 0;
+  for (std::size_t k = 0; k < r.controller_sketches.size(); ++k) {
+    const auto& at = r.controller_sketches[k];
+    if (k > 0) {
+      EXPECT_GE(at.t_s - r.controller_sketches[k - 1].t_s, 1.0 - 1e-9);
+    }
+    EXPECT_EQ(at.sketch.sampled.size(), 8u) << at.t_s;
+    for (const auto& sample : at.sketch.sampled) {
+      EXPECT_GE(sample.size(), 2u);
+      EXPECT_LE(sample.size(), 15u);
+    }
+    if (at.sketch.chosen.empty()) continue;  // DWB found no valid trajectory and stopped
+    ++chosen;
+    EXPECT_LE(at.sketch.chosen.size(), 15u);
+    // The choice starts at the robot (its estimate, which holds within centimetres here).
+    const auto near = std::min_element(
+        r.trajectory.begin(), r.trajectory.end(), [&](const auto& a, const auto& b) {
+          return std::fabs(a.t_s - at.t_s) < std::fabs(b.t_s - at.t_s);
+        });
+    EXPECT_LT(geom::norm(at.sketch.chosen.front() - near->truth.position()), 0.1) << at.t_s;
+  }
+  EXPECT_GE(chosen, static_cast<int>(0.9 * static_cast<double>(r.controller_sketches.size())));
 }
 
 INSTANTIATE_TEST_SUITE_P(Nav2, SamplingControllers, ::testing::Values("mppi", "dwb"));

@@ -300,6 +300,30 @@ TEST(RenderedMismatch, UnmappedHatchedMappedChargerOutlinedLayerDrawnAndInTheLeg
     EXPECT_EQ(data["plan_from_t"].get<double>(), 0.0);
   EXPECT_GT(data["plan_from_t"].get<double>() + data["first_plan"].empty(), 0.0);
   EXPECT_EQ(data["moving_label"], moving_tracks_label(run.moving_tracks));
+  // Pure pursuit samples no trajectories: none in the replay (and none in its legend).
+  EXPECT_TRUE(data["sketches"].empty());
+}
+
+// A sampling controller's sketches reach the replay at their times, to the centimetre, thinned
+// to 400 at most however long the episode.
+TEST(Replay, CarriesTheControllersSampledAndChosenTrajectories) {
+  const worlds::World w =
+      worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
+  episode::EpisodeResult run;
+  for (int k = 0; k < 1000; ++k)
+    run.controller_sketches.push_back(
+        {1.0 * k,
+         {{{{0.0, 0.0}, {1.004, 2.0}}, {{0.0, 0.0}, {1.0, -2.0}}}, {{0.0, 0.0}, {0.5, 0.123}}}});
+  const std::string html = replay_html(w, run);
+  const std::size_t begin = html.find('>', html.find("id=\"replay-data\"")) + 1;
+  const auto data =
+      nlohmann::json::parse(html.substr(begin, html.find("</script>", begin) - begin));
+  const auto& sketches = data["sketches"];
+  ASSERT_EQ(sketches.size(), 334u);  // every third of 1,000
+  EXPECT_EQ(sketches[1]["t"].get<double>(), 3.0);
+  ASSERT_EQ(sketches[1]["s"].size(), 2u);
+  EXPECT_NEAR(sketches[1]["s"][0][1][0].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(sketches[1]["c"][1][1].get<double>(), 0.12, 1e-9);
 }
 
 }  // namespace

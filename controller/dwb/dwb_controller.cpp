@@ -51,7 +51,7 @@ const util::ParamRows<DwbControllerParams>& dwb_param_rows() {
 
 namespace {
 
-class DwbController : public SamplingController {
+class DwbController : public SamplingController, public SketchesTrajectories {
  public:
   DwbController(const LocalControllerContext& ctx, DwbControllerParams p)
       : SamplingController(
@@ -72,6 +72,18 @@ class DwbController : public SamplingController {
     query.clearance = &field;
     query.robot_radius_m = context().footprint_radius_m;
     return planner_.step(query);
+  }
+
+  TrajectorySketch last_trajectories(int max_sampled, int max_points) const override {
+    TrajectorySketch sketch;
+    const std::vector<ScoredTrajectory>& all = planner_.trajectories();
+    const std::size_t count =
+        std::min(all.size(), static_cast<std::size_t>(std::max(0, max_sampled)));
+    for (std::size_t k = 0; k < count; ++k)  // spread over the window's samples
+      sketch.sampled.push_back(sketch_points(all[k * all.size() / count].poses, max_points));
+    if (const ScoredTrajectory* best = planner_.chosen())
+      sketch.chosen = sketch_points(best->poses, max_points);
+    return sketch;
   }
 
   /// No faster, and no quicker to speed up or brake, than the wheels: a trajectory the drive

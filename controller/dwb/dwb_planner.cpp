@@ -145,10 +145,12 @@ Twist DwbPlanner::step(const DwbQuery& q) {
       if (std::fabs(v) < 1e-6 && std::fabs(w) < p_.min_speed_theta) continue;
       scored_.push_back(score(q, {v, w}));
     }
-  const ScoredTrajectory* best = nullptr;
-  for (const ScoredTrajectory& t : scored_)
-    if (t.valid && (!best || t.total() < best->total())) best = &t;
-  const Twist command = best ? best->command : Twist{0, 0};
+  chosen_ = -1;
+  for (std::size_t k = 0; k < scored_.size(); ++k)
+    if (scored_[k].valid &&
+        (chosen_ < 0 || scored_[k].total() < scored_[static_cast<std::size_t>(chosen_)].total()))
+      chosen_ = static_cast<int>(k);
+  const Twist command = chosen() ? chosen()->command : Twist{0, 0};
   oscillation_.sent(command, q.pose);
   return command;
 }

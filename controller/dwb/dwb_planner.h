@@ -49,6 +49,10 @@ class DwbPlanner {
 
   /// Every trajectory of the last cycle, scored (for the replay and the tests).
   const std::vector<ScoredTrajectory>& trajectories() const { return scored_; }
+  /// The one the last cycle chose; null when none was valid (it stopped).
+  const ScoredTrajectory* chosen() const {
+    return chosen_ < 0 ? nullptr : &scored_[static_cast<std::size_t>(chosen_)];
+  }
 
   /// The trajectory of (v, omega) from `q`'s pose and velocity, ramped by the limits.
   std::vector<geom::Pose2> simulate(const DwbQuery& q, Twist target) const;
@@ -62,6 +66,7 @@ class DwbPlanner {
   DwbParams p_;
   PlanWindow plan_;
   std::vector<ScoredTrajectory> scored_;
+  int chosen_ = -1;  ///< in scored_
   OscillationCritic oscillation_;
 };
 

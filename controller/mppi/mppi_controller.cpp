@@ -72,7 +72,7 @@ const util::ParamRows<MppiControllerParams>& mppi_param_rows() {
 
 namespace {
 
-class MppiController : public SamplingController {
+class MppiController : public SamplingController, public SketchesTrajectories {
  public:
   MppiController(const LocalControllerContext& ctx, MppiControllerParams p)
       : SamplingController(
@@ -94,6 +94,14 @@ class MppiController : public SamplingController {
     query.clearance = &field;
     query.robot_radius_m = static_cast<float>(context().footprint_radius_m);
     return optimizer_.step(query);
+  }
+
+  TrajectorySketch last_trajectories(int max_sampled, int max_points) const override {
+    TrajectorySketch sketch;
+    for (const std::vector<geom::Pose2>& rollout : optimizer_.sampled_trajectories(max_sampled))
+      sketch.sampled.push_back(sketch_points(rollout, max_points));
+    sketch.chosen = sketch_points(optimizer_.optimal_trajectory(), max_points);
+    return sketch;
   }
 
   /// No faster than the wheels turn: a forward speed the motors cannot reach would be sampled
