@@ -23,6 +23,7 @@
 #include "episode/stepped_episode.h"
 #include "planner/registry.h"
 #include "python/action_check.h"
+#include "python/episode_seeds.h"
 #include "python/py_arguments.h"
 #include "python/py_bindings.h"
 #include "python/py_interrupt.h"
@@ -473,8 +474,7 @@ struct PyEnv {
         seed.is_none() ? std::nullopt : std::optional<std::uint64_t>(seed_from(seed, "seed"));
     const CallGuard::Held held = guard.enter("Env");
     background.settle();
-    if (s) next_seed = *s;
-    const std::uint64_t this_seed = next_seed++;
+    const std::uint64_t this_seed = seeds.next(s);
     core.clear();  // until the new episode has begun: a failed or interrupted reset leaves none
     background.run([this, this_seed, id] {
       core.draw(this_seed, id);
@@ -517,7 +517,7 @@ struct PyEnv {
   EnvCore core;
   std::string action_kind;
   py::object reward_fn;
-  std::uint64_t next_seed = 1;
+  EpisodeSeeds seeds;
   CallGuard guard;
   Background background;  // last: destroyed first, waiting for work that uses the members above
 };
@@ -537,6 +537,7 @@ struct PyVectorEnv {
         source_of(world, scenario, config, planner, start);
     for (int i = 0; i < n; ++i)
       envs.push_back(std::make_unique<EnvCore>(source, docking_argument(docking), limit));
+    seeds.resize(envs.size());
     // One source for all: its draws are made one at a time (on one thread, below).
   }
 
@@ -549,16 +550,15 @@ struct PyVectorEnv {
   }
 
   py::tuple reset(const py::object& seed) {
-    const std::optional<std::uint64_t> s =
-        seed.is_none() ? std::nullopt : std::optional<std::uint64_t>(seed_from(seed, "seed"));
+    const std::vector<std::optional<std::uint64_t>> asked = seeds_asked(seed);
     const CallGuard::Held held = guard.enter("VectorEnv");
     background.settle();
-    if (s) first_seed = *s;
     ready = false;
-    resets.assign(envs.size(), 0);
-    background.run([this] {
+    std::vector<std::uint64_t> firsts;
+    for (std::size_t i = 0; i < envs.size(); ++i) firsts.push_back(seeds[i].next(asked[i]));
+    background.run([this, firsts] {
       for (std::size_t i = 0; i < envs.size() && !background.stopping(); ++i)
-        envs[i]->draw(seed_of(i), "");
+        envs[i]->draw(firsts[i], "");
       begin_all(std::vector<char>(envs.size(), 1), {});
     });
     ready = true;
@@ -589,9 +589,12 @@ struct PyVectorEnv {
       // next episode now (reward 0, not terminated), planning in the background; the others
       // take their actions.
       ready = false;
-      background.run([this, was_done, twists = std::move(twists)] {
+      std::vector<std::uint64_t> next(envs.size());
+      for (std::size_t i = 0; i < envs.size(); ++i)
+        if (was_done[i]) next[i] = seeds[i].next(std::nullopt);  // an autoreset: no seed
+      background.run([this, was_done, next, twists = std::move(twists)] {
         for (std::size_t i = 0; i < envs.size(); ++i)
-          if (was_done[i]) ++resets[i], envs[i]->draw(seed_of(i), "");
+          if (was_done[i]) envs[i]->draw(next[i], "");
         begin_all(was_done, twists);
       });
       ready = true;
@@ -623,8 +626,30 @@ struct PyVectorEnv {
     });
   }
 
-  std::uint64_t seed_of(std::size_t i) const {
-    return first_seed + i + static_cast<std::uint64_t>(resets[i]) * envs.size();
+  /// What reset(seed=...) asks of each environment: None, a whole number s (s + i for the i-th:
+  /// the same episodes as Env.reset(seed=s + i)), or one seed per environment (a list, tuple or
+  /// one-dimensional array of n whole numbers).
+  std::vector<std::optional<std::uint64_t>> seeds_asked(const py::object& seed) const {
+    std::vector<std::optional<std::uint64_t>> out(envs.size());
+    if (seed.is_none()) return out;
+    if (py::isinstance<py::list>(seed) || py::isinstance<py::tuple>(seed) ||
+        py::isinstance<py::array>(seed)) {
+      const py::list each = py::list(seed);
+      if (each.size() != envs.size())
+        throw std::invalid_argument("seed: a list of " + std::to_string(envs.size()) +
+                                    " seeds (one per environment) expected, got " +
+                                    std::to_string(each.size()));
+      for (std::size_t i = 0; i < envs.size(); ++i)
+        out[i] = seed_from(each[i], "seed[" + std::to_string(i) + "]");
+      return out;
+    }
+    const std::uint64_t s = seed_from(seed, "seed");
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+      if (s > std::numeric_limits<std::uint64_t>::max() - i)
+        throw std::invalid_argument("seed: s + i must stay below 2**64 for every environment i");
+      out[i] = s + i;
+    }
+    return out;
   }
   py::dict observations() const {
     ObservationArrays a(static_cast<py::ssize_t>(envs.size()),
@@ -651,8 +676,7 @@ struct PyVectorEnv {
   std::vector<std::unique_ptr<EnvCore>> envs;
   std::string action_kind;
   util::WorkerPool pool;
-  std::uint64_t first_seed = 1;
-  std::vector<std::int64_t> resets;
+  std::vector<EpisodeSeeds> seeds;  ///< each environment's
   bool ready = false;  // every environment holds an episode begun by a finished reset or step
   CallGuard guard;
   Background background;  // last: destroyed first, waiting for work that uses the members above

@@ -178,8 +178,11 @@ class Env:
 
     def reset(self, *, seed=None, options=None):
         """A new episode. seed: the episode's seed (noise, and with start="random" its start; for
-        a scenario, its episode at index seed mod the episode count); None: the next seed (1
-        first). options: {"episode": id} for a scenario's episode by its id. Returns (obs, info)."""
+        a scenario, its episode at index seed mod the episode count), which also restarts the
+        environment's stream of seeds; None: the stream's next seed, as Gymnasium's np_random
+        continues (from the machine's entropy when no reset had a seed), so that resets without
+        a seed never replay an episode. options: {"episode": id} for a scenario's episode by its
+        id. Returns (obs, info)."""
         result = self._env.reset(seed, options)  # checks the seed first (InputError naming it)
         if seed is not None:
             self.np_random = np.random.default_rng(seed)
@@ -215,7 +218,9 @@ class VectorEnv:
     autoreset: an environment that terminated or truncated at a step starts its next episode at
     the following step, which returns its first observation with reward 0).
 
-    Environment i of reset(seed=s) runs episodes with seeds s + i, s + i + n, s + i + 2n, ...
+    Environment i is an Env: reset(seed=s) gives it seed s + i (reset(seed=[s0, s1, ...]) the
+    i-th), reset() and each autoreset the next seed of its own stream (Env.reset), so that no
+    episode repeats unless asked.
     Observations are the Env's, stacked: obs["scan"] has shape (n, beams), obs["pose"] (n, 3).
     step(actions) takes an array of shape (n, 2). threads: 0 for one per core. The other
     arguments are Env's (reward: the default only).

@@ -124,10 +124,13 @@ def test_vector_env_stacks_and_resets_at_the_next_step(source):
     assert truncated.all() and not terminated.any()
     obs, reward, terminated, truncated, info = v.step(np.zeros((n, 2)))
     assert (reward == 0).all() and not truncated.any()  # the next episodes' first observations
-    assert info["episode"] == [f"small_plant|{10 + i + n}" for i in range(n)]
-    # One environment alone gives the same observations as within the vector.
+    # Each autoreset is a reset without a seed: environment i continues its own stream, as an Env
+    # reset with seed 10 + i and then without one; alone it gives the same observations.
     single = plantsim.Env(source / WORLD)
-    o, _ = single.reset(seed=10 + 1 + n)
+    single.reset(seed=10 + 1)
+    o, single_info = single.reset()
+    assert info["episode"][1] == single_info["episode"]
+    assert len(set(info["episode"])) == n and not set(info["episode"]) & {f"small_plant|{10 + i}" for i in range(n)}
     assert np.array_equal(o["pose"], obs["pose"][1]) and np.array_equal(o["scan"], obs["scan"][1], equal_nan=True)
     with pytest.raises(plantsim.InputError, match="shape"):
         v.step(np.zeros((n + 1, 2)))
@@ -190,3 +193,33 @@ def test_spaces_sample_and_contain_as_gymnasium_says(source):
     assert Box(0.0, 1.0, (2,)).contains(np.array([0.5, 0.5], dtype=np.float32))
     half = Box(0.0, np.inf, (1000,), seed=3).sample()
     assert np.all(half >= 0) and np.all(np.isfinite(half))
+
+
+def test_seeds_continue_the_environments_stream_and_never_repeat_an_episode(source):
+    # Gymnasium's rule: a seeded reset restarts the stream, a seedless one continues it.
+    def ids(env, seeds):
+        return [env.reset(seed=s)[1]["episode"] for s in seeds]
+    a, b = plantsim.Env(source / WORLD), plantsim.Env(source / WORLD)
+    first = ids(a, [5, None, None, None])
+    assert first == ids(b, [5, None, None, None])  # reproducible from the seed
+    assert first[0] == "small_plant|5" and len(set(first)) == 4
+    assert ids(a, [5, None]) == first[:2]  # the seed restarts the stream
+    # Never seeded: the machine's entropy (two environments differ), and no repeats.
+    fresh = [plantsim.Env(source / WORLD).reset()[1]["episode"] for _ in range(2)]
+    assert fresh[0] != fresh[1]
+    n = 4
+    v = plantsim.VectorEnv(n, source / WORLD, max_steps=1, threads=1)
+    seen = []
+    for _ in range(7):  # vector wrappers reset without seeds: every episode new
+        seen += v.reset()[1]["episode"]
+    assert len(seen) == 7 * n and len(set(seen)) == 7 * n
+    _, info = v.reset(seed=[3, 9, 4, 2**64 - 1])
+    assert info["episode"] == ["small_plant|3", "small_plant|9", "small_plant|4", f"small_plant|{2**64 - 1}"]
+    _, again = v.reset(seed=np.array([3, 9, 4, 7]))
+    assert again["episode"][:3] == info["episode"][:3]
+    with pytest.raises(plantsim.InputError, match="4 seeds"):
+        v.reset(seed=[1, 2, 3])
+    with pytest.raises(TypeError, match=r"seed\[1\]"):
+        v.reset(seed=[1, 2.5, 3, 4])
+    with pytest.raises(plantsim.InputError, match=r"below 2\*\*64"):
+        v.reset(seed=2**64 - 2)
