@@ -10,9 +10,10 @@ namespace plantsim::episode {
 
 SteppedEpisode::SteppedEpisode(std::shared_ptr<const worlds::World> plant,
                                const std::string& planner, episode::EpisodeConfig config,
-                               bool steer_docking)
+                               DockingSteps docking)
     : plant_(std::move(plant)),
       config_(std::move(config)),
+      docking_(docking),
       planner_(planner::make_planner(planner, planner::planner_input(*plant_, true))) {
   // The outside's steering only notes what it is shown and asks the loop to pause: the command
   // comes with the next step.
@@ -24,11 +25,14 @@ SteppedEpisode::SteppedEpisode(std::shared_ptr<const worlds::World> plant,
   };
   EpisodeSteering steering;
   steering.name = "step-wise";
-  steering.wrap = [note, steer_docking](std::unique_ptr<robot::Travel> builtin,
+  // Docking a period a step, plantsim's own: the loop pauses there too, and step() hands back
+  // the manoeuvre's command (the same episode, bit for bit, as docking within one step).
+  const bool pause_docking = docking != DockingSteps::kBuiltinToTheEnd;
+  steering.wrap = [note, pause_docking](std::unique_ptr<robot::Travel> builtin,
                                         const worlds::World& map,
                                         const std::vector<geom::Vec2>& first_plan) {
     return robot::steered_by(std::move(builtin), map, first_plan, note,
-                             steer_docking ? note : robot::Steering{});
+                             pause_docking ? note : robot::Steering{});
   };
   run_ = std::make_unique<EpisodeRun>(*plant_, *planner_, config_, steering);
 }
@@ -57,7 +61,7 @@ bool SteppedEpisode::start() {
 
 bool SteppedEpisode::step(controller::Twist command) {
   if (!started_ || ended_) throw std::logic_error("no period awaits a command");
-  run_->command(command);
+  run_->command(outside_steers() ? command : view_.builtin);
   ++steps_;
   return run_on();
 }

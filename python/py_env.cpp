@@ -142,11 +142,18 @@ struct RewardWeights {
   double progress = 1.0, per_step = 0.01, bumper = 1.0, docked = 10.0, failed = 10.0;
 };
 
+/// How an environment's episodes step and end (Env's docking, contact and max_steps).
+struct EnvRules {
+  episode::DockingSteps docking = episode::DockingSteps::kBuiltinEachPeriod;
+  bool contact_ends = true;    ///< the first contact terminates the episode
+  std::int64_t max_steps = 0;  ///< truncate after this many steps (0: only timeout_s)
+};
+
 /// One environment: its episode source, the episode at hand and what the last step said.
 class EnvCore {
  public:
-  EnvCore(std::shared_ptr<EpisodeSource> source, bool steer_docking, std::int64_t max_steps)
-      : source_(std::move(source)), steer_docking_(steer_docking), max_steps_(max_steps) {}
+  EnvCore(std::shared_ptr<EpisodeSource> source, EnvRules rules)
+      : source_(std::move(source)), rules_(rules) {}
 
   /// A new episode; runs to its first steered period (GIL released by the caller).
   void reset(std::uint64_t seed, const std::string& id) {
@@ -164,9 +171,10 @@ class EnvCore {
     episode_.reset();
     id_ = drawn_.id;
     auto e = std::make_unique<SteppedEpisode>(drawn_.plant, drawn_.planner, drawn_.config,
-                                              steer_docking_);
+                                              rules_.docking);
     reward_ = 0;
     truncated_by_limit_ = false;
+    contact_ended_ = false;
     if (!e->start() || e->view().perception == nullptr)
       throw std::invalid_argument(ended_at_start(*e));
     episode_ = std::move(e);
@@ -183,9 +191,13 @@ class EnvCore {
     reward_ = weights_.progress * (last_distance_ - d) - weights_.per_step;
     last_distance_ = d;
     if (episode_->view().perception->bumper.pressed()) reward_ -= weights_.bumper;
-    if (episode_->ended())
-      reward_ += episode_->result().docked ? weights_.docked : -weights_.failed;
-    if (!episode_->ended() && max_steps_ > 0 && episode_->steps() >= max_steps_)
+    // The first contact ends the episode (unless asked to go on): a crash is terminal.
+    if (rules_.contact_ends && !episode_->ended() && episode_->result().collisions > 0)
+      contact_ended_ = true;
+    if (terminated())
+      reward_ += !contact_ended_ && episode_->result().docked ? weights_.docked : -weights_.failed;
+    if (!episode_->ended() && !contact_ended_ && rules_.max_steps > 0 &&
+        episode_->steps() >= rules_.max_steps)
       truncated_by_limit_ = true;
   }
 
@@ -198,14 +210,36 @@ class EnvCore {
            ". Try another seed, start or planner (plantsim.plan(world, planner) shows the plan)";
   }
 
+  /// Docked or failed (a first contact too, by default). One truncation rule: the time ran out,
+  /// the config's timeout_s or max_steps, whichever first; no terminal reward either way.
   bool terminated() const {
-    return episode_ && episode_->ended() &&
-           episode_->result().status != episode::EpisodeStatus::kTimeout;
+    return episode_ &&
+           (contact_ended_ ||
+            (episode_->ended() && episode_->result().status != episode::EpisodeStatus::kTimeout));
   }
   bool truncated() const {
-    return episode_ &&
+    return episode_ && !contact_ended_ &&
            ((episode_->ended() && episode_->result().status == episode::EpisodeStatus::kTimeout) ||
             truncated_by_limit_);
+  }
+  bool contact_ended() const { return contact_ended_; }
+  /// How the ended episode ended, whichever rule ended it: its status ("collision" at a first
+  /// contact, "timeout" at max_steps), whether it docked, its failure reason (empty if docked).
+  std::string status() const {
+    return contact_ended_       ? "collision"
+           : !episode_->ended() ? "timeout"
+                                : episode::status_name(episode_->result());
+  }
+  bool docked() const { return !contact_ended_ && episode_->ended() && episode_->result().docked; }
+  std::string failure() const {
+    const episode::EpisodeResult& r = episode_->result();
+    if (contact_ended_) return "collision";
+    if (!episode_->ended()) return "timeout";
+    return r.failure ? std::string(robot::to_string(r.failure->reason)) : std::string();
+  }
+  /// Why it was truncated ("timeout_s" or "max_steps"), empty when it was not.
+  std::string truncated_by() const {
+    return !truncated() ? "" : truncated_by_limit_ ? "max_steps" : "timeout_s";
   }
   bool done() const { return terminated() || truncated(); }
   double reward() const { return reward_; }
@@ -222,13 +256,13 @@ class EnvCore {
     return geom::distance(v.perception->pose.position(), v.staging.position());
   }
   std::shared_ptr<EpisodeSource> source_;
-  bool steer_docking_;
-  std::int64_t max_steps_;
+  EnvRules rules_;
   std::unique_ptr<SteppedEpisode> episode_;
   EpisodeSource::Drawn drawn_;
   std::string id_;
   double reward_ = 0, last_distance_ = 0;
   bool truncated_by_limit_ = false;
+  bool contact_ended_ = false;
 };
 
 constexpr double kWaypointAhead_m = 1.0;
@@ -341,12 +375,15 @@ py::dict info_of(const EnvCore& env) {
   info["steps"] = e.steps();
   info["builtin"] = py::make_tuple(e.view().builtin.v_mps, e.view().builtin.omega_radps);
   info["plan"] = points_array(e.view().plan);
-  if (e.ended()) {
-    const episode::EpisodeResult& r = e.result();
-    info["status"] = episode::status_name(r);
-    info["docked"] = r.docked;
-    info["failure"] = r.failure ? std::string(robot::to_string(r.failure->reason)) : std::string();
-    info["collisions"] = r.collisions;
+  // Whether the next step takes the action (false while plantsim's docking drives a period a
+  // step: the action is ignored).
+  info["action_used"] = e.ended() || e.outside_steers();
+  if (env.done()) {  // the same keys however it ended
+    info["status"] = env.status();
+    info["docked"] = env.docked();
+    info["failure"] = env.failure();
+    info["collisions"] = e.result().collisions;
+    info["truncated_by"] = env.truncated_by();
   }
   return info;
 }
@@ -381,13 +418,30 @@ std::shared_ptr<EpisodeSource> source_of(const py::object& world, const py::obje
                                        pose);
 }
 
-bool docking_argument(const std::string& docking) {
-  if (docking != "plantsim" && docking != "agent")
+/// Env's docking, contact and max_steps arguments, checked.
+EnvRules env_rules(const std::string& docking, const std::string& contact,
+                   const py::object& max_steps) {
+  EnvRules rules;
+  if (docking == "agent")
+    rules.docking = episode::DockingSteps::kOutside;
+  else if (docking == "plantsim")
+    rules.docking = episode::DockingSteps::kBuiltinEachPeriod;
+  else if (docking == "plantsim-whole")
+    rules.docking = episode::DockingSteps::kBuiltinToTheEnd;
+  else
     throw std::invalid_argument(
-        "docking must be \"plantsim\" (its manoeuvre docks) or \"agent\" "
-        "(the actions steer the docking too), got '" +
+        "docking must be \"plantsim\" (its manoeuvre docks, a control period a step), "
+        "\"plantsim-whole\" (it docks to the end within one step) or \"agent\" (the actions "
+        "steer the docking too), got '" +
         docking + "'");
-  return docking == "agent";
+  if (contact != "terminate" && contact != "continue")
+    throw std::invalid_argument(
+        "contact must be \"terminate\" (the first contact ends the episode) or \"continue\", "
+        "got '" +
+        contact + "'");
+  rules.contact_ends = contact == "terminate";
+  rules.max_steps = whole_from(max_steps, "max_steps", 0, std::numeric_limits<std::int64_t>::max());
+  return rules;
 }
 
 /// An action argument as numpy sees it (numpy.asarray: no conversion yet, so that complex,
@@ -459,9 +513,10 @@ std::string options_episode(const py::object& options) {
 struct PyEnv {
   PyEnv(const py::object& world, const py::object& scenario, const py::object& config,
         const std::string& planner, const py::object& start, const std::string& docking,
-        const std::string& action, const py::object& reward, const py::object& max_steps)
-      : core(source_of(world, scenario, config, planner, start), docking_argument(docking),
-             whole_from(max_steps, "max_steps", 0, std::numeric_limits<std::int64_t>::max())),
+        const std::string& contact, const std::string& action, const py::object& reward,
+        const py::object& max_steps)
+      : core(source_of(world, scenario, config, planner, start),
+             env_rules(docking, contact, max_steps)),
         action_kind(action_argument(action)),
         reward_fn(reward) {
     if (!reward.is_none() && !PyCallable_Check(reward.ptr()))
@@ -527,16 +582,14 @@ struct PyEnv {
 struct PyVectorEnv {
   PyVectorEnv(const py::object& n_arg, const py::object& world, const py::object& scenario,
               const py::object& config, const std::string& planner, const py::object& start,
-              const std::string& docking, const std::string& action, const py::object& max_steps,
-              const py::object& threads)
+              const std::string& docking, const std::string& contact, const std::string& action,
+              const py::object& max_steps, const py::object& threads)
       : action_kind(action_argument(action)), pool(pool_threads(n_arg, threads)) {
     const auto n = static_cast<int>(whole_from(n_arg, "n", 1, 4096));
-    const std::int64_t limit =
-        whole_from(max_steps, "max_steps", 0, std::numeric_limits<std::int64_t>::max());
+    const EnvRules rules = env_rules(docking, contact, max_steps);
     const std::shared_ptr<EpisodeSource> source =
         source_of(world, scenario, config, planner, start);
-    for (int i = 0; i < n; ++i)
-      envs.push_back(std::make_unique<EnvCore>(source, docking_argument(docking), limit));
+    for (int i = 0; i < n; ++i) envs.push_back(std::make_unique<EnvCore>(source, rules));
     seeds.resize(envs.size());
     // One source for all: its draws are made one at a time (on one thread, below).
   }
@@ -664,9 +717,9 @@ struct PyVectorEnv {
     py::array_t<bool> docked(static_cast<py::ssize_t>(envs.size()));
     for (std::size_t i = 0; i < envs.size(); ++i) {
       episode.append(envs[i]->id());
-      const bool ended = envs[i]->episode().ended();
-      status.append(ended ? episode::status_name(envs[i]->episode().result()) : std::string());
-      docked.mutable_at(static_cast<py::ssize_t>(i)) = ended && envs[i]->episode().result().docked;
+      const bool ended = envs[i]->done();
+      status.append(ended ? envs[i]->status() : std::string());
+      docked.mutable_at(static_cast<py::ssize_t>(i)) = ended && envs[i]->docked();
     }
     py::dict d;
     d["episode"] = episode, d["status"] = status, d["docked"] = docked;
@@ -695,21 +748,21 @@ py::tuple limits_of(const EpisodeSource& s) {
 void bind_env(py::module_& m) {
   py::class_<PyEnv>(m, "_Env")
       .def(py::init<const py::object&, const py::object&, const py::object&, const std::string&,
-                    const py::object&, const std::string&, const std::string&, const py::object&,
-                    const py::object&>(),
+                    const py::object&, const std::string&, const std::string&, const std::string&,
+                    const py::object&, const py::object&>(),
            py::arg("world"), py::arg("scenario"), py::arg("config"), py::arg("planner"),
-           py::arg("start"), py::arg("docking"), py::arg("action"), py::arg("reward"),
-           py::arg("max_steps"))
+           py::arg("start"), py::arg("docking"), py::arg("contact"), py::arg("action"),
+           py::arg("reward"), py::arg("max_steps"))
       .def("reset", &PyEnv::reset, py::arg("seed"), py::arg("options"))
       .def("step", &PyEnv::step, py::arg("action"))
       .def_property_readonly("limits", [](const PyEnv& e) { return limits_of(e.core.source()); });
   py::class_<PyVectorEnv>(m, "_VectorEnv")
       .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&,
                     const std::string&, const py::object&, const std::string&, const std::string&,
-                    const py::object&, const py::object&>(),
+                    const std::string&, const py::object&, const py::object&>(),
            py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
-           py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("action"),
-           py::arg("max_steps"), py::arg("threads"))
+           py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("contact"),
+           py::arg("action"), py::arg("max_steps"), py::arg("threads"))
       .def("reset", &PyVectorEnv::reset, py::arg("seed"))
       .def_property_readonly(
           "limits", [](const PyVectorEnv& e) { return limits_of(e.envs.front()->source()); })

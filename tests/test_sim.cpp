@@ -317,26 +317,45 @@ TEST(SteppedEpisode, DrivenWithTheBuiltinCommandItIsTheSameEpisode) {
   const episode::EpisodeResult whole = run_episode(*world, *p, config);
   ASSERT_TRUE(whole.docked) << episode::status_name(whole);
 
-  SteppedEpisode stepped(world, "vg", config, false);
-  ASSERT_TRUE(stepped.start());
-  EXPECT_GE(stepped.view().perception->t_s, config.perception.gyro_calibration_s - 1e-9);
-  EXPECT_EQ(stepped.view().phase, controller::DockPhase::kTravel);
-  while (stepped.step(stepped.view().builtin)) {
-    ASSERT_EQ(stepped.view().phase, controller::DockPhase::kTravel);  // docking runs by itself
+  // plantsim docking within the step that reaches the staging pose, and a period a step (the
+  // command ignored while it docks): the same episode both ways.
+  std::int64_t whole_steps = 0;
+  for (const DockingSteps docking :
+       {DockingSteps::kBuiltinToTheEnd, DockingSteps::kBuiltinEachPeriod}) {
+    SteppedEpisode stepped(world, "vg", config, docking);
+    ASSERT_TRUE(stepped.start());
+    EXPECT_GE(stepped.view().perception->t_s, config.perception.gyro_calibration_s - 1e-9);
+    EXPECT_EQ(stepped.view().phase, controller::DockPhase::kTravel);
+    std::int64_t docking_steps = 0;
+    while (stepped.step(docking == DockingSteps::kBuiltinEachPeriod && !stepped.outside_steers()
+                            ? controller::Twist{5.0, 3.0}  // ignored: plantsim docks
+                            : stepped.view().builtin)) {
+      if (docking == DockingSteps::kBuiltinToTheEnd) {
+        ASSERT_EQ(stepped.view().phase, controller::DockPhase::kTravel);  // docks by itself
+      }
+      docking_steps += !stepped.outside_steers();
+    }
+    const episode::EpisodeResult& r = stepped.result();
+    EXPECT_EQ(r.status, whole.status);
+    EXPECT_EQ(r.time_s, whole.time_s);
+    ASSERT_EQ(r.trajectory.size(), whole.trajectory.size());
+    EXPECT_EQ(r.trajectory.back().truth.x, whole.trajectory.back().truth.x);
+    EXPECT_EQ(r.trajectory.back().truth.y, whole.trajectory.back().truth.y);
+    EXPECT_GT(stepped.steps(), 100);
+    EXPECT_LE(stepped.steps(), static_cast<std::int64_t>(whole.trajectory.size()));
+    EXPECT_THROW(stepped.step({0, 0}), std::logic_error);
+    if (docking == DockingSteps::kBuiltinToTheEnd) {
+      whole_steps = stepped.steps();
+      EXPECT_EQ(docking_steps, 0);
+    } else {  // every docking period a step of its own: docking lasts seconds at 15 Hz
+      EXPECT_GT(docking_steps, 60);
+      EXPECT_EQ(stepped.steps(), whole_steps + docking_steps);
+    }
   }
-  const episode::EpisodeResult& r = stepped.result();
-  EXPECT_EQ(r.status, whole.status);
-  EXPECT_EQ(r.time_s, whole.time_s);
-  ASSERT_EQ(r.trajectory.size(), whole.trajectory.size());
-  EXPECT_EQ(r.trajectory.back().truth.x, whole.trajectory.back().truth.x);
-  EXPECT_EQ(r.trajectory.back().truth.y, whole.trajectory.back().truth.y);
-  EXPECT_GT(stepped.steps(), 100);
-  EXPECT_LT(stepped.steps(), static_cast<std::int64_t>(whole.trajectory.size()));
-  EXPECT_THROW(stepped.step({0, 0}), std::logic_error);
 
   // Standing still when asked to: the robot never leaves its start, the episode times out.
   config.timeout_s = 8;
-  SteppedEpisode still(world, "vg", config, true);
+  SteppedEpisode still(world, "vg", config, DockingSteps::kOutside);
   ASSERT_TRUE(still.start());
   while (still.step({0, 0})) {
   }

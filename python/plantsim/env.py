@@ -159,8 +159,11 @@ class Env:
     faults and controllers' configs: reset() takes its episodes in the order a batch runs them).
     config: a dict or config file (docs/config.md) for a world. planner: a name from planners().
     start: "random" (the start a batch draws for the seed; the default), "world" or [x, y, yaw].
-    docking: "plantsim" (its manoeuvre docks once the staging pose is reached; the episode then
-    runs to its end within the step that reaches it) or "agent" (the actions steer docking too).
+    docking: "plantsim" (its manoeuvre docks once the staging pose is reached, a control period
+    a step, the action ignored: info["action_used"] says so), "plantsim-whole" (it docks to the
+    end within the step that reaches the staging pose) or "agent" (the actions steer docking too).
+    contact: "terminate" (the first contact with anything ends the episode: terminated, status
+    "collision") or "continue" (the episode goes on; success still needs none).
     action: "twist" ((v m/s, omega rad/s), the default) or "wheels" ((left, right) m/s).
     reward: None for the default (docs/python.md), or f(obs, info) -> float.
     max_steps: truncate after this many steps (0: only the config's timeout_s truncates).
@@ -171,8 +174,9 @@ class Env:
     spec = None
 
     def __init__(self, world=None, *, scenario=None, config=None, planner="vg", start="random",
-                 docking="plantsim", action="twist", reward=None, max_steps=0):
-        self._env = _Env(world, scenario, config, planner, start, docking, action, reward, max_steps)
+                 docking="plantsim", contact="terminate", action="twist", reward=None, max_steps=0):
+        self._env = _Env(world, scenario, config, planner, start, docking, contact, action, reward,
+                         max_steps)
         self.action_space, self.observation_space = _spaces(self._env.limits, action)
         self.np_random = np.random.default_rng()
 
@@ -191,8 +195,10 @@ class Env:
 
     def step(self, action):
         """Drives one control period with `action`; returns (obs, reward, terminated, truncated,
-        info). terminated: docked or failed (info["status"], info["failure"]); truncated: the
-        config's timeout_s or max_steps reached. Stepping after either raises InputError."""
+        info). terminated: docked or failed (a first contact too, unless contact="continue");
+        truncated: the time ran out, the config's timeout_s or max_steps (info["truncated_by"]),
+        with no terminal reward. Either way info has "status", "docked", "failure" and
+        "collisions". Stepping after either raises InputError."""
         return self._env.step(action)
 
     def render(self):
@@ -230,9 +236,10 @@ class VectorEnv:
     render_mode = None
 
     def __init__(self, n, world=None, *, scenario=None, config=None, planner="vg", start="random",
-                 docking="plantsim", action="twist", max_steps=0, threads=0):
+                 docking="plantsim", contact="terminate", action="twist", max_steps=0, threads=0):
         self.num_envs = n
-        self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, action, max_steps, threads)
+        self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, contact, action,
+                               max_steps, threads)
         self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action)
         self.action_space, self.observation_space = _spaces(self._env.limits, action, n)
 

@@ -223,3 +223,52 @@ def test_seeds_continue_the_environments_stream_and_never_repeat_an_episode(sour
         v.reset(seed=[1, 2.5, 3, 4])
     with pytest.raises(plantsim.InputError, match=r"below 2\*\*64"):
         v.reset(seed=2**64 - 2)
+
+
+def test_plantsims_docking_a_period_a_step_a_first_contact_terminal_and_one_truncation_rule(source):
+    # docking="plantsim": its manoeuvre drives a control period a step, the action ignored (and
+    # said so); the same episode as docking to the end within one step.
+    each, whole = plantsim.Env(source / WORLD), plantsim.Env(source / WORLD, docking="plantsim-whole")
+    obs, info = each.reset(seed=3)
+    ignored = 0
+    while True:
+        action = info["builtin"] if info["action_used"] else (9.0, -9.0)  # ignored while it docks
+        ignored += not info["action_used"]
+        obs, reward, terminated, truncated, info = each.step(action)
+        if terminated or truncated:
+            break
+    w_steps, _, w_last, w_info, _ = follow_plantsim(whole, 3)
+    assert info["status"] == w_info["status"] == "docked"
+    assert obs["time"] == w_last["time"] and np.array_equal(obs["pose"], w_last["pose"])
+    assert ignored > 30 and info["steps"] == w_info["steps"] + ignored
+    # A crash is terminal at the first contact: full speed ahead from the world's start (facing a
+    # box or a wall), and not with contact="continue".
+    def crash(env):
+        env.reset(seed=1)
+        for k in range(2000):
+            obs, reward, terminated, truncated, info = env.step((1.0, 0.0))
+            if terminated or truncated:
+                return k, reward, terminated, info
+        return None
+    k, reward, terminated, info = crash(plantsim.Env(source / WORLD, start="world"))
+    assert terminated and info["status"] == info["failure"] == "collision" and not info["docked"]
+    assert info["collisions"] == 1 and reward < -10
+    on = plantsim.Env(source / WORLD, start="world", contact="continue")
+    on.reset(seed=1)
+    for _ in range(k + 1):
+        _, _, terminated, truncated, info = on.step((1.0, 0.0))
+    assert not terminated and not truncated  # pressed against it, the episode goes on
+    # One truncation rule: max_steps and timeout_s alike give the same keys and no terminal reward.
+    for env in (plantsim.Env(source / WORLD, max_steps=20), plantsim.Env(source / WORLD, config={"timeout_s": 3})):
+        env.reset(seed=2)
+        while True:
+            _, reward, terminated, truncated, info = env.step((0.0, 0.0))
+            if terminated or truncated:
+                break
+        assert truncated and not terminated and reward > -1
+        assert info["status"] == info["failure"] == "timeout" and not info["docked"]
+        assert info["truncated_by"] in ("max_steps", "timeout_s")
+    with pytest.raises(plantsim.InputError, match="contact must be"):
+        plantsim.Env(source / WORLD, contact="stop")
+    with pytest.raises(plantsim.InputError, match="plantsim-whole"):
+        plantsim.Env(source / WORLD, docking="builtin")
