@@ -30,10 +30,12 @@ class Box:
     uniformly from low to high inclusive, booleans as fair coins. contains() takes an array of
     the space's shape whose dtype casts to the space's (a float for an int space does not), within
     the bounds; NaN is contained in a real space, where plantsim marks "none" with it (a lidar
-    dropout, an unseen charger) - a departure from Gymnasium, whose Box refuses NaN."""
+    dropout, an unseen charger) - a departure from Gymnasium, whose Box refuses NaN - unless
+    nan=False (the spaces of finite observations, Env(finite=True))."""
 
-    def __init__(self, low, high, shape=None, dtype=np.float64, seed=None):
+    def __init__(self, low, high, shape=None, dtype=np.float64, seed=None, nan=True):
         shape = tuple(shape) if shape is not None else np.shape(low)
+        self.nan = bool(nan)  # whether NaN ("none") is contained (real spaces; False: Gymnasium's rule)
         self.low = np.broadcast_to(np.asarray(low, dtype=dtype), shape).copy()
         self.high = np.broadcast_to(np.asarray(high, dtype=dtype), shape).copy()
         self.shape, self.dtype = shape, np.dtype(dtype)
@@ -69,7 +71,7 @@ class Box:
         if np.issubdtype(self.dtype, np.integer) and not np.issubdtype(x.dtype, np.integer):
             return False
         inside = (x >= self.low) & (x <= self.high)
-        if np.issubdtype(self.dtype, np.floating):
+        if np.issubdtype(self.dtype, np.floating) and self.nan:
             inside |= np.isnan(x)
         return bool(np.all(inside))
 
@@ -124,7 +126,7 @@ class Dict:
         return "Dict(" + ", ".join(f"{k}: {s!r}" for k, s in self.spaces.items()) + ")"
 
 
-def _spaces(limits, action, n=None):
+def _spaces(limits, action, n=None, finite=False):
     max_speed, wheel_base, beams, max_range = limits
     lead = () if n is None else (n,)
     inf = np.inf
@@ -133,8 +135,8 @@ def _spaces(limits, action, n=None):
     else:
         turn = 2.0 * max_speed / wheel_base
         act = Box(np.broadcast_to([-max_speed, -turn], lead + (2,)), np.broadcast_to([max_speed, turn], lead + (2,)))
-    box = lambda low, high, shape, dtype=np.float64: Box(low, high, lead + shape, dtype)
-    obs = Dict({
+    box = lambda low, high, shape, dtype=np.float64: Box(low, high, lead + shape, dtype, nan=not finite)
+    fields = {
         "scan": box(0.0, max_range if np.isfinite(max_range) else inf, (beams,)),
         "scan_time": box(0.0, inf, ()),
         "pose": box(-inf, inf, (3,)),
@@ -148,8 +150,30 @@ def _spaces(limits, action, n=None):
         "phase": box(0, len(PHASES) - 1, (), np.int64),
         "health": box(0, 2, (), np.int64),
         "time": box(0.0, inf, ()),
-    })
-    return act, obs
+    }
+    if finite:  # what NaN marked, said by masks
+        fields["scan_valid"] = box(0, 1, (beams,), np.bool_)
+        fields["scan_seen"] = box(0, 1, (), np.bool_)
+    return act, Dict(fields)
+
+
+def _finite(obs, max_range):
+    """obs with NaN replaced and masks added (Env(finite=True)): a dropout's range reads as the
+    lidar's maximum (no return within reach) and scan_valid is False there; before the first
+    scan, scan_time reads 0 and scan_seen is False; an unseen charger reads (0, 0, 0) beside
+    charger_seen. Works on one observation and on a VectorEnv's stacked ones."""
+    scan = obs["scan"]
+    valid = ~np.isnan(scan)
+    obs["scan"] = np.where(valid, scan, max_range)
+    obs["scan_valid"] = valid
+    seen = ~np.isnan(obs["scan_time"])
+    obs["scan_time"] = np.where(seen, obs["scan_time"], 0.0)
+    obs["scan_seen"] = np.asarray(seen)
+    obs["charger"] = np.where(np.isnan(obs["charger"]), 0.0, obs["charger"])
+    for key, value in obs.items():  # any other "none" (none expected) would break the promise
+        if np.issubdtype(np.asarray(value).dtype, np.floating) and np.isnan(value).any():
+            obs[key] = np.nan_to_num(value, nan=0.0)
+    return obs
 
 
 class Env:
@@ -167,6 +191,9 @@ class Env:
     action: "twist" ((v m/s, omega rad/s), the default) or "wheels" ((left, right) m/s).
     reward: None for the default (docs/python.md), or f(obs, info) -> float.
     max_steps: truncate after this many steps (0: only the config's timeout_s truncates).
+    finite: False (the default: NaN marks a lidar dropout, a scan not yet taken, an unseen
+    charger) or True (finite values with masks: "scan_valid", "scan_seen", and "charger_seen"
+    as always; the spaces then refuse NaN, as Gymnasium's do).
     """
 
     metadata = {"render_modes": []}
@@ -174,10 +201,17 @@ class Env:
     spec = None
 
     def __init__(self, world=None, *, scenario=None, config=None, planner="vg", start="random",
-                 docking="plantsim", contact="terminate", action="twist", reward=None, max_steps=0):
+                 docking="plantsim", contact="terminate", action="twist", reward=None, max_steps=0,
+                 finite=False):
+        self._finite_range = None  # the lidar's maximum when finite (set below, before any step)
+        if finite and reward is not None:  # the reward sees the observation the agent sees
+            given = reward
+            reward = lambda obs, info: given(_finite(obs, self._finite_range), info)
         self._env = _Env(world, scenario, config, planner, start, docking, contact, action, reward,
                          max_steps)
-        self.action_space, self.observation_space = _spaces(self._env.limits, action)
+        if finite:
+            self._finite_range = float(self._env.limits[3])
+        self.action_space, self.observation_space = _spaces(self._env.limits, action, finite=finite)
         self.np_random = np.random.default_rng()
 
     def reset(self, *, seed=None, options=None):
@@ -187,11 +221,14 @@ class Env:
         continues (from the machine's entropy when no reset had a seed), so that resets without
         a seed never replay an episode. options: {"episode": id} for a scenario's episode by its
         id. Returns (obs, info)."""
-        result = self._env.reset(seed, options)  # checks the seed first (InputError naming it)
+        obs, info = self._env.reset(seed, options)  # checks the seed first (InputError naming it)
         if seed is not None:
             self.np_random = np.random.default_rng(seed)
             self.action_space.seed(seed)
-        return result
+        return self._observed(obs), info
+
+    def _observed(self, obs):
+        return obs if self._finite_range is None else _finite(obs, self._finite_range)
 
     def step(self, action):
         """Drives one control period with `action`; returns (obs, reward, terminated, truncated,
@@ -199,7 +236,8 @@ class Env:
         truncated: the time ran out, the config's timeout_s or max_steps (info["truncated_by"]),
         with no terminal reward. Either way info has "status", "docked", "failure" and
         "collisions". Stepping after either raises InputError."""
-        return self._env.step(action)
+        obs, reward, terminated, truncated, info = self._env.step(action)
+        return self._observed(obs), reward, terminated, truncated, info
 
     def render(self):
         return None
@@ -236,22 +274,29 @@ class VectorEnv:
     render_mode = None
 
     def __init__(self, n, world=None, *, scenario=None, config=None, planner="vg", start="random",
-                 docking="plantsim", contact="terminate", action="twist", max_steps=0, threads=0):
+                 docking="plantsim", contact="terminate", action="twist", max_steps=0, threads=0,
+                 finite=False):
         self.num_envs = n
         self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, contact, action,
                                max_steps, threads)
-        self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action)
-        self.action_space, self.observation_space = _spaces(self._env.limits, action, n)
+        self._finite_range = float(self._env.limits[3]) if finite else None
+        self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action, finite=finite)
+        self.action_space, self.observation_space = _spaces(self._env.limits, action, n, finite=finite)
 
     def reset(self, *, seed=None, options=None):
         if options:
             raise ValueError("VectorEnv.reset takes no options")
-        return self._env.reset(seed)
+        obs, info = self._env.reset(seed)
+        return self._observed(obs), info
 
     def step(self, actions):
         # Passed as given: the C++ side refuses complex, bool, text and object elements before
         # any environment steps (a cast to float64 here made 1+2j a 1 and "0.5" a 0.5).
-        return self._env.step(actions)
+        obs, rewards, terminated, truncated, info = self._env.step(actions)
+        return self._observed(obs), rewards, terminated, truncated, info
+
+    def _observed(self, obs):
+        return obs if self._finite_range is None else _finite(obs, self._finite_range)
 
     def close(self):
         pass

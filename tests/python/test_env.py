@@ -272,3 +272,33 @@ def test_plantsims_docking_a_period_a_step_a_first_contact_terminal_and_one_trun
         plantsim.Env(source / WORLD, contact="stop")
     with pytest.raises(plantsim.InputError, match="plantsim-whole"):
         plantsim.Env(source / WORLD, docking="builtin")
+
+
+def test_finite_observations_carry_masks_where_nan_marked_none(source):
+    # A noisy lidar drops returns (NaN); finite=True gives its maximum range there, with masks,
+    # and the spaces refuse NaN as Gymnasium's do. The same episode either way.
+    config = {"lidar": {"dropout_probability": 0.2}}
+    raw = plantsim.Env(source / WORLD, config=config)
+    fin = plantsim.Env(source / WORLD, config=config, finite=True)
+    assert set(fin.observation_space.keys()) == set(raw.observation_space.keys()) | {"scan_valid", "scan_seen"}
+    nan_obs = raw.observation_space.sample()
+    nan_obs["scan"][0] = np.nan
+    assert raw.observation_space.contains(nan_obs)
+    (r, _), (f, _) = raw.reset(seed=4), fin.reset(seed=4)
+    dropped = 0
+    for _ in range(60):
+        assert fin.observation_space.contains(f)
+        assert not any(np.isnan(v).any() for v in f.values() if np.asarray(v).dtype.kind == "f")
+        assert np.array_equal(f["scan_valid"], ~np.isnan(r["scan"]))
+        assert np.array_equal(f["scan"][f["scan_valid"]], r["scan"][f["scan_valid"]])
+        assert (f["scan"][~f["scan_valid"]] == fin._finite_range).all()
+        assert bool(f["charger_seen"]) == (not np.isnan(r["charger"]).any())
+        dropped += int((~f["scan_valid"]).sum())
+        r, *_ = raw.step(r_action := (0.2, 0.1))
+        f, *_ = fin.step(r_action)
+    assert dropped > 100  # the case was met
+    f["scan"][3] = np.nan
+    assert not fin.observation_space.contains(f)
+    v = plantsim.VectorEnv(2, source / WORLD, config=config, finite=True, threads=1)
+    obs, _ = v.reset(seed=4)
+    assert v.observation_space.contains(obs) and obs["scan_valid"].shape == (2, 360)
