@@ -602,16 +602,17 @@ struct PyVectorEnv {
     return util::WorkerPool::threads_for(asked, envs);
   }
 
-  py::tuple reset(const py::object& seed) {
+  py::tuple reset(const py::object& seed, const py::object& options) {
     const std::vector<std::optional<std::uint64_t>> asked = seeds_asked(seed);
+    const std::vector<std::string> ids = episodes_asked(options);
     const CallGuard::Held held = guard.enter("VectorEnv");
     background.settle();
     ready = false;
     std::vector<std::uint64_t> firsts;
     for (std::size_t i = 0; i < envs.size(); ++i) firsts.push_back(seeds[i].next(asked[i]));
-    background.run([this, firsts] {
+    background.run([this, firsts, ids] {
       for (std::size_t i = 0; i < envs.size() && !background.stopping(); ++i)
-        envs[i]->draw(firsts[i], "");
+        envs[i]->draw(firsts[i], ids[i]);
       begin_all(std::vector<char>(envs.size(), 1), {});
     });
     ready = true;
@@ -679,6 +680,38 @@ struct PyVectorEnv {
     });
   }
 
+  /// What reset(options=...) asks of each environment: {"episode": [id or None, ...]}, one per
+  /// environment (a scenario's episodes by id, as Env's option), or nothing.
+  std::vector<std::string> episodes_asked(const py::object& options) const {
+    std::vector<std::string> out(envs.size());
+    if (options.is_none()) return out;
+    if (!py::isinstance<py::dict>(options))
+      throw py::type_error("options must be a dict ({\"episode\": [id, ...]}) or None");
+    const py::dict o = options.cast<py::dict>();
+    for (const auto& kv : o)
+      if (!py::isinstance<py::str>(kv.first) || kv.first.cast<std::string>() != "episode")
+        throw std::invalid_argument("unknown option " + py::repr(kv.first).cast<std::string>() +
+                                    " (options: episode)");
+    if (!o.contains("episode")) return out;
+    const py::object each = o["episode"];
+    if (!py::isinstance<py::list>(each) && !py::isinstance<py::tuple>(each))
+      throw py::type_error("options['episode'] must be a list of " + std::to_string(envs.size()) +
+                           " episode ids (str, or None for a seed's episode)");
+    const py::list ids(each);
+    if (ids.size() != envs.size())
+      throw std::invalid_argument("options['episode']: " + std::to_string(envs.size()) +
+                                  " ids (one per environment) expected, got " +
+                                  std::to_string(ids.size()));
+    for (std::size_t i = 0; i < envs.size(); ++i) {
+      if (ids[i].is_none()) continue;
+      if (!py::isinstance<py::str>(ids[i]))
+        throw py::type_error("options['episode'][" + std::to_string(i) +
+                             "] must be an episode id (str) or None");
+      out[i] = ids[i].cast<std::string>();
+    }
+    return out;
+  }
+
   /// What reset(seed=...) asks of each environment: None, a whole number s (s + i for the i-th:
   /// the same episodes as Env.reset(seed=s + i)), or one seed per environment (a list, tuple or
   /// one-dimensional array of n whole numbers).
@@ -712,17 +745,63 @@ struct PyVectorEnv {
     return a.as_dict(false);
   }
 
+  /// Env's info keys stacked as Gymnasium's vector environments give them: info[key] an array
+  /// over the environments (numbers as numbers, text and plans as objects) and info["_" + key]
+  /// which environments have it: every one for what each step says, those whose episode ended
+  /// at this step for how it ended.
   py::dict infos() const {
-    py::list episode, status;
-    py::array_t<bool> docked(static_cast<py::ssize_t>(envs.size()));
-    for (std::size_t i = 0; i < envs.size(); ++i) {
-      episode.append(envs[i]->id());
-      const bool ended = envs[i]->done();
-      status.append(ended ? envs[i]->status() : std::string());
-      docked.mutable_at(static_cast<py::ssize_t>(i)) = ended && envs[i]->docked();
+    const auto n = static_cast<py::ssize_t>(envs.size());
+    // An array of Python objects (text, plans) holding `items`.
+    auto object_array = [](const py::list& items) {
+      py::array a(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(items.size())},
+                  std::vector<py::ssize_t>{});
+      auto** slots = static_cast<PyObject**>(a.mutable_data());
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        PyObject* old = slots[i];
+        slots[i] = py::object(items[i]).release().ptr();  // the array owns a reference
+        Py_XDECREF(old);
+      }
+      return a;
+    };
+    py::list episode, plan, status, failure, truncated_by;
+    py::array_t<double> time(n), builtin({n, py::ssize_t{2}});
+    py::array_t<std::int64_t> steps(n), collisions(n);
+    py::array_t<bool> action_used(n), docked(n), every(n), ended(n);
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const EnvCore& env = *envs[static_cast<std::size_t>(i)];
+      const SteppedEpisode& e = env.episode();
+      const bool done = env.done();
+      episode.append(env.id());
+      plan.append(points_array(e.view().plan));
+      time.mutable_at(i) = e.view().perception->t_s;
+      steps.mutable_at(i) = e.steps();
+      builtin.mutable_at(i, 0) = e.view().builtin.v_mps;
+      builtin.mutable_at(i, 1) = e.view().builtin.omega_radps;
+      action_used.mutable_at(i) = e.ended() || e.outside_steers();
+      every.mutable_at(i) = true;
+      ended.mutable_at(i) = done;
+      status.append(done ? env.status() : std::string());
+      failure.append(done ? env.failure() : std::string());
+      truncated_by.append(done ? env.truncated_by() : std::string());
+      docked.mutable_at(i) = done && env.docked();
+      collisions.mutable_at(i) = done ? e.result().collisions : 0;
     }
     py::dict d;
-    d["episode"] = episode, d["status"] = status, d["docked"] = docked;
+    auto put = [&d](const char* key, const py::object& value, const py::array_t<bool>& mask) {
+      d[key] = value;
+      d[(std::string("_") + key).c_str()] = mask;
+    };
+    put("episode", object_array(episode), every);
+    put("time", time, every);
+    put("steps", steps, every);
+    put("builtin", builtin, every);
+    put("plan", object_array(plan), every);
+    put("action_used", action_used, every);
+    put("status", object_array(status), ended);
+    put("docked", docked, ended);
+    put("failure", object_array(failure), ended);
+    put("collisions", collisions, ended);
+    put("truncated_by", object_array(truncated_by), ended);
     return d;
   }
 
@@ -763,7 +842,7 @@ void bind_env(py::module_& m) {
            py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
            py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("contact"),
            py::arg("action"), py::arg("max_steps"), py::arg("threads"))
-      .def("reset", &PyVectorEnv::reset, py::arg("seed"))
+      .def("reset", &PyVectorEnv::reset, py::arg("seed"), py::arg("options"))
       .def_property_readonly(
           "limits", [](const PyVectorEnv& e) { return limits_of(e.envs.front()->source()); })
       .def("step", &PyVectorEnv::step, py::arg("actions"));

@@ -266,8 +266,11 @@ class VectorEnv:
     i-th), reset() and each autoreset the next seed of its own stream (Env.reset), so that no
     episode repeats unless asked.
     Observations are the Env's, stacked: obs["scan"] has shape (n, beams), obs["pose"] (n, 3).
-    step(actions) takes an array of shape (n, 2). threads: 0 for one per core. The other
-    arguments are Env's (reward: the default only).
+    step(actions) takes an array of shape (n, 2). threads: 0 for one per core. info holds Env's
+    keys stacked as Gymnasium's vector environments give them: info[key] an array over the
+    environments and info["_" + key] which have it (how an episode ended: those that ended at
+    this step). reward: None (the default reward, computed in C++) or f(obs, info) on the
+    stacked observation and info, returning n numbers. The other arguments are Env's.
     """
 
     metadata = {"render_modes": [], "autoreset_mode": "NextStep"}
@@ -275,25 +278,38 @@ class VectorEnv:
 
     def __init__(self, n, world=None, *, scenario=None, config=None, planner="vg", start="random",
                  docking="plantsim", contact="terminate", action="twist", max_steps=0, threads=0,
-                 finite=False):
+                 finite=False, reward=None):
+        if reward is not None and not callable(reward):
+            raise TypeError("reward must be callable: f(obs, info) -> one number per environment, or None")
+        self._reward = reward
         self.num_envs = n
         self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, contact, action,
-                               max_steps, threads)
+                               max_steps, threads)  # checks n first
+        self._autoresetting = np.zeros(n, dtype=bool)
         self._finite_range = float(self._env.limits[3]) if finite else None
         self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action, finite=finite)
         self.action_space, self.observation_space = _spaces(self._env.limits, action, n, finite=finite)
 
     def reset(self, *, seed=None, options=None):
-        if options:
-            raise ValueError("VectorEnv.reset takes no options")
-        obs, info = self._env.reset(seed)
+        """New episodes in every environment: seed None, s (s + i for environment i) or one per
+        environment; options {"episode": [id or None, ...]} (a scenario's episodes by id)."""
+        obs, info = self._env.reset(seed, options)
+        self._autoresetting = np.zeros(self.num_envs, dtype=bool)
         return self._observed(obs), info
 
     def step(self, actions):
         # Passed as given: the C++ side refuses complex, bool, text and object elements before
         # any environment steps (a cast to float64 here made 1+2j a 1 and "0.5" a 0.5).
         obs, rewards, terminated, truncated, info = self._env.step(actions)
-        return self._observed(obs), rewards, terminated, truncated, info
+        obs = self._observed(obs)
+        if self._reward is not None:  # an environment starting its next episode gets 0
+            given = np.asarray(self._reward(obs, info), dtype=np.float64)
+            if given.shape != (self.num_envs,):
+                raise ValueError(f"reward must return one number per environment, shape ({self.num_envs},), "
+                                 f"got shape {given.shape}")
+            rewards = np.where(self._autoresetting, 0.0, given)
+        self._autoresetting = np.asarray(terminated) | np.asarray(truncated)
+        return obs, rewards, terminated, truncated, info
 
     def _observed(self, obs):
         return obs if self._finite_range is None else _finite(obs, self._finite_range)

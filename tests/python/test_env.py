@@ -110,6 +110,34 @@ def test_a_scenarios_episodes_by_id(source, tmp_path):
         env.reset(options={"episode": "small_plant|vg|default|wet|1"})
     with pytest.raises(plantsim.InputError, match="unknown option"):
         env.reset(options={"episodes": 1})
+    # VectorEnv takes the same option, one id (or None: the seed's episode) per environment.
+    v = plantsim.VectorEnv(2, scenario=scenario, threads=1)
+    _, info = v.reset(seed=[5, 1], options={"episode": ["small_plant|vg|default|unmapped|1", None]})
+    assert list(info["episode"]) == ["small_plant|vg|default|unmapped|1", "small_plant|vg|default|none|2"]
+    with pytest.raises(plantsim.InputError, match="2 ids"):
+        v.reset(options={"episode": ["small_plant|vg|default|none|1"]})
+    with pytest.raises(TypeError, match=r"options\['episode'\]\[1\]"):
+        v.reset(options={"episode": [None, 3]})
+
+
+def test_a_vector_envs_own_reward_sees_the_stacked_step_and_gives_0_at_an_autoreset(source):
+    n = 3
+    seen = []
+    def reward(obs, info):
+        seen.append((obs["pose"].shape, info["time"].copy()))
+        return obs["pose"][:, 0] * 0 + info["steps"]  # one number per environment
+    v = plantsim.VectorEnv(n, source / WORLD, max_steps=2, threads=1, reward=reward)
+    v.reset(seed=1)
+    rewards = [v.step(np.zeros((n, 2)))[1] for _ in range(3)]
+    assert seen[0][0] == (n, 3) and len(seen) == 3
+    assert list(rewards[0]) == [1.0] * n and list(rewards[1]) == [2.0] * n
+    assert list(rewards[2]) == [0.0] * n  # the next episodes' first observations
+    bad = plantsim.VectorEnv(n, source / WORLD, threads=1, reward=lambda o, i: 1.0)
+    bad.reset(seed=1)
+    with pytest.raises(ValueError, match="one number per environment"):
+        bad.step(np.zeros((n, 2)))
+    with pytest.raises(TypeError, match="callable"):
+        plantsim.VectorEnv(n, source / WORLD, reward=3)
 
 
 def test_vector_env_stacks_and_resets_at_the_next_step(source):
@@ -118,12 +146,19 @@ def test_vector_env_stacks_and_resets_at_the_next_step(source):
     obs, info = v.reset(seed=10)
     assert obs["scan"].shape == (n, 360) and obs["pose"].shape == (n, 3)
     assert v.observation_space.contains(obs) and v.single_observation_space["pose"].shape == (3,)
-    assert info["episode"] == [f"small_plant|{10 + i}" for i in range(n)]
+    assert list(info["episode"]) == [f"small_plant|{10 + i}" for i in range(n)]
+    # Env's info keys stacked as Gymnasium's vector environments give them, with "_key" masks.
+    assert info["episode"].dtype == object and info["_episode"].all() and info["time"].shape == (n,)
+    assert info["builtin"].shape == (n, 2) and info["action_used"].all() and len(info["plan"]) == n
+    assert not info["_status"].any() and list(info["status"]) == [""] * n
     for k in range(5):
         obs, reward, terminated, truncated, info = v.step(np.zeros((n, 2)))
     assert truncated.all() and not terminated.any()
+    assert info["_status"].all() and list(info["truncated_by"]) == ["max_steps"] * n
+    assert list(info["status"]) == ["timeout"] * n and not info["docked"].any()
     obs, reward, terminated, truncated, info = v.step(np.zeros((n, 2)))
     assert (reward == 0).all() and not truncated.any()  # the next episodes' first observations
+    assert not info["_status"].any()
     # Each autoreset is a reset without a seed: environment i continues its own stream, as an Env
     # reset with seed 10 + i and then without one; alone it gives the same observations.
     single = plantsim.Env(source / WORLD)
@@ -211,12 +246,12 @@ def test_seeds_continue_the_environments_stream_and_never_repeat_an_episode(sour
     v = plantsim.VectorEnv(n, source / WORLD, max_steps=1, threads=1)
     seen = []
     for _ in range(7):  # vector wrappers reset without seeds: every episode new
-        seen += v.reset()[1]["episode"]
+        seen += list(v.reset()[1]["episode"])
     assert len(seen) == 7 * n and len(set(seen)) == 7 * n
     _, info = v.reset(seed=[3, 9, 4, 2**64 - 1])
-    assert info["episode"] == ["small_plant|3", "small_plant|9", "small_plant|4", f"small_plant|{2**64 - 1}"]
+    assert list(info["episode"]) == ["small_plant|3", "small_plant|9", "small_plant|4", f"small_plant|{2**64 - 1}"]
     _, again = v.reset(seed=np.array([3, 9, 4, 7]))
-    assert again["episode"][:3] == info["episode"][:3]
+    assert list(again["episode"][:3]) == list(info["episode"][:3])
     with pytest.raises(plantsim.InputError, match="4 seeds"):
         v.reset(seed=[1, 2, 3])
     with pytest.raises(TypeError, match=r"seed\[1\]"):
