@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <functional>
+#include <future>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
@@ -60,6 +62,38 @@ TEST(WorkerPool, ThreadsThatCannotStartAreLeftOutAndThePoolStillRuns) {
       pool.run(hits.size(), [&](std::size_t i) { hits[i].fetch_add(1); });
       for (auto& h : hits) ASSERT_EQ(h.load(), 1) << can_start << " " << run;
     }
+  }
+}
+
+// A helper the kernel has not scheduled (here: held at a gate before it starts) does not hold a
+// run up: the caller takes every job and returns; released later, the helper takes nothing of
+// the runs that are over and joins the next ones. (Every helper used to take part in every run,
+// so a busy machine made two threads slower than one.)
+TEST(WorkerPool, ARunNeverWaitsForAHelperThatTookNoJob) {
+  std::promise<void> gate;
+  std::shared_future<void> open = gate.get_future().share();
+  WorkerPool pool(2, [&](std::function<void()> body) {
+    return std::thread([open, body = std::move(body)] {
+      open.wait();
+      body();
+    });
+  });
+  ASSERT_EQ(pool.threads(), 2);
+  std::vector<std::atomic<int>> hits(8);
+  auto runs = std::async(std::launch::async, [&] {
+    for (int run = 0; run < 100; ++run)
+      pool.run(hits.size(), [&](std::size_t i) { hits[i].fetch_add(1); });
+  });
+  // A hang detector, not a timing: the runs need milliseconds, the bound is generous.
+  const bool prompt = runs.wait_for(std::chrono::seconds(20)) == std::future_status::ready;
+  gate.set_value();  // either way: the runs then end
+  runs.get();
+  EXPECT_TRUE(prompt) << "a run waited for the helper held at its gate";
+  for (auto& h : hits) EXPECT_EQ(h.load(), 100);
+  for (int run = 0; run < 200; ++run) {
+    std::vector<std::atomic<int>> again(8);
+    pool.run(again.size(), [&](std::size_t i) { again[i].fetch_add(1); });
+    for (auto& h : again) ASSERT_EQ(h.load(), 1) << run;
   }
 }
 

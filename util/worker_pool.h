@@ -36,16 +36,18 @@ class WorkerPool {
   /// The threads the pool runs on, the caller included (fewer than asked when some failed).
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
 
-  /// The most threads a pool takes: 4 per core. Every helper takes part in every run, so
-  /// helpers beyond the cores only add switches (400 on 2 cores made each run wait for 400
-  /// wake-ups and spins).
+  /// The most threads a pool takes: 4 per core. Every helper wakes for every run, so helpers
+  /// beyond the cores only add switches (400 on 2 cores spent each run on 400 wake-ups and
+  /// spins).
   static int max_threads();
   /// The threads for `jobs` jobs per run when `requested` are asked (0 or less: one per core),
   /// from 1 to the smaller of `jobs` and max_threads().
   static int threads_for(int requested, std::size_t jobs);
 
  private:
-  void work(const std::function<void(std::size_t)>& job, std::size_t n);
+  /// The next job of run `generation` to take, or n when none is left or the run is another.
+  std::size_t claim(std::uint32_t generation, std::size_t n);
+  void work(const std::function<void(std::size_t)>& job, std::size_t n, std::uint32_t generation);
   void help();
   std::vector<std::thread> helpers_;
   std::mutex mutex_;
@@ -54,8 +56,8 @@ class WorkerPool {
   bool stopping_ = false;
   const std::function<void(std::size_t)>* job_ = nullptr;
   std::size_t n_ = 0;
-  std::atomic<std::size_t> next_{0};
-  std::atomic<int> pending_{0};                    // helpers yet to finish the run at hand
+  std::atomic<std::uint64_t> claim_{0};    // the run's generation (high half), next job (low)
+  std::atomic<std::size_t> completed_{0};  // jobs of the run at hand done
   std::atomic<std::uint64_t> generation_seen_{0};  // generation_, for the helpers' spin
   std::exception_ptr failure_;
 };
