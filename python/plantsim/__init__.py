@@ -33,7 +33,7 @@ if not os.environ.get("PLANTSIM_DATA") and _find_shared_data():
 from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, components, load_plugin, load_world,
                         nav2_import, plan, planners, run)
 from ._plantsim import _batch, _tune
-from .env import Env, VectorEnv
+from .env import Env, VectorEnv, _absolute_worlds
 
 __all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "components",
            "load_plugin", "load_world", "nav2_import", "plan", "planners", "run", "tune"]
@@ -46,16 +46,6 @@ def _number(text):
         except ValueError:
             pass
     return text
-
-
-def _absolute_worlds(scenario):
-    """A scenario dict's relative world paths made absolute from the working folder."""
-    scenario = dict(scenario)
-    worlds = scenario.get("worlds")
-    if isinstance(worlds, list):
-        scenario["worlds"] = [os.path.abspath(w) if isinstance(w, str) and not w.startswith("$data/") else w
-                              for w in worlds]
-    return scenario
 
 
 def batch(scenario, out=None, *, controller=None, docking=None, controller_name="", threads=0, figures=True,

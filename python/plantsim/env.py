@@ -18,9 +18,35 @@ plan ahead of the estimate), "charger" (the docked pose as the detector saw it, 
 NaN when unseen) and "charger_seen", "phase" (index in plantsim.PHASES), "health" (0 ok,
 1 degraded, 2 lost), "time" (s). docs/python.md has the reward, the spaces and an example.
 """
+import json
+import os
+import tempfile
+
 import numpy as np
 
 from ._plantsim import PHASES, _Env, _VectorEnv
+
+
+def _absolute_worlds(scenario):
+    """A scenario dict's relative world paths made absolute from the working folder."""
+    scenario = dict(scenario)
+    worlds = scenario.get("worlds")
+    if isinstance(worlds, list):
+        scenario["worlds"] = [os.path.abspath(w) if isinstance(w, str) and not w.startswith("$data/") else w
+                              for w in worlds]
+    return scenario
+
+
+def _with_scenario(scenario, make):
+    """make(scenario as a path): a dict (the keys of docs/batch.md) is written to a scratch file
+    for the loader to read, its relative world paths taken from the working folder."""
+    if not isinstance(scenario, dict):
+        return make(scenario)
+    with tempfile.TemporaryDirectory(prefix="plantsim_env_") as scratch:
+        path = os.path.join(scratch, "scenario.yaml")
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(_absolute_worlds(scenario), f)  # JSON is YAML
+        return make(path)
 
 
 class Box:
@@ -179,8 +205,10 @@ def _finite(obs, max_range):
 class Env:
     """One environment (Gymnasium's Env contract).
 
-    world: a World or a world file's path; or scenario: a scenario file (its worlds, starts,
-    faults and controllers' configs: reset() takes its episodes in the order a batch runs them).
+    world: a World or a world file's path; or scenario: a scenario file, or a dict with its keys
+    (docs/batch.md; relative world paths from the working folder): its worlds, starts, faults
+    and controllers' configs, reset(seed=s) its episode at index s mod their count, a seedless
+    reset a drawn one (worlds and faults drawn per reset: domain randomisation).
     config: a dict or config file (docs/config.md) for a world. planner: a name from planners().
     start: "random" (the start a batch draws for the seed; the default), "world" or [x, y, yaw].
     docking: "plantsim" (its manoeuvre docks once the staging pose is reached, a control period
@@ -207,8 +235,8 @@ class Env:
         if finite and reward is not None:  # the reward sees the observation the agent sees
             given = reward
             reward = lambda obs, info: given(_finite(obs, self._finite_range), info)
-        self._env = _Env(world, scenario, config, planner, start, docking, contact, action, reward,
-                         max_steps)
+        self._env = _with_scenario(scenario, lambda s: _Env(world, s, config, planner, start, docking, contact,
+                                                             action, reward, max_steps))
         if finite:
             self._finite_range = float(self._env.limits[3])
         self.action_space, self.observation_space = _spaces(self._env.limits, action, finite=finite)
@@ -283,8 +311,8 @@ class VectorEnv:
             raise TypeError("reward must be callable: f(obs, info) -> one number per environment, or None")
         self._reward = reward
         self.num_envs = n
-        self._env = _VectorEnv(n, world, scenario, config, planner, start, docking, contact, action,
-                               max_steps, threads)  # checks n first
+        self._env = _with_scenario(scenario, lambda s: _VectorEnv(n, world, s, config, planner, start, docking,
+                                                                   contact, action, max_steps, threads))  # checks n first
         self._autoresetting = np.zeros(n, dtype=bool)
         self._finite_range = float(self._env.limits[3]) if finite else None
         self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action, finite=finite)

@@ -97,7 +97,7 @@ def test_a_reward_of_ones_own_and_wheel_speeds(source):
     assert obs["velocity"][0] > 0.05 and abs(obs["velocity"][1]) < 0.2  # equal wheels: straight on
 
 
-def test_a_scenarios_episodes_by_id(source, tmp_path):
+def test_a_scenarios_episodes_by_id(source, tmp_path, monkeypatch):
     scenario = tmp_path / "s.yaml"
     scenario.write_text(json.dumps({"worlds": [str(source / WORLD)], "seeds": 2,
                                     "faults": {"none": {}, "unmapped": {"unmapped_obstacles": 2}}}))
@@ -110,6 +110,16 @@ def test_a_scenarios_episodes_by_id(source, tmp_path):
         env.reset(options={"episode": "small_plant|vg|default|wet|1"})
     with pytest.raises(plantsim.InputError, match="unknown option"):
         env.reset(options={"episodes": 1})
+    # A scenario given as a dict, as the docs say (it was refused), its worlds relative to the
+    # working folder; seedless resets draw its episodes (worlds and faults) at random.
+    as_dict = json.loads(scenario.read_text())
+    monkeypatch.chdir(source)
+    as_dict["worlds"] = [WORLD]
+    drawn = plantsim.Env(scenario=as_dict)
+    ids = {drawn.reset()[1]["episode"] for _ in range(24)}
+    assert len(ids) >= 3 and ids <= {f"small_plant|vg|default|{f}|{s}" for f in ("none", "unmapped") for s in (1, 2)}
+    assert drawn.reset(seed=1)[1]["episode"] == "small_plant|vg|default|none|2"
+    assert plantsim.VectorEnv(2, scenario=as_dict, threads=1).reset(seed=0)[1]["episode"][0] == "small_plant|vg|default|none|1"
     # VectorEnv takes the same option, one id (or None: the seed's episode) per environment.
     v = plantsim.VectorEnv(2, scenario=scenario, threads=1)
     _, info = v.reset(seed=[5, 1], options={"episode": ["small_plant|vg|default|unmapped|1", None]})
