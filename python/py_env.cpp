@@ -136,14 +136,47 @@ class ScenarioSource : public EpisodeSource {
   batch::EpisodeRunner runner_;
 };
 
-/// The default reward (docs/python.md): progress towards the staging pose by the estimate, a
-/// cost of time, the bumper pressed, and the outcome at the end.
+/// The default reward (docs/python.md): progress of the estimate along the way still to go (to
+/// the staging pose and on to the docked pose while travelling, to the docked pose while
+/// docking), a cost of time, the bumper pressed, and the outcome at the end. Settable per
+/// environment (Env's reward_weights).
 struct RewardWeights {
   double progress = 1.0, per_step = 0.01, bumper = 1.0, docked = 10.0, failed = 10.0;
 };
 
+/// `weights` (a dict of some of RewardWeights' names, or None) over the defaults; a name not
+/// among them or a value that is not a finite number refused naming it.
+RewardWeights reward_weights(const py::object& weights) {
+  RewardWeights w;
+  if (weights.is_none()) return w;
+  if (!py::isinstance<py::dict>(weights))
+    throw py::type_error("reward_weights must be a dict of weights by name, or None");
+  const std::vector<std::pair<const char*, double*>> named = {{"progress", &w.progress},
+                                                              {"per_step", &w.per_step},
+                                                              {"bumper", &w.bumper},
+                                                              {"docked", &w.docked},
+                                                              {"failed", &w.failed}};
+  for (const auto& kv : weights.cast<py::dict>()) {
+    const std::string key = py::str(kv.first).cast<std::string>();
+    const auto it =
+        std::find_if(named.begin(), named.end(), [&](const auto& n) { return key == n.first; });
+    if (it == named.end())
+      throw std::invalid_argument("reward_weights: unknown weight '" + key +
+                                  "' (progress, per_step, bumper, docked, failed)");
+    if (!py::isinstance<py::float_>(kv.second) && !py::isinstance<py::int_>(kv.second))
+      throw py::type_error("reward_weights['" + key + "'] must be a number");
+    const double v = kv.second.cast<double>();
+    if (!std::isfinite(v))
+      throw std::invalid_argument("reward_weights['" + key + "'] must be finite, got " +
+                                  py::repr(kv.second).cast<std::string>());
+    *it->second = v;
+  }
+  return w;
+}
+
 /// How an environment's episodes step and end (Env's docking, contact and max_steps).
 struct EnvRules {
+  RewardWeights weights;
   episode::DockingSteps docking = episode::DockingSteps::kBuiltinEachPeriod;
   bool contact_ends = true;    ///< the first contact terminates the episode
   std::int64_t max_steps = 0;  ///< truncate after this many steps (0: only timeout_s)
@@ -178,7 +211,7 @@ class EnvCore {
     if (!e->start() || e->view().perception == nullptr)
       throw std::invalid_argument(ended_at_start(*e));
     episode_ = std::move(e);
-    last_distance_ = distance_to_staging();
+    last_distance_ = still_to_go();
   }
 
   /// One period's command (checked by the caller: finite): runs to the next period the outside
@@ -187,15 +220,16 @@ class EnvCore {
     if (!episode_ || done())
       throw std::invalid_argument("the episode has ended: call reset() first");
     episode_->step(command);
-    const double d = distance_to_staging();
-    reward_ = weights_.progress * (last_distance_ - d) - weights_.per_step;
+    const double d = still_to_go();
+    reward_ = rules_.weights.progress * (last_distance_ - d) - rules_.weights.per_step;
     last_distance_ = d;
-    if (episode_->view().perception->bumper.pressed()) reward_ -= weights_.bumper;
+    if (episode_->view().perception->bumper.pressed()) reward_ -= rules_.weights.bumper;
     // The first contact ends the episode (unless asked to go on): a crash is terminal.
     if (rules_.contact_ends && !episode_->ended() && episode_->result().collisions > 0)
       contact_ended_ = true;
     if (terminated())
-      reward_ += !contact_ended_ && episode_->result().docked ? weights_.docked : -weights_.failed;
+      reward_ += !contact_ended_ && episode_->result().docked ? rules_.weights.docked
+                                                              : -rules_.weights.failed;
     if (!episode_->ended() && !contact_ended_ && rules_.max_steps > 0 &&
         episode_->steps() >= rules_.max_steps)
       truncated_by_limit_ = true;
@@ -248,12 +282,19 @@ class EnvCore {
   void clear() { episode_.reset(); }
   const EpisodeSource& source() const { return *source_; }
   const std::string& id() const { return id_; }
-  RewardWeights weights_;
 
  private:
-  double distance_to_staging() const {
+  /// The way still to go from the estimate: to the staging pose and on to the docked pose while
+  /// travelling, to the docked pose from the handover on, so that progress is positive all
+  /// along a correct approach (towards the staging pose alone, docking read as going away).
+  double still_to_go() const {
     const episode::OutsideView& v = episode_->view();
-    return geom::distance(v.perception->pose.position(), v.staging.position());
+    const geom::Vec2 at = v.perception->pose.position();
+    const geom::Vec2 docked{drawn_.plant->charger.x, drawn_.plant->charger.y};
+    if (v.phase == controller::DockPhase::kTravel)
+      return geom::distance(at, v.staging.position()) +
+             geom::distance(v.staging.position(), docked);
+    return geom::distance(at, docked);
   }
   std::shared_ptr<EpisodeSource> source_;
   EnvRules rules_;
@@ -420,8 +461,9 @@ std::shared_ptr<EpisodeSource> source_of(const py::object& world, const py::obje
 
 /// Env's docking, contact and max_steps arguments, checked.
 EnvRules env_rules(const std::string& docking, const std::string& contact,
-                   const py::object& max_steps) {
+                   const py::object& max_steps, const py::object& weights) {
   EnvRules rules;
+  rules.weights = reward_weights(weights);
   if (docking == "agent")
     rules.docking = episode::DockingSteps::kOutside;
   else if (docking == "plantsim")
@@ -514,9 +556,9 @@ struct PyEnv {
   PyEnv(const py::object& world, const py::object& scenario, const py::object& config,
         const std::string& planner, const py::object& start, const std::string& docking,
         const std::string& contact, const std::string& action, const py::object& reward,
-        const py::object& max_steps)
+        const py::object& max_steps, const py::object& weights)
       : core(source_of(world, scenario, config, planner, start),
-             env_rules(docking, contact, max_steps)),
+             env_rules(docking, contact, max_steps, weights)),
         action_kind(action_argument(action)),
         reward_fn(reward) {
     if (!reward.is_none() && !PyCallable_Check(reward.ptr()))
@@ -583,10 +625,10 @@ struct PyVectorEnv {
   PyVectorEnv(const py::object& n_arg, const py::object& world, const py::object& scenario,
               const py::object& config, const std::string& planner, const py::object& start,
               const std::string& docking, const std::string& contact, const std::string& action,
-              const py::object& max_steps, const py::object& threads)
+              const py::object& max_steps, const py::object& threads, const py::object& weights)
       : action_kind(action_argument(action)), pool(pool_threads(n_arg, threads)) {
     const auto n = static_cast<int>(whole_from(n_arg, "n", 1, 4096));
-    const EnvRules rules = env_rules(docking, contact, max_steps);
+    const EnvRules rules = env_rules(docking, contact, max_steps, weights);
     const std::shared_ptr<EpisodeSource> source =
         source_of(world, scenario, config, planner, start);
     for (int i = 0; i < n; ++i) envs.push_back(std::make_unique<EnvCore>(source, rules));
@@ -828,20 +870,20 @@ void bind_env(py::module_& m) {
   py::class_<PyEnv>(m, "_Env")
       .def(py::init<const py::object&, const py::object&, const py::object&, const std::string&,
                     const py::object&, const std::string&, const std::string&, const std::string&,
-                    const py::object&, const py::object&>(),
+                    const py::object&, const py::object&, const py::object&>(),
            py::arg("world"), py::arg("scenario"), py::arg("config"), py::arg("planner"),
            py::arg("start"), py::arg("docking"), py::arg("contact"), py::arg("action"),
-           py::arg("reward"), py::arg("max_steps"))
+           py::arg("reward"), py::arg("max_steps"), py::arg("reward_weights"))
       .def("reset", &PyEnv::reset, py::arg("seed"), py::arg("options"))
       .def("step", &PyEnv::step, py::arg("action"))
       .def_property_readonly("limits", [](const PyEnv& e) { return limits_of(e.core.source()); });
   py::class_<PyVectorEnv>(m, "_VectorEnv")
       .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&,
                     const std::string&, const py::object&, const std::string&, const std::string&,
-                    const std::string&, const py::object&, const py::object&>(),
+                    const std::string&, const py::object&, const py::object&, const py::object&>(),
            py::arg("n"), py::arg("world"), py::arg("scenario"), py::arg("config"),
            py::arg("planner"), py::arg("start"), py::arg("docking"), py::arg("contact"),
-           py::arg("action"), py::arg("max_steps"), py::arg("threads"))
+           py::arg("action"), py::arg("max_steps"), py::arg("threads"), py::arg("reward_weights"))
       .def("reset", &PyVectorEnv::reset, py::arg("seed"), py::arg("options"))
       .def_property_readonly(
           "limits", [](const PyVectorEnv& e) { return limits_of(e.envs.front()->source()); })

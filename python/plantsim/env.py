@@ -218,6 +218,8 @@ class Env:
     "collision") or "continue" (the episode goes on; success still needs none).
     action: "twist" ((v m/s, omega rad/s), the default) or "wheels" ((left, right) m/s).
     reward: None for the default (docs/python.md), or f(obs, info) -> float.
+    reward_weights: the default reward's weights by name over their defaults (progress 1,
+    per_step 0.01, bumper 1, docked 10, failed 10).
     max_steps: truncate after this many steps (0: only the config's timeout_s truncates).
     finite: False (the default: NaN marks a lidar dropout, a scan not yet taken, an unseen
     charger) or True (finite values with masks: "scan_valid", "scan_seen", and "charger_seen"
@@ -230,13 +232,13 @@ class Env:
 
     def __init__(self, world=None, *, scenario=None, config=None, planner="vg", start="random",
                  docking="plantsim", contact="terminate", action="twist", reward=None, max_steps=0,
-                 finite=False):
+                 finite=False, reward_weights=None):
         self._finite_range = None  # the lidar's maximum when finite (set below, before any step)
         if finite and reward is not None:  # the reward sees the observation the agent sees
             given = reward
             reward = lambda obs, info: given(_finite(obs, self._finite_range), info)
         self._env = _with_scenario(scenario, lambda s: _Env(world, s, config, planner, start, docking, contact,
-                                                             action, reward, max_steps))
+                                                             action, reward, max_steps, reward_weights))
         if finite:
             self._finite_range = float(self._env.limits[3])
         self.action_space, self.observation_space = _spaces(self._env.limits, action, finite=finite)
@@ -306,13 +308,14 @@ class VectorEnv:
 
     def __init__(self, n, world=None, *, scenario=None, config=None, planner="vg", start="random",
                  docking="plantsim", contact="terminate", action="twist", max_steps=0, threads=0,
-                 finite=False, reward=None):
+                 finite=False, reward=None, reward_weights=None):
         if reward is not None and not callable(reward):
             raise TypeError("reward must be callable: f(obs, info) -> one number per environment, or None")
         self._reward = reward
         self.num_envs = n
         self._env = _with_scenario(scenario, lambda s: _VectorEnv(n, world, s, config, planner, start, docking,
-                                                                   contact, action, max_steps, threads))  # checks n first
+                                                                   contact, action, max_steps, threads,
+                                                                   reward_weights))  # checks n first
         self._autoresetting = np.zeros(n, dtype=bool)
         self._finite_range = float(self._env.limits[3]) if finite else None
         self.single_action_space, self.single_observation_space = _spaces(self._env.limits, action, finite=finite)

@@ -41,10 +41,32 @@ def test_the_gymnasium_contract_and_plantsims_own_episode(source):
     assert run.status == "docked"
     assert last["time"] == pytest.approx(run.summary["time_s"], abs=0.05)
     assert PHASE(last) == "docked"  # the end's own observation, not the last steered one
-    # The default reward: progress of the estimate towards the staging pose, 0.01 a step, +10 for
-    # docking (nothing pressed the bumper).
-    distance = lambda o: np.linalg.norm(o["pose"][:2] - o["staging"][:2])
-    assert sum(rewards) == pytest.approx(distance(obs) - distance(last) - 0.01 * steps + 10, abs=1e-6)
+    # The default reward: progress of the estimate along the way still to go (to the staging pose
+    # and on to the docked pose while travelling, to the docked pose while docking), 0.01 a
+    # step, +10 for docking (nothing pressed the bumper).
+    docked = plantsim.load_world(source / WORLD).charger[:2]
+    def to_go(o):
+        if PHASE(o) == "travel":
+            return np.linalg.norm(o["pose"][:2] - o["staging"][:2]) + np.linalg.norm(o["staging"][:2] - docked)
+        return np.linalg.norm(o["pose"][:2] - docked)
+    assert sum(rewards) == pytest.approx(to_go(obs) - to_go(last) - 0.01 * steps + 10, abs=1e-6)
+    # plantsim's own approach earns progress all along, docking included (towards the staging
+    # pose alone, its docking read as going away: -5.03 over it).
+    env.reset(seed=3)
+    while True:
+        o, reward, terminated, truncated, info = env.step(info["builtin"])
+        if PHASE(o) != "travel" and not terminated:
+            assert reward > -0.011 - 1e-3, (o["time"], reward)  # at most the time's cost and noise
+        if terminated or truncated:
+            break
+    # The weights are settable; an unknown one or a non-number refused naming it.
+    scaled = plantsim.Env(source / WORLD, reward_weights={"per_step": 0.0, "docked": 100})
+    _, scaled_rewards, *_ = follow_plantsim(scaled, 3)[:2]
+    assert sum(scaled_rewards) == pytest.approx(to_go(obs) - to_go(last) + 100, abs=1e-6)
+    with pytest.raises(plantsim.InputError, match="unknown weight 'dock'"):
+        plantsim.Env(source / WORLD, reward_weights={"dock": 1})
+    with pytest.raises(TypeError, match="docked"):
+        plantsim.Env(source / WORLD, reward_weights={"docked": "x"})
     with pytest.raises(plantsim.InputError, match="reset"):
         env.step((0.0, 0.0))
 
