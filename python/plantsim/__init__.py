@@ -34,9 +34,11 @@ from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, compo
                         nav2_import, plan, planners, run)
 from ._plantsim import _batch, _tune
 from .env import Env, VectorEnv, _absolute_worlds
+from .registry import make, make_vec, register
 
 __all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "components",
-           "load_plugin", "load_world", "nav2_import", "plan", "planners", "run", "tune"]
+           "load_plugin", "load_world", "make", "make_vec", "nav2_import", "plan", "planners", "register", "run",
+           "tune"]
 
 
 def _number(text):

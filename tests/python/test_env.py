@@ -369,3 +369,26 @@ def test_finite_observations_carry_masks_where_nan_marked_none(source):
     v = plantsim.VectorEnv(2, source / WORLD, config=config, finite=True, threads=1)
     obs, _ = v.reset(seed=4)
     assert v.observation_space.contains(obs) and obs["scan_valid"].shape == (2, 360)
+
+
+def test_environments_by_id_as_gymnasium_registers_them(source):
+    env = plantsim.make("plantsim/Dock-v0")
+    assert env.spec.id == "plantsim/Dock-v0" and env.spec.entry_point == "plantsim.env:Env"
+    obs, info = env.reset(seed=3)
+    assert info["episode"] == "small_plant|3" and env.observation_space.contains(obs)
+    finite = plantsim.make("plantsim/DockFinite-v0", max_steps=5)
+    assert "scan_valid" in finite.observation_space.keys() and finite.spec.kwargs["max_steps"] == 5
+    finite.reset(seed=1)
+    for _ in range(5):
+        *_, truncated, info = finite.step((0.0, 0.0))
+    assert truncated and info["truncated_by"] == "max_steps"
+    v = plantsim.make_vec("plantsim/Dock-v0", 2, threads=1)
+    assert v.num_envs == 2 and v.spec.id == "plantsim/Dock-v0"
+    plants = plantsim.make("plantsim/DockPlants-v0")
+    assert plants.reset(seed=0)[1]["episode"].count("|") == 4  # a scenario's episode id
+    plantsim.register("mine/Dock-v1", kwargs={"world": str(source / WORLD), "docking": "agent"}, max_episode_steps=7)
+    assert plantsim.make("mine/Dock-v1").spec.kwargs["max_steps"] == 7
+    with pytest.raises(KeyError, match="plantsim/Dock-v0"):
+        plantsim.make("plantsim/Dok-v0")
+    with pytest.raises(ValueError, match="Name-vN"):
+        plantsim.register("nameless")
