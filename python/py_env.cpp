@@ -28,6 +28,7 @@
 #include "python/py_bindings.h"
 #include "python/py_interrupt.h"
 #include "python/py_world.h"
+#include "render/plant_frame.h"
 #include "util/worker_pool.h"
 #include "worlds/world_fingerprint.h"
 #include "worlds/world_loader.h"
@@ -607,6 +608,55 @@ struct PyEnv {
     return a.as_dict(true);
   }
 
+  /// The plant now as an RGB array (height, width, 3): the robot where it is, the path it drove,
+  /// plantsim's plan and the newest scan placed at the estimate (render_mode "rgb_array").
+  py::array_t<std::uint8_t> frame(const py::object& width, const py::object& height) {
+    const auto w = static_cast<int>(whole_from(width, "width", 64, 4096));
+    const auto h = static_cast<int>(whole_from(height, "height", 64, 4096));
+    const CallGuard::Held held = guard.enter("Env");
+    background.settle();
+    if (!core.has_episode())
+      throw std::invalid_argument("no episode to render: call reset() first");
+    const SteppedEpisode& e = core.episode();
+    const episode::EpisodeResult& r = e.result();
+    const robot::Perception& p = *e.view().perception;
+    render::PlantInstant at;
+    at.t_s = e.time_s();
+    at.robot = r.trajectory.empty() ? e.plant().start : r.trajectory.back().truth;
+    at.phase = std::string(controller::to_string(e.view().phase));
+    at.trajectory = &r.trajectory;
+    at.driven = r.trajectory.size();
+    at.plan = e.view().plan;
+    robot::ScanView scan;
+    if (p.scan) {  // the newest reading placed at the estimate, as the robot would place it
+      scan.pose = p.pose;
+      const geom::Pose2 sensor = geom::compose(p.pose, p.scan->mount);
+      for (std::size_t i = 0; i < p.scan->ranges.size(); ++i)
+        if (p.scan->valid(i))
+          scan.explained.push_back(
+              geom::compose(sensor, {p.scan->ranges[i] * std::cos(p.scan->angle(i)),
+                                     p.scan->ranges[i] * std::sin(p.scan->angle(i)), 0})
+                  .position());
+      at.scan = &scan;
+    }
+    at.layer = p.layer;
+    at.tracked = p.obstacles;
+    render::Image image;
+    {
+      py::gil_scoped_release release;
+      image = render::plant_frame(e.plant(), at, w, h);
+    }
+    py::array_t<std::uint8_t> rgb(
+        {static_cast<py::ssize_t>(h), static_cast<py::ssize_t>(w), py::ssize_t{3}});
+    auto out = rgb.mutable_unchecked<3>();
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const render::Rgb c = image.at(col, row);
+        out(row, col, 0) = c.r, out(row, col, 1) = c.g, out(row, col, 2) = c.b;
+      }
+    return rgb;
+  }
+
   static std::size_t beams_of(const EnvCore& c) {
     return static_cast<std::size_t>(std::max(0, c.episode().config().lidar.beam_count));
   }
@@ -875,6 +925,7 @@ void bind_env(py::module_& m) {
            py::arg("start"), py::arg("docking"), py::arg("contact"), py::arg("action"),
            py::arg("reward"), py::arg("max_steps"), py::arg("reward_weights"))
       .def("reset", &PyEnv::reset, py::arg("seed"), py::arg("options"))
+      .def("frame", &PyEnv::frame, py::arg("width"), py::arg("height"))
       .def("step", &PyEnv::step, py::arg("action"))
       .def_property_readonly("limits", [](const PyEnv& e) { return limits_of(e.core.source()); });
   py::class_<PyVectorEnv>(m, "_VectorEnv")

@@ -221,18 +221,22 @@ class Env:
     reward_weights: the default reward's weights by name over their defaults (progress 1,
     per_step 0.01, bumper 1, docked 10, failed 10).
     max_steps: truncate after this many steps (0: only the config's timeout_s truncates).
+    render_mode: None or "rgb_array" (render() returns the plant now as an RGB array of
+    render_size (width, height) pixels).
     finite: False (the default: NaN marks a lidar dropout, a scan not yet taken, an unseen
     charger) or True (finite values with masks: "scan_valid", "scan_seen", and "charger_seen"
     as always; the spaces then refuse NaN, as Gymnasium's do).
     """
 
-    metadata = {"render_modes": []}
-    render_mode = None
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 15}
     spec = None
 
     def __init__(self, world=None, *, scenario=None, config=None, planner="vg", start="random",
                  docking="plantsim", contact="terminate", action="twist", reward=None, max_steps=0,
-                 finite=False, reward_weights=None):
+                 finite=False, reward_weights=None, render_mode=None, render_size=(960, 600)):
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode must be None or \"rgb_array\", got {render_mode!r}")
+        self.render_mode, self._render_size = render_mode, tuple(render_size)
         self._finite_range = None  # the lidar's maximum when finite (set below, before any step)
         if finite and reward is not None:  # the reward sees the observation the agent sees
             given = reward
@@ -270,7 +274,13 @@ class Env:
         return self._observed(obs), reward, terminated, truncated, info
 
     def render(self):
-        return None
+        """With render_mode="rgb_array": the plant now as a (height, width, 3) uint8 array (the
+        robot where it is, the path it drove by speed, plantsim's plan, the newest scan placed at
+        the estimate, a legend and the clock), drawn as plantsim's figures are; else None."""
+        if self.render_mode != "rgb_array":
+            return None
+        width, height = self._render_size
+        return self._env.frame(width, height)
 
     def close(self):
         pass

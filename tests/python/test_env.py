@@ -392,3 +392,20 @@ def test_environments_by_id_as_gymnasium_registers_them(source):
         plantsim.make("plantsim/Dok-v0")
     with pytest.raises(ValueError, match="Name-vN"):
         plantsim.register("nameless")
+
+
+def test_rgb_array_frames_show_the_plant_the_robot_and_its_plan(source):
+    env = plantsim.Env(source / WORLD, render_mode="rgb_array", render_size=(480, 300))
+    assert env.metadata["render_modes"] == ["rgb_array"] and plantsim.Env(source / WORLD).render() is None
+    obs, info = env.reset(seed=3)
+    first = env.render()
+    assert first.shape == (300, 480, 3) and first.dtype == np.uint8
+    for _ in range(200):
+        obs, _, terminated, truncated, info = env.step(info["builtin"])
+    later = env.render()
+    # The plan's colour (Okabe-Ito vermillion) is drawn, and the robot has moved: frames differ.
+    vermillion = np.all(np.abs(later.astype(int) - [213, 94, 0]) <= 12, axis=2)
+    assert vermillion.sum() > 50
+    assert (np.abs(later.astype(int) - first.astype(int)).sum(axis=2) > 60).sum() > 100
+    with pytest.raises(ValueError, match="render_mode"):
+        plantsim.Env(source / WORLD, render_mode="human")
