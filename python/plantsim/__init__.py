@@ -35,8 +35,9 @@ from ._plantsim import (PHASES, InputError, Observation, Plan, Run, World, compo
 from ._plantsim import _batch, _tune
 from .env import Env, VectorEnv, _absolute_worlds
 from .registry import make, make_vec, register
+from .async_env import AsyncVectorEnv
 
-__all__ = ["PHASES", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "components",
+__all__ = ["PHASES", "AsyncVectorEnv", "Env", "InputError", "Observation", "Plan", "Run", "VectorEnv", "World", "batch", "components",
            "load_plugin", "load_world", "make", "make_vec", "nav2_import", "plan", "planners", "register", "run",
            "tune"]
 

@@ -409,3 +409,29 @@ def test_rgb_array_frames_show_the_plant_the_robot_and_its_plan(source):
     assert (np.abs(later.astype(int) - first.astype(int)).sum(axis=2) > 60).sum() > 100
     with pytest.raises(ValueError, match="render_mode"):
         plantsim.Env(source / WORLD, render_mode="human")
+
+
+def one_and_a_half(obs, info):  # a reward the workers import by name (a lambda does not pickle)
+    return 1.5
+
+
+def test_async_vector_env_runs_each_env_in_its_own_process_as_vector_env_does(source):
+    world = plantsim.load_world(source / WORLD)  # a World pickles to the workers
+    n = 2
+    with plantsim.AsyncVectorEnv(n, world=world, max_steps=3, reward=one_and_a_half) as envs:
+        obs, info = envs.reset(seed=10)
+        assert obs["scan"].shape == (n, 360) and list(info["episode"]) == ["small_plant|10", "small_plant|11"]
+        assert envs.observation_space.contains(obs)
+        for _ in range(3):
+            obs, rewards, terminated, truncated, info = envs.step(np.zeros((n, 2)))
+        assert truncated.all() and list(rewards) == [1.5, 1.5] and info["_status"].all()
+        assert list(info["truncated_by"]) == ["max_steps"] * n
+        # Next-step autoreset, each environment continuing its own stream as an Env does.
+        obs, rewards, terminated, truncated, info = envs.step(np.zeros((n, 2)))
+        assert list(rewards) == [0.0, 0.0] and not truncated.any()
+        single = plantsim.Env(source / WORLD)
+        single.reset(seed=11)
+        o, single_info = single.reset()
+        assert info["episode"][1] == single_info["episode"] and np.array_equal(o["pose"], obs["pose"][1])
+    with pytest.raises(plantsim.InputError, match="environment 0: .*planner"):
+        plantsim.AsyncVectorEnv(1, world=str(source / WORLD), planner="nope")
