@@ -40,8 +40,9 @@ def test_inspect(source):
 def test_learn_to_dock_plots(source, tmp_path):
     png = tmp_path / "learn.png"
     out = run_example(source, "learn_to_dock.py", "--iterations", "2", "--envs", "2", "--max-steps", "300",
-                      "--out", str(png))
+                      "--held-out-starts", "1", "--held-out-max-steps", "200", "--out", str(png))
     assert "iteration  2: tuning docked" in out and "held-out seeds: docked" in out
+    assert "held-out generated plants (six styles, 6 starts): docked" in out
     pytest.importorskip("matplotlib")
     import matplotlib.image as mpimg
     assert mpimg.imread(png).shape[1] > 800
