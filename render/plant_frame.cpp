@@ -30,8 +30,10 @@ Image plant_frame(const worlds::World& world, const PlantInstant& at, int width_
     if (explained) legend.push_back({palette::kScan, "last scan", Swatch::kDot});
     if (unexplained) legend.push_back({palette::kScanOffMap, "scan off map", Swatch::kDot});
   }
-  if (draw_layer(c, at.layer)) legend.push_back({palette::kLayer, "sensed layer", Swatch::kOutline});
-  if (draw_tracked(c, at.tracked)) legend.push_back({palette::kTracked, "tracked", Swatch::kOutline});
+  if (draw_layer(c, at.layer))
+    legend.push_back({palette::kLayer, "sensed layer", Swatch::kOutline});
+  if (draw_tracked(c, at.tracked))
+    legend.push_back({palette::kTracked, "tracked", Swatch::kOutline});
   draw_start(c, world);
   draw_charger(c, world);
   draw_mapped_charger(c, world);
