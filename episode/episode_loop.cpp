@@ -235,7 +235,8 @@ class EpisodeRun::Loop {
       return true;
     }
     const controller::Twist twist =
-        governor_.limit(decision_.twist, perception_->slipping, period_s);  // actuate
+        governor_.limit(decision_.twist, perception_->slipping, period_s,
+                        perception_->free_ahead_m);  // actuate
     drive_.command(controller::to_wheels(twist, plant_.robot.wheel_base_m), period_s);
     return false;
   }
