@@ -83,6 +83,10 @@ const util::ParamRows<TractionParams>& traction_param_rows() {
       PLANTSIM_PARAM("traction", creep_radps, "creep_radps", 0.0, 10.0),
       PLANTSIM_PARAM("traction", full_grip_accel_mps2, "full_grip_accel_mps2", 0.0, kMaxParameter),
       PLANTSIM_PARAM("traction", enabled, "enabled", 0, 1),
+      PLANTSIM_PARAM("traction", stop_within_sight, "stop_within_sight", 0, 1),
+      PLANTSIM_PARAM_ABOVE("traction", stop_decel_mps2, "stop_decel_mps2", 0.0, 100.0),
+      PLANTSIM_PARAM("traction", stop_margin_m, "stop_margin_m", 0.0, 10.0),
+      PLANTSIM_PARAM("traction", stop_reaction_s, "stop_reaction_s", 0.0, 10.0),
   };
   return rows;
 }

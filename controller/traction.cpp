@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "controller/stopping_bound.h"
+
 namespace plantsim::controller {
 namespace {
 
@@ -16,8 +18,27 @@ double ramp(double from, double to, double rise) {
 
 }  // namespace
 
-Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s) {
-  if (!p_.enabled) return last_ = wanted;
+double TractionGovernor::stopping_bound_mps(double free_ahead_m) const {
+  if (!p_.stop_within_sight) return std::numeric_limits<double>::infinity();
+  // A creep always: the docking approach must still touch the charger it sees ahead.
+  return std::max(p_.creep_mps, stopping_speed_mps(free_ahead_m, grip_decel_mps2(),
+                                                   p_.stop_reaction_s, p_.stop_margin_m));
+}
+
+Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s,
+                              double free_ahead_m) {
+  Twist out = grip_limited(wanted, slipping, dt_s);
+  const double bound = stopping_bound_mps(free_ahead_m);
+  if (out.v_mps > bound) {
+    // Slower along the same arc: the turn rate shrinks with the speed (the curvature stays).
+    out.omega_radps *= bound / out.v_mps;
+    out.v_mps = bound;
+  }
+  return last_ = out;
+}
+
+Twist TractionGovernor::grip_limited(const Twist& wanted, bool slipping, double dt_s) {
+  if (!p_.enabled) return wanted;
   since_slip_s_ += dt_s;
   if (slipping && since_slip_s_ >= p_.slip_hold_s) {
     scale_ = std::max(p_.min_scale, scale_ * p_.slip_scale_factor);
@@ -31,7 +52,7 @@ Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s) {
     Twist out = wanted;
     if (p_.full_grip_accel_mps2 > 0 && wanted.v_mps > 0 && last_.v_mps >= 0)
       out.v_mps = ramp(last_.v_mps, wanted.v_mps, p_.full_grip_accel_mps2 * dt_s);
-    return last_ = out;
+    return out;
   }
   // Speed and turn rate scaled together (the path's curvature stays), never below a creep:
   // a docking approach must still arrive.
@@ -44,7 +65,6 @@ Twist TractionGovernor::limit(const Twist& wanted, bool slipping, double dt_s) {
   out.v_mps = ramp(last_.v_mps, capped.v_mps, scale_ * p_.max_accel_mps2 * dt_s);
   out.omega_radps =
       ramp(last_.omega_radps, capped.omega_radps, scale_ * p_.max_angular_accel_radps2 * dt_s);
-  last_ = out;
   return out;
 }
 

@@ -5,8 +5,13 @@
 // because the first spin on an unknown floor is the one nothing sees; each slip scales the speed
 // down and limits how fast the commanded twist may grow (acceleration, turn-in-place) to the scaled
 // limits; they recover slowly while no slip is seen. Braking is never limited: stopping
-// for an obstacle always gets the motors' full deceleration. Pure: no physics, no truth.
+// for an obstacle always gets the motors' full deceleration. Last, forward speed is bounded by
+// what the robot can stop from within the free range its lidar reports ahead, at the braking
+// deceleration its learnt grip allows (stop_decel_mps2 times the slip scale; stopping_bound.h).
+// Pure: no physics, no truth.
 #pragma once
+
+#include <limits>
 
 #include "controller/diff_drive.h"
 
@@ -26,18 +31,32 @@ struct TractionParams {
   /// yield, keeps the motors' limit. The robot cannot know the floor's grip before its wheels
   /// spin, and a spin while driving straight along a lone wall is seen by nothing it has.
   double full_grip_accel_mps2 = 0.3;
+  /// Forward speed at most what stops within the free range ahead (docs/config.md, "Stopping
+  /// within sight"): v t + v^2 / (2 a) <= free - margin, a = stop_decel_mps2 x the slip scale.
+  bool stop_within_sight = true;
+  double stop_decel_mps2 = 0.5;   ///< braking counted on at full grip (a floor not yet learnt)
+  double stop_margin_m = 1.0;     ///< kept between the stopped footprint and what it saw
+  double stop_reaction_s = 0.15;  ///< driven at speed before braking takes hold (scan, period)
 };
 
 class TractionGovernor {
  public:
   explicit TractionGovernor(TractionParams p) : p_(p) {}
-  /// The twist to send the motors this control period, given the wanted one and whether
-  /// perception saw the wheels slip since the last period.
-  Twist limit(const Twist& wanted, bool slipping, double dt_s);
+  /// The twist to send the motors this control period, given the wanted one, whether
+  /// perception saw the wheels slip since the last period and the free range ahead of the
+  /// footprint (m; +inf: nothing seen to stop for).
+  Twist limit(const Twist& wanted, bool slipping, double dt_s,
+              double free_ahead_m = std::numeric_limits<double>::infinity());
   double scale() const { return scale_; }  ///< 1: full speed and acceleration
-  int slips() const { return slips_; }     ///< slip events met
+  /// The braking deceleration the learnt grip allows (m/s^2): stop_decel_mps2 x scale().
+  double grip_decel_mps2() const { return p_.stop_decel_mps2 * scale_; }
+  /// The forward speed bound for `free_ahead_m` at the learnt grip (never below creep_mps).
+  double stopping_bound_mps(double free_ahead_m) const;
+  int slips() const { return slips_; }  ///< slip events met
 
  private:
+  /// The slip-scaled limits alone (the stopping bound applies after).
+  Twist grip_limited(const Twist& wanted, bool slipping, double dt_s);
   TractionParams p_;
   Twist last_;
   double scale_ = 1.0;

@@ -301,6 +301,12 @@ util::ParamValues component_values(const EpisodeConfig& c,
   return out;
 }
 
+double number_value(const EpisodeConfig& c, const std::string& path) {
+  for (const Field& f : table())
+    if (f.path() == path) return f.get(c);
+  throw std::invalid_argument("'" + path + "': not a parameter");
+}
+
 std::vector<NumberParameter> number_parameters() {
   const EpisodeConfig defaults;
   std::vector<NumberParameter> out;

@@ -41,6 +41,10 @@ NumberParameter number_parameter(const std::string& path);
 util::ParamValues component_values(const EpisodeConfig& config,
                                    const std::vector<util::ParamSpec>& specs);
 
+/// The value of the number parameter `path` in `config` (throws std::invalid_argument for an
+/// unknown one).
+double number_value(const EpisodeConfig& config, const std::string& path);
+
 std::string default_config_json();
 /// `config` as JSON, every key (read back by parse_episode_config as the same config).
 std::string config_json(const EpisodeConfig& config);

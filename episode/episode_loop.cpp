@@ -66,9 +66,13 @@ controller::TractionParams traction_params(const EpisodeConfig& c, const worlds:
   controller::TractionParams t = c.traction;
   t.max_accel_mps2 = std::min(t.max_accel_mps2, plant.robot.max_accel_mps2);
   // Seed 001's field drives as its document's robot does, at the motors' limit: its pursuit
-  // stops and sets off in every local minimum, and a soft start there is not the method.
-  if (robot::travel_modes().at(c.travel).can(robot::travel_capability::kStartsAtMotorLimit))
+  // stops and sets off in every local minimum, and a soft start there is not the method; nor is
+  // slowing for what the lidar sees ahead (issue 88's stopping bound), which in a pursuit is the
+  // target it must reach while it moves.
+  if (robot::travel_modes().at(c.travel).can(robot::travel_capability::kStartsAtMotorLimit)) {
     t.full_grip_accel_mps2 = 0.0;
+    t.stop_within_sight = false;
+  }
   return t;
 }
 
@@ -235,7 +239,8 @@ class EpisodeRun::Loop {
       return true;
     }
     const controller::Twist twist =
-        governor_.limit(decision_.twist, perception_->slipping, period_s);  // actuate
+        governor_.limit(decision_.twist, perception_->slipping, period_s,
+                        perception_->free_ahead_m);  // actuate
     drive_.command(controller::to_wheels(twist, plant_.robot.wheel_base_m), period_s);
     return false;
   }

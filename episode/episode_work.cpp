@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "episode/robot_limits.h"
+
 namespace plantsim::episode {
 namespace {
 
@@ -20,6 +22,7 @@ std::string shortest(double v) {
 }  // namespace
 
 void check_episode_work(const worlds::World& plant, const EpisodeConfig& config) {
+  check_robot_limits(plant, config);
   const double steps = std::ceil(config.timeout_s / config.step.dt_s);
   const double movers = static_cast<double>(plant.moving.size()) + (plant.target ? 1.0 : 0.0);
   const double work = steps * movers;

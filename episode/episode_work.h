@@ -13,7 +13,8 @@ namespace plantsim::episode {
 inline constexpr double kMaxEpisodeMoverSteps = 5e8;
 
 /// Throws std::invalid_argument naming the world and the config's timeout when `plant`'s movers
-/// over `config`'s steps exceed kMaxEpisodeMoverSteps, saying how long it would take.
+/// over `config`'s steps exceed kMaxEpisodeMoverSteps, saying how long it would take; and when a
+/// travel speed exceeds the robot's motors (robot_limits.h).
 void check_episode_work(const worlds::World& plant, const EpisodeConfig& config);
 
 }  // namespace plantsim::episode

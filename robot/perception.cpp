@@ -9,6 +9,7 @@
 #include "geometry/predicates.h"
 #include "robot/ekf_estimator.h"
 #include "robot/estimator_registry.h"
+#include "robot/free_range.h"
 
 namespace plantsim::robot {
 namespace {
@@ -188,9 +189,18 @@ void Perceiver::take_readings(const SensorReadings& r) {
   now_.charging = r.charging;
   now_.bumper = r.bumper;
   if (r.scan) now_.scan = r.scan;
+  see_free_range(r);
   odom_history_.emplace_back(r.t_s, r.odom_pose);
   while (!odom_history_.empty() && odom_history_.front().first < r.t_s - 2.0)
     odom_history_.pop_front();
+}
+
+void Perceiver::see_free_range(const SensorReadings& r) {
+  if (r.scan) free_at_scan_m_ = free_range_ahead_m(*r.scan, map_.robot);
+  if (!now_.scan) return;
+  // The scan is as old as the lidar's period at most; the robot has driven on since.
+  const double driven = std::fabs(r.odom_speed_mps) * std::max(0.0, r.t_s - now_.scan->t_s);
+  now_.free_ahead_m = std::max(0.0, free_at_scan_m_ - driven);
 }
 
 const Perception& Perceiver::update_oracle(const SensorReadings& r) {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -99,6 +100,10 @@ struct Perception {
       scan;  ///< the newest scan as read (sensor frame), for outside controllers
   std::array<double, 9> pose_covariance{};  ///< the estimate's (x, y, yaw) covariance, row-major;
                                             ///< zeros in oracle mode
+  /// How far the footprint can drive straight ahead before it meets a lidar return (m): the
+  /// newest scan's free range (free_range.h) less what odometry drove since it was taken;
+  /// +inf with no scan yet (nothing seen to stop for). The traction governor's stopping bound.
+  double free_ahead_m = std::numeric_limits<double>::infinity();
 };
 
 /// The last scan as perception interpreted it, for figures.
@@ -122,6 +127,8 @@ class Perceiver {
  private:
   /// The stages of update, in order.
   void take_readings(const SensorReadings& r);
+  /// The free range ahead (free_range.h) of the newest scan, carried to now.
+  void see_free_range(const SensorReadings& r);
   const Perception& update_oracle(const SensorReadings& r);
   /// The estimator's prediction and correction, and what they say: displaced, slipping.
   void localize(const SensorReadings& r);
@@ -154,6 +161,7 @@ class Perceiver {
   std::optional<geom::Vec2> last_target_;
   bool touched_before_ = false;  // the bumper at the last reading
   double odom_yaw_before_ = 0;   // for the encoders' turn rate
+  double free_at_scan_m_ = std::numeric_limits<double>::infinity();  // the newest scan's
   std::deque<std::pair<double, double>>
       turn_gap_;  // (dt, encoders' turn minus the gyro's) over the slip window
   double turn_gap_sum_ = 0, turn_gap_time_ = 0;

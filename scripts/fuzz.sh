@@ -37,7 +37,7 @@ done
 for f in data/scenarios/tune_*.yaml data/scenarios/*_tuning.yaml; do
   sed -e '/^  - .*\.json$/d' -e 's/^worlds:.*$/worlds: [w.json]/' "$f" > "$corpus/tune_spec/$(basename "$f")"
 done
-printf 'worlds: [w.json]\nplanners: [vg]\nseeds: 2\ntune:\n  validation_seeds: [5, 6]\n  budget: 12\n  method: bobyqa\n  objective: success_then_time\n  min_wilson: 0.5\n  parameters: {tracking.max_linear_speed_mps: [0.3, 1.5], docking.approach_speed_mps: [0.04, 0.2]}\n' \
+printf 'worlds: [w.json]\nplanners: [vg]\nseeds: 2\ntune:\n  validation_seeds: [5, 6]\n  budget: 12\n  method: bobyqa\n  objective: success_then_time\n  min_wilson: 0.5\n  parameters: {tracking.max_linear_speed_mps: [0.3, 0.8], docking.approach_speed_mps: [0.04, 0.2]}\n' \
   > "$corpus/tune_spec/small.yaml"
 for f in tests/fixtures/nav2/*.yaml; do cp "$f" "$corpus/nav2_params/"; done
 # Names and words people and attackers use (issue 51's cases among them).

@@ -129,7 +129,7 @@ seeds: 2
 tune:
   validation_seeds: [11, 12]
   budget: 2
-  parameters: {tracking.max_linear_speed_mps: [0.3, 1.2]}
+  parameters: {tracking.max_linear_speed_mps: [0.3, 0.8]}
 YAML
 cd /
 tune_job=$(sbatch --parsable --chdir="$work/run" --array=0-2 --cpus-per-task=1 --output="$work/tune_task_%a.log" \

@@ -202,7 +202,7 @@ std::vector<nlohmann::json> evaluations(const fs::path& jsonl) {
 
 const char* kHeldOutSeeds =
     "  validation_seeds: [11, 12]\n"
-    "  parameters: {tracking.max_linear_speed_mps: [0.3, 1.2], docking.approach_speed_mps: [0.04, "
+    "  parameters: {tracking.max_linear_speed_mps: [0.3, 0.8], docking.approach_speed_mps: [0.04, "
     "0.16]}\n";
 
 TEST_F(Cli, TuneEndToEndHeldOutResumableAndItsBestRuns) {
@@ -338,6 +338,9 @@ TEST_F(Cli, TuneRefusesBadInputBeforeAnyEpisode) {
       {"tune t.yaml --param tracking.max_linear_speed_mps=1:0.5", "LOW < HIGH"},
       {"tune t.yaml --param tracking.max_linear_speed_mps", "KEY=LOW:HIGH"},
       {"tune t.yaml --param tracking.max_linear_speed_mps=a:1", "'a' is not a number"},
+      // Issue 88: a bound above the motors' rim speed (0.8 m/s on these worlds) is refused.
+      {"tune t.yaml --param tracking.max_linear_speed_mps=0.3:1.2",
+       "tracking.max_linear_speed_mps tuned up to 1.2 m/s is above the robot's motor limit of 0.8"},
       {"tune t.yaml --budget 0", "--budget"},
       {"tune t.yaml --objective fastest", "unknown objective 'fastest'"},
       {"tune t.yaml --method lbfgs", "unknown method 'lbfgs'"},
@@ -360,6 +363,36 @@ TEST_F(Cli, TuneRefusesBadInputBeforeAnyEpisode) {
   EXPECT_NE(o.err.find("not a tuning's output"), std::string::npos) << o.err;
   EXPECT_EQ(read(dir_ / "mine/notes.txt"), "keep");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "mine"), fs::directory_iterator()), 1);
+}
+
+// Issue 88: a travel speed the robot's motors cannot drive (its world's robot.max_speed_mps, 0.8
+// m/s here) is refused with exit 2 before any episode, in a run's configuration, a batch's
+// controllers and a sweep's values alike; the motor limit itself is accepted.
+TEST_F(Cli, SpeedsAboveTheMotorLimitAreRefusedEverywhere) {
+  write("fast.json", R"({"tracking": {"max_linear_speed_mps": 1.2}})");
+  write("field.json",
+        R"({"travel": "potential-field", "potential_field": {"max_speed_mps": 0.9}})");
+  const std::string world = "worlds: [" + kSmall + "]\nseeds: 1\n";
+  write("controllers.yaml",
+        world + "controllers:\n  fast: {tracking: {max_linear_speed_mps: 1.5}}\n");
+  const std::string sweep = "sweep:\n  parameter: tracking.max_linear_speed_mps\n";
+  write("sweep.yaml", world + sweep + "  values: [0.6, 1.0]\n");
+  write("ok.yaml", world + sweep + "  values: [0.6, 0.8]\n");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"run " + kSmall + " --config fast.json",
+       "tracking.max_linear_speed_mps = 1.2 m/s is above the robot's motor limit of 0.8 m/s"},
+      {"run " + kSmall + " --config field.json", "potential_field.max_speed_mps = 0.9 m/s"},
+      {"batch controllers.yaml --check", "tracking.max_linear_speed_mps = 1.5 m/s"},
+      {"batch sweep.yaml --check", "tracking.max_linear_speed_mps = 1 m/s"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Outcome o = run(args + " --out out", 60);
+    EXPECT_EQ(o.exit_code, 2) << args << "\n" << o.err;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << args << "\n" << o.err;
+    EXPECT_NE(o.err.find("robot.max_speed_mps"), std::string::npos) << args << "\n" << o.err;
+  }
+  const Outcome ok = run("batch ok.yaml --check --out ok", 60);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "episode/robot_limits.h"
 #include "tune/held_out.h"
 #include "tune/part_runner.h"
 #include "tune/search.h"
@@ -213,10 +214,20 @@ const std::vector<std::string>& tune_output_names() {
   return names;
 }
 
+/// No parameter tuned past what the robot's motors drive, on any world of the part.
+void check_tuning_bounds(const TuneSpec& spec, const PartRunner& part) {
+  for (const episode::EpisodeConfig& c : batch::episode_configs(part.spec()))
+    for (const worlds::World& w : part.worlds().worlds)
+      for (const TunedParameter& p : spec.parameters)
+        episode::check_tuning_bound(w, c, p.info.path, p.hi);
+}
+
 TuneOutcome run_tune(const TuneSpec& spec, const TuneOptions& o) {
   const auto began = std::chrono::steady_clock::now();
   const PartRunner tuning(spec.tuning, spec.threads), validation(spec.validation, spec.threads);
   check_held_out(tuning.spec(), tuning.worlds(), validation.spec(), validation.worlds());
+  check_tuning_bounds(spec, tuning);
+  check_tuning_bounds(spec, validation);
   TuneOutcome out;
   out.tuning_episodes = static_cast<std::int64_t>(tuning.ids().size());
   out.validation_episodes = static_cast<std::int64_t>(validation.ids().size());

@@ -84,7 +84,7 @@ TunedParameter parameter_from_option(const std::string& text) {
   if (eq == std::string::npos || colon == std::string::npos || colon < eq)
     throw std::invalid_argument(where +
                                 ": expected KEY=LOW:HIGH, e.g. "
-                                "tracking.max_linear_speed_mps=0.3:1.5");
+                                "tracking.max_linear_speed_mps=0.3:0.8");
   return checked_parameter(text.substr(0, eq),
                            parse_bound(text.substr(eq + 1, colon - eq - 1), where),
                            parse_bound(text.substr(colon + 1), where), where);
@@ -190,7 +190,7 @@ std::string method_name(Method m) {
 }
 
 std::vector<std::string> default_parameters() {
-  return {"tracking.max_linear_speed_mps=0.3:1.5",
+  return {"tracking.max_linear_speed_mps=0.3:0.8",
           "tracking.lookahead_time_s=0.5:2.5",
           "tracking.lookahead_max_m=0.5:2",
           "tracking.regulated_min_radius_m=0.3:2",

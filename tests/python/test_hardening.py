@@ -247,7 +247,7 @@ def test_a_comma_locale_changes_no_file(source, tmp_path):
                            figures=False)
         print(json.dumps([row["success_rate"] for row in b["rows"]]))
         plantsim.tune({str(_tune_scenario(source, tmp_path))!r}, {str(tmp_path / 't')!r},
-                      params=["tracking.max_linear_speed_mps=0.3:1.2"], budget=1, figures=False)
+                      params=["tracking.max_linear_speed_mps=0.3:0.8"], budget=1, figures=False)
         print("done")
     """, timeout=600)
     assert out.returncode == 0, out.stderr[-3000:]

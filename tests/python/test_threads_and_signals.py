@@ -21,7 +21,8 @@ MODULE_PATH = os.path.dirname(os.path.dirname(os.path.abspath(plantsim.__file__)
 def slow_world(source, tmp_path):
     """The corridor with a robot at a crawl: an episode of hours simulated, seconds of work (with a
     lidar of 1440 beams: at 360 the episode's 2,080 s took 1.1 s of work, and the interrupt at 1 s
-    could find it writing its outputs)."""
+    could find it writing its outputs). Its runs set tracking.max_linear_speed_mps to the crawl:
+    a travel speed above the motors' limit is refused (issue 88)."""
     world = json.loads((source / "data/worlds/examples/corridor_crossing.json").read_text())
     world["robot"]["max_speed_mps"] = 0.01
     world["robot"]["max_accel_mps2"] = 0.01
@@ -119,7 +120,8 @@ def test_ctrl_c_stops_run_promptly_with_the_partial_episode(source, tmp_path, st
         threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
         started = time.monotonic()
         try:
-            plantsim.run({str(world)!r}, config={{"timeout_s": 80000, "lidar": {{"beam_count": 1440}}}},
+            plantsim.run({str(world)!r}, config={{"timeout_s": 80000, "lidar": {{"beam_count": 1440}},
+                                                       "tracking": {{"max_linear_speed_mps": 0.01}}}},
                          controller={'lambda o: None' if steered else 'None'}, out={str(tmp_path / 'r')!r})
             print("finished")
         except KeyboardInterrupt as e:

@@ -24,7 +24,7 @@ def scenario(tmp_path, source, seeds=2):
 
 def test_tune_matches_the_command_and_returns_its_summary(source, binary, tmp_path):
     path = scenario(tmp_path, source)
-    params = ["tracking.max_linear_speed_mps=0.3:1.2"]
+    params = ["tracking.max_linear_speed_mps=0.3:0.8"]
     summary = plantsim.tune(path, tmp_path / "py", params=params, budget=2, figures=False)
     assert summary["kind"] == "tune"
     assert [s["setting"] for s in summary["settings"]] == ["default", "nlopt", "random"]
