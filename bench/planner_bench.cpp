@@ -10,6 +10,7 @@
 
 #include "bench/bench_report.h"
 #include "bench/large_map_bench.h"
+#include "bench/sample_median.h"
 #include "geometry/clearance.h"
 #include "planner/planner.h"
 #include "planner/registry.h"
@@ -27,11 +28,6 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 struct FirstQuery {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench/bench_report.h"
+#include "bench/sample_median.h"
 #include "controller/local_controller_registry.h"
 #include "examples/plugin/stanley_controller.h"
 #include "planner/registry.h"
@@ -66,11 +67,6 @@ double ns_per_call(const controller::LocalControllerEntry& entry,
   const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
   checksum = sum;
   return ns / static_cast<double>(drive.size());
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace

@@ -14,6 +14,10 @@
 #include "util/c_number.h"
 
 namespace plantsim::render {
+/// The tallest chart drawn: figures hold 16,384 pixels a side; a chart that would need more
+/// shows what fits and says so.
+constexpr double kMaxChartHeight_px = 12000;
+
 namespace {
 
 constexpr Rgb kBand{185, 212, 238};  // a light tint of the success line's blue
@@ -250,9 +254,20 @@ Image draw_time_by_world(const std::vector<EpisodeOutcome>& episodes, int width_
     if (std::find(worlds.begin(), worlds.end(), e.world) == worlds.end()) worlds.push_back(e.world);
   const double row_h = 34, panel_gap = 74, top = 100;
   const double panel_h = row_h * static_cast<double>(std::max<std::size_t>(methods.size(), 1));
-  const int height = static_cast<int>(top + worlds.size() * (panel_h + panel_gap) + 10);
+  // As many worlds as a figure can hold (16,384 pixels a side; 12,000 kept): 30 worlds of 14
+  // configurations stopped a batch's report after its episodes. The tables list every world.
+  const std::size_t all_worlds = worlds.size();
+  const auto fit = static_cast<std::size_t>(
+      std::max(1.0, std::floor((kMaxChartHeight_px - top - 10) / (panel_h + panel_gap))));
+  if (worlds.size() > fit) worlds.resize(fit);
+  const int height = static_cast<int>(
+      std::min(kMaxChartHeight_px, top + worlds.size() * (panel_h + panel_gap) + 10));
   Figure fig(width_px, height);
-  fig.text("Time to dock, world by world", 20, 28, 18, palette::kAxis, Anchor::kLeft, true);
+  fig.text(worlds.size() < all_worlds
+               ? "Time to dock, world by world: the first " + std::to_string(worlds.size()) +
+                     " of " + std::to_string(all_worlds) + " worlds (the tables list every one)"
+               : std::string("Time to dock, world by world"),
+           20, 28, 18, palette::kAxis, Anchor::kLeft, true);
   fig.text(
       "docked episodes, one dot each (spread vertically to be seen); each world on its own "
       "scale, as worlds differ in size",

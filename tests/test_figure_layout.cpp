@@ -537,3 +537,35 @@ TEST(FigureLayout, NavigationChartDrawsEveryMethodsClearanceJerkAndComputeTime) 
 
 }  // namespace
 }  // namespace plantsim::render
+
+namespace plantsim::render {
+namespace {
+
+// A batch of 30 worlds and 14 configurations (7 controllers x 2 faults) needed a world-by-world
+// chart 16,500 pixels tall: the figure refused it and the batch's report stopped after its
+// episodes. It now draws the worlds that fit and says how many of how many.
+TEST(FigureLayout, TimeByWorldOfManyWorldsAndConfigurationsFitsAFigureAndSaysSo) {
+  std::vector<EpisodeOutcome> episodes;
+  for (int w = 0; w < 30; ++w)
+    for (int m = 0; m < 14; ++m) {
+      EpisodeOutcome e;
+      e.world = "world_" + std::to_string(w);
+      e.method = "vg / controller-" + std::to_string(m % 7) + " / fault-" + std::to_string(m / 7);
+      e.docked = true;
+      e.time_s = 50 + w + m;
+      episodes.push_back(e);
+    }
+  FigureLayout layout;
+  const Image img = draw_time_by_world(episodes, 1400, &layout);
+  EXPECT_LE(img.height, 16384);
+  test::expect_sound_layout(img, layout, "time by world, 30 worlds");
+  const auto said =
+      std::find_if(layout.texts.begin(), layout.texts.end(), [](const std::string& t) {
+        return t.find("of 30 worlds (the tables list every one)") != std::string::npos;
+      });
+  EXPECT_NE(said, layout.texts.end());
+  EXPECT_NE(std::find(layout.texts.begin(), layout.texts.end(), "world_0"), layout.texts.end());
+}
+
+}  // namespace
+}  // namespace plantsim::render
