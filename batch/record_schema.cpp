@@ -81,6 +81,7 @@ constexpr Field kFields[] = {
     {"relocalizations", Kind::kCount, false},
     {"worst_moving_error_m", Kind::kNumber, false},
     {"driven_off_estimate_s", Kind::kNumber, false},
+    {"driven_off_estimate_m", Kind::kNumber, false},
     {"ok_while_off_s", Kind::kNumber, false},
     {"localization_not_ok_s", Kind::kNumber, false},
     {"unmapped_seen", Kind::kCount, false},
