@@ -246,9 +246,10 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   for (const auto& d : dirs) command += " " + d;
   write_batch_report(
       lines, out_dir, "plantsim merge",
-      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
+      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : "") +
+          (options.accept_mixed_builds ? " --accept-mixed-builds" : ""),
       scenario.worlds.empty() ? nullptr : &scenario.worlds, scenario.planners,
-      options.gate.applied_to(outcome.gate), true, made_by);
+      options.gate.applied_to(outcome.gate), true, made_by, {}, "", options.accept_mixed_builds);
   return outcome;
 }
 

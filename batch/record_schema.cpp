@@ -37,6 +37,7 @@ constexpr Field kFields[] = {
     {"scenario", Kind::kText, true},
     {"scenario_episodes", Kind::kCount, false},
     {"scenario_file", Kind::kText, false},
+    {"build", Kind::kText, false},  // records before issue 89 have none
     {"key", Kind::kText, false},
     {"world", Kind::kText, true},
     {"planner", Kind::kText, true},

@@ -143,8 +143,18 @@ std::string column_table(const std::string& heading, const std::vector<std::stri
 
 }  // namespace
 
-std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdicts,
-                                const Gate& gate) {
+std::string mixed_builds_banner_html(const std::vector<BuildCount>& builds, bool accepted) {
+  if (builds.size() < 2) return "";
+  return std::string("<div class=\"banner ") + (accepted ? "none" : "mixed") +
+         "\"><b>MIXED BUILDS</b>: " + render::html_escape(builds_text(builds)) +
+         (accepted ? " (accepted with --accept-mixed-builds)."
+                   : ". The verdict below is not one build's: re-run with --fresh, or accept the "
+                     "mix with --accept-mixed-builds.") +
+         "</div>\n";
+}
+
+std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdicts, const Gate& gate,
+                                bool unaccepted_mix) {
   int gated = 0;
   std::vector<const ConfigurationVerdict*> failing, unsure;
   for (const ConfigurationVerdict& v : verdicts) {
@@ -167,8 +177,11 @@ std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdict
     return "<div class=\"banner none\"><b>NO GATE</b>: the scenario sets no min_success; the "
            "table below judges nothing.</div>\n";
   if (failing.empty()) {
-    h = "<div class=\"banner pass\"><b>PASS</b>: all " + std::to_string(gated) +
-        " gated configurations meet " + render::html_escape(requirement) + ".";
+    // A pass over a mix of builds is no build's pass: not green until the mix is accepted.
+    h = std::string("<div class=\"banner ") + (unaccepted_mix ? "mixed" : "pass") +
+        "\"><b>PASS</b>" + (unaccepted_mix ? " (mixed builds)" : "") + ": all " +
+        std::to_string(gated) + " gated configurations meet " + render::html_escape(requirement) +
+        ".";
     if (!unsure.empty())
       h += " " + std::to_string(unsure.size()) +
            " of them pass by their success rate while their 95 % lower bound is below the "

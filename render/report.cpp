@@ -66,7 +66,8 @@ std::string report_html(const Report& r) {
       "4px}"
       "figure{margin:16px 0}tr.fail td{color:#c03c00;font-weight:bold}"
       ".banner{padding:8px 12px;margin:12px 0;background:#f6f6f6;border-left:8px solid #999}"
-      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}</style></head><body>\n";
+      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}"
+      ".banner.mixed{border-color:#e69f00}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";
   if (!r.made_by.empty())
     h += "<p class=\"made-by\" style=\"color:#555\">" + html_escape(r.made_by) + "</p>\n";

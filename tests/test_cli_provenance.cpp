@@ -1,0 +1,109 @@
+// Which build ran what (issue 89): every record names its build; a report over the records of
+// more than one build says so, per build, and its banner is not green unless the mix is
+// accepted (--accept-mixed-builds on batch, merge and summarize); a resume that runs nothing
+// leaves the outputs of the run that made the records as they were (no new date, commit or
+// "in 0.0 s", no second point on the dashboard's trend).
+#include <fstream>
+#include <sstream>
+
+#include "cli_fixture.h"
+
+namespace plantsim {
+namespace {
+
+const std::string kCorridor = test::source_file("data/worlds/examples/corridor_crossing.json");
+
+std::vector<nlohmann::json> records(const std::string& text) {
+  std::vector<nlohmann::json> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+TEST_F(Cli, EveryRecordNamesItsBuildAndAResumeThatRanNothingRewritesNothing) {
+  const std::string version = run("--version").out;  // "plantsim 0.15.0 (commit 1234...)"
+  const std::string commit = version.substr(version.find("(commit ") + 8, 12);
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 2\ngate: {min_success: 0.5}\n");
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures --junit j.xml", 300).exit_code, 0);
+  for (const nlohmann::json& r : records(read(dir_ / "b/episodes.jsonl")))
+    EXPECT_NE(r["build"].get<std::string>().find(commit), std::string::npos) << r["build"];
+  const std::string summary = read(dir_ / "b/summary.json");
+  const std::string report = read(dir_ / "b/report.html");
+  const std::string junit = read(dir_ / "j.xml");
+  const auto stamp = fs::last_write_time(dir_ / "b/summary.json");
+  ::sleep(1);  // a rewrite would carry another date to the second
+  const Outcome o = run("batch s.yaml --out b --quiet --no-figures --junit j.xml", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(o.out.find("nothing to run"), std::string::npos) << o.out;
+  EXPECT_EQ(read(dir_ / "b/summary.json"), summary);
+  EXPECT_EQ(read(dir_ / "b/report.html"), report);
+  EXPECT_EQ(read(dir_ / "j.xml"), junit);
+  EXPECT_EQ(fs::last_write_time(dir_ / "b/summary.json"), stamp);
+  // The dashboard's trend: one run, however often it is summarized after a no-op resume.
+  ASSERT_EQ(run("summarize b --out s.md --html index.html", 60).exit_code, 0);
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures", 300).exit_code, 0);
+  ASSERT_EQ(run("summarize b --out s.md --html index.html", 60).exit_code, 0);
+  EXPECT_EQ(records(read(dir_ / "history.jsonl")).size(), 1u) << read(dir_ / "history.jsonl");
+  // A resume asked for another gate judges anew: the outputs are written again.
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures --min-success 0.4", 300).exit_code, 0);
+  EXPECT_NE(read(dir_ / "b/summary.json"), summary);
+}
+
+TEST_F(Cli, RecordsOfTwoBuildsAreCountedPerBuildAndTheirPassIsNotGreenUnlessAccepted) {
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 2\ngate: {min_success: 0.5}\n");
+  ASSERT_EQ(run("batch s.yaml --out b --quiet --no-figures", 300).exit_code, 0);
+  // An older build ran the first episode; the second is left to this one (a resume).
+  std::vector<nlohmann::json> r = records(read(dir_ / "b/episodes.jsonl"));
+  ASSERT_EQ(r.size(), 2u);
+  r[0]["build"] = "0.14.0 000000000000";
+  std::ofstream(dir_ / "b/episodes.jsonl") << r[0].dump() << "\n";
+  Outcome o = run("batch s.yaml --out b --quiet --no-figures", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.err;  // the gate passed; the banner says what it is worth
+  nlohmann::json summary = nlohmann::json::parse(read(dir_ / "b/summary.json"));
+  ASSERT_EQ(summary["builds"].size(), 2u) << summary["builds"];
+  EXPECT_EQ(summary["builds"][0]["episodes"], 1);
+  EXPECT_EQ(summary["mixed_builds"]["builds"], 2);
+  EXPECT_EQ(summary["mixed_builds"]["accepted"], false);
+  std::string html = read(dir_ / "b/report.html");
+  EXPECT_NE(html.find("<b>MIXED BUILDS</b>: records of 2 builds: "), std::string::npos);
+  EXPECT_NE(html.find("0.14.0 000000000000 (1 episode)"), std::string::npos);
+  EXPECT_EQ(html.find("banner pass"), std::string::npos);  // not green
+  EXPECT_NE(html.find("<div class=\"banner mixed\"><b>PASS</b> (mixed builds)"), std::string::npos);
+  // The dashboard: no PASS over it, unless summarize accepts the mix.
+  o = run("summarize b --out s.md --html index.html", 60);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_EQ(read(dir_ / "s.md").rfind("# plantsim results: MIXED BUILDS", 0), 0u)
+      << read(dir_ / "s.md").substr(0, 300);
+  EXPECT_EQ(read(dir_ / "index.html").find("banner pass"), std::string::npos);
+  o = run("summarize b --out s.md --accept-mixed-builds", 60);
+  EXPECT_EQ(read(dir_ / "s.md").rfind("# plantsim results: PASS", 0), 0u);
+  // The batch accepts it: green again, and said so.
+  o = run("batch s.yaml --out b --quiet --no-figures --accept-mixed-builds", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  summary = nlohmann::json::parse(read(dir_ / "b/summary.json"));
+  EXPECT_EQ(summary["mixed_builds"]["accepted"], true);
+  html = read(dir_ / "b/report.html");
+  EXPECT_NE(html.find("<div class=\"banner pass\"><b>PASS</b>"), std::string::npos);
+  EXPECT_NE(html.find("accepted with --accept-mixed-builds"), std::string::npos);
+}
+
+TEST_F(Cli, AMergeOfShardsRunByTwoBuildsSaysSo) {
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 2\ngate: {min_success: 0.5}\n");
+  ASSERT_EQ(run("batch s.yaml --out a --shard 0/2 --quiet --no-figures", 300).exit_code, 0);
+  ASSERT_EQ(run("batch s.yaml --out c --shard 1/2 --quiet --no-figures", 300).exit_code, 0);
+  std::vector<nlohmann::json> r = records(read(dir_ / "c/episodes.jsonl"));
+  ASSERT_EQ(r.size(), 1u);
+  r[0]["build"] = "0.14.0 000000000000";
+  std::ofstream(dir_ / "c/episodes.jsonl") << r[0].dump() << "\n";
+  Outcome o = run("merge a c --out m", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_EQ(read(dir_ / "m/report.html").find("banner pass"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(read(dir_ / "m/summary.json"))["mixed_builds"]["builds"], 2);
+  o = run("merge a c --out m2 --accept-mixed-builds", 300);
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_NE(read(dir_ / "m2/report.html").find("banner pass"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plantsim
