@@ -105,5 +105,32 @@ TEST_F(Cli, AMergeOfShardsRunByTwoBuildsSaysSo) {
   EXPECT_NE(read(dir_ / "m2/report.html").find("banner pass"), std::string::npos);
 }
 
+// fig5_vs_fig6 and every `plantsim compare`: comparison.json and its page name the build and date.
+TEST_F(Cli, AComparisonIsStampedWithItsBuildAndDate) {
+  const std::string version = run("--version").out;
+  const std::string commit = version.substr(version.find("(commit ") + 8, 12);
+  const Outcome o =
+      run("compare " + kCorridor + " --planners vg,vg-traditional --plan-only --out c", 120);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const nlohmann::json j = nlohmann::json::parse(read(dir_ / "c/comparison.json"));
+  EXPECT_EQ(j["made_by"]["commit"], commit);
+  EXPECT_EQ(j["made_by"]["date"].get<std::string>().size(), 20u);  // 2026-12-08T03:02:11Z
+  EXPECT_NE(read(dir_ / "c/report.html").find("Made by plantsim"), std::string::npos);
+}
+
+// Bench output: every JSON line names the build that measured it and when.
+TEST_F(Cli, EveryBenchLineNamesItsBuildAndDate) {
+  const std::string version = run("--version").out;
+  const std::string commit = version.substr(version.find("(commit ") + 8, 12);
+  const Outcome o = run("bench startup --quick", 120);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const std::vector<nlohmann::json> lines = records(o.out);
+  ASSERT_FALSE(lines.empty());
+  for (const nlohmann::json& j : lines) {
+    EXPECT_NE(j["build"].get<std::string>().find("(commit " + commit), std::string::npos) << j;
+    EXPECT_EQ(j["date"].get<std::string>().size(), 20u) << j;
+  }
+}
+
 }  // namespace
 }  // namespace plantsim
