@@ -2,6 +2,7 @@
 #include "batch/report_verdicts.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "util/csv.h"
 #include "util/fixed_text.h"
@@ -123,19 +124,42 @@ std::string failures_of(const std::vector<std::string>& header,
   return failures.empty() ? "-" : failures;
 }
 
-/// A table of `cols` of every summary row, under `heading`.
+/// Below this many episodes the nearest-rank 95th percentile is the worst value itself
+/// (rank ceil(0.95 n) = n for n < 20): a column of it repeats the worst's.
+constexpr long kPercentileEpisodes = 20;
+
+bool small_sample(const std::vector<std::string>& header, const std::vector<std::string>& cells) {
+  const auto episodes = std::find(header.begin(), header.end(), "episodes") - header.begin();
+  const std::string n = cell(cells, static_cast<int>(episodes));
+  return n.empty() || std::strtol(n.c_str(), nullptr, 10) < kPercentileEpisodes;
+}
+
+/// A table of `cols` of every summary row, under `heading`. The 95th percentile's column goes
+/// when every row is a small sample; a small sample's cell in it says it equals the worst.
 std::string column_table(const std::string& heading, const std::vector<std::string>& header,
                          const std::vector<std::vector<std::string>>& rows,
                          const std::vector<Column>& cols) {
+  bool all_small = true;
+  for (std::size_t r = 1; r < rows.size(); ++r)
+    all_small = all_small && small_sample(header, rows[r]);
+  std::vector<Column> shown;
+  for (const Column& c : cols)
+    if (!(all_small && std::string(c.key) == "p95_localization_error_mm")) shown.push_back(c);
   std::vector<std::string> titles;
-  const std::vector<int> picked = indices(header, cols, &titles);
+  const std::vector<int> picked = indices(header, shown, &titles);
   std::string h = "<h2>" + render::html_escape(heading) + "</h2>\n<table><tr>";
   for (const std::string& t : titles) h += "<th>" + render::html_escape(t) + "</th>";
   h += "</tr>\n";
   for (std::size_t r = 1; r < rows.size(); ++r) {
     h += "<tr>";
-    for (int i : picked)
-      h += "<td>" + render::html_escape(measured_cell(header, rows[r], i)) + "</td>";
+    for (int i : picked) {
+      const bool percentile = header[static_cast<std::size_t>(i)] == "p95_localization_error_mm";
+      h += "<td>" +
+           render::html_escape(percentile && small_sample(header, rows[r])
+                                   ? "= worst (under 20 episodes)"
+                                   : measured_cell(header, rows[r], i)) +
+           "</td>";
+    }
     h += "</tr>\n";
   }
   return h + "</table>\n";
