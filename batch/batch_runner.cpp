@@ -24,6 +24,7 @@
 #include "batch/episode_runner.h"
 #include "batch/episode_space.h"
 #include "batch/progress.h"
+#include "batch/record_paths.h"
 #include "batch/scenario_setup.h"
 #include "episode/episode_work.h"
 #include "plugins/plugin_loader.h"
@@ -268,7 +269,9 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
     return outcome;
   }
   if (!o.fresh) remove_batch_outputs(o.out_dir, true);
-  const RunContext run{spec, loaded, configs, scenario, o};
+  ScenarioIdentity recorded = scenario;  // the records name their scenario from their folder
+  recorded.file = scenario_path_for_records(scenario.file, o.out_dir);
+  const RunContext run{spec, loaded, configs, recorded, o};
   run_episodes(run, todo, open_for_append(jsonl), jsonl, outcome);
   util::MadeBy made_by;
   made_by.duration_s =

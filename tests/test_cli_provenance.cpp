@@ -105,6 +105,29 @@ TEST_F(Cli, AMergeOfShardsRunByTwoBuildsSaysSo) {
   EXPECT_NE(read(dir_ / "m2/report.html").find("banner pass"), std::string::npos);
 }
 
+// Records name their scenario relative to their folder: no machine's directory layout in them,
+// and a results tree moved with its scenario still finds it (a merge draws its plan figures).
+TEST_F(Cli, RecordsNameTheScenarioRelativeToTheirFolder) {
+  write("s.yaml", "worlds: [" + kCorridor + "]\nseeds: 2\n");
+  ASSERT_EQ(run("batch s.yaml --out out/a --shard 0/2 --quiet --no-figures", 300).exit_code, 0);
+  ASSERT_EQ(run("batch s.yaml --out out/c --shard 1/2 --quiet --no-figures", 300).exit_code, 0);
+  const std::string text = read(dir_ / "out/a/episodes.jsonl");
+  EXPECT_EQ(text.find(dir_.string()), std::string::npos) << text.substr(0, 300);
+  for (const nlohmann::json& r : records(text)) EXPECT_EQ(r["scenario_file"], "../../s.yaml");
+  // The tree moved elsewhere: the merge finds the scenario from the records' folders.
+  const fs::path moved = root_ / "moved";
+  fs::rename(dir_, moved);
+  fs::create_directories(dir_);
+  write("s.yaml", "worlds: []\n");  // the old place holds something else now
+  const Outcome o = run(
+      "merge " + (moved / "out/a").string() + " " + (moved / "out/c").string() + " --out m", 300);
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(fs::exists(dir_ / "m/plans_corridor_crossing.png")) << o.err;
+  for (const nlohmann::json& r : records(read(dir_ / "m/episodes.jsonl")))
+    EXPECT_EQ(fs::path(r["scenario_file"].get<std::string>()),
+              fs::path("../../moved/s.yaml"));  // from m: root/work/m -> root/moved/s.yaml
+}
+
 // fig5_vs_fig6 and every `plantsim compare`: comparison.json and its page name the build and date.
 TEST_F(Cli, AComparisonIsStampedWithItsBuildAndDate) {
   const std::string version = run("--version").out;
