@@ -43,7 +43,7 @@ std::string write_animation(const worlds::World& world, const episode::EpisodeRe
     }
     if (draw_moving(c, world, run.trajectory[i].t_s, boxes))
       legend.push_back({palette::kMoving, "moving"});
-    if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1))
+    if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, i + 1, run.carries))
       legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
     if (draw_plan(c, run.plan, palette::kPlan)) legend.push_back({palette::kPlan, "plan"});
     // What perception saw last before this instant.

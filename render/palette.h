@@ -77,6 +77,9 @@ inline constexpr Rgb kRetryMark{195, 165, 90};
 /// Where the episode failed (filled diamond): a blue violet, apart from the replan rings' blue
 /// under deuteranopia ({150, 0, 200} was 18 Delta E from it, 10 from the old layer).
 inline constexpr Rgb kFailureMark{120, 0, 255};
+/// A kidnap's carry (dashed, lifted ring to set-down square): orange, the colour of the recovery
+/// that follows it, on no other line of the run figure.
+inline constexpr Rgb kCarry = kOkabeOrange;
 inline constexpr Rgb kTolerance = kOkabeBluishGreen;  ///< the docking tolerance box (inset)
 inline constexpr Rgb kPhaseTravel{235, 240, 250};     ///< time-plot shading by phase
 inline constexpr Rgb kPhaseDocking{232, 246, 238};

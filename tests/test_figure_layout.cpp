@@ -26,6 +26,7 @@
 #include "render/run_figure.h"
 #include "render/scaling_chart.h"
 #include "test_paths.h"
+#include "util/fixed_text.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::render {
@@ -175,6 +176,40 @@ TEST(FigureLayout, EveryLegendColourStaysApartUnderTheThreeCommonColourVisionDef
             << "'" << a.label << "' and '" << b.label << "' under vision " << static_cast<int>(v);
     }
   EXPECT_GT(pairs, 100);
+}
+
+// Issue 89: a kidnap's carry was drawn as a solid driven segment with no marker, legend entry or
+// time. Now it is dashed in its own colour from a ring where the robot was lifted to a square
+// where it was set down, and the legend gives its time.
+TEST(FigureLayout, AKidnapsCarryIsDashedMarkedAndTimedInTheLegend) {
+  Case c = simulate(test::source_file("data/worlds/examples/parked_cart.json"));
+  ASSERT_GT(c.run.trajectory.size(), 10u);
+  const episode::TrajectorySample& lifted = c.run.trajectory[c.run.trajectory.size() / 3];
+  const geom::Pose2 from = lifted.truth;
+  const geom::Pose2 to{from.x + 3.0, from.y + 1.5, from.yaw};
+  c.run.carries.push_back({lifted.t_s, from, to});
+  FigureLayout layout;
+  PixelTransform t;
+  const Image img = draw_run_figure(c.world, c.run, {}, &t, &layout);
+  keep(img, "layout_kidnap");
+  test::expect_sound_layout(img, layout, "kidnap run figure");
+  const std::string label = "kidnap " + util::fixed(lifted.t_s, 1) + " s";
+  EXPECT_NE(std::find(layout.texts.begin(), layout.texts.end(), label), layout.texts.end())
+      << "the legend's text, time and all, drawn uncut";
+  const auto entry = std::find_if(layout.legend.begin(), layout.legend.end(),
+                                  [&](const LegendEntry& e) { return e.label == label; });
+  ASSERT_NE(entry, layout.legend.end()) << label;
+  EXPECT_EQ(entry->swatch, Swatch::kDashed);
+  EXPECT_EQ(entry->colour, palette::kCarry);
+  const Vec2 down = t.to_pixel(to.position());
+  EXPECT_EQ(img.at(static_cast<int>(down.x), static_cast<int>(down.y)), palette::kCarry);
+  int dashed = 0;  // the carry's line: about half of it in dashes
+  for (int k = 1; k < 20; ++k) {
+    const Vec2 p = t.to_pixel(from.position() + (k / 20.0) * (to.position() - from.position()));
+    dashed += img.at(static_cast<int>(p.x), static_cast<int>(p.y)) == palette::kCarry;
+  }
+  EXPECT_GE(dashed, 5);
+  EXPECT_LE(dashed, 15);
 }
 
 // A run that failed far from the charger gets a close-up of where it failed (6 m around the
