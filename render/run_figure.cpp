@@ -424,12 +424,17 @@ Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& 
            true);
   fig.text(result_line(run), 70, 44, 13, palette::kAxis);
   const std::vector<Figure::Band> bands = phase_bands(run.trajectory);
+  // The instants that explain a plot's jumps: each kidnap and the failure, on every plot.
+  std::vector<Figure::PlotOptions::Marker> markers;
+  for (const auto& k : run.carries) markers.push_back({k.t_s, palette::kCarry, "kidnap"});
+  if (run.failure) markers.push_back({run.failure->time_s, palette::kFailureMark, "failure"});
   // Each plot's title sits above it, its tick numbers below: 56 px between plots holds both.
   const double left = 80, right = width_px - 40.0, top = 84, bottom = height_px - 48.0, gap = 56;
   const double h = (bottom - top + gap) / 4.0;
   auto box = [&](int i) { return PixelBox{left, top + i * h, right, top + (i + 1) * h - gap}; };
   Figure::PlotOptions first;
   first.bands = bands;
+  first.markers = markers;
   first.legend = true;
   first.min_y_span = 10.0;
   first.note = "no travel";
@@ -437,6 +442,7 @@ Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& 
            "Cross-track error while travelling", "mm", first);
   Figure::PlotOptions plain;
   plain.bands = bands;
+  plain.markers = markers;
   plain.min_y_span = 0.1;
   fig.plot(box(1), {{t, speed, palette::kTrajectory, "speed"}}, "Speed", "m/s", plain);
   fig.plot(box(2), {{t, distance, palette::kTrajectory, "distance"}}, "Distance to the charger",

@@ -210,6 +210,22 @@ TEST(FigureLayout, AKidnapsCarryIsDashedMarkedAndTimedInTheLegend) {
   }
   EXPECT_GE(dashed, 5);
   EXPECT_LE(dashed, 15);
+  // The time plots mark it (and a failure) as a line across every plot, named in the legend.
+  c.run.failure = robot::Failure{robot::FailureReason::kLocalizationLost, lifted.t_s + 20.0,
+                                 c.run.trajectory.back().truth, "x"};
+  FigureLayout plots;
+  const Image timeplots = draw_time_plots(c.world, c.run, 1000, 900, &plots);
+  keep(timeplots, "layout_kidnap_timeplots");
+  test::expect_sound_layout(timeplots, plots, "kidnap time plots");
+  for (const char* name : {"kidnap", "failure"}) EXPECT_TRUE(test::has_legend(plots, name)) << name;
+  auto count = [&](Rgb colour) {
+    int n = 0;
+    for (int y = 0; y < timeplots.height; ++y)
+      for (int x = 0; x < timeplots.width; ++x) n += timeplots.at(x, y) == colour;
+    return n;
+  };
+  EXPECT_GT(count(palette::kCarry), 4 * 100);  // four plots, each well over 100 px high
+  EXPECT_GT(count(palette::kFailureMark), 4 * 100);
 }
 
 // A run that failed far from the charger gets a close-up of where it failed (6 m around the
