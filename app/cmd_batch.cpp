@@ -116,6 +116,17 @@ struct GateOptions {
   }
 };
 
+/// What a batch did, on stdout.
+void print_outcome(const batch::BatchOutcome& r, const std::string& out_dir) {
+  std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, "
+            << r.skipped << " already done; " << r.succeeded
+            << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
+            << " collisions -> " << out_dir << "\n";
+  if (r.outputs_kept)
+    std::cout << "batch: nothing to run; the folder's report, summary and JUnit stand as the "
+                 "run that made its records wrote them\n";
+}
+
 }  // namespace
 
 std::function<int()> add_batch_command(CLI::App& app) {
@@ -193,13 +204,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
                 << " episodes in this shard, scenario " << r.scenario_fingerprint << "\n";
       return kExitOk;
     }
-    std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, "
-              << r.skipped << " already done; " << r.succeeded
-              << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
-              << " collisions -> " << o.out_dir << "\n";
-    if (r.outputs_kept)
-      std::cout << "batch: nothing to run; the folder's report, summary and JUnit stand as the "
-                   "run that made its records wrote them\n";
+    print_outcome(r, o.out_dir);
     return opt->gate.judge(o.out_dir, r.gate, std::filesystem::path(opt->scenario).stem().string(),
                            "batch", opt->scenario, r.outputs_kept);
   };

@@ -195,6 +195,27 @@ void write_report(const RunContext& run, const std::string& scenario_path,
                      o.accept_mixed_builds);
 }
 
+/// Whether an output file of the folder is newer than its report (written last): one a killed
+/// run or a hand left there, which only a rewrite removes. The records, the episodes re-run alone
+/// and this run's own files (a --junit report in the folder) are no report's.
+bool stray_outputs(const RunOptions& o, std::filesystem::file_time_type report_written) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  auto newer = [&](const fs::path& p) { return fs::last_write_time(p, ec) > report_written; };
+  for (const fs::directory_entry& e : fs::directory_iterator(o.out_dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name == ".plantsim.lock" || name == "episodes.jsonl" || name == "episodes" ||
+        name == "report.html" || !is_batch_output_name(name) ||
+        std::find(o.own_files.begin(), o.own_files.end(), name) != o.own_files.end())
+      continue;
+    if (newer(e.path())) return true;
+    if (e.is_directory(ec) && !e.is_symlink(ec))
+      for (const fs::directory_entry& f : fs::recursive_directory_iterator(e.path(), ec))
+        if (newer(f.path())) return true;
+  }
+  return false;
+}
+
 /// The folder's report stands complete from its records, with the options asked now: every
 /// run removes the outputs before its episodes and writes them last, so a summary.json there
 /// was written over these very records (unless a run was killed after writing it, which leaves
@@ -206,6 +227,7 @@ bool outputs_current(const RunOptions& o) {
     const std::string path = o.out_dir + "/summary.json";
     if (!fs::is_regular_file(fs::symlink_status(path))) return false;
     const json j = json::parse(util::read_input_file(path, 64u << 20));
+    if (stray_outputs(o, fs::last_write_time(o.out_dir + "/report.html"))) return false;
     const bool figures = fs::exists(o.out_dir + "/chart_success.png");
     const bool mixed_accepted =
         j.contains("mixed_builds") && j["mixed_builds"].value("accepted", false);
