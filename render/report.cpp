@@ -60,7 +60,8 @@ std::string report_html(const Report& r) {
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
       html_escape(r.title) +
       "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
-      "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
+      "table{border-collapse:collapse;margin:12px 0;font-size:14px}td,th{border:1px solid #bbb;"
+      "padding:3px 6px;"
       "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
       "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px "
       "4px}"
