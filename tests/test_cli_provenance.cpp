@@ -2,7 +2,9 @@
 // more than one build says so, per build, and its banner is not green unless the mix is
 // accepted (--accept-mixed-builds on batch, merge and summarize); a resume that runs nothing
 // leaves the outputs of the run that made the records as they were (no new date, commit or
-// "in 0.0 s", no second point on the dashboard's trend).
+// "in 0.0 s", no second point on the dashboard's trend); records name their scenario relative to
+// their folder; comparisons and bench lines are stamped; and a real episode's run report under
+// the integrity rule's 1 m side.
 #include <fstream>
 #include <sstream>
 
@@ -126,6 +128,36 @@ TEST_F(Cli, RecordsNameTheScenarioRelativeToTheirFolder) {
   for (const nlohmann::json& r : records(read(dir_ / "m/episodes.jsonl")))
     EXPECT_EQ(fs::path(r["scenario_file"].get<std::string>()),
               fs::path("../../moved/s.yaml"));  // from m: root/work/m -> root/moved/s.yaml
+}
+
+// Issue 89, item 2, on a real episode: a tuning yard, very wet, every noise doubled, the robot
+// untold (test_localization.cpp's AnAmbiguousMatchRepeatedDoesNotBecomeCertainty): it said
+// `lost`, drove on 88 m, and charged. Its run report carries the failure banner naming the rule.
+TEST_F(Cli, ARunReportOfAnEpisodeThatDroveOnALostEstimateCarriesTheFailureBanner) {
+  write("s.yaml", "name: yard_alike\nworlds: [" +
+                      test::source_file("data/worlds/generated/styles/yard_s3.json") +
+                      "]\nplanners: [vg]\ncontrollers:\n  shortest: {coastal: {enabled: false}}\n"
+                      "faults:\n  very_wet_noise2x_untold:\n    drive: {tyre_friction: 0.05}\n"
+                      "    odometry: {wheel_speed_noise: 0.04, left_scale_error: 0.006, "
+                      "right_scale_error: -0.006}\n"
+                      "    lidar: {range_noise_m: 0.06, dropout_probability: 0.1}\n"
+                      "    imu: {yaw_rate_noise_radps: 0.012, bias_radps: 0.012}\n"
+                      "    detection: {position_noise_m: 0.01, yaw_noise_rad: 0.01, "
+                      "false_negative_probability: 0.6, outlier_probability: 0.06, "
+                      "latency_s: 0.4}\nseeds: [1]\n");
+  const Outcome o =
+      run("batch s.yaml --episode 'yard_s3|vg|shortest|very_wet_noise2x_untold|1' --out r", 300);
+  EXPECT_EQ(o.exit_code, 1) << o.err;  // not a success
+  EXPECT_NE(o.out.find("docked_off_estimate"), std::string::npos) << o.out;
+  const std::string html = read(dir_ / "r/report.html");
+  const std::size_t banner =
+      html.find("<div class=\"banner fail\"><b>FAILED</b>: localization_lost");
+  ASSERT_NE(banner, std::string::npos) << html.substr(0, 1500);
+  EXPECT_NE(html.find("in all on an estimate more than 0.25 m off", banner), std::string::npos);
+  EXPECT_NE(html.find("whatever its estimator reported", banner), std::string::npos);
+  const nlohmann::json summary = nlohmann::json::parse(read(dir_ / "r/summary.json"));
+  EXPECT_EQ(summary["status"], "docked_off_estimate");
+  EXPECT_GT(summary["driven_off_estimate_m"].get<double>(), 1.0);
 }
 
 // fig5_vs_fig6 and every `plantsim compare`: comparison.json and its page name the build and date.
