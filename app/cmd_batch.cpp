@@ -95,13 +95,14 @@ struct GateOptions {
     return o;
   }
 
-  /// `folder`'s records judged; junit.xml carries the stamp of its summary.json.
+  /// `folder`'s records judged; junit.xml carries the stamp of its summary.json. `keep_junit`:
+  /// the folder's outputs stand unchanged (a resume that ran nothing), so does a JUnit file there.
   int judge(const std::string& folder, const batch::Gate& scenario_gate, const std::string& suite,
-            const char* who, const std::string& scenario_path = "") const {
+            const char* who, const std::string& scenario_path = "", bool keep_junit = false) const {
     const std::vector<std::string> records = batch::read_episode_records(folder);
     const batch::Gate gate = as_override().applied_to(scenario_gate);
     const auto verdicts = batch::judge_configurations(records, gate);
-    if (!junit.empty())
+    if (!junit.empty() && !(keep_junit && std::filesystem::is_regular_file(junit)))
       util::write_file_atomically(
           junit, batch::junit_xml(suite, verdicts, gate.statistic, stamp_of(folder),
                                   {scenario_path, folder}));
@@ -115,6 +116,17 @@ struct GateOptions {
   }
 };
 
+/// What a batch did, on stdout.
+void print_outcome(const batch::BatchOutcome& r, const std::string& out_dir) {
+  std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, "
+            << r.skipped << " already done; " << r.succeeded
+            << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
+            << " collisions -> " << out_dir << "\n";
+  if (r.outputs_kept)
+    std::cout << "batch: nothing to run; the folder's report, summary and JUnit stand as the "
+                 "run that made its records wrote them\n";
+}
+
 }  // namespace
 
 std::function<int()> add_batch_command(CLI::App& app) {
@@ -125,6 +137,7 @@ std::function<int()> add_batch_command(CLI::App& app) {
     std::string scenario, out, shard = "0/1", episode;
     int threads = 0;
     bool quiet = false, no_figures = false, fresh = false, check = false;
+    bool accept_mixed_builds = false;
     GateOptions gate;
   };
   auto opt = std::make_shared<Options>();
@@ -142,6 +155,9 @@ std::function<int()> add_batch_command(CLI::App& app) {
   cmd->add_option("--episode", opt->episode,
                   "Run only this episode (its id in episodes.jsonl) and write its run folder "
                   "(figures, replay)");
+  cmd->add_flag("--accept-mixed-builds", opt->accept_mixed_builds,
+                "A resume whose records other builds ran: judge the mix (else its banner is not "
+                "green)");
   opt->gate.add_to(cmd);
   auto plugin_files = std::make_shared<std::vector<std::string>>();
   add_plugin_option(cmd, *plugin_files);
@@ -181,18 +197,16 @@ std::function<int()> add_batch_command(CLI::App& app) {
     o.fresh = opt->fresh;
     o.check_only = opt->check;
     o.gate = opt->gate.as_override();
+    o.accept_mixed_builds = opt->accept_mixed_builds;
     const batch::BatchOutcome r = batch::run_batch(opt->scenario, o);
     if (opt->check) {
       std::cout << "batch: " << opt->scenario << " is valid: " << r.episodes
                 << " episodes in this shard, scenario " << r.scenario_fingerprint << "\n";
       return kExitOk;
     }
-    std::cout << "batch: " << r.episodes << " episodes in this shard, " << r.ran << " run now, "
-              << r.skipped << " already done; " << r.succeeded
-              << " of those run now succeeded (docked, or caught in a pursuit), " << r.collisions
-              << " collisions -> " << o.out_dir << "\n";
+    print_outcome(r, o.out_dir);
     return opt->gate.judge(o.out_dir, r.gate, std::filesystem::path(opt->scenario).stem().string(),
-                           "batch", opt->scenario);
+                           "batch", opt->scenario, r.outputs_kept);
   };
 }
 
@@ -203,7 +217,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
-    bool allow_partial = false;
+    bool allow_partial = false, accept_mixed_builds = false;
     std::string scenario;
     GateOptions gate;
   };
@@ -217,6 +231,8 @@ std::function<int()> add_merge_command(CLI::App& app) {
                   "their scenario by content)");
   cmd->add_flag("--allow-partial", opt->allow_partial,
                 "Merge even when some of the scenario's episodes are missing");
+  cmd->add_flag("--accept-mixed-builds", opt->accept_mixed_builds,
+                "Shards that different builds ran: judge the mix (else its banner is not green)");
   opt->gate.add_to(cmd);
   return [opt]() {
     batch::MergeOptions m;
@@ -224,6 +240,7 @@ std::function<int()> add_merge_command(CLI::App& app) {
     m.allow_partial = opt->allow_partial;
     m.scenario = opt->scenario;
     m.gate = opt->gate.as_override();
+    m.accept_mixed_builds = opt->accept_mixed_builds;
     const batch::MergeOutcome r = batch::merge_batches(opt->dirs, opt->out, m);
     std::cout << "merge: " << r.episodes << " of " << r.expected << " episodes -> " << opt->out
               << "\n";

@@ -18,6 +18,7 @@
 #include "render/png_io.h"
 #include "render/report.h"
 #include "util/atomic_file.h"
+#include "util/made_by.h"
 #include "worlds/known_keys.h"
 #include "worlds/world_loader.h"
 
@@ -200,9 +201,12 @@ std::function<int()> add_compare_command(CLI::App& app) {
       report.more_tables.clear();  // plans alone drove nothing
     const std::string title = comparison_title(*opt, world.name);
     render::write_png(render::draw_comparison(world, panels, title), out_dir + "/comparison.png");
-    util::write_file_atomically(
-        out_dir + "/comparison.json",
-        comparison_json(world, title, command_line(cmd), panels).dump(2) + "\n");
+    // Stamped like every output: a comparison read later names the build that drew it.
+    const util::MadeBy made_by;
+    nlohmann::ordered_json data = comparison_json(world, title, command_line(cmd), panels);
+    data["made_by"] = made_by.json();
+    util::write_file_atomically(out_dir + "/comparison.json", data.dump(2) + "\n");
+    report.made_by = made_by.text();
     report.title = title;
     report.command = command_line(cmd);
     report.figures = {{"comparison.png", title}};

@@ -54,7 +54,9 @@ std::string setting_of(const std::string& command) {
 }
 
 /// The batch line's counts (throws nlohmann::json::exception on a field of another type).
-std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
+/// Records of more than one build (summary.json's "mixed_builds") not accepted, by the batch or
+/// by `accept_mixed`, give the verdict "mixed": no pass (docs/batch.md).
+std::string batch_counts(const nlohmann::json& j, std::string& verdict, bool accept_mixed) {
   verdict = j.value("verdict", "");
   std::string line = std::to_string(j.value("succeeded", 0LL)) + " of " +
                      std::to_string(j.value("episodes", 0LL)) + " episodes succeeded";
@@ -68,6 +70,13 @@ std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
   if (j.value("succeeded_lost", 0LL) > 0)  // integrity: a success is not a clean one when lost
     line +=
         "; " + std::to_string(j.value("succeeded_lost", 0LL)) + " succeeded with the estimate lost";
+  const nlohmann::json mixed = j.value("mixed_builds", nlohmann::json::object());
+  if (!mixed.empty()) {
+    const bool accepted = accept_mixed || mixed.value("accepted", false);
+    line += "; records of " + std::to_string(mixed.value("builds", 0LL)) + " builds" +
+            (accepted ? " (accepted)" : ", not accepted (--accept-mixed-builds)");
+    if (!accepted && verdict != "failed") verdict = "mixed";
+  }
   const nlohmann::json gate = j.value("gate", nlohmann::json::object());
   const long long gated = gate.value("gated_configurations", 0LL);
   if (gated > 0)
@@ -80,7 +89,7 @@ std::string batch_counts(const nlohmann::json& j, std::string& verdict) {
 }
 
 /// A batch folder in one line from its summary.json: episodes, failures by reason, the gate.
-std::string batch_line(const std::string& dir, std::string& verdict) {
+std::string batch_line(const std::string& dir, std::string& verdict, bool accept_mixed) {
   nlohmann::json j;
   try {
     const std::string path = dir + "/summary.json";
@@ -89,7 +98,7 @@ std::string batch_line(const std::string& dir, std::string& verdict) {
     return "no summary.json (written by plantsim batch and merge since issue 37): see its report";
   }
   try {
-    return batch_counts(j, verdict);
+    return batch_counts(j, verdict, accept_mixed);
   } catch (const nlohmann::json::exception&) {  // a field of another type: not plantsim's file
     verdict.clear();
     return "a summary.json plantsim did not write (a field of the wrong type): see its report";
@@ -130,7 +139,8 @@ std::string tune_line(const std::string& dir) {
 }
 
 /// A linked report, its kind told by what its folder holds, with the figure that shows it best.
-render::DashboardLink link_to(const std::string& report, const std::string& base) {
+render::DashboardLink link_to(const std::string& report, const std::string& base,
+                              bool accept_mixed) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::path(report).parent_path();
   render::DashboardLink l;
@@ -148,7 +158,7 @@ render::DashboardLink link_to(const std::string& report, const std::string& base
   } else if (fs::exists(dir / "summary.csv")) {
     l.kind = "batch";
     if (fs::exists(dir / "chart_success.png")) l.thumbnail = rel("chart_success.png");
-    l.line = batch_line(dir.string(), l.verdict);
+    l.line = batch_line(dir.string(), l.verdict, accept_mixed);
     l.stale = stale_note((dir / "summary.json").string());
   } else if (fs::exists(dir / "evaluations.jsonl") && fs::exists(dir / "best.json")) {
     l.kind = "tune";
@@ -288,6 +298,7 @@ struct SummarizeOptions {
   std::string out;
   std::string html;
   std::vector<std::string> links;
+  bool accept_mixed_builds = false;  ///< batches of records of several builds judged all the same
 };
 
 /// A folder given as a run that is a batch's or a tuning's: taken as a link to its report.
@@ -360,8 +371,8 @@ int summarize(const SummarizeOptions& opt) {
   std::vector<render::DashboardLink> links, md_links;
   std::vector<std::string> summaries;
   for (const auto& l : link_reports) {
-    links.push_back(link_to(l, html_base.empty() ? "." : html_base));
-    md_links.push_back(link_to(l, base.empty() ? "." : base));
+    links.push_back(link_to(l, html_base.empty() ? "." : html_base, opt.accept_mixed_builds));
+    md_links.push_back(link_to(l, base.empty() ? "." : base, opt.accept_mixed_builds));
     summaries.push_back((std::filesystem::path(l).parent_path() / "summary.json").string());
   }
   md += markdown_links(md_links);
@@ -401,6 +412,8 @@ std::function<int()> add_summarize_command(CLI::App& app) {
                   "the linked reports");
   cmd->add_option("--link", opt->links,
                   "Further reports (or PNG charts) to link from the dashboard");
+  cmd->add_flag("--accept-mixed-builds", opt->accept_mixed_builds,
+                "Judge batches whose records several builds ran (else the verdict is not PASS)");
   return [opt]() { return summarize(*opt); };
 }
 

@@ -12,6 +12,7 @@
 #include "batch/batch_gate.h"
 #include "batch/episode_record.h"
 #include "batch/episode_records.h"
+#include "batch/record_paths.h"
 #include "util/fingerprint.h"
 #include "util/fixed_text.h"
 #include "util/input_file.h"
@@ -38,10 +39,10 @@ struct FolderRecords {
   std::map<std::string, SideRecord> by_id;
 };
 
-/// The same episode written twice differs in its index and scenario file at most (a merge's
-/// rule, batch_merge.cpp); anything else is a different result.
+/// The same episode written twice differs in its index, scenario file and build at most (a
+/// merge's rule, batch_merge.cpp); anything else is a different result.
 std::uint64_t result_hash(json record) {
-  record.erase("index"), record.erase("scenario_file");
+  record.erase("index"), record.erase("scenario_file"), record.erase("build");
   return util::Fingerprint().add(record.dump()).value();
 }
 
@@ -76,6 +77,7 @@ void add_record(FolderRecords& f, std::set<std::string>& scenarios, const std::s
                      j["controller"].get<std::string>(), j["fault"].get<std::string>()};
   r.seed = j["seed"].get<std::uint64_t>();
   r.side = side_of(j);
+  r.side.scenario_file = scenario_path_from_record(r.side.scenario_file, f.info.folder);
   r.result_hash = result_hash(j);
   const auto [at, fresh] = f.by_id.try_emplace(id, std::move(r));
   if (!fresh && at->second.result_hash != result_hash(j))

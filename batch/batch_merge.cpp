@@ -16,6 +16,7 @@
 #include "batch/episode_record.h"
 #include "batch/episode_records.h"
 #include "batch/episode_space.h"
+#include "batch/record_paths.h"
 #include "batch/scenario_setup.h"
 #include "episode/episode_json.h"
 #include "util/atomic_file.h"
@@ -35,16 +36,18 @@ struct ShardRecords {
 };
 
 /// The same episode from a run whose lists were ordered otherwise differs in its index and
-/// scenario file only, and from any other run in its wall times (the controller's compute time);
-/// anything else is a different result.
+/// scenario file only (and the build that ran it), and from any other run in its wall times (the
+/// controller's compute time); anything else is a different result.
 json result_of(const std::string& record) {
   json r = episode::without_wall_times(json::parse(record));
-  r.erase("index"), r.erase("scenario_file");
+  r.erase("index"), r.erase("scenario_file"), r.erase("build");
   return r;
 }
 
 void add_record(ShardRecords& s, const std::string& dir, const std::string& path,
-                std::string&& line) {
+                std::string&& shard_line) {
+  // Held with the scenario's path absolute: the merged records name it from the merge's folder.
+  std::string line = rebased_record(shard_line, dir, "");
   const json j = json::parse(line);
   const std::string theirs = j["scenario"].get<std::string>();
   if (s.fingerprint.empty()) {
@@ -55,7 +58,7 @@ void add_record(ShardRecords& s, const std::string& dir, const std::string& path
                                   " episodes; a merge holds at most " +
                                   std::to_string(kMaxEpisodes) +
                                   ": merge groups of shards with --allow-partial (docs/batch.md)");
-    s.scenario_file = j.value("scenario_file", std::string());
+    s.scenario_file = scenario_path_from_record(j.value("scenario_file", std::string()), dir);
   } else if (theirs != s.fingerprint) {
     throw std::invalid_argument("cannot merge episodes of different scenarios: " + s.first_dir +
                                 " holds scenario " + s.fingerprint + ", " + dir + " holds " +
@@ -221,7 +224,8 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   std::sort(ordered.begin(), ordered.end());
   std::string text;
   std::vector<std::string> lines;
-  for (const auto& [index, line] : ordered) {
+  for (const auto& [index, held] : ordered) {
+    const std::string line = rebased_record(held, "", out_dir);
     text += line + "\n";
     lines.push_back(line);
   }
@@ -246,9 +250,10 @@ MergeOutcome merge_batches(const std::vector<std::string>& dirs, const std::stri
   for (const auto& d : dirs) command += " " + d;
   write_batch_report(
       lines, out_dir, "plantsim merge",
-      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : ""),
+      command + " --out " + out_dir + (options.allow_partial ? " --allow-partial" : "") +
+          (options.accept_mixed_builds ? " --accept-mixed-builds" : ""),
       scenario.worlds.empty() ? nullptr : &scenario.worlds, scenario.planners,
-      options.gate.applied_to(outcome.gate), true, made_by);
+      options.gate.applied_to(outcome.gate), true, made_by, {}, "", options.accept_mixed_builds);
   return outcome;
 }
 

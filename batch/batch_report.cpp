@@ -10,6 +10,7 @@
 
 #include "batch/batch_gate.h"
 #include "batch/batch_summary.h"
+#include "batch/record_builds.h"
 #include "batch/report_verdicts.h"
 #include "batch/summary_tables.h"
 #include "batch/wilson_interval.h"
@@ -284,7 +285,7 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
                         const std::vector<worlds::World>* worlds_for_figures,
                         const std::vector<std::string>& planners, const Gate& gate, bool charts,
                         const util::MadeBy& made_by, const std::vector<FailedEpisode>& failures,
-                        const std::string& scenario_path) {
+                        const std::string& scenario_path, bool accept_mixed_builds) {
   const std::string csv = summary_csv(lines, &gate);
   util::write_file_atomically(out_dir + "/summary.csv", csv);
   const std::string sweep = sweep_csv(lines);
@@ -292,12 +293,18 @@ void write_batch_report(const std::vector<std::string>& lines, const std::string
   const std::vector<ConfigurationVerdict> verdicts = judge_configurations(lines, gate);
   nlohmann::json summary = batch_summary_json(lines, verdicts, gate, title, command);
   summary["made_by"] = nlohmann::json::parse(made_by.json().dump());
+  const std::vector<BuildCount> builds = record_builds(lines);
+  const bool mixed = builds.size() > 1;
+  summary["builds"] = builds_json(builds);
+  if (mixed)
+    summary["mixed_builds"] = {{"builds", builds.size()}, {"accepted", accept_mixed_builds}};
   util::write_file_atomically(out_dir + "/summary.json", summary.dump(1) + "\n");
   render::Report report;
   report.title = title;
   report.command = command;
-  report.made_by = made_by.text();
-  report.banner_html = verdict_banner_html(verdicts, gate);
+  report.made_by = made_by.text() + (mixed ? " From " + builds_text(builds) + "." : "");
+  report.banner_html = mixed_builds_banner_html(builds, accept_mixed_builds) +
+                       verdict_banner_html(verdicts, gate, mixed && !accept_mixed_builds);
   const std::string details = fill_verdict_table(report, csv, verdicts, gate.statistic);
   report.notes =
       "Success rate with its 95 % Wilson interval; plan / optimum compares the planned length with "

@@ -24,11 +24,13 @@
 #include "batch/episode_runner.h"
 #include "batch/episode_space.h"
 #include "batch/progress.h"
+#include "batch/record_paths.h"
 #include "batch/scenario_setup.h"
 #include "episode/episode_work.h"
 #include "plugins/plugin_loader.h"
 #include "util/atomic_file.h"
 #include "util/folder_lock.h"
+#include "util/input_file.h"
 #include "util/thread_team.h"
 #include "worlds/world_error.h"
 #include "worlds/world_loader.h"
@@ -189,7 +191,51 @@ void write_report(const RunContext& run, const std::string& scenario_path,
                      "plantsim batch " + scenario_path + " --out " + o.out_dir + shard +
                          plugins::command_line_plugin_arguments(),
                      o.figures ? &run.loaded.worlds : nullptr, run.spec.planners,
-                     o.gate.applied_to(run.spec.gate), o.figures, made_by, failures, scenario_path);
+                     o.gate.applied_to(run.spec.gate), o.figures, made_by, failures, scenario_path,
+                     o.accept_mixed_builds);
+}
+
+/// Whether an output file of the folder is newer than its report (written last): one a killed
+/// run or a hand left there, which only a rewrite removes. The records, the episodes re-run alone
+/// and this run's own files (a --junit report in the folder) are no report's.
+bool stray_outputs(const RunOptions& o, std::filesystem::file_time_type report_written) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  auto newer = [&](const fs::path& p) { return fs::last_write_time(p, ec) > report_written; };
+  for (const fs::directory_entry& e : fs::directory_iterator(o.out_dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name == ".plantsim.lock" || name == "episodes.jsonl" || name == "episodes" ||
+        name == "report.html" || !is_batch_output_name(name) ||
+        std::find(o.own_files.begin(), o.own_files.end(), name) != o.own_files.end())
+      continue;
+    if (newer(e.path())) return true;
+    if (e.is_directory(ec) && !e.is_symlink(ec))
+      for (const fs::directory_entry& f : fs::recursive_directory_iterator(e.path(), ec))
+        if (newer(f.path())) return true;
+  }
+  return false;
+}
+
+/// The folder's report stands complete from its records, with the options asked now: every
+/// run removes the outputs before its episodes and writes them last, so a summary.json there
+/// was written over these very records (unless a run was killed after writing it, which leaves
+/// nothing to append). The figures and the gate asked must be the ones it was made with.
+bool outputs_current(const RunOptions& o) {
+  namespace fs = std::filesystem;
+  if (o.fresh || !fs::is_regular_file(o.out_dir + "/report.html")) return false;
+  try {
+    const std::string path = o.out_dir + "/summary.json";
+    if (!fs::is_regular_file(fs::symlink_status(path))) return false;
+    const json j = json::parse(util::read_input_file(path, 64u << 20));
+    if (stray_outputs(o, fs::last_write_time(o.out_dir + "/report.html"))) return false;
+    const bool figures = fs::exists(o.out_dir + "/chart_success.png");
+    const bool mixed_accepted =
+        j.contains("mixed_builds") && j["mixed_builds"].value("accepted", false);
+    return figures == o.figures && !o.gate.min_success && !o.gate.statistic &&
+           (!j.contains("mixed_builds") || mixed_accepted == o.accept_mixed_builds);
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 }  // namespace
@@ -234,12 +280,20 @@ BatchOutcome run_batch(const std::string& scenario_path, const RunOptions& o) {
   if (o.fresh) remove_batch_outputs(o.out_dir, false);
   const std::set<std::string> done =
       resume(jsonl, o, all, scenario.fingerprint, outcome.malformed_lines_cut);
-  if (!o.fresh) remove_batch_outputs(o.out_dir, true);
   std::vector<Episode> todo;
   for (const Episode& e : mine)
     if (!done.count(e.id)) todo.push_back(e);
   outcome.skipped = outcome.episodes - static_cast<std::int64_t>(todo.size());
-  const RunContext run{spec, loaded, configs, scenario, o};
+  // A resume with nothing to run is no new run: rewriting the outputs gave them this build's
+  // commit, a new date and "in 0.0 s", and the dashboard's trend counted a second run.
+  if (todo.empty() && outcome.malformed_lines_cut == 0 && outputs_current(o)) {
+    outcome.outputs_kept = true;
+    return outcome;
+  }
+  if (!o.fresh) remove_batch_outputs(o.out_dir, true);
+  ScenarioIdentity recorded = scenario;  // the records name their scenario from their folder
+  recorded.file = scenario_path_for_records(scenario.file, o.out_dir);
+  const RunContext run{spec, loaded, configs, recorded, o};
   run_episodes(run, todo, open_for_append(jsonl), jsonl, outcome);
   util::MadeBy made_by;
   made_by.duration_s =

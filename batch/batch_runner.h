@@ -31,6 +31,8 @@ struct RunOptions {
   episode::EpisodeSteering steering;
   /// Further files of this run in the output folder (a --junit report written there).
   std::vector<std::string> own_files;
+  /// A resume's records of more than one build: the verdict is not green unless accepted.
+  bool accept_mixed_builds = false;
 };
 
 /// A batch stopped by its steering's `interrupted` poll (episode::EpisodeSteering): the episodes
@@ -44,7 +46,10 @@ struct BatchOutcome {
   std::int64_t episodes = 0, ran = 0, skipped = 0, succeeded = 0,
                collisions = 0;           ///< succeeded: docked or caught
   std::int64_t malformed_lines_cut = 0;  ///< resume found lines it could not use; rerun
-  Gate gate;                             ///< the scenario's gate
+  /// A resume that ran nothing and changed no record: the outputs of the run that made them
+  /// stand as they were (no new date, commit or duration; no new trend point).
+  bool outputs_kept = false;
+  Gate gate;  ///< the scenario's gate
   std::string scenario_fingerprint;
 };
 

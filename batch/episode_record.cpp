@@ -5,6 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "batch/record_builds.h"
 #include "episode/episode_json.h"
 #include "geometry/predicates.h"
 #include "util/fingerprint.h"
@@ -32,6 +33,7 @@ std::string record_line(const Episode& e, const BatchSpec& spec, const ScenarioI
   j["scenario"] = scenario.fingerprint;
   j["scenario_episodes"] = scenario.episodes;
   j["scenario_file"] = scenario.file;
+  j["build"] = this_build();  // which build ran it: a resume or a merge may mix builds
   j["key"] = episode_key(scenario.fingerprint, e.id);
   j["world"] = world_name;
   j["planner"] = spec.planners[e.planner];

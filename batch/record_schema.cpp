@@ -37,6 +37,7 @@ constexpr Field kFields[] = {
     {"scenario", Kind::kText, true},
     {"scenario_episodes", Kind::kCount, false},
     {"scenario_file", Kind::kText, false},
+    {"build", Kind::kText, false},  // records before issue 89 have none
     {"key", Kind::kText, false},
     {"world", Kind::kText, true},
     {"planner", Kind::kText, true},
@@ -81,6 +82,7 @@ constexpr Field kFields[] = {
     {"relocalizations", Kind::kCount, false},
     {"worst_moving_error_m", Kind::kNumber, false},
     {"driven_off_estimate_s", Kind::kNumber, false},
+    {"driven_off_estimate_m", Kind::kNumber, false},
     {"ok_while_off_s", Kind::kNumber, false},
     {"localization_not_ok_s", Kind::kNumber, false},
     {"unmapped_seen", Kind::kCount, false},

@@ -2,6 +2,7 @@
 #include "batch/report_verdicts.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "util/csv.h"
 #include "util/fixed_text.h"
@@ -123,19 +124,42 @@ std::string failures_of(const std::vector<std::string>& header,
   return failures.empty() ? "-" : failures;
 }
 
-/// A table of `cols` of every summary row, under `heading`.
+/// Below this many episodes the nearest-rank 95th percentile is the worst value itself
+/// (rank ceil(0.95 n) = n for n < 20): a column of it repeats the worst's.
+constexpr long kPercentileEpisodes = 20;
+
+bool small_sample(const std::vector<std::string>& header, const std::vector<std::string>& cells) {
+  const auto episodes = std::find(header.begin(), header.end(), "episodes") - header.begin();
+  const std::string n = cell(cells, static_cast<int>(episodes));
+  return n.empty() || std::strtol(n.c_str(), nullptr, 10) < kPercentileEpisodes;
+}
+
+/// A table of `cols` of every summary row, under `heading`. The 95th percentile's column goes
+/// when every row is a small sample; a small sample's cell in it says it equals the worst.
 std::string column_table(const std::string& heading, const std::vector<std::string>& header,
                          const std::vector<std::vector<std::string>>& rows,
                          const std::vector<Column>& cols) {
+  bool all_small = true;
+  for (std::size_t r = 1; r < rows.size(); ++r)
+    all_small = all_small && small_sample(header, rows[r]);
+  std::vector<Column> shown;
+  for (const Column& c : cols)
+    if (!(all_small && std::string(c.key) == "p95_localization_error_mm")) shown.push_back(c);
   std::vector<std::string> titles;
-  const std::vector<int> picked = indices(header, cols, &titles);
+  const std::vector<int> picked = indices(header, shown, &titles);
   std::string h = "<h2>" + render::html_escape(heading) + "</h2>\n<table><tr>";
   for (const std::string& t : titles) h += "<th>" + render::html_escape(t) + "</th>";
   h += "</tr>\n";
   for (std::size_t r = 1; r < rows.size(); ++r) {
     h += "<tr>";
-    for (int i : picked)
-      h += "<td>" + render::html_escape(measured_cell(header, rows[r], i)) + "</td>";
+    for (int i : picked) {
+      const bool percentile = header[static_cast<std::size_t>(i)] == "p95_localization_error_mm";
+      h += "<td>" +
+           render::html_escape(percentile && small_sample(header, rows[r])
+                                   ? "= worst (under 20 episodes)"
+                                   : measured_cell(header, rows[r], i)) +
+           "</td>";
+    }
     h += "</tr>\n";
   }
   return h + "</table>\n";
@@ -143,8 +167,18 @@ std::string column_table(const std::string& heading, const std::vector<std::stri
 
 }  // namespace
 
-std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdicts,
-                                const Gate& gate) {
+std::string mixed_builds_banner_html(const std::vector<BuildCount>& builds, bool accepted) {
+  if (builds.size() < 2) return "";
+  return std::string("<div class=\"banner ") + (accepted ? "none" : "mixed") +
+         "\"><b>MIXED BUILDS</b>: " + render::html_escape(builds_text(builds)) +
+         (accepted ? " (accepted with --accept-mixed-builds)."
+                   : ". The verdict below is not one build's: re-run with --fresh, or accept the "
+                     "mix with --accept-mixed-builds.") +
+         "</div>\n";
+}
+
+std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdicts, const Gate& gate,
+                                bool unaccepted_mix) {
   int gated = 0;
   std::vector<const ConfigurationVerdict*> failing, unsure;
   for (const ConfigurationVerdict& v : verdicts) {
@@ -167,8 +201,11 @@ std::string verdict_banner_html(const std::vector<ConfigurationVerdict>& verdict
     return "<div class=\"banner none\"><b>NO GATE</b>: the scenario sets no min_success; the "
            "table below judges nothing.</div>\n";
   if (failing.empty()) {
-    h = "<div class=\"banner pass\"><b>PASS</b>: all " + std::to_string(gated) +
-        " gated configurations meet " + render::html_escape(requirement) + ".";
+    // A pass over a mix of builds is no build's pass: not green until the mix is accepted.
+    h = std::string("<div class=\"banner ") + (unaccepted_mix ? "mixed" : "pass") +
+        "\"><b>PASS</b>" + (unaccepted_mix ? " (mixed builds)" : "") + ": all " +
+        std::to_string(gated) + " gated configurations meet " + render::html_escape(requirement) +
+        ".";
     if (!unsure.empty())
       h += " " + std::to_string(unsure.size()) +
            " of them pass by their success rate while their 95 % lower bound is below the "

@@ -1,11 +1,14 @@
 // One line of benchmark output: a JSON object with the measured value and, when there is
-// one, the baseline measured in the same run and the ratio value / baseline_value.
+// one, the baseline measured in the same run and the ratio value / baseline_value, stamped with
+// the build that measured it and when (issue 89: a number without its build compares nothing).
 #pragma once
 
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+
+#include "util/build_stamp.h"
 
 namespace plantsim::bench {
 
@@ -31,6 +34,8 @@ inline void report(const std::string& bench, const Measure& m,
     j["baseline_value"] = nullptr;
     j["ratio"] = nullptr;
   }
+  j["build"] = util::build_stamp().text();
+  j["date"] = util::utc_now();
   std::cout << j.dump() << std::endl;
 }
 

@@ -43,6 +43,7 @@ void add_episode_metrics(nlohmann::ordered_json& j, const EpisodeOutcome& r) {
   j["relocalizations"] = r.relocalizations;
   j["worst_moving_error_m"] = r.integrity.worst_moving_error_m;
   j["driven_off_estimate_s"] = r.integrity.driven_off_s;
+  j["driven_off_estimate_m"] = r.integrity.driven_off_m;
   j["ok_while_off_s"] = r.integrity.ok_while_off_s;
   j["localization_not_ok_s"] = r.integrity.not_ok_s;
   j["unmapped_seen"] = r.unmapped_seen;

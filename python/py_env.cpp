@@ -626,6 +626,7 @@ struct PyEnv {
     at.phase = std::string(controller::to_string(e.view().phase));
     at.trajectory = &r.trajectory;
     at.driven = r.trajectory.size();
+    at.carries = &r.carries;
     at.plan = e.view().plan;
     robot::ScanView scan;
     if (p.scan) {  // the newest reading placed at the estimate, as the robot would place it

@@ -31,6 +31,7 @@ std::string write_animation(const worlds::World& world, const episode::EpisodeRe
     at.trajectory = &run.trajectory;
     at.driven = i + 1;
     at.plan = run.plan;
+    at.carries = &run.carries;
     // Moving obstacles where the physics had them at this instant.
     for (const auto& track : run.moving_tracks) {
       std::size_t k = 0;

@@ -41,8 +41,23 @@ Rgb simulate(Rgb colour, ColourVision vision) {
   static constexpr double kDeuteranopia[3][3] = {{0.367322, 0.860646, -0.227968},
                                                  {0.280085, 0.672501, 0.047413},
                                                  {-0.011820, 0.042940, 0.968881}};
-  if (vision == ColourVision::kNormal) return colour;
-  const auto& m = vision == ColourVision::kProtanopia ? kProtanopia : kDeuteranopia;
+  static constexpr double kTritanopia[3][3] = {{1.255528, -0.076749, -0.178779},
+                                               {-0.078411, 0.930809, 0.147602},
+                                               {0.004733, 0.691367, 0.303900}};
+  const double(*m)[3] = nullptr;
+  switch (vision) {
+    case ColourVision::kNormal:
+      return colour;
+    case ColourVision::kDeuteranopia:
+      m = kDeuteranopia;
+      break;
+    case ColourVision::kProtanopia:
+      m = kProtanopia;
+      break;
+    case ColourVision::kTritanopia:
+      m = kTritanopia;
+      break;
+  }
   const Linear l = linear(colour);
   unsigned char out[3];
   for (int i = 0; i < 3; ++i)

@@ -1,5 +1,6 @@
-// How a colour looks to a reader with a red-green colour-vision deficiency (Machado, Oliveira and
-// Fernandes 2009, severity 1, applied to linear RGB) and how far apart two colours look (CIE76
+// How a colour looks to a reader with one of the three common colour-vision deficiencies
+// (deuteranopia, protanopia: red-green; tritanopia: blue-yellow; Machado, Oliveira and Fernandes
+// 2009, severity 1, applied to linear RGB) and how far apart two colours look (CIE76
 // difference in CIELAB): the palette's pairs a reader must tell apart are checked with them.
 #pragma once
 
@@ -7,7 +8,7 @@
 
 namespace plantsim::render {
 
-enum class ColourVision { kNormal, kDeuteranopia, kProtanopia };
+enum class ColourVision { kNormal, kDeuteranopia, kProtanopia, kTritanopia };
 
 /// The colour as seen with `vision`.
 Rgb simulate(Rgb colour, ColourVision vision);

@@ -234,6 +234,11 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
       if (std::isfinite(s.y[i])) pts.push_back(px(s.x[i], s.y[i]));
     canvas_.pixel_polyline(pts, 1.6, s.colour);
   }
+  for (const PlotOptions::Marker& m : options.markers) {
+    if (m.x < scale.xmin || m.x > scale.xmax) continue;
+    const double x = px(m.x, scale.ymin).x;
+    canvas_.pixel_line({x, box.top}, {x, box.bottom}, 2.0, m.colour);
+  }
   plot_axes(box, scale.xmin, scale.xmax, scale.ymin, scale.ymax);
   text(title + (y_label.empty() ? "" : " (" + y_label + ")"), box.left, box.top - 8, 14,
        palette::kAxis, Anchor::kLeft, true);
@@ -243,7 +248,7 @@ void Figure::plot(const PixelBox& box, const std::vector<Series>& series, const 
   if (scale.empty && !options.note.empty())
     text(options.note, 0.5 * (box.left + box.right), 0.5 * (box.top + box.bottom), 13,
          palette::kAxis, Anchor::kCenter);
-  if (options.legend) plot_legend(box, series, options.bands);
+  if (options.legend) plot_legend(box, series, options.bands, options.markers);
 }
 
 void Figure::plot_axes(const PixelBox& box, double xmin, double xmax, double ymin, double ymax) {
@@ -267,7 +272,8 @@ void Figure::plot_axes(const PixelBox& box, double xmin, double xmax, double ymi
 
 // Entries right-aligned along the top edge, above the plot, the last one at the right.
 void Figure::plot_legend(const PixelBox& box, const std::vector<Series>& series,
-                         const std::vector<Band>& bands) {
+                         const std::vector<Band>& bands,
+                         const std::vector<PlotOptions::Marker>& markers) {
   std::vector<LegendEntry> entries;
   for (const Series& s : series) entries.push_back({s.colour, s.label});
   std::vector<std::string> seen;
@@ -275,6 +281,11 @@ void Figure::plot_legend(const PixelBox& box, const std::vector<Series>& series,
     if (std::find(seen.begin(), seen.end(), b.label) == seen.end()) {
       seen.push_back(b.label);
       entries.push_back({b.colour, b.label});
+    }
+  for (const PlotOptions::Marker& m : markers)
+    if (std::find(seen.begin(), seen.end(), m.label) == seen.end()) {
+      seen.push_back(m.label);
+      entries.push_back({m.colour, m.label});
     }
   TextRenderer& tr = shared_text_renderer();
   double x = box.right;

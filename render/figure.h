@@ -127,6 +127,14 @@ class Figure {
     bool legend = false;    ///< series and bands named at the top right
     double min_y_span = 0;  ///< never zoom into less than this (noise around zero)
     std::string note;       ///< said in the middle when no series has a value
+    /// Events at an instant (a kidnap, the failure): a vertical line across the plot in `colour`,
+    /// named in the legend by `label`.
+    struct Marker {
+      double x;
+      Rgb colour;
+      std::string label;
+    };
+    std::vector<Marker> markers;
   };
   void plot(const PixelBox& box, const std::vector<Series>& series, const std::string& title,
             const std::string& y_label, const PlotOptions& options);
@@ -139,7 +147,8 @@ class Figure {
   void draw_swatch(double x, double y, const LegendEntry& e);
   void plot_axes(const PixelBox& box, double xmin, double xmax, double ymin, double ymax);
   void plot_legend(const PixelBox& box, const std::vector<Series>& series,
-                   const std::vector<Band>& bands);
+                   const std::vector<Band>& bands,
+                   const std::vector<PlotOptions::Marker>& markers = {});
   struct QueuedText {
     std::string s;
     double x, y;

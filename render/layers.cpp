@@ -255,13 +255,24 @@ bool draw_wall_following(GlCanvas& c, const std::vector<episode::TrajectorySampl
 }
 
 bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<episode::TrajectorySample>& t,
-                              double max_speed_mps, std::size_t upto) {
+                              double max_speed_mps, std::size_t upto,
+                              const std::vector<episode::EpisodeResult::Carry>& carries) {
   const std::size_t n = std::min(upto, t.size());
   std::vector<Vec2> pts;
   std::vector<Rgb> colours;
   pts.reserve(n);
   colours.reserve(n);
+  bool drew = false;
   for (std::size_t i = 0; i < n; ++i) {
+    // A carry between two samples ends a leg: the next is drawn apart (a kidnap is no driving).
+    const bool carried = i > 0 && std::any_of(carries.begin(), carries.end(), [&](const auto& k) {
+                           return k.t_s > t[i - 1].t_s && k.t_s <= t[i].t_s;
+                         });
+    if (carried) {
+      c.coloured_polyline(pts, colours, 4.0);
+      drew = drew || pts.size() > 1;
+      pts.clear(), colours.clear();
+    }
     // Successive samples closer than half a pixel add nothing but draw calls.
     if (!pts.empty() && i + 1 < n &&
         geom::distance(pts.back(), t[i].truth.position()) * c.transform().scale < 0.5)
@@ -270,7 +281,17 @@ bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<episode::Trajectory
     pts.push_back(t[i].truth.position());
   }
   c.coloured_polyline(pts, colours, 4.0);
-  return pts.size() > 1;
+  return drew || pts.size() > 1;
+}
+
+bool draw_carries(GlCanvas& c, const std::vector<episode::EpisodeResult::Carry>& carries) {
+  const double px = 1.0 / c.transform().scale;
+  for (const auto& k : carries) {
+    draw_dashed(c, {k.from.position(), k.to.position()}, 2.5, 9.0, palette::kCarry);
+    c.ring(k.from.position(), 6 * px, 2.0, palette::kCarry);            // lifted
+    c.fill_box(k.to.position(), 5 * px, 5 * px, 0.0, palette::kCarry);  // set down
+  }
+  return !carries.empty();
 }
 
 Rgb speed_swatch(const std::vector<episode::TrajectorySample>& t, double max_speed_mps) {

@@ -58,10 +58,14 @@ bool draw_target(GlCanvas& c, const worlds::World& w,
                  const std::vector<episode::TrajectorySample>& t);
 /// A wide band under the stretches driven in the wall-following state.
 bool draw_wall_following(GlCanvas& c, const std::vector<episode::TrajectorySample>& t);
-/// The driven path, each segment coloured by speed on cividis from 0 to `max_speed_mps`.
+/// The driven path, each segment coloured by speed on cividis from 0 to `max_speed_mps`, broken
+/// at each carry (a kidnap is no driving: draw_carries draws it).
 bool draw_trajectory_by_speed(GlCanvas& c, const std::vector<episode::TrajectorySample>& t,
-                              double max_speed_mps,
-                              std::size_t upto = static_cast<std::size_t>(-1));
+                              double max_speed_mps, std::size_t upto = static_cast<std::size_t>(-1),
+                              const std::vector<episode::EpisodeResult::Carry>& carries = {});
+/// Each kidnap's carry: dashed from where the robot was lifted (a small ring) to where it was set
+/// down (a filled dot), in palette::kCarry. Returns whether there was one.
+bool draw_carries(GlCanvas& c, const std::vector<episode::EpisodeResult::Carry>& carries);
 /// The driven path's colour at its median speed: its legend swatch (a colour the path has).
 Rgb speed_swatch(const std::vector<episode::TrajectorySample>& t, double max_speed_mps);
 /// Rings where the robot stopped, replanned, recovered and backed off to retry, and crosses where

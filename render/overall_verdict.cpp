@@ -1,5 +1,6 @@
 // The one verdict (see the header): failed when any run did not succeed or any linked report
-// failed; passed when something was judged and nothing failed.
+// failed; "mixed builds" (not green) when a batch's records come from several builds unaccepted;
+// passed when something was judged and nothing failed.
 #include "render/overall_verdict.h"
 
 namespace plantsim::render {
@@ -37,6 +38,10 @@ OverallVerdict overall_verdict(const std::vector<DashboardRun>& runs,
         {"comparison", "comparisons", "failed"}})
     if (std::string f = failed_links(links, kind, plural, failing, judged, passed); !f.empty())
       failures.push_back(std::move(f));
+  // A batch of records of several builds that nobody accepted: no build's pass, so no PASS.
+  std::string mixed;
+  for (const DashboardLink& l : links)
+    if (l.verdict == "mixed") mixed += (mixed.empty() ? "" : ", ") + l.title;
   int runs_failed = 0;
   std::string run_names;
   for (const DashboardRun& r : runs) {
@@ -52,6 +57,10 @@ OverallVerdict overall_verdict(const std::vector<DashboardRun>& runs,
   if (!failures.empty()) {
     v.kind = OverallVerdict::Kind::kFail, v.word = "FAIL";
     for (std::size_t i = 0; i < failures.size(); ++i) v.why += (i ? "; " : "") + failures[i];
+  } else if (!mixed.empty()) {
+    v.word = "MIXED BUILDS";
+    v.why =
+        "batches whose records several builds ran, not accepted (--accept-mixed-builds): " + mixed;
   } else if (judged > 0) {
     v.kind = OverallVerdict::Kind::kPass, v.word = "PASS";
     v.why = "every single run succeeded (" + std::to_string(runs.size()) +

@@ -14,7 +14,7 @@ namespace plantsim::render {
 struct OverallVerdict {
   enum class Kind { kPass, kFail, kNone };
   Kind kind = Kind::kNone;
-  std::string word;  ///< "PASS", "FAIL", "NO VERDICT"
+  std::string word;  ///< "PASS", "FAIL", "MIXED BUILDS", "NO VERDICT"
   std::string why;   ///< plain text: what failed, or what passed
   bool failed() const { return kind == Kind::kFail; }
 };

@@ -55,20 +55,34 @@ inline constexpr Rgb kWallFollow{
     240};  ///< potential-field travel while following a wall (band; not the speed scale's yellow)
 inline constexpr Rgb kScan{20, 50, 140};  ///< lidar returns the map explains (dots): navy, apart
                                           ///< from the greys of the estimate and the footprints
-inline constexpr Rgb kScanOffMap{150, 0, 90};   ///< lidar returns it does not (tracked obstacles)
+/// Lidar returns the map does not explain (tracked obstacles): dark plum ({150, 0, 90} was 9
+/// Delta E from the obstacles' grey under deuteranopia).
+inline constexpr Rgb kScanOffMap{75, 0, 75};
 inline constexpr Rgb kTracked{0, 0, 0};         ///< boxes of the tracked obstacles (outlines)
 inline constexpr Rgb kEstimate{185, 185, 185};  ///< the path as the robot estimated it (band)
 inline constexpr Rgb kUnmapped{150, 30,
-                               30};         ///< obstacles in the plant but not on the map (hatched)
-inline constexpr Rgb kLayer{120, 90, 200};  ///< the local obstacle layer's occupied cells
-inline constexpr Rgb kStopMark{0, 0, 0};    ///< where the robot stopped for something (ring)
+                               30};  ///< obstacles in the plant but not on the map (hatched)
+/// The local obstacle layer's occupied cells: a light green. Its violet {120, 90, 200}, the
+/// failure's purple and the replan rings' blue were one blue under deuteranopia (issue 89; checked
+/// by tests/test_figure_layout.cpp under deuteranopia, protanopia and tritanopia).
+inline constexpr Rgb kLayer{150, 255, 105};
+inline constexpr Rgb kStopMark{0, 0, 0};        ///< where the robot stopped for something (ring)
 inline constexpr Rgb kReplanMark = kOkabeBlue;  ///< where it replanned (ring)
 inline constexpr Rgb kRecoveryMark =
-    kOkabeOrange;                                ///< where it recovered after a displacement (ring)
-inline constexpr Rgb kCollisionMark{220, 0, 0};  ///< where a collision began (cross)
-inline constexpr Rgb kRetryMark =
-    kOkabeReddishPurple;                         ///< where the docking backed off to retry (ring)
-inline constexpr Rgb kFailureMark{150, 0, 200};  ///< where the episode failed (filled diamond)
+    kOkabeOrange;  ///< where it recovered after a displacement (ring)
+/// Where a collision began (cross): magenta. Pure red {220, 0, 0} was 8 Delta E from the
+/// vermillion plan under deuteranopia, and every red within 12 of the obstacles' dark grey under
+/// protanopia, where collisions are drawn.
+inline constexpr Rgb kCollisionMark{225, 60, 255};
+/// Where the docking backed off to retry (ring): khaki; the reddish purple was 12 Delta E from the
+/// footprints' grey rings under deuteranopia.
+inline constexpr Rgb kRetryMark{195, 165, 90};
+/// Where the episode failed (filled diamond): a blue violet, apart from the replan rings' blue
+/// under deuteranopia ({150, 0, 200} was 18 Delta E from it, 10 from the old layer).
+inline constexpr Rgb kFailureMark{120, 0, 255};
+/// A kidnap's carry (dashed, lifted ring to set-down square): orange, the colour of the recovery
+/// that follows it, on no other line of the run figure.
+inline constexpr Rgb kCarry = kOkabeOrange;
 inline constexpr Rgb kTolerance = kOkabeBluishGreen;  ///< the docking tolerance box (inset)
 inline constexpr Rgb kPhaseTravel{235, 240, 250};     ///< time-plot shading by phase
 inline constexpr Rgb kPhaseDocking{232, 246, 238};

@@ -21,9 +21,16 @@ Image plant_frame(const worlds::World& world, const PlantInstant& at, int width_
   }
   if (draw_unmapped(c, world)) legend.push_back({palette::kUnmapped, "not on map"});
   if (draw_moving(c, world, at.t_s, at.moving)) legend.push_back({palette::kMoving, "moving"});
-  if (at.trajectory &&
-      draw_trajectory_by_speed(c, *at.trajectory, world.robot.max_speed_mps, at.driven))
+  static const std::vector<episode::EpisodeResult::Carry> kNoCarries;
+  if (at.trajectory && draw_trajectory_by_speed(c, *at.trajectory, world.robot.max_speed_mps,
+                                                at.driven, at.carries ? *at.carries : kNoCarries))
     legend.push_back({speed_swatch(*at.trajectory, world.robot.max_speed_mps), "driven (speed)"});
+  if (at.carries) {  // the kidnaps so far, dashed from where it was lifted to where it was set down
+    std::vector<episode::EpisodeResult::Carry> so_far;
+    for (const auto& carry : *at.carries)
+      if (carry.t_s <= at.t_s) so_far.push_back(carry);
+    if (draw_carries(c, so_far)) legend.push_back({palette::kCarry, "kidnap", Swatch::kDashed});
+  }
   if (draw_plan(c, at.plan, palette::kPlan)) legend.push_back({palette::kPlan, "plan"});
   if (at.scan) {  // legend entries for what is drawn, as the run figure's
     const auto [explained, unexplained] = draw_scan(c, *at.scan);

@@ -19,8 +19,9 @@ struct PlantInstant {
   double t_s = 0;
   geom::Pose2 robot;  ///< where the robot is (the truth)
   std::string phase;  ///< travel, docking, ...
-  const std::vector<episode::TrajectorySample>* trajectory = nullptr;  ///< driven so far
-  std::size_t driven = 0;                                              ///< samples of it drawn
+  const std::vector<episode::TrajectorySample>* trajectory = nullptr;   ///< driven so far
+  std::size_t driven = 0;                                               ///< samples of it drawn
+  const std::vector<episode::EpisodeResult::Carry>* carries = nullptr;  ///< its kidnaps
   std::vector<geom::Vec2> plan;
   const robot::ScanView* scan = nullptr;  ///< what perception placed, if any
   std::vector<geom::Rect> layer;

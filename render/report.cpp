@@ -60,13 +60,15 @@ std::string report_html(const Report& r) {
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
       html_escape(r.title) +
       "</title>\n<style>body{font-family:DejaVu Sans,sans-serif;margin:24px;color:#222}"
-      "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:4px 8px;"
+      "table{border-collapse:collapse;margin:12px 0;font-size:14px}td,th{border:1px solid #bbb;"
+      "padding:3px 6px;"
       "text-align:right}th{background:#eee}td:first-child,th:first-child,td.l,th.l{text-align:left}"
       "img{max-width:100%;border:1px solid #ddd;margin:8px 0}code{background:#f4f4f4;padding:2px "
       "4px}"
       "figure{margin:16px 0}tr.fail td{color:#c03c00;font-weight:bold}"
       ".banner{padding:8px 12px;margin:12px 0;background:#f6f6f6;border-left:8px solid #999}"
-      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}</style></head><body>\n";
+      ".banner.pass{border-color:#009e73}.banner.fail{border-color:#d55e00}"
+      ".banner.mixed{border-color:#e69f00}</style></head><body>\n";
   h += "<h1>" + html_escape(r.title) + "</h1>\n";
   if (!r.made_by.empty())
     h += "<p class=\"made-by\" style=\"color:#555\">" + html_escape(r.made_by) + "</p>\n";

@@ -13,6 +13,7 @@
 #include "render/method_marks.h"
 #include "render/palette.h"
 #include "util/c_number.h"
+#include "util/fixed_text.h"
 
 namespace plantsim::render {
 
@@ -175,7 +176,7 @@ void draw_docking_inset(Figure& fig, const worlds::World& world, const episode::
   draw_mapped_charger(c, world);
   std::vector<episode::TrajectorySample> tail(traj.begin() + static_cast<std::ptrdiff_t>(first),
                                               traj.end());
-  draw_trajectory_by_speed(c, tail, world.robot.max_speed_mps);
+  draw_trajectory_by_speed(c, tail, world.robot.max_speed_mps, tail.size(), run.carries);
   if (run.error_measured) draw_footprint(c, world.robot, run.measured_pose, palette::kRobot, 2.0);
   close_close_up(c, lo, hi);
   char head[160];
@@ -228,8 +229,15 @@ std::vector<LegendEntry> draw_world_layers(Figure& fig, const PixelTransform& t,
   listed(draw_footprints(c, world.robot, run.trajectory, o.footprint_every_s), palette::kFootprint,
          "robot / " + std::to_string(static_cast<int>(o.footprint_every_s)) + " s", Swatch::kRing);
   listed(draw_estimate(c, run.trajectory), palette::kEstimate, "estimated");
-  if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps))
+  if (draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, run.trajectory.size(),
+                               run.carries))
     legend.push_back({speed_swatch(run.trajectory, world.robot.max_speed_mps), "driven (speed)"});
+  // A kidnap's carry is no driving: dashed, with its time in the legend (issue 89).
+  // "kidnap 30.5 s": short enough for a legend column, so the time is not cut off.
+  std::string carried = "kidnap";
+  for (std::size_t i = 0; i < run.carries.size(); ++i)
+    carried += (i ? ", " : " ") + util::fixed(run.carries[i].t_s, 1);
+  listed(draw_carries(c, run.carries), palette::kCarry, carried + " s", Swatch::kDashed);
   // The plans over the driven path, thin, so that neither hides the other.
   // Changed without a replan: the coastal route the robot chose over the planner's path.
   const bool changed = run.plan != run.first_plan;
@@ -304,7 +312,9 @@ void draw_failure_inset(Figure& fig, const worlds::World& world, const episode::
   const auto [lo, hi] = open_close_up(fig, world, run, view, box);
   draw_moving_tracks(c, run.moving_tracks);
   draw_plan(c, run.plan, palette::kPlan);
-  draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps);
+  draw_trajectory_by_speed(c, run.trajectory, world.robot.max_speed_mps, run.trajectory.size(),
+                           run.carries);
+  draw_carries(c, run.carries);
   draw_events(c, run.events);
   draw_footprint(c, world.robot, f.pose, palette::kRobot, 2.0);
   close_close_up(c, lo, hi);
@@ -414,12 +424,17 @@ Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& 
            true);
   fig.text(result_line(run), 70, 44, 13, palette::kAxis);
   const std::vector<Figure::Band> bands = phase_bands(run.trajectory);
+  // The instants that explain a plot's jumps: each kidnap and the failure, on every plot.
+  std::vector<Figure::PlotOptions::Marker> markers;
+  for (const auto& k : run.carries) markers.push_back({k.t_s, palette::kCarry, "kidnap"});
+  if (run.failure) markers.push_back({run.failure->time_s, palette::kFailureMark, "failure"});
   // Each plot's title sits above it, its tick numbers below: 56 px between plots holds both.
   const double left = 80, right = width_px - 40.0, top = 84, bottom = height_px - 48.0, gap = 56;
   const double h = (bottom - top + gap) / 4.0;
   auto box = [&](int i) { return PixelBox{left, top + i * h, right, top + (i + 1) * h - gap}; };
   Figure::PlotOptions first;
   first.bands = bands;
+  first.markers = markers;
   first.legend = true;
   first.min_y_span = 10.0;
   first.note = "no travel";
@@ -427,6 +442,7 @@ Image draw_time_plots(const worlds::World& world, const episode::EpisodeResult& 
            "Cross-track error while travelling", "mm", first);
   Figure::PlotOptions plain;
   plain.bands = bands;
+  plain.markers = markers;
   plain.min_y_span = 0.1;
   fig.plot(box(1), {{t, speed, palette::kTrajectory, "speed"}}, "Speed", "m/s", plain);
   fig.plot(box(2), {{t, distance, palette::kTrajectory, "distance"}}, "Distance to the charger",

@@ -3,8 +3,8 @@
 # comparison and the dashboard linking them are made in a scratch folder and opened in headless
 # Chromium. Fails when any image does not load (data-images-loaded on <html>, set by the page
 # after its load event) or when the replay does not advance (data-replay-frames and
-# data-replay-time on its section) or shows no estimator verdict (data-replay-estimator), or when the dashboard is wider than a 1,400-pixel window
-# (data-page-width, the page's scroll width). Usage: scripts/browser_test.sh BUILD_DIR
+# data-replay-time on its section) or shows no estimator verdict (data-replay-estimator), or when the dashboard or any report page is wider than a
+# 1,400-pixel window (data-page-width, the page's scroll width). Usage: scripts/browser_test.sh BUILD_DIR
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: browser_test.sh BUILD_DIR}" && pwd)"
@@ -36,6 +36,14 @@ for page in index.html run/report.html batch/report.html compare/report.html; do
     echo "browser_test: $page: ${BASH_REMATCH[1]} images loaded"
   else
     echo "browser_test: FAIL $page: images not all loaded (${loaded:-no marker: the page script did not run})" >&2
+    status=1
+  fi
+  # Every report page, not the dashboard alone, fits a 1,400-pixel window (issue 89).
+  page_width="$(grep -o 'data-page-width="[0-9]*"' <<< "$html" | grep -o '[0-9]\+' || echo none)"
+  if [ "$page_width" != none ] && [ "$page_width" -le 1400 ]; then
+    echo "browser_test: $page fits a 1400-pixel window ($page_width px)"
+  else
+    echo "browser_test: FAIL $page is $page_width px wide in a 1400-pixel window" >&2
     status=1
   fi
 done

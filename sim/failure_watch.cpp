@@ -48,10 +48,16 @@ Failure FailureWatch::judge(double end_s, const geom::Pose2& end_pose,
     f.time_s = breach->time_s;
     f.pose = breach->pose;
     char text[200];
-    util::c_snprintf(text, sizeof text,
-                     "drove on an estimate more than 0.25 m off (worst %.2f m) for %.1f s without "
-                     "reporting itself lost",
-                     breach->worst_error_m, breach->unnoticed_s);
+    if (breach->kind == BreachKind::kDrivenOff)
+      util::c_snprintf(text, sizeof text,
+                       "drove %.1f m in all on an estimate more than 0.25 m off (worst %.2f m), "
+                       "whatever its estimator reported",
+                       breach->driven_off_m, breach->worst_error_m);
+    else
+      util::c_snprintf(text, sizeof text,
+                       "drove on an estimate more than 0.25 m off (worst %.2f m) for %.1f s "
+                       "without reporting itself lost",
+                       breach->worst_error_m, breach->unnoticed_s);
     f.detail = text;
     return f;
   }

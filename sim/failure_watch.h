@@ -31,7 +31,8 @@ class FailureWatch {
   /// The verdict at the end (time `end_s`, true pose `end_pose`). `give_up`: the robot's own
   /// account when it stopped trying; `first_collision`: when and where the first contact
   /// began (true pose), if any; `breach`: the first drive on an estimate off the truth that
-  /// the estimator did not notice (whichever of the two came first is the reason); `pursuit`:
+  /// the estimator did not notice, or past 1 m driven off in all (whichever of the two came
+  /// first is the reason); `pursuit`:
   /// the episode chased a moving target.
   robot::Failure judge(double end_s, const geom::Pose2& end_pose,
                        const std::optional<robot::GiveUp>& give_up,

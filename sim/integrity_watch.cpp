@@ -16,8 +16,12 @@ void IntegrityWatch::observe(double t_s, const geom::Pose2& truth, double true_s
   const bool lost = health == robot::LocalizationHealth::kLost;
   if (moving) {
     record_.worst_moving_error_m = std::max(record_.worst_moving_error_m, error);
-    if (error > p_.off_m) record_.driven_off_s += dt;
+    if (error > p_.off_m) {
+      record_.driven_off_s += dt;
+      record_.driven_off_m += std::abs(true_speed_mps) * dt;  // a kidnap's carry has no speed
+    }
   }
+  judge_distance(t_s, truth);
   if (health == robot::LocalizationHealth::kOk && error > p_.ok_off_m) record_.ok_while_off_s += dt;
   if (health != robot::LocalizationHealth::kOk) record_.not_ok_s += dt;
 
@@ -34,8 +38,29 @@ void IntegrityWatch::observe(double t_s, const geom::Pose2& truth, double true_s
   stretch_.unnoticed_s = t_s - stretch_.time_s;
   // Driving counts once the grace is over: a displacement is the estimator's to notice first.
   if (stretch_.unnoticed_s > p_.grace_s && moving) drove_in_stretch_ = true;
-  if (drove_in_stretch_ && !record_.breach) record_.breach = stretch_;
-  if (record_.breach && record_.breach->time_s == stretch_.time_s) record_.breach = stretch_;
+  // The unnoticed stretch is dated from its start: it names the breach when that came first.
+  const bool earlier = !record_.breach || (record_.breach->kind == BreachKind::kDrivenOff &&
+                                           stretch_.time_s < record_.breach->time_s);
+  if (drove_in_stretch_ && earlier) record_.breach = stretch_;
+  if (record_.breach && record_.breach->kind == BreachKind::kUnnoticed &&
+      record_.breach->time_s == stretch_.time_s)
+    record_.breach = stretch_;
+}
+
+void IntegrityWatch::judge_distance(double t_s, const geom::Pose2& truth) {
+  if (record_.breach && record_.breach->kind == BreachKind::kDrivenOff) {
+    record_.breach->worst_error_m = record_.worst_moving_error_m;  // the totals run on
+    record_.breach->driven_off_m = record_.driven_off_m;
+    return;
+  }
+  if (record_.breach || record_.driven_off_m <= p_.max_driven_off_m) return;
+  IntegrityBreach b;
+  b.time_s = t_s;
+  b.pose = truth;
+  b.worst_error_m = record_.worst_moving_error_m;
+  b.kind = BreachKind::kDrivenOff;
+  b.driven_off_m = record_.driven_off_m;
+  record_.breach = b;
 }
 
 }  // namespace plantsim::sim

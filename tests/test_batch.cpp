@@ -241,10 +241,11 @@ namespace {
 // and, refined a few centimetres a scan, could not climb out when the wall's end came into view;
 // particles drawn about it every third scan restarted the confirmation until the robot gave up
 // with its estimate 1 cm off. The place now moves onto the estimate that fits clearly better,
-// and the robot docks with no integrity breach. The case was recorded with the robot setting off
-// at the motors' limit (before the soft start, traction.full_grip_accel_mps2): a later set-off
-// moves the kidnap's moment, and the landing with it (in the sanitizer build to a place the
-// search found only at 184 s, past the time a lost robot has), so the test keeps that limit.
+// and the robot charges (by issue 89's rule off its estimate: it drove its search lost). The case
+// was recorded with the robot setting off at the motors' limit (before the soft start,
+// traction.full_grip_accel_mps2): a later set-off moves the kidnap's moment, and the landing with
+// it (in the sanitizer build to a place the search found only at 184 s, past the time a lost robot
+// has), so the test keeps that limit.
 TEST_F(BatchFiles, AKidnappedParticleFilterConfirmsItsPlaceAtAYardsCorner) {
   const std::string scenario =
       write("yard.yaml", "name: yard_kidnap\nworlds: [" +
@@ -255,11 +256,17 @@ TEST_F(BatchFiles, AKidnappedParticleFilterConfirmsItsPlaceAtAYardsCorner) {
                              "{after_s: [10, 60], distance_m: [3, 10]}}\nseeds: 4\n");
   const ReplayedEpisode e = replay_batch_episode(scenario, "yard_s2|vg|particles|kidnap|4");
   const episode::EpisodeResult& r = e.result;
-  EXPECT_TRUE(r.docked) << episode::status_name(r)
-                        << (r.failure ? ": " + r.failure->detail : std::string());
+  EXPECT_TRUE(r.charging) << episode::status_name(r)
+                          << (r.failure ? ": " + r.failure->detail : std::string());
   EXPECT_GE(r.relocalizations, 1);
-  EXPECT_FALSE(r.integrity.breach.has_value());
   EXPECT_EQ(r.collisions, 0);
+  // Issue 89: its search drove 27.8 m in all on an estimate more than 0.25 m off (measured on
+  // e03a352), reported lost all the while. Saying so no longer makes that a success: it charged,
+  // off its estimate, by the integrity rule's distance side (docs/failures.md).
+  EXPECT_EQ(r.status, episode::EpisodeStatus::kDockedOffEstimate);
+  ASSERT_TRUE(r.integrity.breach.has_value());
+  EXPECT_EQ(r.integrity.breach->kind, sim::BreachKind::kDrivenOff);
+  EXPECT_GT(r.integrity.driven_off_m, 1.0);
 }
 
 // With the lidar, the EKF and the tracker on (the defaults), one thread or two give the same

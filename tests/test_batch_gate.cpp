@@ -15,6 +15,7 @@
 #include "batch/batch_runner.h"
 #include "batch/episode_runner.h"
 #include "batch/episode_space.h"
+#include "batch/report_verdicts.h"
 #include "batch/summary_tables.h"
 #include "batch_folder_test.h"
 #include "render/report.h"
@@ -400,6 +401,31 @@ std::string full_record(const std::string& fault, bool docked, const std::string
                         {"localization_error_max_m", worst_error_m},
                         {"localization_not_ok_s", not_ok_s}}
       .dump();
+}
+
+// Issue 89: below 20 episodes the nearest-rank 95th percentile is the worst itself, so the
+// report's detail table does not show it as a second number: gone when every configuration is
+// that small; a small configuration beside large ones says "= worst".
+TEST(SummaryTable, TheNinetyFifthPercentileIsNoColumnOfItsOwnBelowTwentyEpisodes) {
+  auto details = [](const std::vector<std::string>& lines) {
+    render::Report report;
+    const std::string csv = summary_csv(lines);
+    const std::string html = fill_verdict_table(report, csv, judge_configurations(lines, {}),
+                                                GateStatistic::kSuccessRate);
+    return html.substr(0, html.find("<h2>Navigation"));
+  };
+  std::vector<std::string> small;
+  for (int i = 0; i < 19; ++i) small.push_back(full_record("small", true, "ok", 0.01 * (i + 1), 0));
+  std::string html = details(small);
+  EXPECT_EQ(html.find("95th pct"), std::string::npos) << html;
+  EXPECT_NE(html.find("worst localisation error (mm)"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>190.00</td>"), std::string::npos) << html;  // the worst, once
+  std::vector<std::string> mixed = small;
+  for (int i = 0; i < 20; ++i) mixed.push_back(full_record("large", true, "ok", 0.01 * (i + 1), 0));
+  html = details(mixed);
+  EXPECT_NE(html.find("95th pct localisation error (mm)"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>= worst (under 20 episodes)</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>200.00</td><td>190.00</td>"), std::string::npos) << html;  // 19th of 20
 }
 
 TEST(SummaryTable, IntegrityPerConfigurationNoValueIsEmptyAndTheGateIsItsColumns) {

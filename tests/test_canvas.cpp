@@ -98,7 +98,8 @@ TEST(Canvas, TwoCanvasesAliveAtOnceKeepTheirOwnDrawings) {
 
 // The simulation on known answers: grey stays grey, pure red and green meet under deuteranopia.
 TEST(ColourVision, SimulationOnKnownAnswers) {
-  for (ColourVision v : {ColourVision::kDeuteranopia, ColourVision::kProtanopia}) {
+  for (ColourVision v :
+       {ColourVision::kDeuteranopia, ColourVision::kProtanopia, ColourVision::kTritanopia}) {
     const Rgb grey = simulate({128, 128, 128}, v);
     EXPECT_NEAR(grey.r, 128, 1);
     EXPECT_NEAR(grey.g, 128, 1);
@@ -108,6 +109,14 @@ TEST(ColourVision, SimulationOnKnownAnswers) {
                               simulate({110, 110, 0}, ColourVision::kDeuteranopia)),
             colour_difference(Rgb{200, 60, 0}, Rgb{110, 110, 0}) / 3);
   EXPECT_NEAR(colour_difference({0, 0, 0}, {255, 255, 255}), 100.0, 0.1);  // L* from 0 to 100
+  // Tritanopia confuses blue with green, not red with green (Okabe-Ito's blue and bluish green).
+  const Rgb blue{0, 114, 178}, green{0, 158, 115}, red{213, 94, 0};
+  EXPECT_LT(colour_difference(simulate(blue, ColourVision::kTritanopia),
+                              simulate(green, ColourVision::kTritanopia)),
+            colour_difference(blue, green) / 3);
+  EXPECT_GT(colour_difference(simulate(red, ColourVision::kTritanopia),
+                              simulate(green, ColourVision::kTritanopia)),
+            0.6 * colour_difference(red, green));
 }
 
 // The pairs a reader must tell apart in one figure, as every reader sees them: failed paths and

@@ -252,11 +252,12 @@ void feed(IntegrityWatch& w, double t0, double t1, double off, double speed,
 TEST(IntegrityWatch, AnOffEstimateNoticedWithinTheGraceIsNoBreach) {
   IntegrityWatch w;
   feed(w, 0.0, 5.0, 0.02, 0.5, LocalizationHealth::kOk);
-  feed(w, 5.0, 6.5, 0.6, 0.5, LocalizationHealth::kOk);  // kidnapped: 1.5 s unnoticed
-  feed(w, 6.5, 9.0, 0.6, 0.5, LocalizationHealth::kLost);
+  feed(w, 5.0, 6.5, 0.6, 0.5, LocalizationHealth::kOk);    // kidnapped: 1.5 s unnoticed
+  feed(w, 6.5, 9.0, 0.6, 0.0, LocalizationHealth::kLost);  // said lost and stopped
   EXPECT_FALSE(w.record().breach);
   EXPECT_NEAR(w.record().worst_moving_error_m, 0.6, 1e-9);
-  EXPECT_NEAR(w.record().driven_off_s, 4.0, 0.11);  // measured all the same
+  EXPECT_NEAR(w.record().driven_off_s, 1.5, 0.11);    // measured all the same
+  EXPECT_NEAR(w.record().driven_off_m, 0.75, 0.051);  // under the 1 m the rule allows
   EXPECT_NEAR(w.record().ok_while_off_s, 1.5, 0.11);
   EXPECT_NEAR(w.record().not_ok_s, 2.5, 0.11);  // the time it said lost
 }
@@ -270,6 +271,8 @@ TEST(IntegrityWatch, DrivingOnAnOffEstimatePastTheGraceIsABreachAtItsFirstExcess
   EXPECT_NEAR(w.record().breach->pose.x, 3.0, 1e-9);
   EXPECT_NEAR(w.record().breach->worst_error_m, 0.3, 1e-9);
   EXPECT_GT(w.record().breach->unnoticed_s, 2.0);
+  // 1.5 m driven off too, but the unnoticed stretch began first and names the breach.
+  EXPECT_EQ(w.record().breach->kind, BreachKind::kUnnoticed);
   EXPECT_NEAR(w.record().ok_while_off_s, 0.0, 1e-9);  // it said degraded, not ok
   EXPECT_NEAR(w.record().not_ok_s, 3.0, 0.11);
 }
@@ -282,6 +285,50 @@ TEST(IntegrityWatch, StandingStillOnAnOffEstimateIsNoBreachUntilItDrivesOnIt) {
   feed(w, 4.0, 4.5, 0.4, 0.3, LocalizationHealth::kOk);
   ASSERT_TRUE(w.record().breach);
   EXPECT_NEAR(w.record().breach->time_s, 0.0, 1e-9);  // where the estimate first went off
+}
+
+// Issue 89: sparse_s2|vg|default|lidar_dropout|4 docked after 265.6 s driven on an estimate more
+// than 0.25 m off (worst 4.28 m) because it had said `lost`. Saying so is no licence to drive on:
+// past 1 m driven off in all the episode breaks integrity whatever the estimator reported.
+TEST(IntegrityWatch, DrivingMoreThanOneMetreOffIsABreachEvenWhenTheEstimatorSaidLost) {
+  IntegrityWatch w;
+  feed(w, 0.0, 2.0, 0.02, 0.5, LocalizationHealth::kOk);
+  feed(w, 2.0, 3.5, 0.8, 0.5, LocalizationHealth::kLost);  // 0.75 m driven off: not yet
+  EXPECT_FALSE(w.record().breach);
+  EXPECT_NEAR(w.record().driven_off_m, 0.75, 0.051);
+  feed(w, 3.5, 10.0, 0.8, 0.5, LocalizationHealth::kLost);
+  ASSERT_TRUE(w.record().breach);
+  const IntegrityBreach& b = *w.record().breach;
+  EXPECT_EQ(b.kind, BreachKind::kDrivenOff);
+  EXPECT_NEAR(b.time_s, 4.0, 0.15);  // where the total passed 1 m: 0.5 m/s from 2.0 s
+  EXPECT_NEAR(b.pose.x, b.time_s, 1e-9);
+  EXPECT_NEAR(b.driven_off_m, 4.0, 0.051);  // the total runs on to the end
+  EXPECT_NEAR(w.record().driven_off_m, 4.0, 0.051);
+  FailureWatch watch;
+  const Failure f = watch.judge(10.0, {10, 0, 0}, std::nullopt, std::nullopt, b, false);
+  EXPECT_EQ(f.reason, FailureReason::kLocalizationLost);
+  EXPECT_NEAR(f.time_s, 4.0, 0.15);
+  EXPECT_NE(f.detail.find("drove 4.0 m in all"), std::string::npos) << f.detail;
+  EXPECT_NE(f.detail.find("whatever its estimator reported"), std::string::npos) << f.detail;
+}
+
+TEST(IntegrityWatch, StretchesOffAddUpAndSpinningInPlaceOrACarryIsNoDriving) {
+  IntegrityWatch w;
+  // Three noticed stretches of 0.4 m each, back on the truth between them: 1.2 m in all.
+  for (double t0 : {0.0, 10.0, 20.0}) {
+    feed(w, t0, t0 + 0.8, 0.6, 0.5, LocalizationHealth::kLost);
+    feed(w, t0 + 0.8, t0 + 10.0, 0.0, 0.5, LocalizationHealth::kOk);
+    if (t0 < 20.0) {
+      EXPECT_FALSE(w.record().breach) << t0;
+    }
+  }
+  ASSERT_TRUE(w.record().breach);
+  EXPECT_EQ(w.record().breach->kind, BreachKind::kDrivenOff);
+  // Far off but turning on the spot (no forward speed), as a lost robot should: no distance.
+  IntegrityWatch spin;
+  feed(spin, 0.0, 60.0, 3.0, 0.0, LocalizationHealth::kLost);
+  EXPECT_FALSE(spin.record().breach);
+  EXPECT_NEAR(spin.record().driven_off_m, 0.0, 1e-12);
 }
 
 TEST(IntegrityWatch, TheRefereeNamesTheEarlierOfABreachAndACollision) {

@@ -17,6 +17,7 @@
 #include "planner/planner.h"
 #include "planner/registry.h"
 #include "render/batch_charts.h"
+#include "render/colour_vision.h"
 #include "render/comparison_figure.h"
 #include "render/coverage_figure.h"
 #include "render/navigation_chart.h"
@@ -25,6 +26,7 @@
 #include "render/run_figure.h"
 #include "render/scaling_chart.h"
 #include "test_paths.h"
+#include "util/fixed_text.h"
 #include "worlds/world_loader.h"
 
 namespace plantsim::render {
@@ -133,6 +135,97 @@ TEST(FigureLayout, RunWithAReplanShowsBothPlansEventsSweptTracksAndTheDockingClo
   for (const std::string& s : layout.texts)
     contact_line = contact_line || (s.rfind("at contact: ", 0) == 0 && s.find(" mm, ") != s.npos);
   EXPECT_TRUE(contact_line);
+}
+
+// Issue 89: in run and failure figures the failure diamond, the replan rings and the sensed
+// layer were one blue under deuteranopia. Every two legend entries of a figure with all of its
+// marks that differ in colour (the same colour is told by its swatch: the test above) stay
+// apart for readers with deuteranopia, protanopia and tritanopia. 15 Delta E: Okabe and Ito's
+// own pairs in these figures come to 16.5 (the charger's green and the replan blue under
+// tritanopia); the old palette's failure / layer was 10.5, replan / layer 9.4.
+TEST(FigureLayout, EveryLegendColourStaysApartUnderTheThreeCommonColourVisionDeficiencies) {
+  Case c = simulate(test::source_file("data/worlds/examples/parked_cart.json"));
+  ASSERT_FALSE(c.run.trajectory.empty());
+  using Kind = episode::EpisodeResult::Event::Kind;
+  const Vec2 at = c.run.trajectory[c.run.trajectory.size() / 2].truth.position();
+  for (Kind k : {Kind::kStop, Kind::kReplan, Kind::kRecovery, Kind::kCollision, Kind::kRetry,
+                 Kind::kFailure})
+    c.run.events.push_back({k, 10.0, at});
+  c.run.layer_final.push_back(geom::Rect{at.x + 1.0, at.y, at.x + 1.2, at.y + 0.2});
+  c.run.last_scan.explained = {at + Vec2{0.5, 0.5}};
+  c.run.last_scan.unexplained = {at + Vec2{0.7, 0.5}};
+  c.run.failure = robot::Failure{robot::FailureReason::kCollision, 10.0, {at.x, at.y, 0}, "x"};
+  FigureLayout layout;
+  const Image img = draw_run_figure(c.world, c.run, {}, nullptr, &layout);
+  keep(img, "layout_colour_vision");
+  for (const char* label : {"failure", "replan", "sensed layer", "collision", "retry", "recovery",
+                            "stop", "last scan", "scan off map"})
+    ASSERT_TRUE(test::has_legend(layout, label)) << label;
+  int pairs = 0;
+  for (std::size_t i = 0; i < layout.legend.size(); ++i)
+    for (std::size_t j = i + 1; j < layout.legend.size(); ++j) {
+      const LegendEntry &a = layout.legend[i], &b = layout.legend[j];
+      if (colour_difference(a.colour, b.colour) < 20) continue;  // one colour, told by swatch
+      // The driven path's swatch is one sample of the cividis speed scale (its colour bar reads
+      // it); cividis is itself made for colour-deficient readers.
+      if (a.label == "driven (speed)" || b.label == "driven (speed)") continue;
+      ++pairs;
+      for (ColourVision v :
+           {ColourVision::kDeuteranopia, ColourVision::kProtanopia, ColourVision::kTritanopia})
+        EXPECT_GE(colour_difference(simulate(a.colour, v), simulate(b.colour, v)), 15.0)
+            << "'" << a.label << "' and '" << b.label << "' under vision " << static_cast<int>(v);
+    }
+  EXPECT_GT(pairs, 100);
+}
+
+// Issue 89: a kidnap's carry was drawn as a solid driven segment with no marker, legend entry or
+// time. Now it is dashed in its own colour from a ring where the robot was lifted to a square
+// where it was set down, and the legend gives its time.
+TEST(FigureLayout, AKidnapsCarryIsDashedMarkedAndTimedInTheLegend) {
+  Case c = simulate(test::source_file("data/worlds/examples/parked_cart.json"));
+  ASSERT_GT(c.run.trajectory.size(), 10u);
+  const episode::TrajectorySample& lifted = c.run.trajectory[c.run.trajectory.size() / 3];
+  const geom::Pose2 from = lifted.truth;
+  const geom::Pose2 to{from.x + 3.0, from.y + 1.5, from.yaw};
+  c.run.carries.push_back({lifted.t_s, from, to});
+  FigureLayout layout;
+  PixelTransform t;
+  const Image img = draw_run_figure(c.world, c.run, {}, &t, &layout);
+  keep(img, "layout_kidnap");
+  test::expect_sound_layout(img, layout, "kidnap run figure");
+  const std::string label = "kidnap " + util::fixed(lifted.t_s, 1) + " s";
+  EXPECT_NE(std::find(layout.texts.begin(), layout.texts.end(), label), layout.texts.end())
+      << "the legend's text, time and all, drawn uncut";
+  const auto entry = std::find_if(layout.legend.begin(), layout.legend.end(),
+                                  [&](const LegendEntry& e) { return e.label == label; });
+  ASSERT_NE(entry, layout.legend.end()) << label;
+  EXPECT_EQ(entry->swatch, Swatch::kDashed);
+  EXPECT_EQ(entry->colour, palette::kCarry);
+  const Vec2 down = t.to_pixel(to.position());
+  EXPECT_EQ(img.at(static_cast<int>(down.x), static_cast<int>(down.y)), palette::kCarry);
+  int dashed = 0;  // the carry's line: about half of it in dashes
+  for (int k = 1; k < 20; ++k) {
+    const Vec2 p = t.to_pixel(from.position() + (k / 20.0) * (to.position() - from.position()));
+    dashed += img.at(static_cast<int>(p.x), static_cast<int>(p.y)) == palette::kCarry;
+  }
+  EXPECT_GE(dashed, 5);
+  EXPECT_LE(dashed, 15);
+  // The time plots mark it (and a failure) as a line across every plot, named in the legend.
+  c.run.failure = robot::Failure{robot::FailureReason::kLocalizationLost, lifted.t_s + 20.0,
+                                 c.run.trajectory.back().truth, "x"};
+  FigureLayout plots;
+  const Image timeplots = draw_time_plots(c.world, c.run, 1000, 900, &plots);
+  keep(timeplots, "layout_kidnap_timeplots");
+  test::expect_sound_layout(timeplots, plots, "kidnap time plots");
+  for (const char* name : {"kidnap", "failure"}) EXPECT_TRUE(test::has_legend(plots, name)) << name;
+  auto count = [&](Rgb colour) {
+    int n = 0;
+    for (int y = 0; y < timeplots.height; ++y)
+      for (int x = 0; x < timeplots.width; ++x) n += timeplots.at(x, y) == colour;
+    return n;
+  };
+  EXPECT_GT(count(palette::kCarry), 4 * 100);  // four plots, each well over 100 px high
+  EXPECT_GT(count(palette::kFailureMark), 4 * 100);
 }
 
 // A run that failed far from the charger gets a close-up of where it failed (6 m around the
