@@ -47,6 +47,16 @@ links+=(--link results/fig5_vs_fig6/report.html)
 # A batch over every plant and both ROS maps, ideal and noisy sensing.
 ./build/plantsim batch data/scenarios/plants.yaml --out results/batch_plants --quiet --fresh --junit results/batch_plants/junit.xml || status=1
 links+=(--link results/batch_plants/report.html)
+# Did a change make it worse? The same batch without issue 88's stopping bound as the baseline,
+# this build's default as the candidate: `plantsim diff` pairs their episodes and judges each
+# configuration (exit 1 when worse: the demo shows the verdict, it is not the demo's failure).
+./build/plantsim batch data/scenarios/plants_without_stopping_bound.yaml --out results/batch_plants_without_stopping_bound \
+  --quiet --fresh --no-figures || status=1
+diff_rc=0
+./build/plantsim diff results/batch_plants_without_stopping_bound results/batch_plants --out results/diff_stopping_bound \
+  > results/diff_stopping_bound.txt || diff_rc=$?
+[ "$diff_rc" -le 1 ] || status=1
+echo "demo: plantsim diff (without the stopping bound -> with it): $(head -1 results/diff_stopping_bound.txt)"
 # Planning time against the number of obstacles (log-log) for the visibility graph, the
 # traditional one, the grid and the interval search, from the planner benchmark (its JSON lines
 # kept beside it).
