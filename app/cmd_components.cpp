@@ -16,12 +16,6 @@ namespace plantsim::app {
 
 namespace {
 
-std::string number(double v) {
-  char text[64];
-  util::c_snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 void print_component(const util::ComponentInfo& c) {
   std::cout << "  " << c.name << "  (" << c.origin << ")\n    " << c.summary << "\n";
   if (!c.capabilities.empty()) {
@@ -33,18 +27,19 @@ void print_component(const util::ComponentInfo& c) {
     const char* kind = p.kind == util::ParamKind::kFlag    ? "flag"
                        : p.kind == util::ParamKind::kWhole ? "whole"
                                                            : "real";
-    std::cout << "    " << p.path() << " = " << number(p.default_value) << "  " << kind << " in "
-              << (p.above ? "(" : "[") << number(p.lo) << ", " << number(p.hi) << "]"
-              << (p.doc.empty() ? "" : "  " + p.doc) << "\n";
+    std::cout << "    " << p.path() << " = " << util::c_general(p.default_value) << "  " << kind
+              << " in " << (p.above ? "(" : "[") << util::c_general(p.lo) << ", "
+              << util::c_general(p.hi) << "]" << (p.doc.empty() ? "" : "  " + p.doc) << "\n";
   }
 }
 
 /// A planner's options, set by name with `plantsim plan --option NAME=VALUE`.
 void print_options(const std::vector<planner::OptionSpec>& options) {
   for (const planner::OptionSpec& o : options)
-    std::cout << "    option " << o.name << " = " << number(o.default_value) << "  "
-              << (o.integer ? "whole" : "real") << " in [" << number(o.min) << ", " << number(o.max)
-              << "]" << (o.meaning.empty() ? "" : "  " + o.meaning) << "\n";
+    std::cout << "    option " << o.name << " = " << util::c_general(o.default_value) << "  "
+              << (o.integer ? "whole" : "real") << " in [" << util::c_general(o.min) << ", "
+              << util::c_general(o.max) << "]" << (o.meaning.empty() ? "" : "  " + o.meaning)
+              << "\n";
 }
 
 template <typename Registry>

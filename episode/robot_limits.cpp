@@ -11,19 +11,13 @@ namespace plantsim::episode {
 
 namespace {
 
-std::string number(double v) {
-  char text[64];
-  util::c_snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 [[noreturn]] void refuse(const worlds::World& plant, const std::string& path, double value,
                          const std::string& what) {
-  throw std::invalid_argument(path + " " + what + " " + number(value) +
+  throw std::invalid_argument(path + " " + what + " " + util::c_general(value) +
                               " m/s is above the robot's motor limit of " +
-                              number(plant.robot.max_speed_mps) + " m/s (" + plant.source +
+                              util::c_general(plant.robot.max_speed_mps) + " m/s (" + plant.source +
                               ": robot.max_speed_mps): the robot cannot drive it; set at most " +
-                              number(plant.robot.max_speed_mps));
+                              util::c_general(plant.robot.max_speed_mps));
 }
 
 }  // namespace

@@ -536,19 +536,27 @@ std::string action_argument(const std::string& action) {
   return action;
 }
 
-std::string options_episode(const py::object& options) {
-  if (options.is_none()) return "";
+/// reset()'s options checked: None or a dict whose only key is "episode" (`shape` says what its
+/// value is, for the message); its value, or None.
+py::object episode_option(const py::object& options, const char* shape) {
+  if (options.is_none()) return py::none();
   if (!py::isinstance<py::dict>(options))
-    throw py::type_error("options must be a dict ({\"episode\": id}) or None");
+    throw py::type_error(std::string("options must be a dict ({\"episode\": ") + shape +
+                         "}) or None");
   const py::dict o = options.cast<py::dict>();
   for (const auto& kv : o)
     if (!py::isinstance<py::str>(kv.first) || kv.first.cast<std::string>() != "episode")
       throw std::invalid_argument("unknown option " + py::repr(kv.first).cast<std::string>() +
                                   " (options: episode)");
-  if (!o.contains("episode")) return "";
-  if (!py::isinstance<py::str>(o["episode"]))
+  return o.contains("episode") ? py::object(o["episode"]) : py::none();
+}
+
+std::string options_episode(const py::object& options) {
+  const py::object episode = episode_option(options, "id");
+  if (episode.is_none()) return "";  // None: the seed's episode, as in VectorEnv's list
+  if (!py::isinstance<py::str>(episode))
     throw py::type_error("options['episode'] must be an episode id (str)");
-  return o["episode"].cast<std::string>();
+  return episode.cast<std::string>();
 }
 
 /// One environment. Calls run one at a time (CallGuard); reset plans in the background,
@@ -777,16 +785,8 @@ struct PyVectorEnv {
   /// environment (a scenario's episodes by id, as Env's option), or nothing.
   std::vector<std::string> episodes_asked(const py::object& options) const {
     std::vector<std::string> out(envs.size());
-    if (options.is_none()) return out;
-    if (!py::isinstance<py::dict>(options))
-      throw py::type_error("options must be a dict ({\"episode\": [id, ...]}) or None");
-    const py::dict o = options.cast<py::dict>();
-    for (const auto& kv : o)
-      if (!py::isinstance<py::str>(kv.first) || kv.first.cast<std::string>() != "episode")
-        throw std::invalid_argument("unknown option " + py::repr(kv.first).cast<std::string>() +
-                                    " (options: episode)");
-    if (!o.contains("episode")) return out;
-    const py::object each = o["episode"];
+    const py::object each = episode_option(options, "[id, ...]");
+    if (each.is_none()) return out;
     if (!py::isinstance<py::list>(each) && !py::isinstance<py::tuple>(each))
       throw py::type_error("options['episode'] must be a list of " + std::to_string(envs.size()) +
                            " episode ids (str, or None for a seed's episode)");

@@ -42,4 +42,10 @@ int c_snprintf(char* out, std::size_t size, const char* format, ...) {
 
 double c_strtod(const char* text, char** end) { return strtod_l(text, end, c_locale()); }
 
+std::string c_general(double v) {
+  char text[64];
+  c_snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 }  // namespace plantsim::util

@@ -6,12 +6,17 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 namespace plantsim::util {
 
 /// std::snprintf in the "C" locale (the calling thread's locale switched for the call only).
 int c_snprintf(char* out, std::size_t size, const char* format, ...)
     __attribute__((format(printf, 3, 4)));
+
+/// `v` as printf's "%g" writes it in the "C" locale (at most six significant digits): numbers in
+/// messages and labels.
+std::string c_general(double v);
 
 /// std::strtod in the "C" locale.
 double c_strtod(const char* text, char** end);
