@@ -31,9 +31,14 @@ std::vector<std::string> motor_bounded_parameters(const EpisodeConfig& config) {
 }
 
 void check_robot_limits(const worlds::World& plant, const EpisodeConfig& config) {
+  // A default is nobody's setting: on a robot slower than it, the drive's limit caps it (the
+  // motors turn no faster, and MPPI and DWB sample within it), as before. What a user set is
+  // refused: a speed the robot cannot drive would mislead every output that names it.
+  static const EpisodeConfig defaults;
   for (const std::string& path : motor_bounded_parameters(config)) {
     const double v = number_value(config, path);
-    if (v > plant.robot.max_speed_mps) refuse(plant, path, v, "=");
+    if (v > plant.robot.max_speed_mps && v != number_value(defaults, path))
+      refuse(plant, path, v, "=");
   }
 }
 

@@ -18,7 +18,8 @@ namespace plantsim::episode {
 std::vector<std::string> motor_bounded_parameters(const EpisodeConfig& config);
 
 /// Throws std::invalid_argument naming the key, its value, the limit and the world when one of
-/// those parameters exceeds `plant`'s robot.max_speed_mps.
+/// those parameters, set to other than its default, exceeds `plant`'s robot.max_speed_mps (a
+/// default above a slow robot's limit is capped by the drive, not refused).
 void check_robot_limits(const worlds::World& plant, const EpisodeConfig& config);
 
 /// The same for a tuning bound: `path` tuned up to `hi` on `plant`.

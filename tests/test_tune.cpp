@@ -7,10 +7,13 @@
 #include <map>
 
 #include "cli_fixture.h"
+#include "episode/robot_limits.h"
+#include "test_paths.h"
 #include "tune/objective.h"
 #include "tune/paired_test.h"
 #include "tune/search.h"
 #include "tune/tune_spec.h"
+#include "worlds/world_loader.h"
 
 namespace plantsim {
 namespace {
@@ -368,6 +371,21 @@ TEST_F(Cli, TuneRefusesBadInputBeforeAnyEpisode) {
 // Issue 88: a travel speed the robot's motors cannot drive (its world's robot.max_speed_mps, 0.8
 // m/s here) is refused with exit 2 before any episode, in a run's configuration, a batch's
 // controllers and a sweep's values alike; the motor limit itself is accepted.
+// A default is nobody's setting: a robot slower than the default cruise (0.6 m/s) runs with it,
+// the drive capping the speed as before; what a user sets above the limit is refused.
+TEST(RobotLimits, ASlowRobotRunsWithTheDefaultsAndRefusesASetSpeedAboveItsMotors) {
+  worlds::World slow =
+      worlds::load_world(test::source_file("data/worlds/examples/small_plant.json"));
+  slow.robot.max_speed_mps = 0.5;
+  episode::EpisodeConfig c;
+  ASSERT_GT(c.tracking.max_linear_speed_mps, slow.robot.max_speed_mps);
+  EXPECT_NO_THROW(episode::check_robot_limits(slow, c));
+  c.tracking.max_linear_speed_mps = 0.55;
+  EXPECT_THROW(episode::check_robot_limits(slow, c), std::invalid_argument);
+  c.tracking.max_linear_speed_mps = 0.5;
+  EXPECT_NO_THROW(episode::check_robot_limits(slow, c));
+}
+
 TEST_F(Cli, SpeedsAboveTheMotorLimitAreRefusedEverywhere) {
   write("fast.json", R"({"tracking": {"max_linear_speed_mps": 1.2}})");
   write("field.json",
